@@ -1,0 +1,21 @@
+# camwb_add_module(<name> SOURCES ... [PUBLIC_DEPS ...] [PRIVATE_DEPS ...])
+# Creates the static library camwb_<name>. Headers are included as "<module>/<Header>.h" with
+# modules/ on the include path; dependencies are declared per target so the graph stays one-way.
+function(camwb_add_module name)
+  cmake_parse_arguments(ARG "" "" "SOURCES;PUBLIC_DEPS;PRIVATE_DEPS" ${ARGN})
+  add_library(camwb_${name} STATIC ${ARG_SOURCES})
+  target_include_directories(camwb_${name} PUBLIC ${PROJECT_SOURCE_DIR}/modules ${PROJECT_BINARY_DIR}/generated)
+  target_link_libraries(camwb_${name} PUBLIC ${ARG_PUBLIC_DEPS} PRIVATE ${ARG_PRIVATE_DEPS})
+  target_compile_options(camwb_${name} PRIVATE -Wall -Wextra -Wno-unused-parameter)
+  set_target_properties(camwb_${name} PROPERTIES POSITION_INDEPENDENT_CODE ON)
+endfunction()
+
+# camwb_add_gtest(<name> SOURCES ... DEPS ... [LABELS ...]): one GoogleTest binary, tests discovered by ctest.
+function(camwb_add_gtest name)
+  cmake_parse_arguments(ARG "" "" "SOURCES;DEPS;LABELS" ${ARGN})
+  add_executable(${name} ${ARG_SOURCES})
+  target_link_libraries(${name} PRIVATE ${ARG_DEPS} GTest::gtest GTest::gtest_main)
+  target_compile_definitions(${name} PRIVATE CAMWB_TEST_DATA_DIR="${PROJECT_SOURCE_DIR}")
+  include(GoogleTest)
+  gtest_discover_tests(${name} PROPERTIES LABELS "unit;${ARG_LABELS}" DISCOVERY_TIMEOUT 60)
+endfunction()

@@ -1,0 +1,105 @@
+#include "base/AtomicFile.h"
+
+#include <cerrno>
+#include <cstring>
+#include <fstream>
+#include <sstream>
+#include <vector>
+
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+namespace camwb::base {
+
+namespace {
+std::string systemError() { return std::strerror(errno); }
+}  // namespace
+
+AtomicFileWriter::AtomicFileWriter(std::string targetPath) : m_target(std::move(targetPath)) {}
+
+AtomicFileWriter::~AtomicFileWriter() { abort(); }
+
+Status AtomicFileWriter::open()
+{
+    std::string pattern = m_target + ".tmp-XXXXXX";
+    std::vector<char> buffer(pattern.begin(), pattern.end());
+    buffer.push_back('\0');
+    const int fd = ::mkstemp(buffer.data());
+    if (fd < 0)
+        return makeError("cannot create a temporary file beside it: " + systemError(), m_target);
+    ::fchmod(fd, 0644);
+    m_tempPath = buffer.data();
+    m_file = ::fdopen(fd, "wb");
+    if (!m_file) {
+        ::close(fd);
+        ::unlink(m_tempPath.c_str());
+        return makeError("cannot open the temporary file: " + systemError(), m_target);
+    }
+    return {};
+}
+
+void AtomicFileWriter::write(std::string_view data)
+{
+    if (!m_file || m_writeFailed)
+        return;
+    if (std::fwrite(data.data(), 1, data.size(), m_file) != data.size())
+        m_writeFailed = true;
+}
+
+Status AtomicFileWriter::commit()
+{
+    if (!m_file)
+        return makeError("internal error: commit without open", m_target);
+    const bool flushed = std::fflush(m_file) == 0 && ::fsync(::fileno(m_file)) == 0;
+    const int savedErrno = errno;
+    std::fclose(m_file);
+    m_file = nullptr;
+    if (m_writeFailed || !flushed) {
+        ::unlink(m_tempPath.c_str());
+        errno = savedErrno;
+        return makeError("write failed: " + systemError(), m_target);
+    }
+    if (::rename(m_tempPath.c_str(), m_target.c_str()) != 0) {
+        const std::string reason = systemError();
+        ::unlink(m_tempPath.c_str());
+        return makeError("cannot replace the file: " + reason, m_target);
+    }
+    m_tempPath.clear();
+    return {};
+}
+
+void AtomicFileWriter::abort()
+{
+    if (m_file) {
+        std::fclose(m_file);
+        m_file = nullptr;
+    }
+    if (!m_tempPath.empty()) {
+        ::unlink(m_tempPath.c_str());
+        m_tempPath.clear();
+    }
+}
+
+Status writeFileAtomically(const std::string& path, std::string_view content)
+{
+    AtomicFileWriter writer(path);
+    if (Status opened = writer.open(); !opened)
+        return opened;
+    writer.write(content);
+    return writer.commit();
+}
+
+Result<std::string> readTextFile(const std::string& path)
+{
+    std::ifstream in(path, std::ios::binary);
+    if (!in)
+        return makeError(std::string("cannot open: ") + systemError(), path);
+    std::ostringstream text;
+    text << in.rdbuf();
+    if (in.bad())
+        return makeError("read failed", path);
+    return text.str();
+}
+
+}  // namespace camwb::base

@@ -1,0 +1,37 @@
+// Writes files so that readers see either the old content or the complete new one, never a
+// half-written file: write a temp file beside the target, fsync, rename over the target.
+#pragma once
+
+#include "base/Result.h"
+
+#include <cstdio>
+#include <string>
+#include <string_view>
+
+namespace camwb::base {
+
+// Streams into "<target>.tmp-XXXXXX"; commit() makes it the target, destruction without commit
+// removes the temp file and leaves the target untouched.
+class AtomicFileWriter {
+public:
+    explicit AtomicFileWriter(std::string targetPath);
+    ~AtomicFileWriter();
+    AtomicFileWriter(const AtomicFileWriter&) = delete;
+    AtomicFileWriter& operator=(const AtomicFileWriter&) = delete;
+
+    Status open();
+    void write(std::string_view data);
+    Status commit();
+    void abort();
+
+private:
+    std::string m_target;
+    std::string m_tempPath;
+    std::FILE* m_file = nullptr;
+    bool m_writeFailed = false;
+};
+
+Status writeFileAtomically(const std::string& path, std::string_view content);
+Result<std::string> readTextFile(const std::string& path);
+
+}  // namespace camwb::base

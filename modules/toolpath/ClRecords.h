@@ -1,0 +1,97 @@
+// The typed cutter-location (CL) records: the one vocabulary between operations, importers,
+// posts, NC interpreters and the simulator. Units: mm, mm/min, degrees, rpm, seconds.
+#pragma once
+
+#include "base/Vec.h"
+
+#include <string>
+#include <variant>
+#include <vector>
+
+namespace camwb::toolpath {
+
+using base::Vec3;
+
+enum class CutterCompSide { Off, Left, Right };
+enum class CoolantMode { Off, Flood, Mist, ThroughTool };
+enum class FeedMode { PerMinute, PerRevolution, InverseTime };
+enum class CycleKind { Drill, DrillDwell, Peck, ChipBreak, Tap, Bore };
+
+// Full tool geometry, so a post or the simulator never has to look the tool up elsewhere.
+struct Tool {
+    int number = 1;
+    std::string name;
+    std::string kind = "flat";  // flat, ball, bull, drill, chamfer
+    double diameterMm = 0;
+    double cornerRadiusMm = 0;
+    double fluteLengthMm = 0;
+    double lengthMm = 0;
+    int flutes = 2;
+};
+
+struct Rapid { Vec3 to; };
+struct Linear { Vec3 to; double feedMmPerMin = 0; };
+
+// Circular move from the current position. When `to` leaves the arc's plane the arc is a helix.
+// `turns` counts extra full revolutions (0 = less than one turn).
+struct Arc {
+    Vec3 to;
+    Vec3 center;
+    Vec3 normal{0, 0, 1};
+    bool clockwise = false;  // seen looking against the normal (from +Z down for G17)
+    int turns = 0;
+    double feedMmPerMin = 0;
+};
+
+struct ToolChange { Tool tool; };
+struct Spindle { double rpm = 0; bool clockwise = true; };  // rpm 0 = stop
+struct Coolant { CoolantMode mode = CoolantMode::Off; };
+struct FeedModeChange { FeedMode mode = FeedMode::PerMinute; };
+struct WorkOffset { int index = 1; };  // 1 = first offset (G54 / datum 1)
+struct Dwell { double seconds = 0; };
+
+// A canned cycle over a set of holes; `holes` are the hole top centres.
+struct Cycle {
+    CycleKind kind = CycleKind::Drill;
+    double clearanceZ = 0;  // return plane between holes when retracting fully (G98)
+    double retractZ = 0;    // R plane: where feeding starts (G99 return plane)
+    double topZ = 0;        // hole top (reference plane)
+    double bottomZ = 0;     // final depth
+    double peckMm = 0;
+    double dwellSeconds = 0;
+    double feedMmPerMin = 0;
+    std::vector<Vec3> holes;
+};
+
+// Five-axis move: tool tip and unit tool vector (from tip towards spindle). feed 0 = rapid.
+struct ToolAxisMove { Vec3 tip; Vec3 axis{0, 0, 1}; double feedMmPerMin = 0; };
+
+struct CutterComp { CutterCompSide side = CutterCompSide::Off; };
+struct Comment { std::string text; };
+
+struct SectionFeeds {
+    double cuttingMmPerMin = 0;
+    double plungeMmPerMin = 0;
+    double entryMmPerMin = 0;
+    double exitMmPerMin = 0;
+    double finishingMmPerMin = 0;
+};
+
+struct SectionBegin {
+    std::string operationName;
+    std::string strategy;  // "profile", "pocket", ...
+    int toolNumber = 0;
+    SectionFeeds feeds;
+};
+struct SectionEnd {};
+
+using Record = std::variant<Rapid, Linear, Arc, ToolChange, Spindle, Coolant, FeedModeChange, WorkOffset,
+                            Dwell, Cycle, ToolAxisMove, CutterComp, Comment, SectionBegin, SectionEnd>;
+
+// Where a record came from, so the GUI can link it back to its operation. -1 = unknown.
+struct SourceRef {
+    int operationIndex = -1;
+    int recordIndex = -1;
+};
+
+}  // namespace camwb::toolpath

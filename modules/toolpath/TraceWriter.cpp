@@ -1,0 +1,120 @@
+#include "toolpath/TraceWriter.h"
+
+#include "base/NumberFormat.h"
+#include "toolpath/Toolpath.h"
+
+namespace camwb::toolpath {
+
+namespace {
+
+std::string num(double v) { return base::formatFixed(v, 4); }
+std::string point(const Vec3& p) { return num(p.x) + ' ' + num(p.y) + ' ' + num(p.z); }
+
+const char* compName(CutterCompSide side)
+{
+    switch (side) {
+    case CutterCompSide::Left: return "left";
+    case CutterCompSide::Right: return "right";
+    case CutterCompSide::Off: break;
+    }
+    return "off";
+}
+
+const char* coolantName(CoolantMode mode)
+{
+    switch (mode) {
+    case CoolantMode::Flood: return "flood";
+    case CoolantMode::Mist: return "mist";
+    case CoolantMode::ThroughTool: return "through-tool";
+    case CoolantMode::Off: break;
+    }
+    return "off";
+}
+
+const char* feedModeName(FeedMode mode)
+{
+    switch (mode) {
+    case FeedMode::PerRevolution: return "per-rev";
+    case FeedMode::InverseTime: return "inverse-time";
+    case FeedMode::PerMinute: break;
+    }
+    return "per-min";
+}
+
+const char* cycleName(CycleKind kind)
+{
+    switch (kind) {
+    case CycleKind::DrillDwell: return "drill-dwell";
+    case CycleKind::Peck: return "peck";
+    case CycleKind::ChipBreak: return "chip-break";
+    case CycleKind::Tap: return "tap";
+    case CycleKind::Bore: return "bore";
+    case CycleKind::Drill: break;
+    }
+    return "drill";
+}
+
+}  // namespace
+
+void TraceWriter::rapid(const Rapid& r) { m_out += "rapid " + point(r.to) + '\n'; }
+
+void TraceWriter::linear(const Linear& r) { m_out += "linear " + point(r.to) + " f " + num(r.feedMmPerMin) + '\n'; }
+
+void TraceWriter::arc(const Arc& r)
+{
+    m_out += std::string("arc ") + (r.clockwise ? "cw " : "ccw ") + point(r.to) + " c " + point(r.center) + " n " +
+             point(r.normal) + " turns " + std::to_string(r.turns) + " f " + num(r.feedMmPerMin) + '\n';
+}
+
+void TraceWriter::toolChange(const ToolChange& r)
+{
+    const Tool& t = r.tool;
+    m_out += "tool " + std::to_string(t.number) + " " + t.kind + " d " + num(t.diameterMm) + " r " +
+             num(t.cornerRadiusMm) + " flute " + num(t.fluteLengthMm) + " len " + num(t.lengthMm) + " \"" + t.name +
+             "\"\n";
+}
+
+void TraceWriter::spindle(const Spindle& r)
+{
+    m_out += "spindle " + num(r.rpm) + (r.clockwise ? " cw" : " ccw") + '\n';
+}
+
+void TraceWriter::coolant(const Coolant& r) { m_out += std::string("coolant ") + coolantName(r.mode) + '\n'; }
+void TraceWriter::feedMode(const FeedModeChange& r) { m_out += std::string("feedmode ") + feedModeName(r.mode) + '\n'; }
+void TraceWriter::workOffset(const WorkOffset& r) { m_out += "workoffset " + std::to_string(r.index) + '\n'; }
+void TraceWriter::dwell(const Dwell& r) { m_out += "dwell " + num(r.seconds) + '\n'; }
+
+void TraceWriter::cycle(const Cycle& r)
+{
+    m_out += std::string("cycle ") + cycleName(r.kind) + " clear " + num(r.clearanceZ) + " retract " + num(r.retractZ) +
+             " top " + num(r.topZ) + " bottom " + num(r.bottomZ) + " peck " + num(r.peckMm) + " dwell " +
+             num(r.dwellSeconds) + " f " + num(r.feedMmPerMin) + " holes " + std::to_string(r.holes.size()) + '\n';
+    for (const Vec3& hole : r.holes)
+        m_out += "  hole " + point(hole) + '\n';
+}
+
+void TraceWriter::toolAxisMove(const ToolAxisMove& r)
+{
+    m_out += "move5 " + point(r.tip) + " axis " + point(r.axis) + " f " + num(r.feedMmPerMin) + '\n';
+}
+
+void TraceWriter::cutterComp(const CutterComp& r) { m_out += std::string("comp ") + compName(r.side) + '\n'; }
+void TraceWriter::comment(const Comment& r) { m_out += "comment \"" + r.text + "\"\n"; }
+
+void TraceWriter::sectionBegin(const SectionBegin& r)
+{
+    m_out += "section \"" + r.operationName + "\" " + r.strategy + " tool " + std::to_string(r.toolNumber) +
+             " cut " + num(r.feeds.cuttingMmPerMin) + " plunge " + num(r.feeds.plungeMmPerMin) + '\n';
+}
+
+void TraceWriter::sectionEnd(const SectionEnd&) { m_out += "endsection\n"; }
+
+std::string traceOf(const Toolpath& toolpath)
+{
+    std::string out;
+    TraceWriter writer(out);
+    play(toolpath, writer);
+    return out;
+}
+
+}  // namespace camwb::toolpath

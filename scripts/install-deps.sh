@@ -1,0 +1,37 @@
+#!/usr/bin/env bash
+# Installs the Debian 12 packages CAM Workbench needs to build, test and run.
+# Idempotent: packages already present are skipped; apt-get runs only when something is missing.
+# Usage: scripts/install-deps.sh [--external]   (--external adds the heavy peers: freecad, linuxcnc-uspace)
+set -euo pipefail
+
+packages=(
+  build-essential cmake ninja-build ccache pkg-config git file dpkg-dev
+  qt6-base-dev qt6-base-dev-tools qt6-tools-dev qt6-tools-dev-tools qt6-l10n-tools
+  libqt6opengl6-dev qt6-declarative-dev libgl-dev
+  libocct-foundation-dev libocct-modeling-data-dev libocct-modeling-algorithms-dev
+  libocct-data-exchange-dev libocct-ocaf-dev
+  libeigen3-dev libvtk9-dev libqscintilla2-qt6-dev libpolyclipping-dev nlohmann-json3-dev
+  libgtest-dev libgmock-dev libbenchmark-dev
+  xvfb xauth libgl1-mesa-dri libglx-mesa0 fonts-dejavu-core
+)
+if [[ "${1:-}" == "--external" ]]; then
+  packages+=(freecad linuxcnc-uspace)
+fi
+
+missing=()
+for p in "${packages[@]}"; do
+  status=$(dpkg-query -W -f='${Status}' "$p" 2>/dev/null || true)
+  [[ "$status" == "install ok installed" ]] || missing+=("$p")
+done
+
+if ((${#missing[@]} == 0)); then
+  echo "install-deps: all ${#packages[@]} packages present"
+  exit 0
+fi
+
+echo "install-deps: installing ${#missing[@]} missing packages: ${missing[*]}"
+sudo=""
+if [[ $(id -u) -ne 0 ]]; then sudo="sudo"; fi
+export DEBIAN_FRONTEND=noninteractive
+$sudo apt-get update -q
+$sudo apt-get install -y -q --no-install-recommends "${missing[@]}"

@@ -1,0 +1,257 @@
+#include "document/JobFile.h"
+
+#include "base/AtomicFile.h"
+
+#include <nlohmann/json.hpp>
+
+#include <filesystem>
+
+namespace camwb::document {
+
+namespace fs = std::filesystem;
+using nlohmann::json;
+
+namespace {
+
+// Thrown inside this file only, turned into a base::Error at the API boundary.
+struct FormatError {
+    std::string message;
+};
+
+const json& member(const json& object, const char* key, const std::string& where)
+{
+    if (!object.is_object())
+        throw FormatError{where + ": expected an object"};
+    auto it = object.find(key);
+    if (it == object.end())
+        throw FormatError{where + ": missing \"" + key + "\""};
+    return *it;
+}
+
+double number(const json& object, const char* key, const std::string& where)
+{
+    const json& value = member(object, key, where);
+    if (!value.is_number())
+        throw FormatError{where + "." + key + ": expected a number"};
+    return value.get<double>();
+}
+
+int integer(const json& object, const char* key, const std::string& where)
+{
+    const json& value = member(object, key, where);
+    if (!value.is_number_integer())
+        throw FormatError{where + "." + key + ": expected an integer"};
+    return value.get<int>();
+}
+
+std::string text(const json& object, const char* key, const std::string& where)
+{
+    const json& value = member(object, key, where);
+    if (!value.is_string())
+        throw FormatError{where + "." + key + ": expected a string"};
+    return value.get<std::string>();
+}
+
+base::Vec3 vec3(const json& object, const char* key, const std::string& where)
+{
+    const json& value = member(object, key, where);
+    if (!value.is_array() || value.size() != 3 || !value[0].is_number() || !value[1].is_number() ||
+        !value[2].is_number())
+        throw FormatError{where + "." + key + ": expected [x, y, z]"};
+    return {value[0].get<double>(), value[1].get<double>(), value[2].get<double>()};
+}
+
+ops::ToolController readTool(const json& t, const std::string& where)
+{
+    ops::ToolController tc;
+    tc.tool.number = integer(t, "number", where);
+    tc.tool.name = text(t, "name", where);
+    tc.tool.kind = text(t, "kind", where);
+    tc.tool.diameterMm = number(t, "diameter", where);
+    tc.tool.cornerRadiusMm = number(t, "cornerRadius", where);
+    tc.tool.fluteLengthMm = number(t, "fluteLength", where);
+    tc.tool.lengthMm = number(t, "length", where);
+    tc.tool.flutes = integer(t, "flutes", where);
+    tc.spindleRpm = number(t, "spindleRpm", where);
+    tc.cuttingFeedMmPerMin = number(t, "cuttingFeed", where);
+    tc.plungeFeedMmPerMin = number(t, "plungeFeed", where);
+    return tc;
+}
+
+Operation readOperation(const json& o, const std::string& where)
+{
+    Operation op;
+    op.type = text(o, "type", where);
+    if (op.type != "profile")
+        throw FormatError{where + ".type: unknown operation type \"" + op.type + "\""};
+    op.toolNumber = integer(o, "tool", where);
+    ops::ProfileParams& p = op.profile;
+    p.name = text(o, "name", where);
+    p.faceIndex = integer(o, "face", where);
+    p.finalDepthZ = number(o, "finalDepth", where);
+    p.safeZ = number(o, "safeHeight", where);
+    p.clearanceZ = number(o, "clearanceHeight", where);
+    const std::string direction = text(o, "direction", where);
+    if (direction != "climb" && direction != "conventional")
+        throw FormatError{where + ".direction: expected \"climb\" or \"conventional\""};
+    p.climb = direction == "climb";
+    return op;
+}
+
+Job readJob(const json& root)
+{
+    const std::string where = "job";
+    if (text(root, "format", where) != "camwb-job")
+        throw FormatError{"not a CAM Workbench job (format is not \"camwb-job\")"};
+    const int version = integer(root, "version", where);
+    if (version > kJobFormatVersion)
+        throw FormatError{"job format version " + std::to_string(version) +
+                          " is newer than this CAM Workbench understands (" + std::to_string(kJobFormatVersion) +
+                          "); update CAM Workbench"};
+    if (version < 1)
+        throw FormatError{"job format version " + std::to_string(version) + " is not valid"};
+
+    Job job;
+    job.name = text(root, "name", where);
+    job.modelPath = text(root, "model", where);
+    const json& stock = member(root, "stock", where);
+    job.stock.min = vec3(stock, "min", where + ".stock");
+    job.stock.max = vec3(stock, "max", where + ".stock");
+    job.workOffset = integer(root, "workOffset", where);
+    if (job.workOffset < 1 || job.workOffset > 99)
+        throw FormatError{where + ".workOffset: expected 1..99"};
+    job.postId = text(root, "post", where);
+
+    const json& tools = member(root, "tools", where);
+    if (!tools.is_array())
+        throw FormatError{where + ".tools: expected an array"};
+    for (std::size_t i = 0; i < tools.size(); ++i)
+        job.tools.push_back(readTool(tools[i], where + ".tools[" + std::to_string(i) + "]"));
+
+    const json& operations = member(root, "operations", where);
+    if (!operations.is_array())
+        throw FormatError{where + ".operations: expected an array"};
+    for (std::size_t i = 0; i < operations.size(); ++i) {
+        const std::string at = where + ".operations[" + std::to_string(i) + "]";
+        Operation op = readOperation(operations[i], at);
+        if (!job.tool(op.toolNumber))
+            throw FormatError{at + ".tool: no tool number " + std::to_string(op.toolNumber) + " in the job"};
+        job.operations.push_back(std::move(op));
+    }
+    return job;
+}
+
+// nlohmann reports a byte offset; people want a line and column.
+void lineAndColumn(const std::string& text, std::size_t offset, int& line, int& column)
+{
+    line = 1;
+    column = 1;
+    for (std::size_t i = 0; i < offset && i < text.size(); ++i) {
+        if (text[i] == '\n') {
+            ++line;
+            column = 1;
+        } else {
+            ++column;
+        }
+    }
+}
+
+}  // namespace
+
+base::Result<Job> parseJob(const std::string& content, const std::string& path)
+{
+    json root;
+    try {
+        root = json::parse(content);
+    } catch (const json::parse_error& e) {
+        int line = 0, column = 0;
+        lineAndColumn(content, e.byte > 0 ? e.byte - 1 : 0, line, column);
+        std::string reason = e.what();
+        if (auto pos = reason.find("syntax error"); pos != std::string::npos)
+            reason = reason.substr(pos);
+        return base::makeError("malformed JSON: " + reason, path, line, column);
+    }
+    try {
+        return readJob(root);
+    } catch (const FormatError& e) {
+        return base::makeError(e.message, path);
+    }
+}
+
+base::Result<Job> loadJob(const std::string& path)
+{
+    auto content = base::readTextFile(path);
+    if (!content)
+        return content.error();
+    auto job = parseJob(content.value(), path);
+    if (job)
+        job->modelPath = absoluteModelPath(job->modelPath, path);
+    return job;
+}
+
+std::string serializeJob(const Job& job)
+{
+    // ordered_json keeps the keys in the order written here, so files diff well.
+    using ojson = nlohmann::ordered_json;
+    ojson root;
+    root["format"] = "camwb-job";
+    root["version"] = kJobFormatVersion;
+    root["name"] = job.name;
+    root["model"] = job.modelPath;
+    root["stock"] = {{"min", {job.stock.min.x, job.stock.min.y, job.stock.min.z}},
+                     {"max", {job.stock.max.x, job.stock.max.y, job.stock.max.z}}};
+    root["workOffset"] = job.workOffset;
+    root["post"] = job.postId;
+    root["tools"] = ojson::array();
+    for (const ops::ToolController& tc : job.tools) {
+        root["tools"].push_back({{"number", tc.tool.number},
+                                 {"name", tc.tool.name},
+                                 {"kind", tc.tool.kind},
+                                 {"diameter", tc.tool.diameterMm},
+                                 {"cornerRadius", tc.tool.cornerRadiusMm},
+                                 {"fluteLength", tc.tool.fluteLengthMm},
+                                 {"length", tc.tool.lengthMm},
+                                 {"flutes", tc.tool.flutes},
+                                 {"spindleRpm", tc.spindleRpm},
+                                 {"cuttingFeed", tc.cuttingFeedMmPerMin},
+                                 {"plungeFeed", tc.plungeFeedMmPerMin}});
+    }
+    root["operations"] = ojson::array();
+    for (const Operation& op : job.operations) {
+        const ops::ProfileParams& p = op.profile;
+        root["operations"].push_back({{"type", op.type},
+                                      {"name", p.name},
+                                      {"tool", op.toolNumber},
+                                      {"face", p.faceIndex},
+                                      {"finalDepth", p.finalDepthZ},
+                                      {"safeHeight", p.safeZ},
+                                      {"clearanceHeight", p.clearanceZ},
+                                      {"direction", p.climb ? "climb" : "conventional"}});
+    }
+    return root.dump(2) + "\n";
+}
+
+base::Status saveJob(const Job& job, const std::string& path)
+{
+    Job onDisk = job;
+    if (!onDisk.modelPath.empty())
+        onDisk.modelPath = relativeModelPath(onDisk.modelPath, path);
+    return base::writeFileAtomically(path, serializeJob(onDisk));
+}
+
+std::string absoluteModelPath(const std::string& modelPath, const std::string& jobPath)
+{
+    const fs::path model(modelPath);
+    if (model.is_absolute() || modelPath.empty())
+        return modelPath;
+    return (fs::absolute(jobPath).parent_path() / model).lexically_normal().string();
+}
+
+std::string relativeModelPath(const std::string& modelPath, const std::string& jobPath)
+{
+    const fs::path base = fs::absolute(jobPath).parent_path();
+    const fs::path relative = fs::absolute(modelPath).lexically_normal().lexically_relative(base);
+    return relative.empty() ? modelPath : relative.generic_string();
+}
+
+}  // namespace camwb::document

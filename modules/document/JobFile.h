@@ -1,0 +1,28 @@
+// Reading and writing .camwb job files: versioned JSON, atomic saves, clear errors with the
+// file name (and line/column for malformed JSON). A newer format version is refused, not guessed.
+#pragma once
+
+#include "base/Result.h"
+#include "document/Job.h"
+
+#include <string>
+
+namespace camwb::document {
+
+inline constexpr int kJobFormatVersion = 1;
+
+// In memory a job's model path is absolute; in the file it is relative to the job file's folder.
+// loadJob resolves it, saveJob makes it relative again, so jobs can be moved with their models.
+base::Result<Job> loadJob(const std::string& path);
+base::Status saveJob(const Job& job, const std::string& path);
+
+// The file text as is (model path exactly as written), for tests and tools.
+base::Result<Job> parseJob(const std::string& text, const std::string& pathForMessages);
+std::string serializeJob(const Job& job);
+
+// `modelPath` resolved against the folder of `jobPath` (absolute paths stay as they are).
+std::string absoluteModelPath(const std::string& modelPath, const std::string& jobPath);
+// `modelPath` made relative to the folder of `jobPath`.
+std::string relativeModelPath(const std::string& modelPath, const std::string& jobPath);
+
+}  // namespace camwb::document

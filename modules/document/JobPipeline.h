@@ -1,0 +1,25 @@
+// From a job to NC: load the model, compute every operation into one program toolpath
+// (tool changes inserted where the tool changes), and post it. Used by camwb-cli and the GUI
+// alike, so both produce the same NC for the same job.
+#pragma once
+
+#include "base/Result.h"
+#include "document/Job.h"
+#include "occ/Model.h"
+#include "post/PostProcessor.h"
+#include "toolpath/Toolpath.h"
+
+#include <string>
+#include <vector>
+
+namespace camwb::document {
+
+base::Result<occ::Model> loadJobModel(const Job& job, const occ::ProgressFn& progress = {});
+
+// The whole program: work offset, then per operation its section with the tool change and
+// spindle start inserted after SectionBegin when the tool differs from the previous one.
+base::Result<toolpath::Toolpath> computeProgram(const Job& job, const occ::Model& model);
+
+base::Result<post::PostProcessor> loadJobPost(const Job& job, const std::vector<std::string>& postDirs);
+
+}  // namespace camwb::document

@@ -1,0 +1,41 @@
+#include "document/UndoStack.h"
+
+namespace camwb::document {
+
+void UndoStack::push(std::unique_ptr<UndoCommand> command)
+{
+    command->redo();
+    if (m_cleanIndex > static_cast<long>(m_index))
+        m_cleanIndex = -1;  // the saved state was in the redo history we are dropping
+    m_commands.resize(m_index);
+    m_commands.push_back(std::move(command));
+    ++m_index;
+}
+
+void UndoStack::undo()
+{
+    if (!canUndo())
+        return;
+    --m_index;
+    m_commands[m_index]->undo();
+}
+
+void UndoStack::redo()
+{
+    if (!canRedo())
+        return;
+    m_commands[m_index]->redo();
+    ++m_index;
+}
+
+std::string UndoStack::undoText() const { return canUndo() ? m_commands[m_index - 1]->text() : std::string(); }
+std::string UndoStack::redoText() const { return canRedo() ? m_commands[m_index]->text() : std::string(); }
+
+void UndoStack::clear()
+{
+    m_commands.clear();
+    m_index = 0;
+    m_cleanIndex = 0;
+}
+
+}  // namespace camwb::document

@@ -1,0 +1,224 @@
+#include "gui/shell/MainWindow.h"
+
+#include "camwb_version.h"
+#include "gui/actions/ActionRegistry.h"
+#include "gui/editor/NcEditor.h"
+#include "gui/shell/JobTree.h"
+#include "gui/shell/ProfileDialog.h"
+#include "gui/shell/ReportView.h"
+#include "gui/shell/Workbench.h"
+#include "gui/view3d/View3D.h"
+
+#include <QAction>
+#include <QCloseEvent>
+#include <QDockWidget>
+#include <QFileDialog>
+#include <QFileInfo>
+#include <QMenuBar>
+#include <QMessageBox>
+#include <QProgressBar>
+#include <QStatusBar>
+#include <QToolBar>
+
+namespace camwb::gui {
+
+namespace {
+
+QDockWidget* addDock(QMainWindow* window, const QString& title, const QString& name, QWidget* content,
+                     Qt::DockWidgetArea area)
+{
+    auto* dock = new QDockWidget(title, window);
+    dock->setObjectName(name);
+    dock->setWidget(content);
+    window->addDockWidget(area, dock);
+    return dock;
+}
+
+}  // namespace
+
+MainWindow::MainWindow(QWidget* parent)
+    : QMainWindow(parent),
+      m_workbench(new Workbench(this)),
+      m_actions(new ActionRegistry(this)),
+      m_view(new View3D(this)),
+      m_editor(new NcEditor(this)),
+      m_report(new ReportView(this)),
+      m_jobTree(new JobTree(*m_workbench, this)),
+      m_progress(new QProgressBar(this))
+{
+    setObjectName(QStringLiteral("mainWindow"));
+    m_view->setObjectName(QStringLiteral("view3d"));
+    m_editor->setObjectName(QStringLiteral("ncEditor"));
+    m_editor->setReadOnly(true);
+    setCentralWidget(m_view);
+
+    addDock(this, tr("Job"), QStringLiteral("jobDock"), m_jobTree, Qt::LeftDockWidgetArea);
+    addDock(this, tr("NC program"), QStringLiteral("ncDock"), m_editor, Qt::RightDockWidgetArea);
+    addDock(this, tr("Report"), QStringLiteral("reportDock"), m_report, Qt::BottomDockWidgetArea);
+
+    m_progress->setMaximumWidth(220);
+    m_progress->setRange(0, 100);
+    m_progress->hide();
+    statusBar()->addPermanentWidget(m_progress);
+
+    registerActions();
+    m_actions->buildMenus(menuBar());
+    auto* toolBar = addToolBar(tr("Main"));
+    toolBar->setObjectName(QStringLiteral("mainToolBar"));
+    m_actions->buildToolBar(toolBar);
+
+    connectWorkbench();
+    connect(m_jobTree, &JobTree::editOperationRequested, this, &MainWindow::editOperation);
+
+    QString reason;
+    if (!m_view->hasOpenGl() && !View3D::openGlAvailable(&reason))
+        m_report->append(Workbench::Severity::Warning, tr("3D view unavailable: %1").arg(reason));
+    resize(1400, 860);
+    updateTitle();
+}
+
+MainWindow::~MainWindow() = default;
+
+bool MainWindow::openJob(const QString& path) { return m_workbench->openJob(path); }
+
+void MainWindow::registerActions()
+{
+    const QString file = tr("&File"), edit = tr("&Edit"), operation = tr("&Operation"), jobMenu = tr("&Job"),
+                  view = tr("&View"), help = tr("&Help");
+    auto add = [this](ActionSpec spec, auto slot) {
+        QAction* action = m_actions->add(spec);
+        connect(action, &QAction::triggered, this, slot);
+        return action;
+    };
+
+    add({"Cam.File.Open", tr("&Open Job…"), file, QKeySequence::Open, true}, [this] {
+        if (!confirmDiscard())
+            return;
+        const QString path = QFileDialog::getOpenFileName(this, tr("Open job"), {}, tr("CAM Workbench jobs (*.camwb)"));
+        if (!path.isEmpty())
+            m_workbench->openJob(path);
+    });
+    add({"Cam.File.Save", tr("&Save Job"), file, QKeySequence::Save, true}, [this] {
+        const QString path = QString::fromStdString(m_workbench->document().path());
+        if (path.isEmpty())
+            m_actions->trigger(QStringLiteral("Cam.File.SaveAs"));
+        else
+            m_workbench->saveJob(path);
+    });
+    add({"Cam.File.SaveAs", tr("Save Job &As…"), file, QKeySequence::SaveAs}, [this] {
+        const QString path = QFileDialog::getSaveFileName(this, tr("Save job"), {}, tr("CAM Workbench jobs (*.camwb)"));
+        if (!path.isEmpty())
+            m_workbench->saveJob(path.endsWith(QLatin1String(".camwb")) ? path : path + QStringLiteral(".camwb"));
+    });
+    add({"Cam.File.ImportModel", tr("&Import Model…"), file, QKeySequence(Qt::CTRL | Qt::Key_I), true, true}, [this] {
+        const QString path = QFileDialog::getOpenFileName(
+            this, tr("Import model"), {},
+            tr("Models (*.step *.stp *.iges *.igs *.brep *.brp *.stl);;All files (*)"));
+        if (!path.isEmpty())
+            m_workbench->importModel(path);
+    });
+    add({"Cam.File.Quit", tr("&Quit"), file, QKeySequence::Quit, false, true}, [this] { close(); });
+
+    QAction* undo = add({"Cam.Edit.Undo", tr("&Undo"), edit, QKeySequence::Undo, true, true}, [this] { m_workbench->undo(); });
+    QAction* redo = add({"Cam.Edit.Redo", tr("&Redo"), edit, QKeySequence::Redo, true}, [this] { m_workbench->redo(); });
+    auto updateUndo = [this, undo, redo] {
+        auto& stack = m_workbench->document().undoStack();
+        undo->setEnabled(stack.canUndo());
+        redo->setEnabled(stack.canRedo());
+        undo->setText(stack.canUndo() ? tr("&Undo %1").arg(QString::fromStdString(stack.undoText())) : tr("&Undo"));
+        redo->setText(stack.canRedo() ? tr("&Redo %1").arg(QString::fromStdString(stack.redoText())) : tr("&Redo"));
+    };
+    connect(m_workbench, &Workbench::jobChanged, this, updateUndo);
+    updateUndo();
+
+    add({"Cam.Op.NewProfile", tr("New &Profile"), operation, QKeySequence(Qt::CTRL | Qt::Key_P), true, true},
+        [this] {
+            m_workbench->addProfileOperation();
+        });
+    add({"Cam.Op.Edit", tr("&Edit Operation…"), operation, QKeySequence(Qt::Key_F2)}, [this] {
+        editOperation(m_jobTree->selectedOperation());
+    });
+    add({"Cam.Op.Delete", tr("&Delete Operation"), operation, QKeySequence::Delete}, [this] {
+        m_workbench->removeOperation(m_jobTree->selectedOperation());
+    });
+
+    add({"Cam.Job.Post", tr("&Post"), jobMenu, QKeySequence(Qt::Key_F9), true, true}, [this] { m_workbench->post(); });
+    add({"Cam.Job.SaveNc", tr("&Save NC Program…"), jobMenu, QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_S)}, [this] {
+        const QString suffix = m_workbench->ncExtension();
+        const QString base = QFileInfo(QString::fromStdString(m_workbench->document().path())).completeBaseName();
+        const QString path = QFileDialog::getSaveFileName(this, tr("Save NC program"), base + '.' + suffix,
+                                                          tr("NC programs (*.%1);;All files (*)").arg(suffix));
+        if (!path.isEmpty())
+            m_workbench->saveNc(path);
+    });
+
+    add({"Cam.View.Isometric", tr("&Isometric"), view, QKeySequence(Qt::Key_0), true, true},
+        [this] { m_view->setViewPreset(View3D::Preset::Isometric); });
+    add({"Cam.View.Top", tr("&Top"), view, QKeySequence(Qt::Key_1), true}, [this] { m_view->setViewPreset(View3D::Preset::Top); });
+    add({"Cam.View.Front", tr("&Front"), view, QKeySequence(Qt::Key_2), true},
+        [this] { m_view->setViewPreset(View3D::Preset::Front); });
+    add({"Cam.View.Right", tr("&Right"), view, QKeySequence(Qt::Key_3), true},
+        [this] { m_view->setViewPreset(View3D::Preset::Right); });
+    add({"Cam.View.FitAll", tr("Fit &All"), view, QKeySequence(Qt::Key_F), true}, [this] { m_view->fitAll(); });
+
+    add({"Cam.Help.About", tr("&About CAM Workbench"), help}, [this] {
+        QMessageBox::about(this, tr("About CAM Workbench"),
+                           tr("CAM Workbench %1\nCAM and post-processor workbench.").arg(QStringLiteral(CAMWB_VERSION)));
+    });
+}
+
+void MainWindow::connectWorkbench()
+{
+    connect(m_workbench, &Workbench::message, m_report, &ReportView::append);
+    connect(m_workbench, &Workbench::modelChanged, this, [this] {
+        m_view->setModel(m_workbench->displayMesh());
+        m_view->fitAll();
+    });
+    connect(m_workbench, &Workbench::toolpathChanged, this, [this] { m_view->setToolpath(m_workbench->toolpath()); });
+    connect(m_workbench, &Workbench::ncChanged, this, [this] { m_editor->setText(m_workbench->ncText()); });
+    connect(m_workbench, &Workbench::jobChanged, this, &MainWindow::updateTitle);
+    connect(m_workbench, &Workbench::busyChanged, this, [this](bool busy) {
+        m_progress->setVisible(busy);
+        m_progress->setValue(0);
+        statusBar()->showMessage(busy ? tr("Working…") : tr("Ready"));
+    });
+    connect(m_workbench, &Workbench::progress, this, [this](int percent, const QString& what) {
+        m_progress->setValue(percent);
+        statusBar()->showMessage(what);
+    });
+}
+
+void MainWindow::updateTitle()
+{
+    const QString path = QString::fromStdString(m_workbench->document().path());
+    const QString name = path.isEmpty() ? tr("Untitled") : QFileInfo(path).fileName();
+    setWindowTitle(tr("%1%2 — CAM Workbench").arg(name, m_workbench->document().isModified() ? QStringLiteral("*") : QString()));
+}
+
+void MainWindow::editOperation(int index)
+{
+    const auto& operations = m_workbench->job().operations;
+    if (index < 0 || index >= static_cast<int>(operations.size()))
+        return;
+    ProfileDialog dialog(operations[index], m_workbench->job(), m_workbench->model(), this);
+    if (dialog.exec() == QDialog::Accepted)
+        m_workbench->updateOperation(index, dialog.operation());
+}
+
+bool MainWindow::confirmDiscard()
+{
+    if (!m_workbench->document().isModified())
+        return true;
+    return QMessageBox::question(this, tr("Unsaved changes"), tr("Discard the unsaved changes of this job?")) ==
+           QMessageBox::Yes;
+}
+
+void MainWindow::closeEvent(QCloseEvent* event)
+{
+    if (confirmDiscard())
+        event->accept();
+    else
+        event->ignore();
+}
+
+}  // namespace camwb::gui

@@ -1,0 +1,52 @@
+// The main window only assembles: the 3D view in the centre, docks for the job tree, the NC
+// editor and the report, menus and toolbar built from the action registry.
+#pragma once
+
+#include <QMainWindow>
+
+class QProgressBar;
+
+namespace camwb::gui {
+
+class ActionRegistry;
+class JobTree;
+class NcEditor;
+class ReportView;
+class View3D;
+class Workbench;
+
+class MainWindow : public QMainWindow {
+    Q_OBJECT
+public:
+    explicit MainWindow(QWidget* parent = nullptr);
+    ~MainWindow() override;
+
+    Workbench& workbench() { return *m_workbench; }
+    ActionRegistry& actions() { return *m_actions; }
+    View3D* view() const { return m_view; }
+    NcEditor* ncEditor() const { return m_editor; }
+    ReportView* reportView() const { return m_report; }
+    JobTree* jobTree() const { return m_jobTree; }
+
+    bool openJob(const QString& path);
+
+protected:
+    void closeEvent(QCloseEvent* event) override;
+
+private:
+    void registerActions();
+    void connectWorkbench();
+    void updateTitle();
+    void editOperation(int index);
+    bool confirmDiscard();
+
+    Workbench* m_workbench;
+    ActionRegistry* m_actions;
+    View3D* m_view;
+    NcEditor* m_editor;
+    ReportView* m_report;
+    JobTree* m_jobTree;
+    QProgressBar* m_progress;
+};
+
+}  // namespace camwb::gui

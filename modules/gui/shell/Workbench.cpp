@@ -1,0 +1,310 @@
+#include "gui/shell/Workbench.h"
+
+#include "base/AtomicFile.h"
+#include "document/JobFile.h"
+#include "document/JobPipeline.h"
+#include "post/PostRegistry.h"
+
+#include <QFileInfo>
+#include <QFutureWatcher>
+#include <QPointer>
+#include <QtConcurrent/QtConcurrentRun>
+
+#include <algorithm>
+#include <optional>
+
+namespace camwb::gui {
+
+namespace {
+
+QString qs(const std::string& s) { return QString::fromStdString(s); }
+
+// Progress from a worker thread, delivered on the GUI thread.
+occ::ProgressFn progressReporter(Workbench* workbench, const QString& what)
+{
+    QPointer<Workbench> target(workbench);
+    return [target, what](double fraction) {
+        const int percent = std::clamp(static_cast<int>(fraction * 100), 0, 100);
+        QMetaObject::invokeMethod(
+            target.data(), [target, percent, what] { if (target) emit target->progress(percent, what); },
+            Qt::QueuedConnection);
+        return true;
+    };
+}
+
+}  // namespace
+
+// What a background compute brings back; empty optionals mean "unchanged".
+struct Workbench::ComputeOutcome {
+    std::optional<occ::Model> model;
+    std::string modelPath;
+    occ::DisplayMesh mesh;
+    std::optional<toolpath::Toolpath> toolpath;
+    std::optional<post::PostOutput> nc;
+    std::string ncExtension;
+    std::vector<std::string> errors;
+};
+
+Workbench::Workbench(QObject* parent) : QObject(parent)
+{
+    m_document.setChangedListener([this] {
+        emit jobChanged();
+        if (!m_suppressRecompute)
+            startCompute();
+    });
+}
+
+Workbench::~Workbench() = default;
+
+bool Workbench::openJob(const QString& path)
+{
+    auto job = document::loadJob(path.toStdString());
+    if (!job) {
+        report(Severity::Error, qs(job.error().toString()));
+        return false;
+    }
+    m_suppressRecompute = true;
+    m_modelPath.clear();  // always read the model again: the file may have changed on disk
+    m_document.reset(std::move(job.value()), path.toStdString());
+    m_suppressRecompute = false;
+    report(Severity::Info, tr("Opened job %1").arg(path));
+    startCompute();
+    return true;
+}
+
+bool Workbench::saveJob(const QString& path)
+{
+    if (base::Status saved = m_document.saveAs(path.toStdString()); !saved) {
+        report(Severity::Error, qs(saved.error().toString()));
+        return false;
+    }
+    report(Severity::Info, tr("Saved job %1").arg(path));
+    return true;
+}
+
+void Workbench::post() { startCompute(); }
+
+bool Workbench::saveNc(const QString& path)
+{
+    if (m_nc.isEmpty()) {
+        report(Severity::Error, tr("There is no NC program to save; post the job first."));
+        return false;
+    }
+    if (base::Status written = base::writeFileAtomically(path.toStdString(), m_nc.toStdString()); !written) {
+        report(Severity::Error, qs(written.error().toString()));
+        return false;
+    }
+    report(Severity::Info, tr("Wrote NC program %1").arg(path));
+    return true;
+}
+
+void Workbench::importModel(const QString& path)
+{
+    if (m_busy) {
+        report(Severity::Warning, tr("Busy; import the model again when the current work has finished."));
+        emit modelImportFinished(false);
+        return;
+    }
+    setBusy(true);
+    const std::string file = QFileInfo(path).absoluteFilePath().toStdString();
+    auto progress = progressReporter(this, tr("Importing %1").arg(QFileInfo(path).fileName()));
+    auto* watcher = new QFutureWatcher<std::shared_ptr<ComputeOutcome>>(this);
+    connect(watcher, &QFutureWatcherBase::finished, this, [this, watcher, file] {
+        std::shared_ptr<ComputeOutcome> outcome = watcher->result();
+        watcher->deleteLater();
+        setBusy(false);
+        if (!outcome->model) {
+            // The job stays exactly as it was.
+            for (const std::string& e : outcome->errors)
+                report(Severity::Error, qs(e));
+            emit modelImportFinished(false);
+            return;
+        }
+        m_model = std::move(*outcome->model);
+        m_modelPath = file;
+        m_mesh = std::move(outcome->mesh);
+        emit modelChanged();
+        report(Severity::Info, tr("Imported %1 (%2 faces)").arg(qs(file)).arg(m_model.faceCount()));
+        const base::Vec3 lo = m_model.boundsMin(), hi = m_model.boundsMax();
+        const bool hadModel = !job().modelPath.empty();
+        m_document.edit("Import model", [&](document::Job& j) {
+            j.modelPath = file;
+            if (!hadModel)
+                j.stock = {lo, hi};
+            // Faces of another model mean nothing for this one.
+            if (hadModel)
+                j.operations.clear();
+        });
+        emit modelImportFinished(true);
+    });
+    watcher->setFuture(QtConcurrent::run([file, progress] {
+        auto outcome = std::make_shared<ComputeOutcome>();
+        auto model = occ::Model::load(file, progress);
+        if (!model) {
+            outcome->errors.push_back(model.error().toString());
+            return outcome;
+        }
+        outcome->mesh = model->mesh();
+        outcome->model = std::move(model.value());
+        return outcome;
+    }));
+}
+
+bool Workbench::addProfileOperation(int faceIndex)
+{
+    if (!m_model.hasBRep()) {
+        report(Severity::Error, tr("A profile needs a solid model (STEP, IGES or BREP); import one first."));
+        return false;
+    }
+    const int face = faceIndex > 0 ? faceIndex : m_model.topPlanarFace();
+    if (face < 1 || face > m_model.faceCount() || !m_model.face(face).planar) {
+        report(Severity::Error, tr("Face %1 is not a planar face of the model.").arg(face));
+        return false;
+    }
+    const double top = m_model.face(face).planeZ;
+    const double bottom = m_model.boundsMin().z;
+    const double modelTop = m_model.boundsMax().z;
+    m_document.edit("New profile", [&](document::Job& j) {
+        if (j.tools.empty()) {
+            ops::ToolController tc;
+            tc.tool = {1, "Flat end mill D10", "flat", 10.0, 0.0, 22.0, 50.0, 3};
+            tc.spindleRpm = 3000;
+            tc.cuttingFeedMmPerMin = 600;
+            tc.plungeFeedMmPerMin = 150;
+            j.tools.push_back(tc);
+        }
+        document::Operation op;
+        op.toolNumber = j.tools.front().tool.number;
+        op.profile.name = "Profile " + std::to_string(j.operations.size() + 1);
+        op.profile.faceIndex = face;
+        op.profile.finalDepthZ = std::max(bottom, top - 5.0);
+        op.profile.safeZ = modelTop + 2.0;
+        op.profile.clearanceZ = modelTop + 10.0;
+        j.operations.push_back(op);
+    });
+    return true;
+}
+
+void Workbench::updateOperation(int index, const document::Operation& operation)
+{
+    if (index < 0 || index >= static_cast<int>(job().operations.size()))
+        return;
+    m_document.edit("Edit " + operation.profile.name, [&](document::Job& j) { j.operations[index] = operation; });
+}
+
+void Workbench::removeOperation(int index)
+{
+    if (index < 0 || index >= static_cast<int>(job().operations.size()))
+        return;
+    m_document.edit("Delete " + job().operations[index].profile.name,
+                    [&](document::Job& j) { j.operations.erase(j.operations.begin() + index); });
+}
+
+void Workbench::undo() { m_document.undo(); }
+void Workbench::redo() { m_document.redo(); }
+
+void Workbench::startCompute()
+{
+    if (m_busy) {
+        m_recomputePending = true;
+        return;
+    }
+    setBusy(true);
+    const document::Job job = this->job();
+    const occ::Model model = m_model;
+    const bool reloadModel = job.modelPath != m_modelPath;
+    auto progress = progressReporter(this, tr("Loading model"));
+    const std::string programName = QFileInfo(qs(m_document.path())).completeBaseName().toStdString();
+
+    auto* watcher = new QFutureWatcher<std::shared_ptr<ComputeOutcome>>(this);
+    connect(watcher, &QFutureWatcherBase::finished, this, [this, watcher] {
+        std::shared_ptr<ComputeOutcome> outcome = watcher->result();
+        watcher->deleteLater();
+        finishCompute(outcome);
+    });
+    watcher->setFuture(QtConcurrent::run([job, model, reloadModel, progress, programName] {
+        auto outcome = std::make_shared<ComputeOutcome>();
+        if (job.modelPath.empty())
+            return outcome;  // a new job: nothing to compute yet
+        occ::Model current = model;
+        if (reloadModel) {
+            auto loaded = document::loadJobModel(job, progress);
+            if (!loaded) {
+                outcome->errors.push_back(loaded.error().toString());
+                return outcome;
+            }
+            current = std::move(loaded.value());
+            outcome->mesh = current.mesh();
+            outcome->model = current;
+            outcome->modelPath = job.modelPath;
+        }
+        auto program = document::computeProgram(job, current);
+        if (!program) {
+            outcome->errors.push_back(program.error().message);
+            return outcome;
+        }
+        outcome->toolpath = program.value();
+        auto post = document::loadJobPost(job, post::defaultPostDirs());
+        if (!post) {
+            outcome->errors.push_back(post.error().toString());
+            return outcome;
+        }
+        outcome->ncExtension = post->info().extension;
+        auto nc = post->run(program.value(), post::PostContext::fromEnvironment(programName));
+        if (!nc) {
+            outcome->errors.push_back(nc.error().toString());
+            return outcome;
+        }
+        outcome->nc = std::move(nc.value());
+        return outcome;
+    }));
+}
+
+void Workbench::finishCompute(const std::shared_ptr<ComputeOutcome>& outcome)
+{
+    if (outcome->model) {
+        m_model = std::move(*outcome->model);
+        m_modelPath = outcome->modelPath;
+        m_mesh = std::move(outcome->mesh);
+        emit modelChanged();
+    }
+    if (outcome->toolpath) {
+        m_toolpath = std::move(*outcome->toolpath);
+        const toolpath::ToolpathStats stats = toolpath::statistics(m_toolpath);
+        report(Severity::Info, tr("Toolpath: %1 lines, %2 arcs, %3 rapids")
+                                   .arg(stats.lines)
+                                   .arg(stats.arcs + stats.helices)
+                                   .arg(stats.rapids));
+        emit toolpathChanged();
+    }
+    if (outcome->nc) {
+        m_nc = qs(outcome->nc->text);
+        m_ncExtension = qs(outcome->ncExtension);
+        for (const post::PostMessage& m : outcome->nc->messages) {
+            const bool isError = m.severity == post::PostMessage::Severity::Error;
+            report(isError ? Severity::Error : Severity::Warning, qs(base::Error{m.text, m.file, m.line}.toString()));
+        }
+        report(Severity::Info, tr("Posted %1 lines with %2").arg(m_nc.count('\n')).arg(qs(job().postId)));
+        emit ncChanged();
+    }
+    for (const std::string& e : outcome->errors)
+        report(Severity::Error, qs(e));
+    setBusy(false);
+    emit postFinished(outcome->errors.empty());
+    if (m_recomputePending) {
+        m_recomputePending = false;
+        startCompute();
+    }
+}
+
+void Workbench::setBusy(bool busy)
+{
+    if (m_busy == busy)
+        return;
+    m_busy = busy;
+    emit busyChanged(busy);
+}
+
+void Workbench::report(Severity severity, const QString& text) { emit message(severity, text); }
+
+}  // namespace camwb::gui

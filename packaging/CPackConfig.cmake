@@ -1,0 +1,22 @@
+# Debian package: `cpack -G DEB` in the build folder makes camwb_<version>_<arch>.deb.
+set(CPACK_PACKAGE_NAME camwb)
+set(CPACK_PACKAGE_VENDOR "CAM Workbench developers")
+set(CPACK_PACKAGE_CONTACT "CAM Workbench developers <camwb@localhost>")
+set(CPACK_PACKAGE_DESCRIPTION_SUMMARY "CAM and post-processor workbench (OpenCASCADE, Qt6)")
+set(CPACK_PACKAGE_VERSION ${PROJECT_VERSION})
+set(CPACK_DEBIAN_PACKAGE_SECTION science)
+set(CPACK_DEBIAN_PACKAGE_SHLIBDEPS ON)
+set(CPACK_DEBIAN_FILE_NAME DEB-DEFAULT)
+set(CPACK_PACKAGING_INSTALL_PREFIX /usr)
+set(CPACK_GENERATOR DEB)
+
+install(FILES ${PROJECT_SOURCE_DIR}/packaging/camwb.desktop DESTINATION ${CMAKE_INSTALL_DATADIR}/applications)
+install(FILES ${PROJECT_SOURCE_DIR}/resources/icons/camwb.svg
+        DESTINATION ${CMAKE_INSTALL_DATADIR}/icons/hicolor/scalable/apps)
+install(DIRECTORY ${PROJECT_SOURCE_DIR}/posts/ DESTINATION ${CMAKE_INSTALL_DATADIR}/camwb/posts
+        FILES_MATCHING PATTERN "*.js")
+install(FILES ${PROJECT_SOURCE_DIR}/resources/examples/example-block.camwb
+              ${PROJECT_SOURCE_DIR}/resources/examples/example-block.step
+        DESTINATION ${CMAKE_INSTALL_DATADIR}/camwb/examples)
+
+include(CPack)

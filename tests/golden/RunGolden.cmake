@@ -1,0 +1,16 @@
+# Runs camwb-cli on a job and compares the NC with the expected file byte for byte.
+# With CAMWB_UPDATE_GOLDEN=1 in the environment it rewrites the expected file instead.
+execute_process(COMMAND ${CLI} run ${JOB} -o ${OUT} RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+if(NOT rc EQUAL 0)
+  message(FATAL_ERROR "camwb-cli failed (${rc}):\n${out}${err}")
+endif()
+if("$ENV{CAMWB_UPDATE_GOLDEN}" STREQUAL "1")
+  file(COPY_FILE ${OUT} ${EXPECTED})
+  message(STATUS "updated ${EXPECTED}: review the diff before committing")
+  return()
+endif()
+execute_process(COMMAND ${CMAKE_COMMAND} -E compare_files ${OUT} ${EXPECTED} RESULT_VARIABLE different)
+if(different)
+  execute_process(COMMAND diff -u ${EXPECTED} ${OUT} OUTPUT_VARIABLE diff)
+  message(FATAL_ERROR "NC differs from ${EXPECTED}:\n${diff}")
+endif()

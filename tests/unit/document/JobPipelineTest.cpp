@@ -1,0 +1,94 @@
+#include "document/JobFile.h"
+#include "document/JobPipeline.h"
+#include "post/PostRegistry.h"
+
+#include <gtest/gtest.h>
+
+using namespace camwb;
+
+namespace {
+
+const std::string kExampleJob = std::string(CAMWB_TEST_DATA_DIR) + "/resources/examples/example-block.camwb";
+
+template <class T>
+std::size_t countOf(const toolpath::Toolpath& tp)
+{
+    std::size_t n = 0;
+    for (const auto& r : tp.records())
+        n += std::holds_alternative<T>(r) ? 1 : 0;
+    return n;
+}
+
+}  // namespace
+
+TEST(JobPipeline, ExampleJobComputesWithToolChangeAfterSectionBegin)
+{
+    auto job = document::loadJob(kExampleJob);
+    ASSERT_TRUE(job.ok()) << job.error().toString();
+    auto model = document::loadJobModel(job.value());
+    ASSERT_TRUE(model.ok()) << model.error().toString();
+    auto program = document::computeProgram(job.value(), model.value());
+    ASSERT_TRUE(program.ok()) << program.error().toString();
+
+    const toolpath::Toolpath& tp = program.value();
+    ASSERT_GE(tp.size(), 6u);
+    EXPECT_TRUE(std::holds_alternative<toolpath::WorkOffset>(tp.record(0)));
+    EXPECT_TRUE(std::holds_alternative<toolpath::SectionBegin>(tp.record(1)));
+    ASSERT_TRUE(std::holds_alternative<toolpath::ToolChange>(tp.record(2)));
+    EXPECT_EQ(std::get<toolpath::ToolChange>(tp.record(2)).tool.number, job->operations[0].toolNumber);
+    EXPECT_TRUE(std::holds_alternative<toolpath::Spindle>(tp.record(3)));
+    EXPECT_EQ(tp.source(2).operationIndex, 0);
+    EXPECT_GT(countOf<toolpath::Arc>(tp), 0u) << "the rounded corners must stay arcs";
+}
+
+TEST(JobPipeline, SameToolTwiceChangesOnceAnotherToolChangesAgain)
+{
+    auto job = document::loadJob(kExampleJob);
+    ASSERT_TRUE(job.ok());
+    auto model = document::loadJobModel(job.value());
+    ASSERT_TRUE(model.ok());
+
+    document::Job twice = job.value();
+    twice.operations.push_back(twice.operations[0]);
+    auto same = document::computeProgram(twice, model.value());
+    ASSERT_TRUE(same.ok());
+    EXPECT_EQ(countOf<toolpath::ToolChange>(same.value()), 1u);
+    EXPECT_EQ(countOf<toolpath::SectionBegin>(same.value()), 2u);
+
+    ops::ToolController other = twice.tools[0];
+    other.tool.number = 2;
+    other.tool.diameterMm = 6;
+    twice.tools.push_back(other);
+    twice.operations[1].toolNumber = 2;
+    auto changed = document::computeProgram(twice, model.value());
+    ASSERT_TRUE(changed.ok());
+    EXPECT_EQ(countOf<toolpath::ToolChange>(changed.value()), 2u);
+}
+
+TEST(JobPipeline, ErrorsNameTheOperation)
+{
+    auto job = document::loadJob(kExampleJob);
+    ASSERT_TRUE(job.ok());
+    auto model = document::loadJobModel(job.value());
+    ASSERT_TRUE(model.ok());
+    document::Job bad = job.value();
+    bad.operations[0].profile.faceIndex = 9999;
+    auto program = document::computeProgram(bad, model.value());
+    ASSERT_FALSE(program.ok());
+    EXPECT_NE(program.error().message.find(bad.operations[0].profile.name), std::string::npos)
+        << program.error().message;
+}
+
+TEST(JobPipeline, MissingModelAndUnknownPostAreErrors)
+{
+    document::Job job;
+    EXPECT_FALSE(document::loadJobModel(job).ok());
+    job.modelPath = "/nonexistent/part.step";
+    auto model = document::loadJobModel(job);
+    ASSERT_FALSE(model.ok());
+    EXPECT_EQ(model.error().file, "/nonexistent/part.step");
+    job.postId = "no-such-post";
+    auto post = document::loadJobPost(job, post::defaultPostDirs());
+    ASSERT_FALSE(post.ok());
+    EXPECT_NE(post.error().toString().find("no-such-post"), std::string::npos);
+}

@@ -1,0 +1,58 @@
+#include "geom/ClipperAdapter.h"
+
+#include <polyclipping/clipper.hpp>
+
+#include <algorithm>
+#include <cmath>
+
+namespace camwb::geom {
+
+namespace {
+
+ClipperLib::IntPoint toClipper(base::Vec2 p)
+{
+    return {static_cast<ClipperLib::cInt>(std::llround(p.x * kClipperScale)),
+            static_cast<ClipperLib::cInt>(std::llround(p.y * kClipperScale))};
+}
+
+base::Vec2 fromClipper(const ClipperLib::IntPoint& p)
+{
+    return {static_cast<double>(p.X) / kClipperScale, static_cast<double>(p.Y) / kClipperScale};
+}
+
+} // namespace
+
+std::vector<std::vector<base::Vec2>> clipperOffset(const std::vector<base::Vec2>& polygon, double delta,
+                                                   double arcTolerance)
+{
+    ClipperLib::Path path;
+    path.reserve(polygon.size());
+    for (const base::Vec2& p : polygon)
+        path.push_back(toClipper(p));
+
+    ClipperLib::ClipperOffset offsetter;
+    // Clipper clamps the tolerance to >= 0.25 units; keep it meaningful for tiny requests.
+    offsetter.ArcTolerance = std::max(arcTolerance * kClipperScale, 0.25);
+    offsetter.AddPath(path, ClipperLib::jtRound, ClipperLib::etClosedPolygon);
+    ClipperLib::Paths solution;
+    offsetter.Execute(solution, delta * kClipperScale);
+
+    std::vector<std::vector<base::Vec2>> result;
+    for (const ClipperLib::Path& out : solution) {
+        std::vector<base::Vec2>& poly = result.emplace_back();
+        poly.reserve(out.size());
+        for (const ClipperLib::IntPoint& p : out)
+            poly.push_back(fromClipper(p));
+    }
+    return result;
+}
+
+double polygonArea(const std::vector<base::Vec2>& polygon)
+{
+    double twice = 0;
+    for (std::size_t i = 0; i < polygon.size(); ++i)
+        twice += polygon[i].cross(polygon[(i + 1) % polygon.size()]);
+    return 0.5 * twice;
+}
+
+} // namespace camwb::geom

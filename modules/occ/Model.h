@@ -1,0 +1,66 @@
+// A CAD model loaded from a file (STEP, IGES, BREP or STL) and the questions the workbench asks of it:
+// which faces it has, the outline of a planar face as a geom::Profile, and a mesh for display.
+// OCCT stays behind the pimpl: nothing that includes this header sees an OCCT type.
+#pragma once
+
+#include "base/Result.h"
+#include "base/Vec.h"
+#include "geom/Profile.h"
+#include "occ/DisplayMesh.h"
+
+#include <functional>
+#include <memory>
+#include <string>
+
+namespace camwb::occ {
+
+// Called with the fraction done (0..1); return false to cancel.
+using ProgressFn = std::function<bool(double fraction)>;
+
+struct FaceInfo {
+    int index = 0;        // 1-based; 0 = no such face
+    bool planar = false;
+    base::Vec3 normal;    // planar faces: outward unit normal
+    double planeZ = 0;    // planar faces with normal +-Z: their Z level
+    double areaMm2 = 0;
+};
+
+struct ModelData;
+
+// Immutable once loaded; copies share the data, so a Model is cheap to copy and safe to pass
+// between threads (mesh() serialises itself per model).
+class Model {
+public:
+    Model();  // empty
+
+    // Reads by extension (case-insensitive): .step .stp .iges .igs .brep .brp (solids/shells),
+    // .stl (display only). Never throws; errors name the file and the reason
+    // ("file not found", "not a STEP file or damaged: ...", "contains no shape", "cancelled").
+    static base::Result<Model> load(const std::string& path, const ProgressFn& progress = {});
+
+    bool empty() const;
+    bool hasBRep() const;  // false for STL meshes
+    int faceCount() const; // faces in TopExp::MapShapes order (stable for a given file)
+    FaceInfo face(int index) const;  // 1-based; FaceInfo{} (index 0) when out of range
+
+    // The topmost planar face whose normal is +Z (largest Z; ties -> largest area); 0 if none.
+    int topPlanarFace() const;
+
+    // Outer wire of a planar face with normal +Z or -Z as a closed counter-clockwise Profile in XY.
+    // Lines and circle arcs stay exact; other curves become line segments within toleranceMm.
+    base::Result<geom::Profile> planarFaceOuterProfile(int faceIndex, double toleranceMm = 0.01) const;
+
+    // Triangles (triangleFace filled; 0 for STL), per-vertex normals, feature edges as polylines.
+    // STL models return their own triangles and no edges; linearDeflectionMm is ignored for them.
+    DisplayMesh mesh(double linearDeflectionMm = 0.05) const;
+
+    base::Vec3 boundsMin() const;
+    base::Vec3 boundsMax() const;
+
+private:
+    explicit Model(std::shared_ptr<const ModelData> data);
+
+    std::shared_ptr<const ModelData> m_data;
+};
+
+}  // namespace camwb::occ

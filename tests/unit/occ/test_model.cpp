@@ -1,0 +1,278 @@
+// The example part built, written as STEP, read back: faces, the top face's profile, meshing.
+#include "OccTestUtil.h"
+
+#include "occ/ExamplePart.h"
+#include "occ/Model.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+#include <set>
+#include <thread>
+
+namespace camwb::occ {
+namespace {
+
+constexpr double kPi = std::numbers::pi;
+
+class ExamplePartTest : public ::testing::Test {
+protected:
+    static void SetUpTestSuite()
+    {
+        path = (test::scratchDir() / "example-block.step").string();
+        const base::Status written = writeExamplePart(path);
+        ASSERT_TRUE(written.ok()) << written.error().toString();
+        base::Result<Model> loaded = Model::load(path);
+        ASSERT_TRUE(loaded.ok()) << loaded.error().toString();
+        model = new Model(loaded.value());
+    }
+    static void TearDownTestSuite()
+    {
+        delete model;
+        model = nullptr;
+    }
+
+    static inline std::string path;
+    static inline Model* model = nullptr;
+};
+
+struct SegmentCounts {
+    int lines = 0;
+    int arcs = 0;
+};
+
+SegmentCounts countSegments(const geom::Profile& profile)
+{
+    SegmentCounts counts;
+    for (const geom::Segment& s : profile.segments)
+        (s.isArc() ? counts.arcs : counts.lines)++;
+    return counts;
+}
+
+// Index of the planar face with the given normal Z sign and plane Z, 0 if none.
+int findZFace(const Model& model, double normalZ, double z)
+{
+    for (int i = 1; i <= model.faceCount(); ++i) {
+        const FaceInfo f = model.face(i);
+        if (f.planar && std::abs(f.normal.z - normalZ) < 1e-9 && std::abs(f.planeZ - z) < 1e-9)
+            return i;
+    }
+    return 0;
+}
+
+TEST(ModelTest, DefaultIsEmpty)
+{
+    const Model model;
+    EXPECT_TRUE(model.empty());
+    EXPECT_FALSE(model.hasBRep());
+    EXPECT_EQ(model.faceCount(), 0);
+    EXPECT_EQ(model.topPlanarFace(), 0);
+    EXPECT_FALSE(model.planarFaceOuterProfile(1).ok());
+    EXPECT_TRUE(model.mesh().empty());
+}
+
+TEST_F(ExamplePartTest, FacesOfTheBlock)
+{
+    EXPECT_FALSE(model->empty());
+    EXPECT_TRUE(model->hasBRep());
+    // Block: 4 sides + 4 corner cylinders + top + bottom; pocket: 4 walls + 4 corners + floor; hole: 1.
+    EXPECT_EQ(model->faceCount(), 20);
+    int planar = 0;
+    for (int i = 1; i <= model->faceCount(); ++i) {
+        const FaceInfo f = model->face(i);
+        EXPECT_EQ(f.index, i);
+        EXPECT_GT(f.areaMm2, 0);
+        if (f.planar) {
+            ++planar;
+            EXPECT_NEAR(f.normal.length(), 1.0, 1e-12);
+        }
+    }
+    EXPECT_EQ(planar, 4 + 2 + 4 + 1);
+    EXPECT_EQ(model->face(0).index, 0);
+    EXPECT_EQ(model->face(model->faceCount() + 1).index, 0);
+}
+
+TEST_F(ExamplePartTest, TopPlanarFaceIsTheTopAtZ15)
+{
+    const int top = model->topPlanarFace();
+    ASSERT_GT(top, 0);
+    const FaceInfo f = model->face(top);
+    EXPECT_TRUE(f.planar);
+    EXPECT_NEAR(f.normal.z, 1.0, 1e-12);
+    EXPECT_NEAR(f.planeZ, 15.0, 1e-9);
+    const double outline = 90 * 60 - (4 - kPi) * 64;
+    const double pocket = 40 * 24 - (4 - kPi) * 25;
+    const double hole = kPi * 25;
+    EXPECT_NEAR(f.areaMm2, outline - pocket - hole, 1e-6 * outline);
+}
+
+TEST_F(ExamplePartTest, TopOuterProfileIsTheRoundedRectangle)
+{
+    const base::Result<geom::Profile> result = model->planarFaceOuterProfile(model->topPlanarFace());
+    ASSERT_TRUE(result.ok()) << result.error().toString();
+    const geom::Profile& profile = result.value();
+    EXPECT_TRUE(profile.closed);
+    EXPECT_TRUE(profile.isContinuous(1e-9));
+    const double expected = 90 * 60 - (4 - kPi) * 64;
+    EXPECT_GT(profile.signedArea(), 0);  // counter-clockwise
+    EXPECT_NEAR(profile.signedArea(), expected, 1e-6 * expected);
+
+    const SegmentCounts counts = countSegments(profile);
+    EXPECT_EQ(counts.lines, 4);
+    EXPECT_EQ(counts.arcs, 4);
+    std::set<std::pair<long, long>> centres;
+    for (const geom::Segment& s : profile.segments) {
+        if (!s.isArc())
+            continue;
+        EXPECT_NEAR(s.radius(), 8.0, 1e-6);
+        EXPECT_NEAR(distance(s.end, s.center), 8.0, 1e-6);
+        EXPECT_TRUE(s.ccw);  // convex corners of a counter-clockwise outline
+        EXPECT_NEAR(s.sweep(), kPi / 2, 1e-9);
+        centres.insert({std::lround(s.center.x), std::lround(s.center.y)});
+    }
+    EXPECT_EQ(centres, (std::set<std::pair<long, long>>{{8, 8}, {82, 8}, {82, 52}, {8, 52}}));
+    EXPECT_NEAR(profile.length(), 2 * (90 - 16) + 2 * (60 - 16) + 2 * kPi * 8, 1e-6);
+}
+
+TEST_F(ExamplePartTest, PocketFloorProfile)
+{
+    const int floor = findZFace(*model, 1.0, 10.0);
+    ASSERT_GT(floor, 0);
+    const base::Result<geom::Profile> result = model->planarFaceOuterProfile(floor);
+    ASSERT_TRUE(result.ok()) << result.error().toString();
+    const double expected = 40 * 24 - (4 - kPi) * 25;
+    EXPECT_NEAR(result->signedArea(), expected, 1e-6 * expected);
+    EXPECT_TRUE(result->isContinuous(1e-9));
+    const SegmentCounts counts = countSegments(result.value());
+    EXPECT_EQ(counts.arcs, 4);
+    EXPECT_EQ(counts.lines, 4);
+    for (const geom::Segment& s : result->segments)
+        if (s.isArc())
+            EXPECT_NEAR(s.radius(), 5.0, 1e-6);
+}
+
+TEST_F(ExamplePartTest, BottomFaceLooksDownButItsProfileIsCounterClockwise)
+{
+    const int bottom = findZFace(*model, -1.0, 0.0);
+    ASSERT_GT(bottom, 0);
+    const base::Result<geom::Profile> result = model->planarFaceOuterProfile(bottom);
+    ASSERT_TRUE(result.ok()) << result.error().toString();
+    const double expected = 90 * 60 - (4 - kPi) * 64;
+    EXPECT_NEAR(result->signedArea(), expected, 1e-6 * expected);
+    for (const geom::Segment& s : result->segments)
+        if (s.isArc())
+            EXPECT_TRUE(s.ccw);
+}
+
+TEST_F(ExamplePartTest, ProfileErrors)
+{
+    int cylinder = 0, wall = 0;
+    for (int i = 1; i <= model->faceCount(); ++i) {
+        const FaceInfo f = model->face(i);
+        if (!f.planar && cylinder == 0)
+            cylinder = i;
+        if (f.planar && std::abs(f.normal.z) < 1e-9 && wall == 0)
+            wall = i;
+    }
+    ASSERT_GT(cylinder, 0);
+    ASSERT_GT(wall, 0);
+    const auto nonPlanar = model->planarFaceOuterProfile(cylinder);
+    ASSERT_FALSE(nonPlanar.ok());
+    EXPECT_NE(nonPlanar.error().message.find("not planar"), std::string::npos) << nonPlanar.error().message;
+    const auto side = model->planarFaceOuterProfile(wall);
+    ASSERT_FALSE(side.ok());
+    EXPECT_NE(side.error().message.find("not normal to Z"), std::string::npos) << side.error().message;
+    EXPECT_FALSE(model->planarFaceOuterProfile(0).ok());
+    EXPECT_FALSE(model->planarFaceOuterProfile(model->faceCount() + 1).ok());
+}
+
+TEST_F(ExamplePartTest, MeshCoversEveryFace)
+{
+    const DisplayMesh mesh = model->mesh(0.05);
+    ASSERT_FALSE(mesh.empty());
+    ASSERT_FALSE(mesh.triangles.empty());
+    EXPECT_EQ(mesh.triangles.size() % 3, 0u);
+    EXPECT_EQ(mesh.triangleFace.size(), mesh.triangles.size() / 3);
+    EXPECT_EQ(mesh.normals.size(), mesh.positions.size());
+    const std::size_t vertices = mesh.positions.size() / 3;
+    for (std::uint32_t index : mesh.triangles)
+        ASSERT_LT(index, vertices);
+    std::set<int> faces(mesh.triangleFace.begin(), mesh.triangleFace.end());
+    EXPECT_EQ(faces.size(), static_cast<std::size_t>(model->faceCount()));
+    EXPECT_EQ(*faces.begin(), 1);
+    EXPECT_EQ(*faces.rbegin(), model->faceCount());
+
+    // Triangles of the top face wind counter-clockwise seen from above and carry +Z normals.
+    const int top = model->topPlanarFace();
+    for (std::size_t t = 0; t < mesh.triangleFace.size(); ++t) {
+        if (mesh.triangleFace[t] != top)
+            continue;
+        auto vertex = [&](int k) {
+            const std::size_t v = mesh.triangles[3 * t + k];
+            return base::Vec3{mesh.positions[3 * v], mesh.positions[3 * v + 1], mesh.positions[3 * v + 2]};
+        };
+        const base::Vec3 a = vertex(0), b = vertex(1), c = vertex(2);
+        EXPECT_GT((b - a).cross(c - a).z, 0);
+        EXPECT_NEAR(a.z, 15.0, 1e-5);
+        EXPECT_NEAR(mesh.normals[3 * mesh.triangles[3 * t] + 2], 1.0f, 1e-6f);
+    }
+
+    EXPECT_FALSE(mesh.featureEdges.empty());
+    for (const auto& edge : mesh.featureEdges)
+        EXPECT_GE(edge.size(), 2u);
+
+    const double tol = 1e-6;
+    EXPECT_NEAR(mesh.boundsMin.x, 0, tol);
+    EXPECT_NEAR(mesh.boundsMin.y, 0, tol);
+    EXPECT_NEAR(mesh.boundsMin.z, 0, tol);
+    EXPECT_NEAR(mesh.boundsMax.x, 90, tol);
+    EXPECT_NEAR(mesh.boundsMax.y, 60, tol);
+    EXPECT_NEAR(mesh.boundsMax.z, 15, tol);
+    EXPECT_EQ(model->boundsMin(), mesh.boundsMin);
+    EXPECT_EQ(model->boundsMax(), mesh.boundsMax);
+}
+
+TEST_F(ExamplePartTest, MeshingFromSeveralThreads)
+{
+    const Model copy = *model;  // copies share the data
+    DisplayMesh fine, coarse;
+    std::thread a([&] { fine = copy.mesh(0.01); });
+    std::thread b([&] { coarse = model->mesh(0.5); });
+    a.join();
+    b.join();
+    EXPECT_FALSE(fine.triangles.empty());
+    EXPECT_FALSE(coarse.triangles.empty());
+    EXPECT_EQ(fine.triangleFace.size(), fine.triangles.size() / 3);
+    EXPECT_EQ(coarse.triangleFace.size(), coarse.triangles.size() / 3);
+}
+
+TEST_F(ExamplePartTest, LoadingFromSeveralThreads)
+{
+    base::Result<Model> results[3] = {base::makeError("not run"), base::makeError("not run"),
+                                      base::makeError("not run")};
+    std::thread threads[3];
+    for (int i = 0; i < 3; ++i)
+        threads[i] = std::thread([&, i] { results[i] = Model::load(path); });
+    for (std::thread& t : threads)
+        t.join();
+    for (const auto& r : results) {
+        ASSERT_TRUE(r.ok()) << r.error().toString();
+        EXPECT_EQ(r->faceCount(), model->faceCount());
+        EXPECT_EQ(r->topPlanarFace(), model->topPlanarFace());
+    }
+}
+
+TEST_F(ExamplePartTest, CommittedExampleMatchesTheGenerator)
+{
+    const std::string committed = std::string(CAMWB_TEST_DATA_DIR) + "/resources/examples/example-block.step";
+    const base::Result<Model> loaded = Model::load(committed);
+    ASSERT_TRUE(loaded.ok()) << loaded.error().toString();
+    EXPECT_EQ(loaded->faceCount(), model->faceCount());
+    const int top = loaded->topPlanarFace();
+    EXPECT_NEAR(loaded->face(top).planeZ, 15.0, 1e-9);
+    EXPECT_EQ(loaded->boundsMax(), model->boundsMax());
+}
+
+}  // namespace
+}  // namespace camwb::occ

@@ -31,7 +31,7 @@ TEST(NumberFormat, NegativeZeroIsNeverWritten)
 {
     EXPECT_EQ(formatFixed(-0.0, 3), "0.000");
     EXPECT_EQ(formatFixed(-0.0004, 3), "0.000");
-    EXPECT_EQ(NumberFormat{3, true}.format(-0.0001), "0");
+    EXPECT_EQ((NumberFormat{3, true}.format(-0.0001)), "0");
     EXPECT_EQ((NumberFormat{3, false, false, true}.format(-0.0001)), "+0.000");
 }
 

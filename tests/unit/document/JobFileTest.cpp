@@ -101,7 +101,7 @@ TEST(JobFile, MissingOrWrongFieldsAreNamed)
               std::string::npos);
     EXPECT_NE(parseError(replaced(validText(), "\"tool\": 3", "\"tool\": 4")).message.find("no tool number 4"),
               std::string::npos);
-    EXPECT_NE(parseError(replaced(validText(), "\"climb\"", "\"sideways\"")).message.find("direction"),
+    EXPECT_NE(parseError(replaced(validText(), "\"conventional\"", "\"sideways\"")).message.find("direction"),
               std::string::npos);
     EXPECT_NE(parseError("[1, 2]").message.find("expected an object"), std::string::npos);
     EXPECT_NE(parseError(replaced(validText(), "camwb-job", "other")).message.find("not a CAM Workbench job"),

@@ -1,6 +1,6 @@
 #include "post/PostProcessor.h"
 
-#include "post/ScriptSink.h"
+#include "post/detail/ScriptSink.h"
 
 #include <QCoreApplication>
 

@@ -1,4 +1,4 @@
-#include "post/ScriptBindings.h"
+#include "post/detail/ScriptBindings.h"
 
 #include <cmath>
 

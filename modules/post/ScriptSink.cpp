@@ -1,4 +1,4 @@
-#include "post/ScriptSink.h"
+#include "post/detail/ScriptSink.h"
 
 #include "post/ArcGeometry.h"
 

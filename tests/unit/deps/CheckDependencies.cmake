@@ -3,6 +3,7 @@
 #  - OCCT headers: only in modules/occ sources and its private detail/ headers, never in a public header;
 #  - VTK and QScintilla: only in modules/gui, never in a gui header outside view3d/ and editor/ internals;
 #  - Qt: not at all in the kernels (base, geom, toolpath, ops, occ, document); in post only in .cpp files.
+cmake_minimum_required(VERSION 3.25)
 set(allowed_base base)
 set(allowed_geom base geom)
 set(allowed_toolpath base toolpath)

@@ -5,7 +5,7 @@
 
 #include "base/Result.h"
 #include "post/PostProcessor.h"
-#include "post/ScriptBindings.h"
+#include "post/detail/ScriptBindings.h"
 #include "toolpath/MachineSink.h"
 
 #include <QJSEngine>

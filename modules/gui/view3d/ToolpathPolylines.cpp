@@ -1,0 +1,168 @@
+#include "gui/view3d/ToolpathPolylines.h"
+
+#include "toolpath/Toolpath.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+namespace camwb::gui {
+
+using base::Vec3;
+
+namespace {
+
+constexpr double kTwoPi = 2.0 * std::numbers::pi;
+// Even where the chord tolerance allows longer chords, helices and small arcs look round only
+// with a few dozen segments per turn.
+constexpr double kMaxStepRad = std::numbers::pi / 18.0;
+constexpr double kCoincidentMm = 1e-7;
+
+Vec3 normalizedOr(Vec3 v, Vec3 fallback)
+{
+    const double l = v.length();
+    return l > 1e-12 ? v * (1.0 / l) : fallback;
+}
+
+}  // namespace
+
+ToolpathPolylines::ToolpathPolylines(double chordToleranceMm)
+    : m_chordToleranceMm(chordToleranceMm > 0 ? chordToleranceMm : 0.01)
+{
+}
+
+ToolpathPolylines ToolpathPolylines::fromToolpath(const toolpath::Toolpath& toolpath, double chordToleranceMm)
+{
+    ToolpathPolylines polylines(chordToleranceMm);
+    toolpath::play(toolpath, polylines);
+    return polylines;
+}
+
+std::size_t ToolpathPolylines::segmentCount(PathSegmentKind kind) const
+{
+    return static_cast<std::size_t>(
+        std::count_if(m_segments.begin(), m_segments.end(), [kind](const PathSegment& s) { return s.kind == kind; }));
+}
+
+void ToolpathPolylines::clear()
+{
+    m_points.clear();
+    m_segments.clear();
+    m_hasPosition = false;
+    m_positionStored = false;
+}
+
+void ToolpathPolylines::setStartPosition(const Vec3& position)
+{
+    m_position = position;
+    m_hasPosition = true;
+    m_positionStored = false;
+}
+
+std::uint32_t ToolpathPolylines::currentIndex()
+{
+    if (!m_positionStored) {
+        m_points.push_back(m_position);
+        m_positionStored = true;
+    }
+    return static_cast<std::uint32_t>(m_points.size() - 1);
+}
+
+void ToolpathPolylines::lineTo(const Vec3& to, PathSegmentKind kind)
+{
+    if (!m_hasPosition) {
+        setStartPosition(to);
+        return;
+    }
+    if (base::distance(to, m_position) < 1e-12)
+        return;
+    const std::uint32_t from = currentIndex();
+    m_points.push_back(to);
+    m_segments.push_back({from, static_cast<std::uint32_t>(m_points.size() - 1), kind});
+    m_position = to;
+    m_positionStored = true;
+}
+
+void ToolpathPolylines::rapid(const toolpath::Rapid& r)
+{
+    lineTo(r.to, PathSegmentKind::Rapid);
+}
+
+void ToolpathPolylines::linear(const toolpath::Linear& l)
+{
+    lineTo(l.to, PathSegmentKind::Feed);
+}
+
+void ToolpathPolylines::toolAxisMove(const toolpath::ToolAxisMove& m)
+{
+    lineTo(m.tip, m.feedMmPerMin > 0 ? PathSegmentKind::Feed : PathSegmentKind::Rapid);
+}
+
+// Start = current position. The sweep runs from the start to the end projected into the arc's
+// plane, in the arc's direction; coincident projections mean a full circle. `turns` adds full
+// revolutions. The height along the normal and the radius are interpolated linearly with the
+// angle, which makes helices (and slightly inconsistent NC radii) come out right.
+void ToolpathPolylines::arc(const toolpath::Arc& a)
+{
+    if (!m_hasPosition) {
+        setStartPosition(a.to);
+        return;
+    }
+    const Vec3 n = normalizedOr(a.normal, Vec3{0, 0, 1});
+    const Vec3 s = m_position - a.center;
+    const Vec3 e = a.to - a.center;
+    const double h0 = n.dot(s);
+    const double h1 = n.dot(e);
+    const Vec3 u = s - n * h0;
+    const Vec3 v = e - n * h1;
+    const double r0 = u.length();
+    const double r1 = v.length();
+    if (r0 < 1e-9 || r1 < 1e-9) {
+        lineTo(a.to, PathSegmentKind::Arc);
+        return;
+    }
+    const Vec3 ux = u * (1.0 / r0);
+    const Vec3 uy = n.cross(ux);
+
+    double sweep = kTwoPi;
+    if (base::distance(u * (r1 / r0), v) > kCoincidentMm) {
+        const double ccw = std::atan2(v.dot(uy), v.dot(ux));  // (-pi, pi]
+        sweep = a.clockwise ? -ccw : ccw;
+        if (sweep <= 0)
+            sweep += kTwoPi;
+    }
+    sweep += kTwoPi * std::max(0, a.turns);
+
+    const double rMax = std::max(r0, r1);
+    double step = kMaxStepRad;
+    if (m_chordToleranceMm < rMax)
+        step = std::min(step, 2.0 * std::acos(1.0 - m_chordToleranceMm / rMax));
+    const int count = static_cast<int>(std::clamp(std::ceil(sweep / step), 1.0, double(kMaxSegmentsPerArc)));
+    const double sign = a.clockwise ? -1.0 : 1.0;
+
+    for (int i = 1; i < count; ++i) {
+        const double t = double(i) / count;
+        const double angle = sign * sweep * t;
+        const double r = r0 + (r1 - r0) * t;
+        const double h = h0 + (h1 - h0) * t;
+        lineTo(a.center + n * h + (ux * std::cos(angle) + uy * std::sin(angle)) * r, PathSegmentKind::Arc);
+    }
+    lineTo(a.to, PathSegmentKind::Arc);
+}
+
+// Canned cycles are drawn as the moves a control makes for each hole: rapid over the hole at the
+// clearance plane, rapid to the R plane, feed to depth, rapid back out.
+void ToolpathPolylines::cycle(const toolpath::Cycle& c)
+{
+    const double clearance = std::max(c.clearanceZ, c.retractZ);
+    for (const Vec3& hole : c.holes) {
+        if (m_hasPosition && m_position.z < clearance)
+            lineTo({m_position.x, m_position.y, clearance}, PathSegmentKind::Rapid);
+        lineTo({hole.x, hole.y, clearance}, PathSegmentKind::Rapid);
+        lineTo({hole.x, hole.y, c.retractZ}, PathSegmentKind::Rapid);
+        lineTo({hole.x, hole.y, c.bottomZ}, PathSegmentKind::Feed);
+        lineTo({hole.x, hole.y, clearance}, PathSegmentKind::Rapid);
+    }
+}
+
+}  // namespace camwb::gui

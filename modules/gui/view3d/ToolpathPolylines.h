@@ -1,0 +1,78 @@
+// Turns CL records into display line segments for the 3D backplot: a MachineSink that walks the
+// toolpath, tracks the current position and tessellates arcs and helices within a chord
+// tolerance. Plain data, no VTK, so it is unit-testable.
+#pragma once
+
+#include "base/Vec.h"
+#include "toolpath/MachineSink.h"
+
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+namespace camwb::toolpath {
+class Toolpath;
+}
+
+namespace camwb::gui {
+
+enum class PathSegmentKind : std::uint8_t { Rapid, Feed, Arc };
+
+// One straight display segment between two entries of ToolpathPolylines::points().
+struct PathSegment {
+    std::uint32_t from = 0;
+    std::uint32_t to = 0;
+    PathSegmentKind kind = PathSegmentKind::Feed;
+};
+
+class ToolpathPolylines : public toolpath::MachineSink {
+public:
+    // chordToleranceMm: largest distance between a tessellated arc and its chords.
+    explicit ToolpathPolylines(double chordToleranceMm = 0.01);
+
+    // Convenience: plays `toolpath` into a fresh instance.
+    static ToolpathPolylines fromToolpath(const toolpath::Toolpath& toolpath, double chordToleranceMm = 0.01);
+
+    const std::vector<base::Vec3>& points() const { return m_points; }
+    const std::vector<PathSegment>& segments() const { return m_segments; }
+    std::size_t segmentCount(PathSegmentKind kind) const;
+    bool empty() const { return m_segments.empty(); }
+    void clear();
+
+    // Where the walk starts; without it the first move only sets the position.
+    void setStartPosition(const base::Vec3& position);
+    bool hasPosition() const { return m_hasPosition; }
+    base::Vec3 position() const { return m_position; }
+
+    // Hard cap on the segments of one arc (huge helices with many turns).
+    static constexpr int kMaxSegmentsPerArc = 200000;
+
+    void rapid(const toolpath::Rapid&) override;
+    void linear(const toolpath::Linear&) override;
+    void arc(const toolpath::Arc&) override;
+    void toolChange(const toolpath::ToolChange&) override {}
+    void spindle(const toolpath::Spindle&) override {}
+    void coolant(const toolpath::Coolant&) override {}
+    void feedMode(const toolpath::FeedModeChange&) override {}
+    void workOffset(const toolpath::WorkOffset&) override {}
+    void dwell(const toolpath::Dwell&) override {}
+    void cycle(const toolpath::Cycle&) override;
+    void toolAxisMove(const toolpath::ToolAxisMove&) override;
+    void cutterComp(const toolpath::CutterComp&) override {}
+    void comment(const toolpath::Comment&) override {}
+    void sectionBegin(const toolpath::SectionBegin&) override {}
+    void sectionEnd(const toolpath::SectionEnd&) override {}
+
+private:
+    void lineTo(const base::Vec3& to, PathSegmentKind kind);
+    std::uint32_t currentIndex();
+
+    double m_chordToleranceMm;
+    std::vector<base::Vec3> m_points;
+    std::vector<PathSegment> m_segments;
+    base::Vec3 m_position;
+    bool m_hasPosition = false;
+    bool m_positionStored = false;  // m_points.back() == m_position
+};
+
+}  // namespace camwb::gui

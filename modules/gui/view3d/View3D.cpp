@@ -1,0 +1,451 @@
+#include "gui/view3d/View3D.h"
+
+#include "gui/view3d/ToolpathPolylines.h"
+#include "gui/view3d/VtkOpenGLWidget.h"
+#include "occ/DisplayMesh.h"
+#include "toolpath/Toolpath.h"
+
+#include <QGuiApplication>
+#include <QLabel>
+#include <QOffscreenSurface>
+#include <QOpenGLContext>
+#include <QVBoxLayout>
+
+#include <vtkActor.h>
+#include <vtkAxesActor.h>
+#include <vtkCamera.h>
+#include <vtkCaptionActor2D.h>
+#include <vtkCellArray.h>
+#include <vtkCellData.h>
+#include <vtkFloatArray.h>
+#include <vtkGenericOpenGLRenderWindow.h>
+#include <vtkLightKit.h>
+#include <vtkNew.h>
+#include <vtkPointData.h>
+#include <vtkPoints.h>
+#include <vtkPolyData.h>
+#include <vtkPolyDataMapper.h>
+#include <vtkPolyDataNormals.h>
+#include <vtkProperty.h>
+#include <vtkRenderer.h>
+#include <vtkSmartPointer.h>
+#include <vtkTextActor.h>
+#include <vtkTextProperty.h>
+#include <vtkUnsignedCharArray.h>
+
+#include <array>
+
+namespace camwb::gui {
+
+namespace {
+
+constexpr double kChordToleranceMm = 0.01;
+
+constexpr std::array<unsigned char, 3> kFeedColor{30, 90, 230};
+constexpr std::array<unsigned char, 3> kArcColor{20, 165, 60};
+constexpr double kRapidColor[3]{0.95, 0.42, 0.10};
+constexpr double kModelColor[3]{0.80, 0.81, 0.83};
+constexpr double kEdgeColor[3]{0.10, 0.10, 0.12};
+
+vtkSmartPointer<vtkActor> makeActor(vtkPolyData* data)
+{
+    vtkNew<vtkPolyDataMapper> mapper;
+    mapper->SetInputData(data);
+    auto actor = vtkSmartPointer<vtkActor>::New();
+    actor->SetMapper(mapper);
+    return actor;
+}
+
+vtkSmartPointer<vtkActor> makeModelActor(const occ::DisplayMesh& mesh)
+{
+    const vtkIdType vertexCount = static_cast<vtkIdType>(mesh.positions.size() / 3);
+    if (mesh.triangles.size() < 3 || vertexCount == 0)
+        return nullptr;
+    vtkNew<vtkPoints> points;
+    points->SetDataTypeToFloat();
+    points->SetNumberOfPoints(vertexCount);
+    for (vtkIdType i = 0; i < vertexCount; ++i)
+        points->SetPoint(i, mesh.positions[3 * i], mesh.positions[3 * i + 1], mesh.positions[3 * i + 2]);
+    vtkNew<vtkCellArray> triangles;
+    triangles->AllocateExact(static_cast<vtkIdType>(mesh.triangles.size() / 3), static_cast<vtkIdType>(mesh.triangles.size()));
+    for (std::size_t t = 0; t + 2 < mesh.triangles.size(); t += 3) {
+        const vtkIdType ids[3]{mesh.triangles[t], mesh.triangles[t + 1], mesh.triangles[t + 2]};
+        if (ids[0] < vertexCount && ids[1] < vertexCount && ids[2] < vertexCount)
+            triangles->InsertNextCell(3, ids);
+    }
+    auto data = vtkSmartPointer<vtkPolyData>::New();
+    data->SetPoints(points);
+    data->SetPolys(triangles);
+
+    if (mesh.normals.size() == mesh.positions.size()) {
+        vtkNew<vtkFloatArray> normals;
+        normals->SetNumberOfComponents(3);
+        normals->SetNumberOfTuples(vertexCount);
+        for (vtkIdType i = 0; i < vertexCount * 3; ++i)
+            normals->SetValue(i, mesh.normals[static_cast<std::size_t>(i)]);
+        data->GetPointData()->SetNormals(normals);
+    } else {
+        vtkNew<vtkPolyDataNormals> filter;
+        filter->SetInputData(data);
+        filter->SetFeatureAngle(30.0);
+        filter->SplittingOn();
+        filter->Update();
+        data = filter->GetOutput();
+    }
+
+    auto actor = makeActor(data);
+    auto* mapper = actor->GetMapper();
+    mapper->ScalarVisibilityOff();
+    // Push faces back so that the feature edges lying on them always win the depth test.
+    mapper->SetRelativeCoincidentTopologyPolygonOffsetParameters(2.0, 4.0);
+    vtkProperty* property = actor->GetProperty();
+    property->SetColor(kModelColor[0], kModelColor[1], kModelColor[2]);
+    property->SetAmbient(0.15);
+    property->SetDiffuse(0.8);
+    property->SetSpecular(0.25);
+    property->SetSpecularPower(30.0);
+    property->SetInterpolationToPhong();
+    return actor;
+}
+
+vtkSmartPointer<vtkActor> makeEdgeActor(const occ::DisplayMesh& mesh)
+{
+    vtkNew<vtkPoints> points;
+    vtkNew<vtkCellArray> lines;
+    for (const auto& edge : mesh.featureEdges) {
+        if (edge.size() < 2)
+            continue;
+        lines->InsertNextCell(static_cast<vtkIdType>(edge.size()));
+        for (const base::Vec3& p : edge)
+            lines->InsertCellPoint(points->InsertNextPoint(p.x, p.y, p.z));
+    }
+    if (lines->GetNumberOfCells() == 0)
+        return nullptr;
+    vtkNew<vtkPolyData> data;
+    data->SetPoints(points);
+    data->SetLines(lines);
+    auto actor = makeActor(data);
+    actor->GetMapper()->ScalarVisibilityOff();
+    actor->GetProperty()->SetColor(kEdgeColor[0], kEdgeColor[1], kEdgeColor[2]);
+    actor->GetProperty()->SetLineWidth(1.5f);
+    actor->GetProperty()->LightingOff();
+    return actor;
+}
+
+}  // namespace
+
+struct View3D::Private {
+    VtkOpenGLWidget* gl = nullptr;
+    QLabel* message = nullptr;
+
+    vtkNew<vtkRenderer> renderer;
+    vtkNew<vtkRenderer> markerRenderer;
+    vtkNew<vtkAxesActor> axes;
+    vtkSmartPointer<vtkActor> modelActor;
+    vtkSmartPointer<vtkActor> edgeActor;
+    vtkSmartPointer<vtkActor> cutActor;
+    vtkSmartPointer<vtkActor> rapidActor;
+    int segmentCount = 0;
+    Preset preset = Preset::Isometric;
+
+    void render()
+    {
+        if (gl != nullptr)
+            gl->update();
+    }
+    void setupScene();
+    void syncMarker();
+};
+
+void View3D::Private::setupScene()
+{
+    renderer->GradientBackgroundOn();
+    renderer->SetBackground(0.80, 0.83, 0.88);   // bottom
+    renderer->SetBackground2(0.36, 0.42, 0.52);  // top
+    renderer->SetUseFXAA(false);
+    renderer->RemoveAllLights();
+    vtkNew<vtkLightKit> lights;  // key/fill/back lights: faces of a box get distinct shades
+    lights->AddLightsToRenderer(renderer);
+
+    axes->SetTotalLength(1.0, 1.0, 1.0);
+    axes->SetShaftTypeToCylinder();
+    axes->SetCylinderRadius(0.04);
+    axes->SetConeRadius(0.5);
+    for (vtkCaptionActor2D* caption : {axes->GetXAxisCaptionActor2D(), axes->GetYAxisCaptionActor2D(),
+                                       axes->GetZAxisCaptionActor2D()}) {
+        caption->GetCaptionTextProperty()->SetFontSize(14);
+        caption->GetCaptionTextProperty()->BoldOn();
+        caption->GetCaptionTextProperty()->ItalicOff();
+        caption->GetCaptionTextProperty()->ShadowOff();
+        caption->GetCaptionTextProperty()->SetColor(0.1, 0.1, 0.1);
+        caption->GetTextActor()->SetTextScaleModeToNone();
+    }
+    markerRenderer->AddActor(axes);
+    markerRenderer->SetViewport(0.0, 0.0, 0.2, 0.2);
+    markerRenderer->SetLayer(1);
+    markerRenderer->InteractiveOff();
+    markerRenderer->GetActiveCamera()->SetViewAngle(30.0);
+}
+
+// The marker shows the main camera's orientation from a fixed distance around the origin.
+void View3D::Private::syncMarker()
+{
+    vtkCamera* main = renderer->GetActiveCamera();
+    double dop[3];
+    main->GetDirectionOfProjection(dop);
+    vtkCamera* camera = markerRenderer->GetActiveCamera();
+    constexpr double kDistance = 5.5;
+    camera->SetFocalPoint(0.35, 0.35, 0.35);
+    camera->SetPosition(0.35 - dop[0] * kDistance, 0.35 - dop[1] * kDistance, 0.35 - dop[2] * kDistance);
+    camera->SetViewUp(main->GetViewUp());
+    markerRenderer->ResetCameraClippingRange();
+}
+
+View3D::View3D(QWidget* parent)
+    : QWidget(parent)
+    , d(std::make_unique<Private>())
+{
+    d->setupScene();
+    auto* layout = new QVBoxLayout(this);
+    layout->setContentsMargins(0, 0, 0, 0);
+
+    QString reason;
+    if (openGlAvailable(&reason)) {
+        d->gl = new VtkOpenGLWidget(this);
+        d->gl->setObjectName(QStringLiteral("view3dGl"));
+        vtkGenericOpenGLRenderWindow* window = d->gl->renderWindow();
+        window->SetNumberOfLayers(2);
+        window->AddRenderer(d->renderer);
+        window->AddRenderer(d->markerRenderer);
+        connect(d->gl, &VtkOpenGLWidget::aboutToRender, this, [this] { d->syncMarker(); });
+        layout->addWidget(d->gl);
+    } else {
+        d->message = new QLabel(tr("3D view unavailable: %1").arg(reason), this);
+        d->message->setObjectName(QStringLiteral("noOpenGlMessage"));
+        d->message->setAlignment(Qt::AlignCenter);
+        d->message->setWordWrap(true);
+        layout->addWidget(d->message);
+    }
+    setViewPreset(Preset::Isometric);
+}
+
+View3D::~View3D()
+{
+    // The GL widget releases VTK's graphics resources while its context still exists.
+    delete d->gl;
+}
+
+void View3D::setDefaultSurfaceFormat()
+{
+    QSurfaceFormat::setDefaultFormat(VtkOpenGLWidget::vtkSurfaceFormat());
+}
+
+bool View3D::openGlAvailable(QString* reason)
+{
+    auto fail = [reason](const QString& why) {
+        if (reason != nullptr)
+            *reason = why;
+        return false;
+    };
+    if (qEnvironmentVariableIntValue("CAMWB_NO_OPENGL") == 1)
+        return fail(tr("OpenGL is disabled (CAMWB_NO_OPENGL=1)"));
+    if (qobject_cast<QGuiApplication*>(QCoreApplication::instance()) == nullptr)
+        return fail(tr("no GUI application"));
+    const QString platform = QGuiApplication::platformName();
+    if (platform == QLatin1String("offscreen") || platform == QLatin1String("minimal"))
+        return fail(tr("the '%1' platform has no OpenGL display").arg(platform));
+
+    QOpenGLContext* previous = QOpenGLContext::currentContext();
+    QSurface* previousSurface = previous != nullptr ? previous->surface() : nullptr;
+    const QSurfaceFormat format = VtkOpenGLWidget::vtkSurfaceFormat();
+    bool ok = false;
+    QString why;
+    {
+        QOffscreenSurface surface;
+        surface.setFormat(format);
+        surface.create();
+        QOpenGLContext context;
+        context.setFormat(format);
+        if (!surface.isValid())
+            why = tr("cannot create an offscreen OpenGL surface");
+        else if (!context.create())
+            why = tr("cannot create an OpenGL 3.2 core context");
+        else if (!context.makeCurrent(&surface))
+            why = tr("cannot make an OpenGL 3.2 core context current");
+        else {
+            const QSurfaceFormat actual = context.format();
+            if (context.isOpenGLES())
+                why = tr("only OpenGL ES is available");
+            else if (actual.version() < qMakePair(3, 2))
+                why = tr("OpenGL %1.%2 found, 3.2 needed").arg(actual.majorVersion()).arg(actual.minorVersion());
+            else
+                ok = true;
+            context.doneCurrent();
+        }
+    }
+    if (previous != nullptr && previousSurface != nullptr)
+        previous->makeCurrent(previousSurface);
+    if (!ok)
+        return fail(why);
+    if (reason != nullptr)
+        reason->clear();
+    return true;
+}
+
+bool View3D::hasOpenGl() const
+{
+    return d->gl != nullptr;
+}
+
+void View3D::setModel(const occ::DisplayMesh& mesh)
+{
+    clearModel();
+    d->modelActor = makeModelActor(mesh);
+    d->edgeActor = makeEdgeActor(mesh);
+    if (d->modelActor)
+        d->renderer->AddActor(d->modelActor);
+    if (d->edgeActor)
+        d->renderer->AddActor(d->edgeActor);
+    fitAll();
+}
+
+void View3D::clearModel()
+{
+    if (d->modelActor)
+        d->renderer->RemoveActor(d->modelActor);
+    if (d->edgeActor)
+        d->renderer->RemoveActor(d->edgeActor);
+    d->modelActor = nullptr;
+    d->edgeActor = nullptr;
+    d->render();
+}
+
+void View3D::setToolpath(const toolpath::Toolpath& toolpath)
+{
+    const bool fitAfter = !d->modelActor && !hasToolpathActor();
+    clearToolpath();
+    const ToolpathPolylines polylines = ToolpathPolylines::fromToolpath(toolpath, kChordToleranceMm);
+    if (polylines.empty())
+        return;
+
+    vtkNew<vtkPoints> points;
+    points->SetNumberOfPoints(static_cast<vtkIdType>(polylines.points().size()));
+    for (std::size_t i = 0; i < polylines.points().size(); ++i) {
+        const base::Vec3& p = polylines.points()[i];
+        points->SetPoint(static_cast<vtkIdType>(i), p.x, p.y, p.z);
+    }
+    vtkNew<vtkCellArray> cutLines;
+    vtkNew<vtkCellArray> rapidLines;
+    vtkNew<vtkUnsignedCharArray> cutColors;
+    cutColors->SetNumberOfComponents(3);
+    cutColors->SetName("kind");
+    for (const PathSegment& segment : polylines.segments()) {
+        const vtkIdType ids[2]{segment.from, segment.to};
+        if (segment.kind == PathSegmentKind::Rapid) {
+            rapidLines->InsertNextCell(2, ids);
+        } else {
+            cutLines->InsertNextCell(2, ids);
+            const auto& c = segment.kind == PathSegmentKind::Arc ? kArcColor : kFeedColor;
+            cutColors->InsertNextTypedTuple(c.data());
+        }
+    }
+    if (cutLines->GetNumberOfCells() > 0) {
+        vtkNew<vtkPolyData> data;
+        data->SetPoints(points);
+        data->SetLines(cutLines);
+        data->GetCellData()->SetScalars(cutColors);
+        d->cutActor = makeActor(data);
+        d->cutActor->GetMapper()->SetScalarModeToUseCellData();
+        d->cutActor->GetMapper()->SetColorModeToDirectScalars();
+        d->cutActor->GetProperty()->SetLineWidth(2.0f);
+        d->cutActor->GetProperty()->LightingOff();
+        d->renderer->AddActor(d->cutActor);
+    }
+    if (rapidLines->GetNumberOfCells() > 0) {
+        vtkNew<vtkPolyData> data;
+        data->SetPoints(points);
+        data->SetLines(rapidLines);
+        d->rapidActor = makeActor(data);
+        d->rapidActor->GetMapper()->ScalarVisibilityOff();
+        d->rapidActor->GetProperty()->SetColor(kRapidColor[0], kRapidColor[1], kRapidColor[2]);
+        d->rapidActor->GetProperty()->SetLineWidth(1.0f);
+        d->rapidActor->GetProperty()->LightingOff();
+        d->renderer->AddActor(d->rapidActor);
+    }
+    d->segmentCount = static_cast<int>(polylines.segments().size());
+    if (fitAfter)
+        fitAll();
+    else
+        d->renderer->ResetCameraClippingRange();
+    d->render();
+}
+
+void View3D::clearToolpath()
+{
+    if (d->cutActor)
+        d->renderer->RemoveActor(d->cutActor);
+    if (d->rapidActor)
+        d->renderer->RemoveActor(d->rapidActor);
+    d->cutActor = nullptr;
+    d->rapidActor = nullptr;
+    d->segmentCount = 0;
+    d->render();
+}
+
+bool View3D::hasModelActor() const
+{
+    return d->modelActor != nullptr || d->edgeActor != nullptr;
+}
+
+bool View3D::hasToolpathActor() const
+{
+    return d->cutActor != nullptr || d->rapidActor != nullptr;
+}
+
+int View3D::toolpathSegmentCount() const
+{
+    return d->segmentCount;
+}
+
+void View3D::setViewPreset(Preset preset)
+{
+    d->preset = preset;
+    vtkCamera* camera = d->renderer->GetActiveCamera();
+    camera->SetFocalPoint(0, 0, 0);
+    switch (preset) {
+    case Preset::Isometric:
+        camera->SetPosition(1, -1, 1);
+        camera->SetViewUp(0, 0, 1);
+        break;
+    case Preset::Top:
+        camera->SetPosition(0, 0, 1);
+        camera->SetViewUp(0, 1, 0);
+        break;
+    case Preset::Front:
+        camera->SetPosition(0, -1, 0);
+        camera->SetViewUp(0, 0, 1);
+        break;
+    case Preset::Right:
+        camera->SetPosition(1, 0, 0);
+        camera->SetViewUp(0, 0, 1);
+        break;
+    }
+    camera->OrthogonalizeViewUp();
+    fitAll();
+}
+
+void View3D::fitAll()
+{
+    d->renderer->ResetCamera();
+    d->renderer->ResetCameraClippingRange();
+    d->render();
+}
+
+QImage View3D::grabImage()
+{
+    if (d->gl == nullptr)
+        return {};
+    return d->gl->grabFramebuffer();
+}
+
+}  // namespace camwb::gui

@@ -1,0 +1,29 @@
+# camwb_gui_widgets: the VTK 3D view (own Qt6 QOpenGLWidget bridge, Debian's VTK Qt module is
+# Qt5-only) and the NC editor (QScintilla). VTK and QScintilla stay private: no public header
+# includes them. Included from modules/gui/CMakeLists.txt.
+set(_camwb_gui_widgets_dir ${CMAKE_CURRENT_LIST_DIR})
+add_library(camwb_gui_widgets STATIC
+  ${_camwb_gui_widgets_dir}/view3d/ToolpathPolylines.h
+  ${_camwb_gui_widgets_dir}/view3d/ToolpathPolylines.cpp
+  ${_camwb_gui_widgets_dir}/view3d/VtkOpenGLWidget.h
+  ${_camwb_gui_widgets_dir}/view3d/VtkOpenGLWidget.cpp
+  ${_camwb_gui_widgets_dir}/view3d/View3D.h
+  ${_camwb_gui_widgets_dir}/view3d/View3D.cpp
+  ${_camwb_gui_widgets_dir}/editor/NcStyles.h
+  ${_camwb_gui_widgets_dir}/editor/SinumerikLexer.h
+  ${_camwb_gui_widgets_dir}/editor/SinumerikLexer.cpp
+  ${_camwb_gui_widgets_dir}/editor/NcEditor.h
+  ${_camwb_gui_widgets_dir}/editor/NcEditor.cpp)
+target_include_directories(camwb_gui_widgets PUBLIC ${_camwb_gui_widgets_dir}/.. ${PROJECT_BINARY_DIR}/generated)
+# RenderingFreeType: axis labels of the orientation marker (a private dependency of
+# RenderingAnnotation; its target is imported with the components found in CamwbDependencies).
+set(_camwb_gui_vtk_modules
+  VTK::CommonCore VTK::CommonDataModel VTK::FiltersCore VTK::InteractionStyle VTK::RenderingCore
+  VTK::RenderingOpenGL2 VTK::RenderingAnnotation VTK::RenderingFreeType VTK::RenderingUI)
+target_link_libraries(camwb_gui_widgets
+  PUBLIC Qt6::Widgets camwb_toolpath
+  PRIVATE Qt6::OpenGL Qt6::OpenGLWidgets camwb_qscintilla ${_camwb_gui_vtk_modules})
+# Registers VTK's object factories (OpenGL2 render classes, FreeType text) in this library.
+vtk_module_autoinit(TARGETS camwb_gui_widgets MODULES ${_camwb_gui_vtk_modules})
+target_compile_options(camwb_gui_widgets PRIVATE -Wall -Wextra -Wno-unused-parameter)
+set_target_properties(camwb_gui_widgets PROPERTIES AUTOMOC ON POSITION_INDEPENDENT_CODE ON)

@@ -5,7 +5,7 @@ file(REMOVE_RECURSE ${WORK})
 file(MAKE_DIRECTORY ${WORK})
 get_filename_component(name ${TS} NAME)
 file(COPY_FILE ${TS} ${WORK}/${name})
-execute_process(COMMAND ${LUPDATE} -locations none -no-obsolete -silent ${sources} -ts ${WORK}/${name}
+execute_process(COMMAND ${LUPDATE} -locations none -no-obsolete -silent -I ${INCLUDE_DIR} ${sources} -ts ${WORK}/${name}
                 RESULT_VARIABLE rc ERROR_VARIABLE err)
 if(NOT rc EQUAL 0)
   message(FATAL_ERROR "lupdate failed: ${err}")

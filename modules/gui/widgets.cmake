@@ -10,7 +10,7 @@ add_library(camwb_gui_widgets STATIC
   ${_camwb_gui_widgets_dir}/view3d/View3D.h
   ${_camwb_gui_widgets_dir}/view3d/View3D.cpp
   ${_camwb_gui_widgets_dir}/editor/NcStyles.h
-  ${_camwb_gui_widgets_dir}/editor/SinumerikLexer.h
+  ${_camwb_gui_widgets_dir}/editor/detail/SinumerikLexer.h
   ${_camwb_gui_widgets_dir}/editor/SinumerikLexer.cpp
   ${_camwb_gui_widgets_dir}/editor/NcEditor.h
   ${_camwb_gui_widgets_dir}/editor/NcEditor.cpp)

@@ -1,6 +1,6 @@
 #include "gui/editor/NcEditor.h"
 
-#include "gui/editor/SinumerikLexer.h"
+#include "gui/editor/detail/SinumerikLexer.h"
 
 #include <Qsci/qsciscintilla.h>
 

@@ -1,4 +1,4 @@
-#include "gui/editor/SinumerikLexer.h"
+#include "gui/editor/detail/SinumerikLexer.h"
 
 #include <Qsci/qsciscintilla.h>
 

@@ -20,6 +20,8 @@
 #include <QStatusBar>
 #include <QToolBar>
 
+#include <utility>
+
 namespace camwb::gui {
 
 namespace {
@@ -52,9 +54,13 @@ MainWindow::MainWindow(QWidget* parent)
     m_editor->setReadOnly(true);
     setCentralWidget(m_view);
 
-    addDock(this, tr("Job"), QStringLiteral("jobDock"), m_jobTree, Qt::LeftDockWidgetArea);
-    addDock(this, tr("NC program"), QStringLiteral("ncDock"), m_editor, Qt::RightDockWidgetArea);
-    addDock(this, tr("Report"), QStringLiteral("reportDock"), m_report, Qt::BottomDockWidgetArea);
+    QDockWidget* jobDock = addDock(this, tr("Job"), QStringLiteral("jobDock"), m_jobTree, Qt::LeftDockWidgetArea);
+    QDockWidget* ncDock = addDock(this, tr("NC program"), QStringLiteral("ncDock"), m_editor, Qt::RightDockWidgetArea);
+    QDockWidget* reportDock =
+        addDock(this, tr("Report"), QStringLiteral("reportDock"), m_report, Qt::BottomDockWidgetArea);
+    // Wide enough for a full NC block and the job tree's values; the 3D view takes the rest.
+    resizeDocks({jobDock, ncDock}, {330, 470}, Qt::Horizontal);
+    resizeDocks({reportDock}, {140}, Qt::Vertical);
 
     m_progress->setMaximumWidth(220);
     m_progress->setRange(0, 100);
@@ -173,8 +179,14 @@ void MainWindow::connectWorkbench()
     connect(m_workbench, &Workbench::modelChanged, this, [this] {
         m_view->setModel(m_workbench->displayMesh());
         m_view->fitAll();
+        m_fitWithToolpath = true;
     });
-    connect(m_workbench, &Workbench::toolpathChanged, this, [this] { m_view->setToolpath(m_workbench->toolpath()); });
+    connect(m_workbench, &Workbench::toolpathChanged, this, [this] {
+        m_view->setToolpath(m_workbench->toolpath());
+        // The first toolpath of a new model is fitted too; later ones keep the user's camera.
+        if (std::exchange(m_fitWithToolpath, false))
+            m_view->fitAll();
+    });
     connect(m_workbench, &Workbench::ncChanged, this, [this] { m_editor->setText(m_workbench->ncText()); });
     connect(m_workbench, &Workbench::jobChanged, this, &MainWindow::updateTitle);
     connect(m_workbench, &Workbench::busyChanged, this, [this](bool busy) {

@@ -47,6 +47,7 @@ private:
     ReportView* m_report;
     JobTree* m_jobTree;
     QProgressBar* m_progress;
+    bool m_fitWithToolpath = false;
 };
 
 }  // namespace camwb::gui

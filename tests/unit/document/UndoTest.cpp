@@ -104,3 +104,18 @@ TEST(JobDocument, SaveMakesCleanAndFailedSaveKeepsState)
     EXPECT_EQ(doc.path(), (dir / "x.camwb").string());
     std::filesystem::remove_all(dir);
 }
+
+TEST(JobDocument, ListenersSeeTheStackInItsNewState)
+{
+    JobDocument doc;
+    doc.reset(Job{}, "");
+    std::vector<std::pair<bool, bool>> seen;  // canUndo, canRedo at each notification
+    doc.setChangedListener([&] { seen.emplace_back(doc.undoStack().canUndo(), doc.undoStack().canRedo()); });
+    doc.edit("rename", [](Job& j) { j.name = "B"; });
+    doc.undo();
+    doc.redo();
+    ASSERT_EQ(seen.size(), 3u);
+    EXPECT_EQ(seen[0], std::make_pair(true, false));
+    EXPECT_EQ(seen[1], std::make_pair(false, true));
+    EXPECT_EQ(seen[2], std::make_pair(true, false));
+}

@@ -19,8 +19,7 @@ struct Error {
 };
 
 // Either a value or an Error. Deliberately small: check ok(), then value() or error().
-template <class T>
-class Result {
+template <class T> class Result {
 public:
     Result(T value) : m_value(std::move(value)) {}
     Result(Error error) : m_error(std::move(error)) {}

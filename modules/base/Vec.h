@@ -17,7 +17,11 @@ struct Vec2 {
     double dot(Vec2 o) const { return x * o.x + y * o.y; }
     double cross(Vec2 o) const { return x * o.y - y * o.x; }
     double length() const { return std::hypot(x, y); }
-    Vec2 normalized() const { const double l = length(); return l > 0 ? Vec2{x / l, y / l} : Vec2{}; }
+    Vec2 normalized() const
+    {
+        const double l = length();
+        return l > 0 ? Vec2{x / l, y / l} : Vec2{};
+    }
     Vec2 leftNormal() const { return {-y, x}; }   // rotated +90 degrees
     Vec2 rightNormal() const { return {y, -x}; }  // rotated -90 degrees
 };

@@ -27,7 +27,7 @@ struct Job {
     std::string name;
     std::string modelPath;  // as written in the file: relative to the job file's folder
     Stock stock;
-    int workOffset = 1;     // 1 = G54
+    int workOffset = 1;  // 1 = G54
     std::vector<ops::ToolController> tools;
     std::vector<Operation> operations;
     std::string postId = "sinumerik828d-emco";

@@ -7,8 +7,11 @@ namespace camwb::document {
 // Jobs are small, so a command stores the job before and after: simple and always exact.
 class JobSnapshotCommand : public UndoCommand {
 public:
-    JobSnapshotCommand(JobDocument& document, std::string text, Job before, Job after)
-        : m_document(document), m_text(std::move(text)), m_before(std::move(before)), m_after(std::move(after))
+    JobSnapshotCommand(JobDocument& document, std::string text, Job before, Job after) :
+        m_document(document),
+        m_text(std::move(text)),
+        m_before(std::move(before)),
+        m_after(std::move(after))
     {
     }
     void redo() override { m_document.assign(m_after); }

@@ -20,7 +20,7 @@ base::Vec2 fromClipper(const ClipperLib::IntPoint& p)
     return {static_cast<double>(p.X) / kClipperScale, static_cast<double>(p.Y) / kClipperScale};
 }
 
-} // namespace
+}  // namespace
 
 std::vector<std::vector<base::Vec2>> clipperOffset(const std::vector<base::Vec2>& polygon, double delta,
                                                    double arcTolerance)
@@ -55,4 +55,4 @@ double polygonArea(const std::vector<base::Vec2>& polygon)
     return 0.5 * twice;
 }
 
-} // namespace camwb::geom
+}  // namespace camwb::geom

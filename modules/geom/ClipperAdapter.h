@@ -23,4 +23,4 @@ std::vector<std::vector<base::Vec2>> clipperOffset(const std::vector<base::Vec2>
 // doubles, not on the integer grid, so it does not carry Clipper's rounding.
 double polygonArea(const std::vector<base::Vec2>& polygon);
 
-} // namespace camwb::geom
+}  // namespace camwb::geom

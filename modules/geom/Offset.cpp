@@ -12,18 +12,12 @@ namespace camwb::geom {
 namespace {
 
 constexpr double kPi = std::numbers::pi;
-constexpr double kLengthTol = 1e-9;  // mm: shorter segments are degenerate
-constexpr double kTangentTol = 1e-9; // rad: smaller turns are tangent joints
+constexpr double kLengthTol = 1e-9;   // mm: shorter segments are degenerate
+constexpr double kTangentTol = 1e-9;  // rad: smaller turns are tangent joints
 
-std::string fmt(double v)
-{
-    return base::NumberFormat{3, true}.format(v);
-}
+std::string fmt(double v) { return base::NumberFormat{3, true}.format(v); }
 
-std::string fmt(Vec2 p)
-{
-    return "(" + fmt(p.x) + ", " + fmt(p.y) + ")";
-}
+std::string fmt(Vec2 p) { return "(" + fmt(p.x) + ", " + fmt(p.y) + ")"; }
 
 base::Error offsetError(double distance, const std::string& what)
 {
@@ -123,7 +117,7 @@ base::Result<Segment> offsetElement(const Segment& s, bool profileCcw, double d)
     return Segment::arc(s.center + (s.start - s.center) * k, s.center + (s.end - s.center) * k, s.center, s.ccw);
 }
 
-} // namespace
+}  // namespace
 
 base::Result<Profile> offsetOutside(const Profile& profile, double distance)
 {
@@ -157,15 +151,15 @@ base::Result<Profile> offsetOutside(const Profile& profile, double distance)
         untrimmed.push_back(o.value());
     }
     std::vector<Segment> trimmed = untrimmed;
-    std::vector<std::optional<Segment>> cornerArcs(n); // cornerArcs[i]: between element i and i+1
+    std::vector<std::optional<Segment>> cornerArcs(n);  // cornerArcs[i]: between element i and i+1
 
     for (std::size_t i = 0; i < n; ++i) {
         const std::size_t j = (i + 1) % n;
         const Vec2 vertex = segs[i].end;
         const Vec2 t1 = segs[i].endTangent();
         const Vec2 t2 = segs[j].startTangent();
-        const double turn = std::atan2(t1.cross(t2), t1.dot(t2)); // signed, in (-pi, pi]
-        const double outwardTurn = ccw ? turn : -turn;            // > 0: convex corner
+        const double turn = std::atan2(t1.cross(t2), t1.dot(t2));  // signed, in (-pi, pi]
+        const double outwardTurn = ccw ? turn : -turn;             // > 0: convex corner
         if (std::abs(turn) < kTangentTol) {
             // Tangent joint: both offsets end at the same point; snap away rounding noise.
             trimmed[j].start = trimmed[i].end;
@@ -218,4 +212,4 @@ base::Result<Profile> offsetOutside(const Profile& profile, double distance)
     return out;
 }
 
-} // namespace camwb::geom
+}  // namespace camwb::geom

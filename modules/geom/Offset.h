@@ -18,4 +18,4 @@ namespace camwb::geom {
 // between elements that are not neighbours is not detected here.
 base::Result<Profile> offsetOutside(const Profile& profile, double distance);
 
-} // namespace camwb::geom
+}  // namespace camwb::geom

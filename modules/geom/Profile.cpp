@@ -23,10 +23,7 @@ double Segment::sweep() const
     return angle;
 }
 
-double Segment::length() const
-{
-    return isArc() ? std::abs(sweep()) * radius() : distance(start, end);
-}
+double Segment::length() const { return isArc() ? std::abs(sweep()) * radius() : distance(start, end); }
 
 Vec2 Segment::startTangent() const
 {

@@ -15,8 +15,8 @@ struct Segment {
     Kind kind = Kind::Line;
     Vec2 start;
     Vec2 end;
-    Vec2 center;       // arcs only
-    bool ccw = true;   // arcs only: counter-clockwise seen from +Z
+    Vec2 center;      // arcs only
+    bool ccw = true;  // arcs only: counter-clockwise seen from +Z
 
     static Segment line(Vec2 a, Vec2 b) { return {Kind::Line, a, b, {}, true}; }
     static Segment arc(Vec2 a, Vec2 b, Vec2 c, bool counterClockwise) { return {Kind::Arc, a, b, c, counterClockwise}; }

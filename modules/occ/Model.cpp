@@ -11,20 +11,11 @@ Model::Model() = default;
 
 Model::Model(std::shared_ptr<const ModelData> data) : m_data(std::move(data)) {}
 
-bool Model::empty() const
-{
-    return !m_data || (m_data->shape.IsNull() && m_data->stlMesh.empty());
-}
+bool Model::empty() const { return !m_data || (m_data->shape.IsNull() && m_data->stlMesh.empty()); }
 
-bool Model::hasBRep() const
-{
-    return m_data && !m_data->shape.IsNull();
-}
+bool Model::hasBRep() const { return m_data && !m_data->shape.IsNull(); }
 
-int Model::faceCount() const
-{
-    return m_data ? static_cast<int>(m_data->faceInfos.size()) : 0;
-}
+int Model::faceCount() const { return m_data ? static_cast<int>(m_data->faceInfos.size()) : 0; }
 
 FaceInfo Model::face(int index) const
 {
@@ -46,21 +37,15 @@ int Model::topPlanarFace() const
             continue;
         }
         const FaceInfo& b = m_data->faceInfos[static_cast<std::size_t>(best - 1)];
-        if (f.planeZ > b.planeZ + kZTolerance
-            || (std::abs(f.planeZ - b.planeZ) <= kZTolerance && f.areaMm2 > b.areaMm2))
+        if (f.planeZ > b.planeZ + kZTolerance ||
+            (std::abs(f.planeZ - b.planeZ) <= kZTolerance && f.areaMm2 > b.areaMm2))
             best = i;
     }
     return best;
 }
 
-base::Vec3 Model::boundsMin() const
-{
-    return m_data ? m_data->boundsMin : base::Vec3{};
-}
+base::Vec3 Model::boundsMin() const { return m_data ? m_data->boundsMin : base::Vec3{}; }
 
-base::Vec3 Model::boundsMax() const
-{
-    return m_data ? m_data->boundsMax : base::Vec3{};
-}
+base::Vec3 Model::boundsMax() const { return m_data ? m_data->boundsMax : base::Vec3{}; }
 
 }  // namespace camwb::occ

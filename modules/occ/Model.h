@@ -18,10 +18,10 @@ namespace camwb::occ {
 using ProgressFn = std::function<bool(double fraction)>;
 
 struct FaceInfo {
-    int index = 0;        // 1-based; 0 = no such face
+    int index = 0;  // 1-based; 0 = no such face
     bool planar = false;
-    base::Vec3 normal;    // planar faces: outward unit normal
-    double planeZ = 0;    // planar faces with normal +-Z: their Z level
+    base::Vec3 normal;  // planar faces: outward unit normal
+    double planeZ = 0;  // planar faces with normal +-Z: their Z level
     double areaMm2 = 0;
 };
 
@@ -39,8 +39,8 @@ public:
     static base::Result<Model> load(const std::string& path, const ProgressFn& progress = {});
 
     bool empty() const;
-    bool hasBRep() const;  // false for STL meshes
-    int faceCount() const; // faces in TopExp::MapShapes order (stable for a given file)
+    bool hasBRep() const;            // false for STL meshes
+    int faceCount() const;           // faces in TopExp::MapShapes order (stable for a given file)
     FaceInfo face(int index) const;  // 1-based; FaceInfo{} (index 0) when out of range
 
     // The topmost planar face whose normal is +Z (largest Z; ties -> largest area); 0 if none.

@@ -77,11 +77,16 @@ std::string lowerExtension(const std::string& path)
 std::string statusText(IFSelect_ReturnStatus status)
 {
     switch (status) {
-    case IFSelect_RetVoid: return "nothing could be read";
-    case IFSelect_RetDone: return "done";
-    case IFSelect_RetError: return "syntax error";
-    case IFSelect_RetFail: return "read failed";
-    case IFSelect_RetStop: return "read stopped";
+    case IFSelect_RetVoid:
+        return "nothing could be read";
+    case IFSelect_RetDone:
+        return "done";
+    case IFSelect_RetError:
+        return "syntax error";
+    case IFSelect_RetFail:
+        return "read failed";
+    case IFSelect_RetStop:
+        return "read stopped";
     }
     return "unknown status";
 }
@@ -250,9 +255,8 @@ base::Result<Model> Model::load(const std::string& path, const ProgressFn& progr
     const std::string ext = lowerExtension(path);
     static constexpr const char* kKnown[] = {".step", ".stp", ".iges", ".igs", ".brep", ".brp", ".stl"};
     if (std::find(std::begin(kKnown), std::end(kKnown), ext) == std::end(kKnown))
-        return base::makeError("unsupported file type '" + ext
-                                   + "' (expected .step, .stp, .iges, .igs, .brep, .brp or .stl)",
-                               path);
+        return base::makeError(
+            "unsupported file type '" + ext + "' (expected .step, .stp, .iges, .igs, .brep, .brp or .stl)", path);
 
     ProgressBridge bridge(progress);
     if (!bridge.report(0.0))

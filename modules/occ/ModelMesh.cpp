@@ -83,8 +83,7 @@ void appendFace(DisplayMesh& mesh, const TopoDS_Face& face, int faceIndex)
 
 // The edge as BRepMesh discretised it on one of its faces (so lines sit on the triangle edges),
 // or a tangential deflection of its curve when there is none.
-std::vector<base::Vec3> edgePolyline(const TopoDS_Edge& edge, const TopTools_ListOfShape& faces,
-                                     double deflectionMm)
+std::vector<base::Vec3> edgePolyline(const TopoDS_Edge& edge, const TopTools_ListOfShape& faces, double deflectionMm)
 {
     std::vector<base::Vec3> line;
     if (!faces.IsEmpty()) {

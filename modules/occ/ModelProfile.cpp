@@ -26,13 +26,10 @@
 namespace camwb::occ {
 namespace {
 
-using geom::Segment;
 using base::Vec2;
+using geom::Segment;
 
-Vec2 xy(const gp_Pnt& p)
-{
-    return {p.X(), p.Y()};
-}
+Vec2 xy(const gp_Pnt& p) { return {p.X(), p.Y()}; }
 
 // Appends one edge, travelled in its wire orientation from `from` to `to` (its vertices, so that
 // consecutive segments meet exactly).
@@ -114,8 +111,8 @@ base::Result<geom::Profile> outerProfile(const TopoDS_Face& face, double toleran
 base::Result<geom::Profile> Model::planarFaceOuterProfile(int faceIndex, double toleranceMm) const
 {
     if (faceIndex < 1 || faceIndex > faceCount())
-        return base::makeError("face " + std::to_string(faceIndex) + " does not exist (the model has "
-                               + std::to_string(faceCount()) + " faces)");
+        return base::makeError("face " + std::to_string(faceIndex) + " does not exist (the model has " +
+                               std::to_string(faceCount()) + " faces)");
     const FaceInfo info = face(faceIndex);
     if (!info.planar)
         return base::makeError("face " + std::to_string(faceIndex) + " is not planar");

@@ -13,10 +13,7 @@ namespace {
 using geom::Segment;
 using toolpath::Vec3;
 
-std::string fmt(double v)
-{
-    return base::NumberFormat{4, true}.format(v);
-}
+std::string fmt(double v) { return base::NumberFormat{4, true}.format(v); }
 
 base::Error opError(const ProfileParams& params, const std::string& what)
 {
@@ -64,7 +61,7 @@ std::vector<Segment> rotateToStart(const std::vector<Segment>& loop)
     return out;
 }
 
-} // namespace
+}  // namespace
 
 base::Result<toolpath::Toolpath> computeOuterProfile(const geom::Profile& boundary, const ProfileParams& params,
                                                      const ToolController& tc, int operationIndex)
@@ -125,4 +122,4 @@ base::Result<toolpath::Toolpath> computeOuterProfile(const geom::Profile& bounda
     return tp;
 }
 
-} // namespace camwb::ops
+}  // namespace camwb::ops

@@ -19,11 +19,11 @@ struct ToolController {
 
 struct ProfileParams {
     std::string name = "Profile";
-    int faceIndex = 0;      // model face whose outer boundary is profiled (resolved by the caller)
-    double finalDepthZ = 0; // the one cutting depth
-    double safeZ = 0;       // rapid down to here, then plunge at plunge feed
-    double clearanceZ = 0;  // rapid height between operations
-    bool climb = true;      // climb milling (tool travels clockwise around an outside boundary)
+    int faceIndex = 0;       // model face whose outer boundary is profiled (resolved by the caller)
+    double finalDepthZ = 0;  // the one cutting depth
+    double safeZ = 0;        // rapid down to here, then plunge at plunge feed
+    double clearanceZ = 0;   // rapid height between operations
+    bool climb = true;       // climb milling (tool travels clockwise around an outside boundary)
 };
 
 // Records (each with SourceRef{operationIndex, i}): SectionBegin{name, "profile", tool, feeds},
@@ -37,4 +37,4 @@ struct ProfileParams {
 base::Result<toolpath::Toolpath> computeOuterProfile(const geom::Profile& boundary, const ProfileParams& params,
                                                      const ToolController& tc, int operationIndex);
 
-} // namespace camwb::ops
+}  // namespace camwb::ops

@@ -10,9 +10,9 @@ using toolpath::Vec3;
 
 namespace {
 
-constexpr double kAxisTolerance = 1e-9;     // |normal . axis| within this of 1 counts as principal
-constexpr double kPointTolerance = 1e-7;    // mm: start and end this close make a full circle
-constexpr double kSweepTolerance = 1e-6;    // radians of slack before a piece counts as too long
+constexpr double kAxisTolerance = 1e-9;   // |normal . axis| within this of 1 counts as principal
+constexpr double kPointTolerance = 1e-7;  // mm: start and end this close make a full circle
+constexpr double kSweepTolerance = 1e-6;  // radians of slack before a piece counts as too long
 
 Vec3 unit(const Vec3& v)
 {
@@ -93,8 +93,8 @@ std::vector<ArcPiece> splitArc(const Vec3& start, const toolpath::Arc& arc, doub
             const double axial = axialStart + (axialEnd - axialStart) * t;
             pieceEnd = arc.center + (uUnit * std::cos(angle) + uPerp * std::sin(angle)) * radius + n * axial;
         }
-        pieces.push_back({pieceStart, pieceEnd, arc.center, n, clockwise, sweep / count * 180 / std::numbers::pi,
-                          helical});
+        pieces.push_back(
+            {pieceStart, pieceEnd, arc.center, n, clockwise, sweep / count * 180 / std::numbers::pi, helical});
         pieceStart = pieceEnd;
     }
     return pieces;

@@ -11,10 +11,10 @@ namespace camwb::post {
 
 struct ArcPiece {
     toolpath::Vec3 start, end, center;
-    toolpath::Vec3 normal;  // canonical: +Z, +Y or +X for the principal planes
-    bool clockwise = false; // seen looking against `normal`
-    double sweepDeg = 0;    // > 0
-    bool helical = false;   // the end leaves the start's plane
+    toolpath::Vec3 normal;   // canonical: +Z, +Y or +X for the principal planes
+    bool clockwise = false;  // seen looking against `normal`
+    double sweepDeg = 0;     // > 0
+    bool helical = false;    // the end leaves the start's plane
 };
 
 // "XY", "ZX", "YZ" for normals along Z, Y, X (either sign), "" for any other plane.

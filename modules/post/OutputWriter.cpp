@@ -34,10 +34,7 @@ bool OutputWriter::writeBlock(const std::vector<std::string>& words)
     return true;
 }
 
-void OutputWriter::writeComment(const std::string& text)
-{
-    append(blockPrefix() + ";" + text);
-}
+void OutputWriter::writeComment(const std::string& text) { append(blockPrefix() + ";" + text); }
 
 void OutputWriter::writeLine(const std::string& text)
 {

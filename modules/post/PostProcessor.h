@@ -13,10 +13,10 @@
 namespace camwb::post {
 
 struct PostInfo {
-    std::string id;           // from `post.id`, else the file's base name
+    std::string id;  // from `post.id`, else the file's base name
     std::string description;
     std::string vendor;
-    std::string extension;    // without the dot, e.g. "mpf"; "nc" when the post names none
+    std::string extension;  // without the dot, e.g. "mpf"; "nc" when the post names none
     std::string filePath;
 };
 
@@ -24,7 +24,7 @@ struct PostContext {
     std::string programName;
     std::int64_t dateEpochSeconds = 0;  // shown as UTC
     std::string user;
-    std::string version;                // CAMWB_VERSION
+    std::string version;  // CAMWB_VERSION
 
     // SOURCE_DATE_EPOCH if set (else now), CAMWB_USER else USER else "unknown", CAMWB_VERSION.
     static PostContext fromEnvironment(std::string programName);

@@ -18,7 +18,8 @@ std::vector<std::string> defaultPostDirs()
         std::size_t start = 0;
         while (start <= list.size()) {
             const std::size_t colon = list.find(':', start);
-            const std::string entry = list.substr(start, colon == std::string::npos ? std::string::npos : colon - start);
+            const std::string entry =
+                list.substr(start, colon == std::string::npos ? std::string::npos : colon - start);
             if (!entry.empty())
                 dirs.push_back(entry);
             if (colon == std::string::npos)

@@ -24,8 +24,8 @@ std::string wordText(const QJSValue& value)
 QString FormatObject::format(const QJSValue& value)
 {
     if (!value.isNumber() || !std::isfinite(value.toNumber())) {
-        m_engine->throwError(QJSValue::TypeError, QStringLiteral("format() needs a finite number, got '%1'")
-                                                      .arg(value.toString()));
+        m_engine->throwError(QJSValue::TypeError,
+                             QStringLiteral("format() needs a finite number, got '%1'").arg(value.toString()));
         return {};
     }
     return QString::fromStdString(m_format.format(value.toNumber()));
@@ -141,8 +141,9 @@ void ScriptKernel::setBlockNumbering(const QJSValue& start, const QJSValue& step
     const double first = start.isUndefined() ? 10 : start.toNumber();
     const double increment = step.isUndefined() ? 10 : step.toNumber();
     if (!isIntegral(first) || !isIntegral(increment) || first < 0 || increment <= 0) {
-        m_engine->throwError(QJSValue::RangeError,
-                             QStringLiteral("setBlockNumbering(start, step, enabled): start >= 0 and step > 0, integers"));
+        m_engine->throwError(
+            QJSValue::RangeError,
+            QStringLiteral("setBlockNumbering(start, step, enabled): start >= 0 and step > 0, integers"));
         return;
     }
     m_writer.setBlockNumbering(static_cast<long long>(first), static_cast<long long>(increment),

@@ -23,18 +23,22 @@ var writeBlock = (function (kernel) {
 })
 )JS";
 
-const char* kHandlerNames[] = {"onOpen",     "onSection",   "onToolChange", "onSpindle",  "onCoolant",
-                               "onFeedMode", "onWorkOffset", "onRapid",     "onLinear",   "onCircular",
-                               "onLinear5D", "onCycle",     "onComment",    "onCutterComp", "onDwell",
+const char* kHandlerNames[] = {"onOpen",       "onSection",    "onToolChange", "onSpindle",    "onCoolant",
+                               "onFeedMode",   "onWorkOffset", "onRapid",      "onLinear",     "onCircular",
+                               "onLinear5D",   "onCycle",      "onComment",    "onCutterComp", "onDwell",
                                "onSectionEnd", "onClose"};
 
 const char* coolantName(CoolantMode mode)
 {
     switch (mode) {
-    case CoolantMode::Off: return "off";
-    case CoolantMode::Flood: return "flood";
-    case CoolantMode::Mist: return "mist";
-    case CoolantMode::ThroughTool: return "throughTool";
+    case CoolantMode::Off:
+        return "off";
+    case CoolantMode::Flood:
+        return "flood";
+    case CoolantMode::Mist:
+        return "mist";
+    case CoolantMode::ThroughTool:
+        return "throughTool";
     }
     return "off";
 }
@@ -42,9 +46,12 @@ const char* coolantName(CoolantMode mode)
 const char* feedModeName(FeedMode mode)
 {
     switch (mode) {
-    case FeedMode::PerMinute: return "perMinute";
-    case FeedMode::PerRevolution: return "perRevolution";
-    case FeedMode::InverseTime: return "inverseTime";
+    case FeedMode::PerMinute:
+        return "perMinute";
+    case FeedMode::PerRevolution:
+        return "perRevolution";
+    case FeedMode::InverseTime:
+        return "inverseTime";
     }
     return "perMinute";
 }
@@ -52,21 +59,27 @@ const char* feedModeName(FeedMode mode)
 const char* cycleName(CycleKind kind)
 {
     switch (kind) {
-    case CycleKind::Drill: return "drill";
-    case CycleKind::DrillDwell: return "drillDwell";
-    case CycleKind::Peck: return "peck";
-    case CycleKind::ChipBreak: return "chipBreak";
-    case CycleKind::Tap: return "tap";
-    case CycleKind::Bore: return "bore";
+    case CycleKind::Drill:
+        return "drill";
+    case CycleKind::DrillDwell:
+        return "drillDwell";
+    case CycleKind::Peck:
+        return "peck";
+    case CycleKind::ChipBreak:
+        return "chipBreak";
+    case CycleKind::Tap:
+        return "tap";
+    case CycleKind::Bore:
+        return "bore";
     }
     return "drill";
 }
 
 const char* recordName(const Record& record)
 {
-    static const char* names[] = {"Rapid",    "Linear",      "Arc",      "ToolChange",   "Spindle",
-                                  "Coolant",  "FeedModeChange", "WorkOffset", "Dwell",     "Cycle",
-                                  "ToolAxisMove", "CutterComp", "Comment", "SectionBegin", "SectionEnd"};
+    static const char* names[] = {"Rapid",        "Linear",         "Arc",        "ToolChange",   "Spindle",
+                                  "Coolant",      "FeedModeChange", "WorkOffset", "Dwell",        "Cycle",
+                                  "ToolAxisMove", "CutterComp",     "Comment",    "SectionBegin", "SectionEnd"};
     return names[record.index()];
 }
 
@@ -83,10 +96,7 @@ public:
     const std::map<std::string, int>& unhandled() const { return m_unhandled; }
 
     void rapid(const Rapid& r) override { move("onRapid", {r.to.x, r.to.y, r.to.z}, r.to); }
-    void linear(const Linear& r) override
-    {
-        move("onLinear", {r.to.x, r.to.y, r.to.z, r.feedMmPerMin}, r.to);
-    }
+    void linear(const Linear& r) override { move("onLinear", {r.to.x, r.to.y, r.to.z, r.feedMmPerMin}, r.to); }
     void arc(const Arc& r) override;
     void toolChange(const ToolChange& r) override
     {
@@ -206,8 +216,8 @@ void ScriptSink::arc(const Arc& r)
         info.setProperty("turns", r.turns);
         info.setProperty("piece", static_cast<int>(i));
         info.setProperty("pieces", static_cast<int>(pieces.size()));
-        handle("onCircular", {p.clockwise, p.center.x, p.center.y, p.center.z, p.end.x, p.end.y, p.end.z,
-                              r.feedMmPerMin, info});
+        handle("onCircular",
+               {p.clockwise, p.center.x, p.center.y, p.center.z, p.end.x, p.end.y, p.end.z, r.feedMmPerMin, info});
         if (!m_run.m_handlers.count("onCircular"))
             break;  // one warning, not one per piece
     }
@@ -240,8 +250,9 @@ void ScriptSink::cycle(const Cycle& r)
         m_run.m_kernel->setPosition(Vec3{r.holes.back().x, r.holes.back().y, r.clearanceZ});
 }
 
-ScriptRun::ScriptRun(std::string postFile, const PostContext& context)
-    : m_postFile(std::move(postFile)), m_kernel(std::make_unique<ScriptKernel>(&m_engine, m_postFile))
+ScriptRun::ScriptRun(std::string postFile, const PostContext& context) :
+    m_postFile(std::move(postFile)),
+    m_kernel(std::make_unique<ScriptKernel>(&m_engine, m_postFile))
 {
     // Only the ECMAScript built-ins plus the kernel: no console, no file or network access.
     QJSEngine::setObjectOwnership(m_kernel.get(), QJSEngine::CppOwnership);
@@ -341,8 +352,8 @@ bool ScriptRun::call(const char* name, const QJSValueList& args, bool& handled)
         return false;
     }
     if (result.isObject() && result.hasOwnProperty("thrown")) {
-        m_failure = scriptError(result.property("thrown"),
-                                std::string("in ") + name + (m_where.empty() ? "" : ", " + m_where));
+        m_failure =
+            scriptError(result.property("thrown"), std::string("in ") + name + (m_where.empty() ? "" : ", " + m_where));
         return false;
     }
     return true;
@@ -372,8 +383,8 @@ base::Result<PostOutput> ScriptRun::play(const Toolpath& toolpath)
     output.messages = m_kernel->messages();
     for (const auto& [what, count] : sink.unhandled())
         output.messages.push_back({PostMessage::Severity::Warning,
-                                   "post " + m_postId + " has no handler for " + what + "; " +
-                                       std::to_string(count) + (count == 1 ? " record" : " records") + " not output",
+                                   "post " + m_postId + " has no handler for " + what + "; " + std::to_string(count) +
+                                       (count == 1 ? " record" : " records") + " not output",
                                    m_postFile, 0});
     return output;
 }

@@ -29,8 +29,13 @@ struct Tool {
     int flutes = 2;
 };
 
-struct Rapid { Vec3 to; };
-struct Linear { Vec3 to; double feedMmPerMin = 0; };
+struct Rapid {
+    Vec3 to;
+};
+struct Linear {
+    Vec3 to;
+    double feedMmPerMin = 0;
+};
 
 // Circular move from the current position. When `to` leaves the arc's plane the arc is a helix.
 // `turns` counts extra full revolutions (0 = less than one turn).
@@ -43,12 +48,25 @@ struct Arc {
     double feedMmPerMin = 0;
 };
 
-struct ToolChange { Tool tool; };
-struct Spindle { double rpm = 0; bool clockwise = true; };  // rpm 0 = stop
-struct Coolant { CoolantMode mode = CoolantMode::Off; };
-struct FeedModeChange { FeedMode mode = FeedMode::PerMinute; };
-struct WorkOffset { int index = 1; };  // 1 = first offset (G54 / datum 1)
-struct Dwell { double seconds = 0; };
+struct ToolChange {
+    Tool tool;
+};
+struct Spindle {
+    double rpm = 0;
+    bool clockwise = true;
+};  // rpm 0 = stop
+struct Coolant {
+    CoolantMode mode = CoolantMode::Off;
+};
+struct FeedModeChange {
+    FeedMode mode = FeedMode::PerMinute;
+};
+struct WorkOffset {
+    int index = 1;
+};  // 1 = first offset (G54 / datum 1)
+struct Dwell {
+    double seconds = 0;
+};
 
 // A canned cycle over a set of holes; `holes` are the hole top centres.
 struct Cycle {
@@ -64,10 +82,18 @@ struct Cycle {
 };
 
 // Five-axis move: tool tip and unit tool vector (from tip towards spindle). feed 0 = rapid.
-struct ToolAxisMove { Vec3 tip; Vec3 axis{0, 0, 1}; double feedMmPerMin = 0; };
+struct ToolAxisMove {
+    Vec3 tip;
+    Vec3 axis{0, 0, 1};
+    double feedMmPerMin = 0;
+};
 
-struct CutterComp { CutterCompSide side = CutterCompSide::Off; };
-struct Comment { std::string text; };
+struct CutterComp {
+    CutterCompSide side = CutterCompSide::Off;
+};
+struct Comment {
+    std::string text;
+};
 
 struct SectionFeeds {
     double cuttingMmPerMin = 0;
@@ -85,8 +111,8 @@ struct SectionBegin {
 };
 struct SectionEnd {};
 
-using Record = std::variant<Rapid, Linear, Arc, ToolChange, Spindle, Coolant, FeedModeChange, WorkOffset,
-                            Dwell, Cycle, ToolAxisMove, CutterComp, Comment, SectionBegin, SectionEnd>;
+using Record = std::variant<Rapid, Linear, Arc, ToolChange, Spindle, Coolant, FeedModeChange, WorkOffset, Dwell, Cycle,
+                            ToolAxisMove, CutterComp, Comment, SectionBegin, SectionEnd>;
 
 // Where a record came from, so the GUI can link it back to its operation. -1 = unknown.
 struct SourceRef {

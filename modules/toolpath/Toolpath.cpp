@@ -43,22 +43,38 @@ void dispatch(const Record& record, MachineSink& sink)
     std::visit(
         [&sink](const auto& r) {
             using T = std::decay_t<decltype(r)>;
-            if constexpr (std::is_same_v<T, Rapid>) sink.rapid(r);
-            else if constexpr (std::is_same_v<T, Linear>) sink.linear(r);
-            else if constexpr (std::is_same_v<T, Arc>) sink.arc(r);
-            else if constexpr (std::is_same_v<T, ToolChange>) sink.toolChange(r);
-            else if constexpr (std::is_same_v<T, Spindle>) sink.spindle(r);
-            else if constexpr (std::is_same_v<T, Coolant>) sink.coolant(r);
-            else if constexpr (std::is_same_v<T, FeedModeChange>) sink.feedMode(r);
-            else if constexpr (std::is_same_v<T, WorkOffset>) sink.workOffset(r);
-            else if constexpr (std::is_same_v<T, Dwell>) sink.dwell(r);
-            else if constexpr (std::is_same_v<T, Cycle>) sink.cycle(r);
-            else if constexpr (std::is_same_v<T, ToolAxisMove>) sink.toolAxisMove(r);
-            else if constexpr (std::is_same_v<T, CutterComp>) sink.cutterComp(r);
-            else if constexpr (std::is_same_v<T, Comment>) sink.comment(r);
-            else if constexpr (std::is_same_v<T, SectionBegin>) sink.sectionBegin(r);
-            else if constexpr (std::is_same_v<T, SectionEnd>) sink.sectionEnd(r);
-            else static_assert(sizeof(T) == 0, "every CL record needs a sink method");
+            if constexpr (std::is_same_v<T, Rapid>)
+                sink.rapid(r);
+            else if constexpr (std::is_same_v<T, Linear>)
+                sink.linear(r);
+            else if constexpr (std::is_same_v<T, Arc>)
+                sink.arc(r);
+            else if constexpr (std::is_same_v<T, ToolChange>)
+                sink.toolChange(r);
+            else if constexpr (std::is_same_v<T, Spindle>)
+                sink.spindle(r);
+            else if constexpr (std::is_same_v<T, Coolant>)
+                sink.coolant(r);
+            else if constexpr (std::is_same_v<T, FeedModeChange>)
+                sink.feedMode(r);
+            else if constexpr (std::is_same_v<T, WorkOffset>)
+                sink.workOffset(r);
+            else if constexpr (std::is_same_v<T, Dwell>)
+                sink.dwell(r);
+            else if constexpr (std::is_same_v<T, Cycle>)
+                sink.cycle(r);
+            else if constexpr (std::is_same_v<T, ToolAxisMove>)
+                sink.toolAxisMove(r);
+            else if constexpr (std::is_same_v<T, CutterComp>)
+                sink.cutterComp(r);
+            else if constexpr (std::is_same_v<T, Comment>)
+                sink.comment(r);
+            else if constexpr (std::is_same_v<T, SectionBegin>)
+                sink.sectionBegin(r);
+            else if constexpr (std::is_same_v<T, SectionEnd>)
+                sink.sectionEnd(r);
+            else
+                static_assert(sizeof(T) == 0, "every CL record needs a sink method");
         },
         record);
 }

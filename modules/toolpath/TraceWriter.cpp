@@ -13,9 +13,12 @@ std::string point(const Vec3& p) { return num(p.x) + ' ' + num(p.y) + ' ' + num(
 const char* compName(CutterCompSide side)
 {
     switch (side) {
-    case CutterCompSide::Left: return "left";
-    case CutterCompSide::Right: return "right";
-    case CutterCompSide::Off: break;
+    case CutterCompSide::Left:
+        return "left";
+    case CutterCompSide::Right:
+        return "right";
+    case CutterCompSide::Off:
+        break;
     }
     return "off";
 }
@@ -23,10 +26,14 @@ const char* compName(CutterCompSide side)
 const char* coolantName(CoolantMode mode)
 {
     switch (mode) {
-    case CoolantMode::Flood: return "flood";
-    case CoolantMode::Mist: return "mist";
-    case CoolantMode::ThroughTool: return "through-tool";
-    case CoolantMode::Off: break;
+    case CoolantMode::Flood:
+        return "flood";
+    case CoolantMode::Mist:
+        return "mist";
+    case CoolantMode::ThroughTool:
+        return "through-tool";
+    case CoolantMode::Off:
+        break;
     }
     return "off";
 }
@@ -34,9 +41,12 @@ const char* coolantName(CoolantMode mode)
 const char* feedModeName(FeedMode mode)
 {
     switch (mode) {
-    case FeedMode::PerRevolution: return "per-rev";
-    case FeedMode::InverseTime: return "inverse-time";
-    case FeedMode::PerMinute: break;
+    case FeedMode::PerRevolution:
+        return "per-rev";
+    case FeedMode::InverseTime:
+        return "inverse-time";
+    case FeedMode::PerMinute:
+        break;
     }
     return "per-min";
 }
@@ -44,12 +54,18 @@ const char* feedModeName(FeedMode mode)
 const char* cycleName(CycleKind kind)
 {
     switch (kind) {
-    case CycleKind::DrillDwell: return "drill-dwell";
-    case CycleKind::Peck: return "peck";
-    case CycleKind::ChipBreak: return "chip-break";
-    case CycleKind::Tap: return "tap";
-    case CycleKind::Bore: return "bore";
-    case CycleKind::Drill: break;
+    case CycleKind::DrillDwell:
+        return "drill-dwell";
+    case CycleKind::Peck:
+        return "peck";
+    case CycleKind::ChipBreak:
+        return "chip-break";
+    case CycleKind::Tap:
+        return "tap";
+    case CycleKind::Bore:
+        return "bore";
+    case CycleKind::Drill:
+        break;
     }
     return "drill";
 }
@@ -103,8 +119,8 @@ void TraceWriter::comment(const Comment& r) { m_out += "comment \"" + r.text + "
 
 void TraceWriter::sectionBegin(const SectionBegin& r)
 {
-    m_out += "section \"" + r.operationName + "\" " + r.strategy + " tool " + std::to_string(r.toolNumber) +
-             " cut " + num(r.feeds.cuttingMmPerMin) + " plunge " + num(r.feeds.plungeMmPerMin) + '\n';
+    m_out += "section \"" + r.operationName + "\" " + r.strategy + " tool " + std::to_string(r.toolNumber) + " cut " +
+             num(r.feeds.cuttingMmPerMin) + " plunge " + num(r.feeds.plungeMmPerMin) + '\n';
 }
 
 void TraceWriter::sectionEnd(const SectionEnd&) { m_out += "endsection\n"; }

@@ -17,9 +17,9 @@ class QToolBar;
 namespace camwb::gui {
 
 struct ActionSpec {
-    QString id;                // stable: Cam.<Area>.<Verb>
-    QString text;              // translated menu text
-    QString menu;              // translated menu title the action goes into ("&File")
+    QString id;    // stable: Cam.<Area>.<Verb>
+    QString text;  // translated menu text
+    QString menu;  // translated menu title the action goes into ("&File")
     QKeySequence shortcut = {};
     bool onToolBar = false;
     bool separatorBefore = false;

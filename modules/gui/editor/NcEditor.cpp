@@ -16,9 +16,7 @@ struct NcEditor::Private {
     int lastLine = 1;
 };
 
-NcEditor::NcEditor(QWidget* parent)
-    : QWidget(parent)
-    , d(std::make_unique<Private>())
+NcEditor::NcEditor(QWidget* parent) : QWidget(parent), d(std::make_unique<Private>())
 {
     auto* layout = new QVBoxLayout(this);
     layout->setContentsMargins(0, 0, 0, 0);
@@ -61,25 +59,13 @@ void NcEditor::setText(const QString& text)
     checkCursorLine();
 }
 
-QString NcEditor::text() const
-{
-    return d->sci->text();
-}
+QString NcEditor::text() const { return d->sci->text(); }
 
-void NcEditor::setReadOnly(bool readOnly)
-{
-    d->sci->setReadOnly(readOnly);
-}
+void NcEditor::setReadOnly(bool readOnly) { d->sci->setReadOnly(readOnly); }
 
-bool NcEditor::isReadOnly() const
-{
-    return d->sci->isReadOnly();
-}
+bool NcEditor::isReadOnly() const { return d->sci->isReadOnly(); }
 
-int NcEditor::lineCount() const
-{
-    return d->sci->lines();
-}
+int NcEditor::lineCount() const { return d->sci->lines(); }
 
 void NcEditor::gotoLine(int line)
 {
@@ -111,16 +97,19 @@ int NcEditor::styleAt(int line, int column) const
 {
     if (line < 1 || line > lineCount() || column < 1)
         return -1;
-    const int lineLength = static_cast<int>(d->sci->text(line - 1).remove(QLatin1Char('\n')).remove(QLatin1Char('\r')).size());
+    const int lineLength =
+        static_cast<int>(d->sci->text(line - 1).remove(QLatin1Char('\n')).remove(QLatin1Char('\r')).size());
     if (column > lineLength)
         return -1;
     const long position = d->sci->positionFromLineIndex(line - 1, column - 1);
-    const long lineEnd = d->sci->SendScintilla(QsciScintillaBase::SCI_GETLINEENDPOSITION, static_cast<unsigned long>(line - 1));
+    const long lineEnd =
+        d->sci->SendScintilla(QsciScintillaBase::SCI_GETLINEENDPOSITION, static_cast<unsigned long>(line - 1));
     // For a container lexer this asks the lexer to style up to the line end (if not yet done).
     const long styledTo = d->sci->SendScintilla(QsciScintillaBase::SCI_GETENDSTYLED);
     if (styledTo <= lineEnd)
         d->sci->SendScintilla(QsciScintillaBase::SCI_COLOURISE, static_cast<unsigned long>(styledTo), lineEnd);
-    return static_cast<int>(d->sci->SendScintilla(QsciScintillaBase::SCI_GETSTYLEAT, static_cast<unsigned long>(position)));
+    return static_cast<int>(
+        d->sci->SendScintilla(QsciScintillaBase::SCI_GETSTYLEAT, static_cast<unsigned long>(position)));
 }
 
 }  // namespace camwb::gui

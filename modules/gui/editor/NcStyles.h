@@ -14,8 +14,8 @@ enum class NcStyle : int {
     FeedSpeedTool,  // F S T D with their value
     Keyword,        // cycles (CYCLE81, POCKET3), control flow, frames, DEF, MCALL, MSG, AC/IC, CR/AR ...
     Number,
-    String,         // "..."
-    Parameter,      // R parameters (R1) and system variables ($P_...)
+    String,     // "..."
+    Parameter,  // R parameters (R1) and system variables ($P_...)
     Count
 };
 

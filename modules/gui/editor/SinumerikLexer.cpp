@@ -17,16 +17,16 @@ namespace {
 // Sorted (binary search). Control flow, declarations, frames, contour and arc words, motion
 // modifiers and the common functions a Sinumerik program uses.
 constexpr std::array<std::string_view, 92> kKeywords{
-    "ABS",     "AC",      "ACN",      "ACOS",    "ACP",     "AMIRROR", "AND",     "AP",       "AR",      "AROT",
-    "AROTS",   "ASCALE",  "ASIN",     "ATAN2",   "ATRANS",  "AXIS",    "BOOL",    "CALL",     "CASE",    "CFC",
-    "CFIN",    "CFTCP",   "CHAR",     "CHF",     "CHR",     "CIP",     "COS",     "CR",       "CT",      "DC",
-    "DEF",     "DEFAULT", "DISPLOF",  "DISPLON", "DIV",     "ELSE",    "ENDFOR",  "ENDIF",    "ENDLOOP", "ENDWHILE",
-    "EXECSTRING", "EXTCALL", "FOR",   "FRAME",   "GOTO",    "GOTOB",   "GOTOC",   "GOTOF",    "IC",      "IF",
-    "INT",     "LOOP",    "MCALL",    "MIRROR",  "MOD",     "MSG",     "NOT",     "OF",       "OR",      "ORIAXES",
-    "ORIVECT", "ORIWKS",  "PAROT",    "PAROTOF", "POT",     "PROC",    "REAL",    "REPEAT",   "RET",     "RND",
-    "RNDM",    "ROT",     "ROUND",    "RP",      "SAVE",    "SCALE",   "SIN",     "SQRT",     "STOPRE",  "STRING",
-    "SUPA",    "TAN",     "TCARR",    "TO",      "TRAFOOF", "TRANS",   "TRAORI",  "TRUNC",    "TURN",    "UNTIL",
-    "WHILE",   "XOR"};
+    "ABS",        "AC",      "ACN",     "ACOS",    "ACP",     "AMIRROR", "AND",    "AP",     "AR",      "AROT",
+    "AROTS",      "ASCALE",  "ASIN",    "ATAN2",   "ATRANS",  "AXIS",    "BOOL",   "CALL",   "CASE",    "CFC",
+    "CFIN",       "CFTCP",   "CHAR",    "CHF",     "CHR",     "CIP",     "COS",    "CR",     "CT",      "DC",
+    "DEF",        "DEFAULT", "DISPLOF", "DISPLON", "DIV",     "ELSE",    "ENDFOR", "ENDIF",  "ENDLOOP", "ENDWHILE",
+    "EXECSTRING", "EXTCALL", "FOR",     "FRAME",   "GOTO",    "GOTOB",   "GOTOC",  "GOTOF",  "IC",      "IF",
+    "INT",        "LOOP",    "MCALL",   "MIRROR",  "MOD",     "MSG",     "NOT",    "OF",     "OR",      "ORIAXES",
+    "ORIVECT",    "ORIWKS",  "PAROT",   "PAROTOF", "POT",     "PROC",    "REAL",   "REPEAT", "RET",     "RND",
+    "RNDM",       "ROT",     "ROUND",   "RP",      "SAVE",    "SCALE",   "SIN",    "SQRT",   "STOPRE",  "STRING",
+    "SUPA",       "TAN",     "TCARR",   "TO",      "TRAFOOF", "TRANS",   "TRAORI", "TRUNC",  "TURN",    "UNTIL",
+    "WHILE",      "XOR"};
 
 // Standard and ShopMill cycles all start with one of these.
 constexpr std::array<std::string_view, 6> kCyclePrefixes{"CYCLE", "POCKET", "SLOT", "LONGHOLE", "HOLES", "E_"};
@@ -37,8 +37,9 @@ bool isKeyword(std::string_view upper)
 {
     if (std::binary_search(kKeywords.begin(), kKeywords.end(), upper))
         return true;
-    return std::any_of(kCyclePrefixes.begin(), kCyclePrefixes.end(),
-                       [upper](std::string_view p) { return upper.size() > p.size() && upper.substr(0, p.size()) == p; });
+    return std::any_of(kCyclePrefixes.begin(), kCyclePrefixes.end(), [upper](std::string_view p) {
+        return upper.size() > p.size() && upper.substr(0, p.size()) == p;
+    });
 }
 
 bool isDigit(char c) { return c >= '0' && c <= '9'; }
@@ -49,48 +50,75 @@ char upper(char c) { return (c >= 'a' && c <= 'z') ? char(c - 'a' + 'A') : c; }
 NcStyle addressStyle(char letter)
 {
     switch (upper(letter)) {
-    case 'G': return NcStyle::GWord;
-    case 'M': return NcStyle::MWord;
-    case 'X': case 'Y': case 'Z': case 'A': case 'B': case 'C': case 'I': case 'J': case 'K': return NcStyle::AxisWord;
-    case 'F': case 'S': case 'T': case 'D': return NcStyle::FeedSpeedTool;
-    case 'R': return NcStyle::Parameter;
-    case 'N': return NcStyle::BlockNumber;
-    default: return NcStyle::Default;
+    case 'G':
+        return NcStyle::GWord;
+    case 'M':
+        return NcStyle::MWord;
+    case 'X':
+    case 'Y':
+    case 'Z':
+    case 'A':
+    case 'B':
+    case 'C':
+    case 'I':
+    case 'J':
+    case 'K':
+        return NcStyle::AxisWord;
+    case 'F':
+    case 'S':
+    case 'T':
+    case 'D':
+        return NcStyle::FeedSpeedTool;
+    case 'R':
+        return NcStyle::Parameter;
+    case 'N':
+        return NcStyle::BlockNumber;
+    default:
+        return NcStyle::Default;
     }
 }
 
 }  // namespace
 
-SinumerikLexer::SinumerikLexer(QObject* parent)
-    : QsciLexerCustom(parent)
-    , m_font(QFontDatabase::systemFont(QFontDatabase::FixedFont))
+SinumerikLexer::SinumerikLexer(QObject* parent) :
+    QsciLexerCustom(parent),
+    m_font(QFontDatabase::systemFont(QFontDatabase::FixedFont))
 {
     setDefaultFont(m_font);
     setDefaultPaper(Qt::white);
     setDefaultColor(Qt::black);
 }
 
-const char* SinumerikLexer::language() const
-{
-    return "Sinumerik";
-}
+const char* SinumerikLexer::language() const { return "Sinumerik"; }
 
 QString SinumerikLexer::description(int style) const
 {
     // QScintilla enumerates styles until the description is empty.
     switch (static_cast<NcStyle>(style)) {
-    case NcStyle::Default: return tr("Default");
-    case NcStyle::Comment: return tr("Comment");
-    case NcStyle::BlockNumber: return tr("Block number");
-    case NcStyle::GWord: return tr("G word");
-    case NcStyle::MWord: return tr("M word");
-    case NcStyle::AxisWord: return tr("Axis word");
-    case NcStyle::FeedSpeedTool: return tr("Feed, speed, tool");
-    case NcStyle::Keyword: return tr("Keyword or cycle");
-    case NcStyle::Number: return tr("Number");
-    case NcStyle::String: return tr("String");
-    case NcStyle::Parameter: return tr("Parameter");
-    case NcStyle::Count: break;
+    case NcStyle::Default:
+        return tr("Default");
+    case NcStyle::Comment:
+        return tr("Comment");
+    case NcStyle::BlockNumber:
+        return tr("Block number");
+    case NcStyle::GWord:
+        return tr("G word");
+    case NcStyle::MWord:
+        return tr("M word");
+    case NcStyle::AxisWord:
+        return tr("Axis word");
+    case NcStyle::FeedSpeedTool:
+        return tr("Feed, speed, tool");
+    case NcStyle::Keyword:
+        return tr("Keyword or cycle");
+    case NcStyle::Number:
+        return tr("Number");
+    case NcStyle::String:
+        return tr("String");
+    case NcStyle::Parameter:
+        return tr("Parameter");
+    case NcStyle::Count:
+        break;
     }
     return {};
 }
@@ -98,17 +126,28 @@ QString SinumerikLexer::description(int style) const
 QColor SinumerikLexer::defaultColor(int style) const
 {
     switch (static_cast<NcStyle>(style)) {
-    case NcStyle::Comment: return QColor(96, 128, 96);
-    case NcStyle::BlockNumber: return QColor(128, 128, 150);
-    case NcStyle::GWord: return QColor(0, 70, 200);
-    case NcStyle::MWord: return QColor(170, 0, 140);
-    case NcStyle::AxisWord: return QColor(150, 40, 20);
-    case NcStyle::FeedSpeedTool: return QColor(190, 100, 0);
-    case NcStyle::Keyword: return QColor(110, 30, 170);
-    case NcStyle::Number: return QColor(0, 120, 120);
-    case NcStyle::String: return QColor(130, 90, 0);
-    case NcStyle::Parameter: return QColor(0, 110, 170);
-    default: return QColor(20, 20, 20);
+    case NcStyle::Comment:
+        return QColor(96, 128, 96);
+    case NcStyle::BlockNumber:
+        return QColor(128, 128, 150);
+    case NcStyle::GWord:
+        return QColor(0, 70, 200);
+    case NcStyle::MWord:
+        return QColor(170, 0, 140);
+    case NcStyle::AxisWord:
+        return QColor(150, 40, 20);
+    case NcStyle::FeedSpeedTool:
+        return QColor(190, 100, 0);
+    case NcStyle::Keyword:
+        return QColor(110, 30, 170);
+    case NcStyle::Number:
+        return QColor(0, 120, 120);
+    case NcStyle::String:
+        return QColor(130, 90, 0);
+    case NcStyle::Parameter:
+        return QColor(0, 110, 170);
+    default:
+        return QColor(20, 20, 20);
     }
 }
 
@@ -116,18 +155,20 @@ QFont SinumerikLexer::defaultFont(int style) const
 {
     QFont font = m_font;
     switch (static_cast<NcStyle>(style)) {
-    case NcStyle::Comment: font.setItalic(true); break;
+    case NcStyle::Comment:
+        font.setItalic(true);
+        break;
     case NcStyle::GWord:
-    case NcStyle::Keyword: font.setBold(true); break;
-    default: break;
+    case NcStyle::Keyword:
+        font.setBold(true);
+        break;
+    default:
+        break;
     }
     return font;
 }
 
-QColor SinumerikLexer::defaultPaper(int) const
-{
-    return Qt::white;
-}
+QColor SinumerikLexer::defaultPaper(int) const { return Qt::white; }
 
 void SinumerikLexer::lex(const char* s, int n, const std::function<void(int, NcStyle)>& emitRun)
 {
@@ -218,11 +259,13 @@ void SinumerikLexer::styleText(int start, int end)
         return;
     // Always restart at a line start: block numbers are recognised only there.
     const long line = sci->SendScintilla(QsciScintillaBase::SCI_LINEFROMPOSITION, static_cast<unsigned long>(start));
-    start = static_cast<int>(sci->SendScintilla(QsciScintillaBase::SCI_POSITIONFROMLINE, static_cast<unsigned long>(line)));
+    start =
+        static_cast<int>(sci->SendScintilla(QsciScintillaBase::SCI_POSITIONFROMLINE, static_cast<unsigned long>(line)));
     QByteArray bytes(end - start + 1, '\0');
     sci->SendScintilla(QsciScintillaBase::SCI_GETTEXTRANGE, start, end, bytes.data());
     startStyling(start);
-    lex(bytes.constData(), end - start, [this](int length, NcStyle style) { setStyling(length, static_cast<int>(style)); });
+    lex(bytes.constData(), end - start,
+        [this](int length, NcStyle style) { setStyling(length, static_cast<int>(style)); });
 }
 
 }  // namespace camwb::gui

@@ -44,38 +44,41 @@ void JobTree::rebuild()
     const document::Job& job = m_workbench.job();
 
     auto* jobItem = new QTreeWidgetItem(this, {tr("Job"), QString::fromStdString(job.name)});
-    auto* model = new QTreeWidgetItem(jobItem, {tr("Model"), job.modelPath.empty()
-                                                                 ? tr("(none)")
-                                                                 : QFileInfo(QString::fromStdString(job.modelPath)).fileName()});
+    auto* model = new QTreeWidgetItem(
+        jobItem, {tr("Model"),
+                  job.modelPath.empty() ? tr("(none)") : QFileInfo(QString::fromStdString(job.modelPath)).fileName()});
     model->setToolTip(1, QString::fromStdString(job.modelPath));
     if (m_workbench.model().hasBRep())
         new QTreeWidgetItem(model, {tr("Faces"), QString::number(m_workbench.model().faceCount())});
 
     const base::Vec3 size = job.stock.max - job.stock.min;
-    auto* stock = new QTreeWidgetItem(jobItem, {tr("Stock"), QStringLiteral("%1 × %2 × %3 mm")
-                                                                 .arg(mm(size.x), mm(size.y), mm(size.z))});
-    new QTreeWidgetItem(stock, {tr("Min"), QStringLiteral("%1, %2, %3").arg(mm(job.stock.min.x), mm(job.stock.min.y),
-                                                                           mm(job.stock.min.z))});
-    new QTreeWidgetItem(stock, {tr("Max"), QStringLiteral("%1, %2, %3").arg(mm(job.stock.max.x), mm(job.stock.max.y),
-                                                                           mm(job.stock.max.z))});
+    auto* stock = new QTreeWidgetItem(
+        jobItem, {tr("Stock"), QStringLiteral("%1 × %2 × %3 mm").arg(mm(size.x), mm(size.y), mm(size.z))});
+    new QTreeWidgetItem(
+        stock,
+        {tr("Min"), QStringLiteral("%1, %2, %3").arg(mm(job.stock.min.x), mm(job.stock.min.y), mm(job.stock.min.z))});
+    new QTreeWidgetItem(
+        stock,
+        {tr("Max"), QStringLiteral("%1, %2, %3").arg(mm(job.stock.max.x), mm(job.stock.max.y), mm(job.stock.max.z))});
     new QTreeWidgetItem(jobItem, {tr("Work offset"), QStringLiteral("G%1").arg(53 + job.workOffset)});
     new QTreeWidgetItem(jobItem, {tr("Post"), QString::fromStdString(job.postId)});
 
     auto* tools = new QTreeWidgetItem(jobItem, {tr("Tools"), QString::number(job.tools.size())});
     for (const ops::ToolController& tc : job.tools)
         new QTreeWidgetItem(tools, {QStringLiteral("T%1").arg(tc.tool.number),
-                                    tr("%1, Ø%2 mm, S%3, F%4").arg(QString::fromStdString(tc.tool.name), mm(tc.tool.diameterMm))
+                                    tr("%1, Ø%2 mm, S%3, F%4")
+                                        .arg(QString::fromStdString(tc.tool.name), mm(tc.tool.diameterMm))
                                         .arg(tc.spindleRpm)
                                         .arg(tc.cuttingFeedMmPerMin)});
 
     auto* operations = new QTreeWidgetItem(jobItem, {tr("Operations"), QString::number(job.operations.size())});
     for (std::size_t i = 0; i < job.operations.size(); ++i) {
         const document::Operation& op = job.operations[i];
-        auto* item = new QTreeWidgetItem(operations, {QString::fromStdString(op.profile.name),
-                                                      tr("profile, face %1, Z%2, T%3")
-                                                          .arg(op.profile.faceIndex)
-                                                          .arg(mm(op.profile.finalDepthZ))
-                                                          .arg(op.toolNumber)});
+        auto* item = new QTreeWidgetItem(operations,
+                                         {QString::fromStdString(op.profile.name), tr("profile, face %1, Z%2, T%3")
+                                                                                       .arg(op.profile.faceIndex)
+                                                                                       .arg(mm(op.profile.finalDepthZ))
+                                                                                       .arg(op.toolNumber)});
         item->setData(0, kOperationRole, static_cast<int>(i));
     }
     expandAll();

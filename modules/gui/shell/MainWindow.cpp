@@ -38,15 +38,15 @@ QDockWidget* addDock(QMainWindow* window, const QString& title, const QString& n
 
 }  // namespace
 
-MainWindow::MainWindow(QWidget* parent)
-    : QMainWindow(parent),
-      m_workbench(new Workbench(this)),
-      m_actions(new ActionRegistry(this)),
-      m_view(new View3D(this)),
-      m_editor(new NcEditor(this)),
-      m_report(new ReportView(this)),
-      m_jobTree(new JobTree(*m_workbench, this)),
-      m_progress(new QProgressBar(this))
+MainWindow::MainWindow(QWidget* parent) :
+    QMainWindow(parent),
+    m_workbench(new Workbench(this)),
+    m_actions(new ActionRegistry(this)),
+    m_view(new View3D(this)),
+    m_editor(new NcEditor(this)),
+    m_report(new ReportView(this)),
+    m_jobTree(new JobTree(*m_workbench, this)),
+    m_progress(new QProgressBar(this))
 {
     setObjectName(QStringLiteral("mainWindow"));
     m_view->setObjectName(QStringLiteral("view3d"));
@@ -118,15 +118,16 @@ void MainWindow::registerActions()
     });
     add({"Cam.File.ImportModel", tr("&Import Model…"), file, QKeySequence(Qt::CTRL | Qt::Key_I), true, true}, [this] {
         const QString path = QFileDialog::getOpenFileName(
-            this, tr("Import model"), {},
-            tr("Models (*.step *.stp *.iges *.igs *.brep *.brp *.stl);;All files (*)"));
+            this, tr("Import model"), {}, tr("Models (*.step *.stp *.iges *.igs *.brep *.brp *.stl);;All files (*)"));
         if (!path.isEmpty())
             m_workbench->importModel(path);
     });
     add({"Cam.File.Quit", tr("&Quit"), file, QKeySequence::Quit, false, true}, [this] { close(); });
 
-    QAction* undo = add({"Cam.Edit.Undo", tr("&Undo"), edit, QKeySequence::Undo, true, true}, [this] { m_workbench->undo(); });
-    QAction* redo = add({"Cam.Edit.Redo", tr("&Redo"), edit, QKeySequence::Redo, true}, [this] { m_workbench->redo(); });
+    QAction* undo =
+        add({"Cam.Edit.Undo", tr("&Undo"), edit, QKeySequence::Undo, true, true}, [this] { m_workbench->undo(); });
+    QAction* redo =
+        add({"Cam.Edit.Redo", tr("&Redo"), edit, QKeySequence::Redo, true}, [this] { m_workbench->redo(); });
     auto updateUndo = [this, undo, redo] {
         auto& stack = m_workbench->document().undoStack();
         undo->setEnabled(stack.canUndo());
@@ -138,15 +139,11 @@ void MainWindow::registerActions()
     updateUndo();
 
     add({"Cam.Op.NewProfile", tr("New &Profile"), operation, QKeySequence(Qt::CTRL | Qt::Key_P), true, true},
-        [this] {
-            m_workbench->addProfileOperation();
-        });
-    add({"Cam.Op.Edit", tr("&Edit Operation…"), operation, QKeySequence(Qt::Key_F2)}, [this] {
-        editOperation(m_jobTree->selectedOperation());
-    });
-    add({"Cam.Op.Delete", tr("&Delete Operation"), operation, QKeySequence::Delete}, [this] {
-        m_workbench->removeOperation(m_jobTree->selectedOperation());
-    });
+        [this] { m_workbench->addProfileOperation(); });
+    add({"Cam.Op.Edit", tr("&Edit Operation…"), operation, QKeySequence(Qt::Key_F2)},
+        [this] { editOperation(m_jobTree->selectedOperation()); });
+    add({"Cam.Op.Delete", tr("&Delete Operation"), operation, QKeySequence::Delete},
+        [this] { m_workbench->removeOperation(m_jobTree->selectedOperation()); });
 
     add({"Cam.Job.Post", tr("&Post"), jobMenu, QKeySequence(Qt::Key_F9), true, true}, [this] { m_workbench->post(); });
     add({"Cam.Job.SaveNc", tr("&Save NC Program…"), jobMenu, QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_S)}, [this] {
@@ -160,7 +157,8 @@ void MainWindow::registerActions()
 
     add({"Cam.View.Isometric", tr("&Isometric"), view, QKeySequence(Qt::Key_0), true, true},
         [this] { m_view->setViewPreset(View3D::Preset::Isometric); });
-    add({"Cam.View.Top", tr("&Top"), view, QKeySequence(Qt::Key_1), true}, [this] { m_view->setViewPreset(View3D::Preset::Top); });
+    add({"Cam.View.Top", tr("&Top"), view, QKeySequence(Qt::Key_1), true},
+        [this] { m_view->setViewPreset(View3D::Preset::Top); });
     add({"Cam.View.Front", tr("&Front"), view, QKeySequence(Qt::Key_2), true},
         [this] { m_view->setViewPreset(View3D::Preset::Front); });
     add({"Cam.View.Right", tr("&Right"), view, QKeySequence(Qt::Key_3), true},
@@ -168,8 +166,9 @@ void MainWindow::registerActions()
     add({"Cam.View.FitAll", tr("Fit &All"), view, QKeySequence(Qt::Key_F), true}, [this] { m_view->fitAll(); });
 
     add({"Cam.Help.About", tr("&About CAM Workbench"), help}, [this] {
-        QMessageBox::about(this, tr("About CAM Workbench"),
-                           tr("CAM Workbench %1\nCAM and post-processor workbench.").arg(QStringLiteral(CAMWB_VERSION)));
+        QMessageBox::about(
+            this, tr("About CAM Workbench"),
+            tr("CAM Workbench %1\nCAM and post-processor workbench.").arg(QStringLiteral(CAMWB_VERSION)));
     });
 }
 
@@ -204,7 +203,8 @@ void MainWindow::updateTitle()
 {
     const QString path = QString::fromStdString(m_workbench->document().path());
     const QString name = path.isEmpty() ? tr("Untitled") : QFileInfo(path).fileName();
-    setWindowTitle(tr("%1%2 — CAM Workbench").arg(name, m_workbench->document().isModified() ? QStringLiteral("*") : QString()));
+    setWindowTitle(
+        tr("%1%2 — CAM Workbench").arg(name, m_workbench->document().isModified() ? QStringLiteral("*") : QString()));
 }
 
 void MainWindow::editOperation(int index)

@@ -26,8 +26,9 @@ QDoubleSpinBox* heightBox(double value, QWidget* parent)
 }  // namespace
 
 ProfileDialog::ProfileDialog(const document::Operation& operation, const document::Job& job, const occ::Model& model,
-                             QWidget* parent)
-    : QDialog(parent), m_operation(operation)
+                             QWidget* parent) :
+    QDialog(parent),
+    m_operation(operation)
 {
     setWindowTitle(tr("Profile: %1").arg(QString::fromStdString(operation.profile.name)));
     auto* form = new QFormLayout(this);
@@ -41,7 +42,8 @@ ProfileDialog::ProfileDialog(const document::Operation& operation, const documen
         const bool horizontal = face.planar && std::abs(std::abs(face.normal.z) - 1.0) < 1e-9;
         if (!horizontal)
             continue;
-        m_face->addItem(tr("Face %1 at Z %2 (%3 mm²)").arg(i).arg(face.planeZ, 0, 'f', 3).arg(face.areaMm2, 0, 'f', 1), i);
+        m_face->addItem(tr("Face %1 at Z %2 (%3 mm²)").arg(i).arg(face.planeZ, 0, 'f', 3).arg(face.areaMm2, 0, 'f', 1),
+                        i);
     }
     m_face->setCurrentIndex(std::max(0, m_face->findData(operation.profile.faceIndex)));
     form->addRow(tr("Boundary of face"), m_face);

@@ -15,9 +15,14 @@ void ReportView::append(Workbench::Severity severity, const QString& text)
 {
     QString prefix;
     switch (severity) {
-    case Workbench::Severity::Warning: prefix = tr("warning: "); break;
-    case Workbench::Severity::Error: prefix = tr("error: "); break;
-    case Workbench::Severity::Info: break;
+    case Workbench::Severity::Warning:
+        prefix = tr("warning: ");
+        break;
+    case Workbench::Severity::Error:
+        prefix = tr("error: ");
+        break;
+    case Workbench::Severity::Info:
+        break;
     }
     appendPlainText(QTime::currentTime().toString(QStringLiteral("HH:mm:ss ")) + prefix + text);
 }

@@ -26,7 +26,11 @@ occ::ProgressFn progressReporter(Workbench* workbench, const QString& what)
     return [target, what](double fraction) {
         const int percent = std::clamp(static_cast<int>(fraction * 100), 0, 100);
         QMetaObject::invokeMethod(
-            target.data(), [target, percent, what] { if (target) emit target->progress(percent, what); },
+            target.data(),
+            [target, percent, what] {
+                if (target)
+                    emit target->progress(percent, what);
+            },
             Qt::QueuedConnection);
         return true;
     };

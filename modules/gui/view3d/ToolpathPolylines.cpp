@@ -26,8 +26,8 @@ Vec3 normalizedOr(Vec3 v, Vec3 fallback)
 
 }  // namespace
 
-ToolpathPolylines::ToolpathPolylines(double chordToleranceMm)
-    : m_chordToleranceMm(chordToleranceMm > 0 ? chordToleranceMm : 0.01)
+ToolpathPolylines::ToolpathPolylines(double chordToleranceMm) :
+    m_chordToleranceMm(chordToleranceMm > 0 ? chordToleranceMm : 0.01)
 {
 }
 
@@ -83,15 +83,9 @@ void ToolpathPolylines::lineTo(const Vec3& to, PathSegmentKind kind)
     m_positionStored = true;
 }
 
-void ToolpathPolylines::rapid(const toolpath::Rapid& r)
-{
-    lineTo(r.to, PathSegmentKind::Rapid);
-}
+void ToolpathPolylines::rapid(const toolpath::Rapid& r) { lineTo(r.to, PathSegmentKind::Rapid); }
 
-void ToolpathPolylines::linear(const toolpath::Linear& l)
-{
-    lineTo(l.to, PathSegmentKind::Feed);
-}
+void ToolpathPolylines::linear(const toolpath::Linear& l) { lineTo(l.to, PathSegmentKind::Feed); }
 
 void ToolpathPolylines::toolAxisMove(const toolpath::ToolAxisMove& m)
 {

@@ -67,7 +67,8 @@ vtkSmartPointer<vtkActor> makeModelActor(const occ::DisplayMesh& mesh)
     for (vtkIdType i = 0; i < vertexCount; ++i)
         points->SetPoint(i, mesh.positions[3 * i], mesh.positions[3 * i + 1], mesh.positions[3 * i + 2]);
     vtkNew<vtkCellArray> triangles;
-    triangles->AllocateExact(static_cast<vtkIdType>(mesh.triangles.size() / 3), static_cast<vtkIdType>(mesh.triangles.size()));
+    triangles->AllocateExact(static_cast<vtkIdType>(mesh.triangles.size() / 3),
+                             static_cast<vtkIdType>(mesh.triangles.size()));
     for (std::size_t t = 0; t + 2 < mesh.triangles.size(); t += 3) {
         const vtkIdType ids[3]{mesh.triangles[t], mesh.triangles[t + 1], mesh.triangles[t + 2]};
         if (ids[0] < vertexCount && ids[1] < vertexCount && ids[2] < vertexCount)
@@ -171,8 +172,8 @@ void View3D::Private::setupScene()
     axes->SetShaftTypeToCylinder();
     axes->SetCylinderRadius(0.04);
     axes->SetConeRadius(0.5);
-    for (vtkCaptionActor2D* caption : {axes->GetXAxisCaptionActor2D(), axes->GetYAxisCaptionActor2D(),
-                                       axes->GetZAxisCaptionActor2D()}) {
+    for (vtkCaptionActor2D* caption :
+         {axes->GetXAxisCaptionActor2D(), axes->GetYAxisCaptionActor2D(), axes->GetZAxisCaptionActor2D()}) {
         caption->GetCaptionTextProperty()->SetFontSize(14);
         caption->GetCaptionTextProperty()->BoldOn();
         caption->GetCaptionTextProperty()->ItalicOff();
@@ -201,9 +202,7 @@ void View3D::Private::syncMarker()
     markerRenderer->ResetCameraClippingRange();
 }
 
-View3D::View3D(QWidget* parent)
-    : QWidget(parent)
-    , d(std::make_unique<Private>())
+View3D::View3D(QWidget* parent) : QWidget(parent), d(std::make_unique<Private>())
 {
     d->setupScene();
     auto* layout = new QVBoxLayout(this);
@@ -235,10 +234,7 @@ View3D::~View3D()
     delete d->gl;
 }
 
-void View3D::setDefaultSurfaceFormat()
-{
-    QSurfaceFormat::setDefaultFormat(VtkOpenGLWidget::vtkSurfaceFormat());
-}
+void View3D::setDefaultSurfaceFormat() { QSurfaceFormat::setDefaultFormat(VtkOpenGLWidget::vtkSurfaceFormat()); }
 
 bool View3D::openGlAvailable(QString* reason)
 {
@@ -292,10 +288,7 @@ bool View3D::openGlAvailable(QString* reason)
     return true;
 }
 
-bool View3D::hasOpenGl() const
-{
-    return d->gl != nullptr;
-}
+bool View3D::hasOpenGl() const { return d->gl != nullptr; }
 
 void View3D::setModel(const occ::DisplayMesh& mesh)
 {
@@ -392,20 +385,11 @@ void View3D::clearToolpath()
     d->render();
 }
 
-bool View3D::hasModelActor() const
-{
-    return d->modelActor != nullptr || d->edgeActor != nullptr;
-}
+bool View3D::hasModelActor() const { return d->modelActor != nullptr || d->edgeActor != nullptr; }
 
-bool View3D::hasToolpathActor() const
-{
-    return d->cutActor != nullptr || d->rapidActor != nullptr;
-}
+bool View3D::hasToolpathActor() const { return d->cutActor != nullptr || d->rapidActor != nullptr; }
 
-int View3D::toolpathSegmentCount() const
-{
-    return d->segmentCount;
-}
+int View3D::toolpathSegmentCount() const { return d->segmentCount; }
 
 void View3D::setViewPreset(Preset preset)
 {

@@ -66,9 +66,7 @@ void onRenderRequest(vtkObject*, unsigned long, void* clientData, void*)
 
 }  // namespace
 
-VtkOpenGLWidget::VtkOpenGLWidget(QWidget* parent)
-    : QOpenGLWidget(parent)
-    , d(std::make_unique<Private>())
+VtkOpenGLWidget::VtkOpenGLWidget(QWidget* parent) : QOpenGLWidget(parent), d(std::make_unique<Private>())
 {
     setFormat(vtkSurfaceFormat());
     setFocusPolicy(Qt::StrongFocus);
@@ -119,10 +117,7 @@ QSurfaceFormat VtkOpenGLWidget::vtkSurfaceFormat()
     return format;
 }
 
-vtkGenericOpenGLRenderWindow* VtkOpenGLWidget::renderWindow() const
-{
-    return d->renderWindow;
-}
+vtkGenericOpenGLRenderWindow* VtkOpenGLWidget::renderWindow() const { return d->renderWindow; }
 
 void VtkOpenGLWidget::initializeGL()
 {
@@ -160,10 +155,7 @@ void VtkOpenGLWidget::syncSize()
     d->renderWindow->SetDPI(qRound(72 * dpr));
 }
 
-void VtkOpenGLWidget::resizeGL(int, int)
-{
-    syncSize();
-}
+void VtkOpenGLWidget::resizeGL(int, int) { syncSize(); }
 
 void VtkOpenGLWidget::paintGL()
 {
@@ -226,10 +218,18 @@ void VtkOpenGLWidget::forwardMouse(QMouseEvent* event, unsigned long vtkEvent)
 void VtkOpenGLWidget::mousePressEvent(QMouseEvent* event)
 {
     switch (event->button()) {
-    case Qt::LeftButton: forwardMouse(event, vtkCommand::LeftButtonPressEvent); break;
-    case Qt::MiddleButton: forwardMouse(event, vtkCommand::MiddleButtonPressEvent); break;
-    case Qt::RightButton: forwardMouse(event, vtkCommand::RightButtonPressEvent); break;
-    default: event->ignore(); return;
+    case Qt::LeftButton:
+        forwardMouse(event, vtkCommand::LeftButtonPressEvent);
+        break;
+    case Qt::MiddleButton:
+        forwardMouse(event, vtkCommand::MiddleButtonPressEvent);
+        break;
+    case Qt::RightButton:
+        forwardMouse(event, vtkCommand::RightButtonPressEvent);
+        break;
+    default:
+        event->ignore();
+        return;
     }
     d->vtkButtons |= event->button();
     event->accept();
@@ -243,10 +243,17 @@ void VtkOpenGLWidget::mouseReleaseEvent(QMouseEvent* event)
     }
     d->vtkButtons &= ~event->button();
     switch (event->button()) {
-    case Qt::LeftButton: forwardMouse(event, vtkCommand::LeftButtonReleaseEvent); break;
-    case Qt::MiddleButton: forwardMouse(event, vtkCommand::MiddleButtonReleaseEvent); break;
-    case Qt::RightButton: forwardMouse(event, vtkCommand::RightButtonReleaseEvent); break;
-    default: break;
+    case Qt::LeftButton:
+        forwardMouse(event, vtkCommand::LeftButtonReleaseEvent);
+        break;
+    case Qt::MiddleButton:
+        forwardMouse(event, vtkCommand::MiddleButtonReleaseEvent);
+        break;
+    case Qt::RightButton:
+        forwardMouse(event, vtkCommand::RightButtonReleaseEvent);
+        break;
+    default:
+        break;
     }
     event->accept();
 }

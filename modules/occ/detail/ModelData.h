@@ -18,10 +18,10 @@ inline constexpr double kZAxisTolerance = 1e-9;
 
 struct ModelData {
     std::string path;
-    TopoDS_Shape shape;                 // null for STL
-    TopTools_IndexedMapOfShape faces;   // TopExp::MapShapes(shape, TopAbs_FACE) order
-    std::vector<FaceInfo> faceInfos;    // [i - 1] describes faces(i)
-    DisplayMesh stlMesh;                // STL only: the file's triangles
+    TopoDS_Shape shape;                // null for STL
+    TopTools_IndexedMapOfShape faces;  // TopExp::MapShapes(shape, TopAbs_FACE) order
+    std::vector<FaceInfo> faceInfos;   // [i - 1] describes faces(i)
+    DisplayMesh stlMesh;               // STL only: the file's triangles
     base::Vec3 boundsMin;
     base::Vec3 boundsMax;
 

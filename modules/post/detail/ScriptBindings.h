@@ -37,8 +37,11 @@ class VariableObject : public QObject {
     Q_OBJECT
 public:
     VariableObject(QJSEngine* engine, std::string prefix, bool force, std::optional<base::NumberFormat> format,
-                   bool acceptsText)
-        : m_engine(engine), m_value(std::move(prefix), force), m_format(format), m_acceptsText(acceptsText)
+                   bool acceptsText) :
+        m_engine(engine),
+        m_value(std::move(prefix), force),
+        m_format(format),
+        m_acceptsText(acceptsText)
     {
     }
 

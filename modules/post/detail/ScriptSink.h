@@ -39,7 +39,7 @@ private:
     QJSValue m_post;
     QJSValue m_trampoline;
     std::map<std::string, QJSValue> m_handlers;
-    std::string m_where;      // record being handled, for error messages
+    std::string m_where;  // record being handled, for error messages
     std::optional<base::Error> m_failure;
     double m_maxArcSweepDeg = 180;
 };

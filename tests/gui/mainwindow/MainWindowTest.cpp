@@ -1,8 +1,8 @@
 // Drives the real main window: opens the example job, posts through the action registry and
 // checks the editor dock, the 3D view and undo. Runs twice: under Xvfb (GL) and offscreen (no GL).
+#include "gui/shell/MainWindow.h"
 #include "gui/actions/ActionRegistry.h"
 #include "gui/editor/NcEditor.h"
-#include "gui/shell/MainWindow.h"
 #include "gui/shell/Workbench.h"
 #include "gui/view3d/View3D.h"
 
@@ -47,9 +47,9 @@ private slots:
     {
         MainWindow window;
         const QStringList ids = window.actions().ids();
-        for (const char* id : {"Cam.File.Open", "Cam.File.Save", "Cam.File.ImportModel", "Cam.Edit.Undo",
-                               "Cam.Op.NewProfile", "Cam.Job.Post", "Cam.Job.SaveNc", "Cam.View.Isometric",
-                               "Cam.View.FitAll"})
+        for (const char* id :
+             {"Cam.File.Open", "Cam.File.Save", "Cam.File.ImportModel", "Cam.Edit.Undo", "Cam.Op.NewProfile",
+              "Cam.Job.Post", "Cam.Job.SaveNc", "Cam.View.Isometric", "Cam.View.FitAll"})
             QVERIFY2(ids.contains(QLatin1String(id)), id);
         QVERIFY(window.menuBar()->actions().size() >= 5);
         QCOMPARE(window.actions().action(QStringLiteral("Cam.Job.Post"))->shortcut(), QKeySequence(Qt::Key_F9));

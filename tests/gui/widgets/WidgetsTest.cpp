@@ -34,7 +34,10 @@ camwb::occ::DisplayMesh boxMesh(Vec3 lo, Vec3 hi)
     camwb::occ::DisplayMesh mesh;
     const Vec3 c[8] = {{lo.x, lo.y, lo.z}, {hi.x, lo.y, lo.z}, {hi.x, hi.y, lo.z}, {lo.x, hi.y, lo.z},
                        {lo.x, lo.y, hi.z}, {hi.x, lo.y, hi.z}, {hi.x, hi.y, hi.z}, {lo.x, hi.y, hi.z}};
-    struct Face { int v[4]; Vec3 n; };
+    struct Face {
+        int v[4];
+        Vec3 n;
+    };
     const Face faces[6] = {{{0, 3, 2, 1}, {0, 0, -1}}, {{4, 5, 6, 7}, {0, 0, 1}}, {{0, 1, 5, 4}, {0, -1, 0}},
                            {{1, 2, 6, 5}, {1, 0, 0}},  {{2, 3, 7, 6}, {0, 1, 0}}, {{3, 0, 4, 7}, {-1, 0, 0}}};
     int faceIndex = 1;
@@ -48,7 +51,8 @@ camwb::occ::DisplayMesh boxMesh(Vec3 lo, Vec3 hi)
         mesh.triangleFace.insert(mesh.triangleFace.end(), {faceIndex, faceIndex});
         ++faceIndex;
     }
-    const int edges[12][2] = {{0, 1}, {1, 2}, {2, 3}, {3, 0}, {4, 5}, {5, 6}, {6, 7}, {7, 4}, {0, 4}, {1, 5}, {2, 6}, {3, 7}};
+    const int edges[12][2] = {{0, 1}, {1, 2}, {2, 3}, {3, 0}, {4, 5}, {5, 6},
+                              {6, 7}, {7, 4}, {0, 4}, {1, 5}, {2, 6}, {3, 7}};
     for (const auto& e : edges)
         mesh.featureEdges.push_back({c[e[0]], c[e[1]]});
     mesh.boundsMin = lo;
@@ -115,17 +119,16 @@ PixelStats analyse(const QImage& image)
     return s;
 }
 
-constexpr const char* kSinumerik =
-    "; CAM Workbench test program\n"
-    "N10 G17 G90 G54\n"
-    "N20 T=\"MILL10\" D1 M6\n"
-    "N30 S8000 M3\n"
-    "N40 G0 X10.5 Y-20 Z5\n"
-    "N50 G1 Z-2 F500 ; plunge\n"
-    "N60 MCALL CYCLE81(10, 0, 2, -5)\n"
-    "N70 R1=5 IF R1>2 GOTOF ENDE\n"
-    "N80 X=IC(5) $P_UIFR[1]\n"
-    "N90 M30\n";
+constexpr const char* kSinumerik = "; CAM Workbench test program\n"
+                                   "N10 G17 G90 G54\n"
+                                   "N20 T=\"MILL10\" D1 M6\n"
+                                   "N30 S8000 M3\n"
+                                   "N40 G0 X10.5 Y-20 Z5\n"
+                                   "N50 G1 Z-2 F500 ; plunge\n"
+                                   "N60 MCALL CYCLE81(10, 0, 2, -5)\n"
+                                   "N70 R1=5 IF R1>2 GOTOF ENDE\n"
+                                   "N80 X=IC(5) $P_UIFR[1]\n"
+                                   "N90 M30\n";
 
 }  // namespace
 
@@ -243,30 +246,30 @@ private slots:
         QCOMPARE(style(1, 20), NcStyle::Comment);
         QCOMPARE(style(2, 1), NcStyle::BlockNumber);
         QCOMPARE(style(2, 3), NcStyle::BlockNumber);
-        QCOMPARE(style(2, 5), NcStyle::GWord);  // G17
-        QCOMPARE(style(3, 5), NcStyle::FeedSpeedTool);  // T=
-        QCOMPARE(style(3, 7), NcStyle::String);  // "MILL10"
+        QCOMPARE(style(2, 5), NcStyle::GWord);           // G17
+        QCOMPARE(style(3, 5), NcStyle::FeedSpeedTool);   // T=
+        QCOMPARE(style(3, 7), NcStyle::String);          // "MILL10"
         QCOMPARE(style(3, 16), NcStyle::FeedSpeedTool);  // D1
-        QCOMPARE(style(3, 19), NcStyle::MWord);  // M6
-        QCOMPARE(style(4, 5), NcStyle::FeedSpeedTool);  // S8000
-        QCOMPARE(style(4, 11), NcStyle::MWord);  // M3
-        QCOMPARE(style(5, 8), NcStyle::AxisWord);  // X10.5
-        QCOMPARE(style(5, 12), NcStyle::AxisWord);  // the 5 of X10.5
-        QCOMPARE(style(5, 15), NcStyle::AxisWord);  // the - of Y-20
-        QCOMPARE(style(6, 5), NcStyle::GWord);  // G1
-        QCOMPARE(style(6, 8), NcStyle::AxisWord);  // Z-2
+        QCOMPARE(style(3, 19), NcStyle::MWord);          // M6
+        QCOMPARE(style(4, 5), NcStyle::FeedSpeedTool);   // S8000
+        QCOMPARE(style(4, 11), NcStyle::MWord);          // M3
+        QCOMPARE(style(5, 8), NcStyle::AxisWord);        // X10.5
+        QCOMPARE(style(5, 12), NcStyle::AxisWord);       // the 5 of X10.5
+        QCOMPARE(style(5, 15), NcStyle::AxisWord);       // the - of Y-20
+        QCOMPARE(style(6, 5), NcStyle::GWord);           // G1
+        QCOMPARE(style(6, 8), NcStyle::AxisWord);        // Z-2
         QCOMPARE(style(6, 12), NcStyle::FeedSpeedTool);  // F500
-        QCOMPARE(style(6, 17), NcStyle::Comment);  // ; plunge
-        QCOMPARE(style(7, 5), NcStyle::Keyword);  // MCALL
-        QCOMPARE(style(7, 11), NcStyle::Keyword);  // CYCLE81
-        QCOMPARE(style(7, 19), NcStyle::Number);  // 10
-        QCOMPARE(style(8, 5), NcStyle::Parameter);  // R1
-        QCOMPARE(style(8, 8), NcStyle::Number);  // 5
-        QCOMPARE(style(8, 10), NcStyle::Keyword);  // IF
-        QCOMPARE(style(8, 19), NcStyle::Keyword);  // GOTOF
-        QCOMPARE(style(9, 7), NcStyle::Keyword);  // IC
-        QCOMPARE(style(9, 14), NcStyle::Parameter);  // $P_UIFR
-        QCOMPARE(style(10, 5), NcStyle::MWord);  // M30
+        QCOMPARE(style(6, 17), NcStyle::Comment);        // ; plunge
+        QCOMPARE(style(7, 5), NcStyle::Keyword);         // MCALL
+        QCOMPARE(style(7, 11), NcStyle::Keyword);        // CYCLE81
+        QCOMPARE(style(7, 19), NcStyle::Number);         // 10
+        QCOMPARE(style(8, 5), NcStyle::Parameter);       // R1
+        QCOMPARE(style(8, 8), NcStyle::Number);          // 5
+        QCOMPARE(style(8, 10), NcStyle::Keyword);        // IF
+        QCOMPARE(style(8, 19), NcStyle::Keyword);        // GOTOF
+        QCOMPARE(style(9, 7), NcStyle::Keyword);         // IC
+        QCOMPARE(style(9, 14), NcStyle::Parameter);      // $P_UIFR
+        QCOMPARE(style(10, 5), NcStyle::MWord);          // M30
         QCOMPARE(editor.styleAt(10, 40), -1);
         QCOMPARE(editor.styleAt(99, 1), -1);
     }
@@ -292,7 +295,8 @@ private slots:
     {
         QString program;
         for (int i = 1; i <= 200000; ++i)
-            program += QStringLiteral("N%1 G1 X%2 Y%3 F1200 ; move\n").arg(i * 10).arg(i * 0.001, 0, 'f', 3).arg(i % 97);
+            program +=
+                QStringLiteral("N%1 G1 X%2 Y%3 F1200 ; move\n").arg(i * 10).arg(i * 0.001, 0, 'f', 3).arg(i % 97);
         NcEditor editor;
         editor.setText(program);
         QCOMPARE(editor.lineCount(), 200001);
@@ -334,9 +338,9 @@ private slots:
         const int area = image.width() * image.height();
         QVERIFY2(s.lumaVariance > 100, qPrintable(QString::number(s.lumaVariance)));
         QVERIFY2(s.grey > area / 50, qPrintable(QStringLiteral("grey %1").arg(s.grey)));  // the shaded box
-        QVERIFY2(s.green > 200, qPrintable(QStringLiteral("green %1").arg(s.green)));      // the helix
-        QVERIFY2(s.blue > 20, qPrintable(QStringLiteral("blue %1").arg(s.blue)));          // feed moves
-        QVERIFY2(s.orange > 20, qPrintable(QStringLiteral("orange %1").arg(s.orange)));    // rapids
+        QVERIFY2(s.green > 200, qPrintable(QStringLiteral("green %1").arg(s.green)));     // the helix
+        QVERIFY2(s.blue > 20, qPrintable(QStringLiteral("blue %1").arg(s.blue)));         // feed moves
+        QVERIFY2(s.orange > 20, qPrintable(QStringLiteral("orange %1").arg(s.orange)));   // rapids
         // Z up: the helix above the box is drawn above it (the image is not upside down).
         QVERIFY(s.greenCentroidY < s.greyCentroidY);
 

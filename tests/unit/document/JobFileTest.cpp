@@ -1,5 +1,5 @@
-#include "base/AtomicFile.h"
 #include "document/JobFile.h"
+#include "base/AtomicFile.h"
 
 #include <gtest/gtest.h>
 
@@ -95,8 +95,9 @@ TEST(JobFile, MissingOrWrongFieldsAreNamed)
 {
     EXPECT_NE(parseError(replaced(validText(), "\"finalDepth\"", "\"finalDepht\"")).message.find("finalDepth"),
               std::string::npos);
-    EXPECT_NE(parseError(replaced(validText(), "\"workOffset\": 2", "\"workOffset\": \"G55\"")).message.find("workOffset"),
-              std::string::npos);
+    EXPECT_NE(
+        parseError(replaced(validText(), "\"workOffset\": 2", "\"workOffset\": \"G55\"")).message.find("workOffset"),
+        std::string::npos);
     EXPECT_NE(parseError(replaced(validText(), "\"type\": \"profile\"", "\"type\": \"knurl\"")).message.find("knurl"),
               std::string::npos);
     EXPECT_NE(parseError(replaced(validText(), "\"tool\": 3", "\"tool\": 4")).message.find("no tool number 4"),

@@ -1,5 +1,5 @@
-#include "document/JobFile.h"
 #include "document/JobPipeline.h"
+#include "document/JobFile.h"
 #include "post/PostRegistry.h"
 
 #include <gtest/gtest.h>
@@ -10,8 +10,7 @@ namespace {
 
 const std::string kExampleJob = std::string(CAMWB_TEST_DATA_DIR) + "/resources/examples/example-block.camwb";
 
-template <class T>
-std::size_t countOf(const toolpath::Toolpath& tp)
+template <class T> std::size_t countOf(const toolpath::Toolpath& tp)
 {
     std::size_t n = 0;
     for (const auto& r : tp.records())

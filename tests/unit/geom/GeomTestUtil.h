@@ -82,4 +82,4 @@ inline std::size_t countArcs(const Profile& p)
         std::count_if(p.segments.begin(), p.segments.end(), [](const Segment& s) { return s.isArc(); }));
 }
 
-} // namespace camwb::geom::test
+}  // namespace camwb::geom::test

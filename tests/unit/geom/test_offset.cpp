@@ -18,10 +18,7 @@ void expectOffsetPointsAtDistance(const Profile& input, const Profile& offset, d
 }
 
 // The L shape: concave corner at (20, 20).
-Profile lShape()
-{
-    return polygon({{0, 0}, {60, 0}, {60, 20}, {20, 20}, {20, 50}, {0, 50}});
-}
+Profile lShape() { return polygon({{0, 0}, {60, 0}, {60, 20}, {20, 20}, {20, 50}, {0, 50}}); }
 
 // 80 x 50 rectangle with a semicircular notch of radius 10 (a concave arc) in its top edge.
 Profile notchedRectangle()
@@ -35,7 +32,7 @@ Profile notchedRectangle()
     return p;
 }
 
-} // namespace
+}  // namespace
 
 TEST(OffsetOutside, RectangleGetsCornerArcsAndSteinerArea)
 {

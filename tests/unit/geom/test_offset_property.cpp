@@ -126,7 +126,7 @@ std::vector<Case> cases()
     return out;
 }
 
-} // namespace
+}  // namespace
 
 TEST(OffsetProperty, AgreesWithClipperAndKeepsDistance)
 {

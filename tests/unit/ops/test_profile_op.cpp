@@ -58,7 +58,7 @@ std::vector<Vec2> samples(Vec2 from, const toolpath::Record& r, int n = 24)
 }
 
 struct Walk {
-    std::vector<Vec2> loopPoints; // every sampled point of the cutting loop
+    std::vector<Vec2> loopPoints;  // every sampled point of the cutting loop
     Vec2 start, end;
     int arcs = 0, cw = 0, ccw = 0;
 };
@@ -96,7 +96,7 @@ Walk walkLoop(const toolpath::Toolpath& tp, const ops::ProfileParams& p, const o
     return w;
 }
 
-} // namespace
+}  // namespace
 
 TEST(ProfileOp, RecordSequenceAsSpecified)
 {
@@ -197,7 +197,7 @@ TEST(ProfileOp, CircularBossIsTwoHalfCircles)
     for (const Vec2& pt : w.loopPoints)
         EXPECT_NEAR(distance(pt, {20, 10}), 20, 1e-9);
     const auto& first = std::get<toolpath::Arc>(tp.record(4));
-    EXPECT_GT(distance(first.to.xy(), w.start), 39.9); // half way round, not back on the start
+    EXPECT_GT(distance(first.to.xy(), w.start), 39.9);  // half way round, not back on the start
 }
 
 TEST(ProfileOp, TraceIsStable)
@@ -247,7 +247,7 @@ TEST(ProfileOp, ValidationErrors)
     expectError(kPlate, params(), tc, "spindle speed");
 
     auto p = params();
-    p.clearanceZ = 1; // below safeZ 2
+    p.clearanceZ = 1;  // below safeZ 2
     expectError(kPlate, p, good, "clearance height");
     p = params();
     p.safeZ = p.finalDepthZ;

@@ -69,7 +69,8 @@ TEST(PostKernel, ContextValuesAndPosition)
 var post = {id: "context"};
 function onOpen() { writeln([programName, user, version, dateString, getCurrentPosition()].join("|")); }
 function onRapid(x, y, z) { var p = getCurrentPosition(); writeln(p ? p.x + "," + p.y + "," + p.z : "none"); }
-)JS", path);
+)JS",
+                                  path);
     ASSERT_TRUE(output.ok()) << output.error().toString();
     EXPECT_EQ(output->text, "PART1|tester|0.1.0|15.05.2018 21:09:46|\nnone\n1,2,3\n");
 }
@@ -94,7 +95,8 @@ TEST(PostKernel, HandlersMayBeMethodsOfPost)
     path.add(Comment{"hello"});
     const auto output = runScript("methods.js", R"JS(
 var post = {id: "methods", onComment: function (text) { writeComment(text + " " + this.id); }};
-)JS", path);
+)JS",
+                                  path);
     ASSERT_TRUE(output.ok()) << output.error().toString();
     EXPECT_EQ(output->text, "N10 ;hello methods\n");
 }
@@ -112,7 +114,8 @@ TEST(PostKernel, WarningNamesFileAndLine)
 
 TEST(PostKernel, SyntaxErrorGivesFileAndLine)
 {
-    const std::string path = writeScript("syntax.js", "var post = {id: 'syntax'};\n\nvar b = (;\nfunction onOpen() {}\n");
+    const std::string path =
+        writeScript("syntax.js", "var post = {id: 'syntax'};\n\nvar b = (;\nfunction onOpen() {}\n");
     const auto post = PostProcessor::load(path);
     ASSERT_FALSE(post.ok());
     EXPECT_EQ(post.error().file, path);

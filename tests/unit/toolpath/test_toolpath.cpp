@@ -36,7 +36,7 @@ public:
     void sectionEnd(const SectionEnd&) override { calls.push_back("sectionEnd"); }
 };
 
-} // namespace
+}  // namespace
 
 TEST(Toolpath, AddKeepsRecordsAndSources)
 {
@@ -51,7 +51,7 @@ TEST(Toolpath, AddKeepsRecordsAndSources)
     EXPECT_EQ(std::get<Linear>(tp.record(1)).feedMmPerMin, 100);
     EXPECT_EQ(tp.source(0).operationIndex, 4);
     EXPECT_EQ(tp.source(0).recordIndex, 0);
-    EXPECT_EQ(tp.source(1).operationIndex, -1); // default: unknown
+    EXPECT_EQ(tp.source(1).operationIndex, -1);  // default: unknown
     EXPECT_EQ(tp.source(1).recordIndex, -1);
     EXPECT_EQ(tp.records().size(), 2u);
 }
@@ -67,7 +67,7 @@ TEST(Toolpath, AppendConcatenatesRecordsAndSources)
     EXPECT_EQ(std::get<Comment>(a.record(2)).text, "b1");
     EXPECT_EQ(a.source(1).operationIndex, 1);
     EXPECT_EQ(a.source(2).recordIndex, 1);
-    EXPECT_EQ(b.size(), 2u); // the appended toolpath is untouched
+    EXPECT_EQ(b.size(), 2u);  // the appended toolpath is untouched
 }
 
 TEST(Toolpath, StatisticsSeparateArcsFromHelices)
@@ -81,9 +81,9 @@ TEST(Toolpath, StatisticsSeparateArcsFromHelices)
     planar.center = {0, 0, 0};
     tp.add(planar);
     Arc helix = planar;
-    helix.to = {0, 10, -2}; // leaves the plane through the centre
+    helix.to = {0, 10, -2};  // leaves the plane through the centre
     tp.add(helix);
-    Arc xzArc; // an arc in the XZ plane is planar in its own plane
+    Arc xzArc;  // an arc in the XZ plane is planar in its own plane
     xzArc.to = {0, 0, 10};
     xzArc.center = {0, 0, 0};
     xzArc.normal = {0, 1, 0};

@@ -14,7 +14,7 @@ std::string traceOne(Record r)
     return traceOf(tp);
 }
 
-} // namespace
+}  // namespace
 
 TEST(TraceWriter, Moves)
 {

@@ -64,6 +64,11 @@ ProfileDialog::ProfileDialog(const document::Operation& operation, const documen
     m_depth = heightBox(operation.profile.finalDepthZ, this);
     m_safe = heightBox(operation.profile.safeZ, this);
     m_clearance = heightBox(operation.profile.clearanceZ, this);
+    m_name->setObjectName(QStringLiteral("nameEdit"));
+    m_face->setObjectName(QStringLiteral("faceCombo"));
+    m_depth->setObjectName(QStringLiteral("finalDepthBox"));
+    m_safe->setObjectName(QStringLiteral("safeHeightBox"));
+    m_clearance->setObjectName(QStringLiteral("clearanceHeightBox"));
     form->addRow(tr("Final depth (Z)"), m_depth);
     form->addRow(tr("Safe height (Z)"), m_safe);
     form->addRow(tr("Clearance height (Z)"), m_clearance);

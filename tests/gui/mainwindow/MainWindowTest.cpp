@@ -3,11 +3,14 @@
 #include "gui/shell/MainWindow.h"
 #include "gui/actions/ActionRegistry.h"
 #include "gui/editor/NcEditor.h"
+#include "gui/shell/ProfileDialog.h"
 #include "gui/shell/Workbench.h"
 #include "gui/view3d/View3D.h"
 
 #include <QAction>
 #include <QApplication>
+#include <QComboBox>
+#include <QDoubleSpinBox>
 #include <QFile>
 #include <QGuiApplication>
 #include <QLabel>
@@ -97,6 +100,35 @@ private slots:
         QSignalSpy posted(&window.workbench(), &Workbench::postFinished);
         if (window.workbench().isBusy())
             QVERIFY(posted.wait(120000));
+    }
+
+    void editedOperationRepostsAndUndoes()
+    {
+        MainWindow window;
+        openExample(window);
+        Workbench& wb = window.workbench();
+        camwb::gui::ProfileDialog dialog(wb.job().operations[0], wb.job(), wb.model(), &window);
+        auto* faces = dialog.findChild<QComboBox*>(QStringLiteral("faceCombo"));
+        QVERIFY(faces);
+        QVERIFY(faces->count() >= 3);  // top, pocket floor, bottom: the horizontal faces only
+        QCOMPARE(faces->currentData().toInt(), wb.job().operations[0].profile.faceIndex);
+        auto* depth = dialog.findChild<QDoubleSpinBox*>(QStringLiteral("finalDepthBox"));
+        QVERIFY(depth);
+        depth->setValue(8.0);
+        if (withGl())
+            dialog.grab().save(QStringLiteral(CAMWB_SCREENSHOT_DIR "/profiledialog.png"));
+
+        QSignalSpy posted(&wb, &Workbench::postFinished);
+        wb.updateOperation(0, dialog.operation());
+        QVERIFY(posted.wait(120000));
+        QVERIFY(window.ncEditor()->text().contains(QLatin1String("G1 Z8.000 F150")));
+        QVERIFY(window.windowTitle().contains(QLatin1Char('*')));
+
+        QVERIFY(window.actions().trigger(QStringLiteral("Cam.Edit.Undo")));
+        QVERIFY(posted.wait(120000));
+        QVERIFY(window.ncEditor()->text().contains(QLatin1String("G1 Z10.000 F150")));
+        QCOMPARE(window.workbench().job().operations[0].profile.finalDepthZ, 10.0);
+        QVERIFY(!window.windowTitle().contains(QLatin1Char('*')));
     }
 
     void badModelImportLeavesJobUnchanged()

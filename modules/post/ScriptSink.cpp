@@ -1,6 +1,7 @@
 #include "post/detail/ScriptSink.h"
 
 #include "post/ArcGeometry.h"
+#include "toolpath/RecordNames.h"
 
 #include <QStringList>
 
@@ -27,61 +28,6 @@ const char* kHandlerNames[] = {"onOpen",       "onSection",    "onToolChange", "
                                "onFeedMode",   "onWorkOffset", "onRapid",      "onLinear",     "onCircular",
                                "onLinear5D",   "onCycle",      "onComment",    "onCutterComp", "onDwell",
                                "onSectionEnd", "onClose"};
-
-const char* coolantName(CoolantMode mode)
-{
-    switch (mode) {
-    case CoolantMode::Off:
-        return "off";
-    case CoolantMode::Flood:
-        return "flood";
-    case CoolantMode::Mist:
-        return "mist";
-    case CoolantMode::ThroughTool:
-        return "throughTool";
-    }
-    return "off";
-}
-
-const char* feedModeName(FeedMode mode)
-{
-    switch (mode) {
-    case FeedMode::PerMinute:
-        return "perMinute";
-    case FeedMode::PerRevolution:
-        return "perRevolution";
-    case FeedMode::InverseTime:
-        return "inverseTime";
-    }
-    return "perMinute";
-}
-
-const char* cycleName(CycleKind kind)
-{
-    switch (kind) {
-    case CycleKind::Drill:
-        return "drill";
-    case CycleKind::DrillDwell:
-        return "drillDwell";
-    case CycleKind::Peck:
-        return "peck";
-    case CycleKind::ChipBreak:
-        return "chipBreak";
-    case CycleKind::Tap:
-        return "tap";
-    case CycleKind::Bore:
-        return "bore";
-    }
-    return "drill";
-}
-
-const char* recordName(const Record& record)
-{
-    static const char* names[] = {"Rapid",        "Linear",         "Arc",        "ToolChange",   "Spindle",
-                                  "Coolant",      "FeedModeChange", "WorkOffset", "Dwell",        "Cycle",
-                                  "ToolAxisMove", "CutterComp",     "Comment",    "SectionBegin", "SectionEnd"};
-    return names[record.index()];
-}
 
 QString qs(const std::string& text) { return QString::fromStdString(text); }
 
@@ -113,8 +59,8 @@ public:
         handle("onToolChange", {tool});
     }
     void spindle(const Spindle& r) override { handle("onSpindle", {r.rpm, r.clockwise}); }
-    void coolant(const Coolant& r) override { handle("onCoolant", {QString(coolantName(r.mode))}); }
-    void feedMode(const FeedModeChange& r) override { handle("onFeedMode", {QString(feedModeName(r.mode))}); }
+    void coolant(const Coolant& r) override { handle("onCoolant", {QString(toolpath::name(r.mode))}); }
+    void feedMode(const FeedModeChange& r) override { handle("onFeedMode", {QString(toolpath::name(r.mode))}); }
     void workOffset(const WorkOffset& r) override { handle("onWorkOffset", {r.index}); }
     void dwell(const Dwell& r) override { handle("onDwell", {r.seconds}); }
     void cycle(const Cycle& r) override;
@@ -124,7 +70,7 @@ public:
     }
     void cutterComp(const CutterComp& r) override
     {
-        const char* side = r.side == CutterCompSide::Left ? "left" : r.side == CutterCompSide::Right ? "right" : "off";
+        const char* side = toolpath::name(r.side);
         handle("onCutterComp", {QString(side)});
     }
     void comment(const Comment& r) override { handle("onComment", {qs(r.text)}); }
@@ -227,7 +173,7 @@ void ScriptSink::arc(const Arc& r)
 void ScriptSink::cycle(const Cycle& r)
 {
     QJSValue cycle = engine().newObject();
-    cycle.setProperty("kind", QString(cycleName(r.kind)));
+    cycle.setProperty("kind", QString(toolpath::name(r.kind)));
     cycle.setProperty("clearanceZ", r.clearanceZ);
     cycle.setProperty("retractZ", r.retractZ);
     cycle.setProperty("topZ", r.topZ);
@@ -366,7 +312,7 @@ base::Result<PostOutput> ScriptRun::play(const Toolpath& toolpath)
     m_where.clear();
     call("onOpen", {}, unused);
     for (std::size_t i = 0; i < toolpath.size() && !m_failure; ++i) {
-        sink.setRecord(i, recordName(toolpath.record(i)));
+        sink.setRecord(i, toolpath::recordName(toolpath.record(i)));
         sink.setSource(toolpath.source(i));
         dispatch(toolpath.record(i), sink);
     }

@@ -1,6 +1,7 @@
 #include "toolpath/TraceWriter.h"
 
 #include "base/NumberFormat.h"
+#include "toolpath/RecordNames.h"
 #include "toolpath/Toolpath.h"
 
 namespace camwb::toolpath {
@@ -9,66 +10,6 @@ namespace {
 
 std::string num(double v) { return base::formatFixed(v, 4); }
 std::string point(const Vec3& p) { return num(p.x) + ' ' + num(p.y) + ' ' + num(p.z); }
-
-const char* compName(CutterCompSide side)
-{
-    switch (side) {
-    case CutterCompSide::Left:
-        return "left";
-    case CutterCompSide::Right:
-        return "right";
-    case CutterCompSide::Off:
-        break;
-    }
-    return "off";
-}
-
-const char* coolantName(CoolantMode mode)
-{
-    switch (mode) {
-    case CoolantMode::Flood:
-        return "flood";
-    case CoolantMode::Mist:
-        return "mist";
-    case CoolantMode::ThroughTool:
-        return "through-tool";
-    case CoolantMode::Off:
-        break;
-    }
-    return "off";
-}
-
-const char* feedModeName(FeedMode mode)
-{
-    switch (mode) {
-    case FeedMode::PerRevolution:
-        return "per-rev";
-    case FeedMode::InverseTime:
-        return "inverse-time";
-    case FeedMode::PerMinute:
-        break;
-    }
-    return "per-min";
-}
-
-const char* cycleName(CycleKind kind)
-{
-    switch (kind) {
-    case CycleKind::DrillDwell:
-        return "drill-dwell";
-    case CycleKind::Peck:
-        return "peck";
-    case CycleKind::ChipBreak:
-        return "chip-break";
-    case CycleKind::Tap:
-        return "tap";
-    case CycleKind::Bore:
-        return "bore";
-    case CycleKind::Drill:
-        break;
-    }
-    return "drill";
-}
 
 }  // namespace
 
@@ -95,14 +36,14 @@ void TraceWriter::spindle(const Spindle& r)
     m_out += "spindle " + num(r.rpm) + (r.clockwise ? " cw" : " ccw") + '\n';
 }
 
-void TraceWriter::coolant(const Coolant& r) { m_out += std::string("coolant ") + coolantName(r.mode) + '\n'; }
-void TraceWriter::feedMode(const FeedModeChange& r) { m_out += std::string("feedmode ") + feedModeName(r.mode) + '\n'; }
+void TraceWriter::coolant(const Coolant& r) { m_out += std::string("coolant ") + name(r.mode) + '\n'; }
+void TraceWriter::feedMode(const FeedModeChange& r) { m_out += std::string("feedmode ") + name(r.mode) + '\n'; }
 void TraceWriter::workOffset(const WorkOffset& r) { m_out += "workoffset " + std::to_string(r.index) + '\n'; }
 void TraceWriter::dwell(const Dwell& r) { m_out += "dwell " + num(r.seconds) + '\n'; }
 
 void TraceWriter::cycle(const Cycle& r)
 {
-    m_out += std::string("cycle ") + cycleName(r.kind) + " clear " + num(r.clearanceZ) + " retract " + num(r.retractZ) +
+    m_out += std::string("cycle ") + name(r.kind) + " clear " + num(r.clearanceZ) + " retract " + num(r.retractZ) +
              " top " + num(r.topZ) + " bottom " + num(r.bottomZ) + " peck " + num(r.peckMm) + " dwell " +
              num(r.dwellSeconds) + " f " + num(r.feedMmPerMin) + " holes " + std::to_string(r.holes.size()) + '\n';
     for (const Vec3& hole : r.holes)
@@ -114,7 +55,7 @@ void TraceWriter::toolAxisMove(const ToolAxisMove& r)
     m_out += "move5 " + point(r.tip) + " axis " + point(r.axis) + " f " + num(r.feedMmPerMin) + '\n';
 }
 
-void TraceWriter::cutterComp(const CutterComp& r) { m_out += std::string("comp ") + compName(r.side) + '\n'; }
+void TraceWriter::cutterComp(const CutterComp& r) { m_out += std::string("comp ") + name(r.side) + '\n'; }
 void TraceWriter::comment(const Comment& r) { m_out += "comment \"" + r.text + "\"\n"; }
 
 void TraceWriter::sectionBegin(const SectionBegin& r)

@@ -59,10 +59,10 @@ TEST(TraceWriter, MachineStateRecords)
     EXPECT_EQ(traceOne(Coolant{CoolantMode::Off}), "coolant off\n");
     EXPECT_EQ(traceOne(Coolant{CoolantMode::Flood}), "coolant flood\n");
     EXPECT_EQ(traceOne(Coolant{CoolantMode::Mist}), "coolant mist\n");
-    EXPECT_EQ(traceOne(Coolant{CoolantMode::ThroughTool}), "coolant through-tool\n");
-    EXPECT_EQ(traceOne(FeedModeChange{FeedMode::PerMinute}), "feedmode per-min\n");
-    EXPECT_EQ(traceOne(FeedModeChange{FeedMode::PerRevolution}), "feedmode per-rev\n");
-    EXPECT_EQ(traceOne(FeedModeChange{FeedMode::InverseTime}), "feedmode inverse-time\n");
+    EXPECT_EQ(traceOne(Coolant{CoolantMode::ThroughTool}), "coolant throughTool\n");
+    EXPECT_EQ(traceOne(FeedModeChange{FeedMode::PerMinute}), "feedmode perMinute\n");
+    EXPECT_EQ(traceOne(FeedModeChange{FeedMode::PerRevolution}), "feedmode perRevolution\n");
+    EXPECT_EQ(traceOne(FeedModeChange{FeedMode::InverseTime}), "feedmode inverseTime\n");
     EXPECT_EQ(traceOne(WorkOffset{2}), "workoffset 2\n");
     EXPECT_EQ(traceOne(Dwell{1.5}), "dwell 1.5000\n");
     EXPECT_EQ(traceOne(CutterComp{CutterCompSide::Left}), "comp left\n");
@@ -89,8 +89,8 @@ TEST(TraceWriter, CycleListsItsHoles)
               "  hole 10.0000 10.0000 0.0000\n"
               "  hole 20.0000 0.0000 0.0000\n");
     const std::pair<CycleKind, const char*> names[] = {{CycleKind::Drill, "drill"},
-                                                       {CycleKind::DrillDwell, "drill-dwell"},
-                                                       {CycleKind::ChipBreak, "chip-break"},
+                                                       {CycleKind::DrillDwell, "drillDwell"},
+                                                       {CycleKind::ChipBreak, "chipBreak"},
                                                        {CycleKind::Tap, "tap"},
                                                        {CycleKind::Bore, "bore"}};
     for (const auto& [kind, name] : names) {

@@ -1,0 +1,15 @@
+// One spelling for the names of CL records and their enums, shared by the text trace, the post
+// scripts' arguments and messages, so a name means the same thing everywhere.
+#pragma once
+
+#include "toolpath/ClRecords.h"
+
+namespace camwb::toolpath {
+
+const char* name(CutterCompSide side);         // "off", "left", "right"
+const char* name(CoolantMode mode);            // "off", "flood", "mist", "throughTool"
+const char* name(FeedMode mode);               // "perMinute", "perRevolution", "inverseTime"
+const char* name(CycleKind kind);              // "drill", "drillDwell", "peck", "chipBreak", "tap", "bore"
+const char* recordName(const Record& record);  // the record's type name: "Rapid", "Arc", ...
+
+}  // namespace camwb::toolpath

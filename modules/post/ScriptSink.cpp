@@ -24,10 +24,10 @@ var writeBlock = (function (kernel) {
 })
 )JS";
 
-const char* kHandlerNames[] = {"onOpen",       "onSection",    "onToolChange", "onSpindle",    "onCoolant",
-                               "onFeedMode",   "onWorkOffset", "onRapid",      "onLinear",     "onCircular",
-                               "onLinear5D",   "onCycle",      "onComment",    "onCutterComp", "onDwell",
-                               "onSectionEnd", "onClose"};
+const char* kHandlerNames[] = {"onOpen",       "onSection",    "onToolChange",  "onSpindle",    "onCoolant",
+                               "onFeedMode",   "onWorkOffset", "onRapid",       "onLinear",     "onCircular",
+                               "onLinear5D",   "onCycle",      "onComment",     "onCutterComp", "onDwell",
+                               "onSectionEnd", "onStop",       "onPassThrough", "onClose"};
 
 QString qs(const std::string& text) { return QString::fromStdString(text); }
 
@@ -91,6 +91,8 @@ public:
         handle("onSection", {section});
     }
     void sectionEnd(const SectionEnd&) override { handle("onSectionEnd", {}); }
+    void programStop(const ProgramStop& r) override { handle("onStop", {r.optional}); }
+    void passThrough(const PassThrough& r) override { handle("onPassThrough", {qs(r.text)}); }
     void setSource(const SourceRef& source) override
     {
         m_operation = source.operationIndex;

@@ -58,6 +58,8 @@ struct Spindle {
 struct Coolant {
     CoolantMode mode = CoolantMode::Off;
 };
+// Until the next change, the feed of Linear/Arc/Cycle records is in this mode's unit: mm/min,
+// mm/rev (PerRevolution) or 1/min (InverseTime: the move takes 1/feed minutes).
 struct FeedModeChange {
     FeedMode mode = FeedMode::PerMinute;
 };
@@ -79,6 +81,7 @@ struct Cycle {
     double dwellSeconds = 0;
     double feedMmPerMin = 0;
     std::vector<Vec3> holes;
+    bool returnToClearance = true;  // after each hole: up to clearanceZ (G98 style), else retractZ (G99)
 };
 
 // Five-axis move: tool tip and unit tool vector (from tip towards spindle). feed 0 = rapid.
@@ -92,6 +95,14 @@ struct CutterComp {
     CutterCompSide side = CutterCompSide::Off;
 };
 struct Comment {
+    std::string text;
+};
+// Program stop: M0, or M1 when optional (the operator's optional-stop switch decides).
+struct ProgramStop {
+    bool optional = false;
+};
+// NC text the post writes as it is (APT INSERT): the CL author answers for what it does.
+struct PassThrough {
     std::string text;
 };
 
@@ -112,7 +123,7 @@ struct SectionBegin {
 struct SectionEnd {};
 
 using Record = std::variant<Rapid, Linear, Arc, ToolChange, Spindle, Coolant, FeedModeChange, WorkOffset, Dwell, Cycle,
-                            ToolAxisMove, CutterComp, Comment, SectionBegin, SectionEnd>;
+                            ToolAxisMove, CutterComp, Comment, SectionBegin, SectionEnd, ProgramStop, PassThrough>;
 
 // Where a record came from, so the GUI can link it back to its operation. -1 = unknown.
 struct SourceRef {

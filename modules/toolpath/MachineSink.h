@@ -30,6 +30,8 @@ public:
     virtual void comment(const Comment&) = 0;
     virtual void sectionBegin(const SectionBegin&) = 0;
     virtual void sectionEnd(const SectionEnd&) = 0;
+    virtual void programStop(const ProgramStop&) = 0;
+    virtual void passThrough(const PassThrough&) = 0;
 
     // Called before each record with its source, for sinks that link output back to operations.
     virtual void setSource(const SourceRef&) {}

@@ -67,8 +67,9 @@ const char* name(CycleKind kind)
 const char* recordName(const Record& record)
 {
     static constexpr const char* names[] = {
-        "Rapid", "Linear", "Arc",          "ToolChange", "Spindle", "Coolant",      "FeedModeChange", "WorkOffset",
-        "Dwell", "Cycle",  "ToolAxisMove", "CutterComp", "Comment", "SectionBegin", "SectionEnd"};
+        "Rapid",          "Linear",       "Arc",        "ToolChange",  "Spindle",      "Coolant",
+        "FeedModeChange", "WorkOffset",   "Dwell",      "Cycle",       "ToolAxisMove", "CutterComp",
+        "Comment",        "SectionBegin", "SectionEnd", "ProgramStop", "PassThrough"};
     static_assert(std::size(names) == std::variant_size_v<Record>, "a name for every CL record");
     return names[record.index()];
 }

@@ -73,6 +73,10 @@ void dispatch(const Record& record, MachineSink& sink)
                 sink.sectionBegin(r);
             else if constexpr (std::is_same_v<T, SectionEnd>)
                 sink.sectionEnd(r);
+            else if constexpr (std::is_same_v<T, ProgramStop>)
+                sink.programStop(r);
+            else if constexpr (std::is_same_v<T, PassThrough>)
+                sink.passThrough(r);
             else
                 static_assert(sizeof(T) == 0, "every CL record needs a sink method");
         },

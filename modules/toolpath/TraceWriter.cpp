@@ -45,7 +45,9 @@ void TraceWriter::cycle(const Cycle& r)
 {
     m_out += std::string("cycle ") + name(r.kind) + " clear " + num(r.clearanceZ) + " retract " + num(r.retractZ) +
              " top " + num(r.topZ) + " bottom " + num(r.bottomZ) + " peck " + num(r.peckMm) + " dwell " +
-             num(r.dwellSeconds) + " f " + num(r.feedMmPerMin) + " holes " + std::to_string(r.holes.size()) + '\n';
+             num(r.dwellSeconds) + " f " + num(r.feedMmPerMin) +
+             (r.returnToClearance ? " return clear" : " return retract") + " holes " + std::to_string(r.holes.size()) +
+             '\n';
     for (const Vec3& hole : r.holes)
         m_out += "  hole " + point(hole) + '\n';
 }
@@ -65,6 +67,8 @@ void TraceWriter::sectionBegin(const SectionBegin& r)
 }
 
 void TraceWriter::sectionEnd(const SectionEnd&) { m_out += "endsection\n"; }
+void TraceWriter::programStop(const ProgramStop& r) { m_out += r.optional ? "stop optional\n" : "stop\n"; }
+void TraceWriter::passThrough(const PassThrough& r) { m_out += "passthrough \"" + r.text + "\"\n"; }
 
 std::string traceOf(const Toolpath& toolpath)
 {

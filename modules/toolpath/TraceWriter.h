@@ -27,6 +27,8 @@ public:
     void comment(const Comment&) override;
     void sectionBegin(const SectionBegin&) override;
     void sectionEnd(const SectionEnd&) override;
+    void programStop(const ProgramStop&) override;
+    void passThrough(const PassThrough&) override;
 
 private:
     std::string& m_out;

@@ -62,6 +62,8 @@ public:
     void comment(const toolpath::Comment&) override {}
     void sectionBegin(const toolpath::SectionBegin&) override {}
     void sectionEnd(const toolpath::SectionEnd&) override {}
+    void programStop(const toolpath::ProgramStop&) override {}
+    void passThrough(const toolpath::PassThrough&) override {}
 
 private:
     void lineTo(const base::Vec3& to, PathSegmentKind kind);

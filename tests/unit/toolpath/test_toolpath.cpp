@@ -34,6 +34,8 @@ public:
     void comment(const Comment&) override { calls.push_back("comment"); }
     void sectionBegin(const SectionBegin&) override { calls.push_back("sectionBegin"); }
     void sectionEnd(const SectionEnd&) override { calls.push_back("sectionEnd"); }
+    void programStop(const ProgramStop&) override { calls.push_back("programStop"); }
+    void passThrough(const PassThrough&) override { calls.push_back("passThrough"); }
 };
 
 }  // namespace
@@ -121,14 +123,16 @@ TEST(Toolpath, PlayDispatchesEveryKindInOrder)
     add(Cycle{});
     add(ToolAxisMove{});
     add(Comment{});
+    add(ProgramStop{});
+    add(PassThrough{});
     add(SectionEnd{});
 
     RecordingSink sink;
     play(tp, sink);
-    const std::vector<std::string> expected{"begin",      "sectionBegin", "toolChange", "spindle",      "coolant",
-                                            "feedMode",   "workOffset",   "cutterComp", "rapid",        "linear",
-                                            "arc",        "dwell",        "cycle",      "toolAxisMove", "comment",
-                                            "sectionEnd", "end"};
+    const std::vector<std::string> expected{"begin",       "sectionBegin", "toolChange", "spindle",      "coolant",
+                                            "feedMode",    "workOffset",   "cutterComp", "rapid",        "linear",
+                                            "arc",         "dwell",        "cycle",      "toolAxisMove", "comment",
+                                            "programStop", "passThrough",  "sectionEnd", "end"};
     EXPECT_EQ(sink.calls, expected);
     ASSERT_EQ(sink.sources.size(), tp.size());
     for (std::size_t k = 0; k < sink.sources.size(); ++k) {

@@ -85,9 +85,12 @@ TEST(TraceWriter, CycleListsItsHoles)
     c.holes = {{10, 10, 0}, {20, -0.0, 0}};
     EXPECT_EQ(traceOne(c),
               "cycle peck clear 20.0000 retract 2.0000 top 0.0000 bottom -15.0000 peck 3.0000 dwell 0.2500 "
-              "f 120.0000 holes 2\n"
+              "f 120.0000 return clear holes 2\n"
               "  hole 10.0000 10.0000 0.0000\n"
               "  hole 20.0000 0.0000 0.0000\n");
+    c.returnToClearance = false;
+    c.holes.clear();
+    EXPECT_NE(traceOne(c).find(" return retract holes 0\n"), std::string::npos);
     const std::pair<CycleKind, const char*> names[] = {{CycleKind::Drill, "drill"},
                                                        {CycleKind::DrillDwell, "drillDwell"},
                                                        {CycleKind::ChipBreak, "chipBreak"},
@@ -110,6 +113,13 @@ TEST(TraceWriter, Sections)
     s.feeds.plungeMmPerMin = 300;
     EXPECT_EQ(traceOne(s), "section \"Contour 1\" profile tool 4 cut 1200.0000 plunge 300.0000\n");
     EXPECT_EQ(traceOne(SectionEnd{}), "endsection\n");
+}
+
+TEST(TraceWriter, StopsAndPassThrough)
+{
+    EXPECT_EQ(traceOne(ProgramStop{}), "stop\n");
+    EXPECT_EQ(traceOne(ProgramStop{true}), "stop optional\n");
+    EXPECT_EQ(traceOne(PassThrough{"M110"}), "passthrough \"M110\"\n");
 }
 
 TEST(TraceWriter, WholeToolpathIsOneLinePerRecord)

@@ -1,7 +1,8 @@
 // Locale-independent formatting of numbers for NC, traces and files: fixed decimals with
-// "-0" normalised to "0", optional trimming of trailing zeros and optional forced sign.
+// "-0" normalised to "0", optional trimming of trailing zeros, forced sign and scaling (mm -> inch).
 #pragma once
 
+#include <cstddef>
 #include <string>
 
 namespace camwb::base {
@@ -12,8 +13,15 @@ struct NumberFormat {
     bool keepDecimalPoint = false;   // with trimming: keep the point on whole numbers ("2.")
     bool forceSign = false;          // "+1.000"
     bool leadingZero = true;         // "0.5" vs ".5"
+    double scale = 1.0;              // the value is multiplied by this before formatting
+
+    // Buffer size for formatTo(): the longest text (sign, 309 integer digits, point, 12 decimals)
+    // plus room to spare.
+    static constexpr std::size_t kBufferSize = 344;
 
     std::string format(double value) const;
+    // The same text into `out` (kBufferSize bytes) without allocating; returns its length.
+    std::size_t formatTo(double value, char* out) const;
 };
 
 // Fixed decimals, rounded (never truncated) from the binary value as printf does:

@@ -1,8 +1,7 @@
 #include "document/JobFile.h"
 
 #include "base/AtomicFile.h"
-
-#include <nlohmann/json.hpp>
+#include "base/JsonRead.h"
 
 #include <filesystem>
 
@@ -13,53 +12,7 @@ using nlohmann::json;
 
 namespace {
 
-// Thrown inside this file only, turned into a base::Error at the API boundary.
-struct FormatError {
-    std::string message;
-};
-
-const json& member(const json& object, const char* key, const std::string& where)
-{
-    if (!object.is_object())
-        throw FormatError{where + ": expected an object"};
-    auto it = object.find(key);
-    if (it == object.end())
-        throw FormatError{where + ": missing \"" + key + "\""};
-    return *it;
-}
-
-double number(const json& object, const char* key, const std::string& where)
-{
-    const json& value = member(object, key, where);
-    if (!value.is_number())
-        throw FormatError{where + "." + key + ": expected a number"};
-    return value.get<double>();
-}
-
-int integer(const json& object, const char* key, const std::string& where)
-{
-    const json& value = member(object, key, where);
-    if (!value.is_number_integer())
-        throw FormatError{where + "." + key + ": expected an integer"};
-    return value.get<int>();
-}
-
-std::string text(const json& object, const char* key, const std::string& where)
-{
-    const json& value = member(object, key, where);
-    if (!value.is_string())
-        throw FormatError{where + "." + key + ": expected a string"};
-    return value.get<std::string>();
-}
-
-base::Vec3 vec3(const json& object, const char* key, const std::string& where)
-{
-    const json& value = member(object, key, where);
-    if (!value.is_array() || value.size() != 3 || !value[0].is_number() || !value[1].is_number() ||
-        !value[2].is_number())
-        throw FormatError{where + "." + key + ": expected [x, y, z]"};
-    return {value[0].get<double>(), value[1].get<double>(), value[2].get<double>()};
-}
+using namespace base::jsonread;
 
 ops::ToolController readTool(const json& t, const std::string& where)
 {
@@ -83,7 +36,7 @@ Operation readOperation(const json& o, const std::string& where)
     Operation op;
     op.type = text(o, "type", where);
     if (op.type != "profile")
-        throw FormatError{where + ".type: unknown operation type \"" + op.type + "\""};
+        throw JsonFieldError{where + ".type: unknown operation type \"" + op.type + "\""};
     op.toolNumber = integer(o, "tool", where);
     ops::ProfileParams& p = op.profile;
     p.name = text(o, "name", where);
@@ -93,7 +46,7 @@ Operation readOperation(const json& o, const std::string& where)
     p.clearanceZ = number(o, "clearanceHeight", where);
     const std::string direction = text(o, "direction", where);
     if (direction != "climb" && direction != "conventional")
-        throw FormatError{where + ".direction: expected \"climb\" or \"conventional\""};
+        throw JsonFieldError{where + ".direction: expected \"climb\" or \"conventional\""};
     p.climb = direction == "climb";
     return op;
 }
@@ -102,14 +55,14 @@ Job readJob(const json& root)
 {
     const std::string where = "job";
     if (text(root, "format", where) != "camwb-job")
-        throw FormatError{"not a CAM Workbench job (format is not \"camwb-job\")"};
+        throw JsonFieldError{"not a CAM Workbench job (format is not \"camwb-job\")"};
     const int version = integer(root, "version", where);
     if (version > kJobFormatVersion)
-        throw FormatError{"job format version " + std::to_string(version) +
-                          " is newer than this CAM Workbench understands (" + std::to_string(kJobFormatVersion) +
-                          "); update CAM Workbench"};
+        throw JsonFieldError{"job format version " + std::to_string(version) +
+                             " is newer than this CAM Workbench understands (" + std::to_string(kJobFormatVersion) +
+                             "); update CAM Workbench"};
     if (version < 1)
-        throw FormatError{"job format version " + std::to_string(version) + " is not valid"};
+        throw JsonFieldError{"job format version " + std::to_string(version) + " is not valid"};
 
     Job job;
     job.name = text(root, "name", where);
@@ -119,61 +72,53 @@ Job readJob(const json& root)
     job.stock.max = vec3(stock, "max", where + ".stock");
     job.workOffset = integer(root, "workOffset", where);
     if (job.workOffset < 1 || job.workOffset > 99)
-        throw FormatError{where + ".workOffset: expected 1..99"};
+        throw JsonFieldError{where + ".workOffset: expected 1..99"};
     job.postId = text(root, "post", where);
+    if (optionalMember(root, "machine", where))
+        job.machineId = text(root, "machine", where);
+    if (const Json* properties = optionalMember(root, "postProperties", where)) {
+        if (!properties->is_object())
+            throw JsonFieldError{where + ".postProperties: expected an object"};
+        for (const auto& [name, value] : properties->items()) {
+            // Kept as text: the post's declaration decides the type when the job is posted.
+            if (value.is_string())
+                job.postProperties[name] = value.get<std::string>();
+            else if (value.is_boolean() || value.is_number())
+                job.postProperties[name] = value.dump();
+            else
+                throw JsonFieldError{where + ".postProperties." + name + ": expected a string, number or bool"};
+        }
+    }
 
     const json& tools = member(root, "tools", where);
     if (!tools.is_array())
-        throw FormatError{where + ".tools: expected an array"};
+        throw JsonFieldError{where + ".tools: expected an array"};
     for (std::size_t i = 0; i < tools.size(); ++i)
         job.tools.push_back(readTool(tools[i], where + ".tools[" + std::to_string(i) + "]"));
 
     const json& operations = member(root, "operations", where);
     if (!operations.is_array())
-        throw FormatError{where + ".operations: expected an array"};
+        throw JsonFieldError{where + ".operations: expected an array"};
     for (std::size_t i = 0; i < operations.size(); ++i) {
         const std::string at = where + ".operations[" + std::to_string(i) + "]";
         Operation op = readOperation(operations[i], at);
         if (!job.tool(op.toolNumber))
-            throw FormatError{at + ".tool: no tool number " + std::to_string(op.toolNumber) + " in the job"};
+            throw JsonFieldError{at + ".tool: no tool number " + std::to_string(op.toolNumber) + " in the job"};
         job.operations.push_back(std::move(op));
     }
     return job;
-}
-
-// nlohmann reports a byte offset; people want a line and column.
-void lineAndColumn(const std::string& text, std::size_t offset, int& line, int& column)
-{
-    line = 1;
-    column = 1;
-    for (std::size_t i = 0; i < offset && i < text.size(); ++i) {
-        if (text[i] == '\n') {
-            ++line;
-            column = 1;
-        } else {
-            ++column;
-        }
-    }
 }
 
 }  // namespace
 
 base::Result<Job> parseJob(const std::string& content, const std::string& path)
 {
-    json root;
+    auto root = parse(content, path);
+    if (!root)
+        return root.error();
     try {
-        root = json::parse(content);
-    } catch (const json::parse_error& e) {
-        int line = 0, column = 0;
-        lineAndColumn(content, e.byte > 0 ? e.byte - 1 : 0, line, column);
-        std::string reason = e.what();
-        if (auto pos = reason.find("syntax error"); pos != std::string::npos)
-            reason = reason.substr(pos);
-        return base::makeError("malformed JSON: " + reason, path, line, column);
-    }
-    try {
-        return readJob(root);
-    } catch (const FormatError& e) {
+        return readJob(root.value());
+    } catch (const JsonFieldError& e) {
         return base::makeError(e.message, path);
     }
 }
@@ -195,13 +140,17 @@ std::string serializeJob(const Job& job)
     using ojson = nlohmann::ordered_json;
     ojson root;
     root["format"] = "camwb-job";
-    root["version"] = kJobFormatVersion;
+    root["version"] = job.machineId.empty() && job.postProperties.empty() ? 1 : kJobFormatVersion;
     root["name"] = job.name;
     root["model"] = job.modelPath;
     root["stock"] = {{"min", {job.stock.min.x, job.stock.min.y, job.stock.min.z}},
                      {"max", {job.stock.max.x, job.stock.max.y, job.stock.max.z}}};
     root["workOffset"] = job.workOffset;
     root["post"] = job.postId;
+    if (!job.machineId.empty())
+        root["machine"] = job.machineId;
+    if (!job.postProperties.empty())
+        root["postProperties"] = job.postProperties;
     root["tools"] = ojson::array();
     for (const ops::ToolController& tc : job.tools) {
         root["tools"].push_back({{"number", tc.tool.number},

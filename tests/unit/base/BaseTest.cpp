@@ -4,6 +4,9 @@
 
 #include <gtest/gtest.h>
 
+#include <charconv>
+#include <cmath>
+#include <cstdint>
 #include <filesystem>
 
 #include <unistd.h>
@@ -27,6 +30,39 @@ TEST(NumberFormat, FixedDecimalsRoundNotTruncate)
     EXPECT_EQ(formatFixed(12.5, 3), "12.500");
 }
 
+TEST(NumberFormat, FastPathWritesWhatToCharsWrites)
+{
+    // formatFixed takes a shortcut for most values; std::to_chars is the reference it must match,
+    // ties and near-ties included (they go the slow way).
+    std::uint64_t state = 88172645463325252ull;  // xorshift: the same values every run
+    auto next = [&state] {
+        state ^= state << 13;
+        state ^= state >> 7;
+        state ^= state << 17;
+        return state;
+    };
+    char reference[400];
+    for (int i = 0; i < 200000; ++i) {
+        const int decimals = static_cast<int>(next() % 7);
+        double value = static_cast<double>(static_cast<std::int64_t>(next() % 2000000001) - 1000000000) /
+                       std::pow(10.0, static_cast<double>(next() % 9));
+        if (i % 4 == 0)  // exact ties at this precision: 0.5 ulp of the last digit
+            value = (std::floor(value * std::pow(10.0, decimals)) + 0.5) / std::pow(10.0, decimals);
+        auto [end, ec] =
+            std::to_chars(reference, reference + sizeof reference, value, std::chars_format::fixed, decimals);
+        std::string expected(reference, end);
+        if (expected[0] == '-' && expected.find_first_not_of("0.", 1) == std::string::npos)
+            expected.erase(0, 1);
+        ASSERT_EQ(formatFixed(value, decimals), expected) << value << " at " << decimals << " decimals";
+    }
+    EXPECT_EQ(formatFixed(1e15, 3), "1000000000000000.000");  // beyond the shortcut's range
+    EXPECT_EQ(formatFixed(0.0005, 3), "0.001");               // 0.0005 is a little above the tie
+    EXPECT_EQ(formatFixed(2.675, 2), "2.67");                 // 2.675 is a little below it
+    EXPECT_EQ(formatFixed(-0.0004, 3), "0.000");
+    EXPECT_EQ(formatFixed(0, 0), "0");
+    EXPECT_EQ(formatFixed(-7, 0), "-7");
+}
+
 TEST(NumberFormat, NegativeZeroIsNeverWritten)
 {
     EXPECT_EQ(formatFixed(-0.0, 3), "0.000");
@@ -43,6 +79,29 @@ TEST(NumberFormat, TrimSignAndLeadingZero)
     EXPECT_EQ((NumberFormat{3, false, false, true}.format(2.0)), "+2.000");
     EXPECT_EQ((NumberFormat{3, false, false, false, false}.format(0.5)), ".500");
     EXPECT_EQ((NumberFormat{3, false, false, false, false}.format(-0.5)), "-.500");
+    EXPECT_EQ((NumberFormat{3, true, false, true, false}.format(0.5)), "+.5");
+    EXPECT_EQ((NumberFormat{3, true, false, true}.format(-0.0004)), "+0");
+}
+
+TEST(NumberFormat, ScaleAppliesBeforeRounding)
+{
+    NumberFormat inch{4};
+    inch.scale = 1 / 25.4;
+    EXPECT_EQ(inch.format(25.4), "1.0000");
+    EXPECT_EQ(inch.format(-0.001), "0.0000");  // -0.00004 inch rounds to a zero that carries no sign
+    NumberFormat rpm{0};
+    rpm.scale = 60;
+    EXPECT_EQ(rpm.format(3.3333), "200");
+}
+
+TEST(NumberFormat, LongestNumbersFitTheBuffer)
+{
+    NumberFormat widest{12, false, false, true};
+    char buffer[NumberFormat::kBufferSize];
+    const std::string text(buffer, widest.formatTo(-1.7976931348623157e308, buffer));
+    EXPECT_EQ(text.size(), 323u);  // '-', 309 digits, '.', 12 decimals
+    EXPECT_EQ(text.substr(0, 8), "-1797693");
+    EXPECT_EQ(widest.format(1.7976931348623157e308).substr(0, 8), "+1797693");
 }
 
 class AtomicFileTest : public ::testing::Test {

@@ -1,0 +1,44 @@
+#include "base/DataDirs.h"
+
+#include "camwb_version.h"
+
+#include <algorithm>
+#include <cstdlib>
+#include <filesystem>
+#include <system_error>
+
+namespace camwb::base {
+
+namespace fs = std::filesystem;
+
+std::vector<DataDir> dataDirs(const char* envVariable, const std::string& kind, const std::string& sourceSubdir)
+{
+    std::vector<DataDir> dirs;
+    if (const char* value = std::getenv(envVariable)) {
+        const std::string list(value);
+        for (std::size_t start = 0; start <= list.size();) {
+            const std::size_t colon = std::min(list.find(':', start), list.size());
+            if (colon > start)
+                dirs.push_back({list.substr(start, colon - start), false});
+            start = colon + 1;
+        }
+    }
+    if (const char* home = std::getenv("HOME"); home && *home)
+        dirs.push_back({(fs::path(home) / ".local/share/camwb" / kind).string(), false});
+    std::error_code ec;
+    const fs::path exe = fs::read_symlink("/proc/self/exe", ec);
+    if (!ec)
+        dirs.push_back({(exe.parent_path().parent_path() / "share/camwb" / kind).lexically_normal().string(), true});
+    dirs.push_back({std::string(CAMWB_SOURCE_DIR) + "/" + sourceSubdir, true});
+    return dirs;
+}
+
+std::vector<std::string> dataDirPaths(const char* envVariable, const std::string& kind, const std::string& sourceSubdir)
+{
+    std::vector<std::string> paths;
+    for (DataDir& dir : dataDirs(envVariable, kind, sourceSubdir))
+        paths.push_back(std::move(dir.path));
+    return paths;
+}
+
+}  // namespace camwb::base

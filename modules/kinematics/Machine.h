@@ -1,0 +1,49 @@
+// A machine definition (resources/machines/<id>.json): what posts and the simulator need to know
+// about a machine tool: its control, axes with travel, spindle range, tool changer, feed limits
+// and coolants. Jobs and `camwb-cli post --machine` pick one by id.
+#pragma once
+
+#include "base/Result.h"
+
+#include <string>
+#include <vector>
+
+namespace camwb::kinematics {
+
+struct Axis {
+    std::string name;  // "X", "Y", "Z", "A", "B", "C"
+    bool rotary = false;
+    double min = 0;  // mm or degrees
+    double max = 0;
+};
+
+struct Machine {
+    std::string id;
+    std::string name;
+    std::string control;  // "sinumerik-828d", "heidenhain-itnc530", "linuxcnc", ...
+    std::vector<Axis> axes;
+    double spindleMinRpm = 0;
+    double spindleMaxRpm = 0;           // 0: not limited
+    int toolStations = 0;               // 0: not limited
+    double maxToolDiameterMm = 0;       // 0: not limited
+    double maxToolLengthMm = 0;         // 0: not limited
+    double maxCuttingFeedMmPerMin = 0;  // 0: not limited
+    double rapidMmPerMin = 0;           // 0: unknown
+    std::vector<std::string> coolants;  // "flood", "mist", "throughTool": what the machine has
+    std::string filePath;
+
+    const Axis* axis(const std::string& axisName) const;
+    bool hasCoolant(const std::string& mode) const;
+};
+
+inline constexpr int kMachineFormatVersion = 1;
+
+base::Result<Machine> parseMachine(const std::string& json, const std::string& pathForMessages);
+base::Result<Machine> loadMachine(const std::string& path);
+
+// $CAMWB_MACHINE_PATH entries, ~/.local/share/camwb/machines, the installed share/camwb/machines
+// and the source tree's resources/machines, in that order; "<dir>/<id>.json", first match wins.
+std::vector<std::string> defaultMachineDirs();
+base::Result<Machine> findMachine(const std::string& id, const std::vector<std::string>& dirs);
+
+}  // namespace camwb::kinematics

@@ -1,0 +1,150 @@
+#include "base/AtomicFile.h"
+#include "base/DataDirs.h"
+#include "base/JsonRead.h"
+#include "kinematics/Machine.h"
+
+#include <algorithm>
+#include <filesystem>
+#include <system_error>
+
+namespace camwb::kinematics {
+
+namespace fs = std::filesystem;
+using namespace base::jsonread;
+
+namespace {
+
+double optionalNumber(const Json& object, const char* key, const std::string& where, double fallback)
+{
+    return optionalMember(object, key, where) ? number(object, key, where) : fallback;
+}
+
+Axis readAxis(const Json& a, const std::string& where)
+{
+    Axis axis;
+    axis.name = text(a, "name", where);
+    const std::string type = text(a, "type", where);
+    if (type != "linear" && type != "rotary")
+        throw JsonFieldError{where + ".type: expected \"linear\" or \"rotary\""};
+    axis.rotary = type == "rotary";
+    axis.min = number(a, "min", where);
+    axis.max = number(a, "max", where);
+    if (axis.min > axis.max)
+        throw JsonFieldError{where + ": min is above max"};
+    return axis;
+}
+
+Machine readMachine(const Json& root)
+{
+    const std::string where = "machine";
+    if (text(root, "format", where) != "camwb-machine")
+        throw JsonFieldError{"not a CAM Workbench machine (format is not \"camwb-machine\")"};
+    const int version = integer(root, "version", where);
+    if (version > kMachineFormatVersion || version < 1)
+        throw JsonFieldError{"machine format version " + std::to_string(version) + " is not supported (this is " +
+                             std::to_string(kMachineFormatVersion) + ")"};
+    Machine m;
+    m.id = text(root, "id", where);
+    m.name = text(root, "name", where);
+    m.control = text(root, "control", where);
+    const Json& axes = member(root, "axes", where);
+    if (!axes.is_array())
+        throw JsonFieldError{where + ".axes: expected an array"};
+    for (std::size_t i = 0; i < axes.size(); ++i) {
+        Axis axis = readAxis(axes[i], where + ".axes[" + std::to_string(i) + "]");
+        if (m.axis(axis.name))
+            throw JsonFieldError{where + ".axes: axis " + axis.name + " twice"};
+        m.axes.push_back(std::move(axis));
+    }
+    if (const Json* spindle = optionalMember(root, "spindle", where)) {
+        m.spindleMinRpm = optionalNumber(*spindle, "minRpm", where + ".spindle", 0);
+        m.spindleMaxRpm = optionalNumber(*spindle, "maxRpm", where + ".spindle", 0);
+    }
+    if (const Json* changer = optionalMember(root, "toolChanger", where)) {
+        const std::string at = where + ".toolChanger";
+        m.toolStations = optionalMember(*changer, "stations", at) ? integer(*changer, "stations", at) : 0;
+        m.maxToolDiameterMm = optionalNumber(*changer, "maxToolDiameter", at, 0);
+        m.maxToolLengthMm = optionalNumber(*changer, "maxToolLength", at, 0);
+    }
+    if (const Json* feed = optionalMember(root, "feed", where)) {
+        m.maxCuttingFeedMmPerMin = optionalNumber(*feed, "maxCutting", where + ".feed", 0);
+        m.rapidMmPerMin = optionalNumber(*feed, "rapid", where + ".feed", 0);
+    }
+    if (const Json* coolants = optionalMember(root, "coolants", where)) {
+        for (const Json& c : *coolants) {
+            if (!c.is_string())
+                throw JsonFieldError{where + ".coolants: expected strings"};
+            const std::string mode = c.get<std::string>();
+            if (mode != "flood" && mode != "mist" && mode != "throughTool")
+                throw JsonFieldError{where + ".coolants: unknown coolant \"" + mode + "\" (flood, mist, throughTool)"};
+            m.coolants.push_back(mode);
+        }
+    }
+    return m;
+}
+
+}  // namespace
+
+const Axis* Machine::axis(const std::string& axisName) const
+{
+    for (const Axis& a : axes)
+        if (a.name == axisName)
+            return &a;
+    return nullptr;
+}
+
+bool Machine::hasCoolant(const std::string& mode) const
+{
+    return std::find(coolants.begin(), coolants.end(), mode) != coolants.end();
+}
+
+base::Result<Machine> parseMachine(const std::string& json, const std::string& path)
+{
+    auto root = parse(json, path);
+    if (!root)
+        return root.error();
+    try {
+        Machine machine = readMachine(root.value());
+        machine.filePath = path;
+        return machine;
+    } catch (const JsonFieldError& e) {
+        return base::makeError(e.message, path);
+    }
+}
+
+base::Result<Machine> loadMachine(const std::string& path)
+{
+    auto content = base::readTextFile(path);
+    if (!content)
+        return content.error();
+    return parseMachine(content.value(), path);
+}
+
+std::vector<std::string> defaultMachineDirs()
+{
+    return base::dataDirPaths("CAMWB_MACHINE_PATH", "machines", "resources/machines");
+}
+
+base::Result<Machine> findMachine(const std::string& id, const std::vector<std::string>& dirs)
+{
+    if (id.empty() || id.find('/') != std::string::npos || id.find("..") != std::string::npos)
+        return base::makeError("invalid machine id '" + id + "'");
+    std::string looked;
+    for (const std::string& dir : dirs) {
+        const fs::path candidate = fs::path(dir) / (id + ".json");
+        std::error_code ec;
+        if (!fs::is_regular_file(candidate, ec)) {
+            looked += "\n  " + candidate.string();
+            continue;
+        }
+        auto machine = loadMachine(candidate.string());
+        if (machine && machine->id != id)
+            return base::makeError("machine file says id \"" + machine->id + "\"; the file name is the id (" + id +
+                                       ".json)",
+                                   candidate.string());
+        return machine;
+    }
+    return base::makeError("machine '" + id + "' not found; looked in:" + (looked.empty() ? " (nowhere)" : looked));
+}
+
+}  // namespace camwb::kinematics

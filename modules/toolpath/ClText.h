@@ -1,0 +1,58 @@
+// Text plumbing shared by the CL importers: physical lines (no byte order mark, no CR), text
+// joined from pieces of several lines that still knows the line and column of every character,
+// and locale-independent numbers (std::from_chars, never an exception).
+#pragma once
+
+#include <cstddef>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace camwb::toolpath {
+
+// 1-based line and column; columns count bytes, a tab is one column.
+struct TextPos {
+    int line = 0;
+    int column = 0;
+};
+
+// The physical lines of `text`. A leading UTF-8 byte order mark is dropped so that columns on
+// line 1 match what an editor shows; lines end at LF, a CR before it is dropped.
+std::vector<std::string_view> splitLines(std::string_view text);
+
+// Text assembled from pieces of source lines (a statement continued over several lines).
+class PositionedText {
+public:
+    // Appends `piece`, whose first character sits at `line`:`firstColumn`.
+    void append(std::string_view piece, int line, int firstColumn);
+    // One blank standing for a line break, so that pieces never glue two tokens together.
+    void appendBreak();
+
+    const std::string& text() const { return m_text; }
+    bool empty() const { return m_text.empty(); }
+    std::size_t size() const { return m_text.size(); }
+    // Position of character `index`; index == size() gives the place just after the last one.
+    TextPos position(std::size_t index) const;
+    // The characters [begin, end) with their positions.
+    PositionedText slice(std::size_t begin, std::size_t end) const;
+
+private:
+    std::string m_text;
+    std::vector<TextPos> m_positions;
+};
+
+// A whole token as a finite number: [+|-]digits[.digits][(e|E)[+|-]digits], also "5." and ".5".
+// Anything else (two points, letters, inf, nan, overflow) gives nullopt.
+std::optional<double> parseNumber(std::string_view token);
+
+std::string_view trim(std::string_view text);
+std::string_view trimRight(std::string_view text);
+std::string toUpper(std::string_view text);
+bool equalsNoCase(std::string_view a, std::string_view b);
+bool startsWithNoCase(std::string_view text, std::string_view prefix);
+
+// A length or angle for messages: up to 4 decimals, trailing zeros trimmed ("21", "0.0125").
+std::string formatForMessage(double value);
+
+}  // namespace camwb::toolpath

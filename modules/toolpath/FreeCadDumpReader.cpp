@@ -1,0 +1,448 @@
+#include "toolpath/FreeCadDumpReader.h"
+
+#include "toolpath/ClArcs.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace camwb::toolpath {
+
+namespace {
+
+constexpr double kSecondsPerMinute = 60;  // FreeCAD feeds are mm/s
+
+// "G81" -> {'G', 81}; nullopt for names that are not a letter and a whole number.
+std::optional<std::pair<char, int>> splitName(const std::string& name)
+{
+    if (name.size() < 2)
+        return std::nullopt;
+    const char letter = toUpper(name.substr(0, 1))[0];
+    const auto number = parseNumber(std::string_view(name).substr(1));
+    if (!number || *number < 0 || *number > 999 || *number != std::floor(*number))
+        return std::nullopt;
+    return std::pair<char, int>{letter, static_cast<int>(*number)};
+}
+
+// Commands whose X, Y and Z are positions of the tool (for completing the first move).
+bool isPositioning(const DumpEntry& e)
+{
+    const auto name = splitName(e.name);
+    if (!name || name->first != 'G')
+        return false;
+    const int code = name->second;
+    return code <= 3 || code == 73 || (code >= 81 && code <= 85);
+}
+
+bool sameParameters(const Cycle& a, const Cycle& b)
+{
+    return a.kind == b.kind && a.clearanceZ == b.clearanceZ && a.retractZ == b.retractZ && a.topZ == b.topZ &&
+           a.bottomZ == b.bottomZ && a.peckMm == b.peckMm && a.dwellSeconds == b.dwellSeconds &&
+           a.feedMmPerMin == b.feedMmPerMin && a.returnToClearance == b.returnToClearance;
+}
+
+}  // namespace
+
+base::Result<ClImport> readFreeCadDump(std::string_view text, const std::string& fileName)
+{
+    return FreeCadDumpReader(text, fileName).read();
+}
+
+FreeCadDumpReader::FreeCadDumpReader(std::string_view text, std::string fileName) :
+    m_out(std::move(fileName)),
+    m_lines(splitLines(text))
+{
+}
+
+base::Result<ClImport> FreeCadDumpReader::read()
+{
+    auto entries = scanFreeCadDump(m_lines, m_out);
+    if (!entries)
+        return entries.error();
+    m_entries = std::move(entries).value();
+    for (std::size_t i = 0; i < m_entries.size(); ++i) {
+        if (auto status = entry(i); !status)
+            return status.error();
+    }
+    flushCycleRun();
+    const int lastLine = static_cast<int>(m_lines.size());
+    if (m_cycleMode)
+        m_out.warn("canned cycle still active at the end of the dump (no G80)", lastLine);
+    return m_out.finish(lastLine);
+}
+
+void FreeCadDumpReader::emit(Record record, int line)
+{
+    flushCycleRun();
+    m_out.add(std::move(record), line);
+}
+
+void FreeCadDumpReader::flushCycleRun()
+{
+    if (!m_run)
+        return;
+    m_out.add(std::move(m_run->cycle), m_run->line);
+    m_run.reset();
+}
+
+void FreeCadDumpReader::warnNoFeed(int line)
+{
+    if (!m_feedSet && !m_warnedNoFeed) {
+        m_out.warn("feed motion before any F: its feed is 0", line);
+        m_warnedNoFeed = true;
+    }
+}
+
+base::Status FreeCadDumpReader::entry(std::size_t index)
+{
+    const DumpEntry& e = m_entries[index];
+    if (e.kind == DumpEntry::Kind::Note) {
+        if (e.name.rfind("Path:", 0) == 0) {
+            // Each path object of the job starts afresh: no cycle mode carries over.
+            flushCycleRun();
+            m_cycleMode = false;
+            m_cycleZ = m_cycleR = m_cycleQ = m_cycleP = std::nullopt;
+            SectionBegin section;
+            section.operationName = std::string(trim(std::string_view(e.name).substr(5)));
+            m_out.beginSection(std::move(section), e.line);
+        } else {
+            emit(Comment{e.name}, e.line);
+        }
+        return {};
+    }
+    if (e.name.empty()) {
+        m_out.warn("Command without a name ignored", e.namePos);
+        return {};
+    }
+    if (e.name.front() == '(') {
+        emit(Comment{std::string(trim(std::string_view(e.name).substr(1, e.name.size() - 2)))}, e.line);
+        return {};
+    }
+    const auto name = splitName(e.name);
+    if (name && name->first == 'G')
+        return gCode(index, name->second);
+    if (name && name->first == 'M')
+        return mCode(index, name->second);
+    m_out.warn("unknown command " + e.name + " ignored", e.namePos);
+    return {};
+}
+
+base::Status FreeCadDumpReader::gCode(std::size_t index, int code)
+{
+    const DumpEntry& e = m_entries[index];
+    switch (code) {
+    case 0:
+    case 1:
+        return move(index, code == 0);
+    case 2:
+    case 3:
+        return arc(index, code == 2);
+    case 4: {
+        const DumpParameter* p = e.find('P');
+        if (!p || p->value < 0)
+            return m_out.error("G4 needs P (the dwell in seconds, >= 0)", p ? p->pos : e.namePos);
+        emit(Dwell{p->value}, e.line);
+        return {};
+    }
+    case 17:
+        m_planeNormal = {0, 0, 1};
+        return {};
+    case 18:
+        m_planeNormal = {0, 1, 0};
+        return {};
+    case 19:
+        m_planeNormal = {1, 0, 0};
+        return {};
+    case 20:
+        return m_out.error("inch units (G20) are not supported in a FreeCAD dump: FreeCAD paths are in mm", e.namePos);
+    case 21:
+    case 90:
+        return {};
+    case 91:
+        return m_out.error("incremental CL (G91) is not supported", e.namePos);
+    case 40:
+        emit(CutterComp{CutterCompSide::Off}, e.line);
+        return {};
+    case 41:
+        emit(CutterComp{CutterCompSide::Left}, e.line);
+        return {};
+    case 42:
+        emit(CutterComp{CutterCompSide::Right}, e.line);
+        return {};
+    case 73:
+        return hole(index, CycleKind::ChipBreak);
+    case 80:
+        flushCycleRun();
+        m_cycleMode = false;
+        m_cycleZ = m_cycleR = m_cycleQ = m_cycleP = std::nullopt;
+        return {};
+    case 81:
+        return hole(index, CycleKind::Drill);
+    case 82:
+        return hole(index, CycleKind::DrillDwell);
+    case 83:
+        return hole(index, CycleKind::Peck);
+    case 84:
+        return hole(index, CycleKind::Tap);
+    case 85:
+        return hole(index, CycleKind::Bore);
+    case 98:
+    case 99:
+        m_returnToClearance = code == 98;
+        return {};
+    default:
+        if (code >= 54 && code <= 59) {
+            emit(WorkOffset{code - 53}, e.line);
+            return {};
+        }
+        m_out.warn("unknown command " + e.name + " ignored", e.namePos);
+        return {};
+    }
+}
+
+base::Status FreeCadDumpReader::mCode(std::size_t index, int code)
+{
+    const DumpEntry& e = m_entries[index];
+    switch (code) {
+    case 0:
+    case 1:
+        emit(ProgramStop{code == 1}, e.line);
+        return {};
+    case 2:
+    case 30:
+        return {};
+    case 3:
+    case 4: {
+        if (const DumpParameter* s = e.find('S')) {
+            if (s->value < 0)
+                return m_out.error("negative spindle speed", s->pos);
+            m_spindle.rpm = s->value;
+            m_spindleSet = true;
+        } else if (!m_spindleSet) {
+            return m_out.error(e.name + " without S and no speed before it", e.namePos);
+        }
+        m_spindle.clockwise = code == 3;
+        emit(m_spindle, e.line);
+        return {};
+    }
+    case 5:
+        emit(Spindle{0, m_spindle.clockwise}, e.line);
+        return {};
+    case 6: {
+        const DumpParameter* t = e.find('T');
+        if (!t || t->value < 0 || t->value != std::floor(t->value) || t->value > 1e9)
+            return m_out.error("M6 needs T (a whole tool number >= 0)", t ? t->pos : e.namePos);
+        Tool tool;
+        tool.number = static_cast<int>(t->value);
+        emit(ToolChange{tool}, e.line);
+        return {};
+    }
+    case 7:
+        emit(Coolant{CoolantMode::Mist}, e.line);
+        return {};
+    case 8:
+        emit(Coolant{CoolantMode::Flood}, e.line);
+        return {};
+    case 9:
+        emit(Coolant{CoolantMode::Off}, e.line);
+        return {};
+    default:
+        m_out.warn("unknown command " + e.name + " ignored", e.namePos);
+        return {};
+    }
+}
+
+base::Status FreeCadDumpReader::noRotaryAxes(const DumpEntry& e) const
+{
+    for (const char key : {'A', 'B', 'C'}) {
+        if (const DumpParameter* p = e.find(key))
+            return m_out.error(
+                std::string("rotary axis ") + key + " is not supported (it needs the machine's kinematics)", p->pos);
+    }
+    return {};
+}
+
+std::optional<double> FreeCadDumpReader::feedOf(const DumpEntry& e)
+{
+    const DumpParameter* f = e.find('F');
+    if (!f)
+        return std::nullopt;
+    m_feed = f->value * kSecondsPerMinute;
+    m_feedSet = true;
+    return m_feed;
+}
+
+Vec3 FreeCadDumpReader::target(std::size_t index)
+{
+    const DumpEntry& e = m_entries[index];
+    double xyz[3] = {0, 0, 0};
+    for (int axis = 0; axis < 3; ++axis) {
+        const char key = static_cast<char>('X' + axis);
+        if (const DumpParameter* p = e.find(key)) {
+            xyz[axis] = p->value;
+        } else if (m_position[axis]) {
+            xyz[axis] = *m_position[axis];
+        } else {
+            const DumpParameter* later = nullptr;
+            int laterLine = 0;
+            for (std::size_t j = index + 1; j < m_entries.size() && !later; ++j) {
+                if (m_entries[j].kind == DumpEntry::Kind::Command && isPositioning(m_entries[j])) {
+                    later = m_entries[j].find(key);
+                    laterLine = m_entries[j].line;
+                }
+            }
+            if (later) {
+                xyz[axis] = later->value;
+                m_out.warn(std::string(1, key) + " is not known before this move: taken from line " +
+                               std::to_string(laterLine) + " (" + key + formatForMessage(later->value) + ")",
+                           e.namePos);
+            } else {
+                m_out.warn(std::string(1, key) + " is never given: 0 is assumed", e.namePos);
+            }
+        }
+    }
+    return {xyz[0], xyz[1], xyz[2]};
+}
+
+base::Status FreeCadDumpReader::move(std::size_t index, bool rapid)
+{
+    const DumpEntry& e = m_entries[index];
+    if (auto status = noRotaryAxes(e); !status)
+        return status;
+    if (!rapid)
+        feedOf(e);
+    m_cycleMode = false;
+    if (!e.find('X') && !e.find('Y') && !e.find('Z')) {
+        if (rapid)
+            m_out.warn("G0 without X, Y or Z ignored", e.namePos);
+        return {};
+    }
+    const Vec3 to = target(index);
+    if (rapid) {
+        emit(Rapid{to}, e.line);
+    } else {
+        warnNoFeed(e.line);
+        emit(Linear{to, m_feed}, e.line);
+    }
+    m_position = {to.x, to.y, to.z};
+    return {};
+}
+
+base::Status FreeCadDumpReader::arc(std::size_t index, bool clockwise)
+{
+    const DumpEntry& e = m_entries[index];
+    if (auto status = noRotaryAxes(e); !status)
+        return status;
+    if (const DumpParameter* r = e.find('R'))
+        return m_out.error("arcs with R are not supported (FreeCAD writes I, J, K)", r->pos);
+    if (!m_position[0] || !m_position[1] || !m_position[2])
+        return m_out.error("arc from an unknown position (no move with X, Y and Z before it)", e.namePos);
+    m_cycleMode = false;
+    const Vec3 start{*m_position[0], *m_position[1], *m_position[2]};
+    feedOf(e);
+    warnNoFeed(e.line);
+    const Vec3 to = target(index);
+    auto value = [&](char key) {
+        const DumpParameter* p = e.find(key);
+        return p ? p->value : 0.0;
+    };
+    Vec3 offset{value('I'), value('J'), value('K')};
+    offset = offset - m_planeNormal * offset.dot(m_planeNormal);
+    if (offset.length() < 1e-12)
+        return m_out.error("arc without a centre: I, J, K are 0 in the arc's plane", e.namePos);
+    int turns = 0;
+    if (const DumpParameter* p = e.find('P')) {
+        if (p->value < 1 || p->value != std::floor(p->value) || p->value > 1e6)
+            return m_out.error("P (turns) must be a whole number >= 1", p->pos);
+        turns = static_cast<int>(p->value) - 1;
+    }
+    const Arc a = makeArc(start, to, start + offset, m_planeNormal, !clockwise, turns, m_feed);
+    // The dumper rounds to 5 significant digits: allow for that at the size of the coordinates.
+    const double magnitude = std::max(
+        {std::abs(start.x), std::abs(start.y), std::abs(start.z), std::abs(to.x), std::abs(to.y), std::abs(to.z)});
+    for (const std::string& problem : arcRadiusProblems(start, a, std::nullopt, 0.01 + 1e-4 * magnitude))
+        m_out.warn(problem, e.line);
+    emit(a, e.line);
+    m_position = {to.x, to.y, to.z};
+    return {};
+}
+
+base::Status FreeCadDumpReader::hole(std::size_t index, CycleKind kind)
+{
+    const DumpEntry& e = m_entries[index];
+    if (auto status = noRotaryAxes(e); !status)
+        return status;
+    feedOf(e);
+    warnNoFeed(e.line);
+    double xy[2] = {0, 0};
+    for (int axis = 0; axis < 2; ++axis) {
+        const DumpParameter* p = e.find(static_cast<char>('X' + axis));
+        if (!p && !m_position[axis])
+            return m_out.error(e.name + std::string(" needs ") + static_cast<char>('X' + axis) +
+                                   " (no position before it)",
+                               e.namePos);
+        xy[axis] = p ? p->value : *m_position[axis];
+    }
+    // Z, R, Q and P are modal within the cycle mode, as on the controls FreeCAD writes for.
+    auto modal = [&](char key, std::optional<double>& slot, bool required, const char* what) -> base::Status {
+        if (const DumpParameter* p = e.find(key))
+            slot = p->value;
+        if (required && !slot)
+            return m_out.error(e.name + " needs " + key + " (" + what + ")", e.namePos);
+        return {};
+    };
+    const bool pecks = kind == CycleKind::Peck || kind == CycleKind::ChipBreak;
+    if (auto s = modal('Z', m_cycleZ, true, "the hole bottom"); !s)
+        return s;
+    if (auto s = modal('R', m_cycleR, true, "the R plane"); !s)
+        return s;
+    if (auto s = modal('Q', m_cycleQ, pecks, "the peck depth"); !s)
+        return s;
+    if (auto s = modal('P', m_cycleP, kind == CycleKind::DrillDwell, "the dwell in seconds"); !s)
+        return s;
+    if (pecks && !(*m_cycleQ > 0))
+        return m_out.error(e.name + ": Q must be > 0", e.find('Q') ? e.find('Q')->pos : e.namePos);
+    if (kind == CycleKind::DrillDwell && *m_cycleP < 0)
+        return m_out.error(e.name + ": P must be >= 0", e.find('P') ? e.find('P')->pos : e.namePos);
+    if (kind != CycleKind::DrillDwell && e.find('P'))
+        m_out.warn("P ignored on " + e.name, e.find('P')->pos);
+
+    Cycle c;
+    c.kind = kind;
+    c.retractZ = *m_cycleR;
+    c.topZ = *m_cycleR;
+    c.bottomZ = *m_cycleZ;
+    c.peckMm = pecks ? *m_cycleQ : 0;
+    c.dwellSeconds = kind == CycleKind::DrillDwell ? *m_cycleP : 0;
+    c.feedMmPerMin = m_feed;
+    c.returnToClearance = m_returnToClearance;
+    const Vec3 hole{xy[0], xy[1], c.topZ};
+    bool extends = false;
+    if (m_run) {
+        // The previous hole left the tool at its return plane; the run keeps its first clearance.
+        c.clearanceZ = m_run->cycle.clearanceZ;
+        extends = sameParameters(m_run->cycle, c);
+    }
+    if (extends) {
+        m_run->cycle.holes.push_back(hole);
+    } else {
+        flushCycleRun();
+        if (m_position[2]) {
+            c.clearanceZ = *m_position[2];
+        } else {
+            m_out.warn("no Z before the cycle: its clearance plane is taken as the R plane", e.namePos);
+            c.clearanceZ = c.retractZ;
+        }
+        if (c.returnToClearance && c.clearanceZ < c.retractZ)
+            m_out.warn("the cycle's clearance plane Z" + formatForMessage(c.clearanceZ) + " is below its R plane Z" +
+                           formatForMessage(c.retractZ),
+                       e.line);
+        c.holes = {hole};
+        m_run = CycleRun{c, e.line};
+    }
+    m_cycleMode = true;
+    const Cycle& run = m_run->cycle;
+    m_position = {hole.x, hole.y, run.returnToClearance ? std::max(run.clearanceZ, run.retractZ) : run.retractZ};
+    return {};
+}
+
+}  // namespace camwb::toolpath

@@ -1,0 +1,60 @@
+// Helpers shared by the CL importer tests: import text in either format, the Error it must give,
+// and warnings and source references as compact text to compare whole.
+#pragma once
+
+#include "toolpath/ClImport.h"
+#include "toolpath/TraceWriter.h"
+
+#include <gtest/gtest.h>
+
+#include <string>
+#include <string_view>
+
+namespace camwb::toolpath::test {
+
+inline std::string clDataPath(const std::string& name)
+{
+    return std::string(CAMWB_TEST_DATA_DIR) + "/tests/data/cl/" + name;
+}
+
+inline base::Result<ClImport> readAs(ClFormat format, std::string_view text)
+{
+    return format == ClFormat::Apt ? readAptSource(text, "t.apt") : readFreeCadDump(text, "t.dump");
+}
+
+// The import of `text`; a failed import fails the test.
+inline ClImport importAs(ClFormat format, std::string_view text)
+{
+    auto result = readAs(format, text);
+    EXPECT_TRUE(result.ok()) << result.error().toString();
+    return result.ok() ? std::move(result).value() : ClImport{};
+}
+
+// The Error that importing `text` gives; an import that succeeds fails the test.
+inline base::Error failureAs(ClFormat format, std::string_view text)
+{
+    auto result = readAs(format, text);
+    EXPECT_FALSE(result.ok()) << "imported:\n" << (result.ok() ? traceOf(result->toolpath) : "");
+    return result.ok() ? base::Error{} : result.error();
+}
+
+// "file:line:column: message" per warning, one a line.
+inline std::string warningsText(const ClImport& imported)
+{
+    std::string out;
+    for (const base::Error& w : imported.warnings)
+        out += w.toString() + '\n';
+    return out;
+}
+
+// "operationIndex:recordIndex " per record.
+inline std::string sourcesText(const Toolpath& toolpath)
+{
+    std::string out;
+    for (std::size_t i = 0; i < toolpath.size(); ++i)
+        out += std::to_string(toolpath.source(i).operationIndex) + ':' +
+               std::to_string(toolpath.source(i).recordIndex) + ' ';
+    return out;
+}
+
+}  // namespace camwb::toolpath::test

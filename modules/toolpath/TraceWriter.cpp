@@ -11,6 +11,18 @@ namespace {
 std::string num(double v) { return base::formatFixed(v, 4); }
 std::string point(const Vec3& p) { return num(p.x) + ' ' + num(p.y) + ' ' + num(p.z); }
 
+// A text in quotes, with '"' and '\\' escaped, so that any name or comment reads back unchanged.
+std::string quoted(const std::string& text)
+{
+    std::string out = "\"";
+    for (char c : text) {
+        if (c == '"' || c == '\\')
+            out += '\\';
+        out += c;
+    }
+    return out + '"';
+}
+
 }  // namespace
 
 void TraceWriter::rapid(const Rapid& r) { m_out += "rapid " + point(r.to) + '\n'; }
@@ -27,8 +39,8 @@ void TraceWriter::toolChange(const ToolChange& r)
 {
     const Tool& t = r.tool;
     m_out += "tool " + std::to_string(t.number) + " " + t.kind + " d " + num(t.diameterMm) + " r " +
-             num(t.cornerRadiusMm) + " flute " + num(t.fluteLengthMm) + " len " + num(t.lengthMm) + " \"" + t.name +
-             "\"\n";
+             num(t.cornerRadiusMm) + " flute " + num(t.fluteLengthMm) + " len " + num(t.lengthMm) + " " +
+             quoted(t.name) + "\n";
 }
 
 void TraceWriter::spindle(const Spindle& r)
@@ -58,17 +70,17 @@ void TraceWriter::toolAxisMove(const ToolAxisMove& r)
 }
 
 void TraceWriter::cutterComp(const CutterComp& r) { m_out += std::string("comp ") + name(r.side) + '\n'; }
-void TraceWriter::comment(const Comment& r) { m_out += "comment \"" + r.text + "\"\n"; }
+void TraceWriter::comment(const Comment& r) { m_out += "comment " + quoted(r.text) + "\n"; }
 
 void TraceWriter::sectionBegin(const SectionBegin& r)
 {
-    m_out += "section \"" + r.operationName + "\" " + r.strategy + " tool " + std::to_string(r.toolNumber) + " cut " +
-             num(r.feeds.cuttingMmPerMin) + " plunge " + num(r.feeds.plungeMmPerMin) + '\n';
+    m_out += "section " + quoted(r.operationName) + " " + r.strategy + " tool " + std::to_string(r.toolNumber) +
+             " cut " + num(r.feeds.cuttingMmPerMin) + " plunge " + num(r.feeds.plungeMmPerMin) + '\n';
 }
 
 void TraceWriter::sectionEnd(const SectionEnd&) { m_out += "endsection\n"; }
 void TraceWriter::programStop(const ProgramStop& r) { m_out += r.optional ? "stop optional\n" : "stop\n"; }
-void TraceWriter::passThrough(const PassThrough& r) { m_out += "passthrough \"" + r.text + "\"\n"; }
+void TraceWriter::passThrough(const PassThrough& r) { m_out += "passthrough " + quoted(r.text) + "\n"; }
 
 std::string traceOf(const Toolpath& toolpath)
 {

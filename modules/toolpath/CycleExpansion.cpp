@@ -1,0 +1,81 @@
+#include "toolpath/CycleExpansion.h"
+
+#include <algorithm>
+
+namespace camwb::toolpath {
+
+double cycleReturnZ(const Cycle& cycle)
+{
+    return cycle.returnToClearance ? std::max(cycle.clearanceZ, cycle.retractZ) : cycle.retractZ;
+}
+
+std::vector<Record> expandCycleHole(const Cycle& cycle, const Vec3& hole, const Vec3& from, const SpindleState& spindle)
+{
+    std::vector<Record> out;
+    Vec3 at = from;
+    auto rapid = [&](const Vec3& to) {
+        if (!(to == at))
+            out.push_back(Rapid{to});
+        at = to;
+    };
+    auto feed = [&](double z) {
+        at = {hole.x, hole.y, z};
+        out.push_back(Linear{at, cycle.feedMmPerMin});
+    };
+    auto dwellAtBottom = [&] {
+        if (cycle.dwellSeconds > 0)
+            out.push_back(Dwell{cycle.dwellSeconds});
+    };
+
+    const double r = cycle.retractZ;
+    const double bottom = cycle.bottomZ;
+    if (at.z < r)
+        rapid({at.x, at.y, r});
+    rapid({hole.x, hole.y, at.z});
+    rapid({hole.x, hole.y, r});
+
+    switch (cycle.kind) {
+    case CycleKind::Drill:
+    case CycleKind::DrillDwell:
+        feed(bottom);
+        dwellAtBottom();
+        break;
+    case CycleKind::Peck:
+    case CycleKind::ChipBreak: {
+        const bool fullRetract = cycle.kind == CycleKind::Peck;
+        // A peck of 0 (or less) would never reach the bottom: drill in one go.
+        const double step = cycle.peckMm > 0 ? cycle.peckMm : r - bottom;
+        double depth = std::min(cycle.topZ, r);
+        while (true) {
+            depth = std::max(depth - step, bottom);
+            feed(depth);
+            if (depth <= bottom)
+                break;
+            if (fullRetract) {
+                rapid({hole.x, hole.y, r});
+                rapid({hole.x, hole.y, std::min(depth + kPeckClearanceMm, r)});
+            } else {
+                rapid({hole.x, hole.y, std::min(depth + kPeckClearanceMm, r)});
+            }
+        }
+        dwellAtBottom();
+        break;
+    }
+    case CycleKind::Tap:
+        feed(bottom);
+        dwellAtBottom();
+        out.push_back(Spindle{spindle.rpm, !spindle.clockwise});
+        feed(r);
+        out.push_back(Spindle{spindle.rpm, spindle.clockwise});
+        break;
+    case CycleKind::Bore:
+        feed(bottom);
+        dwellAtBottom();
+        feed(r);
+        break;
+    }
+    rapid({hole.x, hole.y, cycleReturnZ(cycle)});
+    return out;
+}
+
+}  // namespace camwb::toolpath

@@ -1,0 +1,30 @@
+// Canned cycles as the moves a control makes for each hole (as LinuxCNC's G81-G89 do): the
+// fallback for posts that do not write a cycle natively, and what the backplot draws. One
+// definition, so the NC of an expanding post and the 3D view agree.
+#pragma once
+
+#include "toolpath/ClRecords.h"
+
+#include <vector>
+
+namespace camwb::toolpath {
+
+// Re-entry gap above the previous depth when pecking, and the lift that breaks a chip (mm).
+inline constexpr double kPeckClearanceMm = 0.5;
+
+// The spindle state a tapping cycle reverses and restores.
+struct SpindleState {
+    double rpm = 0;
+    bool clockwise = true;
+};
+
+// Height the tool returns to after each hole: clearance (G98 style, never below the R plane) or R.
+double cycleReturnZ(const Cycle& cycle);
+
+// The records for one hole, starting with the tool at `from`: up to the R plane if below it,
+// rapid over the hole, rapid down to R, the drilling motion of the cycle's kind (pecks measured
+// from the hole top, dwell at the bottom), then back to cycleReturnZ(). Ends over the hole.
+std::vector<Record> expandCycleHole(const Cycle& cycle, const Vec3& hole, const Vec3& from,
+                                    const SpindleState& spindle);
+
+}  // namespace camwb::toolpath

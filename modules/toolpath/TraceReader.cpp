@@ -1,0 +1,307 @@
+#include "toolpath/TraceReader.h"
+
+#include "toolpath/ClText.h"
+#include "toolpath/RecordNames.h"
+
+#include <array>
+#include <optional>
+
+namespace camwb::toolpath {
+
+namespace {
+
+struct Token {
+    std::string text;
+    int column = 0;
+    bool quoted = false;
+};
+
+// Splits a line at blanks; "..." is one token (with \" and \\ inside, as the writer escapes them).
+std::optional<std::vector<Token>> tokenize(std::string_view line, int& badColumn)
+{
+    std::vector<Token> tokens;
+    std::size_t i = 0;
+    while (i < line.size()) {
+        if (line[i] == ' ' || line[i] == '\t') {
+            ++i;
+            continue;
+        }
+        Token token{{}, static_cast<int>(i) + 1, line[i] == '"'};
+        if (token.quoted) {
+            std::size_t j = i + 1;
+            for (; j < line.size() && line[j] != '"'; ++j) {
+                if (line[j] == '\\' && j + 1 < line.size())
+                    ++j;
+                token.text += line[j];
+            }
+            if (j >= line.size()) {
+                badColumn = token.column;
+                return std::nullopt;
+            }
+            i = j + 1;
+        } else {
+            const std::size_t end = std::min(line.find_first_of(" \t", i), line.size());
+            token.text = std::string(line.substr(i, end - i));
+            i = end;
+        }
+        tokens.push_back(std::move(token));
+    }
+    return tokens;
+}
+
+class LineReader {
+public:
+    LineReader(std::vector<Token> tokens, int line, std::size_t length, const std::string& file) :
+        m_tokens(std::move(tokens)),
+        m_line(line),
+        m_endColumn(static_cast<int>(length) + 1),
+        m_file(file)
+    {
+    }
+
+    bool failed() const { return m_error.has_value(); }
+    const base::Error& error() const { return *m_error; }
+
+    std::string word()
+    {
+        if (const Token* t = next("a word"))
+            return t->text;
+        return {};
+    }
+    void keyword(std::string_view expected)
+    {
+        const Token* t = next(std::string("'") + std::string(expected) + "'");
+        if (t && t->text != expected)
+            fail("expected '" + std::string(expected) + "', found '" + std::string(t->text) + "'", t->column);
+    }
+    double number()
+    {
+        const Token* t = next("a number");
+        if (!t)
+            return 0;
+        const std::optional<double> value = parseNumber(t->text);
+        if (!value)
+            fail("expected a number, found '" + std::string(t->text) + "'", t->column);
+        return value.value_or(0);
+    }
+    int integer()
+    {
+        const Token* t = m_index < m_tokens.size() ? &m_tokens[m_index] : nullptr;
+        const double value = number();
+        if (t && !failed() && value != static_cast<int>(value))
+            fail("expected an integer, found '" + std::string(t->text) + "'", t->column);
+        return static_cast<int>(value);
+    }
+    Vec3 point() { return {number(), number(), number()}; }
+    std::string text()
+    {
+        const Token* t = next("a quoted text");
+        if (t && !t->quoted)
+            fail("expected a quoted text, found '" + std::string(t->text) + "'", t->column);
+        return t ? std::string(t->text) : std::string();
+    }
+    template <class Enum, std::size_t N> Enum choice(const std::array<Enum, N>& values)
+    {
+        const Token* t = next("a name");
+        if (!t)
+            return values[0];
+        for (Enum v : values)
+            if (t->text == name(v))
+                return v;
+        fail("unknown name '" + std::string(t->text) + "'", t->column);
+        return values[0];
+    }
+    bool atEnd() const { return m_index >= m_tokens.size(); }
+    void end()
+    {
+        if (!failed() && !atEnd())
+            fail("unexpected '" + std::string(m_tokens[m_index].text) + "' at the end of the line",
+                 m_tokens[m_index].column);
+    }
+    void fail(const std::string& message, int column)
+    {
+        if (!m_error)
+            m_error = base::makeError(message, m_file, m_line, column);
+    }
+
+private:
+    const Token* next(const std::string& what)
+    {
+        if (failed())
+            return nullptr;
+        if (m_index >= m_tokens.size()) {
+            fail("expected " + what + " at the end of the line", m_endColumn);
+            return nullptr;
+        }
+        return &m_tokens[m_index++];
+    }
+
+    std::vector<Token> m_tokens;
+    std::size_t m_index = 0;
+    int m_line;
+    int m_endColumn;
+    const std::string& m_file;
+    std::optional<base::Error> m_error;
+};
+
+constexpr std::array kCoolants{CoolantMode::Off, CoolantMode::Flood, CoolantMode::Mist, CoolantMode::ThroughTool};
+constexpr std::array kFeedModes{FeedMode::PerMinute, FeedMode::PerRevolution, FeedMode::InverseTime};
+constexpr std::array kCycles{CycleKind::Drill,     CycleKind::DrillDwell, CycleKind::Peck,
+                             CycleKind::ChipBreak, CycleKind::Tap,        CycleKind::Bore};
+constexpr std::array kSides{CutterCompSide::Off, CutterCompSide::Left, CutterCompSide::Right};
+
+}  // namespace
+
+base::Result<ClImport> readTrace(std::string_view text, const std::string& fileName)
+{
+    ClImport out;
+    const std::vector<std::string_view> lines = splitLines(text);
+    int section = -1, sections = 0;
+    for (std::size_t index = 0; index < lines.size(); ++index) {
+        const int lineNumber = static_cast<int>(index) + 1;
+        const std::string_view line = trimRight(lines[index]);
+        if (trim(line).empty() || trim(line).front() == '#')
+            continue;
+        int badColumn = 0;
+        auto tokens = tokenize(line, badColumn);
+        if (!tokens)
+            return base::makeError("unterminated quoted text", fileName, lineNumber, badColumn);
+        LineReader in(std::move(*tokens), lineNumber, line.size(), fileName);
+        const std::string kind = in.word();
+        const int kindColumn = static_cast<int>(line.find_first_not_of(" \t")) + 1;
+        Record record;
+        if (kind == "rapid") {
+            record = Rapid{in.point()};
+        } else if (kind == "linear") {
+            Linear l{in.point()};
+            in.keyword("f");
+            l.feedMmPerMin = in.number();
+            record = l;
+        } else if (kind == "arc") {
+            Arc a;
+            a.clockwise = in.word() == "cw";
+            a.to = in.point();
+            in.keyword("c");
+            a.center = in.point();
+            in.keyword("n");
+            a.normal = in.point();
+            in.keyword("turns");
+            a.turns = in.integer();
+            in.keyword("f");
+            a.feedMmPerMin = in.number();
+            record = a;
+        } else if (kind == "tool") {
+            Tool t;
+            t.number = in.integer();
+            t.kind = in.word();
+            in.keyword("d");
+            t.diameterMm = in.number();
+            in.keyword("r");
+            t.cornerRadiusMm = in.number();
+            in.keyword("flute");
+            t.fluteLengthMm = in.number();
+            in.keyword("len");
+            t.lengthMm = in.number();
+            t.name = in.text();
+            record = ToolChange{t};
+        } else if (kind == "spindle") {
+            Spindle s{in.number()};
+            const std::string direction = in.word();
+            if (direction != "cw" && direction != "ccw" && !in.failed())
+                in.fail("expected cw or ccw", 0);
+            s.clockwise = direction == "cw";
+            record = s;
+        } else if (kind == "coolant") {
+            record = Coolant{in.choice(kCoolants)};
+        } else if (kind == "feedmode") {
+            record = FeedModeChange{in.choice(kFeedModes)};
+        } else if (kind == "workoffset") {
+            record = WorkOffset{in.integer()};
+        } else if (kind == "dwell") {
+            record = Dwell{in.number()};
+        } else if (kind == "cycle") {
+            Cycle c;
+            c.kind = in.choice(kCycles);
+            in.keyword("clear");
+            c.clearanceZ = in.number();
+            in.keyword("retract");
+            c.retractZ = in.number();
+            in.keyword("top");
+            c.topZ = in.number();
+            in.keyword("bottom");
+            c.bottomZ = in.number();
+            in.keyword("peck");
+            c.peckMm = in.number();
+            in.keyword("dwell");
+            c.dwellSeconds = in.number();
+            in.keyword("f");
+            c.feedMmPerMin = in.number();
+            in.keyword("return");
+            c.returnToClearance = in.word() == "clear";
+            in.keyword("holes");
+            const int holes = in.integer();
+            in.end();
+            if (in.failed())
+                return in.error();
+            for (int h = 0; h < holes; ++h) {
+                if (++index >= lines.size())
+                    return base::makeError("the cycle announces " + std::to_string(holes) + " holes but the file ends",
+                                           fileName, lineNumber, kindColumn);
+                int column = 0;
+                const std::string_view holeLine = trimRight(lines[index]);
+                auto holeTokens = tokenize(holeLine, column);
+                LineReader hole(holeTokens.value_or(std::vector<Token>{}), static_cast<int>(index) + 1, holeLine.size(),
+                                fileName);
+                hole.keyword("hole");
+                c.holes.push_back(hole.point());
+                hole.end();
+                if (hole.failed())
+                    return hole.error();
+            }
+            record = c;
+        } else if (kind == "move5") {
+            ToolAxisMove m{in.point()};
+            in.keyword("axis");
+            m.axis = in.point();
+            in.keyword("f");
+            m.feedMmPerMin = in.number();
+            record = m;
+        } else if (kind == "comp") {
+            record = CutterComp{in.choice(kSides)};
+        } else if (kind == "comment") {
+            record = Comment{in.text()};
+        } else if (kind == "section") {
+            SectionBegin s;
+            s.operationName = in.text();
+            s.strategy = in.word();
+            in.keyword("tool");
+            s.toolNumber = in.integer();
+            in.keyword("cut");
+            s.feeds.cuttingMmPerMin = in.number();
+            in.keyword("plunge");
+            s.feeds.plungeMmPerMin = in.number();
+            record = s;
+            section = sections++;
+        } else if (kind == "endsection") {
+            record = SectionEnd{};
+        } else if (kind == "stop") {
+            const bool optional = !in.atEnd();
+            if (optional)
+                in.keyword("optional");
+            record = ProgramStop{optional};
+        } else if (kind == "passthrough") {
+            record = PassThrough{in.text()};
+        } else if (!in.failed()) {
+            return base::makeError("unknown trace record '" + kind + "'", fileName, lineNumber, kindColumn);
+        }
+        in.end();
+        if (in.failed())
+            return in.error();
+        out.toolpath.add(std::move(record), {section, lineNumber});
+        if (kind == "endsection")
+            section = -1;
+    }
+    return out;
+}
+
+}  // namespace camwb::toolpath

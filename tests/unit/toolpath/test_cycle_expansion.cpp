@@ -1,0 +1,106 @@
+// Canned cycles expanded into the moves a control makes, as posts without native cycles write them
+// and the backplot draws them.
+#include "toolpath/CycleExpansion.h"
+#include "toolpath/Toolpath.h"
+#include "toolpath/TraceWriter.h"
+
+#include <gtest/gtest.h>
+
+using namespace camwb::toolpath;
+
+namespace {
+
+std::string expanded(const Cycle& cycle, const Vec3& from, SpindleState spindle = {1000, true})
+{
+    Toolpath t;
+    for (const Record& r : expandCycleHole(cycle, cycle.holes.front(), from, spindle))
+        t.add(r);
+    return traceOf(t);
+}
+
+Cycle cycleOf(CycleKind kind)
+{
+    Cycle c;
+    c.kind = kind;
+    c.clearanceZ = 25;
+    c.retractZ = 2;
+    c.topZ = 0;
+    c.bottomZ = -10;
+    c.peckMm = 4;
+    c.feedMmPerMin = 120;
+    c.holes = {{10, 10, 0}};
+    return c;
+}
+
+}  // namespace
+
+TEST(CycleExpansion, DrillRapidsOverTheHoleFeedsDownAndReturnsToClearance)
+{
+    EXPECT_EQ(expanded(cycleOf(CycleKind::Drill), {0, 0, 50}), "rapid 10.0000 10.0000 50.0000\n"
+                                                               "rapid 10.0000 10.0000 2.0000\n"
+                                                               "linear 10.0000 10.0000 -10.0000 f 120.0000\n"
+                                                               "rapid 10.0000 10.0000 25.0000\n");
+}
+
+TEST(CycleExpansion, BelowTheRPlaneTheToolGoesUpFirst)
+{
+    Cycle c = cycleOf(CycleKind::DrillDwell);
+    c.dwellSeconds = 0.5;
+    c.returnToClearance = false;
+    EXPECT_EQ(expanded(c, {0, 0, -5}), "rapid 0.0000 0.0000 2.0000\n"
+                                       "rapid 10.0000 10.0000 2.0000\n"
+                                       "linear 10.0000 10.0000 -10.0000 f 120.0000\n"
+                                       "dwell 0.5000\n"
+                                       "rapid 10.0000 10.0000 2.0000\n");
+}
+
+TEST(CycleExpansion, PeckRetractsFullyChipBreakLiftsALittle)
+{
+    EXPECT_EQ(expanded(cycleOf(CycleKind::Peck), {10, 10, 25}), "rapid 10.0000 10.0000 2.0000\n"
+                                                                "linear 10.0000 10.0000 -4.0000 f 120.0000\n"
+                                                                "rapid 10.0000 10.0000 2.0000\n"
+                                                                "rapid 10.0000 10.0000 -3.5000\n"
+                                                                "linear 10.0000 10.0000 -8.0000 f 120.0000\n"
+                                                                "rapid 10.0000 10.0000 2.0000\n"
+                                                                "rapid 10.0000 10.0000 -7.5000\n"
+                                                                "linear 10.0000 10.0000 -10.0000 f 120.0000\n"
+                                                                "rapid 10.0000 10.0000 25.0000\n");
+    EXPECT_EQ(expanded(cycleOf(CycleKind::ChipBreak), {10, 10, 25}), "rapid 10.0000 10.0000 2.0000\n"
+                                                                     "linear 10.0000 10.0000 -4.0000 f 120.0000\n"
+                                                                     "rapid 10.0000 10.0000 -3.5000\n"
+                                                                     "linear 10.0000 10.0000 -8.0000 f 120.0000\n"
+                                                                     "rapid 10.0000 10.0000 -7.5000\n"
+                                                                     "linear 10.0000 10.0000 -10.0000 f 120.0000\n"
+                                                                     "rapid 10.0000 10.0000 25.0000\n");
+    Cycle noPeck = cycleOf(CycleKind::Peck);
+    noPeck.peckMm = 0;  // would never reach the bottom: drilled in one go
+    EXPECT_EQ(expanded(noPeck, {10, 10, 2}), "linear 10.0000 10.0000 -10.0000 f 120.0000\n"
+                                             "rapid 10.0000 10.0000 25.0000\n");
+}
+
+TEST(CycleExpansion, TapReversesTheSpindleBoreFeedsOut)
+{
+    EXPECT_EQ(expanded(cycleOf(CycleKind::Tap), {10, 10, 25}, {800, true}),
+              "rapid 10.0000 10.0000 2.0000\n"
+              "linear 10.0000 10.0000 -10.0000 f 120.0000\n"
+              "spindle 800.0000 ccw\n"
+              "linear 10.0000 10.0000 2.0000 f 120.0000\n"
+              "spindle 800.0000 cw\n"
+              "rapid 10.0000 10.0000 25.0000\n");
+    Cycle bore = cycleOf(CycleKind::Bore);
+    bore.returnToClearance = false;
+    EXPECT_EQ(expanded(bore, {10, 10, 25}), "rapid 10.0000 10.0000 2.0000\n"
+                                            "linear 10.0000 10.0000 -10.0000 f 120.0000\n"
+                                            "linear 10.0000 10.0000 2.0000 f 120.0000\n");
+}
+
+TEST(CycleExpansion, ReturnPlaneIsNeverBelowR)
+{
+    Cycle c = cycleOf(CycleKind::Drill);
+    EXPECT_EQ(cycleReturnZ(c), 25);
+    c.returnToClearance = false;
+    EXPECT_EQ(cycleReturnZ(c), 2);
+    c.returnToClearance = true;
+    c.clearanceZ = 1;  // a clearance plane below R: the tool still comes up to R
+    EXPECT_EQ(cycleReturnZ(c), 2);
+}

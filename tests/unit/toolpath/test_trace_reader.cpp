@@ -1,0 +1,97 @@
+// The trace reader reads back exactly what the trace writer writes, for every CL record type, and
+// says where a hand-written trace is wrong.
+#include "toolpath/TraceReader.h"
+#include "toolpath/TraceWriter.h"
+
+#include <gtest/gtest.h>
+
+using namespace camwb;
+using namespace camwb::toolpath;
+
+namespace {
+
+Toolpath everyRecord()
+{
+    Toolpath t;
+    Cycle cycle{CycleKind::ChipBreak, 25, 2, 0, -12.5, 3, 0.25, 120, {{10, 10, 0}, {20, -5.5, 0}}};
+    cycle.returnToClearance = false;
+    const Record records[] = {
+        WorkOffset{2},
+        SectionBegin{"Contour \"A\" 1", "profile", 3, {600, 150, 0, 0, 0}},
+        ToolChange{Tool{3, "Flat D6, 3 flutes", "flat", 6, 0.5, 20, 45, 3}},
+        Spindle{4000, true},
+        Spindle{0, false},
+        Coolant{CoolantMode::Mist},
+        FeedModeChange{FeedMode::PerRevolution},
+        CutterComp{CutterCompSide::Right},
+        Rapid{{1, 2, 3}},
+        Linear{{-1.25, 0, 3}, 0.15},
+        Arc{{5, 5, -1}, {0, 5, 0}, {0, 0, -1}, true, 2, 300},
+        Dwell{1.5},
+        cycle,
+        ToolAxisMove{{1, 2, 3}, {0, 0.6, 0.8}, 250},
+        Comment{"a comment with \"quotes\" and ; semicolons"},
+        ProgramStop{},
+        ProgramStop{true},
+        PassThrough{"G64 P0.01"},
+        SectionEnd{},
+        Rapid{{0, 0, 50}},
+    };
+    for (const Record& record : records)
+        t.add(record);
+    return t;
+}
+
+base::Error failure(const std::string& text)
+{
+    auto read = readTrace(text, "in.trace");
+    EXPECT_FALSE(read.ok()) << text;
+    return read.ok() ? base::Error{} : read.error();
+}
+
+}  // namespace
+
+TEST(TraceReader, ReadsBackEveryRecordTheWriterWrites)
+{
+    const std::string trace = traceOf(everyRecord());
+    auto read = readTrace(trace, "in.trace");
+    ASSERT_TRUE(read.ok()) << read.error().toString() << "\n" << trace;
+    EXPECT_EQ(traceOf(read->toolpath), trace);
+    EXPECT_TRUE(read->warnings.empty());
+    ASSERT_EQ(read->toolpath.size(), everyRecord().size());
+    // Sections and lines as the CL importers number them.
+    EXPECT_EQ(read->toolpath.source(0).operationIndex, -1);
+    EXPECT_EQ(read->toolpath.source(1).operationIndex, 0);
+    EXPECT_EQ(read->toolpath.source(1).recordIndex, 2);
+    EXPECT_EQ(read->toolpath.source(18).operationIndex, 0);  // the SectionEnd closes section 0
+    EXPECT_EQ(read->toolpath.source(19).operationIndex, -1);
+    EXPECT_EQ(read->toolpath.source(19).recordIndex, 22);  // after the cycle's two hole lines
+}
+
+TEST(TraceReader, NotesAndBlankLinesAreSkipped)
+{
+    auto read = readTrace("# a hand-written input\n\nrapid 1 2 3\n   # indented note\nlinear 1 2 0 f 100\n", "t");
+    ASSERT_TRUE(read.ok()) << read.error().toString();
+    EXPECT_EQ(traceOf(read->toolpath), "rapid 1.0000 2.0000 3.0000\nlinear 1.0000 2.0000 0.0000 f 100.0000\n");
+    EXPECT_EQ(read->toolpath.source(1).recordIndex, 5);
+}
+
+TEST(TraceReader, ErrorsNameLineAndColumn)
+{
+    EXPECT_EQ(failure("rapid 1 2 3\nteleport 1 2 3\n").toString(), "in.trace:2:1: unknown trace record 'teleport'");
+    EXPECT_EQ(failure("rapid 1 2\n").toString(), "in.trace:1:10: expected a number at the end of the line");
+    EXPECT_EQ(failure("linear 1 2 x f 100\n").toString(), "in.trace:1:12: expected a number, found 'x'");
+    EXPECT_EQ(failure("linear 1 2 3 g 100\n").toString(), "in.trace:1:14: expected 'f', found 'g'");
+    EXPECT_EQ(failure("rapid 1 2 3 4\n").toString(), "in.trace:1:13: unexpected '4' at the end of the line");
+    EXPECT_EQ(failure("coolant lots\n").toString(), "in.trace:1:9: unknown name 'lots'");
+    EXPECT_EQ(failure("comment \"open\n").toString(), "in.trace:1:9: unterminated quoted text");
+    EXPECT_EQ(failure("workoffset 1.5\n").toString(), "in.trace:1:12: expected an integer, found '1.5'");
+    EXPECT_EQ(failure("cycle drill clear 5 retract 2 top 0 bottom -5 peck 0 dwell 0 f 100 return clear holes 2\n"
+                      "  hole 1 1 0\n")
+                  .toString(),
+              "in.trace:1:1: the cycle announces 2 holes but the file ends");
+    EXPECT_EQ(failure("cycle drill clear 5 retract 2 top 0 bottom -5 peck 0 dwell 0 f 100 return clear holes 1\n"
+                      "  hole 1 1\n")
+                  .toString(),
+              "in.trace:2:11: expected a number at the end of the line");
+}

@@ -13,8 +13,11 @@ set(CPACK_GENERATOR DEB)
 install(FILES ${PROJECT_SOURCE_DIR}/packaging/camwb.desktop DESTINATION ${CMAKE_INSTALL_DATADIR}/applications)
 install(FILES ${PROJECT_SOURCE_DIR}/resources/icons/camwb.svg
         DESTINATION ${CMAKE_INSTALL_DATADIR}/icons/hicolor/scalable/apps)
+# Post scripts only: their golden tests (posts/<id>/tests/) stay in the source tree.
 install(DIRECTORY ${PROJECT_SOURCE_DIR}/posts/ DESTINATION ${CMAKE_INSTALL_DATADIR}/camwb/posts
-        FILES_MATCHING PATTERN "*.js")
+        FILES_MATCHING PATTERN "*.js" PATTERN "tests" EXCLUDE)
+install(DIRECTORY ${PROJECT_SOURCE_DIR}/resources/machines/ DESTINATION ${CMAKE_INSTALL_DATADIR}/camwb/machines
+        FILES_MATCHING PATTERN "*.json")
 install(FILES ${PROJECT_SOURCE_DIR}/resources/examples/example-block.camwb
               ${PROJECT_SOURCE_DIR}/resources/examples/example-block.step
         DESTINATION ${CMAKE_INSTALL_DATADIR}/camwb/examples)

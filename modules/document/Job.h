@@ -5,6 +5,7 @@
 #include "base/Vec.h"
 #include "ops/ProfileOp.h"
 
+#include <map>
 #include <string>
 #include <vector>
 
@@ -31,6 +32,8 @@ struct Job {
     std::vector<ops::ToolController> tools;
     std::vector<Operation> operations;
     std::string postId = "sinumerik828d-emco";
+    std::map<std::string, std::string> postProperties;  // values as text, by property name
+    std::string machineId;                              // empty: the post's default machine
 
     const ops::ToolController* tool(int number) const;
 };

@@ -9,7 +9,9 @@
 
 namespace camwb::document {
 
-inline constexpr int kJobFormatVersion = 1;
+// Version 2 added the optional "machine" and "postProperties"; a job that uses neither is still
+// written as version 1, so older readers keep reading what they can read correctly.
+inline constexpr int kJobFormatVersion = 2;
 
 // In memory a job's model path is absolute; in the file it is relative to the job file's folder.
 // loadJob resolves it, saveJob makes it relative again, so jobs can be moved with their models.

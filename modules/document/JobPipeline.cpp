@@ -45,12 +45,25 @@ base::Result<toolpath::Toolpath> computeProgram(const Job& job, const occ::Model
     return program;
 }
 
-base::Result<post::PostProcessor> loadJobPost(const Job& job, const std::vector<std::string>& postDirs)
+base::Result<post::PostProcessor> loadJobPost(const Job& job, const std::vector<base::DataDir>& postDirs)
 {
     auto path = post::findPost(job.postId, postDirs);
     if (!path)
         return path.error();
     return post::PostProcessor::load(path.value());
+}
+
+base::Result<post::RunOptions> jobRunOptions(const Job& job, const post::PostProcessor& post, post::PostContext context,
+                                             const std::vector<std::string>& machineDirs)
+{
+    post::RunOptions options;
+    options.context = std::move(context);
+    options.properties = job.postProperties;
+    auto machine = post::machineForPost(post.info(), job.machineId, machineDirs);
+    if (!machine)
+        return machine.error();
+    options.machine = std::move(machine).value();
+    return options;
 }
 
 }  // namespace camwb::document

@@ -3,6 +3,7 @@
 // alike, so both produce the same NC for the same job.
 #pragma once
 
+#include "base/DataDirs.h"
 #include "base/Result.h"
 #include "document/Job.h"
 #include "occ/Model.h"
@@ -20,6 +21,11 @@ base::Result<occ::Model> loadJobModel(const Job& job, const occ::ProgressFn& pro
 // spindle start inserted after SectionBegin when the tool differs from the previous one.
 base::Result<toolpath::Toolpath> computeProgram(const Job& job, const occ::Model& model);
 
-base::Result<post::PostProcessor> loadJobPost(const Job& job, const std::vector<std::string>& postDirs);
+base::Result<post::PostProcessor> loadJobPost(const Job& job, const std::vector<base::DataDir>& postDirs);
+
+// How the job asks to be posted: its post property values and its machine (or the post's
+// default machine, found in machineDirs), with the given context.
+base::Result<post::RunOptions> jobRunOptions(const Job& job, const post::PostProcessor& post, post::PostContext context,
+                                             const std::vector<std::string>& machineDirs);
 
 }  // namespace camwb::document

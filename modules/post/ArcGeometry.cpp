@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <optional>
 
 namespace camwb::post {
 
@@ -13,11 +14,76 @@ namespace {
 constexpr double kAxisTolerance = 1e-9;   // |normal . axis| within this of 1 counts as principal
 constexpr double kPointTolerance = 1e-7;  // mm: start and end this close make a full circle
 constexpr double kSweepTolerance = 1e-6;  // radians of slack before a piece counts as too long
+constexpr double kTwoPi = 2 * std::numbers::pi;
 
 Vec3 unit(const Vec3& v)
 {
     const double length = v.length();
     return length > 0 ? v * (1.0 / length) : Vec3{0, 0, 1};
+}
+
+// An arc as a function of t in [0, 1]: the angle grows linearly in the direction of travel, and
+// so do the radius and the height along the normal (a helix, or a spiral when the radii differ).
+struct ArcFrame {
+    Vec3 center, normal, u, v;  // u: unit radius vector at the start, v = normal x u
+    double radiusStart = 0, radiusEnd = 0;
+    double axialStart = 0, axialEnd = 0;
+    double sweep = 0;  // radians, > 0
+    bool clockwise = false;
+
+    Vec3 at(double t) const
+    {
+        const double angle = (clockwise ? -sweep : sweep) * t;
+        const double radius = radiusStart + (radiusEnd - radiusStart) * t;
+        const double axial = axialStart + (axialEnd - axialStart) * t;
+        return center + (u * std::cos(angle) + v * std::sin(angle)) * radius + normal * axial;
+    }
+    bool helical() const { return std::abs(axialEnd - axialStart) > kAxisTolerance; }
+};
+
+std::optional<ArcFrame> frameOf(const Vec3& start, const toolpath::Arc& arc)
+{
+    ArcFrame f;
+    f.center = arc.center;
+    f.clockwise = arc.clockwise;
+    Vec3 n = unit(arc.normal);
+    // Seen against -Z, clockwise is counter-clockwise seen against +Z: flip both to the positive axis.
+    const std::string plane = arcPlane(n);
+    if ((plane == "XY" && n.z < 0) || (plane == "ZX" && n.y < 0) || (plane == "YZ" && n.x < 0)) {
+        n = n * -1.0;
+        f.clockwise = !f.clockwise;
+    }
+    if (plane == "XY")
+        n = {0, 0, 1};
+    else if (plane == "ZX")
+        n = {0, 1, 0};
+    else if (plane == "YZ")
+        n = {1, 0, 0};
+    f.normal = n;
+
+    const Vec3 s = start - arc.center;
+    const Vec3 e = arc.to - arc.center;
+    f.axialStart = s.dot(n);
+    f.axialEnd = e.dot(n);
+    const Vec3 radialStart = s - n * f.axialStart;  // in-plane radius vectors
+    const Vec3 radialEnd = e - n * f.axialEnd;
+    f.radiusStart = radialStart.length();
+    f.radiusEnd = radialEnd.length();
+    if (f.radiusStart < kPointTolerance || f.radiusEnd < kPointTolerance)
+        return std::nullopt;
+
+    if ((radialStart - radialEnd).length() < kPointTolerance) {
+        f.sweep = kTwoPi;
+    } else {
+        const double ccw = std::atan2(n.dot(radialStart.cross(radialEnd)), radialStart.dot(radialEnd));  // (-pi, pi]
+        f.sweep = f.clockwise ? -ccw : ccw;
+        if (f.sweep <= 0)
+            f.sweep += kTwoPi;
+    }
+    f.sweep += kTwoPi * std::max(0, arc.turns);
+    f.u = radialStart * (1.0 / f.radiusStart);
+    f.v = n.cross(f.u);
+    return f;
 }
 
 }  // namespace
@@ -34,70 +100,105 @@ std::string arcPlane(const Vec3& normal)
     return {};
 }
 
+double arcSweepDeg(const Vec3& start, const toolpath::Arc& arc)
+{
+    const std::optional<ArcFrame> frame = frameOf(start, arc);
+    return frame ? frame->sweep * 180 / std::numbers::pi : 0;
+}
+
 std::vector<ArcPiece> splitArc(const Vec3& start, const toolpath::Arc& arc, double maxSweepDeg)
 {
-    Vec3 n = unit(arc.normal);
-    bool clockwise = arc.clockwise;
-    // Seen against -Z, clockwise is counter-clockwise seen against +Z: flip both to the positive axis.
-    const std::string plane = arcPlane(n);
-    if ((plane == "XY" && n.z < 0) || (plane == "ZX" && n.y < 0) || (plane == "YZ" && n.x < 0)) {
-        n = n * -1.0;
-        clockwise = !clockwise;
-    }
-    if (plane == "XY")
-        n = {0, 0, 1};
-    else if (plane == "ZX")
-        n = {0, 1, 0};
-    else if (plane == "YZ")
-        n = {1, 0, 0};
-
-    const Vec3 s = start - arc.center;
-    const Vec3 e = arc.to - arc.center;
-    const double axialStart = s.dot(n);
-    const double axialEnd = e.dot(n);
-    const Vec3 u = s - n * axialStart;  // in-plane radius vectors
-    const Vec3 v = e - n * axialEnd;
-    const double radiusStart = u.length();
-    const double radiusEnd = v.length();
-    if (radiusStart < kPointTolerance || radiusEnd < kPointTolerance)
+    const std::optional<ArcFrame> frame = frameOf(start, arc);
+    if (!frame)
         return {};
-
-    constexpr double twoPi = 2 * std::numbers::pi;
-    double sweep;  // radians, positive, in the direction of travel
-    if ((u - v).length() < kPointTolerance) {
-        sweep = twoPi;
-    } else {
-        const double ccw = std::atan2(n.dot(u.cross(v)), u.dot(v));  // (-pi, pi], about +n
-        sweep = clockwise ? -ccw : ccw;
-        if (sweep <= 0)
-            sweep += twoPi;
-    }
-    sweep += twoPi * std::max(0, arc.turns);
-
     const double maxSweep = std::clamp(maxSweepDeg, 1.0, 360.0) * std::numbers::pi / 180;
-    const int count = std::max(1, static_cast<int>(std::ceil((sweep - kSweepTolerance) / maxSweep)));
-    const double direction = clockwise ? -1 : 1;
-    const Vec3 uUnit = u * (1.0 / radiusStart);
-    const Vec3 uPerp = n.cross(uUnit);  // +90 degrees about n
-    const bool helical = std::abs(axialEnd - axialStart) > kAxisTolerance;
+    const int count = std::max(1, static_cast<int>(std::ceil((frame->sweep - kSweepTolerance) / maxSweep)));
+    const bool helical = frame->helical();
 
     std::vector<ArcPiece> pieces;
     pieces.reserve(count);
     Vec3 pieceStart = start;
     for (int i = 1; i <= count; ++i) {
-        Vec3 pieceEnd = arc.to;
-        if (i < count) {
-            const double t = static_cast<double>(i) / count;
-            const double angle = direction * sweep * t;
-            const double radius = radiusStart + (radiusEnd - radiusStart) * t;
-            const double axial = axialStart + (axialEnd - axialStart) * t;
-            pieceEnd = arc.center + (uUnit * std::cos(angle) + uPerp * std::sin(angle)) * radius + n * axial;
-        }
-        pieces.push_back(
-            {pieceStart, pieceEnd, arc.center, n, clockwise, sweep / count * 180 / std::numbers::pi, helical});
+        const double t = static_cast<double>(i) / count;
+        const Vec3 pieceEnd = i < count ? frame->at(t) : arc.to;
+        const double radius = frame->radiusStart + (frame->radiusEnd - frame->radiusStart) * (i - 1) / count;
+        pieces.push_back({pieceStart, pieceEnd, arc.center, frame->normal, frame->clockwise,
+                          frame->sweep / count * 180 / std::numbers::pi, radius, helical});
         pieceStart = pieceEnd;
     }
     return pieces;
+}
+
+std::vector<Vec3> linearizeArc(const Vec3& start, const toolpath::Arc& arc, double toleranceMm)
+{
+    const std::optional<ArcFrame> frame = frameOf(start, arc);
+    if (!frame)
+        return {arc.to};
+    // A chord of angle a on radius r strays r (1 - cos(a/2)) from the arc.
+    const double radius = std::max(frame->radiusStart, frame->radiusEnd);
+    const double tolerance = std::clamp(toleranceMm, 1e-6, radius);
+    const double maxStep = std::max(2 * std::acos(1 - tolerance / radius), 1e-3);
+    const int count = std::max(1, static_cast<int>(std::ceil(frame->sweep / maxStep)));
+    std::vector<Vec3> points;
+    points.reserve(count);
+    for (int i = 1; i < count; ++i)
+        points.push_back(frame->at(static_cast<double>(i) / count));
+    points.push_back(arc.to);
+    return points;
+}
+
+void extendByArc(Vec3& min, Vec3& max, const Vec3& start, const toolpath::Arc& arc)
+{
+    auto extend = [&min, &max](const Vec3& p) {
+        min = {std::min(min.x, p.x), std::min(min.y, p.y), std::min(min.z, p.z)};
+        max = {std::max(max.x, p.x), std::max(max.y, p.y), std::max(max.z, p.z)};
+    };
+    extend(start);
+    extend(arc.to);
+    const std::optional<ArcFrame> frame = frameOf(start, arc);
+    if (!frame)
+        return;
+    const double normal[3] = {frame->normal.x, frame->normal.y, frame->normal.z};
+    const double center[3] = {frame->center.x, frame->center.y, frame->center.z};
+    const bool principal = std::abs(normal[0]) + std::abs(normal[1]) + std::abs(normal[2]) == 1;
+    const bool constantRadius = std::abs(frame->radiusStart - frame->radiusEnd) < 1e-12;
+    if (!principal || !constantRadius) {
+        // Oblique planes (where a helix's rise shifts the extremes) and spirals: sampled every
+        // half degree, which misses at most r (1 - cos 0.25 deg) = 1e-5 r.
+        const int steps = std::max(1, static_cast<int>(std::ceil(frame->sweep / (std::numbers::pi / 360))));
+        for (int i = 1; i < steps; ++i)
+            extend(frame->at(static_cast<double>(i) / steps));
+        return;
+    }
+    // Most arcs: a principal plane and one radius. An in-plane axis k is extreme where the arc
+    // points along +k or -k; whether the arc passes there is a comparison of pseudo-angles measured
+    // from the start in the direction of travel, no trigonometry needed. Exact.
+    auto pseudoAngle = [](double c, double s) {  // monotonic in the angle of (c, s), in [0, 4)
+        if (s >= 0)
+            return c >= 0 ? s / (c + s) : 1 - c / (s - c);
+        return c < 0 ? 2 - s / (-c - s) : 3 + c / (c - s);
+    };
+    const bool wholeTurn = frame->sweep >= kTwoPi - 1e-12;
+    const double turn = frame->clockwise ? -1 : 1;  // travel-oriented second axis: turn * v
+    const Vec3 end = arc.to - frame->center;
+    const double endAngle = pseudoAngle(end.dot(frame->u), turn * end.dot(frame->v));
+    const double uk[3] = {frame->u.x, frame->u.y, frame->u.z};
+    const double vk[3] = {frame->v.x, frame->v.y, frame->v.z};
+    double low[3] = {min.x, min.y, min.z}, high[3] = {max.x, max.y, max.z};
+    for (int k = 0; k < 3; ++k) {
+        if (normal[k] != 0)
+            continue;  // along the axis the extremes are the start and the end
+        for (double sign : {1.0, -1.0}) {
+            const double angle = pseudoAngle(sign * uk[k], turn * sign * vk[k]);
+            if (wholeTurn || angle <= endAngle) {
+                const double extreme = center[k] + sign * frame->radiusStart;
+                low[k] = std::min(low[k], extreme);
+                high[k] = std::max(high[k], extreme);
+            }
+        }
+    }
+    min = {low[0], low[1], low[2]};
+    max = {high[0], high[1], high[2]};
 }
 
 }  // namespace camwb::post

@@ -1,6 +1,15 @@
 #include "post/OutputWriter.h"
 
+#include <charconv>
+
 namespace camwb::post {
+
+void OutputWriter::streamTo(Sink sink, std::size_t chunkBytes)
+{
+    m_sink = std::move(sink);
+    m_chunkBytes = chunkBytes;
+    m_text.reserve(chunkBytes + 4096);
+}
 
 void OutputWriter::setBlockNumbering(long long start, long long step, bool enabled)
 {
@@ -9,56 +18,127 @@ void OutputWriter::setBlockNumbering(long long start, long long step, bool enabl
     m_numbering = enabled;
 }
 
-std::string OutputWriter::blockPrefix()
+void OutputWriter::appendBlockNumber()
 {
     if (!m_numbering)
-        return {};
-    std::string prefix = "N" + std::to_string(m_next) + " ";
+        return;
+    char digits[24];
+    const auto result = std::to_chars(digits, digits + sizeof digits, m_next);
+    m_text += 'N';
+    m_text.append(digits, result.ptr);
+    m_text += ' ';
     m_next += m_step;
-    return prefix;
+}
+
+void OutputWriter::appendClean(std::string_view text)
+{
+    // A block is one line whatever a post passes in: a line break inside it would shift every
+    // later block number and line-to-operation link.
+    const std::size_t start = m_text.size();
+    m_text += text;
+    for (std::size_t i = start; i < m_text.size(); ++i)
+        if (m_text[i] == '\n' || m_text[i] == '\r')
+            m_text[i] = ' ';
+}
+
+void OutputWriter::endLine()
+{
+    m_text += '\n';
+    if (m_runs.empty() || m_runs.back().operation != m_operation)
+        m_runs.push_back({m_lines, m_operation});
+    ++m_lines;
+    if (m_sink && m_text.size() >= m_chunkBytes) {
+        if (!m_sinkFailed && !m_sink(m_text))
+            m_sinkFailed = true;
+        m_bytes += m_text.size();
+        m_text.clear();
+    }
 }
 
 bool OutputWriter::writeBlock(const std::vector<std::string>& words)
 {
-    std::string line;
-    for (const std::string& word : words) {
-        if (word.empty())
-            continue;
-        if (!line.empty())
-            line += ' ';
-        line += word;
-    }
-    if (line.empty())
+    beginBlock();
+    for (const std::string& word : words)
+        addWord({}, word);
+    return endBlock();
+}
+
+void OutputWriter::addWord(std::string_view prefix, std::string_view text)
+{
+    if (prefix.empty() && text.empty())
+        return;
+    if (m_blockWords++ == 0)
+        appendBlockNumber();
+    else
+        m_text += ' ';
+    appendClean(prefix);
+    appendClean(text);
+}
+
+void OutputWriter::addCleanWord(std::string_view prefix, std::string_view text)
+{
+    if (m_blockWords++ == 0)
+        appendBlockNumber();
+    else
+        m_text += ' ';
+    m_text += prefix;
+    m_text += text;
+}
+
+bool OutputWriter::endBlock()
+{
+    if (m_blockWords == 0)
         return false;
-    append(blockPrefix() + line);
+    m_blockWords = 0;
+    endLine();
     return true;
 }
 
-void OutputWriter::writeComment(const std::string& text) { append(blockPrefix() + ";" + text); }
+void OutputWriter::writeComment(std::string_view text)
+{
+    appendBlockNumber();
+    m_text += ';';
+    appendClean(text);
+    endLine();
+}
 
-void OutputWriter::writeLine(const std::string& text)
+void OutputWriter::writeLine(std::string_view text)
 {
     std::size_t start = 0;
     while (true) {
         const std::size_t newline = text.find('\n', start);
-        if (newline == std::string::npos) {
-            append(text.substr(start));
+        std::string_view line = text.substr(start, newline == std::string_view::npos ? text.npos : newline - start);
+        // The writer adds exactly one "\n" per line; a trailing '\r' would make a CRLF line.
+        while (!line.empty() && line.back() == '\r')
+            line.remove_suffix(1);
+        appendClean(line);
+        endLine();
+        if (newline == std::string_view::npos)
             return;
-        }
-        append(text.substr(start, newline - start));
         start = newline + 1;
     }
 }
 
-void OutputWriter::append(const std::string& line)
+bool OutputWriter::finish()
 {
-    // A line never carries its own line break or a trailing '\r'; the writer adds exactly one "\n".
-    std::string clean = line;
-    while (!clean.empty() && (clean.back() == '\r' || clean.back() == '\n'))
-        clean.pop_back();
-    m_text += clean;
-    m_text += '\n';
-    m_lineOperation.push_back(m_operation);
+    if (m_sink && !m_text.empty()) {
+        if (!m_sinkFailed && !m_sink(m_text))
+            m_sinkFailed = true;
+        m_bytes += m_text.size();
+        m_text.clear();
+    }
+    return !m_sinkFailed;
+}
+
+std::vector<int> OutputWriter::lineOperations() const
+{
+    std::vector<int> operations(m_lines, -1);
+    for (std::size_t i = 0; i < m_runs.size(); ++i) {
+        const std::size_t end = i + 1 < m_runs.size() ? m_runs[i + 1].firstLine : m_lines;
+        for (std::size_t line = m_runs[i].firstLine; line < end; ++line)
+            operations[line] = m_runs[i].operation;
+    }
+    return operations;
 }
 
 }  // namespace camwb::post

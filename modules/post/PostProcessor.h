@@ -1,24 +1,22 @@
-// The post kernel: loads a post script (JavaScript, Fusion/HSM-like handlers) and turns a Toolpath
-// into NC text. Everything that would make output non-deterministic (clock, user, version) comes in
-// through PostContext; each run uses a fresh script engine, so runs are independent and thread-safe.
+// The post kernel: loads a post script (JavaScript, Fusion/HSM-like handlers plus C++ block
+// templates for the per-move hot path) and turns a Toolpath into NC text. Everything that would
+// make output non-deterministic (clock, user, version) comes in through PostContext; each run uses
+// a fresh script engine, so runs are independent and thread-safe.
 #pragma once
 
 #include "base/Result.h"
+#include "kinematics/Machine.h"
+#include "post/PostInfo.h"
 #include "toolpath/Toolpath.h"
 
+#include <chrono>
 #include <cstdint>
+#include <map>
+#include <optional>
 #include <string>
 #include <vector>
 
 namespace camwb::post {
-
-struct PostInfo {
-    std::string id;  // from `post.id`, else the file's base name
-    std::string description;
-    std::string vendor;
-    std::string extension;  // without the dot, e.g. "mpf"; "nc" when the post names none
-    std::string filePath;
-};
 
 struct PostContext {
     std::string programName;
@@ -28,6 +26,15 @@ struct PostContext {
 
     // SOURCE_DATE_EPOCH if set (else now), CAMWB_USER else USER else "unknown", CAMWB_VERSION.
     static PostContext fromEnvironment(std::string programName);
+};
+
+struct RunOptions {
+    PostContext context;
+    std::map<std::string, std::string> properties;  // user values as text, by property name
+    std::optional<kinematics::Machine> machine;     // given to the script; its limits are checked
+    // Longest time one call into the script (loading it, or one handler) may take before it is
+    // interrupted: a runaway loop becomes an error instead of a hang.
+    std::chrono::milliseconds scriptBudget{10000};
 };
 
 struct PostMessage {
@@ -44,17 +51,32 @@ struct PostOutput {
     std::vector<int> lineOperation;     // per output line: operation index of its CL record, -1 = none
 };
 
+// What a run into a file reports (the text itself went to the file).
+struct PostSummary {
+    std::vector<PostMessage> messages;
+    std::size_t lines = 0;
+    std::size_t bytes = 0;
+};
+
 class PostProcessor {
 public:
-    // Reads the script and evaluates it once to read the `post` metadata object.
-    // Syntax errors and a missing `post` object give an Error with the file and line.
-    static base::Result<PostProcessor> load(const std::string& scriptPath);
+    // Reads the script and evaluates it once to read the `post` metadata object (no handler
+    // runs). Syntax errors, a missing `post` object and malformed declarations give an Error
+    // with the file and line.
+    static base::Result<PostProcessor> load(const std::string& scriptPath,
+                                            std::chrono::milliseconds scriptBudget = std::chrono::seconds(10));
 
     const PostInfo& info() const { return m_info; }
 
     // Fresh script engine per run. Any script error gives an Error naming the post file and line.
     // Needs a QCoreApplication instance (QJSEngine does); without one it returns an Error.
+    base::Result<PostOutput> run(const toolpath::Toolpath& toolpath, const RunOptions& options) const;
     base::Result<PostOutput> run(const toolpath::Toolpath& toolpath, const PostContext& context) const;
+
+    // Streams the NC into a temporary file beside `outputPath` and renames it over `outputPath`
+    // only when the whole run succeeded: on any error the output path is left untouched.
+    base::Result<PostSummary> runToFile(const toolpath::Toolpath& toolpath, const RunOptions& options,
+                                        const std::string& outputPath) const;
 
 private:
     PostInfo m_info;

@@ -1,49 +1,60 @@
 #include "post/PostRegistry.h"
 
-#include "camwb_version.h"
-
-#include <cstdlib>
+#include <algorithm>
 #include <filesystem>
+#include <map>
 #include <system_error>
 
 namespace camwb::post {
 
 namespace fs = std::filesystem;
 
-std::vector<std::string> defaultPostDirs()
+std::vector<base::DataDir> defaultPostDirs(const std::vector<std::string>& extraDirs)
 {
-    std::vector<std::string> dirs;
-    if (const char* path = std::getenv("CAMWB_POST_PATH")) {
-        std::string list(path);
-        std::size_t start = 0;
-        while (start <= list.size()) {
-            const std::size_t colon = list.find(':', start);
-            const std::string entry =
-                list.substr(start, colon == std::string::npos ? std::string::npos : colon - start);
-            if (!entry.empty())
-                dirs.push_back(entry);
-            if (colon == std::string::npos)
-                break;
-            start = colon + 1;
-        }
-    }
-    if (const char* home = std::getenv("HOME"); home && *home)
-        dirs.push_back((fs::path(home) / ".local/share/camwb/posts").string());
-    std::error_code ec;
-    const fs::path exe = fs::read_symlink("/proc/self/exe", ec);
-    if (!ec)
-        dirs.push_back((exe.parent_path().parent_path() / "share/camwb/posts").lexically_normal().string());
-    dirs.push_back(std::string(CAMWB_SOURCE_DIR) + "/posts");
+    std::vector<base::DataDir> dirs;
+    for (const std::string& dir : extraDirs)
+        dirs.push_back({dir, false});
+    for (base::DataDir& dir : base::dataDirs("CAMWB_POST_PATH", "posts", "posts"))
+        dirs.push_back(std::move(dir));
     return dirs;
 }
 
-base::Result<std::string> findPost(const std::string& id, const std::vector<std::string>& dirs)
+std::vector<PostEntry> listPosts(const std::vector<base::DataDir>& dirs)
+{
+    std::map<std::string, PostEntry> byId;
+    std::vector<std::string> seenDirs;
+    for (const base::DataDir& dir : dirs) {
+        std::error_code ec;
+        // The same folder twice (the source tree is also the installed one) is not an override.
+        const std::string canonical = fs::weakly_canonical(dir.path, ec).string();
+        if (std::find(seenDirs.begin(), seenDirs.end(), canonical) != seenDirs.end())
+            continue;
+        seenDirs.push_back(canonical);
+        std::vector<fs::path> files;
+        for (fs::directory_iterator it(dir.path, ec), end; !ec && it != end; it.increment(ec))
+            if (it->path().extension() == ".js" && it->is_regular_file(ec))
+                files.push_back(it->path());
+        std::sort(files.begin(), files.end());
+        for (const fs::path& file : files) {
+            const std::string id = file.stem().string();
+            auto [entry, added] = byId.try_emplace(id, PostEntry{id, file.string(), dir.builtIn, {}});
+            if (!added)
+                entry->second.shadows.push_back(file.string());
+        }
+    }
+    std::vector<PostEntry> entries;
+    for (auto& [id, entry] : byId)
+        entries.push_back(std::move(entry));
+    return entries;
+}
+
+base::Result<std::string> findPost(const std::string& id, const std::vector<base::DataDir>& dirs)
 {
     if (id.empty() || id.find('/') != std::string::npos || id.find("..") != std::string::npos)
         return base::makeError("invalid post id '" + id + "'");
     std::string looked;
-    for (const std::string& dir : dirs) {
-        const fs::path candidate = fs::path(dir) / (id + ".js");
+    for (const base::DataDir& dir : dirs) {
+        const fs::path candidate = fs::path(dir.path) / (id + ".js");
         std::error_code ec;
         if (fs::is_regular_file(candidate, ec))
             return candidate.string();
@@ -52,6 +63,18 @@ base::Result<std::string> findPost(const std::string& id, const std::vector<std:
     if (dirs.empty())
         looked = " (no post folders configured)";
     return base::makeError("post '" + id + "' not found; looked in:" + looked);
+}
+
+base::Result<std::optional<kinematics::Machine>> machineForPost(const PostInfo& info, const std::string& requestedId,
+                                                                const std::vector<std::string>& machineDirs)
+{
+    const std::string& id = requestedId.empty() ? info.defaultMachine : requestedId;
+    if (id.empty())
+        return std::optional<kinematics::Machine>();
+    auto machine = kinematics::findMachine(id, machineDirs);
+    if (!machine)
+        return machine.error();
+    return std::optional<kinematics::Machine>(std::move(machine).value());
 }
 
 }  // namespace camwb::post

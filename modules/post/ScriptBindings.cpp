@@ -1,5 +1,8 @@
 #include "post/detail/ScriptBindings.h"
 
+#include "post/detail/BlockTemplates.h"
+
+#include <charconv>
 #include <cmath>
 
 namespace camwb::post {
@@ -10,15 +13,33 @@ bool isIntegral(double value) { return std::isfinite(value) && value == std::flo
 
 }  // namespace
 
+std::size_t numberWordText(double value, char* out)
+{
+    if (isIntegral(value)) {
+        const auto result = std::to_chars(out, out + base::NumberFormat::kBufferSize, static_cast<long long>(value));
+        return static_cast<std::size_t>(result.ptr - out);
+    }
+    return base::NumberFormat{3}.formatTo(value, out);
+}
+
 std::string wordText(const QJSValue& value)
 {
     if (value.isUndefined() || value.isNull())
         return {};
     if (value.isNumber()) {
-        const double number = value.toNumber();
-        return isIntegral(number) ? std::to_string(static_cast<long long>(number)) : base::formatFixed(number, 3);
+        char buffer[base::NumberFormat::kBufferSize];
+        return std::string(buffer, numberWordText(value.toNumber(), buffer));
     }
     return value.toString().toStdString();
+}
+
+QJSValue scriptPoint(QJSEngine& engine, const toolpath::Vec3& p)
+{
+    QJSValue point = engine.newObject();
+    point.setProperty("x", p.x);
+    point.setProperty("y", p.y);
+    point.setProperty("z", p.z);
+    return point;
 }
 
 QString FormatObject::format(const QJSValue& value)
@@ -31,12 +52,17 @@ QString FormatObject::format(const QJSValue& value)
     return QString::fromStdString(m_format.format(value.toNumber()));
 }
 
+std::size_t VariableObject::textOf(double value, char* out) const
+{
+    return m_format ? m_format->formatTo(value, out) : numberWordText(value, out);
+}
+
 QString VariableObject::format(const QJSValue& value)
 {
     std::string text;
     if (value.isNumber() && std::isfinite(value.toNumber())) {
-        const double number = value.toNumber();
-        text = m_format ? m_format->format(number) : wordText(value);
+        char buffer[base::NumberFormat::kBufferSize];
+        text.assign(buffer, textOf(value.toNumber(), buffer));
     } else if (m_acceptsText && value.isString()) {
         text = value.toString().toStdString();
     } else {
@@ -46,6 +72,32 @@ QString VariableObject::format(const QJSValue& value)
         return {};
     }
     return QString::fromStdString(m_value.output(text));
+}
+
+QJSValue VariableObject::bind(const QJSValue& valueName)
+{
+    const std::string name = valueName.toString().toStdString();
+    if (!valueName.isString() || !moveValueFromName(name)) {
+        m_engine->throwError(QJSValue::TypeError,
+                             QStringLiteral("bind(): unknown move value '%1'; known: %2")
+                                 .arg(valueName.toString(), QString::fromStdString(moveValueNames())));
+        return {};
+    }
+    QJSValue bound = m_engine->newObject();
+    bound.setProperty(QStringLiteral("__camwbVariable"), m_engine->newQObject(this));
+    bound.setProperty(QStringLiteral("value"), valueName);
+    return bound;
+}
+
+void VariableObject::setFormat(const QJSValue& format)
+{
+    auto* formatObject = qobject_cast<FormatObject*>(format.toQObject());
+    if (!formatObject) {
+        m_engine->throwError(QJSValue::TypeError, QStringLiteral("setFormat() needs a format from createFormat()"));
+        return;
+    }
+    m_format = formatObject->numberFormat();
+    m_value.reset();
 }
 
 QJSValue ScriptKernel::createFormat(const QJSValue& spec)
@@ -62,6 +114,15 @@ QJSValue ScriptKernel::createFormat(const QJSValue& spec)
             return {};
         }
         format.decimals = static_cast<int>(decimals);
+    }
+    if (spec.hasProperty("scale")) {
+        const double scale = spec.property("scale").toNumber();
+        if (!std::isfinite(scale) || scale == 0) {
+            m_engine->throwError(QJSValue::RangeError,
+                                 QStringLiteral("createFormat(): scale must be a finite, non-zero number"));
+            return {};
+        }
+        format.scale = scale;
     }
     format.trimTrailingZeros = spec.property("trim").toBool();
     format.keepDecimalPoint = spec.property("keepDecimalPoint").toBool();
@@ -89,6 +150,11 @@ QJSValue ScriptKernel::makeVariable(const QJSValue& spec, const QJSValue& format
         numberFormat = base::NumberFormat{};
     }
     const std::string prefix = spec.hasProperty("prefix") ? spec.property("prefix").toString().toStdString() : "";
+    if (prefix.find_first_of("\r\n") != std::string::npos) {
+        // Block templates write prefixes without scanning them: a line break must not get in.
+        m_engine->throwError(QJSValue::TypeError, QStringLiteral("a prefix cannot hold a line break"));
+        return {};
+    }
     const bool force = spec.property("force").toBool();
     return m_engine->newQObject(new VariableObject(m_engine, prefix, force, numberFormat, acceptsText));
 }
@@ -154,11 +220,36 @@ QJSValue ScriptKernel::getCurrentPosition()
 {
     if (!m_position)
         return QJSValue(QJSValue::NullValue);
-    QJSValue point = m_engine->newObject();
-    point.setProperty("x", m_position->x);
-    point.setProperty("y", m_position->y);
-    point.setProperty("z", m_position->z);
-    return point;
+    return scriptPoint(*m_engine, *m_position);
+}
+
+QJSValue ScriptKernel::getProperty(const QJSValue& name)
+{
+    const QString key = name.toString();
+    if (m_properties.isObject() && m_properties.hasOwnProperty(key))
+        return m_properties.property(key);
+    // While the post is only being loaded, getProperty() answers the declared default.
+    const QJSValue declared = m_engine->globalObject().property("post").property("properties");
+    if (!m_properties.isObject() && declared.isObject() && declared.hasOwnProperty(key))
+        return declared.property(key).property("default");
+    m_engine->throwError(
+        QJSValue::ReferenceError,
+        QStringLiteral("getProperty(): the post declares no property '%1' in post.properties").arg(key));
+    return {};
+}
+
+void ScriptKernel::expandCyclePoint(const QJSValue& x, const QJSValue& y, const QJSValue& z)
+{
+    if (!m_expandCycle) {
+        m_engine->throwError(QJSValue::GenericError,
+                             QStringLiteral("expandCyclePoint() works only inside onCyclePoint()"));
+        return;
+    }
+    if (!x.isNumber() || !y.isNumber() || !z.isNumber()) {
+        m_engine->throwError(QJSValue::TypeError, QStringLiteral("expandCyclePoint(x, y, z) needs three numbers"));
+        return;
+    }
+    m_expandCycle({x.toNumber(), y.toNumber(), z.toNumber()});
 }
 
 }  // namespace camwb::post

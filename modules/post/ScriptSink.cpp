@@ -1,11 +1,16 @@
-#include "post/detail/ScriptSink.h"
-
+// Playing CL records through a post: each record becomes a handler call, or for moves without a
+// handler a C++ block template. The kernel's policies apply on the way: arcs are split, or
+// linearised where the post cannot write them; cycles the post does not write are expanded into
+// moves; five-axis moves are refused by three-axis posts; cutter compensation must change on a
+// straight move.
 #include "post/ArcGeometry.h"
+#include "post/detail/ScriptRun.h"
+#include "toolpath/CycleExpansion.h"
+#include "toolpath/MachineSink.h"
 #include "toolpath/RecordNames.h"
 
-#include <QStringList>
-
-#include <filesystem>
+#include <cmath>
+#include <map>
 
 namespace camwb::post {
 
@@ -13,67 +18,72 @@ using namespace toolpath;
 
 namespace {
 
-// Evaluated before the post: variadic writeBlock and the handler trampoline. The trampoline
-// catches what a handler throws, so that a thrown non-Error value is still seen as a failure.
-const char* kPrelude = R"JS(
-var writeBlock = (function (kernel) {
-    return function writeBlock() { kernel.writeBlockWords(Array.prototype.slice.call(arguments)); };
-})(__camwbKernel);
-(function (f, self, args) {
-    try { f.apply(self, args); return undefined; } catch (e) { return { thrown: e }; }
-})
-)JS";
-
-const char* kHandlerNames[] = {"onOpen",       "onSection",    "onToolChange",  "onSpindle",    "onCoolant",
-                               "onFeedMode",   "onWorkOffset", "onRapid",       "onLinear",     "onCircular",
-                               "onLinear5D",   "onCycle",      "onComment",     "onCutterComp", "onDwell",
-                               "onSectionEnd", "onStop",       "onPassThrough", "onClose"};
-
 QString qs(const std::string& text) { return QString::fromStdString(text); }
+
+int compCode(CutterCompSide side)
+{
+    return side == CutterCompSide::Left ? 41 : side == CutterCompSide::Right ? 42 : 40;
+}
+
+// A message once per run for something that happened `count` times, first at `first`.
+struct Tally {
+    long long first = -1;
+    int count = 0;
+    void add(long long record)
+    {
+        if (count++ == 0)
+            first = record;
+    }
+};
 
 }  // namespace
 
-// Turns each CL record into a handler call; records without a handler give one warning per kind.
 class ScriptSink : public MachineSink {
 public:
-    explicit ScriptSink(ScriptRun& run) : m_run(run) {}
+    explicit ScriptSink(ScriptRun& run) : m_run(run), m_caps(run.m_capabilities) {}
 
-    bool failed() const { return m_run.m_failure.has_value(); }
-    const std::map<std::string, int>& unhandled() const { return m_unhandled; }
-
-    void rapid(const Rapid& r) override { move("onRapid", {r.to.x, r.to.y, r.to.z}, r.to); }
-    void linear(const Linear& r) override { move("onLinear", {r.to.x, r.to.y, r.to.z, r.feedMmPerMin}, r.to); }
+    void rapid(const Rapid& r) override { straight(Handler::Rapid, r.to, 0); }
+    void linear(const Linear& r) override { straight(Handler::Linear, r.to, r.feedMmPerMin); }
     void arc(const Arc& r) override;
-    void toolChange(const ToolChange& r) override
-    {
-        const Tool& t = r.tool;
-        QJSValue tool = engine().newObject();
-        tool.setProperty("number", t.number);
-        tool.setProperty("name", qs(t.name));
-        tool.setProperty("kind", qs(t.kind));
-        tool.setProperty("diameter", t.diameterMm);
-        tool.setProperty("cornerRadius", t.cornerRadiusMm);
-        tool.setProperty("fluteLength", t.fluteLengthMm);
-        tool.setProperty("length", t.lengthMm);
-        tool.setProperty("flutes", t.flutes);
-        handle("onToolChange", {tool});
-    }
-    void spindle(const Spindle& r) override { handle("onSpindle", {r.rpm, r.clockwise}); }
-    void coolant(const Coolant& r) override { handle("onCoolant", {QString(toolpath::name(r.mode))}); }
-    void feedMode(const FeedModeChange& r) override { handle("onFeedMode", {QString(toolpath::name(r.mode))}); }
-    void workOffset(const WorkOffset& r) override { handle("onWorkOffset", {r.index}); }
-    void dwell(const Dwell& r) override { handle("onDwell", {r.seconds}); }
     void cycle(const Cycle& r) override;
+    void toolChange(const ToolChange& r) override { handle(Handler::ToolChange, {toolObject(r.tool)}); }
+    void spindle(const Spindle& r) override
+    {
+        m_spindle = {r.rpm, r.clockwise};
+        handle(Handler::Spindle, {r.rpm, r.clockwise});
+    }
+    void coolant(const Coolant& r) override { handle(Handler::Coolant, {QString(toolpath::name(r.mode))}); }
+    void feedMode(const FeedModeChange& r) override
+    {
+        m_inverseTime = r.mode == FeedMode::InverseTime;
+        handle(Handler::FeedMode, {QString(toolpath::name(r.mode))});
+    }
+    void workOffset(const WorkOffset& r) override { handle(Handler::WorkOffset, {r.index}); }
+    void dwell(const Dwell& r) override { handle(Handler::Dwell, {r.seconds}); }
     void toolAxisMove(const ToolAxisMove& r) override
     {
-        move("onLinear5D", {r.tip.x, r.tip.y, r.tip.z, r.axis.x, r.axis.y, r.axis.z, r.feedMmPerMin}, r.tip);
+        const Vec3& a = r.axis;
+        if (m_caps.maxAxes < 5 && std::abs(a.x) < 1e-9 && std::abs(a.y) < 1e-9 && a.z > 0) {
+            // Along +Z a five-axis move is a three-axis one.
+            straight(r.feedMmPerMin > 0 ? Handler::Linear : Handler::Rapid, r.tip, r.feedMmPerMin);
+            return;
+        }
+        if (m_caps.maxAxes < 5) {
+            m_run.fail("five-axis move (tool axis " + std::to_string(r.axis.x) + ", " + std::to_string(r.axis.y) +
+                       ", " + std::to_string(r.axis.z) + ") but post " + m_run.m_postId + " drives " +
+                       std::to_string(m_caps.maxAxes) + " axes");
+            return;
+        }
+        handle(Handler::Linear5D, {r.tip.x, r.tip.y, r.tip.z, r.axis.x, r.axis.y, r.axis.z, r.feedMmPerMin});
+        m_run.m_kernel->setPosition(r.tip);
     }
     void cutterComp(const CutterComp& r) override
     {
-        const char* side = toolpath::name(r.side);
-        handle("onCutterComp", {QString(side)});
+        m_compChanged = m_compChanged || r.side != m_comp;
+        m_comp = r.side;
+        handle(Handler::CutterComp, {QString(toolpath::name(r.side))});
     }
-    void comment(const Comment& r) override { handle("onComment", {qs(r.text)}); }
+    void comment(const Comment& r) override { handle(Handler::Comment, {qs(r.text)}); }
     void sectionBegin(const SectionBegin& r) override
     {
         QJSValue section = engine().newObject();
@@ -88,253 +98,288 @@ public:
         feeds.setProperty("exit", r.feeds.exitMmPerMin);
         feeds.setProperty("finishing", r.feeds.finishingMmPerMin);
         section.setProperty("feeds", feeds);
-        handle("onSection", {section});
+        handle(Handler::Section, {section});
     }
-    void sectionEnd(const SectionEnd&) override { handle("onSectionEnd", {}); }
-    void programStop(const ProgramStop& r) override { handle("onStop", {r.optional}); }
-    void passThrough(const PassThrough& r) override { handle("onPassThrough", {qs(r.text)}); }
+    void sectionEnd(const SectionEnd&) override { handle(Handler::SectionEnd, {}); }
+    void programStop(const ProgramStop& r) override { handle(Handler::Stop, {r.optional}); }
+    void passThrough(const PassThrough& r) override { handle(Handler::PassThrough, {qs(r.text)}); }
     void setSource(const SourceRef& source) override
     {
         m_operation = source.operationIndex;
         m_run.m_kernel->writer().setOperation(source.operationIndex);
     }
 
-    void setRecord(std::size_t index, const char* name)
+    QJSValue toolObject(const Tool& t)
     {
-        m_recordName = name;
-        m_run.m_where = "CL record " + std::to_string(index) + " " + name;
+        QJSValue tool = engine().newObject();
+        tool.setProperty("number", t.number);
+        tool.setProperty("name", qs(t.name));
+        tool.setProperty("kind", qs(t.kind));
+        tool.setProperty("diameter", t.diameterMm);
+        tool.setProperty("cornerRadius", t.cornerRadiusMm);
+        tool.setProperty("fluteLength", t.fluteLengthMm);
+        tool.setProperty("length", t.lengthMm);
+        tool.setProperty("flutes", t.flutes);
+        return tool;
+    }
+
+    // Warnings for what this run could not write as the CL said, once per kind.
+    void report(std::vector<PostMessage>& messages) const
+    {
+        const std::string& file = m_run.m_postFile;
+        for (const auto& [what, count] : m_unhandled)
+            messages.push_back({PostMessage::Severity::Warning,
+                                "post " + m_run.m_postId + " has no handler for " + what + "; " +
+                                    std::to_string(count) + (count == 1 ? " record" : " records") + " not output",
+                                file, 0});
+        if (m_missingFeed.count > 0)
+            messages.push_back({PostMessage::Severity::Warning,
+                                std::to_string(m_missingFeed.count) +
+                                    " feed moves without a feed rate: F not written (first: CL record " +
+                                    std::to_string(m_missingFeed.first) + ")",
+                                file, 0});
+        for (const auto& [reason, tally] : m_linearised)
+            messages.push_back({PostMessage::Severity::Warning,
+                                std::to_string(tally.count) + (tally.count == 1 ? " arc" : " arcs") + " " + reason +
+                                    ": written as lines within " +
+                                    base::NumberFormat{6, true}.format(m_caps.toleranceMm) + " mm (first: CL record " +
+                                    std::to_string(tally.first) + ")",
+                                file, 0});
     }
 
 private:
     QJSEngine& engine() { return m_run.m_engine; }
 
-    bool handle(const char* handler, const QJSValueList& args)
+    void handle(Handler handler, const QJSValueList& args)
     {
-        bool handled = false;
-        const bool ok = m_run.call(handler, args, handled);
-        if (!handled)
-            ++m_unhandled[std::string(m_recordName) + " (" + handler + ")"];
-        return ok && handled;
-    }
-    void move(const char* handler, const QJSValueList& args, const Vec3& to)
-    {
-        handle(handler, args);
-        m_run.m_kernel->setPosition(to);  // getCurrentPosition() is the start point inside a handler
-    }
-    void fail(const std::string& message)
-    {
-        m_run.m_failure = base::makeError(message + " (" + m_run.m_where + ")", m_run.m_postFile);
+        if (!m_run.has(handler)) {
+            ++m_unhandled[std::string(m_run.m_recordName) + " (" + handlerName(handler) + ")"];
+            return;
+        }
+        m_run.call(handler, args);
     }
 
+    void straight(Handler handler, const Vec3& to, double feed);
+    // An inverse-time feed says in how many minutes the whole move takes: each of n pieces is n times faster.
+    double pieceFeed(double feed, std::size_t pieces) const
+    {
+        return m_inverseTime ? feed * static_cast<double>(pieces) : feed;
+    }
+    void arcPiece(const ArcPiece& piece, const Arc& arc, int pieceIndex, int pieces);
+    void expandHole(const Cycle& cycle, const Vec3& hole);
+
     ScriptRun& m_run;
+    const PostCapabilities& m_caps;
     std::map<std::string, int> m_unhandled;
-    const char* m_recordName = "";
+    std::map<std::string, Tally> m_linearised;  // by reason
+    Tally m_missingFeed;
+    SpindleState m_spindle;
+    CutterCompSide m_comp = CutterCompSide::Off;
+    bool m_inverseTime = false;
+    bool m_compChanged = false;  // since the last straight move
     int m_operation = -1;
 };
 
+void ScriptSink::straight(Handler handler, const Vec3& to, double feed)
+{
+    ScriptKernel& kernel = *m_run.m_kernel;
+    const bool isLinear = handler == Handler::Linear;
+    if (m_run.has(handler)) {
+        if (isLinear)
+            m_run.call(handler, {to.x, to.y, to.z, feed});
+        else
+            m_run.call(handler, {to.x, to.y, to.z});
+    } else if (std::optional<BlockTemplate>& block = isLinear ? m_run.m_templates.linear : m_run.m_templates.rapid) {
+        MoveValues move;
+        move.start = kernel.position().value_or(to);
+        move.end = to;
+        move.feed = feed;
+        move.motion = isLinear ? 1 : 0;
+        move.comp = compCode(m_comp);
+        bool missingFeed = false;
+        block->write(move, kernel.writer(), missingFeed);
+        if (missingFeed)
+            m_missingFeed.add(m_run.m_recordIndex);
+    } else {
+        ++m_unhandled[std::string(m_run.m_recordName) + " (" + handlerName(handler) + ")"];
+    }
+    m_compChanged = false;
+    kernel.setPosition(to);  // getCurrentPosition() is the start point inside a handler
+}
+
 void ScriptSink::arc(const Arc& r)
 {
-    const auto& start = m_run.m_kernel->position();
+    ScriptKernel& kernel = *m_run.m_kernel;
+    const std::optional<Vec3> start = kernel.position();
     if (!start) {
-        fail("arc with an unknown start point: no motion before it");
+        m_run.fail("arc with an unknown start point: no motion before it");
         return;
     }
-    const std::vector<ArcPiece> pieces = splitArc(*start, r, m_run.m_maxArcSweepDeg);
+    if (m_compChanged) {
+        m_run.fail("cutter compensation changes on an arc; controls need a straight move to start or end it");
+        return;
+    }
+    // Splitting first also rejects degenerate arcs and gives the radius and helix test.
+    const double maxSweep = m_caps.arcRadiusWords ? std::min(m_caps.maxArcSweepDeg, 359.9) : m_caps.maxArcSweepDeg;
+    const std::vector<ArcPiece> pieces = splitArc(*start, r, maxSweep);
     if (pieces.empty()) {
-        fail("degenerate arc: zero radius");
+        m_run.fail("degenerate arc: zero radius");
         return;
     }
     const std::string plane = arcPlane(r.normal);
-    for (std::size_t i = 0; i < pieces.size() && !failed(); ++i) {
-        const ArcPiece& p = pieces[i];
-        m_run.m_kernel->setPosition(p.start);
+    std::string reason;
+    if (plane.empty())
+        reason = "in an oblique plane";
+    else if (std::find(m_caps.arcPlanes.begin(), m_caps.arcPlanes.end(), plane) == m_caps.arcPlanes.end())
+        reason = "in the " + plane + " plane, which the post does not write";
+    else if (pieces.front().helical && !m_caps.helicalArcs)
+        reason = "helical, which the post does not write";
+    else if (pieces.front().radius < m_caps.minArcRadiusMm || pieces.front().radius > m_caps.maxArcRadiusMm)
+        reason = "outside the post's arc radius range";
+    if (!reason.empty()) {
+        m_linearised[reason].add(m_run.m_recordIndex);
+        const std::vector<Vec3> points = linearizeArc(*start, r, m_caps.toleranceMm);
+        for (const Vec3& point : points)
+            straight(Handler::Linear, point, pieceFeed(r.feedMmPerMin, points.size()));
+        return;
+    }
+    for (std::size_t i = 0; i < pieces.size() && !m_run.m_failure; ++i)
+        arcPiece(pieces[i], r, static_cast<int>(i), static_cast<int>(pieces.size()));
+    kernel.setPosition(r.to);
+}
+
+void ScriptSink::arcPiece(const ArcPiece& p, const Arc& arc, int pieceIndex, int pieces)
+{
+    ScriptKernel& kernel = *m_run.m_kernel;
+    kernel.setPosition(p.start);
+    // Radius words: a negative radius selects the arc longer than a half circle.
+    const double radius = m_caps.arcRadiusWords && p.sweepDeg > 180 + 1e-9 ? -p.radius : p.radius;
+    const std::string plane = arcPlane(p.normal);
+    if (m_run.has(Handler::Circular)) {
         QJSValue info = engine().newObject();
-        auto point = [this](const Vec3& v) {
-            QJSValue o = engine().newObject();
-            o.setProperty("x", v.x);
-            o.setProperty("y", v.y);
-            o.setProperty("z", v.z);
-            return o;
-        };
         info.setProperty("plane", qs(plane));
-        info.setProperty("normal", point(p.normal));
+        info.setProperty("normal", scriptPoint(engine(), p.normal));
         info.setProperty("helical", p.helical);
         info.setProperty("sweep", p.sweepDeg);
-        info.setProperty("start", point(p.start));
-        info.setProperty("turns", r.turns);
-        info.setProperty("piece", static_cast<int>(i));
-        info.setProperty("pieces", static_cast<int>(pieces.size()));
-        handle("onCircular",
-               {p.clockwise, p.center.x, p.center.y, p.center.z, p.end.x, p.end.y, p.end.z, r.feedMmPerMin, info});
-        if (!m_run.m_handlers.count("onCircular"))
-            break;  // one warning, not one per piece
+        info.setProperty("radius", radius);
+        info.setProperty("start", scriptPoint(engine(), p.start));
+        info.setProperty("turns", arc.turns);
+        info.setProperty("piece", pieceIndex);
+        info.setProperty("pieces", pieces);
+        m_run.call(Handler::Circular, {p.clockwise, p.center.x, p.center.y, p.center.z, p.end.x, p.end.y, p.end.z,
+                                       pieceFeed(arc.feedMmPerMin, static_cast<std::size_t>(pieces)), info});
+    } else if (std::optional<BlockTemplate>& block = m_run.m_templates.circular[BlockTemplates::planeIndex(plane)]) {
+        MoveValues move;
+        move.start = p.start;
+        move.end = p.end;
+        move.center = p.center;
+        move.radius = radius;
+        move.feed = pieceFeed(arc.feedMmPerMin, static_cast<std::size_t>(pieces));
+        move.sweepDeg = p.sweepDeg;
+        move.motion = p.clockwise ? 2 : 3;
+        move.plane = 17 + BlockTemplates::planeIndex(plane);
+        move.comp = compCode(m_comp);
+        move.helical = p.helical;
+        bool missingFeed = false;
+        block->write(move, kernel.writer(), missingFeed);
+        if (missingFeed)
+            m_missingFeed.add(m_run.m_recordIndex);
+    } else if (pieceIndex == 0) {  // one count per arc, not per piece
+        ++m_unhandled[std::string(m_run.m_recordName) + " (onCircular)"];
     }
-    m_run.m_kernel->setPosition(r.to);
+    kernel.setPosition(p.end);
 }
 
-void ScriptSink::cycle(const Cycle& r)
+void ScriptSink::expandHole(const Cycle& cycle, const Vec3& hole)
 {
+    const Vec3 from = m_run.m_kernel->position().value_or(Vec3{hole.x, hole.y, cycleReturnZ(cycle)});
+    for (const Record& record : expandCycleHole(cycle, hole, from, m_spindle)) {
+        if (m_run.m_failure)
+            return;
+        dispatch(record, *this);
+    }
+}
+
+void ScriptSink::cycle(const Cycle& c)
+{
+    const std::string kind = toolpath::name(c.kind);
+    const bool native =
+        m_caps.cyclesDeclared ? m_caps.writesCycle(kind) : m_run.has(Handler::Cycle) || m_run.has(Handler::CyclePoint);
+    if (!native) {
+        for (const Vec3& hole : c.holes)
+            expandHole(c, hole);
+        return;
+    }
     QJSValue cycle = engine().newObject();
-    cycle.setProperty("kind", QString(toolpath::name(r.kind)));
-    cycle.setProperty("clearanceZ", r.clearanceZ);
-    cycle.setProperty("retractZ", r.retractZ);
-    cycle.setProperty("topZ", r.topZ);
-    cycle.setProperty("bottomZ", r.bottomZ);
-    cycle.setProperty("peck", r.peckMm);
-    cycle.setProperty("dwell", r.dwellSeconds);
-    cycle.setProperty("feed", r.feedMmPerMin);
-    QJSValue holes = engine().newArray(static_cast<uint>(r.holes.size()));
-    for (std::size_t i = 0; i < r.holes.size(); ++i) {
-        QJSValue hole = engine().newObject();
-        hole.setProperty("x", r.holes[i].x);
-        hole.setProperty("y", r.holes[i].y);
-        hole.setProperty("z", r.holes[i].z);
-        holes.setProperty(static_cast<quint32>(i), hole);
-    }
+    cycle.setProperty("kind", qs(kind));
+    cycle.setProperty("clearanceZ", c.clearanceZ);
+    cycle.setProperty("retractZ", c.retractZ);
+    cycle.setProperty("returnZ", cycleReturnZ(c));
+    cycle.setProperty("returnToClearance", c.returnToClearance);
+    cycle.setProperty("topZ", c.topZ);
+    cycle.setProperty("bottomZ", c.bottomZ);
+    cycle.setProperty("peck", c.peckMm);
+    cycle.setProperty("dwell", c.dwellSeconds);
+    cycle.setProperty("feed", c.feedMmPerMin);
+    cycle.setProperty("spindleRpm", m_spindle.rpm);
+    cycle.setProperty("spindleClockwise", m_spindle.clockwise);
+    cycle.setProperty("peckClearance", kPeckClearanceMm);  // what the kernel's expansion uses
+    QJSValue holes = engine().newArray(static_cast<uint>(c.holes.size()));
+    for (std::size_t i = 0; i < c.holes.size(); ++i)
+        holes.setProperty(static_cast<quint32>(i), scriptPoint(engine(), c.holes[i]));
     cycle.setProperty("holes", holes);
-    handle("onCycle", {cycle});
-    // After a cycle the tool stands over the last hole at the clearance plane.
-    if (!r.holes.empty())
-        m_run.m_kernel->setPosition(Vec3{r.holes.back().x, r.holes.back().y, r.clearanceZ});
+
+    ScriptKernel& kernel = *m_run.m_kernel;
+    if (!m_run.call(Handler::Cycle, {cycle}))
+        return;
+    for (const Vec3& hole : c.holes) {
+        if (m_run.has(Handler::CyclePoint)) {
+            kernel.setCycleExpander([this, &c](const Vec3& point) { expandHole(c, point); });
+            const bool ok = m_run.call(Handler::CyclePoint, {hole.x, hole.y, hole.z});
+            kernel.setCycleExpander({});
+            if (!ok)
+                return;
+        }
+        // After each hole the tool stands over it at the return plane.
+        kernel.setPosition(Vec3{hole.x, hole.y, cycleReturnZ(c)});
+    }
+    m_run.call(Handler::CycleEnd, {cycle});
 }
 
-ScriptRun::ScriptRun(std::string postFile, const PostContext& context) :
-    m_postFile(std::move(postFile)),
-    m_kernel(std::make_unique<ScriptKernel>(&m_engine, m_postFile))
-{
-    // Only the ECMAScript built-ins plus the kernel: no console, no file or network access.
-    QJSEngine::setObjectOwnership(m_kernel.get(), QJSEngine::CppOwnership);
-    QJSValue global = m_engine.globalObject();
-    QJSValue kernel = m_engine.newQObject(m_kernel.get());
-    global.setProperty("__camwbKernel", kernel);
-    for (const char* name : {"createFormat", "createVariable", "createModal", "writeComment", "writeln", "warning",
-                             "error", "setBlockNumbering", "getCurrentPosition"})
-        global.setProperty(name, kernel.property(name));  // QObject methods stay bound to the kernel
-    global.setProperty("programName", qs(context.programName));
-    global.setProperty("dateString", qs(formatDateUtc(context.dateEpochSeconds)));
-    global.setProperty("user", qs(context.user));
-    global.setProperty("version", qs(context.version));
-    m_trampoline = m_engine.evaluate(QString::fromUtf8(kPrelude), QStringLiteral("<camwb-kernel>"));
-}
-
-ScriptRun::~ScriptRun() = default;
-
-base::Error ScriptRun::scriptError(const QJSValue& thrown, const std::string& where)
-{
-    std::string message;
-    int line = 0;
-    if (thrown.isError()) {
-        line = thrown.property("lineNumber").toInt();
-        const std::string text = thrown.property("message").toString().toStdString();
-        const std::optional<std::string> postError = m_kernel->takePostError();
-        message = postError && *postError == text ? text : thrown.toString().toStdString();
-    } else {
-        message = "uncaught exception: " + wordText(thrown);
-    }
-    if (!where.empty())
-        message += " (" + where + ")";
-    return base::makeError(message, m_postFile, line);
-}
-
-base::Status ScriptRun::evaluate(const std::string& source, PostInfo& info)
-{
-    QStringList stack;
-    const QJSValue result = m_engine.evaluate(qs(source), qs(m_postFile), 1, &stack);
-    if (result.isError())
-        return scriptError(result, {});
-    if (!stack.isEmpty()) {  // a thrown non-Error value: the stack's first frame is "function:line:column:file"
-        const QStringList parts = stack.first().split(QLatin1Char(':'));
-        return base::makeError("uncaught exception: " + wordText(result), m_postFile,
-                               parts.size() > 1 ? parts[1].toInt() : 0);
-    }
-    m_post = m_engine.globalObject().property("post");
-    if (!m_post.isObject())
-        return base::makeError("the post script defines no `post` object", m_postFile);
-    auto text = [this](const char* name) {
-        const QJSValue value = m_post.property(name);
-        return value.isUndefined() || value.isNull() ? std::string() : value.toString().toStdString();
-    };
-    info.filePath = m_postFile;
-    info.id = text("id");
-    if (info.id.empty())
-        info.id = std::filesystem::path(m_postFile).stem().string();
-    info.description = text("description");
-    info.vendor = text("vendor");
-    info.extension = text("extension");
-    if (info.extension.empty())
-        info.extension = "nc";
-    if (!info.extension.empty() && info.extension.front() == '.')
-        info.extension.erase(0, 1);
-    m_postId = info.id;
-    const QJSValue sweep = m_post.property("maxArcSweep");
-    if (sweep.isNumber()) {
-        if (!(sweep.toNumber() >= 1 && sweep.toNumber() <= 360))
-            return base::makeError("post.maxArcSweep must be 1..360 degrees", m_postFile);
-        m_maxArcSweepDeg = sweep.toNumber();
-    }
-    for (const char* name : kHandlerNames) {
-        QJSValue handler = m_post.property(name);
-        if (!handler.isCallable())
-            handler = m_engine.globalObject().property(name);
-        if (handler.isCallable())
-            m_handlers.emplace(name, handler);
-    }
-    return {};
-}
-
-bool ScriptRun::call(const char* name, const QJSValueList& args, bool& handled)
-{
-    handled = false;
-    if (m_failure)
-        return false;
-    const auto it = m_handlers.find(name);
-    if (it == m_handlers.end())
-        return true;
-    handled = true;
-    QJSValue argArray = m_engine.newArray(static_cast<uint>(args.size()));
-    for (int i = 0; i < args.size(); ++i)
-        argArray.setProperty(static_cast<quint32>(i), args[i]);
-    const QJSValue result = m_trampoline.call({it->second, m_post, argArray});
-    if (result.isError()) {  // the trampoline itself failed (should not happen)
-        m_failure = scriptError(result, std::string("in ") + name);
-        return false;
-    }
-    if (result.isObject() && result.hasOwnProperty("thrown")) {
-        m_failure =
-            scriptError(result.property("thrown"), std::string("in ") + name + (m_where.empty() ? "" : ", " + m_where));
-        return false;
-    }
-    return true;
-}
-
-base::Result<PostOutput> ScriptRun::play(const Toolpath& toolpath)
+base::Status ScriptRun::play(const Toolpath& toolpath, const ProgramSummary& summary)
 {
     ScriptSink sink(*this);
-    bool unused = false;
-    m_where.clear();
-    call("onOpen", {}, unused);
+    QJSValue program = m_engine.newObject();
+    program.setProperty("workOffset", summary.firstWorkOffset);
+    QJSValue tools = m_engine.newArray(static_cast<uint>(summary.tools.size()));
+    for (std::size_t i = 0; i < summary.tools.size(); ++i)
+        tools.setProperty(static_cast<quint32>(i), sink.toolObject(summary.tools[i]));
+    program.setProperty("tools", tools);
+    if (summary.hasMotion) {
+        QJSValue extents = m_engine.newObject();
+        extents.setProperty("min", scriptPoint(m_engine, summary.min));
+        extents.setProperty("max", scriptPoint(m_engine, summary.max));
+        program.setProperty("extents", extents);
+    } else {
+        program.setProperty("extents", QJSValue(QJSValue::NullValue));
+    }
+
+    m_recordIndex = -1;
+    call(Handler::Open, {program});
     for (std::size_t i = 0; i < toolpath.size() && !m_failure; ++i) {
-        sink.setRecord(i, toolpath::recordName(toolpath.record(i)));
+        m_recordIndex = static_cast<long long>(i);
+        m_recordName = toolpath::recordName(toolpath.record(i));
         sink.setSource(toolpath.source(i));
         dispatch(toolpath.record(i), sink);
     }
-    m_where.clear();
+    m_recordIndex = -1;
     m_kernel->writer().setOperation(-1);
     if (!m_failure)
-        call("onClose", {}, unused);
+        call(Handler::Close, {});
     if (m_failure)
         return *m_failure;
-
-    PostOutput output;
-    output.text = m_kernel->writer().text();
-    output.lineOperation = m_kernel->writer().lineOperation();
-    output.messages = m_kernel->messages();
-    for (const auto& [what, count] : sink.unhandled())
-        output.messages.push_back({PostMessage::Severity::Warning,
-                                   "post " + m_postId + " has no handler for " + what + "; " + std::to_string(count) +
-                                       (count == 1 ? " record" : " records") + " not output",
-                                   m_postFile, 0});
-    return output;
+    sink.report(m_kernel->messages());
+    return {};
 }
 
 }  // namespace camwb::post

@@ -3,6 +3,7 @@
 #include "base/AtomicFile.h"
 #include "document/JobFile.h"
 #include "document/JobPipeline.h"
+#include "kinematics/Machine.h"
 #include "post/PostRegistry.h"
 
 #include <QFileInfo>
@@ -254,7 +255,13 @@ void Workbench::startCompute()
             return outcome;
         }
         outcome->ncExtension = post->info().extension;
-        auto nc = post->run(program.value(), post::PostContext::fromEnvironment(programName));
+        auto options = document::jobRunOptions(job, post.value(), post::PostContext::fromEnvironment(programName),
+                                               kinematics::defaultMachineDirs());
+        if (!options) {
+            outcome->errors.push_back(options.error().toString());
+            return outcome;
+        }
+        auto nc = post->run(program.value(), options.value());
         if (!nc) {
             outcome->errors.push_back(nc.error().toString());
             return outcome;

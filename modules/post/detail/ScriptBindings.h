@@ -1,6 +1,6 @@
 // Private: the kernel services a post script sees (createFormat, createVariable, createModal,
-// writeBlock, ...), as QObjects for QJSEngine. State lives in Qt-free classes (OutputWriter,
-// ModalValue, base::NumberFormat) so that C++ block templates can share it later.
+// writeBlock, getProperty, expandCyclePoint, ...), as QObjects for QJSEngine. State lives in
+// Qt-free classes (OutputWriter, ModalValue, base::NumberFormat) that the C++ block templates share.
 #pragma once
 
 #include "base/NumberFormat.h"
@@ -13,6 +13,7 @@
 #include <QObject>
 #include <QString>
 
+#include <functional>
 #include <optional>
 #include <vector>
 
@@ -32,7 +33,7 @@ private:
 };
 
 // A modal word: createVariable (numbers through a format) and createModal (G/M codes: strings or
-// numbers, numbers through the optional format).
+// numbers, numbers through the optional format). bind() names a move value for block templates.
 class VariableObject : public QObject {
     Q_OBJECT
 public:
@@ -47,6 +48,13 @@ public:
 
     Q_INVOKABLE QString format(const QJSValue& value);
     Q_INVOKABLE void reset() { m_value.reset(); }
+    Q_INVOKABLE QJSValue bind(const QJSValue& valueName);
+    // A new number format from now on (feeds per minute vs per revolution); forgets the last value.
+    Q_INVOKABLE void setFormat(const QJSValue& format);
+
+    // The C++ side of format(): the number's text (into a kBufferSize buffer), then modal().
+    std::size_t textOf(double value, char* out) const;
+    ModalValue& modal() { return m_value; }
 
 private:
     QJSEngine* m_engine;
@@ -66,6 +74,12 @@ public:
     const std::optional<toolpath::Vec3>& position() const { return m_position; }
     // Text of the last error() call by the post; cleared by takePostError().
     std::optional<std::string> takePostError() { return std::exchange(m_postError, std::nullopt); }
+    // Property values for getProperty(); before a run sets them, it answers the declared defaults.
+    void setProperties(QJSValue values) { m_properties = std::move(values); }
+    // What expandCyclePoint(x, y, z) does; empty outside onCyclePoint.
+    void setCycleExpander(std::function<void(const toolpath::Vec3&)> expander) { m_expandCycle = std::move(expander); }
+    // Script line of the innermost script frame calling into the kernel now.
+    int callerLine();
 
     // Overloads by argument count: QJSEngine requires every declared argument.
     Q_INVOKABLE QJSValue createFormat() { return createFormat(QJSValue()); }
@@ -86,10 +100,11 @@ public:
     }
     Q_INVOKABLE void setBlockNumbering(const QJSValue& start, const QJSValue& step, const QJSValue& enabled);
     Q_INVOKABLE QJSValue getCurrentPosition();
+    Q_INVOKABLE QJSValue getProperty(const QJSValue& name);
+    Q_INVOKABLE void expandCyclePoint(const QJSValue& x, const QJSValue& y, const QJSValue& z);
 
 private:
     QJSValue makeVariable(const QJSValue& spec, const QJSValue& format, bool acceptsText);
-    int callerLine();
 
     QJSEngine* m_engine;
     std::string m_postFile;
@@ -97,9 +112,17 @@ private:
     std::vector<PostMessage> m_messages;
     std::optional<toolpath::Vec3> m_position;
     std::optional<std::string> m_postError;
+    QJSValue m_properties;
+    std::function<void(const toolpath::Vec3&)> m_expandCycle;
 };
 
-// Text of a script value for NC words: undefined and null are "".
+// Text of a script value for NC words: undefined and null are "", whole numbers without decimals,
+// other numbers with 3 decimals.
 std::string wordText(const QJSValue& value);
+// The same for a number, into a base::NumberFormat::kBufferSize buffer; returns the length.
+std::size_t numberWordText(double value, char* out);
+
+// A point {x, y, z} as a script object.
+QJSValue scriptPoint(QJSEngine& engine, const toolpath::Vec3& p);
 
 }  // namespace camwb::post

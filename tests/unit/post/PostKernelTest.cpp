@@ -146,7 +146,8 @@ function onLinear(x, y, z, f) {
 
 TEST(PostKernel, ErrorCallAbortsWithItsText)
 {
-    const auto output = runScript("error.js", "var post = {id: 'e'};\nfunction onClose() {\n  error('no way');\n}\n");
+    const auto output =
+        runScript("error.js", "var post = {id: 'error'};\nfunction onClose() {\n  error('no way');\n}\n");
     ASSERT_FALSE(output.ok());
     EXPECT_EQ(output.error().line, 3);
     EXPECT_EQ(output.error().message, "no way (in onClose)");
@@ -154,10 +155,10 @@ TEST(PostKernel, ErrorCallAbortsWithItsText)
 
 TEST(PostKernel, ThrownNonErrorValuesAreFailures)
 {
-    const auto output = runScript("string.js", "var post = {id: 's'};\nfunction onOpen() { throw 'oops'; }\n");
+    const auto output = runScript("string.js", "var post = {};\nfunction onOpen() { throw 'oops'; }\n");
     ASSERT_FALSE(output.ok());
     EXPECT_EQ(output.error().message, "uncaught exception: oops (in onOpen)");
-    const auto top = PostProcessor::load(writeScript("top.js", "var post = {id: 't'};\n\nthrow 'at load';\n"));
+    const auto top = PostProcessor::load(writeScript("top.js", "var post = {id: 'top'};\n\nthrow 'at load';\n"));
     ASSERT_FALSE(top.ok());
     EXPECT_EQ(top.error().line, 3);
 }
@@ -181,28 +182,32 @@ function onOpen() { writeln([typeof console, typeof print, typeof XMLHttpRequest
 
 TEST(PostRegistry, FindsPostsAndListsWhereItLooked)
 {
-    const auto found = findPost("sinumerik828d-emco", {"/nonexistent", kPostsDir});
+    const std::vector<base::DataDir> dirs{{"/nonexistent", false}, {kPostsDir, true}};
+    const auto found = findPost("sinumerik828d-emco", dirs);
     ASSERT_TRUE(found.ok()) << found.error().toString();
     EXPECT_EQ(found.value(), kEmcoPost);
 
-    const auto missing = findPost("no-such-post", {"/nonexistent", kPostsDir});
+    const auto missing = findPost("no-such-post", dirs);
     ASSERT_FALSE(missing.ok());
     EXPECT_NE(missing.error().message.find("post 'no-such-post' not found"), std::string::npos);
     EXPECT_NE(missing.error().message.find("/nonexistent/no-such-post.js"), std::string::npos);
     EXPECT_NE(missing.error().message.find(kPostsDir + "/no-such-post.js"), std::string::npos);
 
-    EXPECT_FALSE(findPost("../etc/passwd", {kPostsDir}).ok());
+    EXPECT_FALSE(findPost("../etc/passwd", dirs).ok());
 }
 
 TEST(PostRegistry, DefaultDirsHonourCamwbPostPath)
 {
     setenv("CAMWB_POST_PATH", "/a:/b", 1);
-    const std::vector<std::string> dirs = defaultPostDirs();
+    const std::vector<base::DataDir> dirs = defaultPostDirs({"/extra"});
     unsetenv("CAMWB_POST_PATH");
-    ASSERT_GE(dirs.size(), 3u);
-    EXPECT_EQ(dirs[0], "/a");
-    EXPECT_EQ(dirs[1], "/b");
-    EXPECT_EQ(dirs.back(), std::string(CAMWB_TEST_DATA_DIR) + "/posts");
+    ASSERT_GE(dirs.size(), 4u);
+    EXPECT_EQ(dirs[0].path, "/extra");
+    EXPECT_EQ(dirs[1].path, "/a");
+    EXPECT_EQ(dirs[2].path, "/b");
+    EXPECT_FALSE(dirs[0].builtIn || dirs[1].builtIn || dirs[2].builtIn);
+    EXPECT_EQ(dirs.back().path, std::string(CAMWB_TEST_DATA_DIR) + "/posts");
+    EXPECT_TRUE(dirs.back().builtIn);
     EXPECT_TRUE(findPost("sinumerik828d-emco", defaultPostDirs()).ok());
 }
 

@@ -11,6 +11,8 @@
 #include <string>
 #include <vector>
 
+#include <unistd.h>
+
 namespace camwb::post::test {
 
 inline const std::string kPostsDir = std::string(CAMWB_TEST_DATA_DIR) + "/posts";
@@ -54,10 +56,12 @@ inline std::vector<std::string> wordLines(const std::string& text)
     return result;
 }
 
-// Writes a script into the test's temp folder and returns its path.
+// Writes a script into this test process's temp folder and returns its path. The folder is per
+// process because ctest runs tests in parallel and a post's file name is its id.
 inline std::string writeScript(const std::string& name, const std::string& source)
 {
-    const std::filesystem::path dir = std::filesystem::path(testing::TempDir()) / "camwb-post-tests";
+    const std::filesystem::path dir =
+        std::filesystem::path(testing::TempDir()) / ("camwb-post-tests-" + std::to_string(::getpid()));
     std::filesystem::create_directories(dir);
     const std::filesystem::path path = dir / name;
     std::ofstream(path, std::ios::binary) << source;

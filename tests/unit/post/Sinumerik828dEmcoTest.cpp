@@ -1,4 +1,5 @@
-// The EMCO Concept MILL 105 / SINUMERIK 828D post against the seed-004 output rules.
+// The EMCO Concept MILL 105 / SINUMERIK 828D post against the seed-004 output rules the control
+// proved, and the gaps it closes (cycles, M5/M9, D1, coolant, cutter compensation, units).
 #include "PostTestSupport.h"
 
 #include <algorithm>
@@ -18,22 +19,30 @@ protected:
         m_post = std::move(loaded).value();
     }
 
-    PostOutput run(const Toolpath& toolpath)
+    PostOutput run(const Toolpath& toolpath, std::map<std::string, std::string> properties = {})
     {
-        auto output = m_post->run(toolpath, fixedContext());
+        RunOptions options;
+        options.context = fixedContext();
+        options.properties = std::move(properties);
+        auto output = m_post->run(toolpath, options);
         EXPECT_TRUE(output.ok()) << output.error().toString();
         return output.ok() ? output.value() : PostOutput{};
     }
 
-    // Word lines after the fixed header and preamble (6 lines), without the final M30.
-    std::vector<std::string> body(const Toolpath& toolpath)
+    // Word lines between the preamble (ending with "G5x G90") and the postamble ("M5 M9", "M30").
+    std::vector<std::string> body(const Toolpath& toolpath, std::map<std::string, std::string> properties = {})
     {
-        std::vector<std::string> all = wordLines(run(toolpath).text);
-        EXPECT_GE(all.size(), 8u);
-        if (all.size() < 8)
+        const std::vector<std::string> all = wordLines(run(toolpath, std::move(properties)).text);
+        const auto preamble = std::find_if(all.begin(), all.end(), [](const std::string& l) {
+            return l.size() == 7 && l.rfind("G5", 0) == 0 && l.substr(3) == " G90";
+        });
+        EXPECT_NE(preamble, all.end());
+        EXPECT_GE(all.size(), 2u);
+        if (preamble == all.end() || all.size() < 2)
             return {};
+        EXPECT_EQ(all[all.size() - 2], "M5 M9");
         EXPECT_EQ(all.back(), "M30");
-        return {all.begin() + 6, all.end() - 1};
+        return {preamble + 1, all.end() - 2};
     }
 
     static Toolpath sectionWithTool(int tool = 1)
@@ -44,15 +53,23 @@ protected:
         path.add(Spindle{2000, true}, {0, 2});
         return path;
     }
+    // The section's own first lines: comment, M5 M9, tool comment, M6, M3.
+    static constexpr std::size_t kSectionLines = 5;
 
     std::optional<PostProcessor> m_post;
 };
 
 TEST_F(EmcoPost, Metadata)
 {
-    EXPECT_EQ(m_post->info().id, "sinumerik828d-emco");
-    EXPECT_EQ(m_post->info().extension, "mpf");
-    EXPECT_EQ(m_post->info().filePath, kEmcoPost);
+    const PostInfo& info = m_post->info();
+    EXPECT_EQ(info.id, "sinumerik828d-emco");
+    EXPECT_EQ(info.extension, "mpf");
+    EXPECT_EQ(info.filePath, kEmcoPost);
+    EXPECT_EQ(info.defaultMachine, "emco-concept-mill-105");
+    EXPECT_EQ(info.machines, std::vector<std::string>{"emco-concept-mill-105"});
+    EXPECT_EQ(info.capabilities.cycles.size(), 6u);
+    for (const char* name : {"toolChangeComment", "drillingCalls", "units", "sequenceStart", "sequenceStep"})
+        EXPECT_NE(info.property(name), nullptr) << name;
 }
 
 TEST_F(EmcoPost, EmptyToolpathPinsPreambleAndPostamble)
@@ -63,47 +80,68 @@ TEST_F(EmcoPost, EmptyToolpathPinsPreambleAndPostamble)
                            "N30 ;user tester\n"
                            "N40 ;date 15.05.2018 21:09:46\n"
                            "N50 G17 G40\n"
-                           "N60 G54 G90\n"
-                           "N70 M30\n");
-    EXPECT_EQ(output.lineOperation, std::vector<int>(7, -1));
+                           "N60 G710\n"
+                           "N70 G54 G90\n"
+                           "N80 M5 M9\n"
+                           "N90 M30\n");
+    EXPECT_EQ(output.lineOperation, std::vector<int>(9, -1));
     EXPECT_TRUE(output.messages.empty());
 }
 
-TEST_F(EmcoPost, BlockNumbersStartAt10Step10)
+TEST_F(EmcoPost, ThesisPreambleAndToolCommentAreProperties)
+{
+    Toolpath path;
+    path.add(ToolChange{Tool{1}});
+    const std::vector<std::string> all =
+        lines(run(path, {{"units", "none"}, {"toolChangeComment", "Vymena nastroje"}}).text);
+    ASSERT_EQ(all.size(), 11u);
+    EXPECT_EQ(all[4], "N50 G17 G40");
+    EXPECT_EQ(all[5], "N60 G54 G90");
+    EXPECT_EQ(all[7], "N80 ;Vymena nastroje");
+    EXPECT_EQ(all[8], "N90 M6 T1 D1");
+}
+
+TEST_F(EmcoPost, BlockNumbersStartAt10Step10OrAsConfigured)
 {
     const std::vector<std::string> all = lines(run(sectionWithTool()).text);
     for (std::size_t i = 0; i < all.size(); ++i)
         EXPECT_EQ(all[i].substr(0, all[i].find(' ')), "N" + std::to_string(10 * (i + 1))) << all[i];
+    const std::vector<std::string> custom =
+        lines(run(sectionWithTool(), {{"sequenceStart", "100"}, {"sequenceStep", "5"}}).text);
+    EXPECT_EQ(custom[0].substr(0, 5), "N100 ");
+    EXPECT_EQ(custom[1].substr(0, 5), "N105 ");
 }
 
 TEST_F(EmcoPost, CommentsAreSemicolonFirstWithoutParentheses)
 {
     Toolpath path;
     path.add(Comment{"(T1: D16)"});
-    const std::vector<std::string> all = lines(run(path).text);
-    ASSERT_EQ(all.size(), 8u);
-    EXPECT_EQ(all[6], "N70 ;T1: D16");
+    EXPECT_EQ(body(path), std::vector<std::string>{";T1: D16"});
+    EXPECT_NE(run(path).text.find("\nN80 ;T1: D16\n"), std::string::npos);
 }
 
-TEST_F(EmcoPost, ToolChangeAndSpindle)
+TEST_F(EmcoPost, ToolChangeStopsSpindleAndCoolantAndCallsD1)
 {
     Toolpath path = sectionWithTool(3);
     path.add(Spindle{1500.9, false});
     path.add(Spindle{0, true});
-    EXPECT_EQ(body(path),
-              (std::vector<std::string>{";Profile 1", ";Tool change", "M6 T3", "M3 S2000", "M4 S1500", "M5"}));
+    EXPECT_EQ(body(path), (std::vector<std::string>{";Profile 1", "M5 M9", ";Tool change", "M6 T3 D1", "M3 S2000",
+                                                    "M4 S1500", "M5"}));
 }
 
-TEST_F(EmcoPost, WorkOffsetRecordFirstReplacesG54)
+TEST_F(EmcoPost, WorkOffsetsBeforeTheFirstMoveChooseThePreamble)
 {
     Toolpath path;
     path.add(WorkOffset{2});
     path.add(Comment{"x"});
     path.add(WorkOffset{4});
+    path.add(Rapid{{0, 0, 10}});
+    path.add(WorkOffset{4});
+    path.add(WorkOffset{7});
     const std::vector<std::string> all = wordLines(run(path).text);
-    ASSERT_EQ(all.size(), 9u);
-    EXPECT_EQ(all[5], "G55 G90");
-    EXPECT_EQ(all[7], "G57");
+    EXPECT_EQ(all[6], "G55 G90");  // the first WorkOffset is the program's
+    EXPECT_EQ(std::vector<std::string>(all.begin() + 7, all.end() - 2),
+              (std::vector<std::string>{";x", "G57", "G0 X0.000 Y0.000 Z10.000", "G507"}));
 }
 
 TEST_F(EmcoPost, ModalMotionWordIsOmittedWhenUnchanged)
@@ -115,12 +153,9 @@ TEST_F(EmcoPost, ModalMotionWordIsOmittedWhenUnchanged)
     path.add(Linear{{7, -20, 10}, 200});
     path.add(Rapid{{7, -20, 20}});
     const std::vector<std::string> b = body(path);
-    ASSERT_EQ(b.size(), 9u);
-    EXPECT_EQ(b[4], "G0 X0.000 Y0.000 Z20.000");
-    EXPECT_EQ(b[5], "X6.000 Y-20.000");
-    EXPECT_EQ(b[6], "G1 Z10.000 F200");
-    EXPECT_EQ(b[7], "X7.000");
-    EXPECT_EQ(b[8], "G0 Z20.000");
+    EXPECT_EQ(std::vector<std::string>(b.begin() + kSectionLines, b.end()),
+              (std::vector<std::string>{"G0 X0.000 Y0.000 Z20.000", "X6.000 Y-20.000", "G1 Z10.000 F200", "X7.000",
+                                        "G0 Z20.000"}));
 }
 
 TEST_F(EmcoPost, AxesAreModalAndForcedAfterToolChangeAndSection)
@@ -132,10 +167,10 @@ TEST_F(EmcoPost, AxesAreModalAndForcedAfterToolChangeAndSection)
     path.add(Rapid{{1, 2, 20}});
     path.add(SectionBegin{"Pocket", "pocket", 2, {}});
     path.add(Rapid{{1, 2, 20}});
-    const std::vector<std::string> b = body(path);
-    EXPECT_EQ(b, (std::vector<std::string>{";Profile 1", ";Tool change", "M6 T1", "M3 S2000",
-                                           "G0 X1.000 Y2.000 Z20.000", ";Tool change", "M6 T2",
-                                           "G0 X1.000 Y2.000 Z20.000", ";Pocket", "G0 X1.000 Y2.000 Z20.000"}));
+    EXPECT_EQ(body(path),
+              (std::vector<std::string>{";Profile 1", "M5 M9", ";Tool change", "M6 T1 D1", "M3 S2000",
+                                        "G0 X1.000 Y2.000 Z20.000", "M5 M9", ";Tool change", "M6 T2 D1",
+                                        "G0 X1.000 Y2.000 Z20.000", ";Pocket", "G0 X1.000 Y2.000 Z20.000"}));
 }
 
 TEST_F(EmcoPost, FeedIsRoundedIntegerAndNeverOnRapids)
@@ -145,16 +180,11 @@ TEST_F(EmcoPost, FeedIsRoundedIntegerAndNeverOnRapids)
     path.add(Linear{{0, 0, 15}, 3.3333 * 60});  // 199.998 mm/min: F200, not F199
     path.add(Rapid{{0, 0, 20}});
     path.add(Linear{{0, 0, 15}, 199.9999});  // same integer: F not repeated
-    path.add(Linear{{0, 0, 14}, 150.5});     // rounds half away: F151 (printf rounding of 150.5)
+    path.add(Linear{{0, 0, 14}, 150.5});     // to_chars rounds the binary value: 150.5 -> F150 (half to even)
     const std::vector<std::string> b = body(path);
-    ASSERT_EQ(b.size(), 9u);
-    EXPECT_EQ(b[5], "G1 Z15.000 F200");
-    EXPECT_EQ(b[6], "G0 Z20.000");
-    EXPECT_EQ(b[7], "G1 Z15.000");
-    EXPECT_EQ(b[8].substr(0, 9), "Z14.000 F");
-    for (const std::string& line : b)
-        if (line.rfind("G0", 0) == 0)
-            EXPECT_EQ(line.find('F'), std::string::npos) << line;
+    EXPECT_EQ(std::vector<std::string>(b.begin() + kSectionLines, b.end()),
+              (std::vector<std::string>{"G0 X0.000 Y0.000 Z20.000", "G1 Z15.000 F200", "G0 Z20.000", "G1 Z15.000",
+                                        "Z14.000 F150"}));
 }
 
 TEST_F(EmcoPost, ArcsAlwaysWriteIAndJAndNeverK)
@@ -168,11 +198,11 @@ TEST_F(EmcoPost, ArcsAlwaysWriteIAndJAndNeverK)
     path.add(Arc{{43.789, -6.477, 12.5}, {45, 30, 12.5}, {0, 0, 1}, true, 0, 200});
     path.add(Arc{{18.851, 4.539, 12.5}, {45, 30, 12.5}, {0, 0, 1}, true, 0, 200});
     const std::vector<std::string> b = body(path);
-    ASSERT_EQ(b.size(), 10u);
-    EXPECT_EQ(b[6], "G2 X46.211 Y66.477 I26.149 J25.461");
-    EXPECT_EQ(b[7], "X81.477 Y28.789 I-1.211 J-36.477");
-    EXPECT_EQ(b[8], "X43.789 Y-6.477 I-36.477 J1.211");
-    EXPECT_EQ(b[9], "X18.851 Y4.539 I1.211 J36.477");
+    ASSERT_EQ(b.size(), kSectionLines + 6);
+    EXPECT_EQ(b[7], "G2 X46.211 Y66.477 I26.149 J25.461");
+    EXPECT_EQ(b[8], "X81.477 Y28.789 I-1.211 J-36.477");
+    EXPECT_EQ(b[9], "X43.789 Y-6.477 I-36.477 J1.211");
+    EXPECT_EQ(b[10], "X18.851 Y4.539 I1.211 J36.477");
     for (const std::string& line : b)
         EXPECT_EQ(line.find('K'), std::string::npos) << line;
 }
@@ -188,13 +218,25 @@ TEST_F(EmcoPost, HelicalArcsForceXYZ_Tab12)
         path.add(Arc{{i % 2 == 0 ? 41.0 : 49.0, 30, z[i]}, {45, 30, 15}, {0, 0, 1}, true, 0, 3.3333 * 60});
     path.add(Arc{{41, 30, 13.333}, {45, 30, 13.333}, {0, 0, 1}, true, 0, 3.3333 * 60});  // planar again
     const std::vector<std::string> b = body(path);
-    ASSERT_EQ(b.size(), 11u);
-    EXPECT_EQ(b[5], "G1 Z15.000 F200");
-    EXPECT_EQ(b[6], "G2 X41.000 Y30.000 Z14.583 I-4.000 J0.000");
-    EXPECT_EQ(b[7], "X49.000 Y30.000 Z14.167 I4.000 J0.000");
-    EXPECT_EQ(b[8], "X41.000 Y30.000 Z13.750 I-4.000 J0.000");
-    EXPECT_EQ(b[9], "X49.000 Y30.000 Z13.333 I4.000 J0.000");
-    EXPECT_EQ(b[10], "X41.000 I-4.000 J0.000");
+    EXPECT_EQ(
+        std::vector<std::string>(b.begin() + kSectionLines + 1, b.end()),
+        (std::vector<std::string>{"G1 Z15.000 F200", "G2 X41.000 Y30.000 Z14.583 I-4.000 J0.000",
+                                  "X49.000 Y30.000 Z14.167 I4.000 J0.000", "X41.000 Y30.000 Z13.750 I-4.000 J0.000",
+                                  "X49.000 Y30.000 Z13.333 I4.000 J0.000", "X41.000 I-4.000 J0.000"}));
+}
+
+TEST_F(EmcoPost, ArcsInG18AndG19WriteTheirPlaneAndCentreWords)
+{
+    Toolpath path = sectionWithTool();
+    path.add(Rapid{{10, 0, 0}});
+    path.add(Arc{{0, 0, 10}, {0, 0, 0}, {0, 1, 0}, true, 0, 300});    // ZX plane, clockwise seen from +Y: G2
+    path.add(Arc{{0, 10, 0}, {0, 0, 0}, {1, 0, 0}, true, 0, 300});    // YZ plane, +Z to +Y seen from +X: G2
+    path.add(Arc{{-10, 0, 0}, {0, 0, 0}, {0, 0, 1}, false, 0, 300});  // back in G17
+    const std::vector<std::string> b = body(path);
+    EXPECT_EQ(
+        std::vector<std::string>(b.begin() + kSectionLines + 1, b.end()),
+        (std::vector<std::string>{"G18 G2 X0.000 Z10.000 I-10.000 K0.000 F300", "G19 Y10.000 Z0.000 J0.000 K-10.000",
+                                  "G17 G3 X-10.000 Y0.000 I0.000 J-10.000"}));
 }
 
 TEST_F(EmcoPost, FullCirclesAreWrittenAsTwoHalves)
@@ -203,9 +245,8 @@ TEST_F(EmcoPost, FullCirclesAreWrittenAsTwoHalves)
     path.add(Rapid{{10, 0, 5}});
     path.add(Arc{{10, 0, 5}, {0, 0, 5}, {0, 0, 1}, false, 0, 300});
     const std::vector<std::string> b = body(path);
-    ASSERT_EQ(b.size(), 7u);
-    EXPECT_EQ(b[5], "G3 X-10.000 I-10.000 J0.000 F300");  // planar: unchanged Y stays modal
-    EXPECT_EQ(b[6], "X10.000 I10.000 J0.000");
+    EXPECT_EQ(std::vector<std::string>(b.begin() + kSectionLines + 1, b.end()),
+              (std::vector<std::string>{"G3 X-10.000 I-10.000 J0.000 F300", "X10.000 I10.000 J0.000"}));
 }
 
 TEST_F(EmcoPost, ArcSeenAgainstMinusZIsFlipped)
@@ -213,22 +254,138 @@ TEST_F(EmcoPost, ArcSeenAgainstMinusZIsFlipped)
     Toolpath path = sectionWithTool();
     path.add(Rapid{{10, 0, 5}});
     path.add(Arc{{0, 10, 5}, {0, 0, 5}, {0, 0, -1}, true, 0, 300});  // clockwise about -Z = G3
-    const std::vector<std::string> b = body(path);
-    ASSERT_EQ(b.size(), 6u);
-    EXPECT_EQ(b[5], "G3 X0.000 Y10.000 I-10.000 J0.000 F300");
+    EXPECT_EQ(body(path).back(), "G3 X0.000 Y10.000 I-10.000 J0.000 F300");
 }
 
-TEST_F(EmcoPost, ArcsOutsideXYAreAnErrorNamingTheRecord)
+TEST_F(EmcoPost, ObliqueArcsAreLinearisedWithAWarning)
 {
     Toolpath path = sectionWithTool();
-    path.add(Rapid{{10, 0, 5}});
-    path.add(Arc{{0, 0, 15}, {0, 0, 5}, {0, 1, 0}, true, 0, 300});
-    const auto output = m_post->run(path, fixedContext());
-    ASSERT_FALSE(output.ok());
-    EXPECT_EQ(output.error().file, kEmcoPost);
-    EXPECT_GT(output.error().line, 0);
-    EXPECT_NE(output.error().message.find("ZX plane"), std::string::npos) << output.error().message;
-    EXPECT_NE(output.error().message.find("CL record 4 Arc"), std::string::npos) << output.error().message;
+    path.add(Rapid{{10, 0, 0}});
+    path.add(Arc{{0, 0, 10}, {0, 0, 0}, {0.6, 0.8, 0}, true, 0, 300});
+    const PostOutput output = run(path);
+    EXPECT_EQ(output.text.find("G2"), std::string::npos);
+    ASSERT_EQ(output.messages.size(), 1u);
+    EXPECT_EQ(output.messages[0].text,
+              "1 arc in an oblique plane: written as lines within 0.01 mm (first: CL record 4)");
+}
+
+TEST_F(EmcoPost, DrillingCyclesAsMcallWithTheFull828dParameterLists)
+{
+    Toolpath path = sectionWithTool();
+    path.add(Rapid{{0, 0, 50}});
+    Cycle drill{CycleKind::Drill, 25, 2, 0, -10, 0, 0, 120, {{10, 10, 0}, {20, 10, 0}}};
+    path.add(drill);
+    Cycle dwell = drill;
+    dwell.kind = CycleKind::DrillDwell;
+    dwell.dwellSeconds = 0.5;
+    dwell.returnToClearance = false;
+    dwell.holes = {{30, 10, 0}};
+    path.add(dwell);
+    Cycle peck{CycleKind::Peck, 25, 2, 0, -30, 6, 0.25, 100, {{40, 10, 0}}};
+    path.add(peck);
+    Cycle chip = peck;
+    chip.kind = CycleKind::ChipBreak;
+    chip.dwellSeconds = 0;
+    path.add(chip);
+    Cycle tap{CycleKind::Tap, 25, 3, 0, -12, 0, 0, 2000 * 1.5 / 1.0, {{50, 10, 0}}};
+    tap.feedMmPerMin = 1.25 * 2000;  // M8 x 1.25 at S2000
+    path.add(tap);
+    Cycle bore{CycleKind::Bore, 25, 2, 0, -15, 0, 0, 80, {{60, 10, 0}}};
+    path.add(bore);
+    path.add(Rapid{{60, 10, 50}});
+    const std::vector<std::string> b = body(path);
+    EXPECT_EQ(std::vector<std::string>(b.begin() + kSectionLines, b.end()),
+              (std::vector<std::string>{
+                  "G0 X0.000 Y0.000 Z50.000", "F120", "MCALL CYCLE81(25.000,0.000,2.000,-10.000)", "X10.000 Y10.000",
+                  "X20.000", "MCALL",
+                  // G99 style: the return plane is R, and the tool stands at RTP 25 from the last cycle
+                  "MCALL CYCLE82(2.000,0.000,2.000,-10.000,,0.5)",
+                  "G0 X30.000",  // Y stays modal: every hole is on Y10
+                  "MCALL", "F100",
+                  "G0 Z25.000",  // below the return plane after the G99 cycle: up first
+                  "MCALL CYCLE83(25.000,0.000,2.000,-30.000,,-6.000,,0,0,0,1,1,,6.000,0.500,0.25,0.500)",
+                  "X40.000",  // G0 is still active from the block before
+                  "MCALL", "MCALL CYCLE83(25.000,0.000,2.000,-30.000,,-6.000,,0,0,0,1,0,,6.000,0.500,0,0.500)",
+                  "G0 X40.000",  // the same hole again: MCALL needs a motion block, so X is forced
+                  "MCALL", "MCALL CYCLE84(25.000,0.000,3.000,-12.000,,0,3,,1.250,0,2000,2000)", "G0 X50.000", "MCALL",
+                  "F80", "MCALL CYCLE85(25.000,0.000,2.000,-15.000,,0,80,80)", "G0 X60.000", "MCALL", "G0 Z50.000"}));
+}
+
+TEST_F(EmcoPost, DrillingCyclesPerHole)
+{
+    Toolpath path = sectionWithTool();
+    path.add(Rapid{{0, 0, 50}});
+    path.add(Cycle{CycleKind::Drill, 25, 2, 0, -10, 0, 0, 120, {{10, 10, 0}, {20, 10, 0}}});
+    const std::vector<std::string> b = body(path, {{"drillingCalls", "perHole"}});
+    EXPECT_EQ(std::vector<std::string>(b.begin() + kSectionLines + 1, b.end()),
+              (std::vector<std::string>{"F120", "X10.000 Y10.000", "CYCLE81(25.000,0.000,2.000,-10.000)", "X20.000",
+                                        "CYCLE81(25.000,0.000,2.000,-10.000)"}));
+}
+
+TEST_F(EmcoPost, CutterCompensationStartsAndEndsOnStraightMoves)
+{
+    Toolpath path = sectionWithTool();
+    path.add(Rapid{{-10, -10, 5}});
+    path.add(CutterComp{CutterCompSide::Left});
+    path.add(Linear{{0, 0, 5}, 300});
+    path.add(Arc{{10, 10, 5}, {10, 0, 5}, {0, 0, 1}, true, 0, 300});
+    path.add(CutterComp{CutterCompSide::Off});
+    path.add(Linear{{20, 20, 5}, 300});
+    const std::vector<std::string> b = body(path);
+    EXPECT_EQ(std::vector<std::string>(b.begin() + kSectionLines + 1, b.end()),
+              (std::vector<std::string>{"G1 G41 X0.000 Y0.000 F300", "G2 X10.000 Y10.000 I10.000 J0.000",
+                                        "G1 G40 X20.000 Y20.000"}));
+
+    Toolpath onArc = sectionWithTool();
+    onArc.add(Rapid{{0, 0, 5}});
+    onArc.add(CutterComp{CutterCompSide::Right});
+    onArc.add(Arc{{10, 10, 5}, {10, 0, 5}, {0, 0, 1}, true, 0, 300});
+    auto refused = m_post->run(onArc, fixedContext());
+    ASSERT_FALSE(refused.ok());
+    EXPECT_EQ(refused.error().message,
+              "cutter compensation changes on an arc; controls need a straight move to start or end it (CL record 5 "
+              "Arc)");
+}
+
+TEST_F(EmcoPost, CoolantDwellStopsAndPassThrough)
+{
+    Toolpath path;
+    path.add(Coolant{CoolantMode::Flood});
+    path.add(Dwell{1.5});
+    path.add(ProgramStop{false});
+    path.add(ProgramStop{true});
+    path.add(PassThrough{"SOFT"});
+    path.add(Coolant{CoolantMode::Off});
+    path.add(Coolant{CoolantMode::ThroughTool});
+    const PostOutput output = run(path);
+    EXPECT_EQ(body(path), (std::vector<std::string>{"M8", "G4 F1.5", "M0", "M1", "SOFT", "M9"}));
+    ASSERT_EQ(output.messages.size(), 1u);
+    EXPECT_EQ(output.messages[0].text, "coolant throughTool is not available on this machine: not output");
+    EXPECT_GT(output.messages[0].line, 0);
+}
+
+TEST_F(EmcoPost, FeedPerRevolutionChangesTheFeedWord)
+{
+    Toolpath path = sectionWithTool();
+    path.add(Rapid{{0, 0, 5}});
+    path.add(FeedModeChange{FeedMode::PerRevolution});
+    path.add(Linear{{0, 0, 0}, 0.15});
+    path.add(FeedModeChange{FeedMode::PerMinute});
+    path.add(Linear{{0, 0, -1}, 150});
+    const std::vector<std::string> b = body(path);
+    EXPECT_EQ(std::vector<std::string>(b.begin() + kSectionLines + 1, b.end()),
+              (std::vector<std::string>{"G95", "G1 Z0.000 F0.150", "G94", "Z-1.000 F150"}));
+}
+
+TEST_F(EmcoPost, InchOutputScalesGeometryAndFeeds)
+{
+    Toolpath path = sectionWithTool();
+    path.add(Rapid{{25.4, 0, 50.8}});
+    path.add(Linear{{25.4, 12.7, 50.8}, 254});
+    const std::vector<std::string> all = wordLines(run(path, {{"units", "G700"}}).text);
+    EXPECT_EQ(all[5], "G700");
+    EXPECT_EQ(all[all.size() - 4], "G0 X1.0000 Y0.0000 Z2.0000");
+    EXPECT_EQ(all[all.size() - 3], "G1 Y0.5000 F10.0");
 }
 
 TEST_F(EmcoPost, NegativeZeroIsNeverWritten)
@@ -240,8 +397,8 @@ TEST_F(EmcoPost, NegativeZeroIsNeverWritten)
     const std::string text = run(path).text;
     EXPECT_EQ(text.find("-0.000"), std::string::npos) << text;
     const std::vector<std::string> b = body(path);
-    EXPECT_EQ(b[4], "G0 X0.000 Y0.000 Z0.000");
-    EXPECT_EQ(b[5], "G1 X1.000 F100");
+    EXPECT_EQ(b[kSectionLines], "G0 X0.000 Y0.000 Z0.000");
+    EXPECT_EQ(b[kSectionLines + 1], "G1 X1.000 F100");
 }
 
 TEST_F(EmcoPost, EndsWithM30AndANewline)
@@ -260,6 +417,7 @@ TEST_F(EmcoPost, RunsAreByteIdentical)
     Toolpath path = sectionWithTool();
     path.add(Rapid{{0, 0, 20}});
     path.add(Arc{{0, 0, 10}, {5, 0, 20}, {0, 0, 1}, true, 2, 250});
+    path.add(Cycle{CycleKind::Peck, 25, 2, 0, -30, 6, 0, 100, {{40, 10, 0}}});
     const auto first = m_post->run(path, fixedContext());
     const auto second = m_post->run(path, fixedContext());
     ASSERT_TRUE(first.ok() && second.ok());
@@ -297,21 +455,41 @@ TEST_F(EmcoPost, LinesCarryTheirOperation)
     path.add(SectionBegin{"B", "pocket", 1, {}}, {1, 0});
     path.add(Rapid{{0, 0, 20}}, {1, 1});
     const PostOutput output = run(path);
-    EXPECT_EQ(output.lineOperation, (std::vector<int>{-1, -1, -1, -1, -1, 0, 0, 0, 1, 1, -1}));
+    EXPECT_EQ(output.lineOperation, (std::vector<int>{-1, -1, -1, -1, -1, -1, -1, 0, 0, 1, 1, -1, -1}));
     EXPECT_EQ(lines(output.text).size(), output.lineOperation.size());
 }
 
-TEST_F(EmcoPost, CyclesWithoutHandlerGiveOneWarning)
+TEST_F(EmcoPost, MachineLimitsOfTheEmcoAreCheckedWithWarnings)
 {
-    Toolpath path = sectionWithTool();
-    path.add(Rapid{{0, 0, 20}});
-    path.add(Cycle{CycleKind::Drill, 20, 5, 0, -10, 0, 0, 100, {{1, 1, 0}}});
-    path.add(Cycle{CycleKind::Drill, 20, 5, 0, -10, 0, 0, 100, {{2, 2, 0}}});
-    const PostOutput output = run(path);
-    ASSERT_EQ(output.messages.size(), 1u);
-    EXPECT_EQ(output.messages[0].severity, PostMessage::Severity::Warning);
-    EXPECT_EQ(output.messages[0].text,
-              "post sinumerik828d-emco has no handler for Cycle (onCycle); 2 records not output");
+    auto emco = kinematics::findMachine("emco-concept-mill-105", kinematics::defaultMachineDirs());
+    ASSERT_TRUE(emco.ok()) << emco.error().toString();
+    Toolpath path;
+    path.add(ToolChange{Tool{12, "big", "flat", 63, 0, 30, 75}});
+    path.add(Spindle{6000, true});
+    path.add(Spindle{100, true});
+    path.add(Spindle{7000, true});
+    path.add(Coolant{CoolantMode::Mist});
+    path.add(Rapid{{0, 0, 10}});
+    path.add(Linear{{250, 0, 10}, 500});
+    RunOptions options;
+    options.context = fixedContext();
+    options.machine = emco.value();
+    auto output = m_post->run(path, options);
+    ASSERT_TRUE(output.ok()) << output.error().toString();
+    std::vector<std::string> texts;
+    for (const PostMessage& m : output->messages)
+        texts.push_back(m.text);
+    EXPECT_EQ(texts, (std::vector<std::string>{
+                         "the program spans 250 mm in X; the EMCO Concept MILL 105 travels 200 mm",
+                         "coolant mist is not available on the EMCO Concept MILL 105 (CL record 4)",
+                         "spindle speed 6000 rpm is above the EMCO Concept MILL 105's maximum of 5000 rpm (CL record "
+                         "1; 2 records in all)",
+                         "spindle speed 100 rpm is below the EMCO Concept MILL 105's minimum of 150 rpm (CL record 2)",
+                         "tool T12 is 63 mm in diameter; the EMCO Concept MILL 105 takes at most 55 mm (CL record 0)",
+                         "tool T12 is 75 mm long; the EMCO Concept MILL 105 takes at most 50 mm (CL record 0)",
+                         "tool T12 has no station: the EMCO Concept MILL 105 has stations 1..10 (CL record 0)",
+                         "coolant mist is not available on this machine: not output"}));
+    EXPECT_NE(output->text.find(";machine EMCO Concept MILL 105"), std::string::npos);
 }
 
 }  // namespace

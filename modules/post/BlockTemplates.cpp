@@ -1,0 +1,221 @@
+#include "post/detail/BlockTemplates.h"
+
+#include "post/detail/ScriptBindings.h"
+
+namespace camwb::post {
+
+namespace {
+
+constexpr const char* kValueNames[] = {"x",  "y",      "z",    "i",      "j",     "k",    "cx",   "cy",
+                                       "cz", "radius", "feed", "motion", "plane", "comp", "sweep"};
+static_assert(std::size(kValueNames) == static_cast<std::size_t>(MoveValue::Sweep) + 1);
+
+bool isAxis(MoveValue v) { return v == MoveValue::X || v == MoveValue::Y || v == MoveValue::Z; }
+
+// Which move values each kind of block may use: a rapid has no feed, straight moves no centre.
+bool allowed(MoveValue v, const std::string& kind)
+{
+    if (kind == "circular")
+        return v != MoveValue::Comp;
+    if (isAxis(v) || v == MoveValue::Motion || v == MoveValue::Comp)
+        return true;
+    return kind == "linear" && v == MoveValue::Feed;
+}
+
+base::Result<BlockTemplate> parseWords(const QJSValue& list, const std::string& kind, const std::string& where,
+                                       const std::string& postFile, int line)
+{
+    if (!list.isArray())
+        return base::makeError(where + " must be an array of words", postFile, line);
+    BlockTemplate block;
+    block.straight = kind != "circular";
+    bool hasAxis = false;
+    const int length = list.property("length").toInt();
+    for (int i = 0; i < length; ++i) {
+        const QJSValue item = list.property(static_cast<quint32>(i));
+        const std::string at = where + "[" + std::to_string(i) + "]";
+        BlockTemplate::Word word;
+        if (item.isString()) {
+            word.literal = item.toString().toStdString();
+        } else {
+            const QJSValue variable = item.property("__camwbVariable");
+            auto* object = qobject_cast<VariableObject*>(variable.toQObject());
+            if (!object)
+                return base::makeError(at + ": expected a string or a variable's bind(\"name\")", postFile, line);
+            const std::optional<MoveValue> value = moveValueFromName(item.property("value").toString().toStdString());
+            if (!value || !allowed(*value, kind))
+                return base::makeError(at + ": a " + kind + " block cannot write '" +
+                                           item.property("value").toString().toStdString() + "'",
+                                       postFile, line);
+            word.variable = object;
+            word.value = *value;
+            hasAxis = hasAxis || isAxis(*value);
+            block.keepAlive.push_back(variable);
+        }
+        block.words.push_back(std::move(word));
+    }
+    if (!hasAxis)
+        return base::makeError(where + " writes no axis (bind x, y or z)", postFile, line);
+    return block;
+}
+
+}  // namespace
+
+std::optional<MoveValue> moveValueFromName(const std::string& name)
+{
+    for (std::size_t i = 0; i < std::size(kValueNames); ++i)
+        if (name == kValueNames[i])
+            return static_cast<MoveValue>(i);
+    return std::nullopt;
+}
+
+std::string moveValueNames()
+{
+    std::string names;
+    for (const char* name : kValueNames)
+        names += (names.empty() ? "" : ", ") + std::string(name);
+    return names;
+}
+
+double MoveValues::value(MoveValue which) const
+{
+    switch (which) {
+    case MoveValue::X:
+        return end.x;
+    case MoveValue::Y:
+        return end.y;
+    case MoveValue::Z:
+        return end.z;
+    case MoveValue::I:
+        return center.x - start.x;
+    case MoveValue::J:
+        return center.y - start.y;
+    case MoveValue::K:
+        return center.z - start.z;
+    case MoveValue::CenterX:
+        return center.x;
+    case MoveValue::CenterY:
+        return center.y;
+    case MoveValue::CenterZ:
+        return center.z;
+    case MoveValue::Radius:
+        return radius;
+    case MoveValue::Feed:
+        return feed;
+    case MoveValue::Motion:
+        return motion;
+    case MoveValue::Plane:
+        return plane;
+    case MoveValue::Comp:
+        return comp;
+    case MoveValue::Sweep:
+        return sweepDeg;
+    }
+    return 0;
+}
+
+bool BlockTemplate::write(const MoveValues& move, OutputWriter& out, bool& missingFeed)
+{
+    if (move.helical)
+        for (VariableObject* variable : forceOnHelical)
+            variable->modal().reset();
+    constexpr std::size_t kSize = base::NumberFormat::kBufferSize;
+    if (m_texts.size() != words.size()) {
+        m_buffers.resize(words.size() * kSize);
+        m_texts.resize(words.size());
+        m_skip.resize(words.size());
+    }
+    bool axisChanges = false;
+    for (std::size_t i = 0; i < words.size(); ++i) {
+        const Word& word = words[i];
+        m_skip[i] = 0;
+        if (!word.variable)
+            continue;
+        if (word.value == MoveValue::Feed && !(move.feed > 0)) {
+            m_skip[i] = 1;
+            missingFeed = true;
+            continue;
+        }
+        char* buffer = m_buffers.data() + i * kSize;
+        m_texts[i] = std::string_view(buffer, word.variable->textOf(move.value(word.value), buffer));
+        if (isAxis(word.value) && word.variable->modal().wouldWrite(m_texts[i]))
+            axisChanges = true;
+    }
+    if (straight && !axisChanges)
+        return false;
+    out.beginBlock();
+    for (std::size_t i = 0; i < words.size(); ++i) {
+        const Word& word = words[i];
+        if (!word.variable)
+            out.addWord({}, word.literal);
+        else if (!m_skip[i] && word.variable->modal().update(m_texts[i]))
+            out.addCleanWord(word.variable->modal().prefix(), m_texts[i]);
+    }
+    return out.endBlock();
+}
+
+int BlockTemplates::planeIndex(const std::string& plane)
+{
+    if (plane == "XY")
+        return 0;
+    if (plane == "ZX")
+        return 1;
+    if (plane == "YZ")
+        return 2;
+    return -1;
+}
+
+base::Result<BlockTemplates> parseBlockTemplates(const QJSValue& blocks, const std::string& postFile, int line)
+{
+    BlockTemplates templates;
+    if (blocks.isUndefined() || blocks.isNull())
+        return templates;
+    if (!blocks.isObject())
+        return base::makeError("post.blocks must be an object {rapid, linear, circular}", postFile, line);
+    for (const char* kind : {"rapid", "linear"}) {
+        const QJSValue list = blocks.property(kind);
+        if (list.isUndefined())
+            continue;
+        auto block = parseWords(list, kind, std::string("post.blocks.") + kind, postFile, line);
+        if (!block)
+            return block.error();
+        (std::string(kind) == "rapid" ? templates.rapid : templates.linear) = std::move(block).value();
+    }
+    const QJSValue circular = blocks.property("circular");
+    if (circular.isUndefined())
+        return templates;
+    if (!circular.isObject())
+        return base::makeError("post.blocks.circular must be an object {XY, ZX, YZ, forceOnHelical}", postFile, line);
+    std::vector<VariableObject*> force;
+    std::vector<QJSValue> forceAlive;
+    const QJSValue forceList = circular.property("forceOnHelical");
+    if (!forceList.isUndefined()) {
+        const int length = forceList.isArray() ? forceList.property("length").toInt() : -1;
+        for (int i = 0; i < length; ++i) {
+            const QJSValue item = forceList.property(static_cast<quint32>(i));
+            auto* object = qobject_cast<VariableObject*>(item.toQObject());
+            if (!object)
+                return base::makeError("post.blocks.circular.forceOnHelical[" + std::to_string(i) +
+                                           "]: expected a variable from createVariable()",
+                                       postFile, line);
+            force.push_back(object);
+            forceAlive.push_back(item);
+        }
+        if (length < 0)
+            return base::makeError("post.blocks.circular.forceOnHelical must be an array of variables", postFile, line);
+    }
+    for (const char* plane : {"XY", "ZX", "YZ"}) {
+        const QJSValue list = circular.property(plane);
+        if (list.isUndefined())
+            continue;
+        auto block = parseWords(list, "circular", std::string("post.blocks.circular.") + plane, postFile, line);
+        if (!block)
+            return block.error();
+        block->forceOnHelical = force;
+        block->keepAlive.insert(block->keepAlive.end(), forceAlive.begin(), forceAlive.end());
+        templates.circular[BlockTemplates::planeIndex(plane)] = std::move(block).value();
+    }
+    return templates;
+}
+
+}  // namespace camwb::post

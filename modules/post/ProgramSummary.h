@@ -1,0 +1,27 @@
+// Facts about a whole program that a post wants before it writes its first line (the work
+// offset, the tools for a header list, the extents) and that the kernel checks against the
+// machine's limits (travel, spindle range, tool changer, feeds, coolants) before posting.
+#pragma once
+
+#include "kinematics/Machine.h"
+#include "post/PostProcessor.h"
+#include "toolpath/Toolpath.h"
+
+#include <vector>
+
+namespace camwb::post {
+
+struct ProgramSummary {
+    int firstWorkOffset = 1;            // the WorkOffset before the first motion, else 1
+    std::vector<toolpath::Tool> tools;  // in order of first use, each number once
+    bool hasMotion = false;
+    toolpath::Vec3 min, max;  // every tool tip position (arcs exactly, cycles included)
+};
+
+ProgramSummary summarizeProgram(const toolpath::Toolpath& toolpath);
+
+// One warning per kind of violation, naming the first CL record and how many there are.
+std::vector<PostMessage> checkMachineLimits(const toolpath::Toolpath& toolpath, const ProgramSummary& summary,
+                                            const kinematics::Machine& machine);
+
+}  // namespace camwb::post

@@ -1,0 +1,92 @@
+// Private: one post run in its own QJSEngine. Installs the kernel services, evaluates the post
+// script, reads its declarations (metadata, capabilities, properties, block templates), and calls
+// its handlers under the watchdog. Playing the CL records is ScriptSink's job (ScriptSink.cpp).
+#pragma once
+
+#include "base/Result.h"
+#include "post/PostProcessor.h"
+#include "post/ProgramSummary.h"
+#include "post/detail/BlockTemplates.h"
+#include "post/detail/ScriptBindings.h"
+#include "post/detail/ScriptWatchdog.h"
+
+#include <QJSEngine>
+#include <QJSValue>
+
+#include <array>
+#include <memory>
+#include <optional>
+#include <string>
+
+namespace camwb::post {
+
+enum class Handler {
+    Open,
+    Section,
+    ToolChange,
+    Spindle,
+    Coolant,
+    FeedMode,
+    WorkOffset,
+    Rapid,
+    Linear,
+    Circular,
+    Linear5D,
+    Cycle,
+    CyclePoint,
+    CycleEnd,
+    Comment,
+    CutterComp,
+    Dwell,
+    SectionEnd,
+    Stop,
+    PassThrough,
+    Close,
+    Count
+};
+const char* handlerName(Handler handler);
+
+class ScriptRun {
+public:
+    ScriptRun(std::string postFile, const PostContext& context, std::chrono::milliseconds budget);
+    ~ScriptRun();
+
+    // What getProperty() answers and what `machine` is while the script runs; set before evaluate().
+    void setProperties(const std::map<std::string, PropertyValue>& values);
+    void setMachine(const kinematics::Machine& machine);
+
+    // Evaluates the post source and reads its declarations into `info` and the block templates.
+    base::Status evaluate(const std::string& source, PostInfo& info);
+    // Plays the toolpath through the post (onOpen ... onClose); the text goes to writer().
+    base::Status play(const toolpath::Toolpath& toolpath, const ProgramSummary& summary);
+
+    OutputWriter& writer() { return m_kernel->writer(); }
+    std::vector<PostMessage>& messages() { return m_kernel->messages(); }
+
+private:
+    friend class ScriptSink;
+
+    // Calls `handler` when the post has it; false when the script failed (m_failure holds why).
+    bool call(Handler handler, const QJSValueList& args);
+    bool has(Handler handler) const { return m_handlers[static_cast<int>(handler)].isCallable(); }
+    base::Error scriptError(const QJSValue& thrown, const std::string& where);
+    void fail(const std::string& message);  // a kernel error about the current record
+    std::string where() const;              // "CL record 12 Arc", or "" outside the records
+    base::Status readDeclarations(const std::string& source, PostInfo& info);
+
+    std::string m_postFile;
+    std::string m_postId;
+    QJSEngine m_engine;
+    std::unique_ptr<ScriptKernel> m_kernel;  // C++ ownership; destroyed before the engine
+    ScriptWatchdog m_watchdog;
+    QJSValue m_post;
+    QJSValue m_trampoline;
+    std::array<QJSValue, static_cast<int>(Handler::Count)> m_handlers;
+    BlockTemplates m_templates;
+    PostCapabilities m_capabilities;
+    long long m_recordIndex = -1;  // record being played, for messages
+    const char* m_recordName = "";
+    std::optional<base::Error> m_failure;
+};
+
+}  // namespace camwb::post

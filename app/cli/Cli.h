@@ -1,0 +1,49 @@
+// camwb-cli internals: the commands (each in its own file) and what they share: exit codes,
+// messages to stderr, and the options that choose a post, a machine and property values.
+#pragma once
+
+#include "post/PostProcessor.h"
+
+#include <map>
+#include <ostream>
+#include <string>
+#include <vector>
+
+namespace camwb::cli {
+
+constexpr int kExitOk = 0;
+constexpr int kExitError = 1;
+constexpr int kExitUsage = 2;
+
+// "camwb-cli: error: <message>" on stderr; returns kExitError.
+int fail(const std::string& message);
+// "camwb-cli: <message>" and the usage on stderr; returns kExitUsage.
+int usageError(const std::string& message);
+void printUsage(std::ostream& out);
+
+// Warnings and errors of a post run on stderr, one per line with file and line; returns the
+// number of warnings.
+int printMessages(const std::vector<post::PostMessage>& messages);
+
+// Options shared by the commands that post.
+struct PostOptions {
+    std::string postId;                             // --post
+    std::string machineId;                          // --machine
+    std::map<std::string, std::string> properties;  // --property name=value (repeatable)
+    std::vector<std::string> postPaths;             // --post-path DIR (repeatable)
+    std::string output;                             // -o / --output
+};
+
+// Consumes args[i] (and its value) when it is one of the PostOptions; false when it is not one.
+// A malformed option sets `error`.
+bool takePostOption(const std::vector<std::string>& args, std::size_t& i, PostOptions& options, std::string& error);
+
+// Posts `toolpath` into `outputPath` atomically and reports like every posting command does.
+int postToFile(const post::PostProcessor& post, const toolpath::Toolpath& toolpath, const post::RunOptions& options,
+               const std::string& outputPath);
+
+int runCommand(const std::vector<std::string>& args);    // camwb-cli run <job> -o <file>
+int postsCommand(const std::vector<std::string>& args);  // camwb-cli posts [<id>]
+int postCommand(const std::vector<std::string>& args);   // camwb-cli post <input> --post <id> ...
+
+}  // namespace camwb::cli

@@ -1,0 +1,103 @@
+// What the camwb-cli commands share: usage, messages, the posting options and atomic output.
+#include "Cli.h"
+
+#include "base/Result.h"
+#include "post/PostInfo.h"
+
+#include <iostream>
+
+namespace camwb::cli {
+
+void printUsage(std::ostream& out)
+{
+    out << "usage: camwb-cli --version\n"
+           "       camwb-cli run <job.camwb> -o <output file> [--post-path DIR]...\n"
+           "       camwb-cli posts [<post id>] [--post-path DIR]...\n"
+           "       camwb-cli post <input> [--post <id>] [--machine <id>] [--property name=value]...\n"
+           "                      [-o <output file>] [--input-format job|apt|freecad-dump|trace] [--post-path DIR]...\n"
+           "\n"
+           "run:   loads the job and its model, recomputes every operation, posts the program with\n"
+           "       the job's post, machine and post properties and writes the NC file.\n"
+           "posts: lists the posts (id, vendor, description, extension, origin); with an id, shows\n"
+           "       that post's capabilities and properties.\n"
+           "post:  posts a job (.camwb), an APT CL file (.apt .aptsource .cl .cls), a FreeCAD path dump\n"
+           "       (.dump) or a CL trace (.trace); the format comes from the extension unless\n"
+           "       --input-format names it.\n"
+           "       A job brings its own post, machine and properties; the options override them.\n"
+           "       Without -o the NC goes beside the input, named after it with the post's extension.\n"
+           "\n"
+           "Posts are looked up in --post-path folders, $CAMWB_POST_PATH, ~/.local/share/camwb/posts\n"
+           "and the built-in folders, in that order: a user's post overrides a built-in one.\n"
+           "NC files are written atomically: on any error the output file is left untouched.\n"
+           "Output is deterministic; SOURCE_DATE_EPOCH and CAMWB_USER set the header's date and user.\n"
+           "Exit codes: 0 success, 1 error, 2 usage error.\n";
+}
+
+int fail(const std::string& message)
+{
+    std::cerr << "camwb-cli: error: " << message << "\n";
+    return kExitError;
+}
+
+int usageError(const std::string& message)
+{
+    std::cerr << "camwb-cli: " << message << "\n";
+    printUsage(std::cerr);
+    return kExitUsage;
+}
+
+int printMessages(const std::vector<post::PostMessage>& messages)
+{
+    int warnings = 0;
+    for (const post::PostMessage& message : messages) {
+        const bool isError = message.severity == post::PostMessage::Severity::Error;
+        std::cerr << "camwb-cli: " << (isError ? "error: " : "warning: ")
+                  << base::Error{message.text, message.file, message.line}.toString() << "\n";
+        warnings += isError ? 0 : 1;
+    }
+    return warnings;
+}
+
+bool takePostOption(const std::vector<std::string>& args, std::size_t& i, PostOptions& options, std::string& error)
+{
+    const std::string& arg = args[i];
+    const bool known = arg == "--post" || arg == "--machine" || arg == "--property" || arg == "--post-path" ||
+                       arg == "-o" || arg == "--output";
+    if (!known)
+        return false;
+    if (i + 1 >= args.size()) {
+        error = arg + " needs a value";
+        return true;
+    }
+    const std::string& value = args[++i];
+    if (arg == "--post") {
+        options.postId = value;
+    } else if (arg == "--machine") {
+        options.machineId = value;
+    } else if (arg == "--post-path") {
+        options.postPaths.push_back(value);
+    } else if (arg == "--property") {
+        auto assignment = post::splitPropertyAssignment(value);
+        if (!assignment)
+            error = assignment.error().message;
+        else
+            options.properties[assignment->first] = assignment->second;
+    } else {
+        options.output = value;
+    }
+    return true;
+}
+
+int postToFile(const post::PostProcessor& post, const toolpath::Toolpath& toolpath, const post::RunOptions& options,
+               const std::string& outputPath)
+{
+    auto summary = post.runToFile(toolpath, options, outputPath);
+    if (!summary)
+        return fail(summary.error().toString());
+    const int warnings = printMessages(summary->messages);
+    std::cout << "camwb-cli: wrote " << outputPath << " (" << summary->lines << " lines, " << warnings
+              << (warnings == 1 ? " warning)\n" : " warnings)\n");
+    return kExitOk;
+}
+
+}  // namespace camwb::cli

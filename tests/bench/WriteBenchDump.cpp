@@ -1,0 +1,28 @@
+// camwb-bench-dump <moves> <file.dump>: writes the benchmark program as a FreeCAD path dump, so
+// that FreeCAD's posts and ours post the same CL side by side (scripts/bench-posts.sh).
+#include "BenchProgram.h"
+
+#include "base/AtomicFile.h"
+
+#include <cstdio>
+#include <cstdlib>
+#include <string>
+
+int main(int argc, char** argv)
+{
+    if (argc != 3) {
+        std::fprintf(stderr, "usage: camwb-bench-dump <moves> <file.dump>\n");
+        return 2;
+    }
+    const long moves = std::strtol(argv[1], nullptr, 10);
+    if (moves <= 0) {
+        std::fprintf(stderr, "camwb-bench-dump: moves must be a positive number\n");
+        return 2;
+    }
+    const std::string dump = camwb::bench::asFreeCadDump(camwb::bench::benchProgram(static_cast<std::size_t>(moves)));
+    if (auto written = camwb::base::writeFileAtomically(argv[2], dump); !written) {
+        std::fprintf(stderr, "camwb-bench-dump: %s\n", written.error().toString().c_str());
+        return 1;
+    }
+    return 0;
+}

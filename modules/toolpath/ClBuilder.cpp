@@ -1,6 +1,43 @@
 #include "toolpath/ClBuilder.h"
 
+#include <algorithm>
+
 namespace camwb::toolpath {
+
+namespace {
+
+// The same message on many lines (NX writes a PAINT statement every few lines) is one warning
+// that lists the lines, so that the one that matters is not buried.
+std::vector<base::Error> mergeRepeatedWarnings(std::vector<base::Error> warnings)
+{
+    constexpr std::size_t kLinesListed = 8;
+    std::vector<base::Error> merged;
+    std::vector<std::vector<int>> repeats;  // further lines, per merged warning
+    for (base::Error& warning : warnings) {
+        auto same = std::find_if(merged.begin(), merged.end(),
+                                 [&](const base::Error& w) { return w.message == warning.message; });
+        if (same == merged.end()) {
+            merged.push_back(std::move(warning));
+            repeats.emplace_back();
+        } else {
+            repeats[static_cast<std::size_t>(same - merged.begin())].push_back(warning.line);
+        }
+    }
+    for (std::size_t i = 0; i < merged.size(); ++i) {
+        const std::vector<int>& lines = repeats[i];
+        if (lines.empty())
+            continue;
+        std::string list;
+        for (std::size_t k = 0; k < std::min(lines.size(), kLinesListed); ++k)
+            list += (k ? ", " : "") + std::to_string(lines[k]);
+        if (lines.size() > kLinesListed)
+            list += " and " + std::to_string(lines.size() - kLinesListed) + " more";
+        merged[i].message += " (also on line" + std::string(lines.size() > 1 ? "s " : " ") + list + ")";
+    }
+    return merged;
+}
+
+}  // namespace
 
 void ClBuilder::add(Record record, int line)
 {
@@ -53,7 +90,7 @@ ClImport ClBuilder::finish(int lastLine)
     ClImport out;
     for (std::size_t i = 0; i < m_records.size(); ++i)
         out.toolpath.add(std::move(m_records[i]), m_sources[i]);
-    out.warnings = std::move(m_warnings);
+    out.warnings = mergeRepeatedWarnings(std::move(m_warnings));
     m_records.clear();
     m_sources.clear();
     return out;

@@ -114,7 +114,14 @@ base::Status FreeCadDumpReader::entry(std::size_t index)
         return {};
     }
     if (e.name.front() == '(') {
-        emit(Comment{std::string(trim(std::string_view(e.name).substr(1, e.name.size() - 2)))}, e.line);
+        std::string text(trim(std::string_view(e.name).substr(1, e.name.size() - 2)));
+        // FreeCAD starts every object's path with its label as a comment: right after the
+        // "(Path: label)" note that opened the section, it names the section a second time.
+        const DumpEntry* before = index > 0 ? &m_entries[index - 1] : nullptr;
+        if (before && before->kind == DumpEntry::Kind::Note && before->name.rfind("Path:", 0) == 0 &&
+            trim(std::string_view(before->name).substr(5)) == text)
+            return {};
+        emit(Comment{std::move(text)}, e.line);
         return {};
     }
     const auto name = splitName(e.name);

@@ -12,7 +12,9 @@
 //
 // Commands and the records they give:
 //  (Path: label)      closes the open section and opens SectionBegin{label}; other "(...)" lines
-//                     and Command (text) [ ] -> Comment.
+//                     and Command (text) [ ] -> Comment, except "Command (label) [ ]" right after
+//                     its "(Path: label)": FreeCAD repeats each object's label there, and the
+//                     section already carries it.
 //  G0/G00, G1/G01     -> Rapid, Linear. F on a G0 is not a feed (FreeCAD writes F:0 there) and is
 //                     ignored; a G1 without F keeps the last feed. A move before X, Y or Z was
 //                     ever given takes the missing axis from the next command that gives it (a

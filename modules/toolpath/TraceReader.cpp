@@ -274,6 +274,8 @@ base::Result<ClImport> readTrace(std::string_view text, const std::string& fileN
             SectionBegin s;
             s.operationName = in.text();
             s.strategy = in.word();
+            if (s.strategy == "-")
+                s.strategy.clear();
             in.keyword("tool");
             s.toolNumber = in.integer();
             in.keyword("cut");

@@ -74,8 +74,10 @@ void TraceWriter::comment(const Comment& r) { m_out += "comment " + quoted(r.tex
 
 void TraceWriter::sectionBegin(const SectionBegin& r)
 {
-    m_out += "section " + quoted(r.operationName) + " " + r.strategy + " tool " + std::to_string(r.toolNumber) +
-             " cut " + num(r.feeds.cuttingMmPerMin) + " plunge " + num(r.feeds.plungeMmPerMin) + '\n';
+    // An empty strategy is "-", so that the line keeps its fields.
+    m_out += "section " + quoted(r.operationName) + " " + (r.strategy.empty() ? "-" : r.strategy) + " tool " +
+             std::to_string(r.toolNumber) + " cut " + num(r.feeds.cuttingMmPerMin) + " plunge " +
+             num(r.feeds.plungeMmPerMin) + '\n';
 }
 
 void TraceWriter::sectionEnd(const SectionEnd&) { m_out += "endsection\n"; }

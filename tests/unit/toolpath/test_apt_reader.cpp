@@ -28,7 +28,7 @@ TEST(AptReader, Seed004CatiaListingImports)
     auto result = readClFile(dataPath("seed004_catia_obr31.aptsource"), ClFormat::Apt);
     ASSERT_TRUE(result.ok()) << result.error().toString();
     EXPECT_EQ(traceOf(result->toolpath),
-              "section \"Profile Contouring.2\"  tool 3 cut 0.0000 plunge 0.0000\n"
+              "section \"Profile Contouring.2\" - tool 3 cut 0.0000 plunge 0.0000\n"
               "comment \"Start generation of : Profile Contouring.2\"\n"
               "tool 3 flat d 0.0000 r 0.0000 flute 0.0000 len 0.0000 \"\"\n"
               "spindle 70.0000 cw\n"
@@ -38,9 +38,10 @@ TEST(AptReader, Seed004CatiaListingImports)
               "endsection\n");
     const std::string file = dataPath("seed004_catia_obr31.aptsource");
     EXPECT_EQ(warnings(result.value()),
-              file + ":12:47: text after '$' is read as the continuation of the statement (APT would ignore it)\n" +
-                  file + ":12:57: the statement ends with ',' and continues on the next line without '$'\n" + file +
-                  ":13:37: text after '$' is read as the continuation of the statement (APT would ignore it)\n" +
+              file +
+                  ":12:47: text after '$' is read as the continuation of the statement (APT would ignore it) (also on "
+                  "line 13)\n" +
+                  file + ":12:57: the statement ends with ',' and continues on the next line without '$'\n" +
                   // The "..." lines removed from the listing held the moves up to the circle.
                   file + ":12: the arc starts 37.8727 mm off its circle (radius 21)\n" + file +
                   ":13: no FINI at the end of the file: it may be truncated\n");
@@ -66,7 +67,7 @@ TEST(AptReader, CatiaV5ProfileFile)
         "comment \"Part Operation.1\"\n"
         "coolant flood\n"
         "comp off\n"
-        "section \"Tool Change.1\"  tool 3 cut 0.0000 plunge 0.0000\n"
+        "section \"Tool Change.1\" - tool 3 cut 0.0000 plunge 0.0000\n"
         "comment \"Start generation of : Tool Change.1\"\n"
         "comment \"TOOLCHANGEBEGINNING\"\n"
         "comment \"T3 End Mill D 10\"\n"
@@ -74,7 +75,7 @@ TEST(AptReader, CatiaV5ProfileFile)
         "comment \"TOOLCHANGEEND\"\n"
         "comment \"End of generation of : Tool Change.1\"\n"
         "endsection\n"
-        "section \"Profile Contouring.2\"  tool 3 cut 0.0000 plunge 0.0000\n"
+        "section \"Profile Contouring.2\" - tool 3 cut 0.0000 plunge 0.0000\n"
         "comment \"Start generation of : Profile Contouring.2\"\n"
         "spindle 2400.0000 cw\n"
         "rapid -63.0000 -60.0000 50.0000\n"
@@ -93,7 +94,7 @@ TEST(AptReader, CatiaV5ProfileFile)
         "rapid -63.0000 -60.0000 50.0000\n"
         "comment \"End of generation of : Profile Contouring.2\"\n"
         "endsection\n"
-        "section \"Circular Milling.1\"  tool 3 cut 0.0000 plunge 0.0000\n"
+        "section \"Circular Milling.1\" - tool 3 cut 0.0000 plunge 0.0000\n"
         "comment \"Start generation of : Circular Milling.1\"\n"
         "rapid 12.0000 0.0000 30.0000\n"
         "rapid 12.0000 0.0000 3.0000\n"
@@ -122,7 +123,7 @@ TEST(AptReader, NxClsfFile)
     auto result = readClFile(dataPath("nx_face_and_drill.cls"), ClFormat::Apt);
     ASSERT_TRUE(result.ok()) << result.error().toString();
     EXPECT_EQ(traceOf(result->toolpath),
-              "section \"FACE_MILLING\"  tool 2 cut 0.0000 plunge 0.0000\n"
+              "section \"FACE_MILLING\" - tool 2 cut 0.0000 plunge 0.0000\n"
               "comment \"centerline data\"\n"
               "tool 2 bull d 20.0000 r 1.0000 flute 0.0000 len 75.0000 \"MILL_D20R1\"\n"
               "spindle 3200.0000 cw\n"
@@ -141,7 +142,7 @@ TEST(AptReader, NxClsfFile)
               "arc cw 30.0000 0.0000 -4.0000 c 25.0000 0.0000 3.0000 n 0.0000 0.0000 1.0000 turns 1 f 400.0000\n"
               "rapid 30.0000 0.0000 50.0000\n"
               "endsection\n"
-              "section \"DRILLING\"  tool 7 cut 0.0000 plunge 0.0000\n"
+              "section \"DRILLING\" - tool 7 cut 0.0000 plunge 0.0000\n"
               "comment \"centerline data\"\n"
               "tool 7 drill d 6.8000 r 0.0000 flute 0.0000 len 0.0000 \"DRILL_6_8\"\n"
               "spindle 1800.0000 cw\n"
@@ -162,12 +163,13 @@ TEST(AptReader, NxClsfFile)
               "endsection\n"
               "spindle 0.0000 cw\n"
               "coolant off\n");
-    // Eleven PAINT statements and the tool preselection are reported, each with its line.
-    ASSERT_EQ(result->warnings.size(), 12u);
-    EXPECT_EQ(result->warnings[2].message, "SELECT (tool preselection) ignored: the CL model has no preselection");
-    EXPECT_EQ(result->warnings[2].line, 8);
-    EXPECT_EQ(result->warnings[11].message, "PAINT (display statement) ignored");
-    EXPECT_EQ(result->warnings[11].line, 41);
+    // Eleven PAINT statements make one warning that lists their lines; the tool preselection another.
+    ASSERT_EQ(result->warnings.size(), 2u);
+    EXPECT_EQ(result->warnings[0].message,
+              "PAINT (display statement) ignored (also on lines 6, 11, 14, 17, 20, 28, 33, 37 and 2 more)");
+    EXPECT_EQ(result->warnings[0].line, 5);
+    EXPECT_EQ(result->warnings[1].message, "SELECT (tool preselection) ignored: the CL model has no preselection");
+    EXPECT_EQ(result->warnings[1].line, 8);
     EXPECT_EQ(sources(result->toolpath), "0:1 0:4 0:7 0:9 0:10 0:13 0:16 0:19 0:22 0:23 0:25 0:26 0:30 0:32 0:35 0:39 "
                                          "0:42 1:43 1:46 1:47 1:48 1:50 1:52 1:54 1:57 1:61 1:62 -1:63 -1:64 ");
 }
@@ -440,7 +442,7 @@ TEST(AptReader, ToolChangesTakeTheCutterGeometry)
                                      "TLDATA/DRILL,8.5,0,70,118,40\n"  // ... until this fills it in (Creo)
                                      "LOAD/SPINDLE,1\n"
                                      "FINI\n");
-    EXPECT_EQ(traceOf(imported.toolpath), "section \"ROUGH\"  tool 5 cut 0.0000 plunge 0.0000\n"
+    EXPECT_EQ(traceOf(imported.toolpath), "section \"ROUGH\" - tool 5 cut 0.0000 plunge 0.0000\n"
                                           "tool 5 bull d 12.0000 r 0.5000 flute 30.0000 len 80.0000 \"EM12\"\n"
                                           "linear 0.0000 0.0000 5.0000 f 100.0000\n"
                                           "tool 6 ball d 8.0000 r 4.0000 flute 0.0000 len 0.0000 \"\"\n"
@@ -454,7 +456,7 @@ TEST(AptReader, ToolChangesTakeTheCutterGeometry)
               "linear 0.0000 0.0000 0.0000 f 1.0000\n"
               "tool 1 flat d 6.0000 r 0.0000 flute 0.0000 len 0.0000 \"\"\n");
     EXPECT_EQ(traceFini("TOOL PATH/A,TOOL,BALL10\nCUTTER/10,5\nLOADTL/1\nLOADTL/2\nLOADTL/1\n"),
-              "section \"A\"  tool 1 cut 0.0000 plunge 0.0000\n"
+              "section \"A\" - tool 1 cut 0.0000 plunge 0.0000\n"
               "tool 1 ball d 10.0000 r 5.0000 flute 0.0000 len 0.0000 \"BALL10\"\n"
               "tool 2 flat d 0.0000 r 0.0000 flute 0.0000 len 0.0000 \"\"\n"
               "tool 1 ball d 10.0000 r 5.0000 flute 0.0000 len 0.0000 \"BALL10\"\n"
@@ -495,14 +497,14 @@ TEST(AptReader, SectionsNumberRecords)
                                      "GOTO/4,0,0\n"
                                      "more\n");
     EXPECT_EQ(traceOf(imported.toolpath), "tool 4 flat d 0.0000 r 0.0000 flute 0.0000 len 0.0000 \"\"\n"
-                                          "section \"Pocket.1\"  tool 4 cut 0.0000 plunge 0.0000\n"
+                                          "section \"Pocket.1\" - tool 4 cut 0.0000 plunge 0.0000\n"
                                           "linear 0.0000 0.0000 0.0000 f 100.0000\n"
                                           "endsection\n"
-                                          "section \"Pocket.2\"  tool 9 cut 0.0000 plunge 0.0000\n"
+                                          "section \"Pocket.2\" - tool 9 cut 0.0000 plunge 0.0000\n"
                                           "tool 9 flat d 0.0000 r 0.0000 flute 0.0000 len 0.0000 \"\"\n"
                                           "endsection\n"
                                           "linear 1.0000 0.0000 0.0000 f 100.0000\n"
-                                          "section \"CONTOUR\"  tool 9 cut 0.0000 plunge 0.0000\n"
+                                          "section \"CONTOUR\" - tool 9 cut 0.0000 plunge 0.0000\n"
                                           "linear 2.0000 0.0000 0.0000 f 100.0000\n"
                                           "endsection\n"
                                           "linear 3.0000 0.0000 0.0000 f 100.0000\n");

@@ -33,13 +33,11 @@ TEST(FreeCadDumpReader, Seed004Obr30Imports)
               "comment \"but is not useful for driving machines.\"\n"
               "comment \"Consider setting a default postprocessor in your project or\"\n"
               "comment \"exporting your paths using a specific post that matches your machine\"\n"
-              "section \"T1: D16\"  tool 1 cut 0.0000 plunge 0.0000\n"
-              "comment \"T1: D16\"\n"
+              "section \"T1: D16\" - tool 1 cut 0.0000 plunge 0.0000\n"
               "tool 1 flat d 0.0000 r 0.0000 flute 0.0000 len 0.0000 \"\"\n"
               "spindle 2000.0000 cw\n"
               "endsection\n"
-              "section \"Pocket_Shape\"  tool 1 cut 0.0000 plunge 0.0000\n"
-              "comment \"Pocket_Shape\"\n"
+              "section \"Pocket_Shape\" - tool 1 cut 0.0000 plunge 0.0000\n"
               // The first move names Z only: X and Y come from the next move that names them.
               "rapid 83.0000 67.0000 20.0000\n"
               "rapid 83.0000 67.0000 20.0000\n"
@@ -55,9 +53,9 @@ TEST(FreeCadDumpReader, Seed004Obr30Imports)
                   // The "..." line held the moves that bring the tool onto this arc's circle.
                   file + ":18: the arc's start and end radii differ by 37.7585 mm (36.4974 and 74.2558)\n");
     EXPECT_EQ(sources(result->toolpath),
-              "-1:1 -1:2 -1:3 -1:4 -1:5 0:7 0:8 0:9 0:10 0:11 1:11 1:12 1:13 1:14 1:15 1:16 1:17 1:18 1:19 ");
+              "-1:1 -1:2 -1:3 -1:4 -1:5 0:7 0:9 0:10 0:11 1:11 1:13 1:14 1:15 1:16 1:17 1:18 1:19 ");
     // 3.3333 mm/s is 199.998 mm/min, from the file's own digits.
-    EXPECT_EQ(std::get<Linear>(result->toolpath.record(15)).feedMmPerMin, 3.3333 * 60);
+    EXPECT_EQ(std::get<Linear>(result->toolpath.record(14)).feedMmPerMin, 3.3333 * 60);
 }
 
 TEST(FreeCadDumpReader, DrillingAndHelixFile)
@@ -70,16 +68,14 @@ TEST(FreeCadDumpReader, DrillingAndHelixFile)
               "comment \"but is not useful for driving machines.\"\n"
               "comment \"Consider setting a default postprocessor in your project or\"\n"
               "comment \"exporting your paths using a specific post that matches your machine\"\n"
-              "section \"Fixture\"  tool 0 cut 0.0000 plunge 0.0000\n"
+              "section \"Fixture\" - tool 0 cut 0.0000 plunge 0.0000\n"
               "workoffset 1\n"
               "endsection\n"
-              "section \"TC: 6.8mm Drill\"  tool 4 cut 0.0000 plunge 0.0000\n"
-              "comment \"TC: 6.8mm Drill\"\n"
+              "section \"TC: 6.8mm Drill\" - tool 4 cut 0.0000 plunge 0.0000\n"
               "tool 4 flat d 0.0000 r 0.0000 flute 0.0000 len 0.0000 \"\"\n"
               "spindle 1800.0000 cw\n"
               "endsection\n"
-              "section \"Drilling\"  tool 4 cut 0.0000 plunge 0.0000\n"
-              "comment \"Drilling\"\n"
+              "section \"Drilling\" - tool 4 cut 0.0000 plunge 0.0000\n"
               "comment \"Begin Drilling\"\n"
               "rapid 10.0000 10.0000 15.0000\n"
               // G98: back to the Z before the cycle; the hole top is taken as R.
@@ -92,8 +88,7 @@ TEST(FreeCadDumpReader, DrillingAndHelixFile)
               "  hole 30.0000 30.0000 3.0000\n"
               "rapid 30.0000 30.0000 15.0000\n"
               "endsection\n"
-              "section \"Spot\"  tool 4 cut 0.0000 plunge 0.0000\n"
-              "comment \"Spot\"\n"
+              "section \"Spot\" - tool 4 cut 0.0000 plunge 0.0000\n"
               "rapid 30.0000 30.0000 15.0000\n"
               // The second G82 names only X and Y: R, Z, P and F are modal.
               "cycle drillDwell clear 15.0000 retract 2.0000 top 2.0000 bottom -1.0000 peck 0.0000 dwell 0.5000 f "
@@ -106,13 +101,11 @@ TEST(FreeCadDumpReader, DrillingAndHelixFile)
               "  hole 30.0000 30.0000 2.0000\n"
               "rapid 30.0000 30.0000 15.0000\n"
               "endsection\n"
-              "section \"TC: 8mm Endmill\"  tool 2 cut 0.0000 plunge 0.0000\n"
-              "comment \"TC: 8mm Endmill\"\n"
+              "section \"TC: 8mm Endmill\" - tool 2 cut 0.0000 plunge 0.0000\n"
               "tool 2 flat d 0.0000 r 0.0000 flute 0.0000 len 0.0000 \"\"\n"
               "spindle 5000.0000 cw\n"
               "endsection\n"
-              "section \"Helix\"  tool 2 cut 0.0000 plunge 0.0000\n"
-              "comment \"Helix\"\n"
+              "section \"Helix\" - tool 2 cut 0.0000 plunge 0.0000\n"
               "rapid 30.0000 30.0000 20.0000\n"
               "rapid 49.0000 30.0000 20.0000\n"
               "rapid 49.0000 30.0000 15.0000\n"
@@ -280,14 +273,14 @@ TEST(FreeCadDumpReader, CommentsAndSections)
                                      "(Path: Second)\n"
                                      "Command G0 [ X:1 Y:2 Z:3 ]\n");
     EXPECT_EQ(traceOf(imported.toolpath), "comment \"Header remark\"\n"
-                                          "section \"Profile\"  tool 0 cut 0.0000 plunge 0.0000\n"
-                                          "comment \"Profile\"\n"
+                                          "section \"Profile\" - tool 0 cut 0.0000 plunge 0.0000\n"
                                           "comment \"a (nested) remark\"\n"
                                           "endsection\n"
-                                          "section \"Second\"  tool 0 cut 0.0000 plunge 0.0000\n"
+                                          "section \"Second\" - tool 0 cut 0.0000 plunge 0.0000\n"
                                           "rapid 1.0000 2.0000 3.0000\n"
                                           "endsection\n");
-    EXPECT_EQ(sources(imported.toolpath), "-1:1 0:2 0:3 0:4 0:5 1:5 1:6 1:6 ");
+    // "Command (Profile) [ ]" repeats the label of the section it opens: not a comment of its own.
+    EXPECT_EQ(sources(imported.toolpath), "-1:1 0:2 0:4 0:5 1:5 1:6 1:6 ");
 }
 
 TEST(FreeCadDumpReader, UnknownCommandsAreWarnings)

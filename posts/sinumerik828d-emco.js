@@ -87,6 +87,17 @@ post.blocks = {
     }
 };
 
+// What the CL left running; null until it says (the spindle may run from MDI): then M5/M9 are written.
+var spindleOn = null;
+var coolantOn = null;
+
+// M5/M9 before a tool change and at the end, unless the CL already stopped spindle and coolant.
+function stopSpindleAndCoolant() {
+    writeBlock(spindleOn !== false ? "M5" : "", coolantOn !== false ? "M9" : "");
+    spindleOn = false;
+    coolantOn = false;
+}
+
 // Comments never carry parentheses (seed-004 R7).
 function comment(text) {
     writeComment(String(text).replace(/[()]/g, ""));
@@ -136,13 +147,14 @@ function onSectionEnd() {
 }
 
 function onToolChange(tool) {
-    writeBlock("M5", "M9");
+    stopSpindleAndCoolant();
     comment(getProperty("toolChangeComment"));
     writeBlock("M6", "T" + Math.trunc(tool.number), "D1");
     forceMotion();
 }
 
 function onSpindle(rpm, clockwise) {
+    spindleOn = rpm > 0;
     if (rpm <= 0)
         writeBlock("M5");
     else
@@ -150,14 +162,16 @@ function onSpindle(rpm, clockwise) {
 }
 
 function onCoolant(mode) {
-    if (mode == "off")
+    if (mode == "off") {
         writeBlock("M9");
-    else if (mode == "flood")
-        writeBlock("M8");
-    else if (mode == "mist" && machine && machine.coolants.indexOf("mist") >= 0)
-        writeBlock("M7");
-    else
-        warning("coolant " + mode + " is not available on this machine: not output");
+        coolantOn = false;
+    } else if (mode == "flood" || (mode == "mist" && machine && machine.coolants.indexOf("mist") >= 0)) {
+        writeBlock(mode == "flood" ? "M8" : "M7");
+        coolantOn = true;
+    } else if (!machine || machine.coolants.indexOf(mode) >= 0) {
+        // (Without this coolant on the machine, the kernel's limit check has said so already.)
+        warning("coolant " + mode + " is not written by this post: not output");
+    }
 }
 
 function onFeedMode(mode) {
@@ -272,6 +286,6 @@ function onCycleEnd(cycle) {
 }
 
 function onClose() {
-    writeBlock("M5", "M9");
+    stopSpindleAndCoolant();
     writeBlock("M30");
 }

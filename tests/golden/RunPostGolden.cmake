@@ -1,0 +1,58 @@
+# One golden case of a post (posts/<id>/tests/<case>/): posts input.* with camwb-cli and the
+# case's properties (one name=value per line, optional) and machine (optional), twice, and checks
+# that both runs are byte-identical and equal expected.<ext>, and that the warnings equal
+# expected.warnings (paths made relative; a post script's line numbers left out so that editing
+# the script does not churn every case). CAMWB_UPDATE_GOLDEN=1 rewrites the expected files.
+file(GLOB inputs ${CASE}/input.*)
+list(LENGTH inputs count)
+if(NOT count EQUAL 1)
+  message(FATAL_ERROR "${CASE}: expected exactly one input.* file, found ${count}")
+endif()
+set(args post ${inputs} --post ${POST})
+if(EXISTS ${CASE}/properties)
+  file(STRINGS ${CASE}/properties lines)
+  foreach(line IN LISTS lines)
+    if(line MATCHES "^[ \t]*(#|$)")
+      continue()
+    endif()
+    list(APPEND args --property "${line}")
+  endforeach()
+endif()
+if(EXISTS ${CASE}/machine)
+  file(STRINGS ${CASE}/machine machine LIMIT_COUNT 1)
+  list(APPEND args --machine ${machine})
+endif()
+
+file(MAKE_DIRECTORY ${OUT})
+foreach(run IN ITEMS first second)
+  execute_process(COMMAND ${CLI} ${args} -o ${OUT}/${run}.${EXT}
+                  RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err_${run})
+  if(NOT rc EQUAL 0)
+    message(FATAL_ERROR "camwb-cli ${args} failed (${rc}):\n${out}${err_${run}}")
+  endif()
+endforeach()
+execute_process(COMMAND ${CMAKE_COMMAND} -E compare_files ${OUT}/first.${EXT} ${OUT}/second.${EXT}
+                RESULT_VARIABLE different)
+if(different OR NOT err_first STREQUAL err_second)
+  message(FATAL_ERROR "two runs on the same input differ: posting is not deterministic")
+endif()
+
+string(REPLACE "${SOURCE_DIR}/" "" warnings "${err_first}")
+string(REGEX REPLACE "[^ \n]*\\.js:[0-9]+: " "<post>: " warnings "${warnings}")
+
+set(expected_nc ${CASE}/expected.${EXT})
+if("$ENV{CAMWB_UPDATE_GOLDEN}" STREQUAL "1")
+  file(COPY_FILE ${OUT}/first.${EXT} ${expected_nc})
+  file(WRITE ${CASE}/expected.warnings "${warnings}")
+  message(STATUS "updated ${expected_nc} and expected.warnings: review the diff before committing")
+  return()
+endif()
+execute_process(COMMAND ${CMAKE_COMMAND} -E compare_files ${OUT}/first.${EXT} ${expected_nc} RESULT_VARIABLE different)
+if(different)
+  execute_process(COMMAND diff -u ${expected_nc} ${OUT}/first.${EXT} OUTPUT_VARIABLE diff)
+  message(FATAL_ERROR "NC differs from ${expected_nc}:\n${diff}")
+endif()
+file(READ ${CASE}/expected.warnings expected_warnings)
+if(NOT warnings STREQUAL expected_warnings)
+  message(FATAL_ERROR "warnings differ from ${CASE}/expected.warnings:\nexpected:\n${expected_warnings}\nactual:\n${warnings}")
+endif()

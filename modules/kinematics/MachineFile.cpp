@@ -134,7 +134,7 @@ base::Result<Machine> findMachine(const std::string& id, const std::vector<std::
         const fs::path candidate = fs::path(dir) / (id + ".json");
         std::error_code ec;
         if (!fs::is_regular_file(candidate, ec)) {
-            looked += "\n  " + candidate.string();
+            looked += (looked.empty() ? "" : ", ") + candidate.string();
             continue;
         }
         auto machine = loadMachine(candidate.string());
@@ -144,7 +144,8 @@ base::Result<Machine> findMachine(const std::string& id, const std::vector<std::
                                    candidate.string());
         return machine;
     }
-    return base::makeError("machine '" + id + "' not found; looked in:" + (looked.empty() ? " (nowhere)" : looked));
+    return base::makeError("machine '" + id + "' not found (looked for " +
+                           (looked.empty() ? std::string("it in no folder: none configured") : looked) + ")");
 }
 
 }  // namespace camwb::kinematics

@@ -65,6 +65,8 @@ bool OutputWriter::writeBlock(const std::vector<std::string>& words)
 
 void OutputWriter::addWord(std::string_view prefix, std::string_view text)
 {
+    while (!text.empty() && (text.back() == '\r' || text.back() == '\n'))
+        text.remove_suffix(1);  // a word that ends a line would leave a blank at the end of the block
     if (prefix.empty() && text.empty())
         return;
     if (m_blockWords++ == 0)

@@ -58,11 +58,10 @@ base::Result<std::string> findPost(const std::string& id, const std::vector<base
         std::error_code ec;
         if (fs::is_regular_file(candidate, ec))
             return candidate.string();
-        looked += "\n  " + candidate.string();
+        looked += (looked.empty() ? "" : ", ") + candidate.string();
     }
-    if (dirs.empty())
-        looked = " (no post folders configured)";
-    return base::makeError("post '" + id + "' not found; looked in:" + looked);
+    return base::makeError("post '" + id + "' not found (looked for " +
+                           (looked.empty() ? std::string("it in no folder: none configured") : looked) + ")");
 }
 
 base::Result<std::optional<kinematics::Machine>> machineForPost(const PostInfo& info, const std::string& requestedId,

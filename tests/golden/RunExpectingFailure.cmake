@@ -1,4 +1,5 @@
-# Runs the CLI expecting a given exit code, a text on stderr, and no output file left behind.
+# Runs the CLI expecting a given exit code, a text on stderr, and no output file left behind. An
+# error (exit 1) is a one-line reason; a usage error (exit 2) gives its reason and then the usage.
 file(REMOVE ${FORBID_FILE})
 execute_process(COMMAND ${CLI} ${ARGS} RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
 if(NOT rc EQUAL EXPECT_EXIT)
@@ -10,7 +11,7 @@ if(found EQUAL -1)
 endif()
 string(REGEX MATCHALL "\n" lines "${err}")
 list(LENGTH lines count)
-if(NOT count EQUAL 1)
+if(EXPECT_EXIT EQUAL 1 AND NOT count EQUAL 1)
   message(FATAL_ERROR "expected a one-line reason on stderr, got ${count} lines:\n${err}")
 endif()
 if(EXISTS ${FORBID_FILE})

@@ -1,0 +1,22 @@
+# A post that fails half way leaves an existing output file exactly as it was and no temporary
+# file beside it; the reason names the post file and line.
+get_filename_component(dir ${OUT} DIRECTORY)
+file(REMOVE_RECURSE ${dir})
+file(MAKE_DIRECTORY ${dir})
+file(WRITE ${OUT} "previous program\n")
+execute_process(COMMAND ${CLI} post ${INPUT} --post throws-while-posting --post-path ${POST_PATH} -o ${OUT}
+                RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+if(NOT rc EQUAL 1)
+  message(FATAL_ERROR "expected exit 1, got ${rc}: ${err}")
+endif()
+if(NOT err MATCHES "throws-while-posting.js:7: second move refused \\(in onRapid, CL record [0-9]+ Rapid\\)")
+  message(FATAL_ERROR "the reason does not name the post's file, line and record:\n${err}")
+endif()
+file(READ ${OUT} kept)
+if(NOT kept STREQUAL "previous program\n")
+  message(FATAL_ERROR "the output file was changed:\n${kept}")
+endif()
+file(GLOB leftovers ${dir}/*.tmp-*)
+if(leftovers)
+  message(FATAL_ERROR "temporary files left behind: ${leftovers}")
+endif()

@@ -1,0 +1,23 @@
+# A post in the user's folder: listed with its origin, overriding the built-in one of the same id,
+# and used by `camwb-cli post`. HOME points into the build folder; the user folder is made here.
+set(user_posts ${HOME}/.local/share/camwb/posts)
+file(REMOVE_RECURSE ${HOME})
+file(MAKE_DIRECTORY ${user_posts})
+file(COPY_FILE ${USER_POST} ${user_posts}/sinumerik828d-emco.js)
+set(ENV{HOME} ${HOME})
+execute_process(COMMAND ${CLI} posts RESULT_VARIABLE rc OUTPUT_VARIABLE listing ERROR_VARIABLE err)
+if(NOT rc EQUAL 0)
+  message(FATAL_ERROR "camwb-cli posts failed (${rc}): ${err}")
+endif()
+if(NOT listing MATCHES "sinumerik828d-emco +Me +user copy of the 828D post +mpf +user \\(overrides [^\n]*/posts/sinumerik828d-emco.js\\)")
+  message(FATAL_ERROR "the user post is not listed as overriding the built-in one:\n${listing}")
+endif()
+if(NOT listing MATCHES "linuxcnc +LinuxCNC [^\n]* +ngc +built-in\n")
+  message(FATAL_ERROR "the built-in linuxcnc post is not listed:\n${listing}")
+endif()
+execute_process(COMMAND ${CLI} post ${INPUT} --post sinumerik828d-emco -o ${OUT}
+                RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+file(READ ${OUT} nc)
+if(NOT rc EQUAL 0 OR NOT nc MATCHES "^; user copy\nRAPID ")
+  message(FATAL_ERROR "camwb-cli post did not use the user's post (${rc}):\n${err}\n${nc}")
+endif()

@@ -1,0 +1,235 @@
+// Running posts: the per-call script budget, output streamed atomically into files, where posts are
+// found (user folders over built-in ones), and the kernel services around the moves.
+#include "PostTestSupport.h"
+
+#include "post/OutputWriter.h"
+#include "post/PostRegistry.h"
+
+#include <chrono>
+#include <filesystem>
+#include <fstream>
+
+namespace camwb::post::test {
+namespace {
+
+using namespace toolpath;
+namespace fs = std::filesystem;
+
+base::Result<PostOutput> runWith(const std::string& name, const std::string& source, const Toolpath& path,
+                                 std::chrono::milliseconds budget = std::chrono::seconds(10))
+{
+    auto post = PostProcessor::load(writeScript(name, source), budget);
+    if (!post)
+        return post.error();
+    RunOptions options;
+    options.context = fixedContext();
+    options.scriptBudget = budget;
+    return post->run(path, options);
+}
+
+std::string readFile(const fs::path& path)
+{
+    std::ifstream in(path, std::ios::binary);
+    return std::string(std::istreambuf_iterator<char>(in), {});
+}
+
+fs::path freshDir(const std::string& name)
+{
+    const fs::path dir = fs::path(testing::TempDir()) / ("camwb-" + name + "-" + std::to_string(::getpid()));
+    fs::remove_all(dir);
+    fs::create_directories(dir);
+    return dir;
+}
+
+TEST(ScriptBudget, RunawayHandlerIsInterruptedWithItsPlace)
+{
+    const auto start = std::chrono::steady_clock::now();
+    auto output = runWith("runaway.js", "var post = {};\nfunction onOpen() {\n  while (true) {}\n}\n", {},
+                          std::chrono::milliseconds(200));
+    ASSERT_FALSE(output.ok());
+    EXPECT_EQ(output.error().message,
+              "the post script ran longer than its budget of 0.2 s and was interrupted (in onOpen)");
+    EXPECT_NE(output.error().file.find("runaway.js"), std::string::npos);
+    EXPECT_LT(std::chrono::steady_clock::now() - start, std::chrono::seconds(5));
+}
+
+TEST(ScriptBudget, RunawayTopLevelCodeFailsTheLoad)
+{
+    auto post =
+        PostProcessor::load(writeScript("loops.js", "var post = {};\nfor (;;) {}\n"), std::chrono::milliseconds(200));
+    ASSERT_FALSE(post.ok());
+    EXPECT_EQ(post.error().message,
+              "the post script ran longer than its budget of 0.2 s while loading and was interrupted");
+}
+
+TEST(ScriptBudget, TheBudgetIsPerCallNotPerRun)
+{
+    // 40 calls of about 25 ms each: a second in all, far over a 150 ms budget, yet each call is short.
+    Toolpath path;
+    for (int i = 0; i < 40; ++i)
+        path.add(Comment{"c"});
+    auto output = runWith("slow.js", R"JS(var post = {};
+function onComment(text) {
+    var until = Date.now() + 25;
+    while (Date.now() < until) {}
+    writeln(text);
+}
+)JS",
+                          path, std::chrono::milliseconds(150));
+    ASSERT_TRUE(output.ok()) << output.error().toString();
+    EXPECT_EQ(lines(output->text).size(), 40u);
+}
+
+TEST(RunToFile, WritesWhatRunReturnsStreamedInChunks)
+{
+    auto post = PostProcessor::load(kEmcoPost);
+    ASSERT_TRUE(post.ok()) << post.error().toString();
+    Toolpath path;
+    path.add(Rapid{{0, 0, 10}});
+    for (int i = 0; i < 60000; ++i)  // about 1.5 MB: more than one chunk of the stream
+        path.add(Linear{{static_cast<double>(i % 100), static_cast<double>(i / 100), -1}, 500.0 + i % 7});
+    RunOptions options;
+    options.context = fixedContext();
+    const fs::path dir = freshDir("runtofile");
+    auto summary = post->runToFile(path, options, (dir / "out.mpf").string());
+    ASSERT_TRUE(summary.ok()) << summary.error().toString();
+    auto inMemory = post->run(path, options);
+    ASSERT_TRUE(inMemory.ok());
+    const std::string written = readFile(dir / "out.mpf");
+    EXPECT_GT(written.size(), std::size_t(1) << 20);
+    EXPECT_EQ(written, inMemory->text);
+    EXPECT_EQ(summary->bytes, written.size());
+    EXPECT_EQ(summary->lines, inMemory->lineOperation.size());
+    EXPECT_EQ(std::distance(fs::directory_iterator(dir), fs::directory_iterator()), 1);  // no temporary left
+}
+
+TEST(RunToFile, AFailedRunLeavesTheOutputAsItWas)
+{
+    const std::string script = writeScript("failslate.js", R"JS(var post = {};
+function onRapid(x, y, z) { writeln("G0 X" + x); if (x > 1) error("refused"); }
+)JS");
+    auto post = PostProcessor::load(script);
+    ASSERT_TRUE(post.ok()) << post.error().toString();
+    Toolpath path;
+    path.add(Rapid{{1, 0, 0}});
+    path.add(Rapid{{2, 0, 0}});
+    const fs::path dir = freshDir("keeps");
+    std::ofstream(dir / "out.nc") << "previous\n";
+    RunOptions options;
+    options.context = fixedContext();
+    auto summary = post->runToFile(path, options, (dir / "out.nc").string());
+    ASSERT_FALSE(summary.ok());
+    EXPECT_EQ(summary.error().message, "refused (in onRapid, CL record 1 Rapid)");
+    EXPECT_EQ(readFile(dir / "out.nc"), "previous\n");
+    EXPECT_EQ(std::distance(fs::directory_iterator(dir), fs::directory_iterator()), 1);
+    EXPECT_FALSE(post->runToFile(path, options, (dir / "no-such-dir" / "out.nc").string()).ok());
+}
+
+TEST(PostRegistry, UserFoldersOverrideBuiltInOnesAndTheListingSaysSo)
+{
+    const fs::path user = freshDir("user-posts");
+    std::ofstream(user / "sinumerik828d-emco.js") << "var post = {};\n";
+    std::ofstream(user / "mine.js") << "var post = {};\n";
+    std::ofstream(user / "notes.txt") << "not a post\n";
+    const std::vector<base::DataDir> dirs{{user.string(), false}, {kPostsDir, true}, {kPostsDir, true}};
+    const std::vector<PostEntry> posts = listPosts(dirs);
+    ASSERT_EQ(posts.size(), 3u);  // sorted by id; the built-in folder twice is still one folder
+    EXPECT_EQ(posts[0].id, "linuxcnc");
+    EXPECT_TRUE(posts[0].builtIn);
+    EXPECT_TRUE(posts[0].shadows.empty());
+    EXPECT_EQ(posts[1].id, "mine");
+    EXPECT_FALSE(posts[1].builtIn);
+    EXPECT_EQ(posts[2].id, "sinumerik828d-emco");
+    EXPECT_EQ(posts[2].path, (user / "sinumerik828d-emco.js").string());
+    EXPECT_FALSE(posts[2].builtIn);
+    EXPECT_EQ(posts[2].shadows, std::vector<std::string>{kEmcoPost});
+    EXPECT_EQ(findPost("sinumerik828d-emco", dirs).value(), (user / "sinumerik828d-emco.js").string());
+}
+
+TEST(KernelMoves, InverseTimeFeedsAreScaledToEachPieceOfASplitArc)
+{
+    Toolpath path;
+    path.add(Rapid{{10, 0, 0}});
+    path.add(FeedModeChange{FeedMode::InverseTime});
+    path.add(Arc{{10, 0, 0}, {0, 0, 0}, {0, 0, 1}, false, 0, 2});      // a full circle in half a minute
+    path.add(Arc{{0, 10, 0}, {0, 0, 0}, {0.6, 0.8, 0}, false, 0, 3});  // oblique: linearised
+    auto output = runWith("inverse.js", R"JS(var post = {capabilities: {tolerance: 1}};
+function onFeedMode(mode) {}
+function onRapid(x, y, z) {}
+function onLinear(x, y, z, feed) { writeln("line " + feed); }
+function onCircular(cw, cx, cy, cz, x, y, z, feed, arc) { writeln("arc " + feed + " of " + arc.pieces); }
+)JS",
+                          path);
+    ASSERT_TRUE(output.ok()) << output.error().toString();
+    const std::vector<std::string> all = lines(output->text);
+    ASSERT_GE(all.size(), 3u);
+    EXPECT_EQ(all[0], "arc 4 of 2");
+    EXPECT_EQ(all[1], "arc 4 of 2");
+    const std::size_t segments = all.size() - 2;
+    EXPECT_EQ(all[2], "line " + std::to_string(3 * segments));
+}
+
+TEST(KernelMoves, FiveAxisMovesAlongZAreThreeAxisMovesOthersAreRefused)
+{
+    const std::string source = R"JS(var post = {};
+function onRapid(x, y, z) { writeln("rapid " + z); }
+function onLinear(x, y, z, feed) { writeln("linear " + z + " " + feed); }
+)JS";
+    Toolpath along;
+    along.add(ToolAxisMove{{0, 0, 10}, {0, 0, 1}, 0});
+    along.add(ToolAxisMove{{0, 0, 5}, {0, 0, 1}, 200});
+    auto output = runWith("threeaxis.js", source, along);
+    ASSERT_TRUE(output.ok()) << output.error().toString();
+    EXPECT_EQ(output->text, "rapid 10\nlinear 5 200\n");
+    Toolpath tilted;
+    tilted.add(ToolAxisMove{{0, 0, 10}, {0, 0.6, 0.8}, 100});
+    auto refused = runWith("threeaxis.js", source, tilted);
+    ASSERT_FALSE(refused.ok());
+    EXPECT_EQ(refused.error().message, "five-axis move (tool axis 0.000000, 0.600000, 0.800000) but post threeaxis "
+                                       "drives 3 axes (CL record 0 ToolAxisMove)");
+}
+
+TEST(KernelMoves, OnOpenGetsTheProgramSummary)
+{
+    Toolpath path;
+    path.add(WorkOffset{3});
+    path.add(ToolChange{Tool{4, "Drill", "drill", 6.8}});
+    path.add(Rapid{{10, 0, 5}});
+    path.add(Arc{{-10, 0, 5}, {0, 0, 5}, {0, 0, 1}, false, 0, 100});  // over +Y: y reaches 10
+    path.add(ToolChange{Tool{4}});
+    path.add(ToolChange{Tool{2, "Flat", "flat", 10}});
+    auto output = runWith("summary.js", R"JS(var post = {};
+function onOpen(program) {
+    var e = program.extents;
+    writeln([program.workOffset, program.tools.map(function (t) { return "T" + t.number + " " + t.diameter; }).join(),
+             e.min.x, e.min.y, e.max.x, e.max.y, e.max.z].join("|"));
+}
+function onToolChange(tool) {}
+function onWorkOffset(index) {}
+function onRapid(x, y, z) {}
+function onCircular() {}
+)JS",
+                          path);
+    ASSERT_TRUE(output.ok()) << output.error().toString();
+    EXPECT_EQ(output->text, "3|T4 6.8,T2 10|-10|0|10|10|5\n");
+}
+
+TEST(OutputWriter, LinesStayLinesAndKnowTheirOperation)
+{
+    OutputWriter writer;
+    writer.setOperation(0);
+    writer.writeBlock({"G0", "X1\nY2", "", "Z3\r"});
+    writer.writeComment("two\nlines");
+    writer.setOperation(2);
+    writer.writeLine("raw\r\nsecond");
+    writer.beginBlock();
+    EXPECT_FALSE(writer.endBlock());  // no words: no line, no number
+    writer.setOperation(-1);
+    writer.writeBlock({"M30"});
+    EXPECT_EQ(writer.text(), "N10 G0 X1 Y2 Z3\nN20 ;two lines\nraw\nsecond\nN30 M30\n");
+    EXPECT_EQ(writer.lineOperations(), (std::vector<int>{0, 0, 2, 2, -1}));
+    EXPECT_EQ(writer.lineCount(), 5u);
+}
+
+}  // namespace
+}  // namespace camwb::post::test

@@ -41,21 +41,33 @@ var secondsFormat = createFormat({decimals: 3, trim: true});
 var xOutput = createVariable({prefix: "X"}, xyzFormat);
 var yOutput = createVariable({prefix: "Y"}, xyzFormat);
 var zOutput = createVariable({prefix: "Z"}, xyzFormat);
+var iOutput = createVariable({prefix: "I", force: true}, xyzFormat);
+var jOutput = createVariable({prefix: "J", force: true}, xyzFormat);
+var kOutput = createVariable({prefix: "K", force: true}, xyzFormat);
 var feedOutput = createVariable({prefix: "F"}, feedFormat);
 var motionModal = createModal({prefix: "G"});
 var planeModal = createModal({prefix: "G"});
 var feedModeModal = createModal({prefix: "G"});
 var workOffsetModal = createModal({prefix: "G"});
 
-// Per plane: G code and the in-plane axes with their centre words (the other axis makes a helix).
-var planes = {
-    XY: {code: 17, axes: ["x", "y"], offsets: ["I", "J"]},
-    ZX: {code: 18, axes: ["x", "z"], offsets: ["I", "K"]},
-    YZ: {code: 19, axes: ["y", "z"], offsets: ["J", "K"]}
+// Moves are written by the kernel in C++ from these templates, sharing the variables above with the
+// handlers below. The kernel measures I/J/K from the start as written and writes an arc whose
+// written end is its start as a G1 (LinuxCNC would read it as a full circle); the plane word is
+// written when it changes; helices are arcs whose third axis moves.
+post.blocks = {
+    rapid: [motionModal.bind("motion"), xOutput.bind("x"), yOutput.bind("y"), zOutput.bind("z")],
+    linear: [motionModal.bind("motion"), xOutput.bind("x"), yOutput.bind("y"), zOutput.bind("z"),
+             feedOutput.bind("feed")],
+    circular: {
+        XY: [planeModal.bind("plane"), motionModal.bind("motion"), xOutput.bind("x"), yOutput.bind("y"),
+             zOutput.bind("z"), iOutput.bind("i"), jOutput.bind("j"), feedOutput.bind("feed")],
+        ZX: [planeModal.bind("plane"), motionModal.bind("motion"), xOutput.bind("x"), yOutput.bind("y"),
+             zOutput.bind("z"), iOutput.bind("i"), kOutput.bind("k"), feedOutput.bind("feed")],
+        YZ: [planeModal.bind("plane"), motionModal.bind("motion"), xOutput.bind("x"), yOutput.bind("y"),
+             zOutput.bind("z"), jOutput.bind("j"), kOutput.bind("k"), feedOutput.bind("feed")]
+    }
 };
 
-var pendingWorkOffset = 1;  // the G5x line waits for a leading WorkOffset record
-var preambleWritten = false;
 var feedMode = "perMinute";
 var toolNumber = 0;
 var toolRadius = 0;
@@ -63,7 +75,6 @@ var spindle = "off";        // "off", "cw", "ccw": G84 needs "cw"
 var spindleRpm = 0;
 var coolant = "off";
 var compSide = "off";
-var compTransition = "";    // "on" or "off" until the move that enters or leaves compensation
 
 // LinuxCNC acts on comments that start with these words (after removing blanks, any case).
 var activeComments = /^(msg,|debug,|print,|log,|logopen,|logappend,|logclose|probeopen|probeclose|abort,|py,)/;
@@ -102,13 +113,6 @@ function workOffsetCode(index) {
     error("work offset " + index + " is not available on LinuxCNC (1..9 = G54..G59.3)");
 }
 
-function writePreamble() {
-    if (preambleWritten)
-        return;
-    preambleWritten = true;
-    writeBlock(workOffsetModal.format(workOffsetCode(pendingWorkOffset)));
-}
-
 // The first move after a section start or a tool change writes all axes, G and F again.
 function forceMotion() {
     xOutput.reset();
@@ -118,45 +122,7 @@ function forceMotion() {
     motionModal.reset();
 }
 
-// The value as written, so that centre offsets are measured from where the control thinks it is.
-function written(value) {
-    return Number(xyzFormat.format(value));
-}
-
-function feedWord(feed) {
-    if (!(feed > 0)) {
-        warning("feed move without a feed rate: F not written");
-        return "";
-    }
-    if (feedMode == "inverseTime")
-        feedOutput.reset();  // G93: F on every G1/G2/G3 block
-    return feedOutput.format(feed);
-}
-
-// Entry and exit moves of cutter compensation must be straight (G40 and G41/G42 sections).
-function compensationMove(isArc, length) {
-    if (!compTransition)
-        return;
-    if (isArc)
-        error("the move " + (compTransition == "on" ? "after G41/G42" : "after G40") +
-              " is an arc: LinuxCNC needs a straight entry or exit move for cutter compensation");
-    if (compTransition == "on" && !(length > toolRadius))
-        warning("cutter compensation entry move of " + xyzFormat.format(length) + " mm is not longer than the " +
-                "tool radius " + xyzFormat.format(toolRadius) + " mm: LinuxCNC refuses it if its tool table agrees");
-    compTransition = "";
-}
-
-function straightMove(code, x, y, z, feed) {
-    writePreamble();
-    var words = [xOutput.format(x), yOutput.format(y), zOutput.format(z)];
-    if (!words.join(""))
-        return;  // no axis moves: no block
-    var start = getCurrentPosition();
-    compensationMove(false, start ? Math.sqrt(Math.pow(x - start.x, 2) + Math.pow(y - start.y, 2)) : toolRadius);
-    writeBlock(motionModal.format(code), words[0], words[1], words[2], code == 0 ? "" : feedWord(feed));
-}
-
-function onOpen() {
+function onOpen(program) {
     setBlockNumbering(1, 1, false);
     writeln("%");
     comment(programName);
@@ -164,21 +130,16 @@ function onOpen() {
     comment("user " + user);
     comment("date " + dateString);
     writeBlock("G21", "G90", feedModeModal.format(94), planeModal.format(17), "G40", "G49", "G80", "G91.1");
+    writeBlock(workOffsetModal.format(workOffsetCode(program.workOffset)));
 }
 
 function onWorkOffset(index) {
-    if (!preambleWritten) {
-        workOffsetCode(index);  // fails early on an index LinuxCNC does not have
-        pendingWorkOffset = index;
-        return;
-    }
     if (compSide != "off")
         error("work offset selected with cutter compensation on: LinuxCNC refuses G54..G59.3 under G41/G42");
     writeBlock(workOffsetModal.format(workOffsetCode(index)));
 }
 
 function onSection(section) {
-    writePreamble();
     comment(section.operationName);
     forceMotion();
 }
@@ -187,7 +148,6 @@ function onSectionEnd() {
 }
 
 function onToolChange(tool) {
-    writePreamble();
     var number = Math.trunc(tool.number);
     if (!(number >= 1))
         error("tool number " + tool.number + ": LinuxCNC tool numbers for T and H start at 1");
@@ -204,7 +164,6 @@ function onToolChange(tool) {
 }
 
 function onSpindle(rpm, clockwise) {
-    writePreamble();
     if (rpm <= 0) {
         writeBlock("M5");
         spindle = "off";
@@ -216,7 +175,6 @@ function onSpindle(rpm, clockwise) {
 }
 
 function onCoolant(mode) {
-    writePreamble();
     var code = {off: "M9", flood: "M8", mist: "M7"}[mode];
     if (!code) {
         warning("coolant mode " + mode + " has no LinuxCNC code (M7 mist, M8 flood): not output");
@@ -231,90 +189,51 @@ function onCoolant(mode) {
 }
 
 function onFeedMode(mode) {
-    writePreamble();
     var code = {perMinute: 94, perRevolution: 95, inverseTime: 93}[mode];
     if (!code)
         error("feed mode " + mode + " is not known to this post");
     writeBlock(feedModeModal.format(code));
     feedMode = mode;
     feedOutput.reset();  // LinuxCNC wants a new F after G93, G94 and G95
+    feedOutput.setForce(mode == "inverseTime");  // and under G93 an F in every G1/G2/G3 block
 }
 
 function onCutterComp(side) {
-    writePreamble();
     if (side == compSide)
         return;
+    // The kernel makes sure a straight move follows and warns when it is not longer than the
+    // tool radius; arcs outside XY under compensation it refuses.
     if (side == "off") {
         writeBlock("G40");
-        compTransition = "off";
     } else {
         if (compSide != "off")
             error("cutter compensation changes from " + compSide + " to " + side + " without turning off first");
         writeBlock(planeModal.format(17), side == "left" ? "G41" : "G42", toolNumber ? "D" + toolNumber : "");
-        compTransition = "on";
     }
     compSide = side;
 }
 
 function onComment(text) {
-    writePreamble();
     comment(text);
 }
 
 function onDwell(seconds) {
-    writePreamble();
     if (!(seconds >= 0))
         error("dwell of " + seconds + " s: LinuxCNC needs P >= 0");
     writeBlock("G4", "P" + secondsFormat.format(seconds));
 }
 
 function onStop(optional) {
-    writePreamble();
     writeBlock(optional ? "M1" : "M0");
 }
 
 function onPassThrough(text) {
-    writePreamble();
     writeln(String(text));
-}
-
-function onRapid(x, y, z) {
-    straightMove(0, x, y, z, 0);
-}
-
-function onLinear(x, y, z, feed) {
-    straightMove(1, x, y, z, feed);
-}
-
-function onCircular(clockwise, cx, cy, cz, x, y, z, feed, arc) {
-    writePreamble();
-    var plane = planes[arc.plane];
-    if (!plane)
-        error("arc in an oblique plane: LinuxCNC arcs lie in XY (G17), ZX (G18) or YZ (G19)");
-    if (compSide != "off" && arc.plane != "XY")
-        error("arc in the " + arc.plane + " plane with cutter compensation on: the compensation plane is XY");
-    var start = getCurrentPosition();
-    var end = {x: x, y: y, z: z};
-    var centre = {x: cx, y: cy, z: cz};
-    var a = plane.axes[0], b = plane.axes[1];
-    // An arc shorter than the output resolution would read back as start = end, a full circle.
-    if (arc.sweep < 180 && xyzFormat.format(end[a]) == xyzFormat.format(start[a]) &&
-        xyzFormat.format(end[b]) == xyzFormat.format(start[b])) {
-        straightMove(1, x, y, z, feed);
-        return;
-    }
-    compensationMove(true, 0);
-    var offsetA = plane.offsets[0] + xyzFormat.format(centre[a] - written(start[a]));
-    var offsetB = plane.offsets[1] + xyzFormat.format(centre[b] - written(start[b]));
-    // Inverse time: the kernel has already scaled F to each piece of a split arc.
-    writeBlock(planeModal.format(plane.code), motionModal.format(clockwise ? 2 : 3), xOutput.format(x),
-               yOutput.format(y), zOutput.format(z), offsetA, offsetB, feedWord(feed));
 }
 
 var cycleCodes = {drill: 81, drillDwell: 82, chipBreak: 73, peck: 83, tap: 84, bore: 85};
 
 function onCycle(cycle) {
-    writePreamble();
     if (!cycle.holes.length)
         return;
     if (compSide != "off")
@@ -377,7 +296,6 @@ function onCycle(cycle) {
 }
 
 function onClose() {
-    writePreamble();
     writeBlock("M5", "M9");
     writeBlock("M2");
     writeln("%");

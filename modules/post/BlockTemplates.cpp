@@ -2,6 +2,8 @@
 
 #include "post/detail/ScriptBindings.h"
 
+#include <cstring>
+
 namespace camwb::post {
 
 namespace {
@@ -50,6 +52,8 @@ base::Result<BlockTemplate> parseWords(const QJSValue& list, const std::string& 
             word.variable = object;
             word.value = *value;
             hasAxis = hasAxis || isAxis(*value);
+            if (isAxis(*value) && !block.axes[static_cast<int>(*value)])
+                block.axes[static_cast<int>(*value)] = object;
             block.keepAlive.push_back(variable);
         }
         block.words.push_back(std::move(word));
@@ -87,11 +91,11 @@ double MoveValues::value(MoveValue which) const
     case MoveValue::Z:
         return end.z;
     case MoveValue::I:
-        return center.x - start.x;
+        return center.x - writtenStart.x;
     case MoveValue::J:
-        return center.y - start.y;
+        return center.y - writtenStart.y;
     case MoveValue::K:
-        return center.z - start.z;
+        return center.z - writtenStart.z;
     case MoveValue::CenterX:
         return center.x;
     case MoveValue::CenterY:
@@ -114,8 +118,35 @@ double MoveValues::value(MoveValue which) const
     return 0;
 }
 
-bool BlockTemplate::write(const MoveValues& move, OutputWriter& out, bool& missingFeed)
+bool BlockTemplate::endsWhereItStarts(const MoveValues& move, int planeIndex) const
 {
+    static constexpr int kPlaneAxes[3][2] = {{0, 1}, {0, 2}, {1, 2}};
+    const double start[3] = {move.start.x, move.start.y, move.start.z};
+    const double end[3] = {move.end.x, move.end.y, move.end.z};
+    char a[base::NumberFormat::kBufferSize], b[base::NumberFormat::kBufferSize];
+    for (int axis : kPlaneAxes[planeIndex]) {
+        const VariableObject* variable = axes[axis];
+        if (!variable)
+            return false;
+        const std::size_t length = variable->textOf(start[axis], a);
+        if (variable->textOf(end[axis], b) != length || std::memcmp(a, b, length) != 0)
+            return false;
+    }
+    return true;
+}
+
+bool BlockTemplate::write(const MoveValues& given, OutputWriter& out, bool& missingFeed)
+{
+    MoveValues move = given;
+    move.writtenStart = move.start;
+    if (!straight) {  // centre words of arcs: from the start as written
+        if (axes[0])
+            move.writtenStart.x = axes[0]->writtenValue(move.start.x);
+        if (axes[1])
+            move.writtenStart.y = axes[1]->writtenValue(move.start.y);
+        if (axes[2])
+            move.writtenStart.z = axes[2]->writtenValue(move.start.z);
+    }
     if (move.helical)
         for (VariableObject* variable : forceOnHelical)
             variable->modal().reset();

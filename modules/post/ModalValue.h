@@ -28,6 +28,8 @@ public:
     std::string output(std::string_view text) { return update(text) ? m_prefix + std::string(text) : std::string(); }
     // Forgets the last value, so the next output is written.
     void reset() { m_known = false; }
+    // Written every time from now on (an inverse-time F), or only on change again.
+    void setForce(bool force) { m_force = force; }
 
     const std::string& prefix() const { return m_prefix; }
     bool known() const { return m_known; }

@@ -57,6 +57,19 @@ std::size_t VariableObject::textOf(double value, char* out) const
     return m_format ? m_format->formatTo(value, out) : numberWordText(value, out);
 }
 
+double VariableObject::writtenValue(double value) const
+{
+    char buffer[base::NumberFormat::kBufferSize];
+    const std::size_t length = textOf(value, buffer);
+    const char* begin = buffer;
+    if (length > 0 && *begin == '+')
+        ++begin;
+    double read = value;
+    if (std::from_chars(begin, buffer + length, read).ec != std::errc())
+        return value;
+    return m_format && m_format->scale != 0 ? read / m_format->scale : read;
+}
+
 QString VariableObject::format(const QJSValue& value)
 {
     std::string text;

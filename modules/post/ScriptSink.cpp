@@ -25,6 +25,11 @@ int compCode(CutterCompSide side)
     return side == CutterCompSide::Left ? 41 : side == CutterCompSide::Right ? 42 : 40;
 }
 
+std::string counted(int count, const char* one, const char* many)
+{
+    return std::to_string(count) + " " + (count == 1 ? one : many);
+}
+
 // A message once per run for something that happened `count` times, first at `first`.
 struct Tally {
     long long first = -1;
@@ -46,7 +51,11 @@ public:
     void linear(const Linear& r) override { straight(Handler::Linear, r.to, r.feedMmPerMin); }
     void arc(const Arc& r) override;
     void cycle(const Cycle& r) override;
-    void toolChange(const ToolChange& r) override { handle(Handler::ToolChange, {toolObject(r.tool)}); }
+    void toolChange(const ToolChange& r) override
+    {
+        m_toolRadius = r.tool.diameterMm / 2;
+        handle(Handler::ToolChange, {toolObject(r.tool)});
+    }
     void spindle(const Spindle& r) override
     {
         m_spindle = {r.rpm, r.clockwise};
@@ -130,18 +139,24 @@ public:
         for (const auto& [what, count] : m_unhandled)
             messages.push_back({PostMessage::Severity::Warning,
                                 "post " + m_run.m_postId + " has no handler for " + what + "; " +
-                                    std::to_string(count) + (count == 1 ? " record" : " records") + " not output",
+                                    counted(count, "record", "records") + " not output",
                                 file, 0});
         if (m_missingFeed.count > 0)
             messages.push_back({PostMessage::Severity::Warning,
-                                std::to_string(m_missingFeed.count) +
-                                    " feed moves without a feed rate: F not written (first: CL record " +
+                                counted(m_missingFeed.count, "feed move", "feed moves") +
+                                    " without a feed rate: F not written (first: CL record " +
                                     std::to_string(m_missingFeed.first) + ")",
                                 file, 0});
+        if (m_shortCompEntry.count > 0)
+            messages.push_back(
+                {PostMessage::Severity::Warning,
+                 counted(m_shortCompEntry.count, "cutter compensation entry move", "cutter compensation entry moves") +
+                     " not longer than the tool radius: the control may refuse it (first: CL record " +
+                     std::to_string(m_shortCompEntry.first) + ")",
+                 file, 0});
         for (const auto& [reason, tally] : m_linearised)
             messages.push_back({PostMessage::Severity::Warning,
-                                std::to_string(tally.count) + (tally.count == 1 ? " arc" : " arcs") + " " + reason +
-                                    ": written as lines within " +
+                                counted(tally.count, "arc", "arcs") + " " + reason + ": written as lines within " +
                                     base::NumberFormat{6, true}.format(m_caps.toleranceMm) + " mm (first: CL record " +
                                     std::to_string(tally.first) + ")",
                                 file, 0});
@@ -175,6 +190,8 @@ private:
     Tally m_missingFeed;
     SpindleState m_spindle;
     CutterCompSide m_comp = CutterCompSide::Off;
+    double m_toolRadius = 0;
+    Tally m_shortCompEntry;
     bool m_inverseTime = false;
     bool m_compChanged = false;  // since the last straight move
     int m_operation = -1;
@@ -183,6 +200,12 @@ private:
 void ScriptSink::straight(Handler handler, const Vec3& to, double feed)
 {
     ScriptKernel& kernel = *m_run.m_kernel;
+    if (m_compChanged && m_comp != CutterCompSide::Off && kernel.position()) {
+        // The control offsets the tool along the entry move: one no longer than the radius fails.
+        const Vec3 entry = to - *kernel.position();
+        if (std::hypot(entry.x, entry.y) <= m_toolRadius)
+            m_shortCompEntry.add(m_run.m_recordIndex);
+    }
     const bool isLinear = handler == Handler::Linear;
     if (m_run.has(handler)) {
         if (isLinear)
@@ -217,6 +240,10 @@ void ScriptSink::arc(const Arc& r)
     }
     if (m_compChanged) {
         m_run.fail("cutter compensation changes on an arc; controls need a straight move to start or end it");
+        return;
+    }
+    if (m_comp != CutterCompSide::Off && arcPlane(r.normal) != "XY") {
+        m_run.fail("arc outside the XY plane with cutter compensation on: compensation works in XY");
         return;
     }
     // Splitting first also rejects degenerate arcs and gives the radius and helix test.
@@ -272,6 +299,11 @@ void ScriptSink::arcPiece(const ArcPiece& p, const Arc& arc, int pieceIndex, int
         MoveValues move;
         move.start = p.start;
         move.end = p.end;
+        if (p.sweepDeg < 360 - 1e-6 && block->endsWhereItStarts(move, BlockTemplates::planeIndex(plane))) {
+            // Written as an arc it would read back as start = end, a full circle: a short straight move.
+            straight(Handler::Linear, p.end, pieceFeed(arc.feedMmPerMin, static_cast<std::size_t>(pieces)));
+            return;
+        }
         move.center = p.center;
         move.radius = radius;
         move.feed = pieceFeed(arc.feedMmPerMin, static_cast<std::size_t>(pieces));

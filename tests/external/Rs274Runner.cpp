@@ -29,8 +29,10 @@ base::Status writeRs274ToolTable(const std::string& path, const std::vector<Rs27
     return {};
 }
 
-base::Result<Rs274Run> runRs274(const std::string& rs274Binary, const std::string& ngcFile,
-                                const std::string& toolTable, const std::string& workDir, int timeoutMs)
+namespace {
+
+base::Result<Rs274Run> runOnce(const std::string& rs274Binary, const std::string& ngcFile, const std::string& toolTable,
+                               const std::string& workDir, int timeoutMs, bool& crashed)
 {
     QProcess process;
     process.setWorkingDirectory(QString::fromStdString(workDir));
@@ -50,10 +52,28 @@ base::Result<Rs274Run> runRs274(const std::string& rs274Binary, const std::strin
     }
     Rs274Run run;
     run.seconds = static_cast<double>(timer.nsecsElapsed()) * 1e-9;
-    run.exitCode = process.exitStatus() == QProcess::NormalExit ? process.exitCode() : -1;
+    crashed = process.exitStatus() != QProcess::NormalExit;
+    run.exitCode = crashed ? -1 : process.exitCode();
     run.trace = process.readAllStandardOutput().toStdString();
     run.errors = process.readAllStandardError().toStdString();
     return run;
+}
+
+}  // namespace
+
+base::Result<Rs274Run> runRs274(const std::string& rs274Binary, const std::string& ngcFile,
+                                const std::string& toolTable, const std::string& workDir, int timeoutMs)
+{
+    // rs274 2.9.0~pre1 sometimes dies of a bus error when several start at the same moment (seen
+    // about once in 40 parallel runs of a four-line program): that is the peer failing, not the
+    // program, so a crashed run is tried again before it counts.
+    constexpr int kAttempts = 3;
+    for (int attempt = 1;; ++attempt) {
+        bool crashed = false;
+        auto run = runOnce(rs274Binary, ngcFile, toolTable, workDir, timeoutMs, crashed);
+        if (!run || !crashed || attempt == kAttempts)
+            return run;
+    }
 }
 
 }  // namespace camwb::external

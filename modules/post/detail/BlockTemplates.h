@@ -24,10 +24,12 @@ enum class MoveValue { X, Y, Z, I, J, K, CenterX, CenterY, CenterZ, Radius, Feed
 std::optional<MoveValue> moveValueFromName(const std::string& name);
 std::string moveValueNames();  // "x, y, z, ..." for messages
 
-// The values of one move that a template can write.
+// The values of one move that a template can write. Centre words (i, j, k) are measured from the
+// start as written, since that is where the control believes the tool is.
 struct MoveValues {
     toolpath::Vec3 start, end, center;
-    double radius = 0;  // signed: negative above 180 degrees when the post writes radius words
+    toolpath::Vec3 writtenStart;  // set by BlockTemplate::write
+    double radius = 0;            // signed: negative above 180 degrees when the post writes radius words
     double feed = 0;
     double sweepDeg = 0;
     int motion = 0;  // 0 rapid, 1 linear, 2 clockwise, 3 counter-clockwise (G0..G3)
@@ -48,12 +50,17 @@ public:
 
     std::vector<Word> words;
     std::vector<VariableObject*> forceOnHelical;  // reset before a helical block: always written
+    std::array<VariableObject*, 3> axes{};        // the variables that write x, y and z
     bool straight = false;                        // rapid/linear: no block when no axis word changes
     std::vector<QJSValue> keepAlive;              // the script objects behind the raw pointers
 
     // Writes the block for `move`. False when nothing was written (a straight move that changes no
     // axis). missingFeed is set when a feed word was left out because the feed is not positive.
     bool write(const MoveValues& move, OutputWriter& out, bool& missingFeed);
+
+    // Whether the arc's end, as written, is its start in both axes of the plane (0 XY, 1 ZX,
+    // 2 YZ): written so, a short arc would read back as a full circle.
+    bool endsWhereItStarts(const MoveValues& move, int planeIndex) const;
 
 private:
     // Scratch, sized once: one number buffer per word, so that the hot path does not allocate.

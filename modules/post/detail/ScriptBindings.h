@@ -51,9 +51,13 @@ public:
     Q_INVOKABLE QJSValue bind(const QJSValue& valueName);
     // A new number format from now on (feeds per minute vs per revolution); forgets the last value.
     Q_INVOKABLE void setFormat(const QJSValue& format);
+    // Written in every block from now on (true), or only when it changes (false).
+    Q_INVOKABLE void setForce(bool force) { m_value.setForce(force); }
 
     // The C++ side of format(): the number's text (into a kBufferSize buffer), then modal().
     std::size_t textOf(double value, char* out) const;
+    // The value as the control reads it back from that text (rounded, scale undone).
+    double writtenValue(double value) const;
     ModalValue& modal() { return m_value; }
 
 private:

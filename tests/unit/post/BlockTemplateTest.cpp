@@ -112,7 +112,7 @@ TEST(BlockTemplates, WriteWhatTheSameRulesWriteAsHandlers)
             "N150 G18 G3 X10.000 Z45.000 I5.000 K0.000 CR=5.000", "N160 G1 X0.000 Y0.000 Z0.000"}))
         << templates.text;
     ASSERT_EQ(templates.messages.size(), 1u);
-    EXPECT_EQ(templates.messages[0].text, "1 feed moves without a feed rate: F not written (first: CL record 15)");
+    EXPECT_EQ(templates.messages[0].text, "1 feed move without a feed rate: F not written (first: CL record 15)");
 }
 
 TEST(BlockTemplates, MalformedTemplatesAreLoadErrors)
@@ -146,6 +146,71 @@ TEST(BlockTemplates, HandlersWinOverTemplates)
         "templates.js",
         std::string(kCommon) + kTemplates + "function onRapid(px, py, pz) { writeln(\"handler \" + px); }\n", path);
     EXPECT_EQ(output.text, "handler 1\n");
+}
+
+}  // namespace
+}  // namespace camwb::post::test
+
+namespace camwb::post::test {
+namespace {
+
+TEST(BlockTemplates, CentreWordsAreMeasuredFromTheWrittenStart)
+{
+    // The start Y0.0004 is written Y0.000, and the control measures J from there: 10.0008 -> J10.001.
+    // Measured from the exact start, J would be 10.0004 -> J10.000, a centre 0.0008 mm off.
+    Toolpath path;
+    path.add(Rapid{{0, 0.0004, 0}});
+    path.add(Arc{{0, 20.0012, 0}, {0, 10.0008, 0}, {0, 0, 1}, true, 0, 100});
+    const PostOutput output = runSource("templates.js", std::string(kCommon) + kTemplates, path);
+    EXPECT_EQ(lines(output.text).back(), "N20 G17 G2 Y20.001 I0.000 J10.001 CR=10.000 F100");
+}
+
+TEST(BlockTemplates, AnArcWhoseWrittenEndIsItsStartIsAStraightMove)
+{
+    // 0.2 degrees of a 0.1 mm circle: start and end both write X10.000 Y0.000, which a control would
+    // read as a full circle. As a straight move it changes no written axis, so it writes nothing.
+    Toolpath path;
+    path.add(Rapid{{10, 0, 0}});
+    const double a = 0.2 * 3.14159265358979 / 180;
+    path.add(Arc{{9.9 + 0.1 * std::cos(a), 0.1 * std::sin(a), 0}, {9.9, 0, 0}, {0, 0, 1}, false, 0, 100});
+    path.add(Arc{{10, 0, 0}, {9.9, 0, 0}, {0, 0, 1}, false, 0, 100});  // the rest of the circle: a real arc
+    const PostOutput output = runSource("templates.js", std::string(kCommon) + kTemplates, path);
+    EXPECT_EQ(lines(output.text),
+              (std::vector<std::string>{"N10 G0 G40 X10.000 Y0.000 Z0.000",
+                                        "N20 G17 G3 X9.800 I-0.100 J0.000 CR=0.100 F100", "N30 X10.000 I0.100 J0.000"}))
+        << output.text;
+}
+
+TEST(BlockTemplates, ForcedWordsAreWrittenInEveryBlock)
+{
+    Toolpath path;
+    path.add(Rapid{{0, 0, 0}});
+    path.add(FeedModeChange{FeedMode::InverseTime});
+    path.add(Linear{{1, 0, 0}, 60});
+    path.add(Linear{{2, 0, 0}, 60});
+    path.add(FeedModeChange{FeedMode::PerMinute});
+    path.add(Linear{{3, 0, 0}, 60});
+    const PostOutput output = runSource("templates.js",
+                                        std::string(kCommon) + kTemplates +
+                                            "function onFeedMode(mode) { f.setForce(mode == \"inverseTime\"); }\n",
+                                        path);
+    EXPECT_EQ(wordLines(output.text),
+              (std::vector<std::string>{"G0 G40 X0.000 Y0.000 Z0.000", "G1 X1.000 F60", "X2.000 F60", "X3.000"}));
+}
+
+TEST(BlockTemplates, CompensationWorksInXYOnly)
+{
+    Toolpath path;
+    path.add(Rapid{{-10, 0, 0}});
+    path.add(CutterComp{CutterCompSide::Left});
+    path.add(Linear{{0, 0, 0}, 100});
+    path.add(Arc{{10, 0, 0}, {5, 0, 0}, {0, 1, 0}, true, 0, 100});
+    auto post = PostProcessor::load(writeScript("templates.js", std::string(kCommon) + kTemplates));
+    ASSERT_TRUE(post.ok());
+    auto refused = post->run(path, fixedContext());
+    ASSERT_FALSE(refused.ok());
+    EXPECT_EQ(refused.error().message,
+              "arc outside the XY plane with cutter compensation on: compensation works in XY (CL record 3 Arc)");
 }
 
 }  // namespace

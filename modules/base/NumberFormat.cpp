@@ -13,13 +13,23 @@ namespace {
 constexpr std::size_t kFixedCapacity = NumberFormat::kBufferSize - 2;  // formatTo keeps a spare byte in front
 
 constexpr double kPowersOfTen[] = {1e0, 1e1, 1e2, 1e3, 1e4, 1e5, 1e6, 1e7, 1e8, 1e9, 1e10, 1e11, 1e12};
+constexpr unsigned long long kIntegerPowersOfTen[] = {
+    1ull,        10ull,        100ull,        1000ull,        10000ull,        100000ull,       1000000ull,
+    10000000ull, 100000000ull, 1000000000ull, 10000000000ull, 100000000000ull, 1000000000000ull};
 
-// The common case without std::to_chars (a third of a post's time went there): value * 10^d rounded
-// to an integer. The product of two doubles is off the exact one by at most half an ulp, below
-// 2^-13 while |product| < 2^40, so the rounding is certain unless the fraction is within 0.001 of
-// a half: then (and for large values) nullopt sends the caller to std::to_chars. Same text either way.
-std::optional<std::size_t> fastFixedTo(double value, int decimals, char* out)
+// value * 10^d rounded to an integer, without std::to_chars (a third of a post's time went there).
+// The product of two doubles is off the exact one by at most half an ulp, below 2^-13 while
+// |product| < 2^40, so the rounding is certain unless the fraction is within 0.001 of a half: then
+// (and for large values) nullopt sends the caller to std::to_chars. Same result either way.
+struct ScaledDigits {
+    unsigned long long digits;  // |value| * 10^d, rounded
+    bool negative;
+};
+
+std::optional<ScaledDigits> fastScaled(double value, int decimals)
 {
+    if (decimals < 0 || decimals > 12)
+        return std::nullopt;
     const double scaled = value * kPowersOfTen[decimals];
     if (!(std::abs(scaled) < 1099511627776.0))  // 2^40; also false for NaN
         return std::nullopt;
@@ -27,31 +37,33 @@ std::optional<std::size_t> fastFixedTo(double value, int decimals, char* out)
     const double fraction = std::abs(scaled) - whole;
     if (std::abs(fraction - 0.5) < 0.001)
         return std::nullopt;
-    unsigned long long digits = static_cast<unsigned long long>(whole) + (fraction > 0.5 ? 1 : 0);
-    char reversed[24];
-    int count = 0;
-    do {
-        reversed[count++] = static_cast<char>('0' + digits % 10);
-        digits /= 10;
-    } while (digits > 0 || count <= decimals);  // at least one digit before the point
-    std::size_t length = 0;
-    const bool zero = count == decimals + 1 && std::all_of(reversed, reversed + count, [](char c) { return c == '0'; });
-    if (scaled < 0 && !zero)  // "-0.000" is never written
-        out[length++] = '-';
-    for (int i = count - 1; i >= 0; --i) {
-        out[length++] = reversed[i];
-        if (i == decimals && decimals > 0)
-            out[length++] = '.';
+    return ScaledDigits{static_cast<unsigned long long>(whole) + (fraction > 0.5 ? 1 : 0), scaled < 0};
+}
+
+std::size_t fastFixedTo(const ScaledDigits& scaled, int decimals, char* out)
+{
+    char* p = out;
+    if (scaled.negative && scaled.digits != 0)  // "-0.000" is never written
+        *p++ = '-';
+    const unsigned long long power = kIntegerPowersOfTen[decimals];
+    p = std::to_chars(p, p + 24, scaled.digits / power).ptr;
+    if (decimals > 0) {
+        *p++ = '.';
+        char fraction[16];
+        const char* end = std::to_chars(fraction, fraction + sizeof fraction, scaled.digits % power).ptr;
+        const int length = static_cast<int>(end - fraction);
+        std::memset(p, '0', static_cast<std::size_t>(decimals - length));  // leading zeros of the fraction
+        std::memcpy(p + decimals - length, fraction, static_cast<std::size_t>(length));
+        p += decimals;
     }
-    return length;
+    return static_cast<std::size_t>(p - out);
 }
 
 // Fixed text of `value` into out (kFixedCapacity bytes); "-0.000" becomes "0.000".
 std::size_t fixedTo(double value, int decimals, char* out)
 {
-    if (decimals >= 0 && decimals <= 12)
-        if (const std::optional<std::size_t> length = fastFixedTo(value, decimals, out))
-            return *length;
+    if (const std::optional<ScaledDigits> scaled = fastScaled(value, decimals))
+        return fastFixedTo(*scaled, decimals, out);
     if (!std::isfinite(value)) {
         std::memcpy(out, "nan", 3);
         return 3;
@@ -115,6 +127,23 @@ std::size_t NumberFormat::formatTo(double value, char* out) const
     }
     std::memmove(out, text, length);
     return length;
+}
+
+double NumberFormat::roundedValue(double value) const
+{
+    if (const std::optional<ScaledDigits> scaled = fastScaled(value * scale, decimals)) {
+        // An integer over a power of ten, both exact: the division is the double nearest the decimal
+        // text, just as reading the text back would give.
+        const double read = static_cast<double>(scaled->digits) / kPowersOfTen[decimals];
+        return (scaled->negative ? -read : read) / scale;
+    }
+    char buffer[kBufferSize];
+    const std::size_t length = formatTo(value, buffer);
+    const char* begin = buffer[0] == '+' ? buffer + 1 : buffer;
+    double read = value;
+    if (std::from_chars(begin, buffer + length, read).ec != std::errc())
+        return value;
+    return read / scale;
 }
 
 std::string NumberFormat::format(double value) const

@@ -22,6 +22,8 @@ struct NumberFormat {
     std::string format(double value) const;
     // The same text into `out` (kBufferSize bytes) without allocating; returns its length.
     std::size_t formatTo(double value, char* out) const;
+    // The value a reader of format(value) gets back (rounded to the decimals, scale undone).
+    double roundedValue(double value) const;
 };
 
 // Fixed decimals, rounded (never truncated) from the binary value as printf does:

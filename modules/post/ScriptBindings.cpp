@@ -59,15 +59,10 @@ std::size_t VariableObject::textOf(double value, char* out) const
 
 double VariableObject::writtenValue(double value) const
 {
-    char buffer[base::NumberFormat::kBufferSize];
-    const std::size_t length = textOf(value, buffer);
-    const char* begin = buffer;
-    if (length > 0 && *begin == '+')
-        ++begin;
-    double read = value;
-    if (std::from_chars(begin, buffer + length, read).ec != std::errc())
-        return value;
-    return m_format && m_format->scale != 0 ? read / m_format->scale : read;
+    if (m_format)
+        return m_format->roundedValue(value);
+    // Without a format numbers are written as whole numbers or with 3 decimals (numberWordText).
+    return isIntegral(value) ? value : base::NumberFormat{3}.roundedValue(value);
 }
 
 QString VariableObject::format(const QJSValue& value)

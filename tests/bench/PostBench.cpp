@@ -103,17 +103,21 @@ void postInMemory(benchmark::State& state, const std::string& postId)
     const toolpath::Toolpath& path = program(static_cast<std::size_t>(state.range(0)));
     const post::PostProcessor& post = loadPost(postId);
     std::size_t lines = 0;
+    long held = 0;  // what the finished output occupies while it is held
     for (auto _ : state) {
+        const long before = currentRssKb();
         auto output = post.run(path, options());
         if (!output) {
             state.SkipWithError(output.error().toString().c_str());
             return;
         }
+        held = currentRssKb() - before;
         lines = output->lineOperation.size();
         benchmark::DoNotOptimize(output->text.data());
     }
     state.SetItemsProcessed(static_cast<int64_t>(state.iterations() * lines));
     state.counters["blocks"] = static_cast<double>(lines);
+    state.counters["rss_growth_MB"] = static_cast<double>(held) / 1024;
 }
 
 void BM_Sinumerik828dToFile(benchmark::State& state) { postToFile(state, "sinumerik828d-emco"); }

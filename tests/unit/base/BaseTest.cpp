@@ -151,3 +151,25 @@ TEST_F(AtomicFileTest, MissingFolderIsAnErrorNamingTheFile)
     ASSERT_FALSE(read);
     EXPECT_EQ(read.error().file, path);
 }
+
+TEST(NumberFormat, RoundedValueIsWhatTheTextReadsBackAs)
+{
+    std::uint64_t state = 0x2545F4914F6CDD1Dull;
+    auto next = [&state] {
+        state ^= state << 13;
+        state ^= state >> 7;
+        state ^= state << 17;
+        return state;
+    };
+    for (int i = 0; i < 100000; ++i) {
+        NumberFormat format{static_cast<int>(next() % 6), next() % 2 == 0, false, next() % 3 == 0};
+        if (i % 5 == 0)
+            format.scale = 1 / 25.4;
+        const double value = static_cast<double>(static_cast<std::int64_t>(next() % 2000001) - 1000000) /
+                             std::pow(10.0, static_cast<double>(next() % 7));
+        const std::string text = format.format(value);
+        double read = 0;
+        std::from_chars(text.data() + (text[0] == '+' ? 1 : 0), text.data() + text.size(), read);
+        ASSERT_EQ(format.roundedValue(value), read / format.scale) << text;
+    }
+}

@@ -1,5 +1,6 @@
 #include "gui/view3d/ToolpathPolylines.h"
 
+#include "toolpath/CycleExpansion.h"
 #include "toolpath/Toolpath.h"
 
 #include <algorithm>
@@ -144,18 +145,14 @@ void ToolpathPolylines::arc(const toolpath::Arc& a)
     lineTo(a.to, PathSegmentKind::Arc);
 }
 
-// Canned cycles are drawn as the moves a control makes for each hole: rapid over the hole at the
-// clearance plane, rapid to the R plane, feed to depth, rapid back out.
+// Canned cycles are drawn as the moves a control makes for each hole: the same expansion posts
+// without native cycles write (pecks, dwells and the return plane included).
 void ToolpathPolylines::cycle(const toolpath::Cycle& c)
 {
-    const double clearance = std::max(c.clearanceZ, c.retractZ);
     for (const Vec3& hole : c.holes) {
-        if (m_hasPosition && m_position.z < clearance)
-            lineTo({m_position.x, m_position.y, clearance}, PathSegmentKind::Rapid);
-        lineTo({hole.x, hole.y, clearance}, PathSegmentKind::Rapid);
-        lineTo({hole.x, hole.y, c.retractZ}, PathSegmentKind::Rapid);
-        lineTo({hole.x, hole.y, c.bottomZ}, PathSegmentKind::Feed);
-        lineTo({hole.x, hole.y, clearance}, PathSegmentKind::Rapid);
+        const Vec3 from = m_hasPosition ? m_position : Vec3{hole.x, hole.y, toolpath::cycleReturnZ(c)};
+        for (const toolpath::Record& record : toolpath::expandCycleHole(c, hole, from, {}))
+            toolpath::dispatch(record, *this);
     }
 }
 

@@ -228,6 +228,15 @@ private slots:
         lines.cycle(cycle);
         QCOMPARE(lines.segmentCount(PathSegmentKind::Feed), std::size_t(2));
         QVERIFY(lines.points().back() == Vec3(20, 10, 10));
+        // Pecks draw as posts without native cycles write them: down, out to R, back in, deeper.
+        ToolpathPolylines pecks;
+        pecks.setStartPosition({10, 10, 10});
+        cycle.kind = tp::CycleKind::Peck;
+        cycle.peckMm = 2;
+        cycle.holes = {{10, 10, 0}};
+        pecks.cycle(cycle);
+        QCOMPARE(pecks.segmentCount(PathSegmentKind::Feed), std::size_t(3));  // to -2, -4 and -5
+        QVERIFY(pecks.points().back() == Vec3(10, 10, 10));
     }
 };
 

@@ -1,11 +1,6 @@
-// camwb-cli run <job.camwb> -o <file>: recompute a job's operations and post them.
+// camwb-cli run <job.camwb> -o <file>: recompute a job's operations and post them with the job's
+// own post, machine and properties. The same as `camwb-cli post <job> -o <file>` without overrides.
 #include "Cli.h"
-
-#include "document/JobFile.h"
-#include "document/JobPipeline.h"
-#include "post/PostRegistry.h"
-
-#include <filesystem>
 
 namespace camwb::cli {
 
@@ -28,25 +23,9 @@ int runCommand(const std::vector<std::string>& args)
         return usageError("run needs a job file and -o <output file>");
     if (!options.postId.empty() || !options.machineId.empty() || !options.properties.empty())
         return usageError("run posts with the job's own settings; use `camwb-cli post` to override them");
-
-    auto job = document::loadJob(jobPath);
-    if (!job)
-        return fail(job.error().toString());
-    auto model = document::loadJobModel(job.value());
-    if (!model)
-        return fail(model.error().toString());
-    auto program = document::computeProgram(job.value(), model.value());
-    if (!program)
-        return fail(jobPath + ": " + program.error().message);
-    auto post = document::loadJobPost(job.value(), post::defaultPostDirs(options.postPaths));
-    if (!post)
-        return fail(post.error().toString());
-    const std::string programName = std::filesystem::path(jobPath).stem().string();
-    auto runOptions = document::jobRunOptions(
-        job.value(), post.value(), post::PostContext::fromEnvironment(programName), kinematics::defaultMachineDirs());
-    if (!runOptions)
-        return fail(jobPath + ": " + runOptions.error().toString());
-    return postToFile(post.value(), program.value(), runOptions.value(), options.output);
+    std::vector<std::string> postArgs = args;
+    postArgs.insert(postArgs.end(), {"--input-format", "job"});  // a job whatever its extension
+    return postCommand(postArgs);
 }
 
 }  // namespace camwb::cli

@@ -33,6 +33,23 @@ std::vector<DataDir> dataDirs(const char* envVariable, const std::string& kind, 
     return dirs;
 }
 
+Result<std::string> findDataFile(const std::string& kind, const std::string& id, const std::string& extension,
+                                 const std::vector<std::string>& dirs)
+{
+    if (id.empty() || id.find('/') != std::string::npos || id.find("..") != std::string::npos)
+        return makeError("invalid " + kind + " id '" + id + "'");
+    std::string looked;
+    for (const std::string& dir : dirs) {
+        const fs::path candidate = fs::path(dir) / (id + extension);
+        std::error_code ec;
+        if (fs::is_regular_file(candidate, ec))
+            return candidate.string();
+        looked += (looked.empty() ? "" : ", ") + candidate.string();
+    }
+    return makeError(kind + " '" + id + "' not found (looked for " +
+                     (looked.empty() ? std::string("it in no folder: none configured") : looked) + ")");
+}
+
 std::vector<std::string> dataDirPaths(const char* envVariable, const std::string& kind, const std::string& sourceSubdir)
 {
     std::vector<std::string> paths;

@@ -3,6 +3,8 @@
 // build tree, the source tree. Earlier folders win, so a user's file overrides a built-in one.
 #pragma once
 
+#include "base/Result.h"
+
 #include <string>
 #include <vector>
 
@@ -17,6 +19,11 @@ struct DataDir {
 // the running executable) and <source tree>/<sourceSubdir>. Missing folders are listed too, so a
 // failed lookup can say where it looked.
 std::vector<DataDir> dataDirs(const char* envVariable, const std::string& kind, const std::string& sourceSubdir);
+
+// "<dir>/<id><extension>" in the first of `dirs` that has it. Otherwise an Error naming every place
+// looked ("<kind> 'x' not found (looked for ...)"), also for an id that is not a plain file name.
+Result<std::string> findDataFile(const std::string& kind, const std::string& id, const std::string& extension,
+                                 const std::vector<std::string>& dirs);
 
 // Just the paths of dataDirs(), in order.
 std::vector<std::string> dataDirPaths(const char* envVariable, const std::string& kind,

@@ -4,12 +4,9 @@
 #include "kinematics/Machine.h"
 
 #include <algorithm>
-#include <filesystem>
-#include <system_error>
 
 namespace camwb::kinematics {
 
-namespace fs = std::filesystem;
 using namespace base::jsonread;
 
 namespace {
@@ -127,25 +124,14 @@ std::vector<std::string> defaultMachineDirs()
 
 base::Result<Machine> findMachine(const std::string& id, const std::vector<std::string>& dirs)
 {
-    if (id.empty() || id.find('/') != std::string::npos || id.find("..") != std::string::npos)
-        return base::makeError("invalid machine id '" + id + "'");
-    std::string looked;
-    for (const std::string& dir : dirs) {
-        const fs::path candidate = fs::path(dir) / (id + ".json");
-        std::error_code ec;
-        if (!fs::is_regular_file(candidate, ec)) {
-            looked += (looked.empty() ? "" : ", ") + candidate.string();
-            continue;
-        }
-        auto machine = loadMachine(candidate.string());
-        if (machine && machine->id != id)
-            return base::makeError("machine file says id \"" + machine->id + "\"; the file name is the id (" + id +
-                                       ".json)",
-                                   candidate.string());
-        return machine;
-    }
-    return base::makeError("machine '" + id + "' not found (looked for " +
-                           (looked.empty() ? std::string("it in no folder: none configured") : looked) + ")");
+    auto path = base::findDataFile("machine", id, ".json", dirs);
+    if (!path)
+        return path.error();
+    auto machine = loadMachine(path.value());
+    if (machine && machine->id != id)
+        return base::makeError(
+            "machine file says id \"" + machine->id + "\"; the file name is the id (" + id + ".json)", path.value());
+    return machine;
 }
 
 }  // namespace camwb::kinematics

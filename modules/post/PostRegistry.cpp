@@ -50,18 +50,10 @@ std::vector<PostEntry> listPosts(const std::vector<base::DataDir>& dirs)
 
 base::Result<std::string> findPost(const std::string& id, const std::vector<base::DataDir>& dirs)
 {
-    if (id.empty() || id.find('/') != std::string::npos || id.find("..") != std::string::npos)
-        return base::makeError("invalid post id '" + id + "'");
-    std::string looked;
-    for (const base::DataDir& dir : dirs) {
-        const fs::path candidate = fs::path(dir.path) / (id + ".js");
-        std::error_code ec;
-        if (fs::is_regular_file(candidate, ec))
-            return candidate.string();
-        looked += (looked.empty() ? "" : ", ") + candidate.string();
-    }
-    return base::makeError("post '" + id + "' not found (looked for " +
-                           (looked.empty() ? std::string("it in no folder: none configured") : looked) + ")");
+    std::vector<std::string> paths;
+    for (const base::DataDir& dir : dirs)
+        paths.push_back(dir.path);
+    return base::findDataFile("post", id, ".js", paths);
 }
 
 base::Result<std::optional<kinematics::Machine>> machineForPost(const PostInfo& info, const std::string& requestedId,

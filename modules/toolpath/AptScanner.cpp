@@ -10,16 +10,6 @@ constexpr std::string_view kTextKeywords[] = {"PPRINT", "PARTNO", "INSERT", "REM
 bool isLetter(char c) { return (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z'); }
 bool isDigit(char c) { return c >= '0' && c <= '9'; }
 bool isWordChar(char c) { return isLetter(c) || isDigit(c) || c == '_' || c == '-' || c == '.'; }
-bool isSpace(char c) { return c == ' ' || c == '\t'; }
-
-std::size_t leadingSpaces(std::string_view text)
-{
-    std::size_t n = 0;
-    while (n < text.size() && isSpace(text[n]))
-        ++n;
-    return n;
-}
-
 AptUnit remark(std::string_view afterMarker, int line, int column)
 {
     AptUnit unit;

@@ -110,6 +110,16 @@ std::optional<double> parseNumber(std::string_view token)
     return negative ? -value : value;
 }
 
+bool isSpace(char c) { return c == ' ' || c == '\t'; }
+
+std::size_t leadingSpaces(std::string_view text)
+{
+    std::size_t n = 0;
+    while (n < text.size() && isSpace(text[n]))
+        ++n;
+    return n;
+}
+
 std::string_view trim(std::string_view text)
 {
     while (!text.empty() && (text.front() == ' ' || text.front() == '\t'))

@@ -46,6 +46,8 @@ private:
 // Anything else (two points, letters, inf, nan, overflow) gives nullopt.
 std::optional<double> parseNumber(std::string_view token);
 
+bool isSpace(char c);  // a blank or a tab
+std::size_t leadingSpaces(std::string_view text);
 std::string_view trim(std::string_view text);
 std::string_view trimRight(std::string_view text);
 std::string toUpper(std::string_view text);

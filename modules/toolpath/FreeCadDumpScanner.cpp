@@ -4,16 +4,6 @@ namespace camwb::toolpath {
 
 namespace {
 
-bool isSpace(char c) { return c == ' ' || c == '\t'; }
-
-std::size_t leadingSpaces(std::string_view text)
-{
-    std::size_t n = 0;
-    while (n < text.size() && isSpace(text[n]))
-        ++n;
-    return n;
-}
-
 bool startsCommand(std::string_view line)
 {
     return line.substr(0, 7) == "Command" && (line.size() == 7 || isSpace(line[7]) || line[7] == '[');

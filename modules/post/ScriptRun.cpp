@@ -188,21 +188,23 @@ bool ScriptRun::call(Handler handler, const QJSValueList& args)
     m_watchdog.enter();
     const QJSValue result = m_trampoline.call({function, m_post, argArray});
     const bool interrupted = m_watchdog.leave();
-    const std::string at = where();
-    const std::string context = std::string("in ") + handlerName(handler) + (at.empty() ? "" : ", " + at);
+    auto context = [&] {  // only on failure: building it for every call would cost every move
+        const std::string at = where();
+        return std::string("in ") + handlerName(handler) + (at.empty() ? "" : ", " + at);
+    };
     if (interrupted) {
         const QJSValue thrown = result.isObject() ? result.property("thrown") : QJSValue();
         m_failure = base::makeError("the post script ran longer than its budget of " + seconds(m_watchdog.budget()) +
-                                        " s and was interrupted (" + context + ")",
+                                        " s and was interrupted (" + context() + ")",
                                     m_postFile, thrown.isError() ? thrown.property("lineNumber").toInt() : 0);
         return false;
     }
     if (result.isError()) {  // the trampoline itself failed (should not happen)
-        m_failure = scriptError(result, context);
+        m_failure = scriptError(result, context());
         return false;
     }
     if (result.isObject() && result.hasOwnProperty("thrown")) {
-        m_failure = scriptError(result.property("thrown"), context);
+        m_failure = scriptError(result.property("thrown"), context());
         return false;
     }
     return true;

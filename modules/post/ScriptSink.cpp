@@ -2,7 +2,7 @@
 // handler a C++ block template. The kernel's policies apply on the way: arcs are split, or
 // linearised where the post cannot write them; cycles the post does not write are expanded into
 // moves; five-axis moves are refused by three-axis posts; cutter compensation must change on a
-// straight move.
+// straight move and works in XY.
 #include "post/ArcGeometry.h"
 #include "post/detail/ScriptRun.h"
 #include "toolpath/CycleExpansion.h"
@@ -72,12 +72,11 @@ public:
     void toolAxisMove(const ToolAxisMove& r) override
     {
         const Vec3& a = r.axis;
-        if (m_caps.maxAxes < 5 && std::abs(a.x) < 1e-9 && std::abs(a.y) < 1e-9 && a.z > 0) {
-            // Along +Z a five-axis move is a three-axis one.
-            straight(r.feedMmPerMin > 0 ? Handler::Linear : Handler::Rapid, r.tip, r.feedMmPerMin);
-            return;
-        }
         if (m_caps.maxAxes < 5) {
+            if (std::abs(a.x) < 1e-9 && std::abs(a.y) < 1e-9 && a.z > 0) {  // along +Z: a three-axis move
+                straight(r.feedMmPerMin > 0 ? Handler::Linear : Handler::Rapid, r.tip, r.feedMmPerMin);
+                return;
+            }
             m_run.fail("five-axis move (tool axis " + std::to_string(r.axis.x) + ", " + std::to_string(r.axis.y) +
                        ", " + std::to_string(r.axis.z) + ") but post " + m_run.m_postId + " drives " +
                        std::to_string(m_caps.maxAxes) + " axes");
@@ -242,7 +241,8 @@ void ScriptSink::arc(const Arc& r)
         m_run.fail("cutter compensation changes on an arc; controls need a straight move to start or end it");
         return;
     }
-    if (m_comp != CutterCompSide::Off && arcPlane(r.normal) != "XY") {
+    const std::string plane = arcPlane(r.normal);
+    if (m_comp != CutterCompSide::Off && plane != "XY") {
         m_run.fail("arc outside the XY plane with cutter compensation on: compensation works in XY");
         return;
     }
@@ -253,7 +253,6 @@ void ScriptSink::arc(const Arc& r)
         m_run.fail("degenerate arc: zero radius");
         return;
     }
-    const std::string plane = arcPlane(r.normal);
     std::string reason;
     if (plane.empty())
         reason = "in an oblique plane";

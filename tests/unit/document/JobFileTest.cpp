@@ -134,3 +134,31 @@ TEST(JobFile, MissingFileIsAnErrorNamingIt)
     ASSERT_FALSE(job.ok());
     EXPECT_EQ(job.error().file, "/nonexistent/x.camwb");
 }
+
+TEST(JobFile, MachineAndPostPropertiesMakeVersionTwo)
+{
+    Job job = sampleJob();
+    job.machineId = "emco-concept-mill-105";
+    job.postProperties = {{"drillingCalls", "perHole"}, {"sequenceStep", "5"}};
+    const std::string text = document::serializeJob(job);
+    EXPECT_NE(text.find("\"version\": 2"), std::string::npos);
+    EXPECT_NE(text.find("\"machine\": \"emco-concept-mill-105\""), std::string::npos);
+    auto read = document::parseJob(text, "job.camwb");
+    ASSERT_TRUE(read.ok()) << read.error().toString();
+    EXPECT_EQ(read->machineId, job.machineId);
+    EXPECT_EQ(read->postProperties, job.postProperties);
+    EXPECT_EQ(document::serializeJob(read.value()), text);
+
+    // Written by hand: numbers and booleans are kept as the text the post's declaration will read.
+    auto typed = document::parseJob(
+        replaced(validText(), "\"post\": \"sinumerik828d-emco\"",
+                 "\"post\": \"sinumerik828d-emco\", \"postProperties\": {\"sequenceStep\": 5, \"flag\": true}"),
+        "job.camwb");
+    ASSERT_TRUE(typed.ok()) << typed.error().toString();
+    EXPECT_EQ(typed->postProperties.at("sequenceStep"), "5");
+    EXPECT_EQ(typed->postProperties.at("flag"), "true");
+    EXPECT_NE(parseError(replaced(validText(), "\"post\": \"sinumerik828d-emco\"",
+                                  "\"post\": \"sinumerik828d-emco\", \"postProperties\": {\"a\": [1]}"))
+                  .message.find("postProperties.a: expected a string, number or bool"),
+              std::string::npos);
+}

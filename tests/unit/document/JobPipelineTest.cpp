@@ -91,3 +91,30 @@ TEST(JobPipeline, MissingModelAndUnknownPostAreErrors)
     ASSERT_FALSE(post.ok());
     EXPECT_NE(post.error().toString().find("no-such-post"), std::string::npos);
 }
+
+TEST(JobPipeline, RunOptionsCarryTheJobsMachineAndProperties)
+{
+    auto job = document::loadJob(kExampleJob);
+    ASSERT_TRUE(job.ok()) << job.error().toString();
+    auto post = document::loadJobPost(job.value(), post::defaultPostDirs());
+    ASSERT_TRUE(post.ok()) << post.error().toString();
+    const std::vector<std::string> machines = kinematics::defaultMachineDirs();
+
+    // No machine in the job: the post's default one.
+    auto defaults = document::jobRunOptions(job.value(), post.value(), {}, machines);
+    ASSERT_TRUE(defaults.ok()) << defaults.error().toString();
+    ASSERT_TRUE(defaults->machine.has_value());
+    EXPECT_EQ(defaults->machine->id, "emco-concept-mill-105");
+    EXPECT_TRUE(defaults->properties.empty());
+
+    document::Job custom = job.value();
+    custom.postProperties = {{"drillingCalls", "perHole"}};
+    custom.machineId = "no-such-mill";
+    auto missing = document::jobRunOptions(custom, post.value(), {}, machines);
+    ASSERT_FALSE(missing.ok());
+    EXPECT_NE(missing.error().message.find("machine 'no-such-mill' not found"), std::string::npos);
+    custom.machineId.clear();
+    auto options = document::jobRunOptions(custom, post.value(), {}, machines);
+    ASSERT_TRUE(options.ok());
+    EXPECT_EQ(options->properties, custom.postProperties);
+}

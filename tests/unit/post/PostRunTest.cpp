@@ -5,6 +5,7 @@
 #include "post/OutputWriter.h"
 #include "post/PostRegistry.h"
 
+#include <algorithm>
 #include <chrono>
 #include <filesystem>
 #include <fstream>
@@ -229,6 +230,62 @@ TEST(OutputWriter, LinesStayLinesAndKnowTheirOperation)
     EXPECT_EQ(writer.text(), "N10 G0 X1 Y2 Z3\nN20 ;two lines\nraw\nsecond\nN30 M30\n");
     EXPECT_EQ(writer.lineOperations(), (std::vector<int>{0, 0, 2, 2, -1}));
     EXPECT_EQ(writer.lineCount(), 5u);
+}
+
+}  // namespace
+}  // namespace camwb::post::test
+
+namespace camwb::post::test {
+namespace {
+
+TEST(KernelMoves, ArcsThePostCannotWriteBecomeLinesForTheStatedReason)
+{
+    Toolpath path;
+    path.add(Rapid{{0.5, 0, 0}});
+    path.add(Arc{{0, 0.5, 0}, {0, 0, 0}, {0, 0, 1}, false, 0, 100});  // radius 0.5: below the minimum
+    path.add(Rapid{{10, 0, 0}});
+    path.add(Arc{{10, 0, -2}, {0, 0, 0}, {0, 0, 1}, false, 0, 100});   // a helix: not written
+    path.add(Arc{{0, 10, -2}, {0, 0, -2}, {0, 0, 1}, false, 0, 100});  // planar, radius 10: written
+    auto output = runWith("limited.js", R"JS(var post = {capabilities: {minArcRadius: 1, helicalArcs: false}};
+function onRapid(x, y, z) {}
+function onLinear(x, y, z, feed) { writeln("line " + x.toFixed(3) + " " + y.toFixed(3) + " " + z.toFixed(3)); }
+function onCircular(cw, cx, cy, cz, x, y, z, feed, arc) { writeln("arc " + arc.radius); }
+)JS",
+                          path);
+    ASSERT_TRUE(output.ok()) << output.error().toString();
+    const std::vector<std::string> all = lines(output->text);
+    ASSERT_GT(all.size(), 3u);
+    EXPECT_EQ(all.back(), "arc 10");
+    EXPECT_EQ(std::count(all.begin(), all.end(), "arc 10"), 1);
+    EXPECT_NE(std::find(all.begin(), all.end(), "line 10.000 0.000 -2.000"), all.end());  // the helix ends exactly
+    ASSERT_EQ(output->messages.size(), 2u);
+    EXPECT_EQ(output->messages[0].text,
+              "1 arc helical, which the post does not write: written as lines within 0.01 mm (first: CL record 3)");
+    EXPECT_EQ(output->messages[1].text,
+              "1 arc outside the post's arc radius range: written as lines within 0.01 mm (first: CL record 1)");
+}
+
+TEST(KernelMoves, CyclePointsCanBeExpandedByTheKernel)
+{
+    Toolpath path;
+    path.add(Rapid{{0, 0, 20}});
+    path.add(Cycle{CycleKind::Drill, 20, 2, 0, -5, 0, 0, 100, {{10, 0, 0}, {20, 0, 0}}});
+    auto output = runWith("expands.js", R"JS(var post = {};
+function onCycle(cycle) { writeln("cycle " + cycle.kind + " " + cycle.holes.length); }
+function onCyclePoint(x, y, z) { if (x > 15) expandCyclePoint(x, y, z); else writeln("native " + x); }
+function onCycleEnd(cycle) { writeln("end"); }
+function onRapid(x, y, z) { writeln("G0 " + x + " " + y + " " + z); }
+function onLinear(x, y, z, feed) { writeln("G1 " + z + " F" + feed); }
+)JS",
+                          path);
+    ASSERT_TRUE(output.ok()) << output.error().toString();
+    EXPECT_EQ(output->text,
+              "G0 0 0 20\ncycle drill 2\nnative 10\nG0 20 0 20\nG0 20 0 2\nG1 -5 F100\nG0 20 0 20\nend\n");
+
+    auto outside = runWith("outside.js", "var post = {};\nfunction onOpen() {\n  expandCyclePoint(1, 2, 3);\n}\n", {});
+    ASSERT_FALSE(outside.ok());
+    EXPECT_EQ(outside.error().line, 3);
+    EXPECT_NE(outside.error().message.find("expandCyclePoint() works only inside onCyclePoint()"), std::string::npos);
 }
 
 }  // namespace

@@ -1,4 +1,5 @@
-// QJSEngine needs a QCoreApplication, so the post tests bring their own main (gtest_main's is not used).
+// main() for GoogleTest binaries that need a QCoreApplication: QJSEngine (the post kernel) and
+// QProcess (the rs274 runner) want one. gtest_main's main is not used where this is linked.
 #include <QCoreApplication>
 
 #include <gtest/gtest.h>

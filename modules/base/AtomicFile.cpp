@@ -92,6 +92,9 @@ Status writeFileAtomically(const std::string& path, std::string_view content)
 
 Result<std::string> readTextFile(const std::string& path)
 {
+    struct stat info {};
+    if (::stat(path.c_str(), &info) == 0 && S_ISDIR(info.st_mode))
+        return makeError("cannot read: it is a folder, not a file", path);  // ifstream would read it as empty
     std::ifstream in(path, std::ios::binary);
     if (!in)
         return makeError(std::string("cannot open: ") + systemError(), path);

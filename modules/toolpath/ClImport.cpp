@@ -1,13 +1,10 @@
 #include "toolpath/ClImport.h"
 
+#include "base/AtomicFile.h"
 #include "toolpath/ClText.h"
 #include "toolpath/TraceReader.h"
 
-#include <cerrno>
-#include <cstring>
 #include <filesystem>
-#include <fstream>
-#include <sstream>
 
 namespace camwb::toolpath {
 
@@ -36,19 +33,10 @@ std::optional<ClFormat> clFormatFromName(std::string_view name)
 
 base::Result<ClImport> readClFile(const std::string& path, ClFormat format)
 {
-    std::error_code ec;
-    if (std::filesystem::is_directory(path, ec))
-        return base::makeError("cannot read CL file '" + path + "': it is a directory", path);
-    std::ifstream in(path, std::ios::binary);
-    if (!in) {
-        const int error = errno;
-        return base::makeError("cannot read CL file '" + path + "': " + std::strerror(error), path);
-    }
-    std::ostringstream buffer;
-    buffer << in.rdbuf();
-    if (in.bad())
-        return base::makeError("cannot read CL file '" + path + "': read error", path);
-    const std::string text = buffer.str();
+    auto content = base::readTextFile(path);
+    if (!content)
+        return content.error();
+    const std::string& text = content.value();
     switch (format) {
     case ClFormat::Apt:
         return readAptSource(text, path);

@@ -4,6 +4,7 @@
 
 #include <QElapsedTimer>
 #include <QProcess>
+#include <QProcessEnvironment>
 #include <QString>
 #include <QStringList>
 
@@ -29,13 +30,17 @@ base::Status writeRs274ToolTable(const std::string& path, const std::vector<Rs27
     return {};
 }
 
-namespace {
-
-base::Result<Rs274Run> runOnce(const std::string& rs274Binary, const std::string& ngcFile, const std::string& toolTable,
-                               const std::string& workDir, int timeoutMs, bool& crashed)
+base::Result<Rs274Run> runRs274(const std::string& rs274Binary, const std::string& ngcFile,
+                                const std::string& toolTable, const std::string& workDir, int timeoutMs)
 {
     QProcess process;
     process.setWorkingDirectory(QString::fromStdString(workDir));
+    // LinuxCNC 2.9 keeps the tool table in a memory-mapped $HOME/.tool.mmap: one file for every
+    // rs274 of a user, so parallel runs read each other's tools, and one truncating it while
+    // another maps it dies of a bus error. A HOME of its own per run keeps them apart.
+    QProcessEnvironment environment = QProcessEnvironment::systemEnvironment();
+    environment.insert(QStringLiteral("HOME"), QString::fromStdString(workDir));
+    process.setProcessEnvironment(environment);
     process.setProgram(QString::fromStdString(rs274Binary));
     process.setArguments({QStringLiteral("-t"), QString::fromStdString(toolTable), QStringLiteral("-g"),
                           QString::fromStdString(ngcFile)});
@@ -52,28 +57,10 @@ base::Result<Rs274Run> runOnce(const std::string& rs274Binary, const std::string
     }
     Rs274Run run;
     run.seconds = static_cast<double>(timer.nsecsElapsed()) * 1e-9;
-    crashed = process.exitStatus() != QProcess::NormalExit;
-    run.exitCode = crashed ? -1 : process.exitCode();
+    run.exitCode = process.exitStatus() == QProcess::NormalExit ? process.exitCode() : -1;
     run.trace = process.readAllStandardOutput().toStdString();
     run.errors = process.readAllStandardError().toStdString();
     return run;
-}
-
-}  // namespace
-
-base::Result<Rs274Run> runRs274(const std::string& rs274Binary, const std::string& ngcFile,
-                                const std::string& toolTable, const std::string& workDir, int timeoutMs)
-{
-    // rs274 2.9.0~pre1 sometimes dies of a bus error when several start at the same moment (seen
-    // about once in 40 parallel runs of a four-line program): that is the peer failing, not the
-    // program, so a crashed run is tried again before it counts.
-    constexpr int kAttempts = 3;
-    for (int attempt = 1;; ++attempt) {
-        bool crashed = false;
-        auto run = runOnce(rs274Binary, ngcFile, toolTable, workDir, timeoutMs, crashed);
-        if (!run || !crashed || attempt == kAttempts)
-            return run;
-    }
 }
 
 }  // namespace camwb::external

@@ -28,8 +28,8 @@ struct Rs274Tool {
 // Writes `tools` as a LinuxCNC tool table ("T1 P1 Z... D... ;") at `path`.
 base::Status writeRs274ToolTable(const std::string& path, const std::vector<Rs274Tool>& tools);
 
-// `rs274Binary` is the path CMake found; fails only when the process cannot run or hangs. A run
-// that rs274 does not survive (a signal) is tried up to three times; exitCode -1 means all crashed.
+// `rs274Binary` is the path CMake found; fails only when the process cannot run or hangs. rs274
+// runs with HOME = workDir (its tool table lives in $HOME/.tool.mmap); exitCode -1: it crashed.
 base::Result<Rs274Run> runRs274(const std::string& rs274Binary, const std::string& ngcFile,
                                 const std::string& toolTable, const std::string& workDir, int timeoutMs = 120000);
 

@@ -14,9 +14,32 @@ namespace camwb::post {
 
 namespace {
 
-// Evaluated before the post: variadic writeBlock and the handler trampoline. The trampoline
-// catches what a handler throws, so that a thrown non-Error value is still seen as a failure.
+// Evaluated before the post: a clock and a random generator that repeat, variadic writeBlock, and
+// the handler trampoline. Date answers the run's injected time (SOURCE_DATE_EPOCH) and Math.random
+// a fixed-seed sequence, so that the same input gives the same bytes whatever a post reads. The
+// trampoline catches what a handler throws, so that a thrown non-Error value is still a failure.
 const char* kPrelude = R"JS(
+(function (global, epochMs) {
+    var RealDate = global.Date;
+    function InjectedDate() {
+        if (!(this instanceof InjectedDate))
+            return new RealDate(epochMs).toString();
+        var args = arguments.length ? Array.prototype.slice.call(arguments) : [epochMs];
+        return new (Function.prototype.bind.apply(RealDate, [null].concat(args)))();
+    }
+    InjectedDate.prototype = RealDate.prototype;
+    InjectedDate.now = function () { return epochMs; };
+    InjectedDate.UTC = RealDate.UTC;
+    InjectedDate.parse = RealDate.parse;
+    global.Date = InjectedDate;
+    var state = 0x9e3779b9;
+    Math.random = function () {  // mulberry32
+        state = (state + 0x6d2b79f5) | 0;
+        var t = Math.imul(state ^ (state >>> 15), 1 | state);
+        t = (t + Math.imul(t ^ (t >>> 7), 61 | t)) ^ t;
+        return ((t ^ (t >>> 14)) >>> 0) / 4294967296;
+    };
+})(this, __camwbEpochMs);
 var writeBlock = (function (kernel) {
     return function writeBlock() { kernel.writeBlockWords(Array.prototype.slice.call(arguments)); };
 })(__camwbKernel);
@@ -91,6 +114,7 @@ ScriptRun::ScriptRun(std::string postFile, const PostContext& context, std::chro
     global.setProperty("user", qs(context.user));
     global.setProperty("version", qs(context.version));
     global.setProperty("machine", QJSValue(QJSValue::NullValue));
+    global.setProperty("__camwbEpochMs", static_cast<double>(context.dateEpochSeconds) * 1000.0);
     m_trampoline = m_engine.evaluate(QString::fromUtf8(kPrelude), QStringLiteral("<camwb-kernel>"));
 }
 

@@ -170,6 +170,20 @@ TEST(PostKernel, ScriptWithoutPostObjectIsRejected)
     EXPECT_NE(post.error().message.find("`post`"), std::string::npos);
 }
 
+TEST(PostKernel, ClockAndRandomNumbersRepeat)
+{
+    // A post that reads the clock or draws random numbers still writes the same bytes every run.
+    const std::string source = R"JS(var post = {};
+function onOpen() { writeln([new Date().toISOString(), Date.now(), Math.random(), Math.random()].join("|")); }
+)JS";
+    const auto first = runScript("clock.js", source);
+    const auto second = runScript("clock.js", source);
+    ASSERT_TRUE(first.ok()) << first.error().toString();
+    ASSERT_TRUE(second.ok());
+    EXPECT_EQ(first->text, second->text);
+    EXPECT_EQ(first->text.substr(0, 39), "2018-05-15T21:09:46.000Z|1526418586000|");  // the injected date
+}
+
 TEST(PostKernel, NoSandboxEscapes)
 {
     const auto output = runScript("sandbox.js", R"JS(

@@ -9,6 +9,7 @@
 #include <chrono>
 #include <filesystem>
 #include <fstream>
+#include <tuple>
 
 namespace camwb::post::test {
 namespace {
@@ -65,20 +66,41 @@ TEST(ScriptBudget, RunawayTopLevelCodeFailsTheLoad)
 
 TEST(ScriptBudget, TheBudgetIsPerCallNotPerRun)
 {
-    // 40 calls of about 25 ms each: a second in all, far over a 150 ms budget, yet each call is short.
-    Toolpath path;
-    for (int i = 0; i < 40; ++i)
-        path.add(Comment{"c"});
-    auto output = runWith("slow.js", R"JS(var post = {};
+    // Posts cannot read the clock (Date is the run's injected time), so a call is made slow with a
+    // loop, timed here once: each call takes a tenth of the budget (room for a loaded machine), all
+    // thirty of them three budgets.
+    const std::string source = R"JS(var post = {};
+var loops = 0;
+function onSection(section) { loops = section.toolNumber * 1000; }
 function onComment(text) {
-    var until = Date.now() + 25;
-    while (Date.now() < until) {}
-    writeln(text);
+    var x = 0;
+    for (var i = 0; i < loops; ++i)
+        x = (x + i * 7) % 1000003;
+    writeln(text + " " + (x >= 0));
 }
-)JS",
-                          path, std::chrono::milliseconds(150));
-    ASSERT_TRUE(output.ok()) << output.error().toString();
-    EXPECT_EQ(lines(output->text).size(), 40u);
+)JS";
+    auto timed = [&](int thousands, int calls, std::chrono::milliseconds budget) {
+        Toolpath path;
+        path.add(SectionBegin{"slow", "test", thousands, {}});
+        for (int i = 0; i < calls; ++i)
+            path.add(Comment{"c"});
+        const auto start = std::chrono::steady_clock::now();
+        auto output = runWith("slow.js", source, path, budget);
+        return std::pair{std::move(output), std::chrono::steady_clock::now() - start};
+    };
+    int thousands = 100;
+    auto [probe, probeTime] = timed(thousands, 1, std::chrono::seconds(10));
+    ASSERT_TRUE(probe.ok()) << probe.error().toString();
+    while (probeTime < std::chrono::milliseconds(20) && thousands < 100000) {  // at least 20 ms a call
+        thousands *= 2;
+        std::tie(probe, probeTime) = timed(thousands, 1, std::chrono::seconds(10));
+    }
+    const auto call = std::chrono::duration_cast<std::chrono::milliseconds>(probeTime);
+    const auto budget = 10 * call;
+    auto [output, total] = timed(thousands, 30, budget);
+    ASSERT_TRUE(output.ok()) << output.error().toString() << " (one call " << call.count() << " ms)";
+    EXPECT_EQ(lines(output->text).size(), 30u);
+    EXPECT_GT(total, budget);  // the run as a whole took longer than one call may
 }
 
 TEST(RunToFile, WritesWhatRunReturnsStreamedInChunks)

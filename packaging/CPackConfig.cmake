@@ -14,8 +14,8 @@ install(FILES ${PROJECT_SOURCE_DIR}/packaging/camwb.desktop DESTINATION ${CMAKE_
 install(FILES ${PROJECT_SOURCE_DIR}/resources/icons/camwb.svg
         DESTINATION ${CMAKE_INSTALL_DATADIR}/icons/hicolor/scalable/apps)
 # Post scripts only: their golden tests (posts/<id>/tests/) stay in the source tree.
-install(DIRECTORY ${PROJECT_SOURCE_DIR}/posts/ DESTINATION ${CMAKE_INSTALL_DATADIR}/camwb/posts
-        FILES_MATCHING PATTERN "*.js" PATTERN "tests" EXCLUDE)
+file(GLOB post_scripts CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/posts/*.js)
+install(FILES ${post_scripts} DESTINATION ${CMAKE_INSTALL_DATADIR}/camwb/posts)
 install(DIRECTORY ${PROJECT_SOURCE_DIR}/resources/machines/ DESTINATION ${CMAKE_INSTALL_DATADIR}/camwb/machines
         FILES_MATCHING PATTERN "*.json")
 install(FILES ${PROJECT_SOURCE_DIR}/resources/examples/example-block.camwb

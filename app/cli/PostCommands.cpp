@@ -31,10 +31,10 @@ std::string joined(const std::vector<std::string>& items, const char* separator 
 
 std::string origin(const post::PostEntry& entry)
 {
-    std::string text = entry.builtIn ? "built-in" : "user";
-    if (!entry.shadows.empty())
-        text += " (overrides " + entry.shadows.front() + ")";
-    return text;
+    // A built-in post hiding another built-in one (installed and source tree) is not news to a user.
+    if (entry.builtIn)
+        return "built-in";
+    return entry.shadows.empty() ? "user" : "user (overrides " + entry.shadows.front() + ")";
 }
 
 void printTable(const std::vector<std::vector<std::string>>& rows)

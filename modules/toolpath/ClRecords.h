@@ -54,6 +54,7 @@ struct ToolChange {
 struct Spindle {
     double rpm = 0;
     bool clockwise = true;
+    double surfaceSpeedMPerMin = 0;  // constant surface speed (lathe G96); rpm is then the limit, 0 = none
 };  // rpm 0 = stop
 struct Coolant {
     CoolantMode mode = CoolantMode::Off;
@@ -126,9 +127,12 @@ using Record = std::variant<Rapid, Linear, Arc, ToolChange, Spindle, Coolant, Fe
                             ToolAxisMove, CutterComp, Comment, SectionBegin, SectionEnd, ProgramStop, PassThrough>;
 
 // Where a record came from, so the GUI can link it back to its operation. -1 = unknown.
+// NC interpreters set `line` (1-based) and `file` (index into their list of program files).
 struct SourceRef {
     int operationIndex = -1;
     int recordIndex = -1;
+    int line = -1;
+    int file = 0;
 };
 
 }  // namespace camwb::toolpath

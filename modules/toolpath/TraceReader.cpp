@@ -210,6 +210,10 @@ base::Result<ClImport> readTrace(std::string_view text, const std::string& fileN
             if (direction != "cw" && direction != "ccw" && !in.failed())
                 in.fail("expected cw or ccw", 0);
             s.clockwise = direction == "cw";
+            if (!in.atEnd()) {
+                if (in.word() != "css" && !in.failed()) in.fail("expected css", 0);
+                s.surfaceSpeedMPerMin = in.number();
+            }
             record = s;
         } else if (kind == "coolant") {
             record = Coolant{in.choice(kCoolants)};

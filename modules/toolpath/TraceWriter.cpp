@@ -45,7 +45,9 @@ void TraceWriter::toolChange(const ToolChange& r)
 
 void TraceWriter::spindle(const Spindle& r)
 {
-    m_out += "spindle " + num(r.rpm) + (r.clockwise ? " cw" : " ccw") + '\n';
+    m_out += "spindle " + num(r.rpm) + (r.clockwise ? " cw" : " ccw");
+    if (r.surfaceSpeedMPerMin > 0) m_out += " css " + num(r.surfaceSpeedMPerMin);
+    m_out += '\n';
 }
 
 void TraceWriter::coolant(const Coolant& r) { m_out += std::string("coolant ") + name(r.mode) + '\n'; }

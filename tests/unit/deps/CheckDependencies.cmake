@@ -2,7 +2,7 @@
 #  - project headers: only from the module itself and the modules below it (design.md §2);
 #  - OCCT headers: only in modules/occ sources and its private detail/ headers, never in a public header;
 #  - VTK and QScintilla: only in modules/gui, never in a gui header outside view3d/ and editor/ internals;
-#  - Qt: not at all in the kernels (base, geom, toolpath, kinematics, ops, occ, document); in post only in .cpp files.
+#  - Qt: not at all in the kernels (base, geom, toolpath, kinematics, ops, occ, nc, document); in post only in .cpp files.
 cmake_minimum_required(VERSION 3.25)
 set(allowed_base base)
 set(allowed_geom base geom)
@@ -11,9 +11,10 @@ set(allowed_kinematics base kinematics)
 set(allowed_occ base geom occ)
 set(allowed_ops base geom toolpath ops)
 set(allowed_post base toolpath kinematics post)
-set(allowed_document base geom toolpath kinematics occ ops post document)
-set(allowed_gui base geom toolpath kinematics occ ops post document gui)
-set(qt_free base geom toolpath kinematics ops occ document)
+set(allowed_nc base toolpath kinematics nc)
+set(allowed_document base geom toolpath kinematics occ ops post nc document)
+set(allowed_gui base geom toolpath kinematics occ ops post nc document gui)
+set(qt_free base geom toolpath kinematics ops occ nc document)
 
 file(GLOB occt_headers RELATIVE ${OCCT_INCLUDE_DIR} ${OCCT_INCLUDE_DIR}/*.hxx)
 list(LENGTH occt_headers occt_count)
@@ -29,7 +30,7 @@ foreach(file IN LISTS files)
   foreach(line IN LISTS includes)
     string(REGEX REPLACE "^[ \t]*#[ \t]*include[ \t]*[<\"]([^>\"]+)[>\"].*" "\\1" header "${line}")
     # Project headers "<module>/<...>".
-    if(header MATCHES "^(base|geom|toolpath|kinematics|occ|ops|post|document|gui)/")
+    if(header MATCHES "^(base|geom|toolpath|kinematics|occ|ops|post|nc|document|gui)/")
       string(REGEX MATCH "^[^/]+" target "${header}")
       if(NOT target IN_LIST allowed_${module})
         string(APPEND violations "modules/${file}: ${module} may not include ${header}\n")

@@ -1,0 +1,35 @@
+#include "nc/Diagnostic.h"
+
+#include <algorithm>
+
+namespace camwb::nc {
+
+const char* severityName(Severity severity)
+{
+    switch (severity) {
+    case Severity::Note: return "note";
+    case Severity::Warning: return "warning";
+    case Severity::Error: return "error";
+    }
+    return "error";
+}
+
+std::string formatDiagnostic(const Diagnostic& d)
+{
+    std::string out = d.file.empty() ? std::string("<input>") : d.file;
+    if (d.line > 0) out += ':' + std::to_string(d.line);
+    if (d.line > 0 && d.column > 0) out += ':' + std::to_string(d.column);
+    out += ": ";
+    out += severityName(d.severity);
+    out += ": ";
+    out += d.message;
+    return out;
+}
+
+bool hasErrors(const std::vector<Diagnostic>& diagnostics)
+{
+    return std::any_of(diagnostics.begin(), diagnostics.end(),
+                       [](const Diagnostic& d) { return d.severity == Severity::Error; });
+}
+
+}  // namespace camwb::nc

@@ -1,0 +1,84 @@
+#include "nc/Interpreter.h"
+
+#include "base/AtomicFile.h"
+#include "nc/detail/Dialects.h"
+
+#include <algorithm>
+#include <cctype>
+#include <filesystem>
+#include <system_error>
+
+namespace camwb::nc {
+
+namespace {
+
+std::string withCase(std::string_view name, int (*convert)(int))
+{
+    std::string out(name);
+    std::transform(out.begin(), out.end(), out.begin(),
+                   [convert](unsigned char c) { return static_cast<char>(convert(c)); });
+    return out;
+}
+
+}  // namespace
+
+ProgramResolver folderResolver(std::string folder, std::vector<std::string> extensions)
+{
+    return [folder = std::move(folder), extensions = std::move(extensions)](
+               std::string_view name) -> std::optional<ProgramSource> {
+        namespace fs = std::filesystem;
+        if (name.empty() || name.find('/') != std::string_view::npos)
+            return std::nullopt;
+        const std::string spellings[] = {std::string(name), withCase(name, ::toupper), withCase(name, ::tolower)};
+        std::vector<std::string> suffixes{""};
+        for (const std::string& ext : extensions) {
+            suffixes.push_back(ext);
+            suffixes.push_back(withCase(ext, ::toupper));
+        }
+        for (const std::string& spelling : spellings) {
+            for (const std::string& suffix : suffixes) {
+                const fs::path candidate = fs::path(folder.empty() ? "." : folder) / (spelling + suffix);
+                std::error_code ec;
+                if (!fs::is_regular_file(candidate, ec))
+                    continue;
+                auto text = base::readTextFile(candidate.string());
+                if (text)
+                    return ProgramSource{candidate.string(), std::move(text).value()};
+            }
+        }
+        return std::nullopt;
+    };
+}
+
+InterpretResult interpret(std::string_view text, const InterpretOptions& options, toolpath::MachineSink& sink)
+{
+    switch (options.dialect) {
+    case Dialect::Sinumerik: return detail::interpretSinumerik(text, options, sink);
+    case Dialect::Heidenhain: return detail::interpretHeidenhain(text, options, sink);
+    case Dialect::Iso: return detail::interpretIso(text, options, sink);
+    }
+    return {};
+}
+
+InterpretResult interpretFile(const std::string& path, std::optional<Dialect> dialect, InterpretOptions options,
+                              toolpath::MachineSink& sink)
+{
+    auto text = base::readTextFile(path);
+    if (!text) {
+        InterpretResult failed;
+        failed.files.push_back(path);
+        failed.diagnostics.push_back({Severity::Error, path, 0, 0, text.error().message});
+        return failed;
+    }
+    options.dialect = dialect ? *dialect : guessDialect(text.value(), path);
+    options.fileName = path;
+    if (!options.resolveProgram) {
+        const std::string folder = std::filesystem::path(path).parent_path().string();
+        options.resolveProgram = options.dialect == Dialect::Heidenhain
+                                     ? folderResolver(folder, {".h"})
+                                     : folderResolver(folder, {".spf", ".mpf", ".ngc", ".nc"});
+    }
+    return interpret(text.value(), options, sink);
+}
+
+}  // namespace camwb::nc

@@ -1,0 +1,73 @@
+// Reads an NC program in its dialect and drives a MachineSink with what the control would do:
+// the one entry point the CLI, the NC inspector and the round-trip tests use. Before each record
+// the interpreter calls sink.setSource() with the program line that made it (SourceRef::line,
+// SourceRef::file indexing InterpretResult::files), so the GUI can link segments and lines.
+//
+// What reaches the sink, whatever the dialect: positions in mm in the work offset's frame (inch
+// programs scaled, diameter programming halved), feeds in mm/min, mm/rev or 1/min with a
+// FeedModeChange before a change of mode, rapids as Rapid, G1/L as Linear, circles and helices
+// as Arc (turns for full extra revolutions), canned cycles as one Cycle record per hole call
+// (clearance = the height before the call when returning there, retract = R plane / set-up
+// clearance, top = reference plane), ToolChange with the tool number (geometry left default),
+// Spindle, Coolant, WorkOffset, Dwell, CutterComp, ProgramStop, Comment for comments.
+#pragma once
+
+#include "nc/Diagnostic.h"
+#include "nc/Dialect.h"
+
+#include <cstdint>
+#include <functional>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace camwb::kinematics {
+struct Machine;
+}
+namespace camwb::toolpath {
+class MachineSink;
+}
+
+namespace camwb::nc {
+
+// A program found by name for a call (Sinumerik subprogram/PROC, Heidenhain CALL PGM).
+struct ProgramSource {
+    std::string path;
+    std::string text;
+};
+// Finds a called program by the name the caller wrote; nullopt when there is none.
+using ProgramResolver = std::function<std::optional<ProgramSource>(std::string_view name)>;
+
+// Looks for <folder>/<name> and <folder>/<name><ext> for each extension, trying the name as
+// written, upper case and lower case (controls store SPF files in upper case).
+ProgramResolver folderResolver(std::string folder, std::vector<std::string> extensions);
+
+struct InterpretOptions {
+    Dialect dialect = Dialect::Iso;
+    std::string fileName;             // for diagnostics; empty = "<input>"
+    ProgramResolver resolveProgram;   // empty: calls to other programs are errors
+    const kinematics::Machine* machine = nullptr;  // travel and spindle range checks when set
+    std::int64_t maxBlocks = 10'000'000;  // executed blocks before a runaway-program error
+    double arcRadiusToleranceMm = 0.01;   // start/end radius mismatch that is an error
+    std::size_t maxDiagnostics = 1000;    // further ones are counted, not kept
+};
+
+struct InterpretResult {
+    std::vector<Diagnostic> diagnostics;
+    std::vector<std::string> files;  // [0] the program itself, then subprograms as first called
+    std::int64_t blocksExecuted = 0;
+    std::size_t diagnosticsDropped = 0;
+    bool completed = false;  // reached the program end (M30/M2/END PGM or the last line) without a fatal error
+
+    bool hasErrors() const { return nc::hasErrors(diagnostics); }
+};
+
+InterpretResult interpret(std::string_view text, const InterpretOptions& options, toolpath::MachineSink& sink);
+
+// Reads the file (diagnostic when it cannot), guesses the dialect when `dialect` is empty and
+// resolves subprograms in the file's folder unless options.resolveProgram is set.
+InterpretResult interpretFile(const std::string& path, std::optional<Dialect> dialect, InterpretOptions options,
+                              toolpath::MachineSink& sink);
+
+}  // namespace camwb::nc

@@ -1,0 +1,2 @@
+# Sources of the NC text tools, relative to this folder.
+set(NC_PART_SOURCES)

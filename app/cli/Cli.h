@@ -45,5 +45,6 @@ int postToFile(const post::PostProcessor& post, const toolpath::Toolpath& toolpa
 int runCommand(const std::vector<std::string>& args);    // camwb-cli run <job> -o <file>
 int postsCommand(const std::vector<std::string>& args);  // camwb-cli posts [<id>]
 int postCommand(const std::vector<std::string>& args);   // camwb-cli post <input> --post <id> ...
+int ncCommand(const std::vector<std::string>& args);     // camwb-cli nc trace <file> ...
 
 }  // namespace camwb::cli

@@ -24,8 +24,8 @@ std::string withCase(std::string_view name, int (*convert)(int))
 
 ProgramResolver folderResolver(std::string folder, std::vector<std::string> extensions)
 {
-    return [folder = std::move(folder), extensions = std::move(extensions)](
-               std::string_view name) -> std::optional<ProgramSource> {
+    return [folder = std::move(folder),
+            extensions = std::move(extensions)](std::string_view name) -> std::optional<ProgramSource> {
         namespace fs = std::filesystem;
         if (name.empty() || name.find('/') != std::string_view::npos)
             return std::nullopt;
@@ -37,7 +37,9 @@ ProgramResolver folderResolver(std::string folder, std::vector<std::string> exte
         }
         for (const std::string& spelling : spellings) {
             for (const std::string& suffix : suffixes) {
-                const fs::path candidate = fs::path(folder.empty() ? "." : folder) / (spelling + suffix);
+                // Without a folder the bare name, so that messages name the file as the caller did.
+                const fs::path candidate =
+                    folder.empty() ? fs::path(spelling + suffix) : fs::path(folder) / (spelling + suffix);
                 std::error_code ec;
                 if (!fs::is_regular_file(candidate, ec))
                     continue;
@@ -53,9 +55,12 @@ ProgramResolver folderResolver(std::string folder, std::vector<std::string> exte
 InterpretResult interpret(std::string_view text, const InterpretOptions& options, toolpath::MachineSink& sink)
 {
     switch (options.dialect) {
-    case Dialect::Sinumerik: return detail::interpretSinumerik(text, options, sink);
-    case Dialect::Heidenhain: return detail::interpretHeidenhain(text, options, sink);
-    case Dialect::Iso: return detail::interpretIso(text, options, sink);
+    case Dialect::Sinumerik:
+        return detail::interpretSinumerik(text, options, sink);
+    case Dialect::Heidenhain:
+        return detail::interpretHeidenhain(text, options, sink);
+    case Dialect::Iso:
+        return detail::interpretIso(text, options, sink);
     }
     return {};
 }

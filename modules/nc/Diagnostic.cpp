@@ -7,9 +7,12 @@ namespace camwb::nc {
 const char* severityName(Severity severity)
 {
     switch (severity) {
-    case Severity::Note: return "note";
-    case Severity::Warning: return "warning";
-    case Severity::Error: return "error";
+    case Severity::Note:
+        return "note";
+    case Severity::Warning:
+        return "warning";
+    case Severity::Error:
+        return "error";
     }
     return "error";
 }
@@ -17,8 +20,10 @@ const char* severityName(Severity severity)
 std::string formatDiagnostic(const Diagnostic& d)
 {
     std::string out = d.file.empty() ? std::string("<input>") : d.file;
-    if (d.line > 0) out += ':' + std::to_string(d.line);
-    if (d.line > 0 && d.column > 0) out += ':' + std::to_string(d.column);
+    if (d.line > 0)
+        out += ':' + std::to_string(d.line);
+    if (d.line > 0 && d.column > 0)
+        out += ':' + std::to_string(d.column);
     out += ": ";
     out += severityName(d.severity);
     out += ": ";

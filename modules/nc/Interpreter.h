@@ -45,12 +45,12 @@ ProgramResolver folderResolver(std::string folder, std::vector<std::string> exte
 
 struct InterpretOptions {
     Dialect dialect = Dialect::Iso;
-    std::string fileName;             // for diagnostics; empty = "<input>"
-    ProgramResolver resolveProgram;   // empty: calls to other programs are errors
+    std::string fileName;                          // for diagnostics; empty = "<input>"
+    ProgramResolver resolveProgram;                // empty: calls to other programs are errors
     const kinematics::Machine* machine = nullptr;  // travel and spindle range checks when set
-    std::int64_t maxBlocks = 10'000'000;  // executed blocks before a runaway-program error
-    double arcRadiusToleranceMm = 0.01;   // start/end radius mismatch that is an error
-    std::size_t maxDiagnostics = 1000;    // further ones are counted, not kept
+    std::int64_t maxBlocks = 10'000'000;           // executed blocks before a runaway-program error
+    double arcRadiusToleranceMm = 0.01;            // start/end radius mismatch that is an error
+    std::size_t maxDiagnostics = 1000;             // further ones are counted, not kept
 };
 
 struct InterpretResult {

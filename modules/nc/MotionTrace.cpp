@@ -76,8 +76,10 @@ private:
     {
         std::string out;
         for (char c : s) {
-            if (c == '"' || c == '\\') out += '\\';
-            if (static_cast<unsigned char>(c) < 0x20) continue;
+            if (c == '"' || c == '\\')
+                out += '\\';
+            if (static_cast<unsigned char>(c) < 0x20)
+                continue;
             out += c;
         }
         return out;
@@ -88,8 +90,10 @@ private:
 
 class Tracer {
 public:
-    Tracer(const std::vector<std::string>& files, TraceFormat format, std::string& out)
-        : m_files(files), m_format(format), m_w(out, format)
+    Tracer(const std::vector<std::string>& files, TraceFormat format, std::string& out) :
+        m_files(files),
+        m_format(format),
+        m_w(out, format)
     {
     }
 
@@ -109,7 +113,8 @@ private:
     }
     std::string fileName(int index) const
     {
-        if (index >= static_cast<int>(m_files.size())) return "<input>";
+        if (index >= static_cast<int>(m_files.size()))
+            return "<input>";
         return std::filesystem::path(m_files[index]).filename().string();
     }
     void begin(const char* kind) { m_w.begin(where(), m_source.line, kind); }
@@ -120,15 +125,18 @@ private:
                               : m_state.feedMode == FeedMode::PerRevolution ? "fr"
                                                                             : "fi";
             m_w.field(key, "feed", num(feed));
-            if (m_format == TraceFormat::Jsonl) m_w.field("", "feedMode", name(m_state.feedMode), true);
+            if (m_format == TraceFormat::Jsonl)
+                m_w.field("", "feedMode", name(m_state.feedMode), true);
         }
         m_w.field("s", "spindle", num(m_state.rpm));
         if (m_format == TraceFormat::Text) {
-            if (m_state.rpm > 0 && !m_state.spindleCw) m_w.word("ccw");
+            if (m_state.rpm > 0 && !m_state.spindleCw)
+                m_w.word("ccw");
         } else {
             m_w.field("", "spindleCw", m_state.spindleCw ? "true" : "false");
         }
-        if (m_state.surfaceSpeed > 0) m_w.field("css", "surfaceSpeed", num(m_state.surfaceSpeed));
+        if (m_state.surfaceSpeed > 0)
+            m_w.field("css", "surfaceSpeed", num(m_state.surfaceSpeed));
         m_w.field("t", "tool", std::to_string(m_state.tool));
         m_w.end();
     }
@@ -153,11 +161,13 @@ private:
         const Vec3 d = r.to - m_state.position;
         const bool helix = std::abs(d.x * r.normal.x + d.y * r.normal.y + d.z * r.normal.z) > 1e-9;
         begin(helix ? "helix" : "arc");
-        if (m_format == TraceFormat::Text) m_w.word(r.clockwise ? "cw" : "ccw");
+        if (m_format == TraceFormat::Text)
+            m_w.word(r.clockwise ? "cw" : "ccw");
         m_w.point("", "to", r.to);
         m_w.point("c", "center", r.center);
         m_w.point("n", "normal", r.normal);
-        if (m_format == TraceFormat::Jsonl) m_w.field("", "cw", r.clockwise ? "true" : "false");
+        if (m_format == TraceFormat::Jsonl)
+            m_w.field("", "cw", r.clockwise ? "true" : "false");
         m_w.field("turns", "turns", std::to_string(r.turns));
         state(r.feedMmPerMin, true);
         m_state.position = r.to;
@@ -166,15 +176,19 @@ private:
     {
         for (const Vec3& hole : r.holes) {
             begin("cycle");
-            if (m_format == TraceFormat::Text) m_w.word(name(r.kind));
-            else m_w.field("", "cycle", name(r.kind), true);
+            if (m_format == TraceFormat::Text)
+                m_w.word(name(r.kind));
+            else
+                m_w.field("", "cycle", name(r.kind), true);
             m_w.point("", "to", hole);
             m_w.field("bottom", "bottom", num(r.bottomZ));
             m_w.field("top", "top", num(r.topZ));
             m_w.field("r", "retract", num(r.retractZ));
             m_w.field("clear", "clearance", num(r.clearanceZ));
-            if (r.peckMm > 0) m_w.field("peck", "peck", num(r.peckMm));
-            if (r.dwellSeconds > 0) m_w.field("dwell", "dwell", num(r.dwellSeconds));
+            if (r.peckMm > 0)
+                m_w.field("peck", "peck", num(r.peckMm));
+            if (r.dwellSeconds > 0)
+                m_w.field("dwell", "dwell", num(r.dwellSeconds));
             m_w.field("return", "return", r.returnToClearance ? "clear" : "retract", true);
             state(r.feedMmPerMin, true);
             m_state.position = {hole.x, hole.y, r.returnToClearance ? std::max(r.clearanceZ, r.retractZ) : r.retractZ};

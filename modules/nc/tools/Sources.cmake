@@ -1,2 +1,2 @@
 # Sources of the NC text tools, relative to this folder.
-set(NC_PART_SOURCES)
+set(NC_PART_SOURCES BlockNumbers.h BlockNumbers.cpp LineDiff.h LineDiff.cpp ProgramStats.h ProgramStats.cpp)

@@ -1,0 +1,262 @@
+#include "nc/tools/ProgramStats.h"
+
+#include "kinematics/Machine.h"
+#include "toolpath/ClArcs.h"
+#include "toolpath/CycleExpansion.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <type_traits>
+
+namespace camwb::nc {
+
+using base::Vec3;
+namespace tp = toolpath;
+
+namespace {
+
+constexpr double kTwoPi = 2.0 * std::numbers::pi;
+
+// Walks the records with the modal state the time estimate needs.
+class StatsWalker {
+public:
+    StatsWalker(ProgramStats& stats, double rapidMmPerMin, std::optional<Vec3> start) :
+        m_stats(stats),
+        m_rapidMmPerMin(rapidMmPerMin),
+        m_position(start)
+    {
+    }
+
+    void record(const tp::Record& r)
+    {
+        std::visit(
+            [this](const auto& rec) {
+                using T = std::decay_t<decltype(rec)>;
+                if constexpr (std::is_same_v<T, tp::Rapid>)
+                    rapid(rec.to);
+                else if constexpr (std::is_same_v<T, tp::Linear>)
+                    linear(rec.to, rec.feedMmPerMin);
+                else if constexpr (std::is_same_v<T, tp::Arc>)
+                    arc(rec);
+                else if constexpr (std::is_same_v<T, tp::ToolAxisMove>) {
+                    if (rec.feedMmPerMin > 0)
+                        linear(rec.tip, rec.feedMmPerMin);
+                    else
+                        rapid(rec.tip);
+                } else if constexpr (std::is_same_v<T, tp::Cycle>)
+                    cycle(rec);
+                else if constexpr (std::is_same_v<T, tp::Dwell>)
+                    addDwell(rec.seconds);
+                else if constexpr (std::is_same_v<T, tp::Spindle>)
+                    m_spindle = {rec.rpm, rec.clockwise};
+                else if constexpr (std::is_same_v<T, tp::FeedModeChange>)
+                    m_feedMode = rec.mode;
+                else if constexpr (std::is_same_v<T, tp::ToolChange>)
+                    toolChange(rec.tool.number);
+            },
+            r);
+    }
+
+private:
+    MotionTotals& toolTotals()
+    {
+        if (m_tool < 0) {
+            auto it = std::find_if(m_stats.tools.begin(), m_stats.tools.end(),
+                                   [&](const ToolStats& t) { return t.toolNumber == m_toolNumber; });
+            if (it == m_stats.tools.end()) {
+                m_stats.tools.push_back({m_toolNumber, {}});
+                it = std::prev(m_stats.tools.end());
+            }
+            m_tool = static_cast<int>(it - m_stats.tools.begin());
+        }
+        return m_stats.tools[static_cast<std::size_t>(m_tool)].totals;
+    }
+
+    void toolChange(int number)
+    {
+        ++m_stats.toolChanges;
+        m_toolNumber = number;
+        m_tool = -1;
+    }
+
+    void addPoint(const Vec3& p, bool cutting)
+    {
+        for (MotionTotals* t : {&m_stats.totals, &toolTotals()}) {
+            (cutting ? t->cuttingExtents : t->rapidExtents).add(p);
+            t->allExtents.add(p);
+        }
+    }
+
+    void rapid(const Vec3& to)
+    {
+        ++m_stats.rapids;
+        if (m_position) {
+            addPoint(*m_position, false);
+            const double length = base::distance(*m_position, to);
+            for (MotionTotals* t : {&m_stats.totals, &toolTotals()}) {
+                t->rapidLengthMm += length;
+                t->rapidSeconds += length / m_rapidMmPerMin * 60.0;
+            }
+        }
+        addPoint(to, false);
+        m_position = to;
+    }
+
+    // Seconds a feed move of `length` takes at `feed` in the current mode; nullopt when it cannot run.
+    std::optional<double> feedSeconds(double length, double feed) const
+    {
+        if (feed <= 0)
+            return std::nullopt;
+        switch (m_feedMode) {
+        case tp::FeedMode::PerMinute:
+            return length / feed * 60.0;
+        case tp::FeedMode::PerRevolution:
+            if (m_spindle.rpm <= 0)
+                return std::nullopt;
+            return length / (feed * m_spindle.rpm) * 60.0;
+        case tp::FeedMode::InverseTime:
+            return 60.0 / feed;
+        }
+        return std::nullopt;
+    }
+
+    void addFeed(double length, double feed)
+    {
+        ++m_stats.feedMoves;
+        const std::optional<double> seconds = m_position ? feedSeconds(length, feed) : 0.0;
+        if (!seconds)
+            ++m_stats.movesWithoutFeed;
+        for (MotionTotals* t : {&m_stats.totals, &toolTotals()}) {
+            t->feedLengthMm += length;
+            t->feedSeconds += seconds.value_or(0.0);
+        }
+    }
+
+    void linear(const Vec3& to, double feed)
+    {
+        double length = 0;
+        if (m_position) {
+            addPoint(*m_position, true);
+            length = base::distance(*m_position, to);
+        }
+        addFeed(length, feed);
+        addPoint(to, true);
+        m_position = to;
+    }
+
+    void arc(const tp::Arc& a)
+    {
+        ++m_stats.arcs;
+        if (!m_position) {
+            addFeed(0, a.feedMmPerMin);
+            addPoint(a.to, true);
+            m_position = a.to;
+            return;
+        }
+        const Vec3 start = *m_position;
+        const Vec3 n = tp::unitVector(a.normal).value_or(Vec3{0, 0, 1});
+        const Vec3 rs = start - a.center;
+        const Vec3 u0 = rs - n * rs.dot(n);  // start radius vector in the plane
+        const double radius = u0.length();
+        double sweep = tp::forwardAngle(a, start, a.to);
+        if (sweep <= 1e-12)
+            sweep = kTwoPi;  // start == end: a full circle
+        sweep += kTwoPi * std::max(0, a.turns);
+        const double rise = (a.to - start).dot(n);
+        const double length = std::hypot(radius * sweep, rise);
+        addPoint(start, true);
+        addPoint(a.to, true);
+        if (radius > 0) {
+            // Signed angle about n: counter-clockwise positive; cw arcs run negative.
+            const Vec3 ux = u0 * (1.0 / radius);
+            const Vec3 uy = n.cross(ux);
+            const double dir = a.clockwise ? -1.0 : 1.0;
+            const Vec3 base = start - u0;   // centre in the start's plane
+            auto pointAt = [&](double t) {  // t: angle travelled
+                const double phi = dir * t;
+                return base + (ux * std::cos(phi) + uy * std::sin(phi)) * radius + n * (rise * t / sweep);
+            };
+            // Extremes per axis of r(ux cos + uy sin): phi = atan2(uy_k, ux_k) and opposite.
+            const double ux_[3] = {ux.x, ux.y, ux.z};
+            const double uy_[3] = {uy.x, uy.y, uy.z};
+            for (int k = 0; k < 3; ++k) {
+                if (std::abs(ux_[k]) < 1e-12 && std::abs(uy_[k]) < 1e-12)
+                    continue;
+                const double phi0 = std::atan2(uy_[k], ux_[k]);
+                for (double phi : {phi0, phi0 + std::numbers::pi}) {
+                    // travelled angle t with dir * t == phi (mod 2 pi), every lap within the sweep
+                    double t = std::fmod(dir * phi, kTwoPi);
+                    if (t < 0)
+                        t += kTwoPi;
+                    for (; t <= sweep; t += kTwoPi)
+                        addPoint(pointAt(t), true);
+                }
+            }
+        }
+        addFeed(length, a.feedMmPerMin);
+        m_position = a.to;
+    }
+
+    void cycle(const tp::Cycle& c)
+    {
+        for (const Vec3& hole : c.holes) {
+            ++m_stats.cycleHoles;
+            const Vec3 from = m_position.value_or(Vec3{hole.x, hole.y, tp::cycleReturnZ(c)});
+            if (!m_position)
+                m_position = from;
+            const tp::SpindleState spindle{m_spindle.rpm, m_spindle.clockwise};
+            for (const tp::Record& r : tp::expandCycleHole(c, hole, from, spindle))
+                record(r);
+        }
+    }
+
+    void addDwell(double seconds)
+    {
+        for (MotionTotals* t : {&m_stats.totals, &toolTotals()})
+            t->dwellSeconds += std::max(0.0, seconds);
+    }
+
+    ProgramStats& m_stats;
+    double m_rapidMmPerMin;
+    std::optional<Vec3> m_position;
+    tp::SpindleState m_spindle;
+    tp::FeedMode m_feedMode = tp::FeedMode::PerMinute;
+    int m_toolNumber = 0;
+    int m_tool = -1;  // index into m_stats.tools, -1: look up on first use
+};
+
+}  // namespace
+
+void Extents::add(const Vec3& p)
+{
+    if (empty) {
+        min = max = p;
+        empty = false;
+        return;
+    }
+    min = {std::min(min.x, p.x), std::min(min.y, p.y), std::min(min.z, p.z)};
+    max = {std::max(max.x, p.x), std::max(max.y, p.y), std::max(max.z, p.z)};
+}
+
+void Extents::add(const Extents& other)
+{
+    if (other.empty)
+        return;
+    add(other.min);
+    add(other.max);
+}
+
+ProgramStats programStats(const toolpath::Toolpath& program, const StatsOptions& options)
+{
+    ProgramStats stats;
+    stats.rapidMmPerMin = options.rapidMmPerMin > 0 ? options.rapidMmPerMin : 5000.0;
+    if (options.machine != nullptr && options.machine->rapidMmPerMin > 0)
+        stats.rapidMmPerMin = options.machine->rapidMmPerMin;
+    StatsWalker walker(stats, stats.rapidMmPerMin, options.startPosition);
+    for (const tp::Record& r : program.records())
+        walker.record(r);
+    return stats;
+}
+
+}  // namespace camwb::nc

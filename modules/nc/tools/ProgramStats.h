@@ -1,0 +1,67 @@
+// Statistics of an interpreted NC program (the editor's Program info): extents per axis for
+// rapids, cutting moves and both; rapid and feed path lengths; a machining time estimate from
+// the programmed feeds (per minute, per revolution with the spindle speed, inverse time), rapids
+// at one rate, dwells, canned cycles expanded hole by hole; and the same per tool.
+#pragma once
+
+#include "base/Vec.h"
+#include "toolpath/Toolpath.h"
+
+#include <optional>
+#include <vector>
+
+namespace camwb::kinematics {
+struct Machine;
+}
+
+namespace camwb::nc {
+
+// Axis-aligned box of what was visited; empty until a point is added.
+struct Extents {
+    base::Vec3 min;
+    base::Vec3 max;
+    bool empty = true;
+
+    void add(const base::Vec3& p);
+    void add(const Extents& other);
+};
+
+struct MotionTotals {
+    Extents rapidExtents;    // end points of rapids (and the start points they leave from)
+    Extents cuttingExtents;  // feed moves, arcs with their bulges, cycle holes down to the bottom
+    Extents allExtents;
+    double rapidLengthMm = 0;
+    double feedLengthMm = 0;
+    double rapidSeconds = 0;
+    double feedSeconds = 0;
+    double dwellSeconds = 0;
+    double totalSeconds() const { return rapidSeconds + feedSeconds + dwellSeconds; }
+};
+
+struct ToolStats {
+    int toolNumber = 0;  // 0: moves before the first tool change
+    MotionTotals totals;
+};
+
+struct ProgramStats {
+    MotionTotals totals;
+    std::vector<ToolStats> tools;  // in order of first use
+    int rapids = 0;
+    int feedMoves = 0;  // linear moves and arcs, cycle moves included
+    int arcs = 0;
+    int cycleHoles = 0;
+    int toolChanges = 0;
+    int movesWithoutFeed = 0;  // feed moves at feed 0 (or per revolution with the spindle off): no time counted
+    double rapidMmPerMin = 0;  // the rate the estimate used
+};
+
+struct StatsOptions {
+    double rapidMmPerMin = 5000;                   // used when the machine gives none
+    const kinematics::Machine* machine = nullptr;  // its rapidMmPerMin wins when > 0
+    // Where the tool is before the first move; unknown: the first move only sets the position.
+    std::optional<base::Vec3> startPosition;
+};
+
+ProgramStats programStats(const toolpath::Toolpath& program, const StatsOptions& options = {});
+
+}  // namespace camwb::nc

@@ -1,6 +1,7 @@
 #include "nc/Interpreter.h"
 
 #include "base/AtomicFile.h"
+#include "nc/LimitCheck.h"
 #include "nc/detail/Dialects.h"
 
 #include <algorithm>

@@ -1,0 +1,68 @@
+// The canonical motion trace: one entry per motion with its source line and running state,
+// the same fields in text and JSONL, subprogram lines named with their file.
+#include "nc/MotionTrace.h"
+
+#include <gtest/gtest.h>
+
+namespace camwb::nc {
+namespace {
+
+using namespace camwb::toolpath;
+
+SourceRef at(int line, int file = 0) { return SourceRef{-1, -1, line, file}; }
+
+Toolpath sample()
+{
+    Toolpath p;
+    p.add(ToolChange{Tool{3}}, at(2));
+    p.add(Spindle{1200, false}, at(3));
+    p.add(Rapid{{10, 0, 5}}, at(4));
+    p.add(Linear{{10, 0, -1}, 150}, at(5));
+    p.add(Arc{{0, 10, -1}, {0, 0, -1}, {0, 0, 1}, false, 0, 300}, at(6));
+    p.add(Arc{{0, 10, -3}, {0, 0, -1}, {0, 0, 1}, true, 1, 300}, at(7, 1));
+    p.add(FeedModeChange{FeedMode::PerRevolution}, at(8));
+    p.add(Dwell{0.5}, at(9));
+    Cycle c;
+    c.kind = CycleKind::Peck;
+    c.clearanceZ = 20;
+    c.retractZ = 2;
+    c.bottomZ = -12;
+    c.peckMm = 4;
+    c.feedMmPerMin = 0.1;
+    c.holes = {{5, 5, 0}, {15, 5, 0}};
+    p.add(c, at(10));
+    return p;
+}
+
+TEST(MotionTrace, TextHasOneLinePerMotionWithState)
+{
+    const std::string text = motionTrace(sample(), {"main.mpf", "/x/SUB.SPF"}, TraceFormat::Text);
+    EXPECT_EQ(text,
+              "4 rapid 10.0000 0.0000 5.0000 s 1200.0000 ccw t 3\n"
+              "5 linear 10.0000 0.0000 -1.0000 f 150.0000 s 1200.0000 ccw t 3\n"
+              "6 arc ccw 0.0000 10.0000 -1.0000 c 0.0000 0.0000 -1.0000 n 0.0000 0.0000 1.0000 turns 0 f 300.0000 "
+              "s 1200.0000 ccw t 3\n"
+              "SUB.SPF:7 helix cw 0.0000 10.0000 -3.0000 c 0.0000 0.0000 -1.0000 n 0.0000 0.0000 1.0000 turns 1 f "
+              "300.0000 s 1200.0000 ccw t 3\n"
+              "9 dwell 0.5000\n"
+              "10 cycle peck 5.0000 5.0000 0.0000 bottom -12.0000 top 0.0000 r 2.0000 clear 20.0000 peck 4.0000 "
+              "return clear fr 0.1000 s 1200.0000 ccw t 3\n"
+              "10 cycle peck 15.0000 5.0000 0.0000 bottom -12.0000 top 0.0000 r 2.0000 clear 20.0000 peck 4.0000 "
+              "return clear fr 0.1000 s 1200.0000 ccw t 3\n");
+}
+
+TEST(MotionTrace, JsonlCarriesTheSameFields)
+{
+    const std::string json = motionTrace(sample(), {"main.mpf", "SUB.SPF"}, TraceFormat::Jsonl);
+    const auto firstLine = json.substr(0, json.find('\n'));
+    EXPECT_EQ(firstLine, "{\"file\":\"main.mpf\",\"line\":4,\"kind\":\"rapid\",\"to\":[10.0000,0.0000,5.0000],"
+                         "\"spindle\":1200.0000,\"spindleCw\":false,\"tool\":3}");
+    EXPECT_NE(json.find("{\"file\":\"SUB.SPF\",\"line\":7,\"kind\":\"helix\""), std::string::npos);
+    EXPECT_NE(json.find("\"feed\":0.1000,\"feedMode\":\"perRevolution\""), std::string::npos);
+    EXPECT_EQ(std::count(json.begin(), json.end(), '\n'), 7);
+}
+
+TEST(MotionTrace, EmptyProgramTracesNothing) { EXPECT_EQ(motionTrace(Toolpath{}, {"a.nc"}, TraceFormat::Text), ""); }
+
+}  // namespace
+}  // namespace camwb::nc

@@ -35,7 +35,13 @@ ToolpathPolylines::ToolpathPolylines(double chordToleranceMm) :
 ToolpathPolylines ToolpathPolylines::fromToolpath(const toolpath::Toolpath& toolpath, double chordToleranceMm)
 {
     ToolpathPolylines polylines(chordToleranceMm);
-    toolpath::play(toolpath, polylines);
+    polylines.begin();
+    for (std::size_t i = 0; i < toolpath.size(); ++i) {
+        polylines.setCurrentRecord(static_cast<std::uint32_t>(i));
+        polylines.setSource(toolpath.source(i));
+        toolpath::dispatch(toolpath.record(i), polylines);
+    }
+    polylines.end();
     return polylines;
 }
 
@@ -45,10 +51,21 @@ std::size_t ToolpathPolylines::segmentCount(PathSegmentKind kind) const
         std::count_if(m_segments.begin(), m_segments.end(), [kind](const PathSegment& s) { return s.kind == kind; }));
 }
 
+std::pair<std::size_t, std::size_t> ToolpathPolylines::segmentsOfRecords(std::uint32_t first, std::uint32_t last) const
+{
+    auto begin = std::lower_bound(m_segments.begin(), m_segments.end(), first,
+                                  [](const PathSegment& s, std::uint32_t r) { return s.record < r; });
+    auto end = std::upper_bound(begin, m_segments.end(), last,
+                                [](std::uint32_t r, const PathSegment& s) { return r < s.record; });
+    return {static_cast<std::size_t>(begin - m_segments.begin()), static_cast<std::size_t>(end - m_segments.begin())};
+}
+
 void ToolpathPolylines::clear()
 {
     m_points.clear();
     m_segments.clear();
+    m_record = 0;
+    m_tool = 0;
     m_hasPosition = false;
     m_positionStored = false;
 }
@@ -79,7 +96,7 @@ void ToolpathPolylines::lineTo(const Vec3& to, PathSegmentKind kind)
         return;
     const std::uint32_t from = currentIndex();
     m_points.push_back(to);
-    m_segments.push_back({from, static_cast<std::uint32_t>(m_points.size() - 1), kind});
+    m_segments.push_back({from, static_cast<std::uint32_t>(m_points.size() - 1), m_record, m_tool, kind});
     m_position = to;
     m_positionStored = true;
 }

@@ -8,6 +8,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <utility>
 #include <vector>
 
 namespace camwb::toolpath {
@@ -18,10 +19,14 @@ namespace camwb::gui {
 
 enum class PathSegmentKind : std::uint8_t { Rapid, Feed, Arc };
 
-// One straight display segment between two entries of ToolpathPolylines::points().
+// One straight display segment between two entries of ToolpathPolylines::points(). `record` is
+// the index of the toolpath record that made it (the NC inspector links segments to lines with
+// it) and `tool` the tool number of the last tool change before it (0 = none yet).
 struct PathSegment {
     std::uint32_t from = 0;
     std::uint32_t to = 0;
+    std::uint32_t record = 0;
+    std::int32_t tool = 0;
     PathSegmentKind kind = PathSegmentKind::Feed;
 };
 
@@ -44,13 +49,18 @@ public:
     bool hasPosition() const { return m_hasPosition; }
     base::Vec3 position() const { return m_position; }
 
+    // The record index stamped on the segments made from now on (fromToolpath sets it per record).
+    void setCurrentRecord(std::uint32_t record) { m_record = record; }
+    // Segments of records [first, last] (segments are in record order): [begin, end) indices.
+    std::pair<std::size_t, std::size_t> segmentsOfRecords(std::uint32_t first, std::uint32_t last) const;
+
     // Hard cap on the segments of one arc (huge helices with many turns).
     static constexpr int kMaxSegmentsPerArc = 200000;
 
     void rapid(const toolpath::Rapid&) override;
     void linear(const toolpath::Linear&) override;
     void arc(const toolpath::Arc&) override;
-    void toolChange(const toolpath::ToolChange&) override {}
+    void toolChange(const toolpath::ToolChange& change) override { m_tool = change.tool.number; }
     void spindle(const toolpath::Spindle&) override {}
     void coolant(const toolpath::Coolant&) override {}
     void feedMode(const toolpath::FeedModeChange&) override {}
@@ -75,6 +85,8 @@ private:
     base::Vec3 m_position;
     bool m_hasPosition = false;
     bool m_positionStored = false;  // m_points.back() == m_position
+    std::uint32_t m_record = 0;
+    std::int32_t m_tool = 0;
 };
 
 }  // namespace camwb::gui

@@ -2,11 +2,13 @@
 
 #include "gui/view3d/ToolpathPolylines.h"
 #include "gui/view3d/VtkOpenGLWidget.h"
+#include "gui/view3d/detail/ToolpathScene.h"
 #include "occ/DisplayMesh.h"
 #include "toolpath/Toolpath.h"
 
 #include <QGuiApplication>
 #include <QLabel>
+#include <QMouseEvent>
 #include <QOffscreenSurface>
 #include <QOpenGLContext>
 #include <QVBoxLayout>
@@ -20,6 +22,7 @@
 #include <vtkFloatArray.h>
 #include <vtkGenericOpenGLRenderWindow.h>
 #include <vtkLightKit.h>
+#include <vtkMatrix4x4.h>
 #include <vtkNew.h>
 #include <vtkPointData.h>
 #include <vtkPoints.h>
@@ -33,7 +36,11 @@
 #include <vtkTextProperty.h>
 #include <vtkUnsignedCharArray.h>
 
+#include <algorithm>
 #include <array>
+#include <cmath>
+#include <limits>
+#include <set>
 
 namespace camwb::gui {
 
@@ -41,9 +48,8 @@ namespace {
 
 constexpr double kChordToleranceMm = 0.01;
 
-constexpr std::array<unsigned char, 3> kFeedColor{30, 90, 230};
-constexpr std::array<unsigned char, 3> kArcColor{20, 165, 60};
-constexpr double kRapidColor[3]{0.95, 0.42, 0.10};
+// A click that moves the mouse less than this (logical pixels) picks instead of rotating.
+constexpr double kClickSlopPx = 4.0;
 constexpr double kModelColor[3]{0.80, 0.81, 0.83};
 constexpr double kEdgeColor[3]{0.10, 0.10, 0.12};
 
@@ -144,9 +150,18 @@ struct View3D::Private {
     vtkNew<vtkAxesActor> axes;
     vtkSmartPointer<vtkActor> modelActor;
     vtkSmartPointer<vtkActor> edgeActor;
-    vtkSmartPointer<vtkActor> cutActor;
-    vtkSmartPointer<vtkActor> rapidActor;
-    int segmentCount = 0;
+    struct ToolActors {
+        int tool = 0;
+        vtkSmartPointer<vtkActor> cut;
+        vtkSmartPointer<vtkActor> rapid;
+    };
+    std::shared_ptr<const ToolpathScene> scene;
+    std::vector<ToolActors> toolActors;
+    std::set<int> hiddenTools;  // kept across new toolpaths of the same program
+    vtkSmartPointer<vtkActor> highlightActor;
+    std::vector<std::uint32_t> highlighted;
+    QPointF pressPosition;
+    bool pressed = false;
     Preset preset = Preset::Isometric;
 
     void render()
@@ -217,6 +232,7 @@ View3D::View3D(QWidget* parent) : QWidget(parent), d(std::make_unique<Private>()
         window->AddRenderer(d->renderer);
         window->AddRenderer(d->markerRenderer);
         connect(d->gl, &VtkOpenGLWidget::aboutToRender, this, [this] { d->syncMarker(); });
+        d->gl->installEventFilter(this);
         layout->addWidget(d->gl);
     } else {
         d->message = new QLabel(tr("3D view unavailable: %1").arg(reason), this);
@@ -313,59 +329,21 @@ void View3D::clearModel()
     d->render();
 }
 
-void View3D::setToolpath(const toolpath::Toolpath& toolpath)
+void View3D::setToolpath(const toolpath::Toolpath& toolpath) { setPreparedToolpath(prepareToolpath(toolpath)); }
+
+std::shared_ptr<const ToolpathScene> View3D::prepareToolpath(const toolpath::Toolpath& toolpath)
+{
+    return ToolpathScene::build(toolpath, kChordToleranceMm);
+}
+
+void View3D::setPreparedToolpath(std::shared_ptr<const ToolpathScene> scene)
 {
     const bool fitAfter = !d->modelActor && !hasToolpathActor();
     clearToolpath();
-    const ToolpathPolylines polylines = ToolpathPolylines::fromToolpath(toolpath, kChordToleranceMm);
-    if (polylines.empty())
+    if (!scene || scene->polylines().empty())
         return;
-
-    vtkNew<vtkPoints> points;
-    points->SetNumberOfPoints(static_cast<vtkIdType>(polylines.points().size()));
-    for (std::size_t i = 0; i < polylines.points().size(); ++i) {
-        const base::Vec3& p = polylines.points()[i];
-        points->SetPoint(static_cast<vtkIdType>(i), p.x, p.y, p.z);
-    }
-    vtkNew<vtkCellArray> cutLines;
-    vtkNew<vtkCellArray> rapidLines;
-    vtkNew<vtkUnsignedCharArray> cutColors;
-    cutColors->SetNumberOfComponents(3);
-    cutColors->SetName("kind");
-    for (const PathSegment& segment : polylines.segments()) {
-        const vtkIdType ids[2]{segment.from, segment.to};
-        if (segment.kind == PathSegmentKind::Rapid) {
-            rapidLines->InsertNextCell(2, ids);
-        } else {
-            cutLines->InsertNextCell(2, ids);
-            const auto& c = segment.kind == PathSegmentKind::Arc ? kArcColor : kFeedColor;
-            cutColors->InsertNextTypedTuple(c.data());
-        }
-    }
-    if (cutLines->GetNumberOfCells() > 0) {
-        vtkNew<vtkPolyData> data;
-        data->SetPoints(points);
-        data->SetLines(cutLines);
-        data->GetCellData()->SetScalars(cutColors);
-        d->cutActor = makeActor(data);
-        d->cutActor->GetMapper()->SetScalarModeToUseCellData();
-        d->cutActor->GetMapper()->SetColorModeToDirectScalars();
-        d->cutActor->GetProperty()->SetLineWidth(2.0f);
-        d->cutActor->GetProperty()->LightingOff();
-        d->renderer->AddActor(d->cutActor);
-    }
-    if (rapidLines->GetNumberOfCells() > 0) {
-        vtkNew<vtkPolyData> data;
-        data->SetPoints(points);
-        data->SetLines(rapidLines);
-        d->rapidActor = makeActor(data);
-        d->rapidActor->GetMapper()->ScalarVisibilityOff();
-        d->rapidActor->GetProperty()->SetColor(kRapidColor[0], kRapidColor[1], kRapidColor[2]);
-        d->rapidActor->GetProperty()->SetLineWidth(1.0f);
-        d->rapidActor->GetProperty()->LightingOff();
-        d->renderer->AddActor(d->rapidActor);
-    }
-    d->segmentCount = static_cast<int>(polylines.segments().size());
+    d->scene = std::move(scene);
+    showScene();
     if (fitAfter)
         fitAll();
     else
@@ -373,23 +351,234 @@ void View3D::setToolpath(const toolpath::Toolpath& toolpath)
     d->render();
 }
 
+void View3D::showScene()
+{
+    for (const ToolpathScene::Part& part : d->scene->parts()) {
+        Private::ToolActors actors{part.tool, nullptr, nullptr};
+        const bool visible = d->hiddenTools.count(part.tool) == 0;
+        if (part.cut) {
+            actors.cut = makeActor(part.cut);
+            actors.cut->GetMapper()->SetScalarModeToUseCellData();
+            actors.cut->GetMapper()->SetColorModeToDirectScalars();
+            actors.cut->GetProperty()->SetLineWidth(2.0f);
+            actors.cut->GetProperty()->LightingOff();
+            actors.cut->SetVisibility(visible);
+            d->renderer->AddActor(actors.cut);
+        }
+        if (part.rapid) {
+            actors.rapid = makeActor(part.rapid);
+            actors.rapid->GetMapper()->ScalarVisibilityOff();
+            actors.rapid->GetProperty()->SetColor(kRapidColor[0], kRapidColor[1], kRapidColor[2]);
+            actors.rapid->GetProperty()->SetLineWidth(1.0f);
+            actors.rapid->GetProperty()->LightingOff();
+            actors.rapid->SetVisibility(visible);
+            d->renderer->AddActor(actors.rapid);
+        }
+        d->toolActors.push_back(actors);
+    }
+}
+
 void View3D::clearToolpath()
 {
-    if (d->cutActor)
-        d->renderer->RemoveActor(d->cutActor);
-    if (d->rapidActor)
-        d->renderer->RemoveActor(d->rapidActor);
-    d->cutActor = nullptr;
-    d->rapidActor = nullptr;
-    d->segmentCount = 0;
+    for (const Private::ToolActors& actors : d->toolActors) {
+        if (actors.cut)
+            d->renderer->RemoveActor(actors.cut);
+        if (actors.rapid)
+            d->renderer->RemoveActor(actors.rapid);
+    }
+    d->toolActors.clear();
+    if (d->highlightActor)
+        d->renderer->RemoveActor(d->highlightActor);
+    d->highlightActor = nullptr;
+    d->highlighted.clear();
+    d->scene = nullptr;
     d->render();
 }
 
 bool View3D::hasModelActor() const { return d->modelActor != nullptr || d->edgeActor != nullptr; }
 
-bool View3D::hasToolpathActor() const { return d->cutActor != nullptr || d->rapidActor != nullptr; }
+bool View3D::hasToolpathActor() const { return !d->toolActors.empty(); }
 
-int View3D::toolpathSegmentCount() const { return d->segmentCount; }
+int View3D::toolpathSegmentCount() const
+{
+    return d->scene ? static_cast<int>(d->scene->polylines().segments().size()) : 0;
+}
+
+const ToolpathPolylines* View3D::toolpathPolylines() const { return d->scene ? &d->scene->polylines() : nullptr; }
+
+std::vector<int> View3D::toolpathTools() const { return d->scene ? d->scene->tools() : std::vector<int>{}; }
+
+void View3D::setToolVisible(int tool, bool visible)
+{
+    if (visible)
+        d->hiddenTools.erase(tool);
+    else
+        d->hiddenTools.insert(tool);
+    for (const Private::ToolActors& actors : d->toolActors) {
+        if (actors.tool != tool)
+            continue;
+        if (actors.cut)
+            actors.cut->SetVisibility(visible);
+        if (actors.rapid)
+            actors.rapid->SetVisibility(visible);
+    }
+    d->render();
+}
+
+bool View3D::isToolVisible(int tool) const { return d->hiddenTools.count(tool) == 0; }
+
+int View3D::visibleSegmentCount() const
+{
+    if (!d->scene)
+        return 0;
+    std::size_t count = 0;
+    for (const ToolpathScene::Part& part : d->scene->parts())
+        if (isToolVisible(part.tool))
+            count += part.cutSegments.size() + part.rapidSegments.size();
+    return static_cast<int>(count);
+}
+
+void View3D::setHighlightedRecords(const std::vector<std::size_t>& records)
+{
+    if (d->highlightActor)
+        d->renderer->RemoveActor(d->highlightActor);
+    d->highlightActor = nullptr;
+    d->highlighted.clear();
+    if (d->scene) {
+        const ToolpathPolylines& polylines = d->scene->polylines();
+        for (std::size_t record : records) {
+            const auto [begin, end] =
+                polylines.segmentsOfRecords(static_cast<std::uint32_t>(record), static_cast<std::uint32_t>(record));
+            for (std::size_t s = begin; s < end; ++s)
+                d->highlighted.push_back(static_cast<std::uint32_t>(s));
+        }
+    }
+    if (!d->highlighted.empty()) {
+        d->highlightActor = makeActor(d->scene->subset(d->highlighted));
+        d->highlightActor->GetMapper()->ScalarVisibilityOff();
+        // Drawn over the backplot's own lines at the same place.
+        d->highlightActor->GetMapper()->SetRelativeCoincidentTopologyLineOffsetParameters(-4.0, -8.0);
+        d->highlightActor->GetProperty()->SetColor(kHighlightColor[0], kHighlightColor[1], kHighlightColor[2]);
+        d->highlightActor->GetProperty()->SetLineWidth(5.0f);
+        d->highlightActor->GetProperty()->LightingOff();
+        d->highlightActor->PickableOff();
+        d->renderer->AddActor(d->highlightActor);
+    }
+    d->render();
+}
+
+const std::vector<std::uint32_t>& View3D::highlightedSegments() const { return d->highlighted; }
+
+namespace {
+
+// World -> widget (logical pixels, y down) with the renderer's current camera.
+struct Projector {
+    double m[16];
+    double width = 0;
+    double height = 0;
+
+    bool project(const base::Vec3& p, double& x, double& y) const
+    {
+        const double w = m[12] * p.x + m[13] * p.y + m[14] * p.z + m[15];
+        if (w <= 1e-12)
+            return false;
+        const double nx = (m[0] * p.x + m[1] * p.y + m[2] * p.z + m[3]) / w;
+        const double ny = (m[4] * p.x + m[5] * p.y + m[6] * p.z + m[7]) / w;
+        x = (nx + 1.0) * 0.5 * width;
+        y = (1.0 - ny) * 0.5 * height;
+        return true;
+    }
+};
+
+Projector projectorOf(vtkRenderer* renderer, double width, double height)
+{
+    Projector projector;
+    projector.width = width;
+    projector.height = height;
+    const double aspect = height > 0 ? width / height : 1.0;
+    vtkMatrix4x4* matrix = renderer->GetActiveCamera()->GetCompositeProjectionTransformMatrix(aspect, -1, 1);
+    for (int r = 0; r < 4; ++r)
+        for (int c = 0; c < 4; ++c)
+            projector.m[4 * r + c] = matrix->GetElement(r, c);
+    return projector;
+}
+
+double distanceToSegment(double px, double py, double ax, double ay, double bx, double by)
+{
+    const double dx = bx - ax, dy = by - ay;
+    const double lengthSquared = dx * dx + dy * dy;
+    double t = lengthSquared > 0 ? ((px - ax) * dx + (py - ay) * dy) / lengthSquared : 0.0;
+    t = std::clamp(t, 0.0, 1.0);
+    return std::hypot(px - (ax + t * dx), py - (ay + t * dy));
+}
+
+}  // namespace
+
+std::optional<QPointF> View3D::projectToWidget(const base::Vec3& point) const
+{
+    if (d->gl == nullptr)
+        return std::nullopt;
+    const Projector projector = projectorOf(d->renderer, d->gl->width(), d->gl->height());
+    double x = 0, y = 0;
+    if (!projector.project(point, x, y))
+        return std::nullopt;
+    return QPointF(x, y) + QPointF(d->gl->mapTo(this, QPoint(0, 0)));
+}
+
+// A plain search in screen space: every visible segment projected with the camera, the nearest
+// within the tolerance wins. Linear in the segments (a million take a few tens of ms), exact for
+// thin lines where a ray picker needs a world tolerance, and the same with or without GL picking.
+int View3D::pickSegment(const QPointF& widgetPosition, double tolerancePx) const
+{
+    if (d->gl == nullptr || !d->scene)
+        return -1;
+    const QPointF local = widgetPosition - QPointF(d->gl->mapTo(this, QPoint(0, 0)));
+    const Projector projector = projectorOf(d->renderer, d->gl->width(), d->gl->height());
+    const auto& points = d->scene->polylines().points();
+    const auto& segments = d->scene->polylines().segments();
+    int best = -1;
+    double bestDistance = tolerancePx;
+    for (const ToolpathScene::Part& part : d->scene->parts()) {
+        if (!isToolVisible(part.tool))
+            continue;
+        for (const auto* list : {&part.cutSegments, &part.rapidSegments}) {
+            for (std::uint32_t s : *list) {
+                double ax = 0, ay = 0, bx = 0, by = 0;
+                if (!projector.project(points[segments[s].from], ax, ay) ||
+                    !projector.project(points[segments[s].to], bx, by))
+                    continue;
+                const double distance = distanceToSegment(local.x(), local.y(), ax, ay, bx, by);
+                // Ties (shared end points) go to the later segment, the one drawn on top.
+                if (distance < bestDistance || (distance == bestDistance && best >= 0 && int(s) > best)) {
+                    bestDistance = distance;
+                    best = static_cast<int>(s);
+                }
+            }
+        }
+    }
+    return best;
+}
+
+bool View3D::eventFilter(QObject* watched, QEvent* event)
+{
+    if (d->gl == nullptr || watched != d->gl)
+        return QWidget::eventFilter(watched, event);
+    if (event->type() == QEvent::MouseButtonPress) {
+        auto* mouse = static_cast<QMouseEvent*>(event);
+        d->pressed = mouse->button() == Qt::LeftButton;
+        d->pressPosition = mouse->position();
+    } else if (event->type() == QEvent::MouseButtonRelease && d->pressed) {
+        auto* mouse = static_cast<QMouseEvent*>(event);
+        d->pressed = false;
+        const QPointF moved = mouse->position() - d->pressPosition;
+        if (mouse->button() == Qt::LeftButton && std::abs(moved.x()) + std::abs(moved.y()) <= kClickSlopPx) {
+            const int segment = pickSegment(mouse->position() + QPointF(d->gl->mapTo(this, QPoint(0, 0))));
+            if (segment >= 0)
+                emit segmentPicked(segment, static_cast<int>(d->scene->polylines().segments()[segment].record));
+        }
+    }
+    return QWidget::eventFilter(watched, event);
+}
 
 void View3D::setViewPreset(Preset preset)
 {

@@ -1,13 +1,23 @@
 // The 3D view: the model (shaded, with feature edges) and the toolpath backplot, drawn by VTK in
 // a Qt6 QOpenGLWidget. Without OpenGL (offscreen platform, CAMWB_NO_OPENGL=1) it shows a message
 // instead and keeps working as a data holder, so headless tests and remote sessions never crash.
+// The backplot links back to its records: every segment knows the record that made it, a click
+// picks the nearest segment (signal with the record index), records can be highlighted and tools
+// hidden — what the NC inspector needs to link the editor and the 3D view both ways.
 #pragma once
 
+#include "base/Vec.h"
+
 #include <QImage>
+#include <QPointF>
 #include <QString>
 #include <QWidget>
 
+#include <cstddef>
+#include <cstdint>
 #include <memory>
+#include <optional>
+#include <vector>
 
 namespace camwb::occ {
 struct DisplayMesh;
@@ -17,6 +27,9 @@ class Toolpath;
 }
 
 namespace camwb::gui {
+
+class ToolpathPolylines;
+class ToolpathScene;
 
 class View3D : public QWidget {
     Q_OBJECT
@@ -40,12 +53,33 @@ public:
     bool hasOpenGl() const;
 
     void setModel(const occ::DisplayMesh& mesh);           // shaded (light grey) + feature edges
-    void setToolpath(const toolpath::Toolpath& toolpath);  // rapid orange, feed blue, arc/helix green
+    void setToolpath(const toolpath::Toolpath& toolpath);  // rapid red, feed green, arc/helix blue
+    // Builds the backplot data of `toolpath` without touching the view: safe on a worker thread,
+    // so a huge program never blocks the GUI. Show it with setPreparedToolpath().
+    static std::shared_ptr<const ToolpathScene> prepareToolpath(const toolpath::Toolpath& toolpath);
+    void setPreparedToolpath(std::shared_ptr<const ToolpathScene> scene);
     void clearModel();
     void clearToolpath();
     bool hasModelActor() const;
     bool hasToolpathActor() const;
     int toolpathSegmentCount() const;  // line segments in the toolpath polydata (rapid + cutting)
+    // The segments shown (record index and tool of each), or nullptr without a toolpath.
+    const ToolpathPolylines* toolpathPolylines() const;
+
+    // Tools of the backplot in order of first use (0 = moves before any tool change).
+    std::vector<int> toolpathTools() const;
+    void setToolVisible(int tool, bool visible);
+    bool isToolVisible(int tool) const;
+    int visibleSegmentCount() const;
+
+    // Draws the segments of these records on top, thick and yellow; empty clears.
+    void setHighlightedRecords(const std::vector<std::size_t>& records);
+    const std::vector<std::uint32_t>& highlightedSegments() const;
+
+    // Nearest visible segment within `tolerancePx` of a widget position, or -1. Needs OpenGL.
+    int pickSegment(const QPointF& widgetPosition, double tolerancePx = 6.0) const;
+    // Where a world point appears in the widget (logical pixels), nullopt behind the camera.
+    std::optional<QPointF> projectToWidget(const base::Vec3& point) const;
 
     void setViewPreset(Preset preset);  // also fits everything into the view
     void fitAll();
@@ -53,8 +87,16 @@ public:
     // What the view shows (rendered now), or a null image without OpenGL.
     QImage grabImage();
 
+signals:
+    // A left click (without dragging) near a segment: the segment and the record that made it.
+    void segmentPicked(int segment, int record);
+
+protected:
+    bool eventFilter(QObject* watched, QEvent* event) override;
+
 private:
     struct Private;
+    void showScene();
     std::unique_ptr<Private> d;
 };
 

@@ -1,13 +1,118 @@
-// Placeholder until the iso interpreter lands: says so instead of tracing nothing.
+// Entry of the plain ISO (LinuxCNC / Fanuc style RS274NGC) interpreter and its line loop.
+// Block delete ('/') is read as with the switch off: the block runs, as rs274 does by default.
 #include "nc/detail/Dialects.h"
+#include "nc/iso/IsoProgram.h"
+
+#include <cstring>
+
+namespace camwb::nc::iso {
+
+Program::Program(std::string_view text, const InterpretOptions& options, toolpath::MachineSink& sink,
+                 InterpretResult& result) :
+    m_text(text),
+    m_options(options),
+    m_sink(sink),
+    m_result(result),
+    m_reporter(result.diagnostics, result.diagnosticsDropped,
+               options.fileName.empty() ? std::string("<input>") : options.fileName, options.maxDiagnostics),
+    m_scanner(m_parameters, m_reporter),
+    m_machine(sink, m_reporter, m_parameters, options.arcRadiusToleranceMm)
+{
+}
+
+bool Program::readLine(std::string_view& line)
+{
+    if (m_next.offset >= m_text.size())
+        return false;
+    const char* start = m_text.data() + m_next.offset;
+    const std::size_t left = m_text.size() - m_next.offset;
+    const void* newline = std::memchr(start, '\n', left);
+    const std::size_t length = newline ? static_cast<std::size_t>(static_cast<const char*>(newline) - start) : left;
+    line = std::string_view(start, length);
+    m_current = m_next;
+    m_lineNumber = m_next.line;
+    m_next.offset += length + (newline ? 1 : 0);
+    ++m_next.line;
+    return true;
+}
+
+bool Program::countBlock()
+{
+    if (++m_result.blocksExecuted <= m_options.maxBlocks)
+        return true;
+    m_reporter.error(m_lineNumber, 0,
+                     "runaway program: more than " + std::to_string(m_options.maxBlocks) +
+                         " blocks executed (an endless loop or recursion?)");
+    m_fatal = true;
+    return false;
+}
+
+void Program::applyAssignments()
+{
+    for (int i = 0; i < m_block.assignmentCount; ++i) {
+        const Assignment& a = m_block.assignments[static_cast<std::size_t>(i)];
+        if (a.index >= 0)
+            m_parameters.setNumbered(a.index, a.value);
+        else
+            m_parameters.setNamed(a.name, a.value);
+    }
+}
+
+void Program::run()
+{
+    m_sink.begin();
+    std::string_view line;
+    bool first = true;
+    bool percentOpened = false;
+    while (!m_fatal && !m_programEnd && readLine(line)) {
+        // '%' lines delimit the program: the first opens it, the next one ends it.
+        std::size_t i = 0;
+        while (i < line.size() && (line[i] == ' ' || line[i] == '\t' || line[i] == '\r'))
+            ++i;
+        if (i == line.size())
+            continue;
+        if (line[i] == '%') {
+            if (!first || percentOpened) {
+                m_programEnd = true;
+                break;
+            }
+            percentOpened = true;
+            first = false;
+            continue;
+        }
+        first = false;
+        if (!countBlock())
+            break;
+        m_scanner.scan(line, m_lineNumber, m_block);
+        if (m_block.error)
+            continue;
+        if (m_block.oKeyword != OKeyword::None) {
+            if (oWord() == Flow::Stop)
+                break;
+            continue;
+        }
+        applyAssignments();
+        if (m_machine.execute(m_block, m_lineNumber, 0) == BlockOutcome::ProgramEnd)
+            m_programEnd = true;
+    }
+    if (!m_fatal && !m_programEnd)
+        m_reporter.warning(m_lineNumber, 0, "the program ends without M2, M30 or a closing '%'");
+    if (!m_fatal && !m_calls.empty() && !m_programEnd)
+        m_reporter.error(m_lineNumber, 0, "the program ends inside a subroutine call");
+    m_result.completed = !m_fatal;
+    m_sink.end();
+}
+
+}  // namespace camwb::nc::iso
 
 namespace camwb::nc::detail {
 
-InterpretResult interpretIso(std::string_view, const InterpretOptions& options, toolpath::MachineSink&)
+InterpretResult interpretIso(std::string_view text, const InterpretOptions& options, toolpath::MachineSink& sink)
 {
     InterpretResult result;
-    result.files.push_back(options.fileName);
-    result.diagnostics.push_back({Severity::Error, options.fileName, 0, 0, "the iso interpreter is not built yet"});
+    result.files.push_back(options.fileName.empty() ? std::string("<input>") : options.fileName);
+    iso::Program program(text, options, sink, result);
+    program.run();
     return result;
 }
 

@@ -1,0 +1,285 @@
+// O-word control flow (LinuxCNC "O Codes"): sub/endsub/call/return, while/endwhile, do/while,
+// if/elseif/else/endif, repeat/endrepeat, break/continue. Blocks match by label, as LinuxCNC
+// requires (a loop and its end share the O number), so skipping forward only looks for the
+// label and keyword of each line, without reading the rest.
+#include "nc/iso/IsoProgram.h"
+
+namespace camwb::nc::iso {
+
+namespace {
+
+constexpr std::size_t kMaxCallDepth = 100;
+constexpr std::size_t kMaxControlDepth = 1000;
+constexpr double kArgumentLimit = 1e9;  // repeat counts
+
+}  // namespace
+
+void Program::oError(std::string message) { m_reporter.error(m_lineNumber, m_block.oColumn, std::move(message)); }
+
+Program::ControlFrame* Program::innermost(const std::string& label, std::initializer_list<OKeyword> kinds)
+{
+    const std::size_t floor = m_calls.empty() ? 0 : static_cast<std::size_t>(m_calls.back().controlDepth);
+    for (std::size_t i = m_control.size(); i > floor; --i) {
+        ControlFrame& f = m_control[i - 1];
+        if (f.label != label)
+            continue;
+        for (OKeyword k : kinds) {
+            if (f.kind == k) {
+                m_control.resize(i);  // frames opened inside it are left with it
+                return &m_control.back();
+            }
+        }
+    }
+    return nullptr;
+}
+
+bool Program::skipTo(const std::string& label, std::initializer_list<OKeyword> keywords, bool pastIt, OKeyword* found)
+{
+    const int from = m_lineNumber;
+    std::string_view line;
+    for (;;) {
+        const Position before = m_next;
+        if (!readLine(line))
+            break;
+        if (!countBlock())
+            return false;
+        OKeyword keyword = OKeyword::None;
+        if (!LineScanner::peekOWord(line, m_labelScratch, keyword) || m_labelScratch != label)
+            continue;
+        for (OKeyword k : keywords) {
+            if (keyword == k) {
+                if (found)
+                    *found = keyword;
+                if (!pastIt)
+                    m_next = before;
+                return true;
+            }
+        }
+    }
+    m_lineNumber = from;
+    oError("no matching end for o" + label + " before the end of the program");
+    m_fatal = true;
+    return false;
+}
+
+bool Program::findSubroutine(const std::string& label, Position& body)
+{
+    auto it = m_subroutines.find(label);
+    if (it == m_subroutines.end() && !m_scannedSubroutines) {
+        // Called before its definition was read: look through the whole text once.
+        m_scannedSubroutines = true;
+        Position p;
+        std::string found;
+        while (p.offset < m_text.size()) {
+            const std::size_t end = m_text.find('\n', p.offset);
+            const std::size_t stop = end == std::string_view::npos ? m_text.size() : end;
+            OKeyword keyword = OKeyword::None;
+            if (LineScanner::peekOWord(m_text.substr(p.offset, stop - p.offset), found, keyword) &&
+                keyword == OKeyword::Sub)
+                m_subroutines.emplace(found, Position{stop + 1, p.line + 1});
+            p = Position{stop + 1, p.line + 1};
+        }
+        it = m_subroutines.find(label);
+    }
+    if (it == m_subroutines.end())
+        return false;
+    body = it->second;
+    return true;
+}
+
+void Program::returnFromCall()
+{
+    const CallFrame frame = m_calls.back();
+    m_calls.pop_back();
+    m_control.resize(static_cast<std::size_t>(frame.controlDepth));
+    m_parameters.popFrame();
+    m_next = frame.returnTo;
+}
+
+Program::Flow Program::oWord()
+{
+    const std::string& label = m_block.oLabel;
+    const auto& args = m_block.oArguments;
+    const auto condition = [&](const char* what) -> int {
+        if (args.size() != 1) {
+            oError(std::string("o") + label + " " + what + " needs one [condition]");
+            return -1;
+        }
+        return args[0] != 0 ? 1 : 0;
+    };
+    const Position here{m_next.offset, m_next.line};  // the line after this one
+    if (m_control.size() >= kMaxControlDepth) {
+        oError("control blocks nested too deeply");
+        m_fatal = true;
+        return Flow::Stop;
+    }
+    switch (m_block.oKeyword) {
+    case OKeyword::Sub: {
+        m_subroutines.insert_or_assign(label, here);
+        if (!skipTo(label, {OKeyword::EndSub}, true))
+            return Flow::Stop;
+        return Flow::Next;
+    }
+    case OKeyword::EndSub:
+    case OKeyword::Return:
+        if (m_calls.empty()) {
+            oError("o" + label + (m_block.oKeyword == OKeyword::Return ? " return" : " endsub") +
+                   " outside a subroutine call");
+            return Flow::Next;
+        }
+        if (!args.empty())
+            m_parameters.setNamed("_value", args[0]);
+        returnFromCall();
+        return Flow::Next;
+    case OKeyword::Call: {
+        Position body;
+        if (!findSubroutine(label, body)) {
+            oError("subroutine o" + label + " is not defined");
+            return Flow::Next;
+        }
+        if (m_calls.size() >= kMaxCallDepth) {
+            oError("subroutine calls nested more than 100 deep (endless recursion?)");
+            m_fatal = true;
+            return Flow::Stop;
+        }
+        m_calls.push_back(CallFrame{here, static_cast<int>(m_control.size())});
+        m_parameters.pushFrame(args.data(), static_cast<int>(std::min<std::size_t>(args.size(), kCallArguments)));
+        m_next = body;
+        return Flow::Next;
+    }
+    case OKeyword::Do:
+        m_control.push_back(ControlFrame{OKeyword::Do, label, here, 0, false});
+        return Flow::Next;
+    case OKeyword::While: {
+        const int c = condition("while");
+        if (c < 0)
+            return Flow::Next;
+        if (!m_control.empty() && m_control.back().kind == OKeyword::Do && m_control.back().label == label) {
+            if (c)
+                m_next = m_control.back().start;  // do ... while: back to the body
+            else
+                m_control.pop_back();
+            return Flow::Next;
+        }
+        // Coming back from endwhile, this line is the innermost loop's own start.
+        const bool again = !m_control.empty() && m_control.back().kind == OKeyword::While &&
+                           m_control.back().label == label && m_control.back().start.line == m_current.line;
+        if (c) {
+            if (!again)
+                m_control.push_back(ControlFrame{OKeyword::While, label, m_current, 0, false});
+            return Flow::Next;
+        }
+        if (again)
+            m_control.pop_back();
+        return skipTo(label, {OKeyword::EndWhile}, true) ? Flow::Next : Flow::Stop;
+    }
+    case OKeyword::EndWhile: {
+        ControlFrame* f = innermost(label, {OKeyword::While});
+        if (!f) {
+            oError("o" + label + " endwhile without while");
+            return Flow::Next;
+        }
+        m_next = f->start;
+        return Flow::Next;
+    }
+    case OKeyword::Repeat: {
+        if (args.size() != 1 || !(args[0] < kArgumentLimit)) {
+            oError("o" + label + " repeat needs one [count]");
+            return Flow::Next;
+        }
+        const long long count = args[0] > 0 ? static_cast<long long>(args[0]) : 0;
+        if (count <= 0)
+            return skipTo(label, {OKeyword::EndRepeat}, true) ? Flow::Next : Flow::Stop;
+        m_control.push_back(ControlFrame{OKeyword::Repeat, label, here, count, false});
+        return Flow::Next;
+    }
+    case OKeyword::EndRepeat: {
+        ControlFrame* f = innermost(label, {OKeyword::Repeat});
+        if (!f) {
+            oError("o" + label + " endrepeat without repeat");
+            return Flow::Next;
+        }
+        if (--f->remaining > 0)
+            m_next = f->start;
+        else
+            m_control.pop_back();
+        return Flow::Next;
+    }
+    case OKeyword::If: {
+        const int c = condition("if");
+        if (c < 0)
+            return Flow::Next;
+        m_control.push_back(ControlFrame{OKeyword::If, label, here, 0, c == 1});
+        if (c)
+            return Flow::Next;
+        return skipTo(label, {OKeyword::ElseIf, OKeyword::Else, OKeyword::EndIf}, false) ? Flow::Next : Flow::Stop;
+    }
+    case OKeyword::ElseIf:
+    case OKeyword::Else: {
+        ControlFrame* f = innermost(label, {OKeyword::If});
+        if (!f) {
+            oError("o" + label + (m_block.oKeyword == OKeyword::Else ? " else" : " elseif") + " without if");
+            return Flow::Next;
+        }
+        if (f->taken) {
+            m_control.pop_back();
+            return skipTo(label, {OKeyword::EndIf}, true) ? Flow::Next : Flow::Stop;
+        }
+        if (m_block.oKeyword == OKeyword::Else) {
+            f->taken = true;
+            return Flow::Next;
+        }
+        const int c = condition("elseif");
+        if (c < 0)
+            return Flow::Next;
+        if (c) {
+            f->taken = true;
+            return Flow::Next;
+        }
+        return skipTo(label, {OKeyword::ElseIf, OKeyword::Else, OKeyword::EndIf}, false) ? Flow::Next : Flow::Stop;
+    }
+    case OKeyword::EndIf:
+        if (!innermost(label, {OKeyword::If}))
+            oError("o" + label + " endif without if");
+        else
+            m_control.pop_back();
+        return Flow::Next;
+    case OKeyword::Break:
+    case OKeyword::Continue: {
+        ControlFrame* f = innermost(label, {OKeyword::While, OKeyword::Do, OKeyword::Repeat});
+        if (!f) {
+            oError("o" + label + (m_block.oKeyword == OKeyword::Break ? " break" : " continue") + " outside a loop");
+            return Flow::Next;
+        }
+        const OKeyword kind = f->kind;
+        if (m_block.oKeyword == OKeyword::Continue) {
+            if (kind == OKeyword::While) {
+                m_next = f->start;
+                return Flow::Next;
+            }
+            if (kind == OKeyword::Repeat) {
+                if (--f->remaining > 0) {
+                    m_next = f->start;
+                    return Flow::Next;
+                }
+                m_control.pop_back();
+                return skipTo(label, {OKeyword::EndRepeat}, true) ? Flow::Next : Flow::Stop;
+            }
+            return skipTo(label, {OKeyword::While}, false) ? Flow::Next : Flow::Stop;  // do: test the condition
+        }
+        m_control.pop_back();
+        return skipTo(label,
+                      {kind == OKeyword::While    ? OKeyword::EndWhile
+                       : kind == OKeyword::Repeat ? OKeyword::EndRepeat
+                                                  : OKeyword::While},
+                      true)
+                   ? Flow::Next
+                   : Flow::Stop;
+    }
+    case OKeyword::None:
+        break;
+    }
+    return Flow::Next;
+}
+
+}  // namespace camwb::nc::iso

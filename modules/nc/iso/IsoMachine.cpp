@@ -1,0 +1,461 @@
+#include "nc/iso/IsoMachine.h"
+
+#include <cmath>
+#include <string>
+
+namespace camwb::nc::iso {
+
+using namespace camwb::toolpath;
+
+namespace {
+
+// Modal group of a G code (x10), as LinuxCNC 2.9 groups them; -1 = unknown, -2 = known but not traced.
+int gGroup(int code)
+{
+    switch (code) {
+    case 40:
+    case 100:
+    case 280:
+    case 281:
+    case 300:
+    case 301:
+    case 530:
+    case 920:
+    case 921:
+    case 922:
+    case 923:
+        return 0;
+    case 0:
+    case 10:
+    case 20:
+    case 30:
+    case 730:
+    case 800:
+    case 810:
+    case 820:
+    case 830:
+    case 840:
+    case 850:
+    case 860:
+    case 890:
+        return 1;
+    case 170:
+    case 180:
+    case 190:
+        return 2;
+    case 900:
+    case 910:
+        return 3;
+    case 901:
+    case 911:
+        return 4;
+    case 930:
+    case 940:
+    case 950:
+        return 5;
+    case 200:
+    case 210:
+        return 6;
+    case 400:
+    case 410:
+    case 420:
+        return 7;
+    case 430:
+    case 431:
+    case 432:
+    case 490:
+        return 8;
+    case 980:
+    case 990:
+        return 10;
+    case 540:
+    case 550:
+    case 560:
+    case 570:
+    case 580:
+    case 590:
+    case 591:
+    case 592:
+    case 593:
+        return 12;
+    case 610:
+    case 611:
+    case 640:
+        return 13;
+    case 960:
+    case 970:
+        return 14;
+    case 70:
+    case 80:
+        return 15;
+    case 50:
+    case 51:
+    case 52:
+    case 53:
+    case 330:
+    case 331:
+    case 381:
+    case 382:
+    case 383:
+    case 384:
+    case 385:
+    case 740:
+    case 760:
+    case 870:
+    case 880:
+    case 171:
+    case 181:
+    case 191:
+    case 411:
+    case 421:
+        return -2;
+    default:
+        return -1;
+    }
+}
+
+std::string gName(int code10)
+{
+    return "G" + std::to_string(code10 / 10) + (code10 % 10 ? "." + std::to_string(code10 % 10) : "");
+}
+
+}  // namespace
+
+void Machine::error(const Block& block, char letter, std::string message)
+{
+    m_reporter.error(m_line, letter && block.has(letter) ? block.col(letter) : 0, std::move(message));
+}
+
+bool Machine::classify(const Block& block, Groups& groups)
+{
+    for (int i = 0; i < 16; ++i)
+        groups.g[i] = -1;
+    for (int i = 0; i < block.gCount; ++i) {
+        const Code& c = block.g[i];
+        const int group = gGroup(c.code10);
+        if (group == -1) {
+            m_reporter.error(m_line, c.column, "unknown G code " + gName(c.code10));
+            return false;
+        }
+        if (group == -2) {
+            m_reporter.error(m_line, c.column, gName(c.code10) + " is not supported by this interpreter");
+            return false;
+        }
+        if (groups.g[group] != -1) {
+            m_reporter.error(m_line, c.column,
+                             "two G codes of the same modal group: " + gName(groups.g[group]) + " and " +
+                                 gName(c.code10));
+            return false;
+        }
+        groups.g[group] = c.code10;
+        groups.gColumn[group] = c.column;
+    }
+    for (int i = 0; i < block.mCount; ++i) {
+        const Code& c = block.m[i];
+        const int m = c.code10 / 10;
+        int* slot = nullptr;
+        switch (m) {
+        case 0:
+        case 1:
+        case 2:
+        case 30:
+        case 60:
+            slot = &groups.stop;
+            groups.stopColumn = c.column;
+            break;
+        case 6:
+        case 61:
+            slot = &groups.toolChange;
+            break;
+        case 3:
+        case 4:
+        case 5:
+            slot = &groups.spindle;
+            break;
+        case 7:
+        case 8:
+        case 9:
+            // M7 and M8 may share a block (both coolants on); M9 with either is a conflict.
+            for (int k = 0; k < groups.coolantCount; ++k) {
+                if (groups.coolant[k] == m || groups.coolant[k] == 9 || m == 9) {
+                    m_reporter.error(m_line, c.column, "two M codes of the same modal group (coolant)");
+                    return false;
+                }
+            }
+            groups.coolant[groups.coolantCount++] = m;
+            continue;
+        case 48:
+        case 49:
+        case 50:
+        case 51:
+        case 52:
+        case 53:
+        case 62:
+        case 63:
+        case 64:
+        case 65:
+        case 66:
+        case 67:
+        case 68:
+        case 70:
+        case 71:
+        case 72:
+        case 73:
+            continue;  // overrides, I/O and modal state: no motion to trace
+        default:
+            if (m >= 100 && m <= 199) {
+                m_reporter.warning(m_line, c.column, "user M code M" + std::to_string(m) + " is not traced");
+                continue;
+            }
+            m_reporter.error(m_line, c.column, "unknown M code M" + std::to_string(m));
+            return false;
+        }
+        if (*slot != -1) {
+            m_reporter.error(m_line, c.column,
+                             "two M codes of the same modal group: M" + std::to_string(*slot) + " and M" +
+                                 std::to_string(m));
+            return false;
+        }
+        *slot = m;
+    }
+    return true;
+}
+
+void Machine::setSpindle(double rpm, int direction)
+{
+    const bool running = m_state.spindle != 0;
+    if (direction == 0) {
+        m_state.spindle = 0;
+        if (running) {
+            source();
+            m_sink.spindle(Spindle{0, true, 0});
+        }
+        return;
+    }
+    if (running && direction == m_state.spindle && rpm == m_state.rpm)
+        return;
+    m_state.spindle = direction;
+    m_state.rpm = rpm;
+    source();
+    m_sink.spindle(Spindle{rpm, direction > 0, 0});
+}
+
+void Machine::setCoolant(bool mist, bool flood)
+{
+    if (mist == m_state.mist && flood == m_state.flood)
+        return;
+    source();
+    if (!mist && !flood) {
+        m_sink.coolant(Coolant{CoolantMode::Off});
+    } else {
+        if (mist && !m_state.mist)
+            m_sink.coolant(Coolant{CoolantMode::Mist});
+        if (flood && !m_state.flood)
+            m_sink.coolant(Coolant{CoolantMode::Flood});
+    }
+    m_state.mist = mist;
+    m_state.flood = flood;
+}
+
+BlockOutcome Machine::execute(const Block& block, int line, int fileIndex)
+{
+    m_line = line;
+    m_file = fileIndex;
+    for (const std::string_view text : block.comments) {
+        source();
+        m_sink.comment(Comment{std::string(text)});
+    }
+    Groups groups;
+    if (!classify(block, groups))
+        return BlockOutcome::Continue;
+    const int* g = groups.g;
+
+    // Feed mode, then units (before F: the block's F is in the block's units).
+    if (g[5] != -1) {
+        const FeedMode mode = g[5] == 930   ? FeedMode::InverseTime
+                              : g[5] == 950 ? FeedMode::PerRevolution
+                                            : FeedMode::PerMinute;
+        if (mode != m_state.feedMode) {
+            m_state.feedMode = mode;
+            source();
+            m_sink.feedMode(FeedModeChange{mode});
+        }
+        m_state.feed = 0;  // LinuxCNC wants a new F after a feed mode change
+    }
+    if (g[6] != -1)
+        m_state.unit = g[6] == 200 ? 25.4 : 1.0;
+    if (block.has('F')) {
+        const double f = block.get('F');
+        if (f < 0) {
+            error(block, 'F', "negative feed rate");
+            return BlockOutcome::Continue;
+        }
+        m_state.feed = m_state.feedMode == FeedMode::InverseTime ? f : f * m_state.unit;
+    }
+    if (block.has('S')) {
+        const double s = block.get('S');
+        if (s < 0) {
+            error(block, 'S', "negative spindle speed");
+            return BlockOutcome::Continue;
+        }
+        if (m_state.spindle != 0 && groups.spindle == -1)
+            setSpindle(s, m_state.spindle);
+        m_state.rpm = s;
+    }
+    if (block.has('T')) {
+        const double t = block.get('T');
+        if (t < 0 || t != std::floor(t) || t > 1e9) {
+            error(block, 'T', "tool number must be a whole number >= 0");
+            return BlockOutcome::Continue;
+        }
+        m_state.selectedTool = static_cast<int>(t);
+    }
+    if (groups.toolChange == 6 || groups.toolChange == 61) {
+        if (groups.toolChange == 61) {
+            if (!block.has('Q')) {
+                m_reporter.error(m_line, 0, "M61 needs Q with the tool number");
+                return BlockOutcome::Continue;
+            }
+            m_state.selectedTool = static_cast<int>(std::max(0.0, block.get('Q')));
+        } else if (m_state.spindle != 0) {
+            const double rpm = m_state.rpm;
+            setSpindle(0, 0);  // M6 stops the spindle (LinuxCNC's manual tool change)
+            m_state.rpm = rpm;
+        }
+        m_state.tool = m_state.selectedTool;
+        Tool tool;
+        tool.number = m_state.tool;
+        source();
+        m_sink.toolChange(ToolChange{tool});
+    }
+    if (groups.spindle == 3 || groups.spindle == 4)
+        setSpindle(m_state.rpm, groups.spindle == 3 ? 1 : -1);
+    else if (groups.spindle == 5)
+        setSpindle(0, 0);
+    if (groups.coolantCount > 0) {
+        bool mist = m_state.mist, flood = m_state.flood;
+        for (int k = 0; k < groups.coolantCount; ++k) {
+            if (groups.coolant[k] == 9)
+                mist = flood = false;
+            else if (groups.coolant[k] == 7)
+                mist = true;
+            else
+                flood = true;
+        }
+        setCoolant(mist, flood);
+    }
+    if (g[0] == 40) {
+        if (!block.has('P') || block.get('P') < 0) {
+            m_reporter.error(m_line, groups.gColumn[0], "G4 needs P with the dwell in seconds (P >= 0)");
+            return BlockOutcome::Continue;
+        }
+        source();
+        m_sink.dwell(Dwell{block.get('P')});
+    }
+    if (g[2] != -1)
+        m_state.plane = g[2];
+    if (g[7] != -1) {
+        const CutterCompSide side = g[7] == 410   ? CutterCompSide::Left
+                                    : g[7] == 420 ? CutterCompSide::Right
+                                                  : CutterCompSide::Off;
+        if (side != CutterCompSide::Off && m_state.comp != CutterCompSide::Off) {
+            m_reporter.error(m_line, groups.gColumn[7], "cutter compensation is already on: G40 first");
+        } else if (side != m_state.comp) {
+            m_state.comp = side;
+            source();
+            m_sink.cutterComp(CutterComp{side});
+        }
+    }
+    if (g[12] != -1) {
+        const int index = g[12] >= 591 ? 6 + (g[12] - 590) : (g[12] - 540) / 10 + 1;
+        if (m_state.comp != CutterCompSide::Off) {
+            m_reporter.error(m_line, groups.gColumn[12], "work offset change with cutter compensation on");
+        } else if (index != m_state.workOffset) {
+            m_state.workOffset = index;
+            source();
+            m_sink.workOffset(WorkOffset{index});
+        }
+    }
+    if (g[3] != -1)
+        m_state.absolute = g[3] == 900;
+    if (g[4] != -1)
+        m_state.arcAbsolute = g[4] == 901;
+    if (g[10] != -1)
+        m_state.retractToR = g[10] == 990;
+    if (g[14] == 960)
+        m_reporter.warning(m_line, groups.gColumn[14], "G96 constant surface speed is traced as a fixed speed");
+
+    // Group 0 codes that take the axis words, then motion.
+    const bool axisWords = (block.present & ((1u << ('X' - 'A')) | (1u << ('Y' - 'A')) | (1u << ('Z' - 'A')) |
+                                             (1u << ('A' - 'A')) | (1u << ('B' - 'A')) | (1u << ('C' - 'A')) |
+                                             (1u << ('U' - 'A')) | (1u << ('V' - 'A')) | (1u << ('W' - 'A')))) != 0;
+    bool axesTaken = false;
+    if (g[0] == 280 || g[0] == 300) {
+        referenceReturn(block, g[0]);
+        axesTaken = true;
+    } else if (g[0] == 100 || g[0] == 920 || g[0] == 921 || g[0] == 922 || g[0] == 923 || g[0] == 281 || g[0] == 301) {
+        m_reporter.warning(m_line, groups.gColumn[0],
+                           gName(g[0]) + " (offsets and stored positions) is not traced: coordinates stay in the "
+                                         "work offset's frame");
+        axesTaken = true;
+    }
+    if (g[1] == 800 && axisWords && !axesTaken) {
+        m_reporter.error(m_line, groups.gColumn[1], "axis words with G80 and no other motion");
+        return BlockOutcome::Continue;
+    }
+    if (g[1] != -1)
+        m_state.motion = g[1];
+    if (g[1] == 800)
+        m_state.cycleSequence = false;
+    if (axisWords && !axesTaken) {
+        if (m_state.motion == 800) {
+            m_reporter.error(m_line, 0, "axis words without a motion mode (G80 is active): add G0, G1, G2 or G3");
+            return BlockOutcome::Continue;
+        }
+        if (g[0] == 530 && !m_warnedG53) {
+            m_warnedG53 = true;
+            m_reporter.warning(m_line, groups.gColumn[0],
+                               "G53 machine coordinates are traced as work coordinates (no machine offsets known)");
+        }
+        motion(block, m_state.motion, groups);
+    } else if ((m_state.motion == 20 || m_state.motion == 30) && !axesTaken &&
+               (block.has('I') || block.has('J') || block.has('K') || block.has('R'))) {
+        motion(block, m_state.motion, groups);  // a full circle needs no axis word
+    }
+
+    if (groups.stop == 0 || groups.stop == 1 || groups.stop == 60) {
+        source();
+        m_sink.programStop(ProgramStop{groups.stop == 1});
+    } else if (groups.stop == 2 || groups.stop == 30) {
+        programEnd();
+        return BlockOutcome::ProgramEnd;
+    }
+    return BlockOutcome::Continue;
+}
+
+void Machine::programEnd()
+{
+    // LinuxCNC's M2/M30: spindle and coolant off, G54, G17, G90, G94, G40, G80, G98 ... kept.
+    setSpindle(0, 0);
+    setCoolant(false, false);
+    if (m_state.workOffset != 1) {
+        m_state.workOffset = 1;
+        source();
+        m_sink.workOffset(WorkOffset{1});
+    }
+    if (m_state.feedMode != FeedMode::PerMinute) {
+        m_state.feedMode = FeedMode::PerMinute;
+        source();
+        m_sink.feedMode(FeedModeChange{FeedMode::PerMinute});
+    }
+    if (m_state.comp != CutterCompSide::Off) {
+        m_state.comp = CutterCompSide::Off;
+        source();
+        m_sink.cutterComp(CutterComp{CutterCompSide::Off});
+    }
+    m_state.plane = 170;
+    m_state.absolute = true;
+    m_state.motion = 10;
+}
+
+}  // namespace camwb::nc::iso

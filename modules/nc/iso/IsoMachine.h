@@ -1,0 +1,93 @@
+// The modal state of an RS274NGC (LinuxCNC / Fanuc style) mill and the execution of one block
+// in LinuxCNC's order of execution ("G-code overview", "Order of Execution"): feed mode, feed,
+// speed, tool, M6, spindle, coolant, dwell, plane, units, compensation, work offset, distance
+// modes, retract mode, then motion and stops. Records go to the MachineSink in mm, in the work
+// offset's frame, each after setSource() with the block's line.
+#pragma once
+
+#include "nc/iso/IsoBlock.h"
+#include "nc/iso/IsoParameters.h"
+#include "nc/iso/IsoReporter.h"
+#include "toolpath/MachineSink.h"
+
+namespace camwb::nc::iso {
+
+struct ModalState {
+    int motion = 800;  // G code x10 of the motion mode; LinuxCNC starts in G80
+    int plane = 170;   // 170, 180, 190
+    bool absolute = true;
+    bool arcAbsolute = false;  // G90.1; LinuxCNC starts in G91.1
+    toolpath::FeedMode feedMode = toolpath::FeedMode::PerMinute;
+    double unit = 1.0;  // mm per program unit: 25.4 under G20
+    toolpath::CutterCompSide comp = toolpath::CutterCompSide::Off;
+    int workOffset = 1;
+    bool retractToR = false;  // G99 (LinuxCNC starts in G98)
+    double feed = 0;          // mm/min, mm/rev, or 1/min under G93
+    double rpm = 0;           // programmed S
+    int spindle = 0;          // 1 clockwise, -1 counter-clockwise, 0 stopped
+    int selectedTool = 0;
+    int tool = 0;
+    bool mist = false;
+    bool flood = false;
+    toolpath::Vec3 position;  // mm, work frame; rs274 starts at the origin
+    // Canned-cycle words kept between cycle blocks (LinuxCNC 2.9 keeps R, Z, P and Q).
+    double cycleR = 0, cycleZ = 0, cycleP = 0, cycleQ = 0;
+    bool haveCycleR = false, haveCycleZ = false;
+    bool cycleSequence = false;  // the last motion was a hole of a cycle still in force
+    double cycleStartZ = 0;      // Z before the first hole of that cycle: the Cycle records' clearance
+};
+
+enum class BlockOutcome { Continue, ProgramEnd };
+
+class Machine {
+public:
+    Machine(toolpath::MachineSink& sink, Reporter& reporter, const Parameters& parameters, double arcToleranceMm) :
+        m_sink(sink),
+        m_reporter(reporter),
+        m_parameters(parameters),
+        m_arcTolerance(arcToleranceMm)
+    {
+    }
+
+    // Runs a block read without errors. `fileIndex` is the SourceRef::file of its line.
+    BlockOutcome execute(const Block& block, int line, int fileIndex);
+    // M2/M30 resets (also at the end of a file without them, as LinuxCNC's end of program does not).
+    void programEnd();
+    const ModalState& state() const { return m_state; }
+
+private:
+    struct Groups {  // codes of one block by modal group, x10; -1 = none
+        int g[16];
+        int gColumn[16];
+        int stop = -1, toolChange = -1, spindle = -1, coolantCount = 0, coolant[3] = {-1, -1, -1};
+        int stopColumn = 0;
+    };
+    bool classify(const Block& block, Groups& groups);
+    void source() { m_sink.setSource(toolpath::SourceRef{-1, -1, m_line, m_file}); }
+    void setSpindle(double rpm, int direction);
+    void setCoolant(bool mist, bool flood);
+    void motion(const Block& block, int mode, const Groups& groups);
+    toolpath::Vec3 target(const Block& block, bool machineCoordinates) const;
+    void checkAxes(const Block& block);
+
+    // IsoArcs.cpp
+    void arc(const Block& block, bool clockwise, const toolpath::Vec3& to);
+    // IsoCycles.cpp
+    void cycle(const Block& block, int mode);
+    void referenceReturn(const Block& block, int code);
+
+    double feedFor(const Block& block, const char* what);
+    void error(const Block& block, char letter, std::string message);
+
+    toolpath::MachineSink& m_sink;
+    Reporter& m_reporter;
+    const Parameters& m_parameters;
+    double m_arcTolerance;
+    ModalState m_state;
+    int m_line = 0;
+    int m_file = 0;
+    bool m_warnedRotary = false;
+    bool m_warnedG53 = false;
+};
+
+}  // namespace camwb::nc::iso

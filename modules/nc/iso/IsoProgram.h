@@ -1,0 +1,84 @@
+// The ISO program runner: walks the text line by line (the whole file is one string_view, no
+// copy), reads each line into the one reused Block, applies its parameter assignments and hands
+// it to the Machine; O-word subroutines, loops and conditions move the read position. A runaway
+// limit (InterpretOptions::maxBlocks) counts executed and skipped lines, so no input runs forever.
+#pragma once
+
+#include "nc/Interpreter.h"
+#include "nc/iso/IsoBlock.h"
+#include "nc/iso/IsoMachine.h"
+#include "nc/iso/IsoParameters.h"
+#include "nc/iso/IsoReporter.h"
+#include "nc/iso/IsoScanner.h"
+
+#include <cstddef>
+#include <map>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace camwb::nc::iso {
+
+class Program {
+public:
+    Program(std::string_view text, const InterpretOptions& options, toolpath::MachineSink& sink,
+            InterpretResult& result);
+
+    void run();
+
+private:
+    enum class Flow { Next, Stop };
+
+    struct Position {
+        std::size_t offset = 0;  // start of a line in the text
+        int line = 1;            // its 1-based number
+    };
+    struct CallFrame {
+        Position returnTo;
+        int controlDepth = 0;  // m_control.size() at the call
+    };
+    struct ControlFrame {
+        OKeyword kind = OKeyword::None;  // If, While, Do, Repeat
+        std::string label;
+        Position start;  // While: its own line; Do and Repeat: the first line of the body
+        long long remaining = 0;
+        bool taken = false;
+    };
+
+    bool readLine(std::string_view& line);
+    bool countBlock();
+    void applyAssignments();
+
+    // IsoControlFlow.cpp
+    Flow oWord();
+    bool skipTo(const std::string& label, std::initializer_list<OKeyword> keywords, bool pastIt,
+                OKeyword* found = nullptr);
+    bool findSubroutine(const std::string& label, Position& body);
+    void returnFromCall();
+    ControlFrame* innermost(const std::string& label, std::initializer_list<OKeyword> kinds);
+    void oError(std::string message);
+
+    std::string_view m_text;
+    const InterpretOptions& m_options;
+    toolpath::MachineSink& m_sink;
+    InterpretResult& m_result;
+    Reporter m_reporter;
+    Parameters m_parameters;
+    LineScanner m_scanner;
+    Machine m_machine;
+    Block m_block;
+
+    Position m_current;    // the line being executed
+    Position m_next;       // the line read next
+    int m_lineNumber = 0;  // the line being executed
+    bool m_fatal = false;
+    bool m_programEnd = false;
+
+    std::vector<CallFrame> m_calls;
+    std::vector<ControlFrame> m_control;
+    std::map<std::string, Position> m_subroutines;  // label -> first line of the body
+    bool m_scannedSubroutines = false;
+    std::string m_labelScratch;
+};
+
+}  // namespace camwb::nc::iso

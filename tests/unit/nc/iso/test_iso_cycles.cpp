@@ -1,0 +1,3 @@
+#include "IsoTestSupport.h"
+
+#include <gtest/gtest.h>

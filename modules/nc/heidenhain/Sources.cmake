@@ -1,2 +1,15 @@
 # Sources of the heidenhain interpreter, relative to this folder.
-set(NC_PART_SOURCES HeidenhainInterpreter.cpp)
+set(NC_PART_SOURCES
+    HeidenhainInterpreter.cpp
+    Lexer.cpp
+    Lexer.h
+    Program.h
+    Expression.cpp
+    Expression.h
+    Parser.cpp
+    Parser.h
+    ParserWords.cpp
+    Machine.cpp
+    Machine.h
+    Contour.cpp
+    Cycles.cpp)

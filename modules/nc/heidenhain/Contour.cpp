@@ -1,0 +1,463 @@
+// Contour elements of Klartext: L, LP (polar about CC), C (about CC), CR (radius), CT (tangential),
+// CP (polar circle and helix), APPR/DEP (straight approximations), and the RND/CHF corners between
+// two lines, which shorten the element before them (planned here with a look-ahead).
+#include "nc/heidenhain/Machine.h"
+
+#include <cmath>
+#include <numbers>
+
+namespace camwb::nc::heidenhain {
+
+using namespace camwb::toolpath;
+
+namespace {
+
+constexpr double kDeg = std::numbers::pi / 180.0;
+constexpr double kEps = 1e-9;
+
+double& axis(Vec3& v, int i) { return i == 0 ? v.x : (i == 1 ? v.y : v.z); }
+
+bool isContour(BlockKind k)
+{
+    return k == BlockKind::Line || k == BlockKind::LinePolar || k == BlockKind::Circle ||
+           k == BlockKind::CircleRadius || k == BlockKind::CircleTangent || k == BlockKind::CirclePolar;
+}
+
+bool isFiller(BlockKind k) { return k == BlockKind::Empty || k == BlockKind::Comment; }
+
+std::string mm(double v)
+{
+    char buffer[32];
+    std::snprintf(buffer, sizeof buffer, "%.4f", v);
+    return buffer;
+}
+
+}  // namespace
+
+std::optional<Vec3> Machine::target(const Block& b, const BlockWords& w, const Vec3& from, bool quiet)
+{
+    Vec3 t = from;
+    for (int i = 0; i < 3; ++i) {
+        const auto& absolute = w.axes[static_cast<std::size_t>(i)];
+        const auto& incremental = w.axes[static_cast<std::size_t>(9 + i)];
+        if (absolute && incremental) {
+            if (!quiet)
+                report(Severity::Error, b.line, b.column, "absolute and incremental value for the same axis");
+            return std::nullopt;
+        }
+        if (absolute)
+            axis(t, i) = axis(m_shift, i) + *absolute * m_scale;
+        if (incremental)
+            axis(t, i) += *incremental * m_scale;
+    }
+    return t;
+}
+
+std::optional<Vec2> Machine::endTangent(const Element& e) const
+{
+    if (e.type == Element::Type::Line) {
+        const Vec2 d = (e.end - e.start).xy();
+        if (d.length() < kEps)
+            return std::nullopt;
+        return d.normalized();
+    }
+    if (e.type == Element::Type::Arc) {
+        const Vec2 radial = e.end.xy() - e.center;
+        if (radial.length() < kEps)
+            return std::nullopt;
+        return (e.clockwise ? radial.rightNormal() : radial.leftNormal()).normalized();
+    }
+    return std::nullopt;
+}
+
+std::optional<Element> Machine::plan(const Block& b, const BlockWords& w, const Vec3& from, const Vec2& cc, bool ccSet,
+                                     std::optional<Vec2> tangent, bool quiet)
+{
+    auto fail = [&](const std::string& message) -> std::optional<Element> {
+        if (!quiet)
+            report(Severity::Error, b.line, b.column, message);
+        return std::nullopt;
+    };
+    auto needPole = [&]() {
+        if (ccSet)
+            return true;
+        if (!quiet)
+            report(Severity::Error, b.line, b.column, "no circle centre CC programmed before this block");
+        return false;
+    };
+    auto direction = [&](bool& clockwise) {
+        if (w.direction != 0) {
+            clockwise = w.direction < 0;
+            return true;
+        }
+        if (m_lastDirection != 0) {
+            clockwise = m_lastDirection < 0;
+            if (!quiet)
+                report(Severity::Warning, b.line, b.column, "no DR+ or DR-: the previous direction is used");
+            return true;
+        }
+        if (!quiet)
+            report(Severity::Error, b.line, b.column, "the direction of rotation DR+ or DR- is missing");
+        return false;
+    };
+
+    Element e;
+    e.start = from;
+    const auto to = target(b, w, from, quiet);
+    if (!to)
+        return std::nullopt;
+    e.end = *to;
+
+    switch (b.kind) {
+    case BlockKind::Line:
+    case BlockKind::Approach:
+        if (!w.hasXyz()) {
+            if (b.kind == BlockKind::Approach && b.flag && w.len && tangent) {
+                // DEP LT LEN: straight on along the contour's tangent.
+                const Vec2 d = *tangent * (*w.len * m_scale);
+                e.end = {from.x + d.x, from.y + d.y, from.z};
+                e.type = Element::Type::Line;
+            }
+            return e;
+        }
+        e.type = Element::Type::Line;
+        return e;
+    case BlockKind::LinePolar: {
+        if (!needPole())
+            return std::nullopt;
+        const Vec2 rel = from.xy() - cc;
+        double r = rel.length();
+        double a = std::atan2(rel.y, rel.x) / kDeg;
+        if (w.pr)
+            r = *w.pr * m_scale;
+        if (w.ipr)
+            r += *w.ipr * m_scale;
+        if (w.pa)
+            a = *w.pa;
+        if (w.ipa)
+            a += *w.ipa;
+        if (r < 0)
+            return fail("negative polar radius PR");
+        e.end.x = cc.x + r * std::cos(a * kDeg);
+        e.end.y = cc.y + r * std::sin(a * kDeg);
+        e.type = Element::Type::Line;
+        return e;
+    }
+    case BlockKind::Circle: {
+        if (!needPole() || !direction(e.clockwise))
+            return std::nullopt;
+        e.type = Element::Type::Arc;
+        e.center = cc;
+        const double rs = distance(from.xy(), cc);
+        const double re = distance(e.end.xy(), cc);
+        if (rs < kEps)
+            return fail("circle start lies on its centre CC");
+        if (std::abs(rs - re) > m_options.arcRadiusToleranceMm && !quiet)
+            report(Severity::Error, b.line, b.column,
+                   "arc start radius " + mm(rs) + " and end radius " + mm(re) + " about CC differ by " +
+                       mm(std::abs(rs - re)) + " mm (tolerance " + mm(m_options.arcRadiusToleranceMm) + ")");
+        if (distance(from.xy(), e.end.xy()) < kEps)
+            e.end = {from.x, from.y, e.end.z};  // full circle
+        return e;
+    }
+    case BlockKind::CircleRadius: {
+        if (!w.radius)
+            return fail("CR needs the radius R");
+        if (!direction(e.clockwise))
+            return std::nullopt;
+        const double radius = *w.radius * m_scale;
+        const Vec2 chord = e.end.xy() - from.xy();
+        const double d = chord.length();
+        if (std::abs(radius) < kEps)
+            return fail("CR radius is zero");
+        if (d < kEps)
+            return fail("CR end point equals its start point (a full circle needs C)");
+        const double half = d / 2;
+        if (half > std::abs(radius) + m_options.arcRadiusToleranceMm)
+            return fail("CR radius " + mm(std::abs(radius)) + " is smaller than half the chord " + mm(half));
+        const double h = std::sqrt(std::max(0.0, radius * radius - half * half));
+        const Vec2 mid = (from.xy() + e.end.xy()) * 0.5;
+        const Vec2 left = (chord * (1.0 / d)).leftNormal();
+        // Counter-clockwise arcs of up to 180 degrees (R+) turn about a centre on the chord's left.
+        const bool centreLeft = (!e.clockwise) == (radius > 0);
+        e.center = mid + left * (centreLeft ? h : -h);
+        e.type = Element::Type::Arc;
+        return e;
+    }
+    case BlockKind::CircleTangent: {
+        if (!tangent) {
+            if (!quiet)
+                report(Severity::Error, b.line, b.column, "CT needs a preceding contour element to be tangent to");
+            return std::nullopt;
+        }
+        const Vec2 v = e.end.xy() - from.xy();
+        if (v.length() < kEps)
+            return fail("CT end point equals its start point");
+        const double cross = tangent->cross(v);
+        if (std::abs(cross) < 1e-12 * v.length()) {
+            e.type = Element::Type::Line;  // the end lies on the tangent: a straight line
+            return e;
+        }
+        const double r = v.dot(v) / (2 * cross);  // signed: > 0 centre on the left (counter-clockwise)
+        e.center = from.xy() + tangent->leftNormal() * r;
+        e.clockwise = r < 0;
+        e.type = Element::Type::Arc;
+        return e;
+    }
+    case BlockKind::CirclePolar: {
+        if (!needPole())
+            return std::nullopt;
+        const Vec2 rel = from.xy() - cc;
+        const double r = rel.length();
+        if (r < kEps)
+            return fail("CP start lies on the pole CC");
+        const double a0 = std::atan2(rel.y, rel.x) / kDeg;
+        double sweep = 0;
+        if (w.ipa) {
+            sweep = *w.ipa;
+            if (std::abs(sweep) > 5400)
+                return fail("IPA out of the control's range (+-5400 degrees)");
+            if (std::abs(sweep) < kEps)
+                return fail("CP with IPA 0");
+            if (w.direction != 0 && (w.direction > 0) != (sweep > 0) && !quiet)
+                report(Severity::Warning, b.line, b.column,
+                       "DR and IPA have different signs: the sign of IPA decides the direction");
+            e.clockwise = sweep < 0;
+        } else if (w.pa) {
+            if (!direction(e.clockwise))
+                return std::nullopt;
+            double s = std::fmod(*w.pa - a0, 360.0);
+            if (e.clockwise)
+                s = -std::fmod(a0 - *w.pa, 360.0);
+            if (!e.clockwise && s <= kEps)
+                s += 360;
+            if (e.clockwise && s >= -kEps)
+                s -= 360;
+            sweep = s;
+        } else {
+            return fail("CP needs PA or IPA");
+        }
+        const double total = std::abs(sweep);
+        e.turns = std::max(0, static_cast<int>(std::ceil(total / 360.0 - 1e-9)) - 1);
+        const double a1 = (a0 + sweep) * kDeg;
+        const double laps = total / 360.0;
+        if (std::abs(laps - std::round(laps)) < 1e-12) {
+            e.end.x = from.x;  // whole laps end exactly where they began
+            e.end.y = from.y;
+        } else {
+            e.end.x = cc.x + r * std::cos(a1);
+            e.end.y = cc.y + r * std::sin(a1);
+        }
+        e.center = cc;
+        e.type = Element::Type::Arc;
+        return e;
+    }
+    default:
+        return e;
+    }
+}
+
+void Machine::circleCenter(const Block& b)
+{
+    BlockWords w;
+    if (!gather(b, w, false))
+        return;
+    if (!w.hasXyz()) {
+        m_cc = m_pos.xy();  // CC alone: the last programmed position
+        m_ccSet = true;
+        return;
+    }
+    if (w.pr || w.pa || w.ipr || w.ipa) {
+        report(Severity::Error, b.line, b.column, "a polar CC is not supported");
+        return;
+    }
+    if (const auto t = target(b, w, m_pos, false)) {
+        m_cc = t->xy();
+        m_ccSet = true;
+    }
+}
+
+void Machine::motionBlock(const Block& b)
+{
+    BlockWords w;
+    if (!gather(b, w, false))
+        return;
+    if (w.rotary)
+        warnOnce(kWarnRotary, b,
+                 "rotary and parallel axes (A, B, C, U, V, W) are traced once the five-axis machine model exists; "
+                 "their values are ignored");
+    if (b.kind == BlockKind::Approach)
+        warnOnce(kWarnApproach, b, "APPR/DEP are traced as straight moves to their end points");
+    if (w.feed == BlockWords::FeedWord::PerTooth)
+        warnOnce(kWarnFeedTooth, b, "FZ (feed per tooth) needs the tooth count: the modal feed is kept");
+    if (w.feed == BlockWords::FeedWord::Auto && m_autoFeed <= 0)
+        warnOnce(kWarnAutoFeed, b, "F AUTO with no feed in the TOOL CALL: feed 0");
+
+    applyEarlyM(b, w);
+    applyComp(w);
+    applyFeed(w);
+    const bool rapid = w.feed == BlockWords::FeedWord::Max;
+
+    bool moved = false;
+    if (b.kind != BlockKind::MOnly && b.kind != BlockKind::Stop) {
+        auto e = plan(b, w, m_pos, m_cc, m_ccSet, m_tangent, false);
+        if (e && e->type != Element::Type::None) {
+            if (e->type == Element::Type::Arc)
+                m_lastDirection = e->clockwise ? -1 : 1;
+            planCorner(*e, m_pc + 1);
+            send(*e, rapid, m_feed);
+            moved = true;
+        }
+    }
+    if (b.kind == BlockKind::Stop)
+        m_sink.programStop(ProgramStop{false});
+    applyLateM(b, w, moved);
+}
+
+void Machine::send(const Element& e, bool rapid, double feed)
+{
+    if (e.type == Element::Type::Line) {
+        if (rapid) {
+            m_sink.rapid(Rapid{e.end});
+        } else {
+            if (feed <= 0 && !m_warned.test(kWarnZeroFeed)) {
+                m_warned.set(kWarnZeroFeed);
+                report(Severity::Warning, program().blocks[m_pc].line, 0, "feed motion with no feed programmed");
+            }
+            m_sink.linear(Linear{e.end, feed});
+        }
+    } else if (e.type == Element::Type::Arc) {
+        if (rapid && !m_warned.test(kWarnRapidArc)) {
+            m_warned.set(kWarnRapidArc);
+            report(Severity::Warning, program().blocks[m_pc].line, 0, "FMAX on a circle: traced at the modal feed");
+        }
+        Arc arc;
+        arc.to = e.end;
+        arc.center = {e.center.x, e.center.y, e.start.z};
+        arc.normal = {0, 0, 1};
+        arc.clockwise = e.clockwise;
+        arc.turns = e.turns;
+        arc.feedMmPerMin = feed;
+        m_sink.arc(arc);
+    }
+    m_pos = e.end;
+    if (const auto t = endTangent(e))
+        m_tangent = t;
+}
+
+// Looks past the current element for RND/CHF and the element after it; when both neighbours
+// are straight lines, shortens `element` to the corner's start and keeps the corner for the
+// RND/CHF block.
+void Machine::planCorner(Element& element, std::size_t index)
+{
+    const std::vector<Block>& blocks = program().blocks;
+    while (index < blocks.size() && isFiller(blocks[index].kind))
+        ++index;
+    if (index >= blocks.size() || (blocks[index].kind != BlockKind::Round && blocks[index].kind != BlockKind::Chamfer))
+        return;
+    const Block& cornerBlock = blocks[index];
+    const bool round = cornerBlock.kind == BlockKind::Round;
+    auto warn = [&](Severity s, const std::string& message) {
+        report(s, cornerBlock.line, cornerBlock.column, message);
+        m_cornerWarnedProgram = m_prog;
+        m_cornerWarnedBlock = index;
+    };
+
+    Vec2 cc = m_cc;
+    bool ccSet = m_ccSet;
+    std::size_t next = index + 1;
+    for (; next < blocks.size(); ++next) {
+        const Block& nb = blocks[next];
+        if (isFiller(nb.kind))
+            continue;
+        if (nb.kind != BlockKind::CircleCenter)
+            break;
+        BlockWords cw;
+        if (gather(nb, cw, true)) {
+            if (!cw.hasXyz()) {
+                cc = element.end.xy();
+            } else if (const auto t = target(nb, cw, element.end, true)) {
+                cc = t->xy();
+            }
+            ccSet = true;
+        }
+    }
+    if (next >= blocks.size() || !isContour(blocks[next].kind))
+        return warn(Severity::Warning,
+                    std::string(round ? "RND" : "CHF") + " is not followed by a contour element: ignored");
+    BlockWords nw;
+    if (!gather(blocks[next], nw, true))
+        return;
+    const auto following = plan(blocks[next], nw, element.end, cc, ccSet, endTangent(element), true);
+    if (!following || following->type == Element::Type::None)
+        return;
+    if (element.type != Element::Type::Line || following->type != Element::Type::Line)
+        return warn(Severity::Warning,
+                    std::string(round ? "RND" : "CHF") + " next to a circle is not traced yet: the corner stays sharp");
+
+    BlockWords own;
+    if (!gather(cornerBlock, own, true))
+        return;
+    double size = 0;
+    if (round) {
+        if (!own.radius || *own.radius <= 0)
+            return warn(Severity::Error, "RND needs a positive radius R");
+        size = *own.radius * m_scale;
+    } else {
+        if (!own.len || *own.len <= 0)
+            return warn(Severity::Error, "CHF needs a positive length");
+        size = *own.len * m_scale;
+    }
+
+    const Vec3 s = element.start, v = element.end, e = following->end;
+    const Vec2 d1 = (v - s).xy(), d2 = (e - v).xy();
+    const double l1 = d1.length(), l2 = d2.length();
+    if (l1 < kEps || l2 < kEps)
+        return warn(Severity::Warning,
+                    std::string(round ? "RND" : "CHF") + " needs motion in the working plane on both sides: ignored");
+    const Vec2 u1 = d1 * (1 / l1), u2 = d2 * (1 / l2);
+    const double cross = u1.cross(u2);
+    if (std::abs(cross) < 1e-9)
+        return warn(Severity::Warning, std::string(round ? "RND" : "CHF") + " between lines in one direction: ignored");
+    const double deflection = std::atan2(std::abs(cross), u1.dot(u2));
+    const double t = round ? size * std::tan(deflection / 2) : size;
+    if (t > l1 + kEps || t > l2 + kEps)
+        return warn(Severity::Error, std::string(round ? "RND radius " : "CHF length ") + mm(size) +
+                                         " does not fit the adjacent elements (needs " + mm(t) + " mm on each)");
+    m_corner.valid = true;
+    m_corner.program = m_prog;
+    m_corner.block = index;
+    m_corner.arc = round;
+    m_corner.from = v - (v - s) * (t / l1);
+    m_corner.to = v + (e - v) * (t / l2);
+    m_corner.clockwise = cross < 0;
+    const Vec2 inward = cross > 0 ? u1.leftNormal() : u1.rightNormal();
+    m_corner.center = m_corner.from.xy() + inward * size;
+    element.end = m_corner.from;
+}
+
+void Machine::corner(const Block& b)
+{
+    BlockWords w;
+    gather(b, w, false);
+    const bool planned = m_corner.valid && m_corner.program == m_prog && m_corner.block == m_pc;
+    if (!planned) {
+        if (m_cornerWarnedProgram != m_prog || m_cornerWarnedBlock != m_pc)
+            report(Severity::Warning, b.line, b.column,
+                   std::string(b.kind == BlockKind::Round ? "RND" : "CHF") +
+                       " is not between two contour elements: ignored");
+        return;
+    }
+    m_corner.valid = false;
+    // A feed in the RND/CHF block holds for that block only.
+    const double feed = w.feed == BlockWords::FeedWord::Value ? w.feedValue * m_feedScale : m_feed;
+    Element e;
+    e.start = m_corner.from;
+    e.end = m_corner.to;
+    e.type = m_corner.arc ? Element::Type::Arc : Element::Type::Line;
+    e.center = m_corner.center;
+    e.clockwise = m_corner.clockwise;
+    send(e, false, feed);
+}
+
+}  // namespace camwb::nc::heidenhain

@@ -1,0 +1,198 @@
+// The Klartext interpreter's machine: modal state (position, datum shift, pole CC, feed, tool,
+// spindle, compensation, cycle definition, Q parameters), the program counter with its call
+// stack (CALL LBL repeats and subprograms, CALL PGM), and the MachineSink it drives. Control flow
+// and M functions live in Machine.cpp, contour elements in Contour.cpp, cycles in Cycles.cpp.
+#pragma once
+
+#include "nc/Interpreter.h"
+#include "nc/heidenhain/Expression.h"
+#include "nc/heidenhain/Lexer.h"
+#include "nc/heidenhain/Program.h"
+#include "toolpath/ClRecords.h"
+#include "toolpath/MachineSink.h"
+
+#include <array>
+#include <bitset>
+#include <memory>
+#include <optional>
+#include <string>
+#include <unordered_map>
+#include <vector>
+
+namespace camwb::nc::heidenhain {
+
+using base::Vec2;
+using base::Vec3;
+
+inline constexpr double kMaxCoordinate = 99999.9999;  // the control's input range
+inline constexpr int kMaxLabelNesting = 64;
+inline constexpr int kMaxProgramNesting = 16;
+
+// Keys of the warnings given once per run.
+enum WarnKey : int {
+    kWarnRotary,
+    kWarnTcpm,
+    kWarnM91,
+    kWarnM140,
+    kWarnToolAxis,
+    kWarnSurfaceSpeed,
+    kWarnFeedTooth,
+    kWarnApproach,
+    kWarnCycleRadius,
+    kWarnBackBoring,
+    kWarnAutoFeed,
+    kWarnCalledEnd,
+    kWarnRapidArc,
+    kWarnZeroFeed,
+};
+
+// The evaluated words of one block (values in program units, not yet scaled or shifted).
+struct BlockWords {
+    std::array<std::optional<double>, 18> axes;  // Key::X .. Key::IW
+    std::optional<double> pr, pa, ipr, ipa, radius, len, angle, mb;
+    int direction = 0;  // +1 DR+, -1 DR-, 0 none
+    int comp = -1;      // 0 R0, 1 RL, 2 RR
+    enum class FeedWord { None, Value, Max, Auto, PerRev, PerTooth } feed = FeedWord::None;
+    double feedValue = 0;
+    std::array<int, 8> m{};
+    int mCount = 0;
+    int mColumn = 0;
+    bool mbMax = false;
+    bool rotary = false;  // A/B/C/U/V/W were written
+    bool hasXyz() const;
+};
+
+// A contour element as planned from a block, before it is sent.
+struct Element {
+    enum class Type { None, Line, Arc } type = Type::None;
+    Vec3 start;
+    Vec3 end;
+    Vec2 center;
+    bool clockwise = false;
+    int turns = 0;
+};
+
+struct CycleDefinition {
+    int number = 0;
+    int line = 0;
+    std::array<double, 400> q{};  // Q200..Q599
+    std::bitset<400> set;
+    bool defined = false;
+    double get(int n, double fallback = 0) const;
+    bool has(int n) const { return n >= 200 && n < 600 && set.test(static_cast<std::size_t>(n - 200)); }
+};
+
+// A corner rounding or chamfer planned when the element before it was sent.
+struct Corner {
+    bool valid = false;
+    int program = -1;
+    std::size_t block = 0;
+    bool arc = false;
+    Vec3 from, to;
+    Vec2 center;
+    bool clockwise = false;
+};
+
+class Machine {
+public:
+    Machine(const InterpretOptions& options, toolpath::MachineSink& sink, InterpretResult& result);
+    void run(std::string_view text);
+
+private:
+    struct Frame {
+        int program = 0;
+        std::size_t callPc = 0;  // the CALL block
+        std::size_t returnPc = 0;
+        std::size_t target = 0;  // the label's block (repeats jump after it)
+        std::int64_t remaining = 0;
+        bool isProgram = false;
+    };
+
+    // Machine.cpp: control flow, state, M functions, tools, parameters.
+    void execute(const Block& b);
+    void source(const Block& b);
+    void source(int line);
+    void report(Severity s, int line, int column, std::string message);
+    void warnOnce(int key, const Block& b, const std::string& message);
+    bool gather(const Block& b, BlockWords& w, bool quiet);
+    void applyEarlyM(const Block& b, const BlockWords& w);
+    void applyLateM(const Block& b, const BlockWords& w, bool moved);
+    void applyFeed(const BlockWords& w);
+    void applyComp(const BlockWords& w);
+    void endProgram(bool completed);
+    void returnFromProgram();
+    void toolCall(const Block& b);
+    void toolDef(const Block& b);
+    void callLabel(const Block& b);
+    void callProgram(const Block& b);
+    void label(const Block& b);
+    void fnAssign(const Block& b);
+    void fnJump(const Block& b);
+    void spindleOn(bool clockwise, const Block& b);
+    void spindleOff();
+    void coolant(toolpath::CoolantMode mode);
+    std::optional<std::size_t> findLabel(std::string_view ref, bool isName);
+    const Program& program() const { return *m_programs[static_cast<std::size_t>(m_prog)]; }
+    std::optional<double> eval(int expr, bool quiet = false);
+
+    // Contour.cpp: elements, corners, sending moves.
+    void motionBlock(const Block& b);
+    void circleCenter(const Block& b);
+    void corner(const Block& b);
+    std::optional<Element> plan(const Block& b, const BlockWords& w, const Vec3& from, const Vec2& cc, bool ccSet,
+                                std::optional<Vec2> tangent, bool quiet);
+    std::optional<Vec3> target(const Block& b, const BlockWords& w, const Vec3& from, bool quiet);
+    void planCorner(Element& element, std::size_t cornerIndex);
+    void send(const Element& e, bool rapid, double feed);
+    std::optional<Vec2> endTangent(const Element& e) const;
+
+    // Cycles.cpp: CYCL DEF, CYCL CALL, M99/M89.
+    void cycleDef(const Block& b);
+    void cycleCall(const Block& b);
+    void runCycle(const Block& b, Vec2 hole);
+    void cycleRecord(const Block& b, Vec2 hole);
+    void boreMilling(const Block& b, Vec2 hole);
+    void backBoring(const Block& b, Vec2 hole);
+
+    const InterpretOptions& m_options;
+    toolpath::MachineSink& m_sink;
+    InterpretResult& m_result;
+    Reporter m_rep;
+
+    std::vector<std::unique_ptr<Program>> m_programs;
+    std::unordered_map<std::string, int> m_programByName;
+    int m_prog = 0;
+    std::size_t m_pc = 0;
+    bool m_jumped = false;
+    bool m_stop = false;
+    std::vector<Frame> m_frames;
+    int m_programDepth = 0;
+
+    Parameters m_params;
+    Vec3 m_pos;
+    Vec3 m_shift;
+    double m_scale = 1;      // mm per program unit
+    double m_feedScale = 1;  // mm/min per programmed feed unit
+    Vec2 m_cc;
+    bool m_ccSet = false;
+    std::optional<Vec2> m_tangent;
+    int m_lastDirection = 0;
+    double m_feed = 0;
+    double m_autoFeed = 0;
+    toolpath::FeedMode m_feedMode = toolpath::FeedMode::PerMinute;
+    toolpath::CutterCompSide m_comp = toolpath::CutterCompSide::Off;
+    int m_tool = 0;
+    double m_rpm = 0;
+    bool m_spindleOn = false;
+    bool m_spindleCw = true;
+    toolpath::CoolantMode m_coolant = toolpath::CoolantMode::Off;
+    std::unordered_map<int, double> m_toolRadius;
+    CycleDefinition m_cycle;
+    bool m_modalCycleCall = false;
+    Corner m_corner;
+    std::bitset<64> m_warned;
+    int m_cornerWarnedProgram = -1;
+    std::size_t m_cornerWarnedBlock = 0;
+};
+
+}  // namespace camwb::nc::heidenhain

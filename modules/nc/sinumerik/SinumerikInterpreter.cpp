@@ -1,13 +1,14 @@
-// Placeholder until the sinumerik interpreter lands: says so instead of tracing nothing.
+// Entry of the SINUMERIK 828D/840D interpreter (nc::interpret with Dialect::Sinumerik).
 #include "nc/detail/Dialects.h"
+#include "nc/sinumerik/Machine.h"
 
 namespace camwb::nc::detail {
 
-InterpretResult interpretSinumerik(std::string_view, const InterpretOptions& options, toolpath::MachineSink&)
+InterpretResult interpretSinumerik(std::string_view text, const InterpretOptions& options, toolpath::MachineSink& sink)
 {
     InterpretResult result;
-    result.files.push_back(options.fileName);
-    result.diagnostics.push_back({Severity::Error, options.fileName, 0, 0, "the sinumerik interpreter is not built yet"});
+    sinumerik::Machine machine(options, sink, result);
+    machine.run(text);
     return result;
 }
 

@@ -1,0 +1,138 @@
+// The SINUMERIK interpreter's run time: modal state, R parameters and DEF variables, the call
+// stack over parsed programs, and what it sends to the MachineSink. Split over Machine.cpp (run
+// loop, control flow, calls), Evaluate.cpp, Execute.cpp (ordinary blocks), Arcs.cpp, Cycles.cpp.
+#pragma once
+
+#include "nc/Interpreter.h"
+#include "nc/sinumerik/Program.h"
+#include "toolpath/ClRecords.h"
+#include "toolpath/MachineSink.h"
+
+#include <array>
+#include <memory>
+#include <optional>
+#include <unordered_map>
+#include <unordered_set>
+
+namespace camwb::nc::sinumerik {
+
+using toolpath::Vec3;
+
+struct Modal {
+    int motion = 0;  // 0 rapid, 1 linear, 2 cw, 3 ccw
+    int plane = 17;  // 17, 18, 19
+    bool incremental = false;
+    bool inch = false;      // G70/G700
+    bool inchFeed = false;  // G700: feeds in inch too
+    toolpath::FeedMode feedMode = toolpath::FeedMode::PerMinute;
+    bool constantSurfaceSpeed = false;  // G96
+    bool diameter = false;              // DIAMON: X is a diameter
+    toolpath::CutterCompSide comp = toolpath::CutterCompSide::Off;
+    int workOffset = -1;  // not yet programmed
+};
+
+// A modal call (MCALL): a cycle with its arguments evaluated when it was set, or a subprogram.
+struct ModalCall {
+    int cycle = 0;  // 81..89; -1: subprogram `name`
+    std::string name;
+    std::vector<std::optional<double>> args;
+    int line = 0;
+};
+
+struct Frame {
+    int program = 0;
+    int pc = 0;
+    std::size_t localsBase = 0;
+    int repeatsLeft = 0;  // P repetitions still to run after this one
+    int callPc = 0;       // the calling block (its program is the previous frame's)
+};
+
+class Machine {
+public:
+    Machine(const InterpretOptions& options, toolpath::MachineSink& sink, InterpretResult& result) :
+        m_options(options),
+        m_sink(sink),
+        m_result(result)
+    {
+    }
+    void run(std::string_view mainText);
+
+    // Evaluate.cpp: the value of expression `e` of program `p`; nullopt after an error (reported).
+    std::optional<double> eval(const Program& p, std::int32_t e);
+
+private:
+    // Machine.cpp
+    void runLoop();
+    bool step();  // one block; false: the program ended or stopped
+    void jumpBack(int target);
+    bool callProgram(const std::string& name, const Block& block, const Program& caller, int repeats,
+                     const std::vector<std::optional<double>>& args);
+    int loadProgram(const std::string& name, Pos callPos, const Program& caller);
+    bool returnFromCall();
+    void checkProcName(const Program& p, std::string_view expected);
+    void reportRunaway();
+
+    // Execute.cpp
+    bool executeNormal(const Program& p, const Block& block);
+    bool applyG(const Program& p, const Word& w, int& motion, bool& dwellBlock);
+    void emitComment(const Program& p, const Block& block);
+    double toMm(double v) const { return m_modal.inch ? v * 25.4 : v; }
+    double feedToInternal(double f) const;
+    bool checkRange(const Program& p, Pos pos, double mm);
+    void setSource(int line);
+    void setFeedMode(toolpath::FeedMode mode, int line);
+    void emitSpindle(int line);
+    void assign(const Program& p, const Word& w, double value);
+
+    // Arcs.cpp: circle or helix from m_pos to `to`; false when the arc is inconsistent (reported).
+    struct ArcWords {
+        std::array<std::optional<double>, 3> centre;  // I J K in mm, with their mode
+        std::array<ValueMode, 3> centreMode{};
+        std::optional<double> cr, ar;
+        int turn = 0;
+        Pos pos;
+    };
+    bool arc(const Program& p, const Vec3& to, bool clockwise, const ArcWords& words, int line);
+
+    // Cycles.cpp: one hole of CYCLE8x at the current position (the tool is over the hole).
+    bool runCycle(const Program& p, int number, const std::vector<std::optional<double>>& args, Pos pos, int line);
+    std::vector<std::optional<double>> evalArgs(const Program& p, const Block& block);
+
+public:
+    // Diagnostics, deduplicated per place and message: loops report a problem once.
+    void diag(Severity severity, const Program& p, Pos pos, const std::string& message);
+    void error(const Program& p, Pos pos, const std::string& message) { diag(Severity::Error, p, pos, message); }
+    void warning(const Program& p, Pos pos, const std::string& message) { diag(Severity::Warning, p, pos, message); }
+
+private:
+    const InterpretOptions& m_options;
+    toolpath::MachineSink& m_sink;
+    InterpretResult& m_result;
+
+    std::vector<std::unique_ptr<Program>> m_programs;  // index = file index
+    std::unordered_map<std::string, int> m_byName;     // upper-case called name -> program (-1: not found)
+    std::vector<Frame> m_stack;
+    std::vector<double> m_locals;
+    std::array<double, 1000> m_r{};
+    std::unordered_set<std::uint64_t> m_reported;
+    std::vector<std::vector<std::uint32_t>> m_loopCounts;  // per program, per block: back jumps
+    bool m_stopped = false;
+    bool m_evalFailed = false;
+    bool m_toolChangeOnM6 = true;
+
+    Modal m_modal;
+    Vec3 m_pos;
+    double m_feed = 0;   // mm/min, mm/rev or 1/min by the feed mode
+    double m_speed = 0;  // S: rpm, or m/min under G96
+    double m_lims = 0;
+    int m_spindleDir = 0;  // 0 stopped, 3 cw, 4 ccw
+    bool m_spindleEmitted = false;
+    int m_tool = 0;  // selected with T
+    std::string m_toolName;
+    std::optional<ModalCall> m_modalCall;
+    bool m_fiveAxisWarned = false;
+    int m_currentFile = 0;
+    int m_currentLine = 0;
+};
+
+}  // namespace camwb::nc::sinumerik

@@ -1,0 +1,460 @@
+// The words of an ordinary SINUMERIK block: G/M codes, axes and centres (X10, X=expr,
+// X=IC(expr)), F S T D, CR AR TURN LIMS, assignments to R parameters and DEF variables, cycle
+// and subprogram calls, keywords; plus DEF and PROC declarations.
+#include "nc/sinumerik/ParserImpl.h"
+
+#include <algorithm>
+#include <charconv>
+
+namespace camwb::nc::sinumerik {
+
+namespace {
+
+int axisIndex(std::string_view u)
+{
+    static constexpr std::string_view kAxes[] = {"X", "Y", "Z", "A", "B", "C"};
+    for (int i = 0; i < 6; ++i)
+        if (u == kAxes[i])
+            return i;
+    return -1;
+}
+
+int centreIndex(std::string_view u) { return u == "I" ? 0 : u == "J" ? 1 : u == "K" ? 2 : -1; }
+
+bool isAddressLetter(std::string_view u)
+{
+    return u.size() == 1 && std::string_view("XYZABCIJKFSTDGMNHLP").find(u[0]) != std::string_view::npos;
+}
+
+// Words the trace recognises and leaves alone: path control, feed forward, compressors, display.
+bool isPassiveKeyword(std::string_view u)
+{
+    static constexpr std::string_view kPassive[] = {
+        "SOFT",    "BRISK",   "DRIVE",     "FFWON",   "FFWOF",   "CFC",      "CFTCP",     "CFIN",    "COMPON",
+        "COMPOF",  "COMPCAD", "COMPCURV",  "ORIWKS",  "ORIMKS",  "ORIAXES",  "ORIVECT",   "UPATH",   "SPATH",
+        "DISPLON", "DISPLOF", "SBLON",     "SBLOF",   "WAITM",   "STOPFIFO", "STARTFIFO", "DIAM90",  "DIAMCYCOF",
+        "CUT2D",   "CUT2DF",  "CUT3DC",    "CUT3DF",  "SUPA",    "G_GROUP",  "SPIF1",     "SPIF2",   "OFFN",
+        "NORM",    "KONT",    "KONTC",     "KONTT",   "WALIMON", "WALIMOF",  "PTP",       "CP",      "SPOS",
+        "SPOSA",   "M19",     "FGROUP",    "FTOCON",  "FTOCOF",  "ACC",      "OVR",       "VELOLIM", "JERKLIM",
+        "CTAB",    "DELT",    "WORKPIECE", "G_FNAME", "FNORM",   "FLIN",     "FCUB",      "CPRECON", "CPRECOF",
+    };
+    return std::find(std::begin(kPassive), std::end(kPassive), u) != std::end(kPassive);
+}
+
+bool isFrameKeyword(std::string_view u)
+{
+    return u == "TRANS" || u == "ATRANS" || u == "ROT" || u == "AROT" || u == "SCALE" || u == "ASCALE" ||
+           u == "MIRROR" || u == "AMIRROR" || u == "ROTS" || u == "AROTS" || u == "CROTS";
+}
+
+double numberOf(std::string_view digits)
+{
+    double v = 0;
+    std::from_chars(digits.data(), digits.data() + digits.size(), v);
+    return v;
+}
+
+}  // namespace
+
+bool Parser::parseWords(Block& block)
+{
+    while (!atEnd() && !block.bad)
+        if (!parseWord(block))
+            return false;
+    return !block.bad;
+}
+
+bool Parser::parseAddressValue(Block& block, WordKind kind, std::uint8_t index, const Token& name, bool allowMode)
+{
+    Word w;
+    w.kind = kind;
+    w.index = index;
+    w.pos = posOf(name);
+    if (allowMode && peekIs(Tok::Name) && peekIs(Tok::LParen, 1)) {
+        const std::string fn = upper(peek()->text);
+        if (fn == "AC" || fn == "IC" || fn == "DC" || fn == "ACP" || fn == "ACN") {
+            w.mode = fn == "IC" ? ValueMode::Incremental : ValueMode::Absolute;
+            const Pos open = posOf(*peek(1));
+            m_pos += 2;
+            w.expr = parseExpr();
+            if (w.expr < 0)
+                return false;
+            if (!peekIs(Tok::RParen))
+                return error(atEnd() ? here() : posOf(*peek()),
+                             "unbalanced parentheses: '(' at column " + std::to_string(open.column) + " is not closed");
+            ++m_pos;
+            addWord(block, kind, w.pos) = w;
+            return true;
+        }
+    }
+    if (atEnd())
+        return error(here(), "a value is missing after " + std::string(name.text) + "=");
+    w.expr = parseExpr();
+    if (w.expr < 0)
+        return false;
+    addWord(block, kind, w.pos) = w;
+    return true;
+}
+
+bool Parser::parseCallArgs(Block& block)
+{
+    // At '(' : arguments separated by commas, any of them empty.
+    const Pos open = here();
+    ++m_pos;
+    block.firstArg = static_cast<std::int32_t>(m_p.args.size());
+    block.argCount = 0;
+    if (peekIs(Tok::RParen)) {
+        ++m_pos;
+        return true;
+    }
+    for (;;) {
+        if (peekIs(Tok::Comma) || peekIs(Tok::RParen)) {
+            m_p.args.push_back(-1);
+        } else if (peekIs(Tok::String)) {
+            m_p.args.push_back(-2);  // text arguments (CYCLE800's names): not used by the trace
+            ++m_pos;
+        } else {
+            const std::int32_t e = parseExpr();
+            if (e < 0)
+                return false;
+            m_p.args.push_back(e);
+        }
+        ++block.argCount;
+        if (peekIs(Tok::Comma)) {
+            ++m_pos;
+            continue;
+        }
+        if (peekIs(Tok::RParen)) {
+            ++m_pos;
+            return true;
+        }
+        return error(atEnd() ? here() : posOf(*peek()),
+                     "unbalanced parentheses: '(' at column " + std::to_string(open.column) + " is not closed");
+    }
+}
+
+bool Parser::parseWord(Block& block)
+{
+    const Token& t = *peek();
+    const Pos pos = posOf(t);
+    if (t.kind != Tok::Name) {
+        if (t.kind == Tok::RParen)
+            return error(pos, "unbalanced parentheses: ')' without '('");
+        if (t.kind == Tok::Number)
+            return error(pos, "a number without an address letter");
+        if (t.kind == Tok::Invalid)
+            return error(pos, "unexpected character '" + std::string(t.text) + "'");
+        return error(pos, "unexpected '" + std::string(t.text) + "'");
+    }
+    const std::string u = upper(t.text);
+    const int axis = axisIndex(u);
+    const int centre = centreIndex(u);
+
+    // NAME= : an address with an expression or an assignment.
+    if (peekIs(Tok::Assign, 1)) {
+        m_pos += 2;
+        if (axis >= 0)
+            return parseAddressValue(block, WordKind::Axis, static_cast<std::uint8_t>(axis), t, true);
+        if (centre >= 0)
+            return parseAddressValue(block, WordKind::Centre, static_cast<std::uint8_t>(centre), t, true);
+        if (u == "F")
+            return parseAddressValue(block, WordKind::F, 0, t, false);
+        if (u == "S" || (u.size() > 1 && u[0] == 'S' && u.find_first_not_of("0123456789", 1) == std::string::npos))
+            return parseAddressValue(block, WordKind::S, 0, t, false);
+        if (u == "D")
+            return parseAddressValue(block, WordKind::D, 0, t, false);
+        if (u == "T") {
+            if (peekIs(Tok::String)) {
+                Word& w = addWord(block, WordKind::TName, pos);
+                w.code = addText(peek()->text);
+                ++m_pos;
+                return true;
+            }
+            return parseAddressValue(block, WordKind::T, 0, t, false);
+        }
+        if (u == "CR")
+            return parseAddressValue(block, WordKind::Cr, 0, t, false);
+        if (u == "AR")
+            return parseAddressValue(block, WordKind::Ar, 0, t, false);
+        if (u == "TURN")
+            return parseAddressValue(block, WordKind::Turn, 0, t, false);
+        if (u == "LIMS")
+            return parseAddressValue(block, WordKind::Lims, 0, t, false);
+        if (u[0] == 'M' && (u.size() == 1 || u.find_first_not_of("0123456789", 1) == std::string::npos)) {
+            // M=3 or M1=3 (spindle 1): the code must be a constant.
+            const std::int32_t e = parseExpr();
+            if (e < 0)
+                return false;
+            if (m_p.exprs[e].op != Op::Const)
+                return error(pos, "the M code must be a number");
+            addWord(block, WordKind::M, pos).code = static_cast<std::int32_t>(m_p.exprs[e].value);
+            return true;
+        }
+        if (u.size() > 1 && u[0] == 'R' && u.find_first_not_of("0123456789", 1) == std::string::npos) {
+            int index = 0;
+            std::from_chars(u.data() + 1, u.data() + u.size(), index);
+            if (index > 999 || u.size() > 5)
+                return error(pos, "R parameter " + u + " out of range (R0..R999)");
+            if (atEnd())
+                return error(here(), "a value is missing after " + std::string(t.text) + "=");
+            Word w;
+            w.kind = WordKind::Assign;
+            w.target = AssignTarget::R;
+            w.code = index;
+            w.pos = pos;
+            w.expr = parseExpr();
+            if (w.expr < 0)
+                return false;
+            addWord(block, WordKind::Assign, pos) = w;
+            return true;
+        }
+        if (const LocalVar* var = findLocal(u)) {
+            if (var->size > 1)
+                return error(pos, std::string(t.text) + " is an array: an element [i] is expected");
+            Word w;
+            w.kind = WordKind::Assign;
+            w.target = AssignTarget::Local;
+            w.code = var->slot;
+            w.pos = pos;
+            if (atEnd())
+                return error(here(), "a value is missing after " + std::string(t.text) + "=");
+            w.expr = parseExpr();
+            if (w.expr < 0)
+                return false;
+            addWord(block, WordKind::Assign, pos) = w;
+            return true;
+        }
+        if (isPassiveKeyword(u) || u == "A3" || u == "B3" || u == "C3" || u == "A2" || u == "B2" || u == "C2" ||
+            u == "LEAD" || u == "TILT" || u == "THETA" || u == "SF" || u == "OVR") {
+            const std::int32_t e = parseExpr();
+            if (e < 0)
+                return false;
+            addWord(block, WordKind::Passive, pos);
+            return true;
+        }
+        return error(pos, "unknown address or variable " + std::string(t.text));
+    }
+
+    // R[i]=expr and array[i]=expr
+    if (peekIs(Tok::LBracket, 1)) {
+        const LocalVar* var = findLocal(u);
+        if (u == "R" || var) {
+            ++m_pos;
+            Word w;
+            w.kind = WordKind::Assign;
+            w.pos = pos;
+            if (var) {
+                w.target = AssignTarget::Local;
+                w.code = var->slot;
+                w.arraySize = var->size;
+                w.expr2 = parseElement(*var, 0);
+            } else {
+                w.target = AssignTarget::RIndirect;
+                ++m_pos;
+                w.expr2 = parseExpr();
+                if (w.expr2 >= 0 && !peekIs(Tok::RBracket))
+                    return error(here(), "']' expected");
+                ++m_pos;
+            }
+            if (w.expr2 < 0)
+                return false;
+            if (!peekIs(Tok::Assign))
+                return error(here(), "'=' expected");
+            ++m_pos;
+            w.expr = parseExpr();
+            if (w.expr < 0)
+                return false;
+            addWord(block, WordKind::Assign, pos) = w;
+            return true;
+        }
+    }
+
+    // NAME( : cycles, MSG, keywords with arguments, subprogram calls with arguments.
+    if (peekIs(Tok::LParen, 1)) {
+        ++m_pos;
+        if (axis >= 0 || centre >= 0 || isAddressLetter(u))
+            return error(posOf(*peek()), "'=' missing before the expression of " + std::string(t.text) + " (write " +
+                                             std::string(t.text) + "=(...))");
+        if (u == "MSG") {
+            const Pos open = here();
+            ++m_pos;
+            Word& w = addWord(block, WordKind::Msg, pos);
+            w.code = -1;
+            if (peekIs(Tok::String)) {
+                w.code = addText(peek()->text);
+                ++m_pos;
+            }
+            if (!peekIs(Tok::RParen))
+                return error(atEnd() ? here() : posOf(*peek()),
+                             "MSG takes one text: '(' at column " + std::to_string(open.column) + " is not closed");
+            ++m_pos;
+            return true;
+        }
+        const bool cycle =
+            u.size() > 5 && u.compare(0, 5, "CYCLE") == 0 && u.find_first_not_of("0123456789", 5) == std::string::npos;
+        if (block.callWord >= 0)
+            return error(pos, "one cycle or subprogram call per block");
+        block.callWord = static_cast<std::int32_t>(m_p.words.size());
+        Word& w = addWord(block, WordKind::Call, pos);
+        w.code = addText(u);
+        if (cycle) {
+            int number = 0;
+            std::from_chars(u.data() + 5, u.data() + u.size(), number);
+            w.kind = number == 800 ? WordKind::Keyword : WordKind::Cycle;
+            w.code = number == 800 ? static_cast<std::int32_t>(Keyword::Cycle800) : number;
+        } else if (u == "SETAL") {
+            w.kind = WordKind::Keyword;
+            w.code = static_cast<std::int32_t>(Keyword::SetAl);
+        } else if (u == "TRAORI" || u == "TRAFOOF" || isPassiveKeyword(u) || u == "ORIRESET" || u == "TRANSMIT" ||
+                   u == "TRACYL") {
+            w.kind = u == "TRAORI" ? WordKind::Keyword : WordKind::Passive;
+            w.code = static_cast<std::int32_t>(Keyword::TraOri);
+            block.callWord = -1;
+        } else {
+            block.text = w.code;
+        }
+        return parseCallArgs(block);
+    }
+
+    // Keywords on their own.
+    if (u == "DIAMON" || u == "DIAMOF" || u == "TRAORI" || u == "TRAFOOF" || u == "RET" || u == "STOPRE") {
+        const Keyword k = u == "DIAMON"    ? Keyword::DiamOn
+                          : u == "DIAMOF"  ? Keyword::DiamOf
+                          : u == "TRAORI"  ? Keyword::TraOri
+                          : u == "TRAFOOF" ? Keyword::TraFoof
+                          : u == "RET"     ? Keyword::Ret
+                                           : Keyword::Stopre;
+        addWord(block, WordKind::Keyword, pos).code = static_cast<std::int32_t>(k);
+        ++m_pos;
+        return true;
+    }
+    if (isFrameKeyword(u)) {
+        // Programmable frames: kept as pass-through text with a warning (the trace stays in the
+        // programmed frame, as the CL the post wrote it from).
+        const Token& last = m_tokens[m_end - 1];
+        Word& w = addWord(block, WordKind::Keyword, pos);
+        w.code = static_cast<std::int32_t>(Keyword::Frame);
+        if (last.line == t.line)
+            block.text = addText(std::string_view(t.text.data(), last.text.data() + last.text.size() - t.text.data()));
+        else
+            block.text = addText(t.text);
+        m_pos = m_end;
+        return true;
+    }
+    if (isPassiveKeyword(u)) {
+        addWord(block, WordKind::Passive, pos);
+        ++m_pos;
+        return true;
+    }
+
+    std::string_view letters, digits;
+    if (splitAddress(u, letters, digits)) {
+        ++m_pos;
+        const int ax = axisIndex(letters);
+        const int ce = centreIndex(letters);
+        const bool integral = digits.find('.') == std::string_view::npos;
+        if (letters == "G" || letters == "M") {
+            if (!integral || digits.size() > 4)
+                return error(pos, "invalid " + std::string(letters) + " code " + std::string(t.text));
+            int code = 0;
+            std::from_chars(digits.data(), digits.data() + digits.size(), code);
+            addWord(block, letters == "G" ? WordKind::G : WordKind::M, pos).code = code;
+            if (letters == "M" && code == 6)
+                m_p.hasM6 = true;
+            return true;
+        }
+        WordKind kind = WordKind::Passive;
+        std::uint8_t index = 0;
+        if (ax >= 0) {
+            kind = WordKind::Axis;
+            index = static_cast<std::uint8_t>(ax);
+        } else if (ce >= 0) {
+            kind = WordKind::Centre;
+            index = static_cast<std::uint8_t>(ce);
+        } else if (letters == "F") {
+            kind = WordKind::F;
+        } else if (letters == "S") {
+            kind = WordKind::S;
+        } else if (letters == "T") {
+            kind = WordKind::T;
+        } else if (letters == "D") {
+            kind = WordKind::D;
+        } else if (letters == "H") {
+            kind = WordKind::Passive;
+        } else if (letters == "N") {
+            return true;  // a block number inside the block: ignored
+        } else if (letters == "R") {
+            return error(pos, u + " needs '=' (" + u + "=value)");
+        } else if (letters == "L" && integral) {
+            --m_pos;  // L123: a subprogram call, handled below
+            goto call;
+        } else if (letters == "P" && integral) {
+            return error(pos, "P (repetitions) belongs after a subprogram name");
+        } else {
+            --m_pos;
+            goto call;
+        }
+        Word& w = addWord(block, kind, pos);
+        w.index = index;
+        w.expr = constant(numberOf(digits), pos);
+        return true;
+    }
+    // A letter with the number after a sign or a space: X-10, X .5
+    if (isAddressLetter(u) &&
+        (peekIs(Tok::Number, 1) || ((peekIs(Tok::Minus, 1) || peekIs(Tok::Plus, 1)) && peekIs(Tok::Number, 2)))) {
+        ++m_pos;
+        const bool minus = peekIs(Tok::Minus);
+        if (!peekIs(Tok::Number))
+            ++m_pos;
+        const double v = minus ? -peek()->number : peek()->number;
+        ++m_pos;
+        if (u == "G" || u == "M") {
+            if (v != static_cast<int>(v) || v < 0 || v > 9999)
+                return error(pos, "invalid " + u + " code");
+            addWord(block, u == "G" ? WordKind::G : WordKind::M, pos).code = static_cast<int>(v);
+            if (u == "M" && v == 6)
+                m_p.hasM6 = true;
+            return true;
+        }
+        if (u == "N" || u == "H" || u == "P" || u == "L")
+            return error(pos, "unexpected " + u + " word");
+        Word& w = addWord(block,
+                          axis >= 0     ? WordKind::Axis
+                          : centre >= 0 ? WordKind::Centre
+                          : u == "F"    ? WordKind::F
+                          : u == "S"    ? WordKind::S
+                          : u == "T"    ? WordKind::T
+                                        : WordKind::D,
+                          pos);
+        w.index = static_cast<std::uint8_t>(axis >= 0 ? axis : centre >= 0 ? centre : 0);
+        w.expr = constant(v, pos);
+        return true;
+    }
+
+call:
+    // A name on its own (optionally with P repetitions) calls a subprogram.
+    if (block.wordCount == 0 && block.callWord < 0 && u.size() <= 31 &&
+        (m_pos + 1 == m_end || (m_pos + 2 <= m_end && peek(1)->kind == Tok::Name && peek(1)->text.size() > 1 &&
+                                (peek(1)->text[0] == 'P' || peek(1)->text[0] == 'p')))) {
+        block.callWord = static_cast<std::int32_t>(m_p.words.size());
+        Word& w = addWord(block, WordKind::Call, pos);
+        w.code = addText(u);
+        block.text = w.code;
+        ++m_pos;
+        if (!atEnd()) {
+            const std::string p = upper(peek()->text);
+            std::string_view l, d;
+            if (!splitAddress(p, l, d) || l != "P" || d.find('.') != std::string_view::npos)
+                return error(posOf(*peek()), "unexpected " + std::string(peek()->text) + " after the call");
+            block.expr2 = constant(numberOf(d), posOf(*peek()));
+            ++m_pos;
+        }
+        return true;
+    }
+    std::string message = "unknown word " + std::string(t.text);
+    if (u.size() >= 2 && u[0] == 'G' && u.find_first_not_of("O", 1) == std::string::npos)
+        message += " (the letter O where G0 has a zero?)";
+    return error(pos, message);
+}
+
+}  // namespace camwb::nc::sinumerik

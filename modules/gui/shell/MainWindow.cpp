@@ -1,8 +1,12 @@
 #include "gui/shell/MainWindow.h"
 
+#include "base/AtomicFile.h"
 #include "camwb_version.h"
 #include "gui/actions/ActionRegistry.h"
 #include "gui/editor/NcEditor.h"
+#include "gui/inspector/InspectorPanel.h"
+#include "gui/inspector/ModalStatePanel.h"
+#include "gui/inspector/NcInspector.h"
 #include "gui/shell/JobTree.h"
 #include "gui/shell/ProfileDialog.h"
 #include "gui/shell/ReportView.h"
@@ -46,7 +50,9 @@ MainWindow::MainWindow(QWidget* parent) :
     m_editor(new NcEditor(this)),
     m_report(new ReportView(this)),
     m_jobTree(new JobTree(*m_workbench, this)),
-    m_progress(new QProgressBar(this))
+    m_progress(new QProgressBar(this)),
+    m_inspector(new NcInspector(this)),
+    m_inspectorPanel(new InspectorPanel(this))
 {
     setObjectName(QStringLiteral("mainWindow"));
     m_view->setObjectName(QStringLiteral("view3d"));
@@ -58,9 +64,12 @@ MainWindow::MainWindow(QWidget* parent) :
     QDockWidget* ncDock = addDock(this, tr("NC program"), QStringLiteral("ncDock"), m_editor, Qt::RightDockWidgetArea);
     QDockWidget* reportDock =
         addDock(this, tr("Report"), QStringLiteral("reportDock"), m_report, Qt::BottomDockWidgetArea);
+    QDockWidget* modalDock =
+        addDock(this, tr("NC inspector"), QStringLiteral("modalDock"), m_inspectorPanel, Qt::LeftDockWidgetArea);
     // Wide enough for a full NC block and the job tree's values; the 3D view takes the rest.
     resizeDocks({jobDock, ncDock}, {330, 470}, Qt::Horizontal);
     resizeDocks({reportDock}, {140}, Qt::Vertical);
+    resizeDocks({jobDock, modalDock}, {260, 420}, Qt::Vertical);
 
     m_progress->setMaximumWidth(220);
     m_progress->setRange(0, 100);
@@ -74,6 +83,7 @@ MainWindow::MainWindow(QWidget* parent) :
     m_actions->buildToolBar(toolBar);
 
     connectWorkbench();
+    connectInspector();
     connect(m_jobTree, &JobTree::editOperationRequested, this, &MainWindow::editOperation);
 
     QString reason;
@@ -85,7 +95,28 @@ MainWindow::MainWindow(QWidget* parent) :
 
 MainWindow::~MainWindow() = default;
 
-bool MainWindow::openJob(const QString& path) { return m_workbench->openJob(path); }
+bool MainWindow::openJob(const QString& path)
+{
+    if (!path.endsWith(QLatin1String(".camwb"), Qt::CaseInsensitive))
+        return openNcFile(path);
+    return m_workbench->openJob(path);
+}
+
+bool MainWindow::openNcFile(const QString& path)
+{
+    auto text = base::readTextFile(path.toStdString());
+    if (!text) {
+        m_report->append(Workbench::Severity::Error, QString::fromStdString(text.error().toString()));
+        return false;
+    }
+    m_inspector->setFilePath(QFileInfo(path).absoluteFilePath());
+    m_editor->setText(QString::fromStdString(text.value()));
+    m_editor->setReadOnly(false);
+    m_report->append(Workbench::Severity::Info, tr("Opened NC program %1").arg(path));
+    m_fitWithTrace = true;
+    m_inspector->traceNow();
+    return true;
+}
 
 void MainWindow::registerActions()
 {
@@ -155,6 +186,17 @@ void MainWindow::registerActions()
             m_workbench->saveNc(path);
     });
 
+    const QString nc = tr("&NC");
+    add({"Cam.Nc.Open", tr("&Open NC Program…"), nc, QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_O), true}, [this] {
+        const QString path = QFileDialog::getOpenFileName(
+            this, tr("Open NC program"), {},
+            tr("NC programs (*.mpf *.spf *.nc *.ngc *.tap *.h *.iso *.cnc *.txt);;All files (*)"));
+        if (!path.isEmpty())
+            openNcFile(path);
+    });
+    add({"Cam.Nc.Trace", tr("&Trace NC Program"), nc, QKeySequence(Qt::Key_F5), true},
+        [this] { m_inspector->traceNow(); });
+
     add({"Cam.View.Isometric", tr("&Isometric"), view, QKeySequence(Qt::Key_0), true, true},
         [this] { m_view->setViewPreset(View3D::Preset::Isometric); });
     add({"Cam.View.Top", tr("&Top"), view, QKeySequence(Qt::Key_1), true},
@@ -181,12 +223,22 @@ void MainWindow::connectWorkbench()
         m_fitWithToolpath = true;
     });
     connect(m_workbench, &Workbench::toolpathChanged, this, [this] {
+        // Shown until the posted program's trace replaces it (or for good when chosen so).
         m_view->setToolpath(m_workbench->toolpath());
+        m_inspector->setShowInView(false);
+        refreshToolList();
         // The first toolpath of a new model is fitted too; later ones keep the user's camera.
         if (std::exchange(m_fitWithToolpath, false))
             m_view->fitAll();
     });
-    connect(m_workbench, &Workbench::ncChanged, this, [this] { m_editor->setText(m_workbench->ncText()); });
+    connect(m_workbench, &Workbench::ncChanged, this, [this] {
+        // The posted program is traced as the machine will read it; its name gives the dialect.
+        const QString job = QString::fromStdString(m_workbench->document().path());
+        const QString base = job.isEmpty() ? tr("posted") : QFileInfo(job).completeBaseName();
+        m_inspector->setFilePath(base + '.' + m_workbench->ncExtension());
+        m_editor->setText(m_workbench->ncText());
+        m_inspector->traceNow();
+    });
     connect(m_workbench, &Workbench::jobChanged, this, &MainWindow::updateTitle);
     connect(m_workbench, &Workbench::busyChanged, this, [this](bool busy) {
         m_progress->setVisible(busy);
@@ -197,6 +249,49 @@ void MainWindow::connectWorkbench()
         m_progress->setValue(percent);
         statusBar()->showMessage(what);
     });
+}
+
+void MainWindow::connectInspector()
+{
+    m_inspector->attach(m_editor, m_view, m_inspectorPanel->modalPanel());
+    connect(m_inspector, &NcInspector::message, m_report, &ReportView::append);
+    connect(m_inspector, &NcInspector::busyChanged, this,
+            [this](bool busy) { statusBar()->showMessage(busy ? tr("Tracing the NC program…") : tr("Ready")); });
+    connect(m_inspector, &NcInspector::traceFinished, this, [this] {
+        // A trace that drew nothing (an interpreter error on the first block) leaves the
+        // operations' toolpath in view; the report says why.
+        const auto trace = m_inspector->trace();
+        const toolpath::ToolpathStats stats = toolpath::statistics(trace->program);
+        const bool drawable = stats.rapids + stats.lines + stats.arcs + stats.helices + stats.cycles > 0;
+        if (m_inspectorPanel->showsNcTrace() && (drawable || m_workbench->toolpath().empty()))
+            m_inspector->setShowInView(true);
+        if (std::exchange(m_fitWithTrace, false))
+            m_view->fitAll();
+        refreshToolList();
+    });
+    connect(m_inspector, &NcInspector::pickedInSubprogram, this, [this](const QString& where) {
+        statusBar()->showMessage(tr("Segment from the called program %1; the editor shows its call.").arg(where), 5000);
+    });
+    connect(m_inspectorPanel, &InspectorPanel::dialectChosen, m_inspector, &NcInspector::setDialect);
+    connect(m_inspectorPanel, &InspectorPanel::toolVisibilityChanged, m_view, &View3D::setToolVisible);
+    connect(m_inspectorPanel, &InspectorPanel::showNcTraceChosen, this, [this](bool show) {
+        if (show) {
+            m_inspector->setShowInView(true);
+        } else {
+            m_inspector->setShowInView(false);
+            m_view->setToolpath(m_workbench->toolpath());
+        }
+        refreshToolList();
+    });
+}
+
+void MainWindow::refreshToolList()
+{
+    std::vector<int> hidden;
+    for (int tool : m_view->toolpathTools())
+        if (!m_view->isToolVisible(tool))
+            hidden.push_back(tool);
+    m_inspectorPanel->setTools(m_view->toolpathTools(), hidden);
 }
 
 void MainWindow::updateTitle()

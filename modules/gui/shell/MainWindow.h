@@ -9,6 +9,8 @@ class QProgressBar;
 namespace camwb::gui {
 
 class ActionRegistry;
+class InspectorPanel;
+class NcInspector;
 class JobTree;
 class NcEditor;
 class ReportView;
@@ -27,8 +29,13 @@ public:
     NcEditor* ncEditor() const { return m_editor; }
     ReportView* reportView() const { return m_report; }
     JobTree* jobTree() const { return m_jobTree; }
+    NcInspector* inspector() const { return m_inspector; }
+    InspectorPanel* inspectorPanel() const { return m_inspectorPanel; }
 
+    // A .camwb job, or any other file as an NC program (openNcFile).
     bool openJob(const QString& path);
+    // Reads an NC program of any dialect into the editor (editable) and traces it.
+    bool openNcFile(const QString& path);
 
 protected:
     void closeEvent(QCloseEvent* event) override;
@@ -36,6 +43,8 @@ protected:
 private:
     void registerActions();
     void connectWorkbench();
+    void connectInspector();
+    void refreshToolList();
     void updateTitle();
     void editOperation(int index);
     bool confirmDiscard();
@@ -47,7 +56,10 @@ private:
     ReportView* m_report;
     JobTree* m_jobTree;
     QProgressBar* m_progress;
+    NcInspector* m_inspector;
+    InspectorPanel* m_inspectorPanel;
     bool m_fitWithToolpath = false;
+    bool m_fitWithTrace = false;
 };
 
 }  // namespace camwb::gui

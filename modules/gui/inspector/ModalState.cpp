@@ -1,0 +1,183 @@
+#include "gui/inspector/ModalState.h"
+
+#include "toolpath/CycleExpansion.h"
+#include "toolpath/Toolpath.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <variant>
+
+namespace camwb::gui {
+
+namespace {
+
+template <class... Ts> struct Overloaded : Ts... {
+    using Ts::operator()...;
+};
+template <class... Ts> Overloaded(Ts...) -> Overloaded<Ts...>;
+
+const char* cycleName(toolpath::CycleKind kind)
+{
+    switch (kind) {
+    case toolpath::CycleKind::Drill:
+        return "drill";
+    case toolpath::CycleKind::DrillDwell:
+        return "drill with dwell";
+    case toolpath::CycleKind::Peck:
+        return "peck drill";
+    case toolpath::CycleKind::ChipBreak:
+        return "chip-break drill";
+    case toolpath::CycleKind::Tap:
+        return "tap";
+    case toolpath::CycleKind::Bore:
+        return "bore";
+    }
+    return "cycle";
+}
+
+bool leavesPlane(const ModalState& before, const toolpath::Arc& arc)
+{
+    if (!before.hasPosition)
+        return false;
+    const base::Vec3 n = arc.normal;
+    const double length = n.length();
+    if (length < 1e-12)
+        return false;
+    return std::abs(n.dot(arc.to - before.position)) / length > 1e-6;
+}
+
+}  // namespace
+
+void applyRecord(ModalState& state, const toolpath::Record& record)
+{
+    std::visit(Overloaded{
+                   [&](const toolpath::Rapid& r) {
+                       state.position = r.to;
+                       state.hasPosition = true;
+                   },
+                   [&](const toolpath::Linear& l) {
+                       state.position = l.to;
+                       state.hasPosition = true;
+                       state.feed = l.feedMmPerMin;
+                   },
+                   [&](const toolpath::Arc& a) {
+                       state.position = a.to;
+                       state.hasPosition = true;
+                       state.feed = a.feedMmPerMin;
+                       state.arcNormal = a.normal;
+                       state.hasArcNormal = true;
+                   },
+                   [&](const toolpath::ToolAxisMove& m) {
+                       state.position = m.tip;
+                       state.hasPosition = true;
+                       if (m.feedMmPerMin > 0)
+                           state.feed = m.feedMmPerMin;
+                   },
+                   [&](const toolpath::Cycle& c) {
+                       if (!c.holes.empty()) {
+                           const base::Vec3& last = c.holes.back();
+                           state.position = {last.x, last.y, toolpath::cycleReturnZ(c)};
+                           state.hasPosition = true;
+                       }
+                       state.feed = c.feedMmPerMin;
+                   },
+                   [&](const toolpath::ToolChange& t) { state.tool = t.tool.number; },
+                   [&](const toolpath::Spindle& s) {
+                       state.spindleRpm = s.rpm;
+                       state.spindleClockwise = s.clockwise;
+                       state.surfaceSpeedMPerMin = s.surfaceSpeedMPerMin;
+                   },
+                   [&](const toolpath::Coolant& c) { state.coolant = c.mode; },
+                   [&](const toolpath::FeedModeChange& f) { state.feedMode = f.mode; },
+                   [&](const toolpath::WorkOffset& w) { state.workOffset = w.index; },
+                   [&](const toolpath::CutterComp& c) { state.compensation = c.side; },
+                   [](const auto&) {},
+               },
+               record);
+}
+
+std::string describeRecord(const toolpath::Record& record)
+{
+    char buffer[96];
+    return std::visit(
+        Overloaded{
+            [](const toolpath::Rapid&) -> std::string { return "rapid"; },
+            [](const toolpath::Linear&) -> std::string { return "linear"; },
+            [](const toolpath::Arc& a) -> std::string { return a.clockwise ? "arc CW" : "arc CCW"; },
+            [](const toolpath::ToolAxisMove& m) -> std::string {
+                return m.feedMmPerMin > 0 ? "5-axis linear" : "5-axis rapid";
+            },
+            [&](const toolpath::Cycle& c) -> std::string {
+                std::snprintf(buffer, sizeof buffer, "cycle %s (%zu hole%s)", cycleName(c.kind), c.holes.size(),
+                              c.holes.size() == 1 ? "" : "s");
+                return buffer;
+            },
+            [&](const toolpath::ToolChange& t) -> std::string {
+                return "tool change T" + std::to_string(t.tool.number);
+            },
+            [](const toolpath::Spindle& s) -> std::string { return s.rpm > 0 ? "spindle on" : "spindle stop"; },
+            [](const toolpath::Coolant&) -> std::string { return "coolant"; },
+            [](const toolpath::FeedModeChange&) -> std::string { return "feed mode"; },
+            [](const toolpath::WorkOffset&) -> std::string { return "work offset"; },
+            [&](const toolpath::Dwell& w) -> std::string {
+                std::snprintf(buffer, sizeof buffer, "dwell %.3g s", w.seconds);
+                return buffer;
+            },
+            [](const toolpath::CutterComp&) -> std::string { return "compensation"; },
+            [](const toolpath::Comment&) -> std::string { return "comment"; },
+            [](const toolpath::ProgramStop& p) -> std::string { return p.optional ? "optional stop" : "program stop"; },
+            [](const auto&) -> std::string { return {}; },
+        },
+        record);
+}
+
+std::string planeOfNormal(const base::Vec3& normal)
+{
+    const double length = normal.length();
+    if (length > 1e-12) {
+        const base::Vec3 n = normal * (1.0 / length);
+        if (std::abs(std::abs(n.z) - 1.0) < 1e-9)
+            return "G17 (XY)";
+        if (std::abs(std::abs(n.y) - 1.0) < 1e-9)
+            return "G18 (ZX)";
+        if (std::abs(std::abs(n.x) - 1.0) < 1e-9)
+            return "G19 (YZ)";
+    }
+    char buffer[96];
+    std::snprintf(buffer, sizeof buffer, "normal (%.3f, %.3f, %.3f)", normal.x, normal.y, normal.z);
+    return buffer;
+}
+
+ModalStateTable::ModalStateTable(const toolpath::Toolpath& program, std::size_t stride) :
+    m_stride(stride > 0 ? stride : 1024)
+{
+    ModalState state;
+    m_checkpoints.reserve(program.size() / m_stride + 1);
+    for (std::size_t i = 0; i < program.size(); ++i) {
+        if (i % m_stride == 0)
+            m_checkpoints.push_back(state);
+        applyRecord(state, program.record(i));
+    }
+}
+
+ModalState ModalStateTable::before(const toolpath::Toolpath& program, std::size_t index) const
+{
+    index = std::min(index, program.size());
+    if (m_checkpoints.empty())
+        return {};
+    const std::size_t checkpoint = std::min(index / m_stride, m_checkpoints.size() - 1);
+    ModalState state = m_checkpoints[checkpoint];
+    for (std::size_t i = checkpoint * m_stride; i < index; ++i)
+        applyRecord(state, program.record(i));
+    return state;
+}
+
+std::string describeMove(const ModalState& before, const toolpath::Record& record)
+{
+    if (const auto* arc = std::get_if<toolpath::Arc>(&record); arc != nullptr && leavesPlane(before, *arc))
+        return arc->clockwise ? "helix CW" : "helix CCW";
+    return describeRecord(record);
+}
+
+}  // namespace camwb::gui

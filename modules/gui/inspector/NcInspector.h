@@ -1,0 +1,99 @@
+// The NC inspector's controller: interprets the editor's text in its dialect on a worker thread
+// (debounced after edits, a newer trace supersedes an older one), shows the result in the 3D
+// view and links both ways: a picked segment moves the editor to its block, the cursor's block
+// is highlighted in 3D and its modal state goes to the panel. No widget logic lives here beyond
+// the connections; the trace itself is plain C++ (NcTrace).
+#pragma once
+
+#include "gui/inspector/NcTrace.h"
+#include "gui/shell/Workbench.h"
+
+#include <QObject>
+#include <QString>
+
+#include <memory>
+#include <optional>
+
+class QTimer;
+
+namespace camwb::gui {
+
+class ModalStatePanel;
+class NcEditor;
+class ToolpathScene;
+class View3D;
+
+// Wall-clock figures of the last finished trace (seconds), for the report and the benchmark.
+struct NcTraceTimings {
+    double interpret = 0;  // worker: nc::interpret into the recorder
+    double index = 0;      // worker: line index and modal checkpoints
+    double scene = 0;      // worker: tessellation and VTK polydata
+    double show = 0;       // GUI thread: actors into the view
+    double total = 0;      // from the request to the view holding the result
+};
+
+class NcInspector : public QObject {
+    Q_OBJECT
+public:
+    explicit NcInspector(QObject* parent = nullptr);
+    ~NcInspector() override;
+
+    // Connects the editor (edits, cursor), the view (picking) and the modal panel (may be null).
+    void attach(NcEditor* editor, View3D* view, ModalStatePanel* panel);
+
+    // nullopt = guess from the text and file name (nc::guessDialect).
+    void setDialect(std::optional<nc::Dialect> dialect);
+    std::optional<nc::Dialect> dialect() const { return m_dialect; }
+    // The program's file: its name for diagnostics and the dialect guess, its folder for calls.
+    void setFilePath(const QString& path);
+    QString filePath() const { return m_path; }
+    void setDebounceMs(int milliseconds);
+
+    // Whether finished traces go to the 3D view; off while it shows the operations' toolpath.
+    void setShowInView(bool show);
+    bool showsInView() const { return m_showInView; }
+
+    bool isTracing() const { return m_running > 0; }
+
+    std::shared_ptr<const NcTrace> trace() const { return m_trace; }
+    NcTraceTimings lastTimings() const { return m_timings; }
+    // Records highlighted for the editor's current line (all runs of it).
+    const std::vector<std::size_t>& highlightedRecords() const { return m_highlighted; }
+
+public slots:
+    void traceNow();       // interprets the editor's text now
+    void scheduleTrace();  // after the debounce delay (edits call this)
+
+signals:
+    void traceStarted();
+    void traceFinished();  // trace() holds the new result
+    void busyChanged(bool busy);
+    void message(camwb::gui::Workbench::Severity severity, const QString& text);
+    // A picked record from a called program, which the editor does not show ("SUB.SPF:12").
+    void pickedInSubprogram(const QString& where);
+
+private:
+    struct Result;
+    void onCursorLine(int line);
+    void onSegmentPicked(int segment, int record);
+    void finish(const std::shared_ptr<Result>& result);
+    void showLine(int line);
+    void reportDiagnostics(const NcTrace& trace);
+
+    NcEditor* m_editor = nullptr;
+    View3D* m_view = nullptr;
+    ModalStatePanel* m_panel = nullptr;
+    QTimer* m_debounce;
+    std::optional<nc::Dialect> m_dialect;
+    QString m_path;
+    bool m_showInView = true;
+    int m_running = 0;
+    quint64 m_generation = 0;
+    std::shared_ptr<std::atomic<bool>> m_cancelCurrent;
+    std::shared_ptr<const NcTrace> m_trace;
+    std::shared_ptr<const ToolpathScene> m_scene;
+    std::vector<std::size_t> m_highlighted;
+    NcTraceTimings m_timings;
+};
+
+}  // namespace camwb::gui

@@ -1,0 +1,75 @@
+// One interpretation of an NC program for the inspector: the recorded CL records with their
+// source lines, the diagnostics, and the indexes the GUI needs to link lines and records both
+// ways (line -> records, record -> line) and to show the modal state. Built on a worker thread;
+// plain C++, no Qt, so it is testable on its own.
+#pragma once
+
+#include "gui/inspector/ModalState.h"
+#include "nc/Dialect.h"
+#include "nc/Interpreter.h"
+#include "toolpath/Toolpath.h"
+
+#include <atomic>
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace camwb::gui {
+
+// What one line of the main program does: the state before its first record and after its
+// first run (a line inside a loop runs several times; `runs` counts them).
+struct LineState {
+    int line = 0;
+    std::size_t records = 0;  // over all runs
+    int runs = 0;
+    std::string move;  // "linear", "arc CW", "cycle drill (3 holes)", "" = no motion
+    ModalState before;
+    ModalState after;
+};
+
+struct NcTrace {
+    nc::Dialect dialect = nc::Dialect::Iso;
+    bool dialectGuessed = true;
+    toolpath::Toolpath program;
+    nc::InterpretResult result;  // diagnostics, files ([0] the program), completion
+    bool cancelled = false;      // a newer trace superseded this one; its records are incomplete
+    double interpretSeconds = 0;
+    double indexSeconds = 0;
+
+    // Records of a line of the main program (file 0), in execution order (a line in a loop has
+    // several runs). Subprogram records are not in here: see callerLine().
+    std::vector<std::size_t> recordsOfLine(int line) const;
+    // The main-program line a record belongs to: its own line, or for a record of a called
+    // program (SourceRef::file > 0) the main-program line last active before the call.
+    int lineOfRecord(std::size_t record) const;
+    // True when the record comes from a called program; `file`/`line` say where.
+    bool isInSubprogram(std::size_t record) const;
+    // "O1234.spf:12" for a subprogram record, "12" for the main program.
+    std::string whereOf(std::size_t record) const;
+
+    ModalState stateBefore(std::size_t record) const { return modal.before(program, record); }
+    // A line without records gets the state in force where the next recorded line starts.
+    LineState lineState(int line) const;
+
+    // (line, record) of main-program records, sorted by line then record.
+    std::vector<std::pair<int, std::uint32_t>> lineRecords;
+    // Starts of subprogram runs: (first record, calling main-program line), sorted by record.
+    std::vector<std::pair<std::uint32_t, int>> subprogramRuns;
+    ModalStateTable modal;
+};
+
+struct NcTraceRequest {
+    std::string text;
+    std::string path;                    // for diagnostics, the dialect guess and subprogram lookup
+    std::optional<nc::Dialect> dialect;  // nullopt: nc::guessDialect
+    const std::atomic<bool>* cancel = nullptr;
+};
+
+// Interprets the text (subprograms looked up in the folder of `path` when it has one) and builds
+// the indexes. Once `cancel` is set the rest of the run records nothing and the trace is marked
+// cancelled (the interpreter has no stop hook; see the inspector's notes).
+NcTrace traceNc(const NcTraceRequest& request);
+
+}  // namespace camwb::gui

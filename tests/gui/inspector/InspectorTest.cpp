@@ -1,0 +1,297 @@
+// The NC inspector against the real ISO interpreter: every 3D segment maps to the block that made
+// it, the cursor's block is highlighted and its modal state shown, a click in the real view (Xvfb)
+// moves the editor, edits re-trace after the debounce, tools can be hidden. Runs under Xvfb and
+// offscreen (no GL: everything but the clicks).
+#include "gui/editor/NcEditor.h"
+#include "gui/inspector/ModalState.h"
+#include "gui/inspector/ModalStatePanel.h"
+#include "gui/inspector/NcInspector.h"
+#include "gui/view3d/ToolpathPolylines.h"
+#include "gui/view3d/View3D.h"
+#include "toolpath/Toolpath.h"
+
+#include <QApplication>
+#include <QGuiApplication>
+#include <QSignalSpy>
+#include <QTest>
+
+#include <map>
+#include <set>
+
+using namespace camwb::gui;
+namespace tp = camwb::toolpath;
+
+namespace {
+
+// Line numbers are the test's expectations: keep them in step with the comments.
+const char* const kProgram = "(inspector test)\n"  // 1
+                             "G21 G90 G17 G54\n"   // 2
+                             "T1 M6\n"             // 3
+                             "S1000 M3 M8\n"       // 4
+                             "G0 X0 Y0 Z5\n"       // 5: first move, only positions
+                             "G1 Z-1 F100\n"       // 6
+                             "G1 X10\n"            // 7
+                             "G2 X20 Y0 I5 J0\n"   // 8
+                             "G0 Z5\n"             // 9
+                             "T2 M6\n"             // 10
+                             "G0 X30 Y0\n"         // 11
+                             "G1 Z-2 F200\n"       // 12
+                             "G3 X40 Y0 I5 J0\n"   // 13
+                             "G0 Z5\n"             // 14
+                             "M30\n";              // 15
+
+bool withGl() { return QGuiApplication::platformName() != QLatin1String("offscreen"); }
+
+// Editor, view, panel and inspector wired as the main window wires them.
+struct Rig {
+    NcEditor editor;
+    View3D view;
+    ModalStatePanel panel;
+    NcInspector inspector;
+
+    Rig()
+    {
+        inspector.attach(&editor, &view, &panel);
+        inspector.setFilePath(QStringLiteral("inspector-test.ngc"));
+    }
+
+    // Loads the text and waits for its trace; false (with the reason) when there is none.
+    bool load(const QString& text, QString* why)
+    {
+        QSignalSpy finished(&inspector, &NcInspector::traceFinished);
+        editor.setText(text);
+        inspector.traceNow();
+        if (!finished.wait(60000)) {
+            *why = QStringLiteral("no trace within a minute");
+            return false;
+        }
+        const auto trace = inspector.trace();
+        if (trace->program.empty() && trace->result.hasErrors()) {
+            *why = QStringLiteral("the ISO interpreter reports: ") +
+                   QString::fromStdString(trace->result.diagnostics.front().message);
+            return false;
+        }
+        return true;
+    }
+
+    // The main-program line of each segment's record.
+    std::vector<int> segmentLines() const
+    {
+        std::vector<int> lines;
+        for (const PathSegment& s : view.toolpathPolylines()->segments())
+            lines.push_back(inspector.trace()->lineOfRecord(s.record));
+        return lines;
+    }
+};
+
+#define LOAD_OR_SKIP(rig, text)                                                                                        \
+    do {                                                                                                               \
+        QString why;                                                                                                   \
+        if (!(rig).load((text), &why))                                                                                 \
+            QSKIP(qPrintable(why));                                                                                    \
+    } while (false)
+
+}  // namespace
+
+class InspectorTest : public QObject {
+    Q_OBJECT
+
+private slots:
+    void modalTableMatchesAPlainReplay()
+    {
+        tp::Toolpath path;
+        tp::ToolChange change;
+        for (int i = 0; i < 50; ++i) {
+            change.tool.number = i % 3 + 1;
+            path.add(change);
+            path.add(tp::Spindle{1000.0 + i, i % 2 == 0});
+            path.add(tp::Linear{{double(i), 0, 0}, 100.0 + i});
+            tp::Arc arc;
+            arc.to = {double(i), 1, 0};
+            arc.center = {double(i), 0.5, 0};
+            arc.normal = {0, 1, 0};
+            path.add(arc);
+        }
+        const ModalStateTable table(path, 7);
+        ModalState plain;
+        for (std::size_t i = 0; i <= path.size(); ++i) {
+            const ModalState fromTable = table.before(path, i);
+            QCOMPARE(fromTable.tool, plain.tool);
+            QCOMPARE(fromTable.spindleRpm, plain.spindleRpm);
+            QCOMPARE(fromTable.feed, plain.feed);
+            QCOMPARE(fromTable.position.x, plain.position.x);
+            QCOMPARE(fromTable.hasArcNormal, plain.hasArcNormal);
+            if (i < path.size())
+                applyRecord(plain, path.record(i));
+        }
+        QCOMPARE(planeOfNormal({0, 1, 0}), std::string("G18 (ZX)"));
+        QCOMPARE(planeOfNormal({0, 0, -1}), std::string("G17 (XY)"));
+    }
+
+    void everySegmentMapsToItsLine()
+    {
+        Rig rig;
+        LOAD_OR_SKIP(rig, QString::fromLatin1(kProgram));
+        const ToolpathPolylines* polylines = rig.view.toolpathPolylines();
+        QVERIFY(polylines != nullptr);
+        const std::vector<int> lines = rig.segmentLines();
+        std::map<PathSegmentKind, std::set<int>> linesByKind;
+        for (std::size_t s = 0; s < lines.size(); ++s)
+            linesByKind[polylines->segments()[s].kind].insert(lines[s]);
+        QCOMPARE(linesByKind[PathSegmentKind::Feed], (std::set<int>{6, 7, 12}));
+        QCOMPARE(linesByKind[PathSegmentKind::Arc], (std::set<int>{8, 13}));
+        QCOMPARE(linesByKind[PathSegmentKind::Rapid], (std::set<int>{9, 11, 14}));
+        // The arc of line 8 is tessellated: many segments, one block.
+        QVERIFY(std::count(lines.begin(), lines.end(), 8) > 10);
+    }
+
+    void cursorLineHighlightsItsSegments()
+    {
+        Rig rig;
+        LOAD_OR_SKIP(rig, QString::fromLatin1(kProgram));
+        const std::vector<int> lines = rig.segmentLines();
+        for (int line : {8, 12, 13}) {
+            rig.editor.gotoLine(line);
+            const auto& highlighted = rig.view.highlightedSegments();
+            QCOMPARE(int(highlighted.size()), int(std::count(lines.begin(), lines.end(), line)));
+            for (std::uint32_t s : highlighted)
+                QCOMPARE(lines[s], line);
+        }
+        rig.editor.gotoLine(2);  // no motion: nothing highlighted
+        QVERIFY(rig.view.highlightedSegments().empty());
+    }
+
+    void modalStateAtChosenLines()
+    {
+        Rig rig;
+        LOAD_OR_SKIP(rig, QString::fromLatin1(kProgram));
+        rig.editor.gotoLine(8);
+        QCOMPARE(rig.panel.value(QStringLiteral("move")), QStringLiteral("arc CW"));
+        QCOMPARE(rig.panel.value(QStringLiteral("tool")), QStringLiteral("T1"));
+        QVERIFY(rig.panel.value(QStringLiteral("feed")).startsWith(QLatin1String("100.0 mm/min")));
+        QVERIFY(rig.panel.value(QStringLiteral("spindle")).startsWith(QLatin1String("1000 rpm CW")));
+        QVERIFY(rig.panel.value(QStringLiteral("coolant")).startsWith(QLatin1String("flood")));
+        QVERIFY(rig.panel.value(QStringLiteral("plane")).startsWith(QLatin1String("G17")));
+        QCOMPARE(rig.panel.value(QStringLiteral("before")), QStringLiteral("X10.000 Y0.000 Z-1.000"));
+        QCOMPARE(rig.panel.value(QStringLiteral("after")), QStringLiteral("X20.000 Y0.000 Z-1.000"));
+
+        rig.editor.gotoLine(13);
+        QCOMPARE(rig.panel.value(QStringLiteral("move")), QStringLiteral("arc CCW"));
+        QCOMPARE(rig.panel.value(QStringLiteral("tool")), QStringLiteral("T2"));
+        QVERIFY(rig.panel.value(QStringLiteral("feed")).startsWith(QLatin1String("200.0 mm/min")));
+        QCOMPARE(rig.panel.value(QStringLiteral("after")), QStringLiteral("X40.000 Y0.000 Z-2.000"));
+
+        rig.editor.gotoLine(4);
+        QCOMPARE(rig.panel.value(QStringLiteral("move")), QStringLiteral("spindle on"));
+        rig.editor.gotoLine(1);
+        QCOMPARE(rig.panel.value(QStringLiteral("move")), QStringLiteral("no motion"));
+        QVERIFY(rig.panel.value(QStringLiteral("before")).startsWith(QLatin1String("unknown")));
+    }
+
+    void clickInTheViewMovesTheEditor()
+    {
+        if (!withGl())
+            QSKIP("picking needs the GL view (Xvfb run)");
+        Rig rig;
+        rig.view.resize(800, 600);
+        rig.view.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&rig.view));
+        LOAD_OR_SKIP(rig, QString::fromLatin1(kProgram));
+        rig.view.setViewPreset(View3D::Preset::Top);
+        QTest::qWait(50);
+
+        const ToolpathPolylines* polylines = rig.view.toolpathPolylines();
+        const std::vector<int> lines = rig.segmentLines();
+        auto* gl = rig.view.findChild<QWidget*>(QStringLiteral("view3dGl"));
+        QVERIFY(gl != nullptr);
+        for (int line : {13, 7}) {
+            // The middle segment of the block, clicked at its middle.
+            std::vector<std::size_t> ofLine;
+            for (std::size_t s = 0; s < lines.size(); ++s)
+                if (lines[s] == line)
+                    ofLine.push_back(s);
+            QVERIFY(!ofLine.empty());
+            const PathSegment& segment = polylines->segments()[ofLine[ofLine.size() / 2]];
+            const camwb::base::Vec3 middle =
+                (polylines->points()[segment.from] + polylines->points()[segment.to]) * 0.5;
+            const std::optional<QPointF> at = rig.view.projectToWidget(middle);
+            QVERIFY(at.has_value());
+            QVERIFY(rig.view.rect().contains(at->toPoint()));
+            QSignalSpy picked(&rig.view, &View3D::segmentPicked);
+            QTest::mouseClick(gl, Qt::LeftButton, {}, gl->mapFrom(&rig.view, at->toPoint()));
+            QCOMPARE(picked.count(), 1);
+            QCOMPARE(rig.editor.currentLine(), line);
+            QVERIFY(!rig.view.highlightedSegments().empty());  // the jump highlights the block
+        }
+        // Far from every segment: nothing picked, the editor stays.
+        QSignalSpy picked(&rig.view, &View3D::segmentPicked);
+        QTest::mouseClick(gl, Qt::LeftButton, {}, QPoint(3, 3));
+        QCOMPARE(picked.count(), 0);
+        QCOMPARE(rig.editor.currentLine(), 7);
+    }
+
+    void editsRetraceAfterTheDebounce()
+    {
+        Rig rig;
+        LOAD_OR_SKIP(rig, QString::fromLatin1(kProgram));
+        rig.inspector.setDebounceMs(150);
+        const int before = rig.view.toolpathSegmentCount();
+        QSignalSpy started(&rig.inspector, &NcInspector::traceStarted);
+        QSignalSpy finished(&rig.inspector, &NcInspector::traceFinished);
+        QString edited = QString::fromLatin1(kProgram);
+        // Three quick edits (as typing makes them): one trace after the last.
+        for (const char* move : {"G1 X45 F300\n", "G1 X45 Y5 F300\n", "G1 X45 Y5 F300\nG1 X50 Y5\n"}) {
+            QString text = edited;
+            text.replace(QLatin1String("M30\n"), QLatin1String(move) + QStringLiteral("M30\n"));
+            rig.editor.setText(text);
+        }
+        QVERIFY(finished.wait(60000));
+        QCOMPARE(started.count(), 1);
+        QCOMPARE(rig.view.toolpathSegmentCount(), before + 2);
+    }
+
+    void newerTraceSupersedesOlder()
+    {
+        Rig rig;
+        LOAD_OR_SKIP(rig, QString::fromLatin1(kProgram));
+        QSignalSpy finished(&rig.inspector, &NcInspector::traceFinished);
+        QString longer = QString::fromLatin1(kProgram);
+        longer.replace(QLatin1String("M30\n"), QLatin1String("G1 X60 F300\nM30\n"));
+        rig.inspector.traceNow();  // the old text: superseded by the next one
+        rig.editor.setText(longer);
+        rig.inspector.traceNow();
+        QVERIFY(finished.wait(60000));
+        QTRY_VERIFY(!rig.inspector.isTracing());
+        QCOMPARE(finished.count(), 1);
+        const std::vector<int> lines = rig.segmentLines();
+        QCOMPARE(std::count(lines.begin(), lines.end(), 15), std::ptrdiff_t(1));  // G1 X60
+    }
+
+    void toolsCanBeHidden()
+    {
+        Rig rig;
+        LOAD_OR_SKIP(rig, QString::fromLatin1(kProgram));
+        QCOMPARE(rig.view.toolpathTools(), (std::vector<int>{1, 2}));
+        const int all = rig.view.visibleSegmentCount();
+        QCOMPARE(all, rig.view.toolpathSegmentCount());
+        int ofTool2 = 0;
+        for (const PathSegment& s : rig.view.toolpathPolylines()->segments())
+            ofTool2 += s.tool == 2 ? 1 : 0;
+        QVERIFY(ofTool2 > 10);
+        rig.view.setToolVisible(2, false);
+        QVERIFY(!rig.view.isToolVisible(2));
+        QCOMPARE(rig.view.visibleSegmentCount(), all - ofTool2);
+        rig.view.setToolVisible(2, true);
+        QCOMPARE(rig.view.visibleSegmentCount(), all);
+    }
+};
+
+int main(int argc, char** argv)
+{
+    View3D::setDefaultSurfaceFormat();
+    QApplication app(argc, argv);
+    InspectorTest test;
+    return QTest::qExec(&test, argc, argv);
+}
+
+#include "InspectorTest.moc"

@@ -81,6 +81,11 @@ void Program::run()
             continue;
         }
         first = false;
+        if (line[i] == '.' && line.find_first_not_of(". \t\r", i) == std::string_view::npos) {
+            // Listings in documents cut programs with "...": nothing to run, but nothing there either.
+            m_reporter.warning(m_lineNumber, static_cast<int>(i) + 1, "elided lines ('...') skipped");
+            continue;
+        }
         if (!countBlock())
             break;
         m_scanner.scan(line, m_lineNumber, m_block);

@@ -1,5 +1,6 @@
 #include "nc/iso/IsoMachine.h"
 
+#include <array>
 #include <cmath>
 #include <string>
 
@@ -9,110 +10,35 @@ using namespace camwb::toolpath;
 
 namespace {
 
-// Modal group of a G code (x10), as LinuxCNC 2.9 groups them; -1 = unknown, -2 = known but not traced.
-int gGroup(int code)
-{
-    switch (code) {
-    case 40:
-    case 100:
-    case 280:
-    case 281:
-    case 300:
-    case 301:
-    case 530:
-    case 920:
-    case 921:
-    case 922:
-    case 923:
-        return 0;
-    case 0:
-    case 10:
-    case 20:
-    case 30:
-    case 730:
-    case 800:
-    case 810:
-    case 820:
-    case 830:
-    case 840:
-    case 850:
-    case 860:
-    case 890:
-        return 1;
-    case 170:
-    case 180:
-    case 190:
-        return 2;
-    case 900:
-    case 910:
-        return 3;
-    case 901:
-    case 911:
-        return 4;
-    case 930:
-    case 940:
-    case 950:
-        return 5;
-    case 200:
-    case 210:
-        return 6;
-    case 400:
-    case 410:
-    case 420:
-        return 7;
-    case 430:
-    case 431:
-    case 432:
-    case 490:
-        return 8;
-    case 980:
-    case 990:
-        return 10;
-    case 540:
-    case 550:
-    case 560:
-    case 570:
-    case 580:
-    case 590:
-    case 591:
-    case 592:
-    case 593:
-        return 12;
-    case 610:
-    case 611:
-    case 640:
-        return 13;
-    case 960:
-    case 970:
-        return 14;
-    case 70:
-    case 80:
-        return 15;
-    case 50:
-    case 51:
-    case 52:
-    case 53:
-    case 330:
-    case 331:
-    case 381:
-    case 382:
-    case 383:
-    case 384:
-    case 385:
-    case 740:
-    case 760:
-    case 870:
-    case 880:
-    case 171:
-    case 181:
-    case 191:
-    case 411:
-    case 421:
-        return -2;
-    default:
-        return -1;
-    }
-}
+// Modal groups of the G codes LinuxCNC 2.9 knows (x10). Group -2: known, but its motion is not
+// traced (splines, threading, probing, back boring); -3: G70/G71 inch/mm of Fanuc-style controls.
+struct GroupOf {
+    int code10;
+    int group;
+};
+constexpr GroupOf kGroups[] = {
+    {40, 0},   {100, 0},  {280, 0},  {281, 0},  {300, 0},  {301, 0},  {530, 0},  {920, 0},  {921, 0},
+    {922, 0},  {923, 0},  {0, 1},    {10, 1},   {20, 1},   {30, 1},   {730, 1},  {800, 1},  {810, 1},
+    {820, 1},  {830, 1},  {840, 1},  {850, 1},  {860, 1},  {890, 1},  {170, 2},  {180, 2},  {190, 2},
+    {900, 3},  {910, 3},  {901, 4},  {911, 4},  {930, 5},  {940, 5},  {950, 5},  {200, 6},  {210, 6},
+    {400, 7},  {410, 7},  {420, 7},  {430, 8},  {431, 8},  {432, 8},  {490, 8},  {980, 10}, {990, 10},
+    {540, 12}, {550, 12}, {560, 12}, {570, 12}, {580, 12}, {590, 12}, {591, 12}, {592, 12}, {593, 12},
+    {610, 13}, {611, 13}, {640, 13}, {960, 14}, {970, 14}, {70, 15},  {80, 15},  {50, -2},  {51, -2},
+    {330, -2}, {331, -2}, {381, -2}, {382, -2}, {383, -2}, {384, -2}, {385, -2}, {740, -2}, {760, -2},
+    {870, -2}, {880, -2}, {171, -2}, {181, -2}, {191, -2}, {411, -2}, {421, -2}, {700, -3}, {710, -3},
+};
+
+constexpr auto kGroupTable = [] {
+    std::array<signed char, 1000> table{};
+    for (signed char& group : table)
+        group = -1;
+    for (const GroupOf& g : kGroups)
+        table[static_cast<std::size_t>(g.code10)] = static_cast<signed char>(g.group);
+    return table;
+}();
+
+// Modal group of a G code (x10); -1 = unknown.
+int gGroup(int code) { return code >= 0 && code < 1000 ? kGroupTable[static_cast<std::size_t>(code)] : -1; }
 
 std::string gName(int code10)
 {
@@ -134,8 +60,22 @@ bool Machine::classify(const Block& block, Groups& groups)
         const Code& c = block.g[i];
         const int group = gGroup(c.code10);
         if (group == -1) {
-            m_reporter.error(m_line, c.column, "unknown G code " + gName(c.code10));
-            return false;
+            // Codes of other ISO controls (Fanuc G5.1, Hurco G5.3...) rarely move anything: say so, go on.
+            m_reporter.warning(m_line, c.column, "unknown G code " + gName(c.code10) + " ignored");
+            continue;
+        }
+        if (group == -3) {
+            m_reporter.warning(m_line, c.column,
+                               gName(c.code10) + " read as " + (c.code10 == 700 ? "inch" : "millimetre") +
+                                   " units (Fanuc/Hurco style; LinuxCNC writes " + (c.code10 == 700 ? "G20" : "G21") +
+                                   ")");
+            if (groups.g[6] != -1) {
+                m_reporter.error(m_line, c.column, "two G codes of the same modal group: units");
+                return false;
+            }
+            groups.g[6] = c.code10 == 700 ? 200 : 210;
+            groups.gColumn[6] = c.column;
+            continue;
         }
         if (group == -2) {
             m_reporter.error(m_line, c.column, gName(c.code10) + " is not supported by this interpreter");
@@ -203,12 +143,18 @@ bool Machine::classify(const Block& block, Groups& groups)
         case 73:
             continue;  // overrides, I/O and modal state: no motion to trace
         default:
+            if (m == 128 || m == 129) {
+                m_reporter.warning(m_line, c.column,
+                                   "M" + std::to_string(m) + " (five-axis tool centre point) is not traced");
+                continue;
+            }
             if (m >= 100 && m <= 199) {
                 m_reporter.warning(m_line, c.column, "user M code M" + std::to_string(m) + " is not traced");
                 continue;
             }
-            m_reporter.error(m_line, c.column, "unknown M code M" + std::to_string(m));
-            return false;
+            // Another control's M code (M13, M25...): it switches something, it moves nothing.
+            m_reporter.warning(m_line, c.column, "unknown M code M" + std::to_string(m) + " ignored");
+            continue;
         }
         if (*slot != -1) {
             m_reporter.error(m_line, c.column,
@@ -405,19 +351,32 @@ BlockOutcome Machine::execute(const Block& block, int line, int fileIndex)
     }
     if (g[1] != -1)
         m_state.motion = g[1];
+    if (g[1] == 0 || g[1] == 10 || g[1] == 20 || g[1] == 30)
+        m_state.lastMotion = g[1];
     if (g[1] == 800)
         m_state.cycleSequence = false;
     if (axisWords && !axesTaken) {
-        if (m_state.motion == 800) {
-            m_reporter.error(m_line, 0, "axis words without a motion mode (G80 is active): add G0, G1, G2 or G3");
-            return BlockOutcome::Continue;
+        int mode = m_state.motion;
+        if (mode == 800) {
+            if (m_state.lastMotion < 0) {
+                m_reporter.error(m_line, 0, "axis words without a motion mode (G80 is active): add G0, G1, G2 or G3");
+                return BlockOutcome::Continue;
+            }
+            // Fanuc keeps G0/G1 through G80 (cycles are a group of their own there); LinuxCNC refuses.
+            mode = m_state.lastMotion;
+            if (!m_warnedG80) {
+                m_warnedG80 = true;
+                m_reporter.warning(m_line, 0,
+                                   "axis words under G80: moving with " + gName(mode) +
+                                       " as Fanuc-style controls do (LinuxCNC wants the G word again)");
+            }
         }
         if (g[0] == 530 && !m_warnedG53) {
             m_warnedG53 = true;
             m_reporter.warning(m_line, groups.gColumn[0],
                                "G53 machine coordinates are traced as work coordinates (no machine offsets known)");
         }
-        motion(block, m_state.motion, groups);
+        motion(block, mode, groups);
     } else if ((m_state.motion == 20 || m_state.motion == 30) && !axesTaken &&
                (block.has('I') || block.has('J') || block.has('K') || block.has('R'))) {
         motion(block, m_state.motion, groups);  // a full circle needs no axis word

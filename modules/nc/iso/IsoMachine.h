@@ -13,8 +13,9 @@
 namespace camwb::nc::iso {
 
 struct ModalState {
-    int motion = 800;  // G code x10 of the motion mode; LinuxCNC starts in G80
-    int plane = 170;   // 170, 180, 190
+    int motion = 800;     // G code x10 of the motion mode; LinuxCNC starts in G80
+    int lastMotion = -1;  // the last of G0..G3 programmed, -1 = none yet
+    int plane = 170;      // 170, 180, 190
     bool absolute = true;
     bool arcAbsolute = false;  // G90.1; LinuxCNC starts in G91.1
     toolpath::FeedMode feedMode = toolpath::FeedMode::PerMinute;
@@ -88,6 +89,7 @@ private:
     int m_file = 0;
     bool m_warnedRotary = false;
     bool m_warnedG53 = false;
+    bool m_warnedG80 = false;
 };
 
 }  // namespace camwb::nc::iso

@@ -34,7 +34,8 @@ void Machine::checkAxes(const Block& block)
                                      (1u << ('U' - 'A')) | (1u << ('V' - 'A')) | (1u << ('W' - 'A'));
     if ((block.present & kOther) && !m_warnedRotary) {
         m_warnedRotary = true;
-        m_reporter.warning(m_line, 0, "A, B, C, U, V and W axes are not traced (three-axis trace)");
+        m_reporter.warning(m_line, 0,
+                           "A, B, C, U, V and W words are not traced: a three-axis trace of a five-axis program");
     }
 }
 
@@ -50,6 +51,9 @@ double Machine::feedFor(const Block& block, const char* what)
 void Machine::motion(const Block& block, int mode, const Groups& groups)
 {
     checkAxes(block);
+    constexpr std::uint32_t kXyz = (1u << ('X' - 'A')) | (1u << ('Y' - 'A')) | (1u << ('Z' - 'A'));
+    if ((mode == 0 || mode == 10) && !(block.present & kXyz))
+        return;  // rotary or UVW words only: nothing moves in the three-axis trace
     const Vec3 to = target(block, groups.g[0] == 530);
     if (!(std::abs(to.x) < kTravelLimitMm && std::abs(to.y) < kTravelLimitMm && std::abs(to.z) < kTravelLimitMm)) {
         m_reporter.error(m_line, 0, "target out of range (more than 1000 m from the origin)");

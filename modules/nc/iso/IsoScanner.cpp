@@ -92,6 +92,30 @@ OParse parseOHead(const char*& p, const char* end, std::string& label, OKeyword&
     return OParse::BadKeyword;
 }
 
+// A function name (SIN, ATAN, EXISTS...) followed by '[' at p: a value, not another word.
+bool isFunctionAhead(const char* p, const char* end)
+{
+    static constexpr const char* kFunctions[] = {"abs", "acos", "asin", "atan",  "cos", "exp",  "exists",
+                                                 "fix", "fup",  "ln",   "round", "sin", "sqrt", "tan"};
+    char word[8];
+    int n = 0;
+    while (p < end && (isLetter(*p) || isBlank(*p))) {
+        if (!isBlank(*p)) {
+            if (n == 7)
+                return false;
+            word[n++] = static_cast<char>(*p | 0x20);
+        }
+        ++p;
+    }
+    word[n] = 0;
+    if (p >= end || *p != '[')
+        return false;
+    for (const char* f : kFunctions)
+        if (std::strcmp(f, word) == 0)
+            return true;
+    return false;
+}
+
 }  // namespace
 
 void LineScanner::fail(const char* at, std::string message)
@@ -174,6 +198,14 @@ bool LineScanner::readWord(char letter, Block& block)
         m_p = start;
         if (m_p >= m_end) {
             fail(at, std::string("missing value after ") + letter);
+            return false;
+        }
+        if (isLetter(*m_p) && !isFunctionAhead(m_p, m_end)) {
+            std::string word(1, letter);
+            for (const char* q = m_p; q < m_end && (isLetter(*q) || isBlank(*q)) && word.size() < 24; ++q)
+                if (!isBlank(*q))
+                    word += upper(*q);
+            fail(at, "unknown word " + word + " (a letter and a number expected)");
             return false;
         }
         if (!readValue(v))

@@ -39,8 +39,11 @@ TEST(IsoPrograms, LinuxCncPostGoldensReadWithoutDiagnostics)
             continue;
         ++cases;
         const IsoRun r = run(readFile(ngc));
-        std::string diagnostics = r.diagnostics();
-        EXPECT_EQ(diagnostics, "") << ngc;
+        // The every-record CL passes SINUMERIK text through ("TRANS X10"): LinuxCNC refuses it too.
+        const bool passThrough = dir.path().filename() == "every-record";
+        EXPECT_EQ(r.diagnostics(),
+                  passThrough ? "30:1: error: unknown word TRANSX (a letter and a number expected)\n" : "")
+            << ngc;
         EXPECT_TRUE(r.result.completed) << ngc;
     }
     EXPECT_GE(cases, 5);

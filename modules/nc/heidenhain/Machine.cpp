@@ -585,10 +585,10 @@ void Machine::callProgram(const Block& b)
     }
     const std::string key = upperName(b.name);
     int index = -1;
+    std::optional<ProgramSource> found;
     if (auto it = m_programByName.find(key); it != m_programByName.end()) {
         index = it->second;
     } else {
-        std::optional<ProgramSource> found;
         if (m_options.resolveProgram) {
             found = m_options.resolveProgram(b.name);
             if (!found) {
@@ -602,6 +602,13 @@ void Machine::callProgram(const Block& b)
             report(Severity::Error, b.line, b.column, "undefined program " + std::string(b.name));
             return;
         }
+        // The same file under another spelling (TNC:\DIR\SUB and SUB) is the same program.
+        for (std::size_t i = 1; i < m_programs.size(); ++i) {
+            if (m_programs[i]->path == found->path)
+                index = static_cast<int>(i);
+        }
+    }
+    if (index < 0) {
         auto called = std::make_unique<Program>();
         called->text = std::move(found->text);
         called->path = found->path;
@@ -610,8 +617,8 @@ void Machine::callProgram(const Block& b)
         parseProgram(*called, called->text, m_rep);
         index = static_cast<int>(m_programs.size());
         m_programs.push_back(std::move(called));
-        m_programByName.emplace(key, index);
     }
+    m_programByName.emplace(key, index);
     m_frames.push_back(Frame{m_prog, m_pc, m_pc + 1, 0, 0, true});
     ++m_programDepth;
     m_prog = index;

@@ -3,22 +3,32 @@
 #include "gui/shell/MainWindow.h"
 #include "gui/actions/ActionRegistry.h"
 #include "gui/editor/NcEditor.h"
+#include "gui/inspector/InspectorPanel.h"
+#include "gui/inspector/ModalStatePanel.h"
+#include "gui/inspector/NcInspector.h"
 #include "gui/shell/ProfileDialog.h"
 #include "gui/shell/Workbench.h"
+#include "gui/view3d/ToolpathPolylines.h"
 #include "gui/view3d/View3D.h"
 
 #include <QAction>
 #include <QApplication>
 #include <QComboBox>
+#include <QDockWidget>
 #include <QDoubleSpinBox>
+#include <QElapsedTimer>
 #include <QFile>
 #include <QGuiApplication>
 #include <QLabel>
+#include <QListWidget>
 #include <QMenuBar>
 #include <QSignalSpy>
+#include <QTemporaryDir>
 #include <QTest>
+#include <QTimer>
 
 using camwb::gui::MainWindow;
+using camwb::gui::NcInspector;
 using camwb::gui::View3D;
 using camwb::gui::Workbench;
 
@@ -45,6 +55,26 @@ private:
         QCOMPARE(posted.first().first().toBool(), true);
     }
 
+    // Waits until the inspector has no trace running and holds one.
+    static bool waitForTrace(MainWindow& window)
+    {
+        NcInspector* inspector = window.inspector();
+        QElapsedTimer waited;
+        waited.start();
+        while ((inspector->isTracing() || !inspector->trace()) && waited.elapsed() < 120000)
+            QTest::qWait(20);
+        return !inspector->isTracing() && inspector->trace();
+    }
+
+    static QString writeFile(const QTemporaryDir& dir, const QString& name, const QByteArray& text)
+    {
+        QFile file(dir.filePath(name));
+        if (!file.open(QIODevice::WriteOnly))
+            return {};
+        file.write(text);
+        return file.fileName();
+    }
+
 private slots:
     void actionsHaveStableIdsAndMenus()
     {
@@ -52,7 +82,7 @@ private slots:
         const QStringList ids = window.actions().ids();
         for (const char* id :
              {"Cam.File.Open", "Cam.File.Save", "Cam.File.ImportModel", "Cam.Edit.Undo", "Cam.Op.NewProfile",
-              "Cam.Job.Post", "Cam.Job.SaveNc", "Cam.View.Isometric", "Cam.View.FitAll"})
+              "Cam.Job.Post", "Cam.Job.SaveNc", "Cam.View.Isometric", "Cam.View.FitAll", "Cam.Nc.Open", "Cam.Nc.Trace"})
             QVERIFY2(ids.contains(QLatin1String(id)), id);
         QVERIFY(window.menuBar()->actions().size() >= 5);
         QCOMPARE(window.actions().action(QStringLiteral("Cam.Job.Post"))->shortcut(), QKeySequence(Qt::Key_F9));
@@ -147,6 +177,151 @@ private slots:
         for (const auto& m : messages)
             named = named || m.at(1).toString().contains(QLatin1String("/nonexistent/part.step"));
         QVERIFY(named);
+    }
+
+    void openNcProgramIsTracedAndLinked()
+    {
+        QTemporaryDir dir;
+        const QString path = writeFile(dir, QStringLiteral("part.ngc"),
+                                       "(part)\nG21 G90 G17\nT1 M6\nS2000 M3\nG0 X0 Y0 Z5\nG1 Z-1 F150\n"
+                                       "G2 X20 Y0 I10 J0\nG0 Z5\nT2 M6\nG0 X0 Y20\nG1 Z-1 F90\nG1 X20\nG0 Z5\nM30\n");
+        MainWindow window;
+        window.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&window));
+        QVERIFY(window.findChild<QDockWidget*>(QStringLiteral("modalDock")) != nullptr);
+        QVERIFY(window.openJob(path));  // not a .camwb: opened as an NC program
+        QVERIFY(!window.ncEditor()->isReadOnly());
+        QVERIFY(window.ncEditor()->text().startsWith(QLatin1String("(part)")));
+        QVERIFY(waitForTrace(window));
+        const auto trace = window.inspector()->trace();
+        if (trace->program.empty() && trace->result.hasErrors())
+            QSKIP(qPrintable(QString::fromStdString(trace->result.diagnostics.front().message)));
+        QCOMPARE(trace->dialect, camwb::nc::Dialect::Iso);
+        QVERIFY(window.view()->hasToolpathActor());
+        QVERIFY(window.view()->toolpathSegmentCount() > 10);
+
+        // The cursor on the arc: its segments highlighted, its state in the dock.
+        window.ncEditor()->gotoLine(7);
+        QVERIFY(!window.view()->highlightedSegments().empty());
+        auto* modal = window.inspectorPanel()->modalPanel();
+        QCOMPARE(modal->value(QStringLiteral("move")), QStringLiteral("arc CW"));
+        QCOMPARE(modal->value(QStringLiteral("tool")), QStringLiteral("T1"));
+
+        // Tools from the dock's list: unchecking T2 hides its segments.
+        QListWidget* tools = window.inspectorPanel()->toolList();
+        QCOMPARE(tools->count(), 2);
+        const int all = window.view()->visibleSegmentCount();
+        tools->item(1)->setCheckState(Qt::Unchecked);
+        QVERIFY(!window.view()->isToolVisible(2));
+        QVERIFY(window.view()->visibleSegmentCount() < all);
+        tools->item(1)->setCheckState(Qt::Checked);
+        QCOMPARE(window.view()->visibleSegmentCount(), all);
+
+        // Re-trace from the registry.
+        QSignalSpy finished(window.inspector(), &NcInspector::traceFinished);
+        QVERIFY(window.actions().trigger(QStringLiteral("Cam.Nc.Trace")));
+        QVERIFY(finished.wait(60000));
+
+        if (withGl()) {
+            // A click on the T2 cut moves the editor there.
+            const auto* polylines = window.view()->toolpathPolylines();
+            std::size_t target = polylines->segments().size();
+            for (std::size_t s = 0; s < polylines->segments().size(); ++s)
+                if (trace->lineOfRecord(polylines->segments()[s].record) == 12)
+                    target = s;
+            QVERIFY(target < polylines->segments().size());
+            const auto& segment = polylines->segments()[target];
+            const auto middle = (polylines->points()[segment.from] + polylines->points()[segment.to]) * 0.5;
+            const auto at = window.view()->projectToWidget(middle);
+            QVERIFY(at.has_value());
+            auto* gl = window.view()->findChild<QWidget*>(QStringLiteral("view3dGl"));
+            QTest::mouseClick(gl, Qt::LeftButton, {}, gl->mapFrom(window.view(), at->toPoint()));
+            QCOMPARE(window.ncEditor()->currentLine(), 12);
+        }
+    }
+
+    void postedProgramIsTraced()
+    {
+        MainWindow window;
+        window.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&window));
+        openExample(window);
+        QVERIFY(waitForTrace(window));
+        const auto trace = window.inspector()->trace();
+        QCOMPARE(trace->dialect, camwb::nc::Dialect::Sinumerik);
+        if (trace->program.empty() && trace->result.hasErrors())
+            QSKIP(qPrintable(QStringLiteral("SINUMERIK interpreter: ") +
+                             QString::fromStdString(trace->result.diagnostics.front().message)));
+        // The view shows the trace of the posted program, not the operations' toolpath.
+        QVERIFY(window.inspector()->showsInView());
+        QCOMPARE(window.view()->toolpathSegmentCount(),
+                 int(camwb::gui::ToolpathPolylines::fromToolpath(trace->program).segments().size()));
+        QVERIFY(window.view()->toolpathSegmentCount() > 10);
+        // The operations' toolpath on request, and back.
+        window.inspectorPanel()->setShowsNcTrace(false);
+        QVERIFY(!window.inspector()->showsInView());
+        QVERIFY(window.view()->hasToolpathActor());
+        window.inspectorPanel()->setShowsNcTrace(true);
+        QVERIFY(window.inspector()->showsInView());
+    }
+
+    // Opens a generated ISO program (CAMWB_INSPECTOR_LINES lines, 20000 unless set), traces it and
+    // reports how long open, trace and first display take and the longest stall of the event loop
+    // meanwhile. Figures only: a test never asserts a time.
+    void largeProgramKeepsTheGuiResponsive()
+    {
+        const int lines = qEnvironmentVariableIsSet("CAMWB_INSPECTOR_LINES")
+                              ? qEnvironmentVariableIntValue("CAMWB_INSPECTOR_LINES")
+                              : 20000;
+        QTemporaryDir dir;
+        QByteArray text;
+        text.reserve(lines * 32);
+        text += "(generated)\nG21 G90 G17 G54\nT1 M6\nS6000 M3\nG0 X0 Y0 Z5\nG1 Z-1 F1200\n";
+        for (int i = 6; i < lines - 1; ++i) {
+            const double x = (i % 2000) * 0.05, y = (i / 2000) * 0.5;
+            if (i % 50 == 0)
+                text += "G2 X" + QByteArray::number(x, 'f', 3) + " Y" + QByteArray::number(y, 'f', 3) + " I0.025 J0\n";
+            else
+                text += "G1 X" + QByteArray::number(x, 'f', 3) + " Y" + QByteArray::number(y, 'f', 3) + "\n";
+        }
+        text += "M30\n";
+        const QString path = writeFile(dir, QStringLiteral("large.ngc"), text);
+
+        MainWindow window;
+        window.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&window));
+        qint64 longestStall = 0;
+        QElapsedTimer tick;
+        QTimer ticker;
+        ticker.setInterval(10);
+        connect(&ticker, &QTimer::timeout, &window, [&] { longestStall = std::max(longestStall, tick.restart()); });
+        QElapsedTimer clock;
+        clock.start();
+        QVERIFY(window.openNcFile(path));
+        const qint64 openMs = clock.elapsed();
+        tick.start();
+        ticker.start();
+        QVERIFY(waitForTrace(window));
+        const qint64 tracedMs = clock.elapsed();
+        ticker.stop();
+        window.view()->grabImage();  // the first frame with the trace
+        const qint64 shownMs = clock.elapsed();
+        window.view()->setViewPreset(View3D::Preset::Top);
+        window.view()->grabImage();  // a frame with the data already on the GPU
+        const qint64 nextFrameMs = clock.elapsed() - shownMs;
+        const auto timings = window.inspector()->lastTimings();
+        qInfo(
+            "%d lines: open %lld ms, traced and in the view %lld ms (interpret %.0f ms, index %.0f ms, "
+            "3D data %.0f ms, actors %.0f ms), first frame %lld ms, next frame %lld ms; longest event-loop stall while "
+            "tracing %lld ms; %d segments",
+            lines, openMs, tracedMs, timings.interpret * 1e3, timings.index * 1e3, timings.scene * 1e3,
+            timings.show * 1e3, shownMs, nextFrameMs, longestStall, window.view()->toolpathSegmentCount());
+        const auto trace = window.inspector()->trace();
+        if (trace->program.empty() && trace->result.hasErrors())
+            QSKIP(qPrintable(QString::fromStdString(trace->result.diagnostics.front().message)));
+        QVERIFY(window.view()->toolpathSegmentCount() >= lines - 10);
+        window.ncEditor()->gotoLine(lines / 2);
+        QVERIFY(!window.view()->highlightedSegments().empty());
     }
 
     void withoutOpenGlTheViewSaysSo()

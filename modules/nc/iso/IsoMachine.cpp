@@ -178,10 +178,10 @@ void Machine::setSpindle(double rpm, int direction)
         }
         return;
     }
-    if (running && direction == m_state.spindle && rpm == m_state.rpm)
+    if (running && direction == m_state.spindle && rpm == m_state.runningRpm)
         return;
     m_state.spindle = direction;
-    m_state.rpm = rpm;
+    m_state.runningRpm = rpm;
     source();
     m_sink.spindle(Spindle{rpm, direction > 0, 0});
 }
@@ -264,9 +264,7 @@ BlockOutcome Machine::execute(const Block& block, int line, int fileIndex)
             }
             m_state.selectedTool = static_cast<int>(std::max(0.0, block.get('Q')));
         } else if (m_state.spindle != 0) {
-            const double rpm = m_state.rpm;
             setSpindle(0, 0);  // M6 stops the spindle (LinuxCNC's manual tool change)
-            m_state.rpm = rpm;
         }
         m_state.tool = m_state.selectedTool;
         Tool tool;
@@ -377,6 +375,9 @@ BlockOutcome Machine::execute(const Block& block, int line, int fileIndex)
                                "G53 machine coordinates are traced as work coordinates (no machine offsets known)");
         }
         motion(block, mode, groups);
+    } else if (g[1] != -1 && g[1] != 0 && g[1] != 10 && g[1] != 20 && g[1] != 30 && g[1] != 800 && !axesTaken) {
+        m_reporter.error(m_line, groups.gColumn[1], gName(g[1]) + " without X, Y or Z: no hole to drill");
+        return BlockOutcome::Continue;
     } else if ((m_state.motion == 20 || m_state.motion == 30) && !axesTaken &&
                (block.has('I') || block.has('J') || block.has('K') || block.has('R'))) {
         motion(block, m_state.motion, groups);  // a full circle needs no axis word

@@ -25,6 +25,7 @@ struct ModalState {
     bool retractToR = false;  // G99 (LinuxCNC starts in G98)
     double feed = 0;          // mm/min, mm/rev, or 1/min under G93
     double rpm = 0;           // programmed S
+    double runningRpm = 0;    // the speed last sent to the sink
     int spindle = 0;          // 1 clockwise, -1 counter-clockwise, 0 stopped
     int selectedTool = 0;
     int tool = 0;

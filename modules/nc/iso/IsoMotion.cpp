@@ -34,7 +34,11 @@ void Machine::checkAxes(const Block& block)
                                      (1u << ('U' - 'A')) | (1u << ('V' - 'A')) | (1u << ('W' - 'A'));
     if ((block.present & kOther) && !m_warnedRotary) {
         m_warnedRotary = true;
-        m_reporter.warning(m_line, 0,
+        int column = 0;
+        for (const char letter : {'A', 'B', 'C', 'U', 'V', 'W'})
+            if (block.has(letter) && (column == 0 || block.col(letter) < column))
+                column = block.col(letter);
+        m_reporter.warning(m_line, column,
                            "A, B, C, U, V and W words are not traced: a three-axis trace of a five-axis program");
     }
 }

@@ -43,7 +43,7 @@ constexpr KeywordName kKeywords[] = {
 
 // The label and keyword of an O-word whose 'O' is at p; p moves past the keyword. False when
 // there is none (the caller says why when it matters).
-enum class OParse { Ok, BadLabel, BadKeyword };
+enum class OParse { Ok, BadLabel, BadKeyword, NoKeyword };
 OParse parseOHead(const char*& p, const char* end, std::string& label, OKeyword& keyword)
 {
     ++p;  // the O
@@ -83,6 +83,8 @@ OParse parseOHead(const char*& p, const char* end, std::string& label, OKeyword&
         ++p;
     }
     word[n] = 0;
+    if (n == 0)
+        return OParse::NoKeyword;
     for (const KeywordName& k : kKeywords) {
         if (std::strcmp(k.text, word) == 0) {
             keyword = k.keyword;
@@ -325,6 +327,19 @@ bool LineScanner::readOWord(Block& block)
     case OParse::BadKeyword:
         fail(at, "unknown O-word keyword");
         return false;
+    case OParse::NoKeyword:
+        // Fanuc-style controls start a program with its number ("O1000"): nothing to run.
+        m_reporter.warning(m_line, columnOf(at), "program number O" + block.oLabel + " ignored");
+        while (m_p < m_end && !m_failed) {  // a comment may follow
+            skipBlanks();
+            if (m_p < m_end && *m_p == '(')
+                readComment(block);
+            else
+                break;
+        }
+        if (!m_failed && m_p < m_end && *m_p != ';')
+            fail(m_p, "unexpected text after the program number");
+        return !m_failed;
     case OParse::Ok:
         break;
     }

@@ -155,3 +155,20 @@ TEST(IsoMotion, ReferenceReturnThroughStoredPosition)
 
 }  // namespace
 }  // namespace camwb::nc::iso::test
+
+namespace camwb::nc::iso::test {
+namespace {
+
+TEST(IsoMotion, NewSpeedWithTheSameDirection)
+{
+    const IsoRun r = run("M3 S3200\nM3 S1800\nS1800\nM3\nM2\n");
+    EXPECT_EQ(r.diagnostics(), "");
+    const auto spindles = r.all<toolpath::Spindle>();
+    ASSERT_EQ(spindles.size(), 3u);  // 3200, 1800, the stop at M2
+    EXPECT_EQ(spindles[0].rpm, 3200);
+    EXPECT_EQ(spindles[1].rpm, 1800);
+    EXPECT_EQ(spindles[2].rpm, 0);
+}
+
+}  // namespace
+}  // namespace camwb::nc::iso::test

@@ -177,9 +177,11 @@ void Machine::cycleRecord(const Block& b, Vec2 hole)
         return;
     }
     if (depth > 0) {
-        report(Severity::Warning, b.line, b.column,
-               "cycle depth is positive: traced as the same depth below the surface "
-               "(the control machines upwards or refuses it, depending on its machine parameters)");
+        if (!m_cycle.depthWarned)
+            report(Severity::Warning, b.line, b.column,
+                   "cycle depth is positive: traced as the same depth below the surface "
+                   "(the control machines upwards or refuses it, depending on its machine parameters)");
+        m_cycle.depthWarned = true;
         depth = -depth;
     }
     Cycle c;

@@ -260,6 +260,17 @@ std::string_view Cursor::token()
     return code.substr(start, m_pos - start);
 }
 
+std::string_view Cursor::rest()
+{
+    skipSpace();
+    if (m_index >= m_count)
+        return {};
+    const std::string_view code = m_seg[m_index].code;
+    const std::string_view out = trimRight(code.substr(m_pos));
+    m_pos = code.size();
+    return out;
+}
+
 std::optional<std::int64_t> Cursor::integer()
 {
     if (m_index >= m_count)

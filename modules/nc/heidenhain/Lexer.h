@@ -67,6 +67,8 @@ public:
     std::string_view letters();
     // A run of characters up to white space.
     std::string_view token();
+    // The rest of the current line's code (trailing blanks removed).
+    std::string_view rest();
     // An unsigned integer (digits only); nullopt when none.
     std::optional<std::int64_t> integer();
     // [+-]digits[.digits] (a decimal comma is read as a point and flagged).

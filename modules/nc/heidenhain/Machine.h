@@ -78,6 +78,7 @@ struct CycleDefinition {
     std::array<double, 400> q{};  // Q200..Q599
     std::bitset<400> set;
     bool defined = false;
+    bool depthWarned = false;
     double get(int n, double fallback = 0) const;
     bool has(int n) const { return n >= 200 && n < 600 && set.test(static_cast<std::size_t>(n - 200)); }
 };

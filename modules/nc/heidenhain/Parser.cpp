@@ -29,16 +29,16 @@ public:
                 c.advance();
             c.skipSpace();
             b.kind = BlockKind::Comment;
-            if (b.comment.empty()) {
-                const std::string_view rest = c.token();
-                b.comment = rest;
-            }
+            const std::string_view text = c.rest();
+            if (b.comment.empty())
+                b.comment = text;
             return;
         }
         const Cursor::Mark start = c.mark();
         const std::string_view word = c.letters();
         if (word.empty()) {
-            fail(c.line(), c.column(), "unknown word '" + std::string(c.token()) + "'");
+            const int line = c.line(), column = c.column();
+            fail(line, column, "unknown word '" + std::string(c.token()) + "'");
             return;
         }
         dispatch(word, start);
@@ -153,7 +153,8 @@ private:
         if (is("SEL") || is("DECLARE") || is("PATTERN") || is("SEQUENCE") || is("WAIT") || is("SYSCALL"))
             return skipped(std::string(w) + " is not traced", BlockKind::Skipped);
         c.reset(start);
-        fail(c.line(), c.column(), "unknown word '" + std::string(c.token()) + "'");
+        const int line = c.line(), column = c.column();
+        fail(line, column, "unknown word '" + std::string(c.token()) + "'");
     }
 
     void motion(BlockKind kind, unsigned groups)

@@ -340,8 +340,7 @@ int Machine::loadProgram(const std::string& name, Pos callPos, const Program& ca
         source = m_options.resolveProgram(name);
     if (!source) {
         m_byName.emplace(name, -1);
-        error(caller, callPos,
-              "undefined subprogram " + name + (m_options.resolveProgram ? "" : " (no folder to look in)"));
+        error(caller, callPos, "undefined subprogram " + name);
         return -1;
     }
     m_programs.push_back(std::make_unique<Program>(parseProgram(source->path, std::move(source->text))));

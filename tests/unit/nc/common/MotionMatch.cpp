@@ -26,10 +26,41 @@ public:
     std::vector<MotionSample> take() { return std::move(m_samples); }
 
 private:
+    // Rapids between two feed moves are one transit, compared by its ends and its lowest point:
+    // posts add positioning moves of their own (to the clearance plane before a cycle, back up
+    // after one), so only where a transit starts, ends and how deep it goes are the CL's promise.
     void segment(const Vec3& to, bool rapid, double feed)
     {
         if (to == m_at)
             return;
+        if (rapid) {
+            if (!m_inTransit) {
+                m_inTransit = true;
+                m_transitStart = m_at;
+                m_transitLowestZ = m_at.z;
+            }
+            m_transitLowestZ = std::min(m_transitLowestZ, to.z);
+            m_at = to;
+            return;
+        }
+        flushTransit();
+        emit(m_at, to, false, feed, to.z);
+        m_at = to;
+    }
+
+public:
+    void flushTransit()
+    {
+        if (!m_inTransit)
+            return;
+        m_inTransit = false;
+        if (!(m_transitStart == m_at))
+            emit(m_transitStart, m_at, true, 0, m_transitLowestZ);
+    }
+
+private:
+    void emit(const Vec3& from, const Vec3& to, bool rapid, double feed, double lowestZ)
+    {
         MotionSample s{};
         s.rapid = rapid;
         s.feed = feed;
@@ -37,13 +68,13 @@ private:
         s.rpm = m_rpm;
         s.tool = m_tool;
         s.record = m_index;
-        s.point = (m_at + to) * 0.5;
+        s.lowestZ = lowestZ;
+        s.point = (from + to) * 0.5;
         s.midpoint = true;
         m_samples.push_back(s);
         s.point = to;
         s.midpoint = false;
         m_samples.push_back(s);
-        m_at = to;
     }
     void visit(const Rapid& r) { segment(r.to, true, 0); }
     void visit(const Linear& r) { segment(r.to, false, r.feedMmPerMin); }
@@ -61,6 +92,8 @@ private:
     void cycleMove(const Rapid& r) { segment(r.to, true, 0); }
     void cycleMove(const Linear& r) { segment(r.to, false, r.feedMmPerMin); }
     template <class T> void cycleMove(const T&) {}  // tapping's spindle reversals: the rpm stays
+    // Along the spindle axis only: enough for the 3-axis posts (tilted axes are the five-axis posts' business).
+    void visit(const ToolAxisMove& r) { segment(r.tip, r.feedMmPerMin <= 0, r.feedMmPerMin); }
     void visit(const ToolChange& r) { m_tool = r.tool.number; }
     void visit(const Spindle& r) { m_rpm = r.rpm; }
     void visit(const FeedModeChange& r) { m_perMinute = r.mode == FeedMode::PerMinute; }
@@ -72,6 +105,9 @@ private:
     int m_tool = 0;
     bool m_perMinute = true;
     int m_index = 0;
+    bool m_inTransit = false;
+    Vec3 m_transitStart;
+    double m_transitLowestZ = 0;
     std::vector<MotionSample> m_samples;
 };
 
@@ -102,11 +138,27 @@ std::string describe(const Toolpath& path, int record)
 
 bool near(double a, double b, double relative) { return std::abs(a - b) <= relative * std::max(std::abs(b), 1.0); }
 
+// What differs between a sample and the segment it lies on, or nullptr.
+const char* difference(const MotionSample& s, const MotionSample& o, const MatchTolerance& tol, bool rapidDepth)
+{
+    if (s.rapid != o.rapid)
+        return "rapid/feed";
+    if (rapidDepth && s.rapid && s.lowestZ < o.lowestZ - tol.pointMm)
+        return "lowest rapid";
+    if (s.tool != o.tool)
+        return "tool";
+    if (!near(s.rpm, o.rpm, tol.rpmRelative))
+        return "spindle speed";
+    if (!s.rapid && s.perMinute && o.perMinute && !near(s.feed, o.feed, tol.feedRelative))
+        return "feed";
+    return nullptr;
+}
+
 // Every sample of `from` must lie, in order, on the polyline of `onto` (first fit going forward,
 // so a path that passes the same place twice is matched in its own order).
 std::optional<std::string> oneWay(const std::vector<MotionSample>& from, const std::vector<MotionSample>& onto,
                                   double toleranceMm, const MatchTolerance& tol, const Toolpath& fromPath,
-                                  const Toolpath& ontoPath, const char* fromName, const char* ontoName)
+                                  const Toolpath& ontoPath, const char* fromName, const char* ontoName, bool rapidDepth)
 {
     // onto's vertices: the origin, then its segment ends (midpoints only carry attributes).
     std::vector<Vec3> vertices{Vec3{}};
@@ -117,9 +169,12 @@ std::optional<std::string> oneWay(const std::vector<MotionSample>& from, const s
             segmentOf.push_back(&s - 1);  // the midpoint before each end describes the segment
         }
     std::size_t segment = 1;
+    auto within = [&](const MotionSample& s, std::size_t j) {
+        return distanceToSegment(s.point, vertices[j - 1], vertices[j]) <= toleranceMm;
+    };
     for (const MotionSample& s : from) {
         std::size_t j = segment;
-        while (j < vertices.size() && distanceToSegment(s.point, vertices[j - 1], vertices[j]) > toleranceMm)
+        while (j < vertices.size() && !within(s, j))
             ++j;
         std::ostringstream why;
         if (j >= vertices.size()) {
@@ -130,25 +185,32 @@ std::optional<std::string> oneWay(const std::vector<MotionSample>& from, const s
                 << ")";
             return why.str();
         }
-        segment = j;
-        const MotionSample& o = *segmentOf[j];
-        if (!s.midpoint)
+        if (!s.midpoint) {
+            segment = j;
             continue;
-        const char* what = nullptr;
-        if (s.rapid != o.rapid)
-            what = "rapid/feed";
-        else if (s.tool != o.tool)
-            what = "tool";
-        else if (!near(s.rpm, o.rpm, tol.rpmRelative))
-            what = "spindle speed";
-        else if (!s.rapid && s.perMinute && o.perMinute && !near(s.feed, o.feed, tol.feedRelative))
-            what = "feed";
-        if (what) {
-            why << what << " differs: " << fromName << ' ' << describe(fromPath, s.record) << " (tool " << s.tool
-                << ", S" << s.rpm << ", F" << s.feed << ") vs " << ontoName << ' ' << describe(ontoPath, o.record)
-                << " (tool " << o.tool << ", S" << o.rpm << ", F" << o.feed << ")";
-            return why.str();
         }
+        // Near a junction a point is on two segments: take the first one that also agrees in kind,
+        // tool, spindle and feed, and report the nearest one's difference when none does.
+        const char* what = nullptr;
+        std::size_t agreeing = j;
+        for (; agreeing < vertices.size(); ++agreeing) {
+            if (!within(s, agreeing))
+                continue;
+            what = difference(s, *segmentOf[agreeing], tol, rapidDepth);
+            if (!what)
+                break;
+        }
+        if (agreeing < vertices.size()) {
+            segment = agreeing;
+            continue;
+        }
+        what = difference(s, *segmentOf[j], tol, rapidDepth);
+        const MotionSample& o = *segmentOf[j];
+        why << what << " differs: " << fromName << ' ' << describe(fromPath, s.record) << " (tool " << s.tool << ", S"
+            << s.rpm << ", F" << s.feed << ", lowest " << s.lowestZ << ") vs " << ontoName << ' '
+            << describe(ontoPath, o.record) << " (tool " << o.tool << ", S" << o.rpm << ", F" << o.feed << ", lowest "
+            << o.lowestZ << ")";
+        return why.str();
     }
     return std::nullopt;
 }
@@ -167,9 +229,9 @@ std::optional<std::string> matchMotion(const Toolpath& a, const Toolpath& b, con
 {
     const double chord = tolerance.pointMm / 4;
     const std::vector<MotionSample> fa = flattenMotion(a, chord), fb = flattenMotion(b, chord);
-    if (auto why = oneWay(fa, fb, tolerance.pointMm, tolerance, a, b, "NC", "CL"))
+    if (auto why = oneWay(fa, fb, tolerance.pointMm, tolerance, a, b, "NC", "CL", true))
         return why;
-    return oneWay(fb, fa, tolerance.backPointMm, tolerance, b, a, "CL", "NC");
+    return oneWay(fb, fa, tolerance.backPointMm, tolerance, b, a, "CL", "NC", false);
 }
 
 }  // namespace camwb::nc::test

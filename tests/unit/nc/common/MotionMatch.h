@@ -1,7 +1,8 @@
 // Round-trip comparison of two toolpaths by what the machine does, not by their records: both
-// are flattened into polylines (arcs tessellated, cycles expanded as the backplot expands them)
-// and each one's points must lie, in order, on the other within a tolerance, with the same kind
-// of motion, tool, spindle speed and feed. So a post may split an arc, linearise it, write a
+// are flattened into polylines (arcs tessellated, cycles expanded as the backplot expands them,
+// consecutive rapids merged into one transit) and each one's points must lie, in order, on the
+// other within a tolerance, with the same kind of motion, tool, spindle speed and feed, and no
+// rapid transit of `a` deeper than `b`'s. So a post may split an arc, linearise it, write a
 // cycle natively or as moves, and the comparison still holds; a wrong point, order or feed fails.
 #pragma once
 
@@ -21,7 +22,8 @@ struct MotionSample {
     bool perMinute = true;
     double rpm = 0;
     int tool = 0;
-    int record = 0;  // index of the record that made it
+    int record = 0;      // index of the record that made it
+    double lowestZ = 0;  // of a rapid transit: its lowest point
 };
 
 // Every segment end and midpoint, starting from the origin; arcs within chordToleranceMm.

@@ -28,7 +28,7 @@ InspectorPanel::InspectorPanel(QWidget* parent) :
     m_source->addItem(tr("NC program (traced)"));
     m_source->addItem(tr("Operations' toolpath"));
     m_tools->setObjectName(QStringLiteral("toolList"));
-    m_tools->setMaximumHeight(90);
+    m_tools->setMaximumHeight(64);
     m_modal->setObjectName(QStringLiteral("modalStatePanel"));
 
     auto* form = new QFormLayout;

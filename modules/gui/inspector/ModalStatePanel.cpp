@@ -138,13 +138,14 @@ void ModalStatePanel::showState(const LineState& state, const NcTrace& trace)
     set("feed", feedText(s));
     set("spindle", spindleText(s));
     set("coolant", coolantText(s.coolant));
-    set("workOffset", s.workOffset > 0 ? tr("%1 (G%2)").arg(s.workOffset).arg(53 + s.workOffset) : tr("none set"));
+    set("workOffset", s.workOffset > 0 ? tr("%1 (G%2)").arg(s.workOffset).arg(53 + s.workOffset)
+                                       : tr("none in the trace (control default)"));
     set("compensation", compensationText(s.compensation));
     // The records carry no plane, units or distance mode: say what they do carry.
     set("plane", s.hasArcNormal ? tr("%1, from the last arc").arg(QString::fromStdString(planeOfNormal(s.arcNormal)))
                                 : tr("no arc yet (not in the trace)"));
-    set("units", tr("positions in mm (the trace converts inch programs)"));
-    set("distance", tr("not in the trace (positions shown absolute)"));
+    set("units", tr("mm (inch programs converted)"));
+    set("distance", tr("not in the trace; positions absolute"));
     set("before", position(state.before));
     set("after", position(state.after));
     showMessage(trace.result.completed || trace.result.diagnostics.empty()

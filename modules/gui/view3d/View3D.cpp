@@ -459,7 +459,9 @@ void View3D::setHighlightedRecords(const std::vector<std::size_t>& records)
         // Drawn over the backplot's own lines at the same place.
         d->highlightActor->GetMapper()->SetRelativeCoincidentTopologyLineOffsetParameters(-4.0, -8.0);
         d->highlightActor->GetProperty()->SetColor(kHighlightColor[0], kHighlightColor[1], kHighlightColor[2]);
-        d->highlightActor->GetProperty()->SetLineWidth(5.0f);
+        // Wide lines are not in the OpenGL core profile: VTK draws them as tubes (imposters).
+        d->highlightActor->GetProperty()->SetRenderLinesAsTubes(true);
+        d->highlightActor->GetProperty()->SetLineWidth(6.0f);
         d->highlightActor->GetProperty()->LightingOff();
         d->highlightActor->PickableOff();
         d->renderer->AddActor(d->highlightActor);

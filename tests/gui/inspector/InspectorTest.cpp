@@ -11,8 +11,10 @@
 #include "toolpath/Toolpath.h"
 
 #include <QApplication>
+#include <QFile>
 #include <QGuiApplication>
 #include <QSignalSpy>
+#include <QTemporaryDir>
 #include <QTest>
 
 #include <map>
@@ -265,6 +267,46 @@ private slots:
         QCOMPARE(finished.count(), 1);
         const std::vector<int> lines = rig.segmentLines();
         QCOMPARE(std::count(lines.begin(), lines.end(), 15), std::ptrdiff_t(1));  // G1 X60
+    }
+
+    // Records of a called program link to the calling block (the editor shows the main program)
+    // and name their own place for the status bar.
+    void subprogramRecordsLinkToTheCall()
+    {
+        QTemporaryDir dir;
+        auto write = [&dir](const char* name, const char* text) {
+            QFile file(dir.filePath(QLatin1String(name)));
+            return file.open(QIODevice::WriteOnly) && file.write(text) > 0;
+        };
+        QVERIFY(write("POCKET.SPF", "G1 X10 F100\nG1 Y10\nG1 X0\nM17\n"));
+        const char* main = "G17 G90 G71 G54\n"  // 1
+                           "T1 D1 M6\n"         // 2
+                           "G0 X0 Y0 Z2\n"      // 3
+                           "G1 Z-1 F50\n"       // 4
+                           "POCKET\n"           // 5: the call
+                           "G0 Z10\n"           // 6
+                           "M30\n";             // 7
+        QVERIFY(write("MAIN.MPF", main));
+        Rig rig;
+        rig.inspector.setFilePath(dir.filePath(QStringLiteral("MAIN.MPF")));
+        LOAD_OR_SKIP(rig, QString::fromLatin1(main));
+        const auto trace = rig.inspector.trace();
+        QCOMPARE(trace->dialect, camwb::nc::Dialect::Sinumerik);
+        std::vector<std::size_t> called;
+        for (std::size_t r = 0; r < trace->program.size(); ++r)
+            if (trace->isInSubprogram(r))
+                called.push_back(r);
+        if (called.empty())
+            QSKIP(qPrintable(QStringLiteral("the SINUMERIK interpreter made no subprogram records: ") +
+                             QString::fromStdString(trace->result.diagnostics.empty()
+                                                        ? std::string("no diagnostics")
+                                                        : trace->result.diagnostics.front().message)));
+        QCOMPARE(called.size(), std::size_t(3));
+        QCOMPARE(trace->whereOf(called.front()), std::string("POCKET.SPF:1"));
+        // The calling block when the interpreter announces it, else the block before it.
+        const int caller = trace->lineOfRecord(called.front());
+        QVERIFY2(caller == 5 || caller == 4, qPrintable(QString::number(caller)));
+        QCOMPARE(trace->lineOfRecord(called.back()), caller);
     }
 
     void toolsCanBeHidden()

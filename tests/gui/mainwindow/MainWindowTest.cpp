@@ -324,6 +324,40 @@ private slots:
         QVERIFY(!window.view()->highlightedSegments().empty());
     }
 
+    // Pictures of the inspector for people (CAMWB_SHOTS_DIR=<folder>): posted SINUMERIK and ISO
+    // programs with the cursor on an arc block.
+    void inspectorScreenshots()
+    {
+        const QString shots = qEnvironmentVariable("CAMWB_SHOTS_DIR");
+        if (shots.isEmpty() || !withGl())
+            QSKIP("set CAMWB_SHOTS_DIR (Xvfb run) to write the inspector screenshots");
+        struct Shot {
+            const char* program;
+            const char* arcBlock;  // text that starts the block to put the cursor on
+            const char* file;
+        };
+        for (const Shot& shot :
+             {Shot{"posts/sinumerik828d-emco/tests/arcs/expected.mpf", "N200 G2", "sinumerik-arcs.png"},
+              Shot{"posts/sinumerik828d-emco/tests/cycles/expected.mpf", "N180", "sinumerik-cycles.png"},
+              Shot{"posts/linuxcnc/tests/arcs/expected.ngc", "G2 Z-1", "iso-arcs.png"}}) {
+            MainWindow window;
+            window.resize(1600, 1000);
+            window.show();
+            QVERIFY(QTest::qWaitForWindowExposed(&window));
+            QVERIFY(window.openNcFile(QStringLiteral(CAMWB_SOURCE_DIR "/") + QLatin1String(shot.program)));
+            QVERIFY(waitForTrace(window));
+            const QStringList lines = window.ncEditor()->text().split(QLatin1Char('\n'));
+            int line = 1;
+            for (int i = 0; i < lines.size(); ++i)
+                if (lines[i].startsWith(QLatin1String(shot.arcBlock)) && line == 1 &&
+                    !window.inspector()->trace()->recordsOfLine(i + 1).empty())
+                    line = i + 1;
+            window.ncEditor()->gotoLine(line);
+            QTest::qWait(300);
+            QVERIFY(window.grab().save(shots + QLatin1Char('/') + QLatin1String(shot.file)));
+        }
+    }
+
     void withoutOpenGlTheViewSaysSo()
     {
         if (withGl())

@@ -152,7 +152,11 @@ std::optional<Element> Machine::plan(const Block& b, const BlockWords& w, const 
         const double re = distance(e.end.xy(), cc);
         if (rs < kEps)
             return fail("circle start lies on its centre CC");
-        if (std::abs(rs - re) > m_options.arcRadiusToleranceMm && !quiet)
+        if (!(m_knownX && m_knownY)) {
+            if (!quiet)
+                report(Severity::Warning, b.line, b.column,
+                       "the circle's start point is unknown (no X and Y programmed before it): radius not checked");
+        } else if (std::abs(rs - re) > m_options.arcRadiusToleranceMm && !quiet)
             report(Severity::Error, b.line, b.column,
                    "arc start radius " + mm(rs) + " and end radius " + mm(re) + " about CC differ by " +
                        mm(std::abs(rs - re)) + " mm (tolerance " + mm(m_options.arcRadiusToleranceMm) + ")");
@@ -308,6 +312,11 @@ void Machine::motionBlock(const Block& b)
             send(*e, rapid, m_feed);
             moved = true;
         }
+        // Absolute X/Y (or a polar end about a known pole) make the position known.
+        m_knownX = m_knownX || w.axes[0].has_value();
+        m_knownY = m_knownY || w.axes[1].has_value();
+        if (b.kind == BlockKind::LinePolar && w.pr && w.pa && m_ccSet)
+            m_knownX = m_knownY = true;
     }
     if (b.kind == BlockKind::Stop)
         m_sink.programStop(ProgramStop{false});
@@ -316,16 +325,15 @@ void Machine::motionBlock(const Block& b)
 
 void Machine::send(const Element& e, bool rapid, double feed)
 {
+    if (feed <= 0 && !(rapid && e.type == Element::Type::Line) && !m_warned.test(kWarnZeroFeed)) {
+        m_warned.set(kWarnZeroFeed);
+        report(Severity::Warning, program().blocks[m_pc].line, 0, "feed motion with no feed programmed");
+    }
     if (e.type == Element::Type::Line) {
-        if (rapid) {
+        if (rapid)
             m_sink.rapid(Rapid{e.end});
-        } else {
-            if (feed <= 0 && !m_warned.test(kWarnZeroFeed)) {
-                m_warned.set(kWarnZeroFeed);
-                report(Severity::Warning, program().blocks[m_pc].line, 0, "feed motion with no feed programmed");
-            }
+        else
             m_sink.linear(Linear{e.end, feed});
-        }
     } else if (e.type == Element::Type::Arc) {
         if (rapid && !m_warned.test(kWarnRapidArc)) {
             m_warned.set(kWarnRapidArc);

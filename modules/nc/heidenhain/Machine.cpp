@@ -140,6 +140,10 @@ void Machine::execute(const Block& b)
     case BlockKind::Invalid:
     case BlockKind::LineVector:
         return;
+    case BlockKind::Elision:
+        m_knownX = m_knownY = false;
+        m_tangent.reset();
+        return;
     case BlockKind::BeginPgm:
         if (m_pc != 0)
             report(Severity::Warning, b.line, b.column, "BEGIN PGM is not the first block");
@@ -337,10 +341,10 @@ void Machine::applyComp(const BlockWords& w)
     }
 }
 
-void Machine::spindleOn(bool clockwise, const Block& b)
+void Machine::spindleOn(bool clockwise, const Block& b, int column)
 {
     if (m_rpm <= 0)
-        report(Severity::Warning, b.line, b.column, "spindle started with no speed (S) programmed");
+        report(Severity::Warning, b.line, column, "spindle started with no speed (S) programmed");
     m_spindleOn = true;
     m_spindleCw = clockwise;
     m_sink.spindle(Spindle{m_rpm, clockwise, 0});
@@ -368,20 +372,20 @@ void Machine::applyEarlyM(const Block& b, const BlockWords& w)
     for (int i = 0; i < w.mCount; ++i) {
         switch (w.m[static_cast<std::size_t>(i)]) {
         case 3:
-            spindleOn(true, b);
+            spindleOn(true, b, w.mColumn);
             break;
         case 4:
-            spindleOn(false, b);
+            spindleOn(false, b, w.mColumn);
             break;
         case 8:
             coolant(CoolantMode::Flood);
             break;
         case 13:
-            spindleOn(true, b);
+            spindleOn(true, b, w.mColumn);
             coolant(CoolantMode::Flood);
             break;
         case 14:
-            spindleOn(false, b);
+            spindleOn(false, b, w.mColumn);
             coolant(CoolantMode::Flood);
             break;
         case 128:

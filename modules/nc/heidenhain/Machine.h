@@ -129,7 +129,7 @@ private:
     void label(const Block& b);
     void fnAssign(const Block& b);
     void fnJump(const Block& b);
-    void spindleOn(bool clockwise, const Block& b);
+    void spindleOn(bool clockwise, const Block& b, int column);
     void spindleOff();
     void coolant(toolpath::CoolantMode mode);
     std::optional<std::size_t> findLabel(std::string_view ref, bool isName);
@@ -177,6 +177,8 @@ private:
     Vec2 m_cc;
     bool m_ccSet = false;
     std::optional<Vec2> m_tangent;
+    bool m_knownX = false;  // X/Y programmed since the start or the last "..." of a fragment
+    bool m_knownY = false;
     int m_lastDirection = 0;
     double m_feed = 0;
     double m_autoFeed = 0;

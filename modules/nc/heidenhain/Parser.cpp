@@ -34,6 +34,12 @@ public:
                 b.comment = text;
             return;
         }
+        if (c.peek() == '.' && c.peek(1) == '.' && c.peek(2) == '.') {
+            b.kind = BlockKind::Elision;
+            m_env.reporter.report(Severity::Warning, m_env.file, b.line, b.column,
+                                  "lines left out here ('...'): the listing is a fragment");
+            return;
+        }
         const Cursor::Mark start = c.mark();
         const std::string_view word = c.letters();
         if (word.empty()) {

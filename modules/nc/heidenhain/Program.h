@@ -143,6 +143,7 @@ enum class BlockKind : std::uint8_t {
     Function,
     Stop,
     MOnly,
+    Elision,  // "..." in a listing fragment: lines left out
     Skipped,  // recognised but not traced (warned when parsed)
     Invalid,  // errors reported when parsed
 };

@@ -64,7 +64,7 @@ TEST(HeidenhainContour, IncrementalCircleCentreFromTheLastPosition)
 {
     const Traced r = run(program("2 L X+10 Y+10 FMAX\n"
                                  "3 CC IX+5 IY+0\n"
-                                 "4 C X+20 Y+10 DR-\n"));
+                                 "4 C X+20 Y+10 DR- F100\n"));
     EXPECT_TRUE(r.result.diagnostics.empty());
     const auto arcs = r.all<Arc>();
     ASSERT_EQ(arcs.size(), 1u);
@@ -269,7 +269,7 @@ TEST(HeidenhainContour, DatumShiftMovesLaterPositions)
                                  "7 CYCL DEF 7.1 IX+5\n"
                                  "8 CC X+0 Y+0\n"
                                  "9 L X+10 Y+10 FMAX\n"
-                                 "10 C X+10 Y+10 DR+\n"
+                                 "10 C X+10 Y+10 DR+ F100\n"
                                  "11 CYCL DEF 7.0 DATUM SHIFT\n"
                                  "12 CYCL DEF 7.1 X+0\n"
                                  "13 CYCL DEF 7.2 Y+0\n"

@@ -70,7 +70,7 @@ void Machine::arc(const Block& block, bool clockwise, const Vec3& to)
         }
         const double radius = block.get('R') * unit;
         const double da = ea - sa, db = eb - sb;
-        const double chord = std::hypot(da, db);
+        const double chord = std::sqrt(da * da + db * db);
         if (chord < 1e-9) {
             error(block, 'R', std::string(name) + " with R cannot make a full circle: its start and end coincide");
             return;
@@ -106,8 +106,8 @@ void Machine::arc(const Block& block, bool clockwise, const Vec3& to)
             ca = sa + ia;
             cb = sb + ib;
         }
-        const double r1 = std::hypot(sa - ca, sb - cb);
-        const double r2 = std::hypot(ea - ca, eb - cb);
+        const double r1 = std::sqrt((sa - ca) * (sa - ca) + (sb - cb) * (sb - cb));
+        const double r2 = std::sqrt((ea - ca) * (ea - ca) + (eb - cb) * (eb - cb));
         if (r1 < 1e-9) {
             m_reporter.error(m_line, block.has(p.wordA) ? block.col(p.wordA) : block.col(p.wordB),
                              std::string(name) + " with zero radius: the centre is the start point");

@@ -26,17 +26,11 @@ struct OpName {
 constexpr OpName kWordOps[] = {{"mod", Mod, 3}, {"eq", Eq, 1}, {"ne", Ne, 1},   {"gt", Gt, 1}, {"ge", Ge, 1},
                                {"lt", Lt, 1},   {"le", Le, 1}, {"and", And, 0}, {"or", Or, 0}, {"xor", Xor, 0}};
 
-bool isLetterChar(char c)
-{
-    const char lower = static_cast<char>(c | 0x20);
-    return lower >= 'a' && lower <= 'z';
-}
-
 // Letters from p (blanks skipped) into `word`, lower case; false when more than fit.
 bool readLetters(const char*& p, const char* end, char (&word)[8])
 {
     int n = 0;
-    while (p < end && (isLetterChar(*p) || isBlank(*p))) {
+    while (p < end && (isLetter(*p) || isBlank(*p))) {
         if (!isBlank(*p)) {
             if (n == 7)
                 return false;
@@ -89,7 +83,7 @@ bool LineScanner::readValue(double& out)
         ++m_p;
         return readParameter(out);
     }
-    if (isLetterChar(c))
+    if (isLetter(c))
         return readFunction(out);
     fail(m_p, c == ']' ? "']' without '['" : "expected a value");
     return false;
@@ -150,7 +144,7 @@ int LineScanner::readOperator(int& precedence)
     default:
         break;
     }
-    if (!isLetterChar(c))
+    if (!isLetter(c))
         return None;
     const char* start = m_p;
     char word[8];

@@ -12,11 +12,6 @@ namespace {
 constexpr int kMaxAssignments = 50;   // RS274NGC's limit of parameter settings per line
 constexpr double kValueLimit = 1e15;  // larger word values are typing errors, not coordinates
 
-bool isLetter(char c)
-{
-    const char lower = static_cast<char>(c | 0x20);
-    return lower >= 'a' && lower <= 'z';
-}
 char upper(char c) { return static_cast<char>(c & ~0x20); }
 
 struct KeywordName {
@@ -227,8 +222,8 @@ bool LineScanner::readWord(char letter, Block& block)
             return false;
         }
         const double tenths = v * 10;
-        const double rounded = std::round(tenths);
-        if (v < 0 || std::abs(tenths - rounded) > 1e-3 || (letter == 'M' && std::fmod(rounded, 10) != 0)) {
+        const long long rounded = v < 0 ? -1 : static_cast<long long>(tenths + 0.5);  // |v| < 1e15: fits
+        if (v < 0 || std::abs(tenths - static_cast<double>(rounded)) > 1e-3 || (letter == 'M' && rounded % 10 != 0)) {
             fail(at, std::string(1, letter) + " number must be " +
                          (letter == 'G' ? "positive with at most one decimal" : "a positive integer"));
             return false;

@@ -6,6 +6,7 @@
 #pragma once
 
 #include "nc/iso/IsoBlock.h"
+#include "nc/iso/IsoNumber.h"
 #include "nc/iso/IsoParameters.h"
 #include "nc/iso/IsoReporter.h"
 
@@ -43,7 +44,7 @@ private:
     int columnOf(const char* at) const { return static_cast<int>(at - m_begin) + 1; }
     void skipBlanks()
     {
-        while (m_p < m_end && (*m_p == ' ' || *m_p == '\t' || *m_p == '\r'))
+        while (m_p < m_end && isBlank(*m_p))
             ++m_p;
     }
 

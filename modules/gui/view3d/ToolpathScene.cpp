@@ -13,6 +13,16 @@ namespace camwb::gui {
 
 namespace {
 
+// Distance of p from the segment a-b.
+double distanceToChord(const base::Vec3& p, const base::Vec3& a, const base::Vec3& b)
+{
+    const base::Vec3 ab = b - a;
+    const double lengthSquared = ab.dot(ab);
+    double t = lengthSquared > 0 ? (p - a).dot(ab) / lengthSquared : 0.0;
+    t = std::clamp(t, 0.0, 1.0);
+    return base::distance(p, a + ab * t);
+}
+
 vtkSmartPointer<vtkPolyData> linesOf(vtkPoints* points, vtkCellArray* lines)
 {
     auto data = vtkSmartPointer<vtkPolyData>::New();
@@ -40,48 +50,114 @@ std::shared_ptr<ToolpathScene> ToolpathScene::build(const toolpath::Toolpath& to
     }
 
     // Parts in order of first use of their tool; most programs have a handful of tools.
+    std::vector<std::size_t> partOfSegment;
+    partOfSegment.reserve(polylines.segments().size());
+    for (std::size_t s = 0; s < polylines.segments().size(); ++s) {
+        const PathSegment& segment = polylines.segments()[s];
+        std::size_t index = 0;
+        while (index < scene->m_parts.size() && scene->m_parts[index].tool != segment.tool)
+            ++index;
+        if (index == scene->m_parts.size())
+            scene->m_parts.push_back({segment.tool, nullptr, nullptr, {}, {}});
+        Part& part = scene->m_parts[index];
+        (segment.kind == PathSegmentKind::Rapid ? part.rapidSegments : part.cutSegments)
+            .push_back(static_cast<std::uint32_t>(s));
+        partOfSegment.push_back(index);
+    }
+
+    // Display cells: a software renderer needs seconds per frame for a million lines, so huge
+    // programs are drawn simplified within a tolerance grown until the vertices fit the budget.
+    // Picking and highlighting keep using the exact segments.
+    double tolerance = kCollinearMm;
+    const double diagonal = scene->boundsDiagonal();
+    for (;;) {
+        const std::size_t vertices = scene->buildCells(partOfSegment, tolerance);
+        if (vertices <= kDisplayVertexBudget || tolerance >= diagonal * kMaxToleranceOfDiagonal)
+            break;
+        tolerance = std::max(tolerance * 4.0, diagonal * kFirstToleranceOfDiagonal);
+    }
+    scene->m_displayToleranceMm = tolerance;
+    return scene;
+}
+
+double ToolpathScene::boundsDiagonal() const
+{
+    const auto& points = m_polylines.points();
+    if (points.empty())
+        return 0;
+    base::Vec3 lo = points.front(), hi = points.front();
+    for (const base::Vec3& p : points) {
+        lo = {std::min(lo.x, p.x), std::min(lo.y, p.y), std::min(lo.z, p.z)};
+        hi = {std::max(hi.x, p.x), std::max(hi.y, p.y), std::max(hi.z, p.z)};
+    }
+    return base::distance(lo, hi);
+}
+
+// Runs of connected segments of one kind and tool become one polyline cell; a point closer than
+// `tolerance` to the chord from the last kept point to the next one is dropped.
+std::size_t ToolpathScene::buildCells(const std::vector<std::size_t>& partOfSegment, double tolerance)
+{
     struct Builder {
         vtkSmartPointer<vtkCellArray> cut = vtkSmartPointer<vtkCellArray>::New();
         vtkSmartPointer<vtkCellArray> rapid = vtkSmartPointer<vtkCellArray>::New();
         vtkSmartPointer<vtkUnsignedCharArray> colors = vtkSmartPointer<vtkUnsignedCharArray>::New();
     };
-    std::vector<Builder> builders;
-    auto partOf = [&](int tool) -> std::size_t {
-        for (std::size_t i = 0; i < scene->m_parts.size(); ++i)
-            if (scene->m_parts[i].tool == tool)
-                return i;
-        scene->m_parts.push_back({tool, nullptr, nullptr, {}, {}});
-        builders.emplace_back();
-        builders.back().colors->SetNumberOfComponents(3);
-        builders.back().colors->SetName("kind");
-        return scene->m_parts.size() - 1;
+    std::vector<Builder> builders(m_parts.size());
+    for (Builder& builder : builders) {
+        builder.colors->SetNumberOfComponents(3);
+        builder.colors->SetName("kind");
+    }
+    const auto& points = m_polylines.points();
+    const auto& segments = m_polylines.segments();
+    std::size_t vertices = 0;
+    std::vector<vtkIdType> run;
+    vtkIdType pending = -1;
+    std::size_t runStart = 0;
+
+    auto flush = [&] {
+        if (run.empty())
+            return;
+        run.push_back(pending);
+        const PathSegment& first = segments[runStart];
+        Builder& builder = builders[partOfSegment[runStart]];
+        if (first.kind == PathSegmentKind::Rapid) {
+            builder.rapid->InsertNextCell(static_cast<vtkIdType>(run.size()), run.data());
+        } else {
+            builder.cut->InsertNextCell(static_cast<vtkIdType>(run.size()), run.data());
+            builder.colors->InsertNextTypedTuple(first.kind == PathSegmentKind::Arc ? kArcRgb : kFeedRgb);
+        }
+        vertices += run.size();
+        run.clear();
     };
-    const auto& segments = polylines.segments();
     for (std::size_t s = 0; s < segments.size(); ++s) {
         const PathSegment& segment = segments[s];
-        const std::size_t index = partOf(segment.tool);
-        Part& part = scene->m_parts[index];
-        Builder& builder = builders[index];
-        const vtkIdType ids[2]{segment.from, segment.to};
-        if (segment.kind == PathSegmentKind::Rapid) {
-            builder.rapid->InsertNextCell(2, ids);
-            part.rapidSegments.push_back(static_cast<std::uint32_t>(s));
-        } else {
-            builder.cut->InsertNextCell(2, ids);
-            builder.colors->InsertNextTypedTuple(segment.kind == PathSegmentKind::Arc ? kArcRgb : kFeedRgb);
-            part.cutSegments.push_back(static_cast<std::uint32_t>(s));
+        const bool continues = !run.empty() && segment.from == static_cast<std::uint32_t>(pending) &&
+                               segment.kind == segments[runStart].kind && partOfSegment[s] == partOfSegment[runStart];
+        if (!continues) {
+            flush();
+            runStart = s;
+            run.push_back(segment.from);
+            pending = segment.to;
+            continue;
         }
+        if (distanceToChord(points[pending], points[run.back()], points[segment.to]) > tolerance)
+            run.push_back(pending);
+        pending = segment.to;
     }
-    for (std::size_t i = 0; i < scene->m_parts.size(); ++i) {
-        Part& part = scene->m_parts[i];
-        if (!part.cutSegments.empty()) {
-            part.cut = linesOf(scene->m_points, builders[i].cut);
+    flush();
+
+    for (std::size_t i = 0; i < m_parts.size(); ++i) {
+        Part& part = m_parts[i];
+        part.cut = nullptr;
+        part.rapid = nullptr;
+        if (builders[i].cut->GetNumberOfCells() > 0) {
+            part.cut = linesOf(m_points, builders[i].cut);
             part.cut->GetCellData()->SetScalars(builders[i].colors);
         }
-        if (!part.rapidSegments.empty())
-            part.rapid = linesOf(scene->m_points, builders[i].rapid);
+        if (builders[i].rapid->GetNumberOfCells() > 0)
+            part.rapid = linesOf(m_points, builders[i].rapid);
     }
-    return scene;
+    return vertices;
 }
 
 std::vector<int> ToolpathScene::tools() const

@@ -27,6 +27,8 @@
 #include <QTest>
 #include <QTimer>
 
+#include <cmath>
+
 using camwb::gui::MainWindow;
 using camwb::gui::NcInspector;
 using camwb::gui::View3D;
@@ -278,11 +280,12 @@ private slots:
         text.reserve(lines * 32);
         text += "(generated)\nG21 G90 G17 G54\nT1 M6\nS6000 M3\nG0 X0 Y0 Z5\nG1 Z-1 F1200\n";
         for (int i = 6; i < lines - 1; ++i) {
+            // A 3D finishing pass as CAM writes it: rows of short moves over a wavy surface.
             const double x = (i % 2000) * 0.05, y = (i / 2000) * 0.5;
-            if (i % 50 == 0)
-                text += "G2 X" + QByteArray::number(x, 'f', 3) + " Y" + QByteArray::number(y, 'f', 3) + " I0.025 J0\n";
-            else
-                text += "G1 X" + QByteArray::number(x, 'f', 3) + " Y" + QByteArray::number(y, 'f', 3) + "\n";
+            const double z = -1.0 - 0.8 * std::sin(x * 0.35) * std::cos(y * 0.05);
+            text += (i % 50 == 0 ? "G2 X" : "G1 X") + QByteArray::number(x, 'f', 3) + " Y" +
+                    QByteArray::number(y, 'f', 3) + " Z" + QByteArray::number(z, 'f', 3) +
+                    (i % 50 == 0 ? " I0.025 J0\n" : "\n");
         }
         text += "M30\n";
         const QString path = writeFile(dir, QStringLiteral("large.ngc"), text);

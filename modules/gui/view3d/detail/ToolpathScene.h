@@ -1,7 +1,8 @@
 // The backplot's VTK data, built from a toolpath off the GUI thread (the NC inspector traces a
 // million-line program in a worker and hands the finished scene to the view): one polydata pair
-// (cutting, rapid) per tool so tools can be hidden, plus the segment index of every cell for
-// picking. Private to gui/view3d; the view's public header only forward-declares it.
+// (cutting, rapid) per tool so tools can be hidden, connected segments drawn as polylines, and
+// the exact segments of every part for picking. Private to gui/view3d; the view's public header
+// only forward-declares it.
 #pragma once
 
 #include "gui/view3d/ToolpathPolylines.h"
@@ -24,9 +25,9 @@ class ToolpathScene {
 public:
     struct Part {
         int tool = 0;
-        vtkSmartPointer<vtkPolyData> cut;    // feed and arc segments, colour per cell
-        vtkSmartPointer<vtkPolyData> rapid;  // rapid segments
-        std::vector<std::uint32_t> cutSegments;
+        vtkSmartPointer<vtkPolyData> cut;        // feed and arc segments, colour per cell
+        vtkSmartPointer<vtkPolyData> rapid;      // rapid segments
+        std::vector<std::uint32_t> cutSegments;  // exact segments, in order
         std::vector<std::uint32_t> rapidSegments;
     };
 
@@ -40,11 +41,24 @@ public:
     std::vector<int> tools() const;
     // Lines for the given segment indices (highlighting), sharing this scene's points.
     vtkSmartPointer<vtkPolyData> subset(const std::vector<std::uint32_t>& segments) const;
+    // How far the drawn lines may stray from the exact segments (only huge programs stray).
+    double displayToleranceMm() const { return m_displayToleranceMm; }
+
+    // Vertices drawn at most before the display is simplified, and the simplification's
+    // tolerance: the first step and the limit, as fractions of the bounding-box diagonal.
+    static constexpr std::size_t kDisplayVertexBudget = 400000;
+    static constexpr double kCollinearMm = 1e-6;
+    static constexpr double kFirstToleranceOfDiagonal = 2e-5;
+    static constexpr double kMaxToleranceOfDiagonal = 2e-3;
 
 private:
+    double boundsDiagonal() const;
+    std::size_t buildCells(const std::vector<std::size_t>& partOfSegment, double tolerance);
+
     ToolpathPolylines m_polylines;
     vtkSmartPointer<vtkPoints> m_points;
     std::vector<Part> m_parts;
+    double m_displayToleranceMm = 0;
 };
 
 // Colours of the backplot (as SinuTrain and CAMotics draw them): rapid red, feed green, arc blue.

@@ -162,7 +162,7 @@ bool Machine::executeNormal(const Program& p, const Block& b)
                 mCodes[mCount++] = w.code;
             break;
         case WordKind::Axis: {
-            const auto v = eval(p, w.expr);
+            const auto v = wordValue(p, w);
             if (v && checkRange(p, w.pos, *v)) {
                 axis[w.index] = v;
                 axisMode[w.index] = w.mode;
@@ -172,7 +172,7 @@ bool Machine::executeNormal(const Program& p, const Block& b)
             break;
         }
         case WordKind::Centre: {
-            const auto v = eval(p, w.expr);
+            const auto v = wordValue(p, w);
             if (v && checkRange(p, w.pos, *v)) {
                 arcWords.centre[w.index] = v;
                 arcWords.centreMode[w.index] = w.mode;
@@ -182,29 +182,29 @@ bool Machine::executeNormal(const Program& p, const Block& b)
             break;
         }
         case WordKind::F:
-            feed = eval(p, w.expr);
+            feed = wordValue(p, w);
             break;
         case WordKind::S:
-            speed = eval(p, w.expr);
+            speed = wordValue(p, w);
             break;
         case WordKind::T:
-            tool = eval(p, w.expr);
+            tool = wordValue(p, w);
             break;
         case WordKind::TName:
             m_toolName = p.texts[static_cast<std::size_t>(w.code)];
             tool = 0;
             break;
         case WordKind::D:
-            (void)eval(p, w.expr);
+            (void)wordValue(p, w);
             break;
         case WordKind::Cr:
-            arcWords.cr = eval(p, w.expr);
+            arcWords.cr = wordValue(p, w);
             break;
         case WordKind::Ar:
-            arcWords.ar = eval(p, w.expr);
+            arcWords.ar = wordValue(p, w);
             break;
         case WordKind::Turn: {
-            const auto v = eval(p, w.expr);
+            const auto v = wordValue(p, w);
             if (v && (*v < 0 || *v > 999 || *v != std::trunc(*v))) {
                 error(p, w.pos, "TURN must be a whole number 0..999");
                 m_evalFailed = true;
@@ -214,10 +214,10 @@ bool Machine::executeNormal(const Program& p, const Block& b)
             break;
         }
         case WordKind::Lims:
-            lims = eval(p, w.expr);
+            lims = wordValue(p, w);
             break;
         case WordKind::Assign: {
-            const auto v = eval(p, w.expr);
+            const auto v = wordValue(p, w);
             if (v)
                 assign(p, w, *v);
             break;

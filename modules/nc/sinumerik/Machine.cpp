@@ -257,8 +257,11 @@ bool Machine::step()
             std::int64_t n = 0;
             const auto r = std::from_chars(label.data() + 1, label.data() + label.size(), n);
             if (r.ec == std::errc() && r.ptr == label.data() + label.size())
-                if (auto it = p.blockNumbers.find(n); it != p.blockNumbers.end())
-                    targets.insert(targets.end(), it->second.begin(), it->second.end());
+                for (auto it = std::lower_bound(p.blockNumbers.begin(), p.blockNumbers.end(),
+                                                std::pair<std::int64_t, std::int32_t>{n, 0},
+                                                [](const auto&a, const auto&b) { return a.first < b.first; });
+                     it != p.blockNumbers.end() && it->first == n; ++it)
+                    targets.push_back(it->second);
         }
         std::sort(targets.begin(), targets.end());
         int target = -1;

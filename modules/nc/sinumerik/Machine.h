@@ -59,6 +59,10 @@ public:
 
     // Evaluate.cpp: the value of expression `e` of program `p`; nullopt after an error (reported).
     std::optional<double> eval(const Program& p, std::int32_t e);
+    std::optional<double> wordValue(const Program& p, const Word& w)
+    {
+        return w.expr < 0 ? std::optional<double>(w.value) : eval(p, w.expr);
+    }
 
 private:
     // Machine.cpp

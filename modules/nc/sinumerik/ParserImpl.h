@@ -48,6 +48,7 @@ private:
     bool parseStatement(Block& block, const std::string& keyword);
     bool parseWords(Block& block);
     bool parseWord(Block& block);
+    bool parseSpacedAddress(Block& block, const Token& name);
     bool parseAddressValue(Block& block, WordKind kind, std::uint8_t index, const Token& name, bool allowMode);
     bool parseCallArgs(Block& block);
     bool parseDef(Block& block);

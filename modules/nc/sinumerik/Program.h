@@ -116,6 +116,7 @@ struct Word {
     std::int32_t expr2 = -1;  // array element / indirect R index
     std::int32_t arraySize = 0;
     Pos pos;
+    double value = 0;
 };
 
 enum class BlockKind : std::uint8_t {
@@ -167,9 +168,10 @@ struct Program {
     std::vector<Word> words;
     std::vector<Expr> exprs;
     std::vector<std::int32_t> args;
-    std::vector<std::string> texts;                                            // comments, names, messages
-    std::unordered_map<std::string, std::vector<std::int32_t>> labels;         // upper-case label -> block indices
-    std::unordered_map<std::int64_t, std::vector<std::int32_t>> blockNumbers;  // N -> block indices
+    std::vector<std::string> texts;                                     // comments, names, messages
+    std::unordered_map<std::string, std::vector<std::int32_t>> labels;  // upper-case label -> block indices
+    // (N, block index) in block order; sorted by N at the end of parsing for GOTO N...
+    std::vector<std::pair<std::int64_t, std::int32_t>> blockNumbers;
     std::int32_t localSlots = 0;           // DEF variables (array elements included)
     std::vector<std::uint8_t> slotType;    // per local slot: 0 REAL, 1 INT (rounded), 2 BOOL (0/1)
     std::vector<std::int32_t> procParams;  // local slots of the PROC parameters, in order

@@ -133,6 +133,42 @@ bool Parser::parseCallArgs(Block& block)
     }
 }
 
+// A letter with its number after a sign or a space: X-10, X .5, G 1.
+bool Parser::parseSpacedAddress(Block& block, const Token& t)
+{
+    const Pos pos = posOf(t);
+    const std::string u = upper(t.text);
+    const int axis = axisIndex(u);
+    const int centre = centreIndex(u);
+    if (!isAddressLetter(u) || u == "N" || u == "H" || u == "P" || u == "L")
+        return error(pos, "unknown word " + std::string(t.text));
+    ++m_pos;
+    const bool minus = peekIs(Tok::Minus);
+    if (!peekIs(Tok::Number))
+        ++m_pos;
+    const double v = minus ? -peek()->number : peek()->number;
+    ++m_pos;
+    if (u == "G" || u == "M") {
+        if (v != static_cast<int>(v) || v < 0 || v > 9999)
+            return error(pos, "invalid " + u + " code");
+        addWord(block, u == "G" ? WordKind::G : WordKind::M, pos).code = static_cast<int>(v);
+        if (u == "M" && v == 6)
+            m_p.hasM6 = true;
+        return true;
+    }
+    Word& w = addWord(block,
+                      axis >= 0     ? WordKind::Axis
+                      : centre >= 0 ? WordKind::Centre
+                      : u == "F"    ? WordKind::F
+                      : u == "S"    ? WordKind::S
+                      : u == "T"    ? WordKind::T
+                                    : WordKind::D,
+                      pos);
+    w.index = static_cast<std::uint8_t>(axis >= 0 ? axis : centre >= 0 ? centre : 0);
+    w.value = v;
+    return true;
+}
+
 bool Parser::parseWord(Block& block)
 {
     const Token& t = *peek();
@@ -146,6 +182,44 @@ bool Parser::parseWord(Block& block)
             return error(pos, "unexpected character '" + std::string(t.text) + "'");
         return error(pos, "unexpected '" + std::string(t.text) + "'");
     }
+    // The common case first: one address letter and a number (X10.5, G1, M3), nothing after it
+    // that makes it an assignment, call or array.
+    if (t.text.size() >= 2 && (t.text[1] == '.' || (t.text[1] >= '0' && t.text[1] <= '9')) && !peekIs(Tok::Assign, 1) &&
+        !peekIs(Tok::LParen, 1) && !peekIs(Tok::LBracket, 1)) {
+        char letter = t.text[0];
+        if (letter >= 'a' && letter <= 'z')
+            letter = static_cast<char>(letter - 'a' + 'A');
+        const std::string_view digits = t.text.substr(1);
+        const bool number = digits.find_first_not_of("0123456789.") == std::string_view::npos &&
+                            std::count(digits.begin(), digits.end(), '.') <= 1 && digits != ".";
+        const int ax = axisIndex(std::string_view(&letter, 1));
+        const int ce = centreIndex(std::string_view(&letter, 1));
+        if (number && (ax >= 0 || ce >= 0 || letter == 'F' || letter == 'S')) {
+            ++m_pos;
+            Word& w = addWord(block,
+                              ax >= 0         ? WordKind::Axis
+                              : ce >= 0       ? WordKind::Centre
+                              : letter == 'F' ? WordKind::F
+                                              : WordKind::S,
+                              pos);
+            w.index = static_cast<std::uint8_t>(ax >= 0 ? ax : ce >= 0 ? ce : 0);
+            w.value = numberOf(digits);
+            return true;
+        }
+        if (number && (letter == 'G' || letter == 'M') && digits.size() <= 4 &&
+            digits.find('.') == std::string_view::npos) {
+            ++m_pos;
+            int code = 0;
+            std::from_chars(digits.data(), digits.data() + digits.size(), code);
+            addWord(block, letter == 'G' ? WordKind::G : WordKind::M, pos).code = code;
+            if (letter == 'M' && code == 6)
+                m_p.hasM6 = true;
+            return true;
+        }
+    }
+    if (t.text.size() == 1 &&
+        (peekIs(Tok::Number, 1) || ((peekIs(Tok::Minus, 1) || peekIs(Tok::Plus, 1)) && peekIs(Tok::Number, 2))))
+        return parseSpacedAddress(block, t);
     const std::string u = upper(t.text);
     const int axis = axisIndex(u);
     const int centre = centreIndex(u);
@@ -396,41 +470,9 @@ bool Parser::parseWord(Block& block)
         }
         Word& w = addWord(block, kind, pos);
         w.index = index;
-        w.expr = constant(numberOf(digits), pos);
+        w.value = numberOf(digits);
         return true;
     }
-    // A letter with the number after a sign or a space: X-10, X .5
-    if (isAddressLetter(u) &&
-        (peekIs(Tok::Number, 1) || ((peekIs(Tok::Minus, 1) || peekIs(Tok::Plus, 1)) && peekIs(Tok::Number, 2)))) {
-        ++m_pos;
-        const bool minus = peekIs(Tok::Minus);
-        if (!peekIs(Tok::Number))
-            ++m_pos;
-        const double v = minus ? -peek()->number : peek()->number;
-        ++m_pos;
-        if (u == "G" || u == "M") {
-            if (v != static_cast<int>(v) || v < 0 || v > 9999)
-                return error(pos, "invalid " + u + " code");
-            addWord(block, u == "G" ? WordKind::G : WordKind::M, pos).code = static_cast<int>(v);
-            if (u == "M" && v == 6)
-                m_p.hasM6 = true;
-            return true;
-        }
-        if (u == "N" || u == "H" || u == "P" || u == "L")
-            return error(pos, "unexpected " + u + " word");
-        Word& w = addWord(block,
-                          axis >= 0     ? WordKind::Axis
-                          : centre >= 0 ? WordKind::Centre
-                          : u == "F"    ? WordKind::F
-                          : u == "S"    ? WordKind::S
-                          : u == "T"    ? WordKind::T
-                                        : WordKind::D,
-                          pos);
-        w.index = static_cast<std::uint8_t>(axis >= 0 ? axis : centre >= 0 ? centre : 0);
-        w.expr = constant(v, pos);
-        return true;
-    }
-
 call:
     // A name on its own (optionally with P repetitions) calls a subprogram.
     if (block.wordCount == 0 && block.callWord < 0 && u.size() <= 31 &&

@@ -35,6 +35,20 @@ Workbench::Severity severityOf(nc::Severity severity)
     return Workbench::Severity::Error;
 }
 
+// The editor shows the trace's diagnostics in its margin and highlights in the traced dialect,
+// through the API its own engineer is adding (NcEditor::setDiagnostics/diagnosticsFor/
+// setDialect); written against whichever of it exists, so both trees build in any order.
+template <class Editor> void showInEditor(Editor& editor, const NcTrace& trace)
+{
+    if constexpr (requires { editor.setDialect(trace.dialect); }) {
+        if (editor.dialect() != trace.dialect)
+            editor.setDialect(trace.dialect);
+    }
+    const std::string program = trace.result.files.empty() ? std::string() : trace.result.files.front();
+    if constexpr (requires { editor.setDiagnostics(Editor::diagnosticsFor(trace.result.diagnostics, program)); })
+        editor.setDiagnostics(Editor::diagnosticsFor(trace.result.diagnostics, program));
+}
+
 }  // namespace
 
 struct NcInspector::Result {
@@ -171,6 +185,8 @@ void NcInspector::finish(const std::shared_ptr<Result>& result)
     m_timings.total = result->requested.nsecsElapsed() * 1e-9;
 
     reportDiagnostics(*m_trace);
+    if (m_editor != nullptr)
+        showInEditor(*m_editor, *m_trace);
     m_highlighted.clear();
     if (m_editor != nullptr)
         showLine(m_editor->currentLine());

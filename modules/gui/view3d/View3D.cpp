@@ -338,6 +338,8 @@ std::shared_ptr<const ToolpathScene> View3D::prepareToolpath(const toolpath::Too
 
 void View3D::setPreparedToolpath(std::shared_ptr<const ToolpathScene> scene)
 {
+    if (scene && scene == d->scene)
+        return;  // shown already: keep the actors and what the GPU holds
     const bool fitAfter = !d->modelActor && !hasToolpathActor();
     clearToolpath();
     if (!scene || scene->polylines().empty())

@@ -86,6 +86,18 @@ struct Rig {
     }
 };
 
+// The editor's margin severity at a line (-1 = none), or nullopt while the editor has no
+// diagnostics API (it is being added beside the inspector).
+template <class Editor> std::optional<int> marginSeverity(const Editor& editor, int line)
+{
+    if constexpr (requires { editor.diagnosticSeverityAt(line); }) {
+        const auto severity = editor.diagnosticSeverityAt(line);
+        return severity ? static_cast<int>(*severity) : -1;
+    } else {
+        return std::nullopt;
+    }
+}
+
 #define LOAD_OR_SKIP(rig, text)                                                                                        \
     do {                                                                                                               \
         QString why;                                                                                                   \
@@ -307,6 +319,30 @@ private slots:
         const int caller = trace->lineOfRecord(called.front());
         QVERIFY2(caller == 5 || caller == 4, qPrintable(QString::number(caller)));
         QCOMPARE(trace->lineOfRecord(called.back()), caller);
+    }
+
+    void diagnosticsReachTheEditorMargin()
+    {
+        Rig rig;
+        const QString text =
+            QString::fromLatin1(kProgram).replace(QLatin1String("G1 X10\n"), QLatin1String("G1 X10 Q?\n"));
+        QSignalSpy messages(&rig.inspector, &NcInspector::message);
+        LOAD_OR_SKIP(rig, text);
+        const auto trace = rig.inspector.trace();
+        QVERIFY(!trace->result.diagnostics.empty());
+        const int line = trace->result.diagnostics.front().line;
+        QCOMPARE(line, 7);
+        // The report hears it too, with file and line.
+        bool reported = false;
+        for (const auto& m : messages)
+            reported = reported || m.at(1).toString().contains(QLatin1String("inspector-test.ngc:7"));
+        QVERIFY(reported);
+        const std::optional<int> severity = marginSeverity(rig.editor, line);
+        if (!severity)
+            QSKIP("NcEditor has no diagnostics API yet");
+        QCOMPARE(*severity, static_cast<int>(trace->result.diagnostics.front().severity));
+        // (Line 8 gets one too: its arc now starts elsewhere.)
+        QCOMPARE(*marginSeverity(rig.editor, 12), -1);
     }
 
     void toolsCanBeHidden()

@@ -3,6 +3,8 @@
 // two lines, which shorten the element before them (planned here with a look-ahead).
 #include "nc/heidenhain/Machine.h"
 
+#include "base/NumberFormat.h"
+
 #include <cmath>
 #include <numbers>
 
@@ -25,12 +27,8 @@ bool isContour(BlockKind k)
 
 bool isFiller(BlockKind k) { return k == BlockKind::Empty || k == BlockKind::Comment; }
 
-std::string mm(double v)
-{
-    char buffer[32];
-    std::snprintf(buffer, sizeof buffer, "%.4f", v);
-    return buffer;
-}
+// Four decimals, independent of the C locale (the GUI sets the user's).
+std::string mm(double v) { return base::formatFixed(v, 4); }
 
 }  // namespace
 

@@ -3,6 +3,7 @@
 // boring) and 208 (bore milling) expanded into moves here, because no CycleKind describes them.
 #include "nc/heidenhain/Machine.h"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
@@ -287,12 +288,12 @@ void Machine::boreMilling(const Block& b, Vec2 hole)
     } else {
         const double pitch = d.get(334) * m_scale;
         const double height = startZ - bottom;
-        const double laps = pitch > 0 ? height / pitch : 1.0;
+        const double laps = std::clamp(pitch > 0 ? height / pitch : 1.0, 0.0, 1000.0);
         if (pitch <= 0)
             report(Severity::Warning, b.line, b.column, "cycle 208: infeed per helix Q334 <= 0: one lap traced");
         // Climb milling inside a bore turns counter-clockwise with a clockwise spindle.
         const bool ccw = (d.get(351, 1) >= 0) == m_spindleCw;
-        const double sweep = std::min(laps, 1000.0) * 2 * std::numbers::pi;
+        const double sweep = laps * 2 * std::numbers::pi;
         const Vec3 start{hole.x + radius, hole.y, startZ};
         m_sink.linear(Linear{start, feed});
         Arc helix;
@@ -302,7 +303,7 @@ void Machine::boreMilling(const Block& b, Vec2 hole)
                          : Vec3{hole.x + radius * std::cos(a), hole.y + radius * std::sin(a), bottom};
         helix.center = {hole.x, hole.y, startZ};
         helix.clockwise = !ccw;
-        helix.turns = std::max(0, static_cast<int>(std::ceil(std::min(laps, 1000.0) - 1e-9)) - 1);
+        helix.turns = std::max(0, static_cast<int>(std::ceil(laps - 1e-9)) - 1);
         helix.feedMmPerMin = feed;
         m_sink.arc(helix);
         Arc circle = helix;
@@ -338,7 +339,8 @@ void Machine::backBoring(const Block& b, Vec2 hole)
         return;
     }
     Vec2 off = hole;
-    switch (static_cast<int>(d.get(214))) {
+    const double direction = d.get(214);
+    switch (direction >= 0 && direction <= 4 ? static_cast<int>(direction) : 0) {
     case 1:
         off.x -= offset;
         break;

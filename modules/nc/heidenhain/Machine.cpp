@@ -2,6 +2,7 @@
 
 #include "nc/heidenhain/Parser.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace camwb::nc::heidenhain {
@@ -103,6 +104,25 @@ void Machine::run(std::string_view text)
             ++m_pc;
     }
     m_sink.end();
+    sortDiagnostics();
+}
+
+// Parse-time and run-time diagnostics in the order of the files and their lines, as an editor
+// lists them (stable: the order of one line's diagnostics stays as found).
+void Machine::sortDiagnostics()
+{
+    auto fileOrder = [this](const std::string& file) {
+        for (std::size_t i = 0; i < m_programs.size(); ++i) {
+            if (m_programs[i]->path == file)
+                return static_cast<int>(i);
+        }
+        return static_cast<int>(m_programs.size());
+    };
+    std::stable_sort(m_result.diagnostics.begin(), m_result.diagnostics.end(),
+                     [&](const Diagnostic& a, const Diagnostic& b) {
+                         const int fa = fileOrder(a.file), fb = fileOrder(b.file);
+                         return fa != fb ? fa < fb : a.line < b.line;
+                     });
 }
 
 void Machine::endProgram(bool completed)
@@ -183,8 +203,9 @@ void Machine::execute(const Block& b)
         return fnJump(b);
     case BlockKind::FnError: {
         const auto v = b.exprA >= 0 ? eval(b.exprA) : std::optional<double>(0);
+        const long long number = v && std::abs(*v) < 1e9 ? static_cast<long long>(*v) : 0;
         report(Severity::Error, b.line, b.column,
-               "FN 14: ERROR = " + std::to_string(v ? static_cast<long long>(*v) : 0) + ": the control stops here");
+               "FN 14: ERROR = " + std::to_string(number) + ": the control stops here");
         return endProgram(false);
     }
     case BlockKind::CycleDef:
@@ -466,6 +487,10 @@ void Machine::toolDef(const Block& b)
     BlockWords w;
     if (!n || !gather(b, w, false))
         return;
+    if (*n < 0 || *n > 32767) {
+        report(Severity::Error, b.line, b.column, "tool number out of range");
+        return;
+    }
     if (w.radius)
         m_toolRadius[static_cast<int>(*n)] = *w.radius * m_scale;
 }
@@ -611,6 +636,12 @@ void Machine::callProgram(const Block& b)
             if (m_programs[i]->path == found->path)
                 index = static_cast<int>(i);
         }
+    }
+    if (index < 0 && m_programs.size() >= kMaxPrograms) {
+        report(Severity::Error, b.line, b.column,
+               "more than " + std::to_string(kMaxPrograms) + " different programs called: " + std::string(b.name) +
+                   " is not loaded");
+        return;
     }
     if (index < 0) {
         auto called = std::make_unique<Program>();

@@ -27,6 +27,7 @@ using base::Vec3;
 inline constexpr double kMaxCoordinate = 99999.9999;  // the control's input range
 inline constexpr int kMaxLabelNesting = 64;
 inline constexpr int kMaxProgramNesting = 16;
+inline constexpr std::size_t kMaxPrograms = 64;  // different programs one run may load (memory bound)
 
 // Keys of the warnings given once per run.
 enum WarnKey : int {
@@ -121,6 +122,7 @@ private:
     void applyFeed(const BlockWords& w);
     void applyComp(const BlockWords& w);
     void endProgram(bool completed);
+    void sortDiagnostics();
     void returnFromProgram();
     void toolCall(const Block& b);
     void toolDef(const Block& b);

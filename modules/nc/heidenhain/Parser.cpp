@@ -556,8 +556,8 @@ void parseProgram(Program& program, std::string_view text, Reporter& reporter)
         if (raw.number >= 0) {
             if (previous >= 0 && raw.number <= previous)
                 reporter.report(Severity::Warning, program.path, raw.line, raw.numberColumn,
-                                "block number " + std::to_string(raw.number) + " out of order (line " +
-                                    std::to_string(previousLine) + " has " + std::to_string(previous) + ")");
+                                "block number " + std::to_string(raw.number) + " out of order (" +
+                                    std::to_string(previous) + " on line " + std::to_string(previousLine) + ")");
             previous = raw.number;
             previousLine = raw.line;
         }

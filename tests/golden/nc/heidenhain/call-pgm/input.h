@@ -1,0 +1,11 @@
+0 BEGIN PGM MAIN MM
+1 ; a called program (CALL PGM, found beside this one) shares the Q parameters
+2 TOOL CALL 2 Z S3000
+3 L Z+20 R0 FMAX M3
+4 Q1 = 10
+5 CALL PGM DRILLPAT
+6 Q1 = 40
+7 CALL PGM DRILLPAT.h
+8 L Z+50 FMAX
+9 L M30
+10 END PGM MAIN MM

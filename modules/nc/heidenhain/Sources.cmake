@@ -11,5 +11,6 @@ set(NC_PART_SOURCES
     ParserWords.cpp
     Machine.cpp
     Machine.h
+    MachineFunctions.cpp
     Contour.cpp
     Cycles.cpp)

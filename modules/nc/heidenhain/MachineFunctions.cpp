@@ -1,0 +1,329 @@
+// Words and machine functions of Klartext blocks: evaluating a block's words, feeds (F, FMAX,
+// F AUTO, FU), radius compensation (R0/RL/RR), M functions in the control's order (spindle and
+// coolant at the block start; stops, program end, M99/M89 cycle calls at its end), TOOL DEF and
+// TOOL CALL.
+#include "nc/heidenhain/Machine.h"
+
+#include <cmath>
+
+namespace camwb::nc::heidenhain {
+
+using namespace camwb::toolpath;
+
+bool Machine::gather(const Block& b, BlockWords& w, bool quiet)
+{
+    const Program& p = program();
+    bool ok = true;
+    for (int i = 0; i < b.wordCount; ++i) {
+        const Word& word = p.words[static_cast<std::size_t>(b.firstWord + i)];
+        std::optional<double> v;
+        if (word.expr >= 0) {
+            v = eval(word.expr, quiet);
+            if (!v) {
+                ok = false;
+                continue;
+            }
+        }
+        const auto k = static_cast<int>(word.key);
+        if (k <= static_cast<int>(Key::IW)) {
+            if (std::abs(*v) > kMaxCoordinate && !quiet) {
+                report(Severity::Error, word.line, word.column, "coordinate out of the control's range (+-99999.9999)");
+                ok = false;
+                continue;
+            }
+            w.axes[static_cast<std::size_t>(k)] = *v;
+            const Key key = word.key;
+            if (key != Key::X && key != Key::Y && key != Key::Z && key != Key::IX && key != Key::IY && key != Key::IZ)
+                w.rotary = true;
+            continue;
+        }
+        switch (word.key) {
+        case Key::PR:
+            w.pr = v;
+            break;
+        case Key::PA:
+            w.pa = v;
+            break;
+        case Key::IPR:
+            w.ipr = v;
+            break;
+        case Key::IPA:
+            w.ipa = v;
+            break;
+        case Key::Radius:
+            w.radius = v;
+            break;
+        case Key::Len:
+            w.len = v;
+            break;
+        case Key::Angle:
+            w.angle = v;
+            break;
+        case Key::Direction:
+            w.direction = word.param;
+            break;
+        case Key::Comp:
+            w.comp = word.param;
+            break;
+        case Key::Feed:
+            w.feed = BlockWords::FeedWord::Value;
+            w.feedValue = *v;
+            if (*v < 0 && !quiet) {
+                report(Severity::Error, word.line, word.column, "negative feed");
+                ok = false;
+            }
+            break;
+        case Key::FeedMax:
+            w.feed = BlockWords::FeedWord::Max;
+            break;
+        case Key::FeedAuto:
+            w.feed = BlockWords::FeedWord::Auto;
+            break;
+        case Key::FeedRev:
+            w.feed = BlockWords::FeedWord::PerRev;
+            w.feedValue = *v;
+            break;
+        case Key::FeedTooth:
+            w.feed = BlockWords::FeedWord::PerTooth;
+            w.feedValue = *v;
+            break;
+        case Key::M:
+            if (w.mCount < static_cast<int>(w.m.size())) {
+                if (w.mCount == 0)
+                    w.mColumn = word.column;
+                w.m[static_cast<std::size_t>(w.mCount++)] = word.param;
+            } else if (!quiet) {
+                report(Severity::Warning, word.line, word.column, "more than 8 M functions in one block: ignored");
+            }
+            break;
+        case Key::Mb:
+            if (word.param == 1)
+                w.mbMax = true;
+            else
+                w.mb = v;
+            break;
+        default:
+            break;
+        }
+    }
+    return ok;
+}
+
+void Machine::applyFeed(const BlockWords& w)
+{
+    using F = BlockWords::FeedWord;
+    if (w.feed == F::Value || w.feed == F::Auto) {
+        if (m_feedMode != FeedMode::PerMinute) {
+            m_feedMode = FeedMode::PerMinute;
+            m_sink.feedMode(FeedModeChange{FeedMode::PerMinute});
+        }
+        m_feed = w.feed == F::Value ? w.feedValue * m_feedScale : m_autoFeed;
+    } else if (w.feed == F::PerRev) {
+        if (m_feedMode != FeedMode::PerRevolution) {
+            m_feedMode = FeedMode::PerRevolution;
+            m_sink.feedMode(FeedModeChange{FeedMode::PerRevolution});
+        }
+        m_feed = w.feedValue * m_scale;
+    }
+}
+
+void Machine::applyComp(const BlockWords& w)
+{
+    if (w.comp < 0)
+        return;
+    const CutterCompSide side =
+        w.comp == 0 ? CutterCompSide::Off : (w.comp == 1 ? CutterCompSide::Left : CutterCompSide::Right);
+    if (side != m_comp) {
+        m_comp = side;
+        m_sink.cutterComp(CutterComp{side});
+    }
+}
+
+void Machine::spindleOn(bool clockwise, const Block& b, int column)
+{
+    if (m_rpm <= 0)
+        report(Severity::Warning, b.line, column, "spindle started with no speed (S) programmed");
+    m_spindleOn = true;
+    m_spindleCw = clockwise;
+    m_sink.spindle(Spindle{m_rpm, clockwise, 0});
+}
+
+void Machine::spindleOff()
+{
+    if (!m_spindleOn)
+        return;
+    m_spindleOn = false;
+    m_sink.spindle(Spindle{0, m_spindleCw, 0});
+}
+
+void Machine::coolant(CoolantMode mode)
+{
+    if (mode == m_coolant)
+        return;
+    m_coolant = mode;
+    m_sink.coolant(Coolant{mode});
+}
+
+// M functions effective at the start of the block (before its motion).
+void Machine::applyEarlyM(const Block& b, const BlockWords& w)
+{
+    for (int i = 0; i < w.mCount; ++i) {
+        switch (w.m[static_cast<std::size_t>(i)]) {
+        case 3:
+            spindleOn(true, b, w.mColumn);
+            break;
+        case 4:
+            spindleOn(false, b, w.mColumn);
+            break;
+        case 8:
+            coolant(CoolantMode::Flood);
+            break;
+        case 13:
+            spindleOn(true, b, w.mColumn);
+            coolant(CoolantMode::Flood);
+            break;
+        case 14:
+            spindleOn(false, b, w.mColumn);
+            coolant(CoolantMode::Flood);
+            break;
+        case 128:
+            warnOnce(kWarnTcpm, b,
+                     "M128 (TCPM): five-axis tool-tip motion is traced once the five-axis machine model exists; "
+                     "positions are traced as three-axis moves");
+            break;
+        case 91:
+        case 92:
+            warnOnce(kWarnM91, b, "M91/M92 (machine coordinates): traced as workpiece coordinates (no machine model)");
+            break;
+        default:
+            break;
+        }
+    }
+}
+
+// M functions effective at the end of the block (after its motion).
+void Machine::applyLateM(const Block& b, const BlockWords& w, bool moved)
+{
+    bool cycleCalled = false;
+    for (int i = 0; i < w.mCount; ++i) {
+        const int m = w.m[static_cast<std::size_t>(i)];
+        switch (m) {
+        case 0:
+        case 1:
+            m_sink.programStop(ProgramStop{m == 1});
+            break;
+        case 2:
+        case 30:
+            spindleOff();
+            coolant(CoolantMode::Off);
+            if (m_programDepth > 0) {
+                warnOnce(kWarnCalledEnd, b, "M2/M30 in a called program: traced as its end");
+                returnFromProgram();
+            } else {
+                endProgram(true);
+            }
+            return;
+        case 5:
+            spindleOff();
+            break;
+        case 9:
+            coolant(CoolantMode::Off);
+            break;
+        case 99:
+            m_modalCycleCall = false;
+            runCycle(b, m_pos.xy());
+            cycleCalled = true;
+            break;
+        case 89:
+            m_modalCycleCall = true;
+            runCycle(b, m_pos.xy());
+            cycleCalled = true;
+            break;
+        case 140:
+            if (w.mb) {
+                m_pos.z += *w.mb * m_scale;
+                m_sink.rapid(Rapid{m_pos});
+            } else {
+                warnOnce(kWarnM140, b,
+                         "M140 MB MAX: the retract to the travel limit is not traced (no machine limits)");
+            }
+            break;
+        default:
+            break;
+        }
+    }
+    if (moved && m_modalCycleCall && !cycleCalled)
+        runCycle(b, m_pos.xy());
+}
+
+void Machine::toolDef(const Block& b)
+{
+    if (b.exprA < 0)
+        return;
+    const auto n = eval(b.exprA);
+    BlockWords w;
+    if (!n || !gather(b, w, false))
+        return;
+    if (*n < 0 || *n > 32767) {
+        report(Severity::Error, b.line, b.column, "tool number out of range");
+        return;
+    }
+    if (w.radius)
+        m_toolRadius[static_cast<int>(*n)] = *w.radius * m_scale;
+}
+
+void Machine::toolCall(const Block& b)
+{
+    const Program& p = program();
+    BlockWords w;
+    gather(b, w, false);
+    std::optional<double> speed;
+    for (int i = 0; i < b.wordCount; ++i) {
+        const Word& word = p.words[static_cast<std::size_t>(b.firstWord + i)];
+        if (word.key == Key::ToolAxis && word.param != 'Z')
+            warnOnce(kWarnToolAxis, b,
+                     "tool axis " + std::string(1, static_cast<char>(word.param)) +
+                         ": circles and cycles are still traced in the XY plane");
+        if (word.key == Key::Speed)
+            speed = eval(word.expr);
+        if (word.key == Key::SurfaceSpeed)
+            warnOnce(kWarnSurfaceSpeed, b, "S(VC=...): the spindle speed needs the tool diameter and is not traced");
+        if (word.key == Key::Feed)
+            m_autoFeed = w.feedValue * m_feedScale;
+    }
+    if (b.a != -2) {
+        ToolChange change;
+        if (b.a == -1) {
+            change.tool.number = 0;
+            change.tool.name = std::string(b.name);
+        } else {
+            const auto n = eval(b.exprA);
+            if (!n)
+                return;
+            if (*n < 0 || *n > 32767 || *n != std::floor(*n)) {
+                report(Severity::Error, b.line, b.column, "tool number out of range");
+                return;
+            }
+            change.tool.number = static_cast<int>(*n);
+        }
+        spindleOff();
+        m_tool = change.tool.number;
+        if (auto r = m_toolRadius.find(m_tool); r != m_toolRadius.end())
+            change.tool.diameterMm = 2 * r->second;
+        source(b);
+        m_sink.toolChange(change);
+    }
+    if (speed) {
+        if (*speed < 0 || *speed > 999999) {
+            report(Severity::Error, b.line, b.column, "spindle speed out of range");
+            return;
+        }
+        m_rpm = *speed;
+        if (m_spindleOn) {
+            source(b);
+            m_sink.spindle(Spindle{m_rpm, m_spindleCw, 0});
+        }
+    }
+}
+
+}  // namespace camwb::nc::heidenhain

@@ -12,8 +12,20 @@ add_library(camwb_gui_widgets STATIC
   ${_camwb_gui_widgets_dir}/view3d/View3D.h
   ${_camwb_gui_widgets_dir}/view3d/View3D.cpp
   ${_camwb_gui_widgets_dir}/editor/NcStyles.h
-  ${_camwb_gui_widgets_dir}/editor/detail/SinumerikLexer.h
-  ${_camwb_gui_widgets_dir}/editor/SinumerikLexer.cpp
+  ${_camwb_gui_widgets_dir}/editor/detail/DialectLexers.h
+  ${_camwb_gui_widgets_dir}/editor/WordAddressLexer.cpp
+  ${_camwb_gui_widgets_dir}/editor/HeidenhainLexer.cpp
+  ${_camwb_gui_widgets_dir}/editor/NcFolding.cpp
+  ${_camwb_gui_widgets_dir}/editor/detail/NcLexer.h
+  ${_camwb_gui_widgets_dir}/editor/NcLexer.cpp
+  ${_camwb_gui_widgets_dir}/editor/detail/NcFindBar.h
+  ${_camwb_gui_widgets_dir}/editor/NcFindBar.cpp
+  ${_camwb_gui_widgets_dir}/editor/RenumberDialog.h
+  ${_camwb_gui_widgets_dir}/editor/RenumberDialog.cpp
+  ${_camwb_gui_widgets_dir}/editor/CompareDialog.h
+  ${_camwb_gui_widgets_dir}/editor/CompareDialog.cpp
+  ${_camwb_gui_widgets_dir}/editor/ProgramInfoDialog.h
+  ${_camwb_gui_widgets_dir}/editor/ProgramInfoDialog.cpp
   ${_camwb_gui_widgets_dir}/editor/NcEditor.h
   ${_camwb_gui_widgets_dir}/editor/NcEditor.cpp)
 target_include_directories(camwb_gui_widgets PUBLIC ${_camwb_gui_widgets_dir}/.. ${PROJECT_BINARY_DIR}/generated)
@@ -25,6 +37,12 @@ set(_camwb_gui_vtk_modules
 target_link_libraries(camwb_gui_widgets
   PUBLIC Qt6::Widgets camwb_toolpath
   PRIVATE Qt6::OpenGL Qt6::OpenGLWidgets camwb_qscintilla ${_camwb_gui_vtk_modules})
+# The NC editor speaks the NC module's dialects and diagnostics and runs its text tools.
+target_link_libraries(camwb_gui_widgets PUBLIC camwb_nc)
+# The editor's actions need ActionRegistry, which lives in camwb_gui (defined after this file):
+# they join camwb_gui once the directory is processed.
+cmake_language(DEFER CALL target_sources camwb_gui PRIVATE
+  ${_camwb_gui_widgets_dir}/editor/NcEditorActions.h ${_camwb_gui_widgets_dir}/editor/NcEditorActions.cpp)
 # Registers VTK's object factories (OpenGL2 render classes, FreeType text) in this library.
 vtk_module_autoinit(TARGETS camwb_gui_widgets MODULES ${_camwb_gui_vtk_modules})
 target_compile_options(camwb_gui_widgets PRIVATE -Wall -Wextra -Wno-unused-parameter)

@@ -1,15 +1,29 @@
-// The NC program editor/inspector widget: QScintilla with line numbers, a monospace font and
-// Sinumerik highlighting. QScintilla stays behind a pimpl so the main window never includes it.
+// The NC program editor/inspector widget: QScintilla with line numbers, a monospace font,
+// highlighting and folding per dialect, diagnostics as margin markers and annotations, and a find
+// bar. QScintilla stays behind a pimpl so the main window never includes it.
 #pragma once
 
 #include "gui/editor/NcStyles.h"
+#include "nc/Diagnostic.h"
+#include "nc/Dialect.h"
 
+#include <QList>
 #include <QString>
 #include <QWidget>
 
 #include <memory>
+#include <optional>
+#include <vector>
 
 namespace camwb::gui {
+
+// One diagnostic to show: 1-based line, 1-based column (0 = the whole line).
+struct NcEditorDiagnostic {
+    int line = 0;
+    int column = 0;
+    nc::Severity severity = nc::Severity::Error;
+    QString message;
+};
 
 class NcEditor : public QWidget {
     Q_OBJECT
@@ -18,18 +32,43 @@ public:
     explicit NcEditor(QWidget* parent = nullptr);
     ~NcEditor() override;
 
-    void setText(const QString& text);
+    void setText(const QString& text);  // a new document: clears undo history and diagnostics
     QString text() const;
+    // Replaces the whole text as one undoable step and keeps the view (cursor line, scroll).
+    void replaceText(const QString& text);
+    void undo();
+    void redo();
     void setReadOnly(bool readOnly);
     bool isReadOnly() const;
 
+    void setDialect(nc::Dialect dialect);  // Sinumerik by default
+    nc::Dialect dialect() const;
+
     int lineCount() const;
-    void gotoLine(int line);  // 1-based; clamped to the program; moves the cursor to the line start
-    int currentLine() const;  // 1-based
+    void gotoLine(int line);       // 1-based; clamped to the program; moves the cursor to the line start
+    int currentLine() const;       // 1-based
+    int firstVisibleLine() const;  // 1-based
 
     // The highlighter's style (an NcStyle value) at a 1-based line and 1-based column
     // (characters), or -1 outside the text. Styles that part of the text first if needed.
     int styleAt(int line, int column) const;
+    // Fold depth at the start of a 1-based line (0 = top level) and whether the line opens a
+    // fold; -1 / false outside the text. Styles up to the line first if needed.
+    int foldDepth(int line) const;
+    bool isFoldHeader(int line) const;
+
+    // Markers in the margin and boxed annotations under the lines (worst severity per line).
+    void setDiagnostics(const QList<NcEditorDiagnostic>& diagnostics);
+    void clearDiagnostics();
+    std::optional<nc::Severity> diagnosticSeverityAt(int line) const;
+    QString annotationAt(int line) const;
+    // Diagnostics of the program `file` (others belong to called programs), for setDiagnostics.
+    static QList<NcEditorDiagnostic> diagnosticsFor(const std::vector<nc::Diagnostic>& diagnostics,
+                                                    const std::string& file);
+
+    // Selects the next (or previous) match from the cursor, wrapping; false when there is none.
+    bool findText(const QString& text, bool forward = true, bool caseSensitive = false, bool wholeWord = false);
+    void showFindBar();  // with the selected text, focused
 
 signals:
     void cursorLineChanged(int line);  // 1-based
@@ -37,6 +76,7 @@ signals:
 private:
     struct Private;
     void checkCursorLine();
+    void styleThrough(int line) const;
 
     std::unique_ptr<Private> d;
 };

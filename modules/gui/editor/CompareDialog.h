@@ -1,0 +1,46 @@
+// Compare two NC programs side by side (Cam.Nc.Compare), as CIMCO's file compare does: aligned
+// rows with gaps, changed / removed / added lines marked, the changed characters underlined,
+// synchronised scrolling, next / previous difference, and options to ignore block numbers and
+// blanks (a renumbered program then compares equal). QScintilla stays private.
+#pragma once
+
+#include "nc/Dialect.h"
+#include "nc/tools/LineDiff.h"
+
+#include <QDialog>
+
+#include <memory>
+
+namespace camwb::gui {
+
+class CompareDialog : public QDialog {
+    Q_OBJECT
+
+public:
+    explicit CompareDialog(nc::Dialect dialect, QWidget* parent = nullptr);
+    ~CompareDialog() override;
+
+    void setLeft(const QString& text, const QString& title);
+    void setRight(const QString& text, const QString& title);
+    bool loadLeft(const QString& path);  // false (and a message in the title) when unreadable
+    bool loadRight(const QString& path);
+    void setIgnoreBlockNumbers(bool ignore);
+    void setIgnoreWhitespace(bool ignore);
+
+    const nc::LineDiff& diff() const;
+    int differenceCount() const;
+    int currentDifference() const;  // index into diff().hunks, -1 before the first
+    void nextDifference();
+    void previousDifference();
+    int firstVisibleRow(bool left) const;  // 0-based display row, for the synced scrolling
+
+private:
+    struct Private;
+    void recompute();
+    void showDifference(int index);
+    void chooseFile(bool left);
+
+    std::unique_ptr<Private> d;
+};
+
+}  // namespace camwb::gui

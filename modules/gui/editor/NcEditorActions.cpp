@@ -1,0 +1,150 @@
+#include "gui/editor/NcEditorActions.h"
+
+#include "gui/actions/ActionRegistry.h"
+#include "gui/editor/CompareDialog.h"
+#include "gui/editor/NcEditor.h"
+#include "gui/editor/ProgramInfoDialog.h"
+#include "gui/editor/RenumberDialog.h"
+#include "nc/tools/BlockNumbers.h"
+
+#include <QAction>
+#include <QCoreApplication>
+#include <QInputDialog>
+#include <QMainWindow>
+#include <QPointer>
+#include <QStatusBar>
+
+namespace camwb::gui {
+
+namespace {
+
+// Translation context of the strings below (lupdate reads Q_DECLARE_TR_FUNCTIONS).
+class Tr {
+    Q_DECLARE_TR_FUNCTIONS(NcEditorActions)
+};
+
+void showMessage(QWidget* parent, const QString& message)
+{
+    if (auto* window = qobject_cast<QMainWindow*>(parent))
+        window->statusBar()->showMessage(message, 10'000);
+}
+
+QString summary(const nc::RenumberReport& report, bool removing)
+{
+    QString text = removing ? Tr::tr("Removed %1 block number(s)").arg(report.numbersRemoved)
+                            : Tr::tr("Numbered %1 block(s)").arg(report.linesNumbered);
+    if (report.targetsRemapped > 0)
+        text += Tr::tr(", %1 jump target(s) follow their blocks").arg(report.targetsRemapped);
+    if (!report.notes.empty()) {
+        const nc::RenumberNote& first = report.notes.front();
+        text += first.line > 0 ? Tr::tr("; line %1: %2").arg(first.line).arg(QString::fromStdString(first.message))
+                               : Tr::tr("; %1").arg(QString::fromStdString(first.message));
+        if (report.notes.size() > 1)
+            text += Tr::tr(" (and %1 more note(s))").arg(report.notes.size() - 1);
+    }
+    return text;
+}
+
+// Applies a rewrite of the whole program as one undo step; nothing when it changes nothing.
+void applyRewrite(NcEditor* editor, QWidget* parent, const nc::RenumberResult& result, bool removing)
+{
+    if (QString::fromStdString(result.text) != editor->text())
+        editor->replaceText(QString::fromStdString(result.text));
+    showMessage(parent, summary(result.report, removing));
+}
+
+template <class Dialog> Dialog* reuseOrCreate(QWidget* parent, NcEditor* editor)
+{
+    // One modeless dialog of each kind; a second trigger refreshes it.
+    if (auto* existing = parent->findChild<Dialog*>(QString(), Qt::FindDirectChildrenOnly))
+        return existing;
+    if constexpr (std::is_same_v<Dialog, CompareDialog>) {
+        auto* dialog = new Dialog(editor->dialect(), parent);
+        dialog->setAttribute(Qt::WA_DeleteOnClose);
+        return dialog;
+    } else {
+        auto* dialog = new Dialog(parent);
+        dialog->setAttribute(Qt::WA_DeleteOnClose);
+        return dialog;
+    }
+}
+
+}  // namespace
+
+void registerNcEditorActions(ActionRegistry& registry, NcEditor* editor, QWidget* dialogParent)
+{
+    const QString menu = Tr::tr("&NC");
+    QPointer<NcEditor> ed(editor);
+    QPointer<QWidget> parent(dialogParent);
+    auto add = [&registry](const ActionSpec& spec, auto handler) {
+        QAction* action = registry.add(spec);
+        QObject::connect(action, &QAction::triggered, action, handler);
+        return action;
+    };
+
+    add({QStringLiteral("Cam.Nc.Find"), Tr::tr("&Find…"), menu, QKeySequence::Find, false, false,
+         Tr::tr("Find text in the NC program")},
+        [ed] {
+            if (ed)
+                ed->showFindBar();
+        });
+    add({QStringLiteral("Cam.Nc.GotoBlock"), Tr::tr("&Go to Block…"), menu, QKeySequence(Qt::CTRL | Qt::Key_G), false,
+         false, Tr::tr("Jump to the block with a given number")},
+        [ed, parent] {
+            if (!ed)
+                return;
+            bool ok = false;
+            const int number =
+                QInputDialog::getInt(parent, Tr::tr("Go to Block"), Tr::tr("Block number:"), 0, 0, 999'999'999, 1, &ok);
+            if (!ok)
+                return;
+            const std::string text = ed->text().toStdString();
+            if (const std::optional<int> line = nc::findBlock(text, ed->dialect(), number)) {
+                ed->gotoLine(*line);
+                ed->setFocus();
+            } else {
+                showMessage(parent, Tr::tr("No block number %1 in the program").arg(number));
+            }
+        });
+    add({QStringLiteral("Cam.Nc.Renumber"), Tr::tr("&Renumber Blocks…"), menu, QKeySequence(), false, true,
+         Tr::tr("Renumber the blocks of the NC program (one undo step)")},
+        [ed, parent] {
+            if (!ed || ed->isReadOnly())
+                return;
+            RenumberDialog dialog(ed->dialect(), parent);
+            if (dialog.exec() != QDialog::Accepted || !ed)
+                return;
+            const std::string text = ed->text().toStdString();
+            applyRewrite(ed, parent, nc::renumberBlocks(text, dialog.options()), false);
+        });
+    add({QStringLiteral("Cam.Nc.RemoveNumbers"), Tr::tr("Re&move Block Numbers"), menu, QKeySequence(), false, false,
+         Tr::tr("Remove the N numbers (blocks a GOTO jumps to keep theirs)")},
+        [ed, parent] {
+            if (!ed || ed->isReadOnly())
+                return;
+            const std::string text = ed->text().toStdString();
+            applyRewrite(ed, parent, nc::removeBlockNumbers(text, ed->dialect()), true);
+        });
+    add({QStringLiteral("Cam.Nc.Compare"), Tr::tr("&Compare with File…"), menu, QKeySequence(), false, true,
+         Tr::tr("Compare the NC program with another file side by side")},
+        [ed, parent] {
+            if (!ed || !parent)
+                return;
+            CompareDialog* dialog = reuseOrCreate<CompareDialog>(parent, ed);
+            dialog->setLeft(ed->text(), Tr::tr("Current program"));
+            dialog->show();
+            dialog->raise();
+        });
+    add({QStringLiteral("Cam.Nc.ProgramInfo"), Tr::tr("Program &Information…"), menu, QKeySequence(), false, false,
+         Tr::tr("Extents, path lengths and machining time of the NC program")},
+        [ed, parent] {
+            if (!ed || !parent)
+                return;
+            ProgramInfoDialog* dialog = reuseOrCreate<ProgramInfoDialog>(parent, ed);
+            dialog->analyze(ed->text(), ed->dialect());
+            dialog->show();
+            dialog->raise();
+        });
+}
+
+}  // namespace camwb::gui

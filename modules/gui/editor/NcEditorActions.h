@@ -1,0 +1,20 @@
+// The CIMCO-like NC tools as registered actions (menu "NC"): Find, Go to Block, Renumber, Remove
+// Numbers, Compare, Program Info. One entry point, so the main window adds them with one call and
+// tests trigger them by id through the registry.
+#pragma once
+
+class QWidget;
+
+namespace camwb::gui {
+
+class ActionRegistry;
+class NcEditor;
+
+// Ids: Cam.Nc.Find, Cam.Nc.GotoBlock, Cam.Nc.Renumber, Cam.Nc.RemoveNumbers, Cam.Nc.Compare,
+// Cam.Nc.ProgramInfo. Dialogs open over `dialogParent`; Compare and Program Info are modeless
+// children of it (found with findChild<CompareDialog*>() / findChild<ProgramInfoDialog*>()).
+// Renumbering and removing numbers are one undo step each in the editor. Results and notes go
+// to the status bar when `dialogParent` is a QMainWindow.
+void registerNcEditorActions(ActionRegistry& registry, NcEditor* editor, QWidget* dialogParent);
+
+}  // namespace camwb::gui

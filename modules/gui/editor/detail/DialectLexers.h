@@ -1,0 +1,53 @@
+// The pure part of the NC editor's highlighting, one function per dialect: split text that starts
+// at a line start into styled runs, and fold levels from a line's keywords. No QScintilla here,
+// so the lexers run on any byte range (Scintilla asks for the visible ones) and tests call them.
+#pragma once
+
+#include "gui/editor/NcStyles.h"
+#include "nc/Dialect.h"
+
+#include <cstdint>
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace camwb::gui {
+
+using EmitRun = std::function<void(int length, NcStyle style)>;
+
+// Sinumerik 828D/840D: ';' comments, "strings", N/: block numbers, R parameters, $ variables,
+// keywords and cycles (CYCLE81, POCKET3, MCALL), letter [=] value address words.
+void lexSinumerik(const char* text, int length, const EmitRun& emitRun);
+// Plain ISO (LinuxCNC / Fanuc): '(' and ';' comments, '%', N numbers, #n / #<name> parameters,
+// O-words and control flow, [expressions], canned cycles G73-G89 as keywords.
+void lexIso(const char* text, int length, const EmitRun& emitRun);
+// Heidenhain Klartext: leading block numbers, ';' and '*' comments, L/C/CC/CR/CP/... path words,
+// signed axis words (X+10, IX-5, PA+30), Q parameters, CYCL DEF/CALL, LBL, FN, M, F/FMAX/S, R0/RL/RR.
+// `continuation`: the range starts on a line that continues the block above (it ended in '~').
+void lexHeidenhain(const char* text, int length, bool continuation, const EmitRun& emitRun);
+
+void lexDialect(nc::Dialect dialect, const char* text, int length, bool continuation, const EmitRun& emitRun);
+
+// What the fold computation needs to carry from one line to the next (Scintilla's line state).
+struct FoldState {
+    int depth = 0;
+    bool inProc = false;       // Sinumerik: inside PROC (M17/RET at depth 1 closes it)
+    bool inLabel = false;      // Heidenhain: inside LBL n (LBL 0 or the next LBL closes it)
+    bool continues = false;    // Heidenhain: the line ended in '~'
+    std::uint16_t doMask = 0;  // ISO: bit d set when the fold at depth d was opened by "do"
+
+    int pack() const;
+    static FoldState unpack(int state);
+};
+
+// A styled word of a line that folding looks at (keywords, M words, numbers, strings), upper case.
+struct FoldToken {
+    std::string text;
+    NcStyle style = NcStyle::Default;
+};
+
+// The line's Scintilla fold level (SC_FOLDLEVELBASE + depth, header flag when it opens a fold)
+// given the state after the previous line; updates the state for the next line.
+int foldLevel(nc::Dialect dialect, const std::vector<FoldToken>& tokens, bool lineEndsWithTilde, FoldState& state);
+
+}  // namespace camwb::gui

@@ -51,23 +51,6 @@ std::optional<Vec3> Machine::target(const Block& b, const BlockWords& w, const V
     return t;
 }
 
-std::optional<Vec2> Machine::endTangent(const Element& e) const
-{
-    if (e.type == Element::Type::Line) {
-        const Vec2 d = (e.end - e.start).xy();
-        if (d.length() < kEps)
-            return std::nullopt;
-        return d.normalized();
-    }
-    if (e.type == Element::Type::Arc) {
-        const Vec2 radial = e.end.xy() - e.center;
-        if (radial.length() < kEps)
-            return std::nullopt;
-        return (e.clockwise ? radial.rightNormal() : radial.leftNormal()).normalized();
-    }
-    return std::nullopt;
-}
-
 std::optional<Element> Machine::plan(const Block& b, const BlockWords& w, const Vec3& from, const Vec2& cc, bool ccSet,
                                      std::optional<Vec2> tangent, bool quiet)
 {
@@ -302,7 +285,14 @@ void Machine::motionBlock(const Block& b)
 
     bool moved = false;
     if (b.kind != BlockKind::MOnly && b.kind != BlockKind::Stop) {
-        auto e = plan(b, w, m_pos, m_cc, m_ccSet, m_tangent, false);
+        std::optional<Element> e;
+        if (m_corner.nextPending && m_corner.program == m_prog && m_corner.nextBlock == m_pc) {
+            e = m_corner.next;  // planned from the corner before it (RND/CHF)
+            e->start = m_pos;
+        } else {
+            e = plan(b, w, m_pos, m_cc, m_ccSet, m_tangent, false);
+        }
+        m_corner.nextPending = false;
         if (e && e->type != Element::Type::None) {
             if (e->type == Element::Type::Arc)
                 m_lastDirection = e->clockwise ? -1 : 1;
@@ -397,48 +387,64 @@ void Machine::planCorner(Element& element, std::size_t index)
     const auto following = plan(blocks[next], nw, element.end, cc, ccSet, endTangent(element), true);
     if (!following || following->type == Element::Type::None)
         return;
-    if (element.type != Element::Type::Line || following->type != Element::Type::Line)
-        return warn(Severity::Warning,
-                    std::string(round ? "RND" : "CHF") + " next to a circle is not traced yet: the corner stays sharp");
+    if (!round && (element.type != Element::Type::Line || following->type != Element::Type::Line))
+        return warn(Severity::Warning, "CHF is a chamfer between two straight lines: next to a circle it is ignored");
 
     BlockWords own;
     if (!gather(cornerBlock, own, true))
         return;
-    double size = 0;
-    if (round) {
-        if (!own.radius || *own.radius <= 0)
-            return warn(Severity::Error, "RND needs a positive radius R");
-        size = *own.radius * m_scale;
-    } else {
-        if (!own.len || *own.len <= 0)
-            return warn(Severity::Error, "CHF needs a positive length");
-        size = *own.len * m_scale;
-    }
+    const auto size = round ? own.radius : own.len;
+    if (!size || *size <= 0)
+        return warn(Severity::Error, round ? "RND needs a positive radius R" : "CHF needs a positive length");
+    const double length = *size * m_scale;
+    const std::string name = round ? "RND" : "CHF";
 
-    const Vec3 s = element.start, v = element.end, e = following->end;
-    const Vec2 d1 = (v - s).xy(), d2 = (e - v).xy();
-    const double l1 = d1.length(), l2 = d2.length();
-    if (l1 < kEps || l2 < kEps)
-        return warn(Severity::Warning,
-                    std::string(round ? "RND" : "CHF") + " needs motion in the working plane on both sides: ignored");
-    const Vec2 u1 = d1 * (1 / l1), u2 = d2 * (1 / l2);
-    const double cross = u1.cross(u2);
-    if (std::abs(cross) < 1e-9)
-        return warn(Severity::Warning, std::string(round ? "RND" : "CHF") + " between lines in one direction: ignored");
-    const double deflection = std::atan2(std::abs(cross), u1.dot(u2));
-    const double t = round ? size * std::tan(deflection / 2) : size;
-    if (t > l1 + kEps || t > l2 + kEps)
-        return warn(Severity::Error, std::string(round ? "RND radius " : "CHF length ") + mm(size) +
-                                         " does not fit the adjacent elements (needs " + mm(t) + " mm on each)");
+    // Heights of the corner points: along a line in proportion, on an arc the corner's.
+    const Vec3 v = element.end;
+    auto heightOn = [&](const Element& e, const Vec2& p) {
+        if (e.type != Element::Type::Line)
+            return v.z;
+        const Vec2 d = (e.end - e.start).xy();
+        const double t = d.dot(d) > 0 ? (p - e.start.xy()).dot(d) / d.dot(d) : 0;
+        return e.start.z + (e.end.z - e.start.z) * t;
+    };
+    Vec2 from, to, center;
+    bool clockwise = false;
+    if (round) {
+        std::string problem;
+        const auto r = roundCorner(element, *following, length, problem);
+        if (!r)
+            return warn(problem.find("fit") != std::string::npos ? Severity::Error : Severity::Warning,
+                        "RND radius " + mm(length) + " " + problem);
+        from = r->from;
+        to = r->to;
+        center = r->center;
+        clockwise = r->clockwise;
+    } else {
+        const auto ta = endTangent(element), tb = startTangent(*following);
+        if (!ta || !tb)
+            return warn(Severity::Warning, "CHF needs motion in the working plane on both sides: ignored");
+        if (std::abs(ta->cross(*tb)) < 1e-9)
+            return warn(Severity::Warning, "CHF between lines in one direction: ignored");
+        const double l1 = distance(element.start.xy(), v.xy()), l2 = distance(v.xy(), following->end.xy());
+        if (length > l1 + kEps || length > l2 + kEps)
+            return warn(Severity::Error, "CHF length " + mm(length) + " does not fit the adjacent elements");
+        from = v.xy() - *ta * length;
+        to = v.xy() + *tb * length;
+    }
     m_corner.valid = true;
     m_corner.program = m_prog;
     m_corner.block = index;
     m_corner.arc = round;
-    m_corner.from = v - (v - s) * (t / l1);
-    m_corner.to = v + (e - v) * (t / l2);
-    m_corner.clockwise = cross < 0;
-    const Vec2 inward = cross > 0 ? u1.leftNormal() : u1.rightNormal();
-    m_corner.center = m_corner.from.xy() + inward * size;
+    m_corner.from = {from.x, from.y, heightOn(element, from)};
+    m_corner.to = {to.x, to.y, heightOn(*following, to)};
+    m_corner.center = center;
+    m_corner.clockwise = clockwise;
+    // The element after the corner keeps the geometry planned from the corner point.
+    m_corner.next = *following;
+    m_corner.next.start = m_corner.to;
+    m_corner.nextBlock = next;
+    m_corner.nextPending = true;
     element.end = m_corner.from;
 }
 

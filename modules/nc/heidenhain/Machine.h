@@ -6,6 +6,7 @@
 
 #include "nc/Interpreter.h"
 #include "nc/heidenhain/Expression.h"
+#include "nc/heidenhain/Geometry.h"
 #include "nc/heidenhain/Lexer.h"
 #include "nc/heidenhain/Program.h"
 #include "toolpath/ClRecords.h"
@@ -20,9 +21,6 @@
 #include <vector>
 
 namespace camwb::nc::heidenhain {
-
-using base::Vec2;
-using base::Vec3;
 
 inline constexpr double kMaxCoordinate = 99999.9999;  // the control's input range
 inline constexpr int kMaxLabelNesting = 64;
@@ -63,16 +61,6 @@ struct BlockWords {
     bool hasXyz() const;
 };
 
-// A contour element as planned from a block, before it is sent.
-struct Element {
-    enum class Type { None, Line, Arc } type = Type::None;
-    Vec3 start;
-    Vec3 end;
-    Vec2 center;
-    bool clockwise = false;
-    int turns = 0;
-};
-
 struct CycleDefinition {
     int number = 0;
     int line = 0;
@@ -84,7 +72,8 @@ struct CycleDefinition {
     bool has(int n) const { return n >= 200 && n < 600 && set.test(static_cast<std::size_t>(n - 200)); }
 };
 
-// A corner rounding or chamfer planned when the element before it was sent.
+// A corner rounding or chamfer planned when the element before it was sent, with the element
+// after it as planned from the corner (so that incremental words and CR/CP keep their geometry).
 struct Corner {
     bool valid = false;
     int program = -1;
@@ -93,6 +82,9 @@ struct Corner {
     Vec3 from, to;
     Vec2 center;
     bool clockwise = false;
+    std::size_t nextBlock = 0;
+    Element next;
+    bool nextPending = false;
 };
 
 class Machine {
@@ -147,7 +139,6 @@ private:
     std::optional<Vec3> target(const Block& b, const BlockWords& w, const Vec3& from, bool quiet);
     void planCorner(Element& element, std::size_t cornerIndex);
     void send(const Element& e, bool rapid, double feed);
-    std::optional<Vec2> endTangent(const Element& e) const;
 
     // Cycles.cpp: CYCL DEF, CYCL CALL, M99/M89.
     void cycleDef(const Block& b);

@@ -6,6 +6,8 @@ set(NC_PART_SOURCES
     Program.h
     Expression.cpp
     Expression.h
+    Geometry.cpp
+    Geometry.h
     Parser.cpp
     Parser.h
     ParserWords.cpp

@@ -238,14 +238,69 @@ TEST(HeidenhainContour, RoundingTooLargeIsAnErrorAndTheCornerStaysSharp)
     EXPECT_TRUE(r.all<Arc>().empty());
 }
 
-TEST(HeidenhainContour, RoundingNextToACircleWarns)
+TEST(HeidenhainContour, RoundingBetweenALineAndACircle)
+{
+    // Line heading +X into a clockwise arc about (20,0) that leaves heading +Y: a left turn. The
+    // rounding centre lies 2 above the line and 12 from the arc's centre.
+    const Traced r = run(program("2 L X+0 Y+0 Z+0 FMAX\n"
+                                 "3 L X+10 Y+0 F300\n"
+                                 "4 RND R2\n"
+                                 "5 CC X+20 Y+0\n"
+                                 "6 C X+20 Y+10 DR-\n"));
+    EXPECT_TRUE(r.result.diagnostics.empty()) << r.diagnostics()[0];
+    const double cx = 20 - std::sqrt(140.0);
+    const auto arcs = r.all<Arc>();
+    ASSERT_EQ(arcs.size(), 2u);
+    expectNear(r.all<Linear>()[0].to, {cx, 0, 0}, 1e-9);
+    expectNear(arcs[0].center, {cx, 2, 0}, 1e-9);
+    EXPECT_FALSE(arcs[0].clockwise);
+    expectNear(arcs[0].to, {20 + (cx - 20) * 10 / 12, 2.0 * 10 / 12, 0}, 1e-9);
+    // The circle goes on about its own centre to its programmed end.
+    expectNear(arcs[1].center, {20, 0, 0});
+    expectNear(arcs[1].to, {20, 10, 0});
+    EXPECT_TRUE(arcs[1].clockwise);
+    EXPECT_NEAR(distance(arcs[0].to.xy(), arcs[1].center.xy()), 10, 1e-9);
+}
+
+TEST(HeidenhainContour, RoundingBetweenACircleAndALine)
+{
+    // Counter-clockwise quarter about (0,0) from (10,0) to (0,10), ending heading -X, then a line
+    // heading -Y: a left turn rounded with R1. The centre lies 1 left of the line (x = 1) and
+    // 10 - 1 from the circle's centre.
+    const Traced r = run(program("2 L X+10 Y+0 Z+0 FMAX\n"
+                                 "3 CC X+0 Y+0\n"
+                                 "4 C X+0 Y+10 DR+ F300\n"
+                                 "5 RND R1\n"
+                                 "6 L X+0 Y+0\n"));
+    EXPECT_TRUE(r.result.diagnostics.empty()) << r.diagnostics()[0];
+    const auto arcs = r.all<Arc>();
+    ASSERT_EQ(arcs.size(), 2u);
+    const double cy = std::sqrt(81.0 - 1.0);
+    expectNear(arcs[1].center, {1, cy, 0}, 1e-9);
+    expectNear(arcs[1].to, {0, cy, 0}, 1e-9);
+    expectNear(arcs[0].to, {1.0 * 10 / 9, cy * 10 / 9, 0}, 1e-9);
+    expectNear(arcs[0].center, {0, 0, 0});
+    expectNear(r.all<Linear>().back().to, {0, 0, 0});
+}
+
+TEST(HeidenhainContour, IncrementalWordsAfterACornerCountFromTheCorner)
+{
+    const Traced r = run(program("2 L X+0 Y+0 FMAX\n"
+                                 "3 L IX+10 F300\n"
+                                 "4 CHF 2\n"
+                                 "5 L IY+10\n"));
+    EXPECT_TRUE(r.result.diagnostics.empty());
+    expectNear(r.all<Linear>().back().to, {10, 10, 0});
+}
+
+TEST(HeidenhainContour, ChamferNextToACircleWarns)
 {
     const Traced r = run(program("2 L X+0 Y+0 FMAX\n"
                                  "3 L X+10 Y+0 F300\n"
-                                 "4 RND R2\n"
-                                 "5 CC X+10 Y+10\n"
-                                 "6 C X+20 Y+10 DR+\n"));
-    EXPECT_TRUE(r.has(Severity::Warning, 5, "next to a circle"));
+                                 "4 CHF 2\n"
+                                 "5 CC X+20 Y+0\n"
+                                 "6 C X+20 Y+10 DR-\n"));
+    EXPECT_TRUE(r.has(Severity::Warning, 5, "CHF is a chamfer between two straight lines"));
     EXPECT_EQ(r.count(Severity::Warning), 1u) << r.diagnostics()[0];
     EXPECT_EQ(r.all<Arc>().size(), 1u);
 }

@@ -152,7 +152,7 @@ private:
         }
         if (is("TCH"))
             return skipped("touch probe cycles are not traced", BlockKind::Skipped);
-        if (is("FL") || is("FLT") || is("FC") || is("FCT") || is("FPOL") || is("FSELECT") || is("FCT") || is("FK"))
+        if (is("FL") || is("FLT") || is("FC") || is("FCT") || is("FPOL") || is("FSELECT") || is("FK"))
             return skipped("FK free contour programming is not traced", BlockKind::Skipped);
         if (is("SPL"))
             return skipped("SPL spline blocks are not traced", BlockKind::Skipped);
@@ -191,6 +191,8 @@ private:
         if (auto q = c.quoted(&closed)) {
             if (!closed)
                 m_env.reporter.report(Severity::Error, m_env.file, line, column, "unterminated label name");
+            else if (q->empty())
+                m_env.reporter.report(Severity::Error, m_env.file, line, column, "empty label name");
             ref = *q;
             isName = true;
             return !ref.empty();

@@ -92,6 +92,8 @@ CompareDialog::CompareDialog(nc::Dialect dialect, QWidget* parent) : QDialog(par
         view->setLexer(lexer);
         view->setReadOnly(true);
         view->setWrapMode(QsciScintilla::WrapNone);
+        view->SendScintilla(Base::SCI_SETSCROLLWIDTH, 1UL);
+        view->SendScintilla(Base::SCI_SETSCROLLWIDTHTRACKING, 1UL);
         view->setCaretLineVisible(true);
         view->setCaretLineBackgroundColor(QColor(230, 236, 255));
         view->setMarginsFont(lexer->defaultFont(0));

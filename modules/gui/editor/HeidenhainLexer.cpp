@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cstring>
 #include <string>
 #include <string_view>
 
@@ -36,9 +37,12 @@ char upper(char c) { return (c >= 'a' && c <= 'z') ? char(c - 'a' + 'A') : c; }
 
 }  // namespace
 
-void lexHeidenhain(const char* s, int n, bool continuation, const EmitRun& emitRun)
+void lexHeidenhain(const char* s, int n, bool continuation, char* styles)
 {
     int i = 0;
+    auto emitRun = [&](int length, NcStyle style) {
+        std::memset(styles + i, static_cast<int>(style), std::size_t(length));
+    };
     bool lineStart = true;
     bool afterNumber = false;   // only the block number seen on this line so far
     bool cycleContext = false;  // after CYCL DEF: the cycle's name reads as part of the cycle

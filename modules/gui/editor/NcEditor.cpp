@@ -100,6 +100,9 @@ NcEditor::NcEditor(QWidget* parent) : QWidget(parent), d(std::make_unique<Privat
     d->sci->setIndentationsUseTabs(false);
     d->sci->setTabWidth(4);
     d->sci->setEolMode(QsciScintilla::EolUnix);
+    // The horizontal scroll range follows the longest line seen, not a fixed 2000 pixels.
+    d->sci->SendScintilla(Base::SCI_SETSCROLLWIDTH, 1UL);
+    d->sci->SendScintilla(Base::SCI_SETSCROLLWIDTHTRACKING, 1UL);
     // The lexer sets a line state per line; nobody listens to those changes, and a million
     // notifications (Qt signals) cost more than the lexing.
     d->sci->SendScintilla(Base::SCI_SETMODEVENTMASK,
@@ -143,6 +146,7 @@ NcEditor::NcEditor(QWidget* parent) : QWidget(parent), d(std::make_unique<Privat
     updateMargin();
     connect(d->sci, &QsciScintilla::linesChanged, this, updateMargin);
     connect(d->sci, &QsciScintilla::cursorPositionChanged, this, [this](int, int) { checkCursorLine(); });
+    connect(d->sci, &QsciScintilla::textChanged, this, &NcEditor::textChanged);
 }
 
 NcEditor::~NcEditor() = default;

@@ -72,6 +72,7 @@ public:
 
 signals:
     void cursorLineChanged(int line);  // 1-based
+    void textChanged();                // any edit, setText and replaceText included
 
 private:
     struct Private;

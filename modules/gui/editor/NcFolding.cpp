@@ -3,8 +3,6 @@
 // (ISO); LBL n ... LBL 0 (Heidenhain). The state fits Scintilla's per-line integer.
 #include "gui/editor/detail/DialectLexers.h"
 
-#include <Qsci/qsciscintillabase.h>
-
 #include <algorithm>
 #include <cctype>
 
@@ -13,6 +11,10 @@ namespace camwb::gui {
 namespace {
 
 constexpr int kMaxDepth = 255;
+// Scintilla's SC_FOLDLEVELBASE and SC_FOLDLEVELHEADERFLAG (stable parts of its API), so this file
+// stays free of QScintilla.
+constexpr int kFoldLevelBase = 0x400;
+constexpr int kFoldHeaderFlag = 0x2000;
 
 bool startsWith(const std::string& s, const char* prefix) { return s.rfind(prefix, 0) == 0; }
 
@@ -169,14 +171,14 @@ int foldLevel(nc::Dialect dialect, const std::vector<FoldToken>& tokens, bool li
     state.continues = lineEndsWithTilde;
     const int before = state.depth;
     // A closing line belongs to the fold it closes: its level is the depth before it.
-    int level = QsciScintillaBase::SC_FOLDLEVELBASE + before;
+    int level = kFoldLevelBase + before;
     int after = std::clamp(before - step.closes, 0, kMaxDepth);
     if (step.middle && after > 0) {
-        level = QsciScintillaBase::SC_FOLDLEVELBASE + (after - 1);
-        level |= QsciScintillaBase::SC_FOLDLEVELHEADERFLAG;
+        level = kFoldLevelBase + (after - 1);
+        level |= kFoldHeaderFlag;
     } else if (step.opens > 0) {
-        level = QsciScintillaBase::SC_FOLDLEVELBASE + after;
-        level |= QsciScintillaBase::SC_FOLDLEVELHEADERFLAG;
+        level = kFoldLevelBase + after;
+        level |= kFoldHeaderFlag;
     }
     after = std::clamp(after + step.opens, 0, kMaxDepth);
     state.depth = after;

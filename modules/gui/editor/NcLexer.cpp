@@ -161,11 +161,7 @@ void NcLexer::styleText(int start, int end)
     if (text == nullptr)
         return;
     m_styles.resize(static_cast<std::size_t>(length));
-    int at = 0;
-    lexDialect(m_dialect, text, length, state.continues, [&](int runLength, NcStyle style) {
-        std::fill_n(m_styles.begin() + at, runLength, static_cast<char>(style));
-        at += runLength;
-    });
+    lexDialect(m_dialect, text, length, state.continues, m_styles.data());
     sci->SendScintilla(Base::SCI_STARTSTYLING, static_cast<unsigned long>(start), 0L);
     sci->SendScintilla(Base::SCI_SETSTYLINGEX, static_cast<unsigned long>(length), m_styles.data());
 

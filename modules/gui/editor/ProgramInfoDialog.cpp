@@ -27,6 +27,8 @@ namespace {
 
 QString duration(double seconds)
 {
+    if (seconds < 60)
+        return ProgramInfoDialog::tr("%1 s").arg(seconds, 0, 'f', 1);
     const auto total = static_cast<long long>(std::llround(seconds));
     const long long h = total / 3600;
     const long long m = (total / 60) % 60;

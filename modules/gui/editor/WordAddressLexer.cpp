@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cstring>
 #include <string>
 #include <string_view>
 
@@ -145,9 +146,12 @@ bool isIsoCycle(const char* s, int from, int to)
     return digits > 0 && digits <= 2 && (value == 73 || value == 74 || value == 76 || (value >= 80 && value <= 89));
 }
 
-void lexWordAddress(const Syntax& syntax, const char* s, int n, const EmitRun& emitRun)
+void lexWordAddress(const Syntax& syntax, const char* s, int n, char* styles)
 {
     int i = 0;
+    auto emitRun = [&](int length, NcStyle style) {
+        std::memset(styles + i, static_cast<int>(style), std::size_t(length));
+    };
     bool blockStart = true;  // only whitespace and skip levels seen on this line so far
     auto lineEnd = [&](int from) {
         while (from < n && s[from] != '\n' && s[from] != '\r')
@@ -221,7 +225,12 @@ void lexWordAddress(const Syntax& syntax, const char* s, int n, const EmitRun& e
         } else if (isAlpha(c) || (!syntax.iso && c == '$')) {
             blockStart = false;
             const bool oName = syntax.iso && upper(c) == 'O' && j < n && s[j] == '<';
-            const bool addressWord = isAlpha(c) && c != '_' && (j >= n || !isIdent(s[j]) || isDigit(s[j]));
+            // Sinumerik names may be one letter (FOR I = 1 TO 3): a letter is an address only with
+            // a value after it. ISO (LinuxCNC, Fanuc) allows blanks inside words: any lone letter.
+            const char next = j < n ? s[j] : '\0';
+            const bool valueNext = isDigit(next) || next == '=' || next == '.' || next == '-' || next == '+';
+            const bool addressWord =
+                isAlpha(c) && c != '_' && (isDigit(next) || (syntax.iso ? !isIdent(next) : valueNext));
             if (oName) {
                 while (j < n && s[j] != '>' && s[j] != '\n' && s[j] != '\r')
                     ++j;
@@ -263,27 +272,24 @@ void lexWordAddress(const Syntax& syntax, const char* s, int n, const EmitRun& e
 
 }  // namespace
 
-void lexSinumerik(const char* text, int length, const EmitRun& emitRun)
+void lexSinumerik(const char* text, int length, char* styles)
 {
-    lexWordAddress({false, sinumerikLetter}, text, length, emitRun);
+    lexWordAddress({false, sinumerikLetter}, text, length, styles);
 }
 
-void lexIso(const char* text, int length, const EmitRun& emitRun)
-{
-    lexWordAddress({true, isoLetter}, text, length, emitRun);
-}
+void lexIso(const char* text, int length, char* styles) { lexWordAddress({true, isoLetter}, text, length, styles); }
 
-void lexDialect(nc::Dialect dialect, const char* text, int length, bool continuation, const EmitRun& emitRun)
+void lexDialect(nc::Dialect dialect, const char* text, int length, bool continuation, char* styles)
 {
     switch (dialect) {
     case nc::Dialect::Sinumerik:
-        lexSinumerik(text, length, emitRun);
+        lexSinumerik(text, length, styles);
         return;
     case nc::Dialect::Iso:
-        lexIso(text, length, emitRun);
+        lexIso(text, length, styles);
         return;
     case nc::Dialect::Heidenhain:
-        lexHeidenhain(text, length, continuation, emitRun);
+        lexHeidenhain(text, length, continuation, styles);
         return;
     }
 }

@@ -1,32 +1,30 @@
-// The pure part of the NC editor's highlighting, one function per dialect: split text that starts
-// at a line start into styled runs, and fold levels from a line's keywords. No QScintilla here,
-// so the lexers run on any byte range (Scintilla asks for the visible ones) and tests call them.
+// The pure part of the NC editor's highlighting, one function per dialect: style bytes for text
+// that starts at a line start (one NcStyle per byte, written straight into the buffer Scintilla
+// takes), and fold levels from a line's keywords. No QScintilla here, so the lexers run on any
+// byte range (Scintilla asks for the visible ones) and a benchmark can call them.
 #pragma once
 
 #include "gui/editor/NcStyles.h"
 #include "nc/Dialect.h"
 
 #include <cstdint>
-#include <functional>
 #include <string>
 #include <vector>
 
 namespace camwb::gui {
 
-using EmitRun = std::function<void(int length, NcStyle style)>;
-
 // Sinumerik 828D/840D: ';' comments, "strings", N/: block numbers, R parameters, $ variables,
 // keywords and cycles (CYCLE81, POCKET3, MCALL), letter [=] value address words.
-void lexSinumerik(const char* text, int length, const EmitRun& emitRun);
+void lexSinumerik(const char* text, int length, char* styles);
 // Plain ISO (LinuxCNC / Fanuc): '(' and ';' comments, '%', N numbers, #n / #<name> parameters,
 // O-words and control flow, [expressions], canned cycles G73-G89 as keywords.
-void lexIso(const char* text, int length, const EmitRun& emitRun);
+void lexIso(const char* text, int length, char* styles);
 // Heidenhain Klartext: leading block numbers, ';' and '*' comments, L/C/CC/CR/CP/... path words,
 // signed axis words (X+10, IX-5, PA+30), Q parameters, CYCL DEF/CALL, LBL, FN, M, F/FMAX/S, R0/RL/RR.
 // `continuation`: the range starts on a line that continues the block above (it ended in '~').
-void lexHeidenhain(const char* text, int length, bool continuation, const EmitRun& emitRun);
+void lexHeidenhain(const char* text, int length, bool continuation, char* styles);
 
-void lexDialect(nc::Dialect dialect, const char* text, int length, bool continuation, const EmitRun& emitRun);
+void lexDialect(nc::Dialect dialect, const char* text, int length, bool continuation, char* styles);
 
 // What the fold computation needs to carry from one line to the next (Scintilla's line state).
 struct FoldState {

@@ -38,15 +38,27 @@ Workbench::Severity severityOf(nc::Severity severity)
 // The editor shows the trace's diagnostics in its margin and highlights in the traced dialect,
 // through the API its own engineer is adding (NcEditor::setDiagnostics/diagnosticsFor/
 // setDialect); written against whichever of it exists, so both trees build in any order.
-template <class Editor> void showInEditor(Editor& editor, const NcTrace& trace)
+template <class Editor> void setEditorDialect(Editor& editor, nc::Dialect dialect)
 {
-    if constexpr (requires { editor.setDialect(trace.dialect); }) {
-        if (editor.dialect() != trace.dialect)
-            editor.setDialect(trace.dialect);
+    if constexpr (requires { editor.setDialect(dialect); }) {
+        if (editor.dialect() != dialect)
+            editor.setDialect(dialect);
     }
+}
+
+// Returns whether the editor now shows diagnostics. Clearing a margin that is clear already is
+// skipped: on a million-line document it costs the editor most of a second.
+template <class Editor> bool showInEditor(Editor& editor, const NcTrace& trace, bool editorHasDiagnostics)
+{
+    setEditorDialect(editor, trace.dialect);
     const std::string program = trace.result.files.empty() ? std::string() : trace.result.files.front();
-    if constexpr (requires { editor.setDiagnostics(Editor::diagnosticsFor(trace.result.diagnostics, program)); })
-        editor.setDiagnostics(Editor::diagnosticsFor(trace.result.diagnostics, program));
+    if constexpr (requires { editor.setDiagnostics(Editor::diagnosticsFor(trace.result.diagnostics, program)); }) {
+        const auto diagnostics = Editor::diagnosticsFor(trace.result.diagnostics, program);
+        if (!diagnostics.isEmpty() || editorHasDiagnostics)
+            editor.setDiagnostics(diagnostics);
+        return !diagnostics.isEmpty();
+    }
+    return false;
 }
 
 }  // namespace
@@ -106,6 +118,21 @@ void NcInspector::setDialect(std::optional<nc::Dialect> dialect)
 void NcInspector::setFilePath(const QString& path) { m_path = path; }
 
 void NcInspector::setDebounceMs(int milliseconds) { m_debounce->setInterval(milliseconds); }
+
+void NcInspector::loadProgram(const QString& text, const QString& path)
+{
+    m_path = path;
+    if (m_editor == nullptr)
+        return;
+    // The dialect shows in the first lines; a guess over a megabyte of text would only cost time.
+    constexpr int kGuessChars = 64 * 1024;
+    const nc::Dialect dialect =
+        m_dialect ? *m_dialect : nc::guessDialect(text.left(kGuessChars).toStdString(), path.toStdString());
+    setEditorDialect(*m_editor, dialect);
+    m_editor->setText(text);  // a new document: no diagnostics in the margin
+    m_editorHasDiagnostics = false;
+    traceNow();
+}
 
 void NcInspector::setShowInView(bool show)
 {
@@ -186,7 +213,7 @@ void NcInspector::finish(const std::shared_ptr<Result>& result)
 
     reportDiagnostics(*m_trace);
     if (m_editor != nullptr)
-        showInEditor(*m_editor, *m_trace);
+        m_editorHasDiagnostics = showInEditor(*m_editor, *m_trace, m_editorHasDiagnostics);
     m_highlighted.clear();
     if (m_editor != nullptr)
         showLine(m_editor->currentLine());

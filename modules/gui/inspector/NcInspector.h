@@ -49,6 +49,10 @@ public:
     QString filePath() const { return m_path; }
     void setDebounceMs(int milliseconds);
 
+    // A new program for the editor (opened or posted): the editor gets the dialect first (so a
+    // huge text is highlighted once, not twice), then the text; the trace starts at once.
+    void loadProgram(const QString& text, const QString& path);
+
     // Whether finished traces go to the 3D view; off while it shows the operations' toolpath.
     void setShowInView(bool show);
     bool showsInView() const { return m_showInView; }
@@ -87,6 +91,7 @@ private:
     std::optional<nc::Dialect> m_dialect;
     QString m_path;
     bool m_showInView = true;
+    bool m_editorHasDiagnostics = false;
     int m_running = 0;
     quint64 m_generation = 0;
     std::shared_ptr<std::atomic<bool>> m_cancelCurrent;

@@ -109,12 +109,10 @@ bool MainWindow::openNcFile(const QString& path)
         m_report->append(Workbench::Severity::Error, QString::fromStdString(text.error().toString()));
         return false;
     }
-    m_inspector->setFilePath(QFileInfo(path).absoluteFilePath());
-    m_editor->setText(QString::fromStdString(text.value()));
+    m_fitWithTrace = true;
+    m_inspector->loadProgram(QString::fromStdString(text.value()), QFileInfo(path).absoluteFilePath());
     m_editor->setReadOnly(false);
     m_report->append(Workbench::Severity::Info, tr("Opened NC program %1").arg(path));
-    m_fitWithTrace = true;
-    m_inspector->traceNow();
     return true;
 }
 
@@ -235,9 +233,7 @@ void MainWindow::connectWorkbench()
         // The posted program is traced as the machine will read it; its name gives the dialect.
         const QString job = QString::fromStdString(m_workbench->document().path());
         const QString base = job.isEmpty() ? tr("posted") : QFileInfo(job).completeBaseName();
-        m_inspector->setFilePath(base + '.' + m_workbench->ncExtension());
-        m_editor->setText(m_workbench->ncText());
-        m_inspector->traceNow();
+        m_inspector->loadProgram(m_workbench->ncText(), base + '.' + m_workbench->ncExtension());
     });
     connect(m_workbench, &Workbench::jobChanged, this, &MainWindow::updateTitle);
     connect(m_workbench, &Workbench::busyChanged, this, [this](bool busy) {

@@ -283,9 +283,10 @@ private slots:
             // A 3D finishing pass as CAM writes it: rows of short moves over a wavy surface.
             const double x = (i % 2000) * 0.05, y = (i / 2000) * 0.5;
             const double z = -1.0 - 0.8 * std::sin(x * 0.35) * std::cos(y * 0.05);
-            text += (i % 50 == 0 ? "G2 X" : "G1 X") + QByteArray::number(x, 'f', 3) + " Y" +
-                    QByteArray::number(y, 'f', 3) + " Z" + QByteArray::number(z, 'f', 3) +
-                    (i % 50 == 0 ? " I0.025 J0\n" : "\n");
+            // Every 50th move a small arc, but none where a row starts (that one jumps back).
+            const bool arc = i % 50 == 0 && i % 2000 != 0;
+            text += (arc ? "G2 X" : "G1 X") + QByteArray::number(x, 'f', 3) + " Y" + QByteArray::number(y, 'f', 3) +
+                    " Z" + QByteArray::number(z, 'f', 3) + (arc ? " I0.025 J0\n" : "\n");
         }
         text += "M30\n";
         const QString path = writeFile(dir, QStringLiteral("large.ngc"), text);
@@ -316,9 +317,10 @@ private slots:
         qInfo(
             "%d lines: open %lld ms, traced and in the view %lld ms (interpret %.0f ms, index %.0f ms, "
             "3D data %.0f ms, actors %.0f ms), first frame %lld ms, next frame %lld ms; longest event-loop stall while "
-            "tracing %lld ms; %d segments",
+            "tracing %lld ms; %d segments, %d diagnostics",
             lines, openMs, tracedMs, timings.interpret * 1e3, timings.index * 1e3, timings.scene * 1e3,
-            timings.show * 1e3, shownMs, nextFrameMs, longestStall, window.view()->toolpathSegmentCount());
+            timings.show * 1e3, shownMs, nextFrameMs, longestStall, window.view()->toolpathSegmentCount(),
+            int(window.inspector()->trace()->result.diagnostics.size()));
         const auto trace = window.inspector()->trace();
         if (trace->program.empty() && trace->result.hasErrors())
             QSKIP(qPrintable(QString::fromStdString(trace->result.diagnostics.front().message)));

@@ -48,6 +48,7 @@ void lexHeidenhain(const char* s, int n, bool continuation, char* styles)
     bool cycleContext = false;  // after CYCL DEF: the cycle's name reads as part of the cycle
     bool thisLineContinues = continuation;
     bool valueAllowed = true;  // a sign here starts a number (after blanks, '=', '(')
+    bool programName = false;  // the next word names a program
     auto lineEnd = [&](int from) {
         while (from < n && s[from] != '\n' && s[from] != '\r')
             ++from;
@@ -81,6 +82,7 @@ void lexHeidenhain(const char* s, int n, bool continuation, char* styles)
             lineStart = true;
             afterNumber = false;
             cycleContext = false;
+            programName = false;
             valueAllowed = true;
             emitRun(j - i, style);
             i = j;
@@ -106,6 +108,15 @@ void lexHeidenhain(const char* s, int n, bool continuation, char* styles)
         }
         const bool commentStar = c == '*' && (afterNumber || atLineStart);
         afterNumber = false;
+        if (programName) {
+            // The name after PGM (BEGIN/END/CALL PGM F3D_CONTOUR16): no words inside it.
+            while (j < n && s[j] != ' ' && s[j] != '\t' && s[j] != '\n' && s[j] != '\r')
+                ++j;
+            programName = false;
+            emitRun(j - i, NcStyle::Default);
+            i = j;
+            continue;
+        }
         if (c == ';' || commentStar) {
             j = lineEnd(i);
             style = NcStyle::Comment;
@@ -132,6 +143,12 @@ void lexHeidenhain(const char* s, int n, bool continuation, char* styles)
             } else if ((word == "F" || word == "S" || word == "FU" || word == "FZ") && digitNext) {
                 j = numberEnd(j);
                 style = NcStyle::FeedSpeedTool;
+            } else if (word == "F" &&
+                       (next == 'Q' || next == 'q' ||
+                        ((next == '+' || next == '-') && j + 1 < n && (s[j + 1] == 'Q' || s[j + 1] == 'q')))) {
+                style = NcStyle::FeedSpeedTool;  // F+Q603: the feed from a parameter (the Q styles next)
+                if (next == '+' || next == '-')
+                    ++j;
             } else if (word == "FMAX" || word == "FAUTO") {
                 style = NcStyle::FeedSpeedTool;
             } else if ((word == "DL" || word == "DR") && valueNext && j + 1 < n && isDigit(s[j + 1])) {
@@ -153,6 +170,7 @@ void lexHeidenhain(const char* s, int n, bool continuation, char* styles)
                 style = NcStyle::Keyword;
                 if (word == "CYCL")
                     cycleContext = true;
+                programName = word == "PGM";
             } else if (cycleContext) {
                 style = NcStyle::Keyword;  // the cycle's name: BOHREN, DRILLING, DATUM SHIFT
             }

@@ -15,6 +15,7 @@
 #include <QApplication>
 #include <QDir>
 #include <QElapsedTimer>
+#include <QFile>
 #include <QInputDialog>
 #include <QLineEdit>
 #include <QMainWindow>
@@ -75,7 +76,7 @@ constexpr const char* kIso = "%\n"                           // 1
                              "M30\n"                         // 16
                              "%\n";                          // 17
 
-constexpr const char* kHeidenhain = "0  BEGIN PGM TEST MM\n"               // 1
+constexpr const char* kHeidenhain = "0  BEGIN PGM F3D_TEST MM\n"           // 1
                                     "1  BLK FORM 0.1 Z X+0 Y+0 Z-40\n"     // 2
                                     "2  TOOL CALL 1 Z S5000 DL+0.1\n"      // 3
                                     "3  L  Z+100 R0 FMAX M3\n"             // 4
@@ -89,7 +90,7 @@ constexpr const char* kHeidenhain = "0  BEGIN PGM TEST MM\n"               // 1
                                     "9  C  X+0 Y+50 DR-\n"                 // 12
                                     "10 FN 0: Q1 = +5\n"                   // 13
                                     "11 LBL 0\n"                           // 14
-                                    "12 END PGM TEST MM\n";                // 15
+                                    "12 END PGM F3D_TEST MM\n";            // 15
 
 QString shotDir() { return qEnvironmentVariable("CAMWB_EDITOR_SHOTS"); }
 
@@ -215,7 +216,10 @@ private slots:
         editor.setText(QString::fromLatin1(kHeidenhain));
         auto style = [&](int line, int column) { return static_cast<NcStyle>(editor.styleAt(line, column)); };
         QCOMPARE(style(1, 1), NcStyle::BlockNumber);
-        QCOMPARE(style(1, 4), NcStyle::Keyword);         // BEGIN
+        QCOMPARE(style(1, 4), NcStyle::Keyword);   // BEGIN
+        QCOMPARE(style(1, 14), NcStyle::Default);  // F3D_TEST: a program name, no feed word
+        QCOMPARE(style(1, 16), NcStyle::Default);
+        QCOMPARE(style(1, 23), NcStyle::Keyword);        // MM
         QCOMPARE(style(2, 4), NcStyle::Keyword);         // BLK
         QCOMPARE(style(2, 13), NcStyle::Number);         // 0.1
         QCOMPARE(style(2, 17), NcStyle::AxisWord);       // Z (tool axis)
@@ -249,6 +253,26 @@ private slots:
         QVERIFY(editor.isFoldHeader(10));  // LBL 1
         QVERIFY(!editor.isFoldHeader(8));  // CALL LBL 1 is no definition
         saveShot(&editor, QStringLiteral("editor-heidenhain.png"));
+    }
+
+    void realProgramsForALook()
+    {
+        // Screenshots of programs from the repository's goldens, one per dialect.
+        if (shotDir().isEmpty())
+            QSKIP("set CAMWB_EDITOR_SHOTS to save screenshots");
+        const std::pair<const char*, nc::Dialect> programs[] = {
+            {"tests/golden/jobs/example-block/expected.mpf", nc::Dialect::Sinumerik},
+            {"tests/golden/nc/heidenhain/thesis/input.h", nc::Dialect::Heidenhain},
+            {"tests/golden/nc/iso/subroutines-loops/input.ngc", nc::Dialect::Iso}};
+        for (const auto& [path, dialect] : programs) {
+            QFile file(QStringLiteral(CAMWB_SOURCE_DIR "/") + QString::fromLatin1(path));
+            QVERIFY2(file.open(QIODevice::ReadOnly), path);
+            NcEditor editor;
+            editor.resize(1000, 640);
+            editor.setDialect(dialect);
+            editor.setText(QString::fromUtf8(file.readAll()));
+            saveShot(&editor, QStringLiteral("program-%1.png").arg(QString::fromLatin1(nc::dialectName(dialect))));
+        }
     }
 
     void switchingTheDialectRestyles()

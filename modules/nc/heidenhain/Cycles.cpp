@@ -102,7 +102,6 @@ void Machine::cycleDef(const Block& b)
     m_cycle.number = b.a;
     m_cycle.line = b.line;
     m_cycle.defined = true;
-    m_modalCycleCall = false;
     for (int i = 0; i < b.wordCount; ++i) {
         const Word& word = p.words[static_cast<std::size_t>(b.firstWord + i)];
         if (word.key != Key::QSet)
@@ -135,6 +134,7 @@ void Machine::cycleCall(const Block& b)
     if (!gather(b, w, false))
         return;
     applyEarlyM(b, w);
+    m_modalCycleCall = false;  // CYCL CALL ends M89, as M99 does
     Vec2 hole = m_pos.xy();
     if (b.kind == BlockKind::CycleCallPos) {
         const auto t = target(b, w, m_pos, false);

@@ -209,8 +209,13 @@ void Machine::applyLateM(const Block& b, const BlockWords& w, bool moved)
         const int m = w.m[static_cast<std::size_t>(i)];
         switch (m) {
         case 0:
+            // Program stop, spindle stop, coolant off (the control's M0).
+            m_sink.programStop(ProgramStop{false});
+            spindleOff();
+            coolant(CoolantMode::Off);
+            break;
         case 1:
-            m_sink.programStop(ProgramStop{m == 1});
+            m_sink.programStop(ProgramStop{true});
             break;
         case 2:
         case 30:

@@ -8,7 +8,6 @@
 #include <QElapsedTimer>
 #include <QFileInfo>
 #include <QFutureWatcher>
-#include <QMetaMethod>
 #include <QTimer>
 #include <QtConcurrent/QtConcurrentRun>
 
@@ -33,32 +32,6 @@ Workbench::Severity severityOf(nc::Severity severity)
         return Workbench::Severity::Error;
     }
     return Workbench::Severity::Error;
-}
-
-// The editor shows the trace's diagnostics in its margin and highlights in the traced dialect,
-// through the API its own engineer is adding (NcEditor::setDiagnostics/diagnosticsFor/
-// setDialect); written against whichever of it exists, so both trees build in any order.
-template <class Editor> void setEditorDialect(Editor& editor, nc::Dialect dialect)
-{
-    if constexpr (requires { editor.setDialect(dialect); }) {
-        if (editor.dialect() != dialect)
-            editor.setDialect(dialect);
-    }
-}
-
-// Returns whether the editor now shows diagnostics. Clearing a margin that is clear already is
-// skipped: on a million-line document it costs the editor most of a second.
-template <class Editor> bool showInEditor(Editor& editor, const NcTrace& trace, bool editorHasDiagnostics)
-{
-    setEditorDialect(editor, trace.dialect);
-    const std::string program = trace.result.files.empty() ? std::string() : trace.result.files.front();
-    if constexpr (requires { editor.setDiagnostics(Editor::diagnosticsFor(trace.result.diagnostics, program)); }) {
-        const auto diagnostics = Editor::diagnosticsFor(trace.result.diagnostics, program);
-        if (!diagnostics.isEmpty() || editorHasDiagnostics)
-            editor.setDiagnostics(diagnostics);
-        return !diagnostics.isEmpty();
-    }
-    return false;
 }
 
 }  // namespace
@@ -91,17 +64,7 @@ void NcInspector::attach(NcEditor* editor, View3D* view, ModalStatePanel* panel)
     m_panel = panel;
     if (m_editor != nullptr) {
         connect(m_editor, &NcEditor::cursorLineChanged, this, &NcInspector::onCursorLine);
-        // The editor announces edits with textChanged() once it has it; until then its QScintilla
-        // child does (connected by name: no QScintilla header outside the editor).
-        QObject* source = m_editor;
-        if (m_editor->metaObject()->indexOfSignal("textChanged()") < 0)
-            source = m_editor->findChild<QWidget*>(QStringLiteral("ncEditorText"));
-        if (source != nullptr && source->metaObject()->indexOfSignal("textChanged()") >= 0) {
-            const QMetaMethod signal =
-                source->metaObject()->method(source->metaObject()->indexOfSignal("textChanged()"));
-            const QMetaMethod slot = metaObject()->method(metaObject()->indexOfSlot("scheduleTrace()"));
-            connect(source, signal, this, slot);
-        }
+        connect(m_editor, &NcEditor::textChanged, this, &NcInspector::scheduleTrace);
     }
     if (m_view != nullptr)
         connect(m_view, &View3D::segmentPicked, this, &NcInspector::onSegmentPicked);
@@ -128,7 +91,8 @@ void NcInspector::loadProgram(const QString& text, const QString& path)
     constexpr int kGuessChars = 64 * 1024;
     const nc::Dialect dialect =
         m_dialect ? *m_dialect : nc::guessDialect(text.left(kGuessChars).toStdString(), path.toStdString());
-    setEditorDialect(*m_editor, dialect);
+    if (m_editor->dialect() != dialect)
+        m_editor->setDialect(dialect);
     m_editor->setText(text);  // a new document: no diagnostics in the margin
     m_editorHasDiagnostics = false;
     traceNow();
@@ -213,11 +177,25 @@ void NcInspector::finish(const std::shared_ptr<Result>& result)
 
     reportDiagnostics(*m_trace);
     if (m_editor != nullptr)
-        m_editorHasDiagnostics = showInEditor(*m_editor, *m_trace, m_editorHasDiagnostics);
+        showInEditor(*m_trace);
     m_highlighted.clear();
     if (m_editor != nullptr)
         showLine(m_editor->currentLine());
     emit traceFinished();
+}
+
+// The editor highlights in the traced dialect and marks the main program's diagnostics. A margin
+// that is clear already is not cleared again: on a million-line document that costs the editor
+// most of a second.
+void NcInspector::showInEditor(const NcTrace& trace)
+{
+    if (m_editor->dialect() != trace.dialect)
+        m_editor->setDialect(trace.dialect);
+    const std::string program = trace.result.files.empty() ? std::string() : trace.result.files.front();
+    const QList<NcEditorDiagnostic> diagnostics = NcEditor::diagnosticsFor(trace.result.diagnostics, program);
+    if (!diagnostics.isEmpty() || m_editorHasDiagnostics)
+        m_editor->setDiagnostics(diagnostics);
+    m_editorHasDiagnostics = !diagnostics.isEmpty();
 }
 
 void NcInspector::reportDiagnostics(const NcTrace& trace)

@@ -83,6 +83,7 @@ private:
     void finish(const std::shared_ptr<Result>& result);
     void showLine(int line);
     void reportDiagnostics(const NcTrace& trace);
+    void showInEditor(const NcTrace& trace);
 
     NcEditor* m_editor = nullptr;
     View3D* m_view = nullptr;

@@ -4,6 +4,7 @@
 #include "camwb_version.h"
 #include "gui/actions/ActionRegistry.h"
 #include "gui/editor/NcEditor.h"
+#include "gui/editor/NcEditorActions.h"
 #include "gui/inspector/InspectorPanel.h"
 #include "gui/inspector/ModalStatePanel.h"
 #include "gui/inspector/NcInspector.h"
@@ -194,6 +195,7 @@ void MainWindow::registerActions()
     });
     add({"Cam.Nc.Trace", tr("&Trace NC Program"), nc, QKeySequence(Qt::Key_F5), true},
         [this] { m_inspector->traceNow(); });
+    registerNcEditorActions(*m_actions, m_editor, this);
 
     add({"Cam.View.Isometric", tr("&Isometric"), view, QKeySequence(Qt::Key_0), true, true},
         [this] { m_view->setViewPreset(View3D::Preset::Isometric); });

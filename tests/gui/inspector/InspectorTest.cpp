@@ -86,18 +86,6 @@ struct Rig {
     }
 };
 
-// The editor's margin severity at a line (-1 = none), or nullopt while the editor has no
-// diagnostics API (it is being added beside the inspector).
-template <class Editor> std::optional<int> marginSeverity(const Editor& editor, int line)
-{
-    if constexpr (requires { editor.diagnosticSeverityAt(line); }) {
-        const auto severity = editor.diagnosticSeverityAt(line);
-        return severity ? static_cast<int>(*severity) : -1;
-    } else {
-        return std::nullopt;
-    }
-}
-
 #define LOAD_OR_SKIP(rig, text)                                                                                        \
     do {                                                                                                               \
         QString why;                                                                                                   \
@@ -337,12 +325,14 @@ private slots:
         for (const auto& m : messages)
             reported = reported || m.at(1).toString().contains(QLatin1String("inspector-test.ngc:7"));
         QVERIFY(reported);
-        const std::optional<int> severity = marginSeverity(rig.editor, line);
-        if (!severity)
-            QSKIP("NcEditor has no diagnostics API yet");
-        QCOMPARE(*severity, static_cast<int>(trace->result.diagnostics.front().severity));
+        QCOMPARE(rig.editor.diagnosticSeverityAt(line), std::optional(trace->result.diagnostics.front().severity));
         // (Line 8 gets one too: its arc now starts elsewhere.)
-        QCOMPARE(*marginSeverity(rig.editor, 12), -1);
+        QVERIFY(!rig.editor.diagnosticSeverityAt(12).has_value());
+        // Fixed: the margin clears with the next trace.
+        QSignalSpy finished(&rig.inspector, &NcInspector::traceFinished);
+        rig.editor.setText(QString::fromLatin1(kProgram));
+        QVERIFY(finished.wait(60000));
+        QVERIFY(!rig.editor.diagnosticSeverityAt(line).has_value());
     }
 
     void toolsCanBeHidden()

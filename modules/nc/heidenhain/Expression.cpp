@@ -1,3 +1,5 @@
+// Recursive-descent parser and evaluator of Klartext expressions (see Expression.h): depth and
+// node count bounded so that hostile input cannot exhaust the stack.
 #include "nc/heidenhain/Expression.h"
 
 #include <algorithm>

@@ -1,3 +1,5 @@
+// Tangents and corner roundings of contour elements (see Geometry.h): the rounding centre is the
+// intersection of both elements offset by the radius towards the inside of the turn.
 #include "nc/heidenhain/Geometry.h"
 
 #include <cmath>

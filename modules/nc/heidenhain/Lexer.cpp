@@ -1,3 +1,4 @@
+// Block splitting and the character cursor of the Klartext reader (see Lexer.h).
 #include "nc/heidenhain/Lexer.h"
 
 #include <charconv>

@@ -57,6 +57,8 @@ struct Expr {
     int column = 0;
 };
 
+// Address words. The axes come first, absolute X..W then incremental IX..IW, in the order of
+// BlockWords::axes (X = 0, IX = 9).
 enum class Key : std::uint8_t {
     X,
     Y,
@@ -66,7 +68,7 @@ enum class Key : std::uint8_t {
     C,
     U,
     V,
-    W,  // absolute axes (order matters: axisIndex)
+    W,
     IX,
     IY,
     IZ,
@@ -75,30 +77,31 @@ enum class Key : std::uint8_t {
     IC,
     IU,
     IV,
-    IW,  // incremental axes
+    IW,
+    // Polar radius and angle about CC.
     PR,
     PA,
     IPR,
-    IPA,        // polar radius and angle
-    Radius,     // R of CR/RND, R of TOOL DEF
-    Direction,  // DR+ (expr 1) / DR- (expr -1)
+    IPA,
+    Radius,     // R of CR and RND, R of TOOL DEF
+    Direction,  // DR+ / DR-: param +1 / -1
     Comp,       // R0 / RL / RR: param 0 / 1 / 2
     Feed,
     FeedMax,
     FeedAuto,
-    FeedRev,
-    FeedTooth,
-    M,
+    FeedRev,    // FU: feed per revolution
+    FeedTooth,  // FZ: feed per tooth
+    M,          // param = the M number
     Speed,
-    SurfaceSpeed,
+    SurfaceSpeed,  // S(VC=...)
     DeltaLength,
     DeltaRadius,
     DeltaRadius2,
-    Length,
+    Length,    // L of TOOL DEF
     ToolAxis,  // param = 'X' / 'Y' / 'Z'
     Rep,       // REP n of CALL LBL
     QSet,      // Qn = expr inside CYCL DEF (param = n)
-    Len,       // LEN of APPR/DEP
+    Len,       // LEN of APPR/DEP, length of CHF, value of an old cycle line (9.1 DWELL 1.5)
     Angle,     // CCA of APPR/DEP
     Mb,        // MB of M140 (param 1 = MAX)
 };

@@ -70,10 +70,10 @@ inline NumberStatus scanUnsigned(const char*& p, const char* end, double& out)
 {
     const char* q = p;
     std::uint64_t mantissa = 0;
+    long fraction = 0;
     while (q < end && isDigit(*q))
         mantissa = mantissa * 10 + static_cast<unsigned>(*q++ - '0');
-    const auto whole = q - p;
-    long fraction = 0;
+    const long whole = q - p;
     if (q < end && *q == '.') {
         const char* first = ++q;
         while (q < end && isDigit(*q))

@@ -86,3 +86,36 @@ TEST(IsoScanner, SourceLinesOnEveryRecord)
 
 }  // namespace
 }  // namespace camwb::nc::iso::test
+
+namespace camwb::nc::iso::test {
+namespace {
+
+// The eight-bytes-at-a-time digit reader against strtod, on numbers of every length and position
+// (as feeds, which have no travel limit).
+TEST(IsoScanner, NumbersMatchStrtod)
+{
+    std::string program = "G1 X0 F1\n";
+    std::vector<double> expected{1};
+    unsigned seed = 12345;
+    const auto next = [&seed] { return seed = seed * 1103515245u + 12345u; };
+    for (int i = 0; i < 3000; ++i) {
+        const std::string digits = std::to_string(next()) + std::to_string(next());
+        std::string number = digits.substr(0, 1 + next() % 12);
+        if (next() % 3)
+            number += "." + digits.substr(0, next() % 12);
+        if (next() % 5 == 0)
+            number = "." + std::to_string(next() % 1000);
+        program += "X" + std::to_string(i % 2) + " F" + number + (next() % 2 ? " Y1\n" : "\n");
+        expected.push_back(std::strtod(number.c_str(), nullptr));
+    }
+    program += "M2\n";
+    const IsoRun r = run(program);
+    ASSERT_TRUE(r.result.diagnostics.empty()) << r.result.diagnostics[0].message;
+    const auto moves = r.all<toolpath::Linear>();
+    ASSERT_EQ(moves.size(), expected.size());
+    for (std::size_t i = 0; i < moves.size(); ++i)
+        ASSERT_EQ(moves[i].feedMmPerMin, expected[i]) << i;
+}
+
+}  // namespace
+}  // namespace camwb::nc::iso::test

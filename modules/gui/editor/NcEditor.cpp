@@ -73,6 +73,7 @@ struct NcEditor::Private {
     NcLexer* lexer = nullptr;
     NcFindBar* findBar = nullptr;
     std::vector<QsciStyle> annotationStyles;  // per severity
+    QString programPath;
     int lastLine = 1;
 };
 
@@ -161,7 +162,18 @@ void NcEditor::setText(const QString& text)
 
 QString NcEditor::text() const { return d->sci->text(); }
 
-void NcEditor::replaceText(const QString& text)
+QByteArray NcEditor::utf8Text() const
+{
+    const long length = d->sci->SendScintilla(Base::SCI_GETLENGTH);
+    QByteArray bytes(static_cast<qsizetype>(length) + 1, Qt::Uninitialized);
+    d->sci->SendScintilla(Base::SCI_GETTEXT, static_cast<unsigned long>(length + 1), bytes.data());
+    bytes.resize(static_cast<qsizetype>(length));
+    return bytes;
+}
+
+void NcEditor::replaceText(const QString& text) { replaceUtf8Text(text.toUtf8()); }
+
+void NcEditor::replaceUtf8Text(const QByteArray& bytes)
 {
     if (d->sci->isReadOnly())
         return;
@@ -169,7 +181,6 @@ void NcEditor::replaceText(const QString& text)
     int line = 0;
     int index = 0;
     d->sci->getCursorPosition(&line, &index);
-    const QByteArray bytes = text.toUtf8();
     d->sci->beginUndoAction();
     d->sci->SendScintilla(Base::SCI_TARGETWHOLEDOCUMENT);
     d->sci->SendScintilla(Base::SCI_REPLACETARGET, static_cast<unsigned long>(bytes.size()), bytes.constData());
@@ -198,6 +209,10 @@ bool NcEditor::isReadOnly() const { return d->sci->isReadOnly(); }
 void NcEditor::setDialect(nc::Dialect dialect) { d->lexer->setDialect(dialect); }
 
 nc::Dialect NcEditor::dialect() const { return d->lexer->dialect(); }
+
+void NcEditor::setProgramPath(const QString& path) { d->programPath = path; }
+
+QString NcEditor::programPath() const { return d->programPath; }
 
 int NcEditor::lineCount() const { return d->sci->lines(); }
 

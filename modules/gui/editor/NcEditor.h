@@ -7,6 +7,7 @@
 #include "nc/Diagnostic.h"
 #include "nc/Dialect.h"
 
+#include <QByteArray>
 #include <QList>
 #include <QString>
 #include <QWidget>
@@ -34,8 +35,11 @@ public:
 
     void setText(const QString& text);  // a new document: clears undo history and diagnostics
     QString text() const;
+    // The text as Scintilla holds it, without a round trip through QString (the tools' fast path).
+    QByteArray utf8Text() const;
     // Replaces the whole text as one undoable step and keeps the view (cursor line, scroll).
     void replaceText(const QString& text);
+    void replaceUtf8Text(const QByteArray& utf8);
     void undo();
     void redo();
     void setReadOnly(bool readOnly);
@@ -43,6 +47,10 @@ public:
 
     void setDialect(nc::Dialect dialect);  // Sinumerik by default
     nc::Dialect dialect() const;
+    // Where the program lives (empty: not saved): names it in the tools' dialogs and lets Program
+    // info find its subprograms in the same folder.
+    void setProgramPath(const QString& path);
+    QString programPath() const;
 
     int lineCount() const;
     void gotoLine(int line);       // 1-based; clamped to the program; moves the cursor to the line start

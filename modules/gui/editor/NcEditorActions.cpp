@@ -9,6 +9,7 @@
 
 #include <QAction>
 #include <QCoreApplication>
+#include <QFileInfo>
 #include <QInputDialog>
 #include <QMainWindow>
 #include <QPointer>
@@ -48,10 +49,13 @@ QString summary(const nc::RenumberReport& report, bool removing)
 // Applies a rewrite of the whole program as one undo step; nothing when it changes nothing.
 void applyRewrite(NcEditor* editor, QWidget* parent, const nc::RenumberResult& result, bool removing)
 {
-    if (QString::fromStdString(result.text) != editor->text())
-        editor->replaceText(QString::fromStdString(result.text));
+    const QByteArray bytes = QByteArray::fromStdString(result.text);
+    if (bytes != editor->utf8Text())
+        editor->replaceUtf8Text(bytes);
     showMessage(parent, summary(result.report, removing));
 }
+
+std::string_view view(const QByteArray& bytes) { return {bytes.constData(), static_cast<std::size_t>(bytes.size())}; }
 
 template <class Dialog> Dialog* reuseOrCreate(QWidget* parent, NcEditor* editor)
 {
@@ -98,8 +102,8 @@ void registerNcEditorActions(ActionRegistry& registry, NcEditor* editor, QWidget
                 QInputDialog::getInt(parent, Tr::tr("Go to Block"), Tr::tr("Block number:"), 0, 0, 999'999'999, 1, &ok);
             if (!ok)
                 return;
-            const std::string text = ed->text().toStdString();
-            if (const std::optional<int> line = nc::findBlock(text, ed->dialect(), number)) {
+            const QByteArray text = ed->utf8Text();
+            if (const std::optional<int> line = nc::findBlock(view(text), ed->dialect(), number)) {
                 ed->gotoLine(*line);
                 ed->setFocus();
             } else {
@@ -114,16 +118,16 @@ void registerNcEditorActions(ActionRegistry& registry, NcEditor* editor, QWidget
             RenumberDialog dialog(ed->dialect(), parent);
             if (dialog.exec() != QDialog::Accepted || !ed)
                 return;
-            const std::string text = ed->text().toStdString();
-            applyRewrite(ed, parent, nc::renumberBlocks(text, dialog.options()), false);
+            const QByteArray text = ed->utf8Text();
+            applyRewrite(ed, parent, nc::renumberBlocks(view(text), dialog.options()), false);
         });
     add({QStringLiteral("Cam.Nc.RemoveNumbers"), Tr::tr("Re&move Block Numbers"), menu, QKeySequence(), false, false,
          Tr::tr("Remove the N numbers (blocks a GOTO jumps to keep theirs)")},
         [ed, parent] {
             if (!ed || ed->isReadOnly())
                 return;
-            const std::string text = ed->text().toStdString();
-            applyRewrite(ed, parent, nc::removeBlockNumbers(text, ed->dialect()), true);
+            const QByteArray text = ed->utf8Text();
+            applyRewrite(ed, parent, nc::removeBlockNumbers(view(text), ed->dialect()), true);
         });
     add({QStringLiteral("Cam.Nc.Compare"), Tr::tr("&Compare with File…"), menu, QKeySequence(), false, true,
          Tr::tr("Compare the NC program with another file side by side")},
@@ -131,7 +135,9 @@ void registerNcEditorActions(ActionRegistry& registry, NcEditor* editor, QWidget
             if (!ed || !parent)
                 return;
             CompareDialog* dialog = reuseOrCreate<CompareDialog>(parent, ed);
-            dialog->setLeft(ed->text(), Tr::tr("Current program"));
+            const QString name = QFileInfo(ed->programPath()).fileName();
+            dialog->setLeft(ed->text(),
+                            name.isEmpty() ? Tr::tr("Current program") : Tr::tr("%1 (in the editor)").arg(name));
             dialog->show();
             dialog->raise();
         });
@@ -141,7 +147,7 @@ void registerNcEditorActions(ActionRegistry& registry, NcEditor* editor, QWidget
             if (!ed || !parent)
                 return;
             ProgramInfoDialog* dialog = reuseOrCreate<ProgramInfoDialog>(parent, ed);
-            dialog->analyze(ed->text(), ed->dialect());
+            dialog->analyze(ed->text(), ed->dialect(), ed->programPath());
             dialog->show();
             dialog->raise();
         });

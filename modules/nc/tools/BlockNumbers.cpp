@@ -143,10 +143,14 @@ void findJumps(std::string_view s, std::size_t lineIndex, const LineInfo& info, 
         std::size_t j = i;
         while (j < s.size() && isIdentChar(s[j]))
             ++j;
+        // Only words starting with GOTO matter; look before copying (most words are G1, X10, ...).
+        const bool gotoWord = j - i >= 4 && upper(s[i]) == 'G' && upper(s[i + 1]) == 'O' && upper(s[i + 2]) == 'T' &&
+                              upper(s[i + 3]) == 'O';
         std::string word;
-        for (std::size_t k = i; k < j; ++k)
-            word.push_back(upper(s[k]));
-        if (word.rfind("GOTO", 0) == 0) {
+        if (gotoWord)
+            for (std::size_t k = i; k < j; ++k)
+                word.push_back(upper(s[k]));
+        if (gotoWord) {
             JumpRef ref;
             ref.line = lineIndex;
             std::string_view suffix = std::string_view(word).substr(4);
@@ -220,11 +224,9 @@ struct Edit {
     std::string replacement;
 };
 
-std::string applyEdits(std::string_view line, std::vector<Edit>& edits)
+void appendEdited(std::string& out, std::string_view line, std::vector<Edit>& edits)
 {
-    std::sort(edits.begin(), edits.end(), [](const Edit& a, const Edit& b) { return a.begin < b.begin; });
-    std::string out;
-    out.reserve(line.size() + 8);
+    std::sort(edits.begin(), edits.end(), [](const Edit& x, const Edit& y) { return x.begin < y.begin; });
     std::size_t pos = 0;
     for (const Edit& e : edits) {
         out.append(line.substr(pos, e.begin - pos));
@@ -232,7 +234,6 @@ std::string applyEdits(std::string_view line, std::vector<Edit>& edits)
         pos = e.end;
     }
     out.append(line.substr(pos));
-    return out;
 }
 
 std::string numberPrefix(const LineInfo& info, std::string_view line, Dialect dialect)
@@ -250,44 +251,48 @@ RenumberResult rewrite(const std::vector<RawLine>& lines, const std::vector<Line
                        const std::vector<std::optional<long long>>& newNumbers, std::vector<JumpRef>& jumps,
                        Dialect dialect, RenumberReport report)
 {
-    std::vector<std::vector<Edit>> edits(lines.size());
-    for (std::size_t k = 0; k < lines.size(); ++k) {
-        const LineInfo& info = infos[k];
-        const std::string_view line = lines[k].content;
-        const std::optional<long long>& wanted = newNumbers[k];
-        if (wanted == info.number)
-            continue;
-        if (!wanted) {
-            edits[k].push_back({info.numberBegin, info.removeEnd, {}});
-            ++report.numbersRemoved;
-        } else if (info.number) {
-            const std::size_t digitsBegin = dialect == Dialect::Heidenhain ? info.numberBegin : info.numberBegin + 1;
-            edits[k].push_back({digitsBegin, info.numberEnd, std::to_string(*wanted)});
-            ++report.linesNumbered;
-        } else {
-            std::string text = numberPrefix(info, line, dialect) + std::to_string(*wanted);
-            if (info.insertAt < line.size())
-                text.push_back(' ');
-            edits[k].push_back({info.insertAt, info.insertAt, std::move(text)});
-            ++report.linesNumbered;
-        }
-    }
-    for (const JumpRef& ref : jumps) {
-        if (!ref.target || !newNumbers[*ref.target] || *newNumbers[*ref.target] == ref.number)
-            continue;
-        edits[ref.line].push_back({ref.digitsBegin, ref.digitsEnd, std::to_string(*newNumbers[*ref.target])});
-        ++report.targetsRemapped;
-    }
+    // Line by line with one reused edit list: no allocation per line on a million-line program.
+    // Jumps come in line order (collectJumps scans the lines in order).
     RenumberResult result;
     std::size_t size = 0;
     for (const RawLine& l : lines)
         size += l.content.size() + l.ending.size() + 8;
     result.text.reserve(size);
+    std::vector<Edit> edits;
+    std::size_t nextJump = 0;
     for (std::size_t k = 0; k < lines.size(); ++k) {
-        if (edits[k].empty())
-            result.text.append(lines[k].content);
+        edits.clear();
+        const LineInfo& info = infos[k];
+        const std::string_view line = lines[k].content;
+        const std::optional<long long>& wanted = newNumbers[k];
+        if (wanted != info.number) {
+            if (!wanted) {
+                edits.push_back({info.numberBegin, info.removeEnd, {}});
+                ++report.numbersRemoved;
+            } else if (info.number) {
+                const std::size_t digitsBegin =
+                    dialect == Dialect::Heidenhain ? info.numberBegin : info.numberBegin + 1;
+                edits.push_back({digitsBegin, info.numberEnd, std::to_string(*wanted)});
+                ++report.linesNumbered;
+            } else {
+                std::string text = numberPrefix(info, line, dialect) + std::to_string(*wanted);
+                if (info.insertAt < line.size())
+                    text.push_back(' ');
+                edits.push_back({info.insertAt, info.insertAt, std::move(text)});
+                ++report.linesNumbered;
+            }
+        }
+        for (; nextJump < jumps.size() && jumps[nextJump].line == k; ++nextJump) {
+            const JumpRef& ref = jumps[nextJump];
+            if (!ref.target || !newNumbers[*ref.target] || *newNumbers[*ref.target] == ref.number)
+                continue;
+            edits.push_back({ref.digitsBegin, ref.digitsEnd, std::to_string(*newNumbers[*ref.target])});
+            ++report.targetsRemapped;
+        }
+        if (edits.empty())
+            result.text.append(line);
         else
-            result.text.append(applyEdits(lines[k].content, edits[k]));
+            appendEdited(result.text, line, edits);
         result.text.append(lines[k].ending);
     }
     std::stable_sort(report.notes.begin(), report.notes.end(),

@@ -10,6 +10,7 @@
 #include "gui/editor/ProgramInfoDialog.h"
 #include "gui/editor/RenumberDialog.h"
 #include "nc/Interpreter.h"
+#include "nc/tools/BlockNumbers.h"
 #include "toolpath/ToolpathRecorder.h"
 
 #include <QApplication>
@@ -531,11 +532,29 @@ private slots:
             editor.repaint();
         }
         const qint64 pageStepsMs = timer.restart();
+        // Renumbering the whole program is one undo step, even at this size.
+        const QByteArray bytes = editor.utf8Text();
+        nc::RenumberOptions options;
+        options.start = 5;
+        options.step = 5;
+        const nc::RenumberResult renumbered =
+            nc::renumberBlocks(std::string_view(bytes.constData(), std::size_t(bytes.size())), options);
+        const qint64 renumberMs = timer.restart();
+        editor.replaceUtf8Text(QByteArray::fromStdString(renumbered.text));
+        editor.repaint();
+        const qint64 replaceMs = timer.restart();
+        QCOMPARE(renumbered.report.linesNumbered, 1'000'000);
+        editor.undo();
+        editor.repaint();
+        const qint64 undoMs = timer.restart();
+        QVERIFY(editor.text().startsWith(QStringLiteral("N10 G1")));
         qInfo("1M lines (%lld MB): setText %lld ms, first paint %lld ms, scroll to end %lld ms, "
-              "back to the middle %lld ms, 50 page steps %lld ms",
+              "back to the middle %lld ms, 50 page steps %lld ms; renumber (kernel) %lld ms, "
+              "replace text %lld ms, undo %lld ms",
               static_cast<long long>(program.size() / 1'000'000), static_cast<long long>(setTextMs),
               static_cast<long long>(firstPaintMs), static_cast<long long>(scrollEndMs),
-              static_cast<long long>(scrollMiddleMs), static_cast<long long>(pageStepsMs));
+              static_cast<long long>(scrollMiddleMs), static_cast<long long>(pageStepsMs),
+              static_cast<long long>(renumberMs), static_cast<long long>(replaceMs), static_cast<long long>(undoMs));
     }
 };
 

@@ -220,8 +220,7 @@ void Parser::matchFlow()
         case BlockKind::For:
         case BlockKind::Loop:
             if (stack.size() >= 10000) {
-                m_p.diagnostics.push_back(
-                    {Severity::Error, m_p.path, b.line, 0, "control structures nested too deeply"});
+                addDiagnostic({Severity::Error, m_p.path, b.line, 0, "control structures nested too deeply"});
                 b.kind = BlockKind::Bad;
                 break;
             }
@@ -238,15 +237,14 @@ void Parser::matchFlow()
                 return o.kind == want || (want == BlockKind::If && o.kind == BlockKind::Else);
             });
             if (match == stack.rend()) {
-                m_p.diagnostics.push_back(
-                    {Severity::Error, m_p.path, b.line, 0, name(b.kind) + " without " + name(want)});
+                addDiagnostic({Severity::Error, m_p.path, b.line, 0, name(b.kind) + " without " + name(want)});
                 b.kind = BlockKind::Bad;
                 break;
             }
             while (&stack.back() != &*match) {
                 const Block& open = m_p.blocks[stack.back().index];
-                m_p.diagnostics.push_back({Severity::Error, m_p.path, open.line, 0,
-                                           name(open.kind) + " without " + closerOf(stack.back().kind)});
+                addDiagnostic({Severity::Error, m_p.path, open.line, 0,
+                               name(open.kind) + " without " + closerOf(stack.back().kind)});
                 m_p.blocks[stack.back().index].kind = BlockKind::Bad;
                 stack.pop_back();
             }
@@ -255,7 +253,7 @@ void Parser::matchFlow()
             stack.pop_back();
             if (b.kind == BlockKind::Else) {
                 if (open.kind == BlockKind::Else) {
-                    m_p.diagnostics.push_back({Severity::Error, m_p.path, b.line, 0, "a second ELSE for one IF"});
+                    addDiagnostic({Severity::Error, m_p.path, b.line, 0, "a second ELSE for one IF"});
                     b.kind = BlockKind::Bad;
                     stack.push_back({BlockKind::Else, openIndex});
                     break;
@@ -274,8 +272,7 @@ void Parser::matchFlow()
     }
     for (const Open& o : stack) {
         Block& open = m_p.blocks[o.index];
-        m_p.diagnostics.push_back(
-            {Severity::Error, m_p.path, open.line, 0, name(open.kind) + " without " + closerOf(o.kind)});
+        addDiagnostic({Severity::Error, m_p.path, open.line, 0, name(open.kind) + " without " + closerOf(o.kind)});
         open.kind = BlockKind::Bad;
     }
 }

@@ -4,6 +4,7 @@
 #include "nc/sinumerik/Machine.h"
 
 #include <cmath>
+#include <cstdio>
 
 namespace camwb::nc::sinumerik {
 
@@ -36,7 +37,9 @@ bool Machine::checkRange(const Program& p, Pos pos, double value)
 {
     if (std::isfinite(value) && std::abs(value) <= kMaxValue)
         return true;
-    error(p, pos, "value " + std::to_string(value) + " outside the control's range (+-99999.999)");
+    char text[32];
+    std::snprintf(text, sizeof text, "%.6g", value);
+    error(p, pos, std::string("value ") + text + " outside the control's range (+-99999.999)");
     return false;
 }
 

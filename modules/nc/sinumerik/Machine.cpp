@@ -37,17 +37,28 @@ std::string stemUpper(const std::string& path) { return upper(std::filesystem::p
 
 void Machine::diag(Severity severity, const Program& p, Pos pos, const std::string& message)
 {
+    if (m_result.diagnostics.size() >= m_options.maxDiagnostics) {
+        ++m_result.diagnosticsDropped;
+        return;
+    }
     const std::uint64_t key = std::hash<std::string>{}(message) ^
                               (static_cast<std::uint64_t>(pos.line) * 0x9E3779B97F4A7C15ull) ^
                               (static_cast<std::uint64_t>(pos.column) << 48) ^
                               (static_cast<std::uint64_t>(reinterpret_cast<std::uintptr_t>(&p)) << 7);
     if (!m_reported.insert(key).second)
         return;
-    if (m_result.diagnostics.size() >= m_options.maxDiagnostics) {
-        ++m_result.diagnosticsDropped;
-        return;
-    }
     m_result.diagnostics.push_back({severity, p.path, pos.line, pos.column, message});
+}
+
+void Machine::addParseDiagnostics(const Program& p)
+{
+    for (const Diagnostic& d : p.diagnostics) {
+        if (m_result.diagnostics.size() < m_options.maxDiagnostics)
+            m_result.diagnostics.push_back(d);
+        else
+            ++m_result.diagnosticsDropped;
+    }
+    m_result.diagnosticsDropped += p.diagnosticsDropped;
 }
 
 void Machine::run(std::string_view mainText)
@@ -57,12 +68,7 @@ void Machine::run(std::string_view mainText)
     m_result.files.push_back(path);
     m_loopCounts.emplace_back();
     const Program& main = *m_programs.front();
-    for (const Diagnostic& d : main.diagnostics) {
-        if (m_result.diagnostics.size() < m_options.maxDiagnostics)
-            m_result.diagnostics.push_back(d);
-        else
-            ++m_result.diagnosticsDropped;
-    }
+    addParseDiagnostics(main);
     if (!path.empty())
         checkProcName(main, stemUpper(path));
     // 828D milling: T preselects, M6 changes. Turning (no M6 anywhere): T changes the tool.
@@ -247,6 +253,8 @@ bool Machine::step()
         return true;
     }
     case BlockKind::Goto: {
+        if (b.bad || b.text < 0)
+            return true;  // reported when parsed
         if (b.expr >= 0 && !condition(false))
             return true;
         const std::string& label = p.texts[static_cast<std::size_t>(b.text)];
@@ -297,7 +305,10 @@ bool Machine::step()
     }
     case BlockKind::MCall: {
         emitComment(p, b);
-        if (b.callWord < 0) {
+        if (b.bad)
+            return true;  // reported when parsed
+        const Word* word = b.callWord >= 0 ? &p.words[static_cast<std::size_t>(b.callWord)] : nullptr;
+        if (!word || (word->kind != WordKind::Cycle && word->kind != WordKind::Call)) {
             m_modalCall.reset();
             return true;
         }
@@ -307,11 +318,11 @@ bool Machine::step()
         call.args = evalArgs(p, b);
         if (m_evalFailed)
             return true;
-        if (b.code > 0) {
-            call.cycle = b.code;
+        if (word->kind == WordKind::Cycle) {
+            call.cycle = word->code;
         } else {
             call.cycle = -1;
-            call.name = p.texts[static_cast<std::size_t>(p.words[static_cast<std::size_t>(b.callWord)].code)];
+            call.name = p.texts[static_cast<std::size_t>(word->code)];
         }
         m_modalCall = std::move(call);
         return true;
@@ -352,12 +363,7 @@ int Machine::loadProgram(const std::string& name, Pos callPos, const Program& ca
     const int index = static_cast<int>(m_programs.size() - 1);
     m_byName.emplace(name, index);
     const Program& loaded = *m_programs.back();
-    for (const Diagnostic& d : loaded.diagnostics) {
-        if (m_result.diagnostics.size() < m_options.maxDiagnostics)
-            m_result.diagnostics.push_back(d);
-        else
-            ++m_result.diagnosticsDropped;
-    }
+    addParseDiagnostics(loaded);
     checkProcName(loaded, name);
     return index;
 }

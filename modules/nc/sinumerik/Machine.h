@@ -75,6 +75,7 @@ private:
     bool returnFromCall();
     void checkProcName(const Program& p, std::string_view expected);
     void reportRunaway();
+    void addParseDiagnostics(const Program& p);
 
     // Execute.cpp
     bool executeNormal(const Program& p, const Block& block);

@@ -124,12 +124,27 @@ bool Parser::error(Pos pos, std::string message)
             return false;  // one error per block: the rest of it is not read
         m_block->bad = true;
     }
-    m_p.diagnostics.push_back({Severity::Error, m_p.path, pos.line, pos.column, std::move(message)});
+    if (m_p.diagnostics.size() < kMaxParseDiagnostics)
+        m_p.diagnostics.push_back({Severity::Error, m_p.path, pos.line, pos.column, std::move(message)});
+    else
+        ++m_p.diagnosticsDropped;
     return false;
+}
+
+void Parser::addDiagnostic(Diagnostic d)
+{
+    if (m_p.diagnostics.size() < kMaxParseDiagnostics)
+        m_p.diagnostics.push_back(std::move(d));
+    else
+        ++m_p.diagnosticsDropped;
 }
 
 void Parser::warning(Pos pos, std::string message)
 {
+    if (m_p.diagnostics.size() >= kMaxParseDiagnostics) {
+        ++m_p.diagnosticsDropped;
+        return;
+    }
     m_p.diagnostics.push_back({Severity::Warning, m_p.path, pos.line, pos.column, std::move(message)});
 }
 
@@ -221,7 +236,7 @@ void Parser::run()
                                                 [](const auto& a, const auto& b) { return a.first < b.first; });
         }
         if (!found)
-            m_p.diagnostics.push_back(
+            addDiagnostic(
                 {Severity::Error, m_p.path, b.line, 0, "undefined label " + label + " (jump target of GOTO)"});
     }
 }
@@ -260,6 +275,15 @@ void Parser::parseBlock()
     if (peekIs(Tok::Name) && peekIs(Tok::Colon, 1)) {
         m_p.labels[upper(peek()->text)].push_back(index);
         m_pos += 2;
+        if (peekIs(Tok::Name)) {  // LABEL: N20 ...
+            const std::string u = upper(peek()->text);
+            if (u.size() > 1 && u[0] == 'N' && isDigits(std::string_view(u).substr(1))) {
+                std::int64_t n = 0;
+                std::from_chars(u.data() + 1, u.data() + std::min<std::size_t>(u.size(), 18), n);
+                m_p.blockNumbers.emplace_back(n, index);
+                ++m_pos;
+            }
+        }
     }
     for (std::size_t i = m_pos; i < m_end; ++i) {
         if (m_tokens[i].kind == Tok::Ellipsis) {

@@ -42,6 +42,7 @@ private:
     // Diagnostics: error() marks the block bad and returns false so callers can `return error(..)`.
     bool error(Pos pos, std::string message);
     void warning(Pos pos, std::string message);
+    void addDiagnostic(Diagnostic d);
 
     // Logical blocks.
     void parseBlock();
@@ -49,6 +50,7 @@ private:
     bool parseWords(Block& block);
     bool parseWord(Block& block);
     bool parseSpacedAddress(Block& block, const Token& name);
+    bool parseGlued(Block& block, const Token& name, const std::string& upperName);
     bool parseAddressValue(Block& block, WordKind kind, std::uint8_t index, const Token& name, bool allowMode);
     bool parseCallArgs(Block& block);
     bool parseDef(Block& block);

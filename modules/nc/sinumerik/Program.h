@@ -159,6 +159,9 @@ struct Block {
     bool bad = false;            // a statement with a broken condition: IF/WHILE false, UNTIL true
 };
 
+// Parse diagnostics kept per file; more are counted (a binary file read as NC has one per line).
+inline constexpr std::size_t kMaxParseDiagnostics = 10000;
+
 struct Program {
     std::string path;      // for diagnostics
     std::string source;    // the text, owned: tokens and texts point into it
@@ -176,7 +179,8 @@ struct Program {
     std::vector<std::uint8_t> slotType;    // per local slot: 0 REAL, 1 INT (rounded), 2 BOOL (0/1)
     std::vector<std::int32_t> procParams;  // local slots of the PROC parameters, in order
     bool hasM6 = false;
-    std::vector<Diagnostic> diagnostics;  // parse diagnostics
+    std::vector<Diagnostic> diagnostics;  // parse diagnostics, the first kMaxParseDiagnostics
+    std::size_t diagnosticsDropped = 0;
 };
 
 // Parses `source` (kept in the program) into blocks; diagnostics name `path`.

@@ -50,7 +50,9 @@ bool isFrameKeyword(std::string_view u)
 double numberOf(std::string_view digits)
 {
     double v = 0;
-    std::from_chars(digits.data(), digits.data() + digits.size(), v);
+    const auto r = std::from_chars(digits.data(), digits.data() + digits.size(), v);
+    if (r.ec == std::errc::result_out_of_range)
+        return 1e300;  // the range check reports it
     return v;
 }
 
@@ -131,6 +133,65 @@ bool Parser::parseCallArgs(Block& block)
         return error(atEnd() ? here() : posOf(*peek()),
                      "unbalanced parentheses: '(' at column " + std::to_string(open.column) + " is not closed");
     }
+}
+
+// Words written without spaces (G1X10Y20, as some posts and hand edits do): each a single
+// address letter and its number; a last letter without a number takes a signed number after it.
+bool Parser::parseGlued(Block& block, const Token& t, const std::string& u)
+{
+    static constexpr std::string_view kLetters = "GMXYZABCIJKFSTD";
+    std::size_t i = 0;
+    struct Piece {
+        char letter;
+        std::string_view digits;
+    };
+    std::vector<Piece> pieces;
+    while (i < u.size()) {
+        if (kLetters.find(u[i]) == std::string_view::npos)
+            return false;
+        std::size_t j = i + 1;
+        while (j < u.size() && ((u[j] >= '0' && u[j] <= '9') || u[j] == '.'))
+            ++j;
+        if (j == i + 1 && j < u.size())
+            return false;
+        pieces.push_back({u[i], std::string_view(u).substr(i + 1, j - i - 1)});
+        i = j;
+    }
+    if (pieces.size() < 2)
+        return false;
+    const bool trailingSign = pieces.back().digits.empty();
+    if (trailingSign && !((peekIs(Tok::Minus, 1) || peekIs(Tok::Plus, 1)) && peekIs(Tok::Number, 2)))
+        return false;
+    const Pos pos = posOf(t);
+    for (const Piece& piece : pieces) {
+        const std::string_view letter(&piece.letter, 1);
+        double value = numberOf(piece.digits);
+        if (piece.digits.empty()) {
+            value = peekIs(Tok::Minus, 1) ? -peek(2)->number : peek(2)->number;
+            m_pos += 2;
+        }
+        if (piece.letter == 'G' || piece.letter == 'M') {
+            if (value != static_cast<int>(value) || value > 9999)
+                return error(pos, "invalid " + std::string(letter) + " code in " + std::string(t.text));
+            addWord(block, piece.letter == 'G' ? WordKind::G : WordKind::M, pos).code = static_cast<int>(value);
+            if (piece.letter == 'M' && value == 6)
+                m_p.hasM6 = true;
+            continue;
+        }
+        const int ax = axisIndex(letter), ce = centreIndex(letter);
+        Word& w = addWord(block,
+                          ax >= 0               ? WordKind::Axis
+                          : ce >= 0             ? WordKind::Centre
+                          : piece.letter == 'F' ? WordKind::F
+                          : piece.letter == 'S' ? WordKind::S
+                          : piece.letter == 'T' ? WordKind::T
+                                                : WordKind::D,
+                          pos);
+        w.index = static_cast<std::uint8_t>(ax >= 0 ? ax : ce >= 0 ? ce : 0);
+        w.value = value;
+    }
+    ++m_pos;
+    return true;
 }
 
 // A letter with its number after a sign or a space: X-10, X .5, G 1.
@@ -387,7 +448,17 @@ bool Parser::parseWord(Block& block)
         } else {
             block.text = w.code;
         }
-        return parseCallArgs(block);
+        if (!parseCallArgs(block))
+            return false;
+        if (w.kind == WordKind::Call && peekIs(Tok::Name)) {  // NAME(args) P3: repetitions
+            const std::string p = upper(peek()->text);
+            std::string_view l, d;
+            if (splitAddress(p, l, d) && l == "P" && d.find('.') == std::string_view::npos) {
+                block.expr2 = constant(numberOf(d), posOf(*peek()));
+                ++m_pos;
+            }
+        }
+        return true;
     }
 
     // Keywords on their own.
@@ -473,6 +544,8 @@ bool Parser::parseWord(Block& block)
         w.value = numberOf(digits);
         return true;
     }
+    if (parseGlued(block, t, u))
+        return true;
 call:
     // A name on its own (optionally with P repetitions) calls a subprogram.
     if (block.wordCount == 0 && block.callWord < 0 && u.size() <= 31 &&

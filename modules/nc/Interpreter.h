@@ -7,8 +7,9 @@
 // programs scaled, diameter programming halved), feeds in mm/min, mm/rev or 1/min with a
 // FeedModeChange before a change of mode, rapids as Rapid, G1/L as Linear, circles and helices
 // as Arc (turns for full extra revolutions), canned cycles as one Cycle record per hole call
-// (clearance = the height before the call when returning there, retract = R plane / set-up
-// clearance, top = reference plane), ToolChange with the tool number (geometry left default),
+// (clearance = where the tool returns between holes: the height before the call for G98, the
+// RTP for SINUMERIK, the 2nd set-up clearance Q203+Q204 for Heidenhain; retract = R plane /
+// set-up clearance; top = reference plane), ToolChange with the tool number (geometry default),
 // Spindle, Coolant, WorkOffset, Dwell, CutterComp, ProgramStop, Comment for comments.
 #pragma once
 

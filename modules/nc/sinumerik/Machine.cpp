@@ -290,11 +290,9 @@ bool Machine::step()
         if (target < 0 && b.gotoDir == GotoDir::Both && !targets.empty())
             target = targets.front();
         if (target < 0) {
-            if (b.gotoDir != GotoDir::BothNoAlarm) {
+            // Undefined labels were reported with the program; the block after the jump goes on.
+            if (b.gotoDir != GotoDir::BothNoAlarm && !targets.empty())
                 error(p, {b.line, 0}, "jump target " + label + " not found in the direction of the GOTO");
-                m_stopped = true;
-                return false;
-            }
             return true;
         }
         if (target <= pc)
@@ -403,6 +401,8 @@ bool Machine::callProgram(const std::string& name, const Block& block, const Pro
         else if (callee.slotType[slot] == 2)
             v = v != 0;
         m_locals[frame.localsBase + slot] = v;
+        if (frame.repeatsLeft > 0)
+            frame.args.push_back(v);
     }
     m_stack.push_back(frame);
     return true;
@@ -412,9 +412,13 @@ bool Machine::returnFromCall()
 {
     Frame& frame = m_stack.back();
     if (frame.repeatsLeft > 0) {
+        // The next repetition is a new call with the same arguments.
         --frame.repeatsLeft;
         frame.pc = 0;
         std::fill(m_locals.begin() + static_cast<std::ptrdiff_t>(frame.localsBase), m_locals.end(), 0.0);
+        const Program& callee = *m_programs[static_cast<std::size_t>(frame.program)];
+        for (std::size_t i = 0; i < frame.args.size(); ++i)
+            m_locals[frame.localsBase + static_cast<std::size_t>(callee.procParams[i])] = frame.args[i];
         return true;
     }
     m_locals.resize(frame.localsBase);

@@ -43,8 +43,9 @@ struct Frame {
     int program = 0;
     int pc = 0;
     std::size_t localsBase = 0;
-    int repeatsLeft = 0;  // P repetitions still to run after this one
-    int callPc = 0;       // the calling block (its program is the previous frame's)
+    int repeatsLeft = 0;       // P repetitions still to run after this one
+    int callPc = 0;            // the calling block (its program is the previous frame's)
+    std::vector<double> args;  // parameter values, kept for the repetitions of a P call
 };
 
 class Machine {

@@ -353,20 +353,13 @@ void View3D::setPreparedToolpath(std::shared_ptr<const ToolpathScene> scene)
     d->render();
 }
 
+// Rapids go in first: where a cycle's feed and its rapid retract coincide, the feed drawn later
+// wins the depth test (VTK tests less-or-equal) and shows green, as on the control's graphics.
 void View3D::showScene()
 {
     for (const ToolpathScene::Part& part : d->scene->parts()) {
         Private::ToolActors actors{part.tool, nullptr, nullptr};
         const bool visible = d->hiddenTools.count(part.tool) == 0;
-        if (part.cut) {
-            actors.cut = makeActor(part.cut);
-            actors.cut->GetMapper()->SetScalarModeToUseCellData();
-            actors.cut->GetMapper()->SetColorModeToDirectScalars();
-            actors.cut->GetProperty()->SetLineWidth(2.0f);
-            actors.cut->GetProperty()->LightingOff();
-            actors.cut->SetVisibility(visible);
-            d->renderer->AddActor(actors.cut);
-        }
         if (part.rapid) {
             actors.rapid = makeActor(part.rapid);
             actors.rapid->GetMapper()->ScalarVisibilityOff();
@@ -375,6 +368,15 @@ void View3D::showScene()
             actors.rapid->GetProperty()->LightingOff();
             actors.rapid->SetVisibility(visible);
             d->renderer->AddActor(actors.rapid);
+        }
+        if (part.cut) {
+            actors.cut = makeActor(part.cut);
+            actors.cut->GetMapper()->SetScalarModeToUseCellData();
+            actors.cut->GetMapper()->SetColorModeToDirectScalars();
+            actors.cut->GetProperty()->SetLineWidth(2.0f);
+            actors.cut->GetProperty()->LightingOff();
+            actors.cut->SetVisibility(visible);
+            d->renderer->AddActor(actors.cut);
         }
         d->toolActors.push_back(actors);
     }

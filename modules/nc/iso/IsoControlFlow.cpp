@@ -10,6 +10,7 @@ namespace {
 
 constexpr std::size_t kMaxCallDepth = 100;
 constexpr std::size_t kMaxControlDepth = 1000;
+constexpr std::size_t kMaxFiles = 100;  // subroutine files one program may load
 constexpr double kArgumentLimit = 1e9;  // repeat counts
 
 }  // namespace
@@ -62,25 +63,50 @@ bool Program::skipTo(const std::string& label, std::initializer_list<OKeyword> k
     return false;
 }
 
+void Program::scanSubroutines(int file)
+{
+    const std::string_view text = m_texts[static_cast<std::size_t>(file)];
+    Position p{0, 1, file};
+    std::string found;
+    while (p.offset < text.size()) {
+        const std::size_t end = text.find('\n', p.offset);
+        const std::size_t stop = end == std::string_view::npos ? text.size() : end;
+        OKeyword keyword = OKeyword::None;
+        if (LineScanner::peekOWord(text.substr(p.offset, stop - p.offset), found, keyword) && keyword == OKeyword::Sub)
+            m_subroutines.emplace(found, Position{stop + 1, p.line + 1, file});
+        p = Position{stop + 1, p.line + 1, file};
+    }
+}
+
+// LinuxCNC looks for o<name> in <name>.ngc on its subroutine path; here the resolver of the
+// options (by default the program's folder) finds the file.
+bool Program::loadSubroutineFile(const std::string& label)
+{
+    if (!m_options.resolveProgram || m_triedFiles.count(label) || m_texts.size() >= kMaxFiles ||
+        label.find_first_not_of("0123456789") == std::string::npos)
+        return false;
+    m_triedFiles.emplace(label, true);
+    std::optional<ProgramSource> source = m_options.resolveProgram(label);
+    if (!source)
+        return false;
+    m_loaded.push_back(std::move(source->text));
+    m_texts.push_back(m_loaded.back());
+    m_result.files.push_back(source->path);
+    scanSubroutines(static_cast<int>(m_texts.size()) - 1);
+    return true;
+}
+
 bool Program::findSubroutine(const std::string& label, Position& body)
 {
     auto it = m_subroutines.find(label);
     if (it == m_subroutines.end() && !m_scannedSubroutines) {
-        // Called before its definition was read: look through the whole text once.
+        // Called before its definition was read: look through the whole program once.
         m_scannedSubroutines = true;
-        Position p;
-        std::string found;
-        while (p.offset < m_text.size()) {
-            const std::size_t end = m_text.find('\n', p.offset);
-            const std::size_t stop = end == std::string_view::npos ? m_text.size() : end;
-            OKeyword keyword = OKeyword::None;
-            if (LineScanner::peekOWord(m_text.substr(p.offset, stop - p.offset), found, keyword) &&
-                keyword == OKeyword::Sub)
-                m_subroutines.emplace(found, Position{stop + 1, p.line + 1});
-            p = Position{stop + 1, p.line + 1};
-        }
+        scanSubroutines(0);
         it = m_subroutines.find(label);
     }
+    if (it == m_subroutines.end() && loadSubroutineFile(label))
+        it = m_subroutines.find(label);
     if (it == m_subroutines.end())
         return false;
     body = it->second;
@@ -107,7 +133,7 @@ Program::Flow Program::oWord()
         }
         return args[0] != 0 ? 1 : 0;
     };
-    const Position here{m_next.offset, m_next.line};  // the line after this one
+    const Position here = m_next;  // the line after this one
     if (m_control.size() >= kMaxControlDepth) {
         oError("control blocks nested too deeply");
         m_fatal = true;
@@ -163,7 +189,8 @@ Program::Flow Program::oWord()
         }
         // Coming back from endwhile, this line is the innermost loop's own start.
         const bool again = !m_control.empty() && m_control.back().kind == OKeyword::While &&
-                           m_control.back().label == label && m_control.back().start.line == m_current.line;
+                           m_control.back().label == label && m_control.back().start.line == m_current.line &&
+                           m_control.back().start.file == m_current.file;
         if (c) {
             if (!again)
                 m_control.push_back(ControlFrame{OKeyword::While, label, m_current, 0, false});

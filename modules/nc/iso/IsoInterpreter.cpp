@@ -9,7 +9,7 @@ namespace camwb::nc::iso {
 
 Program::Program(std::string_view text, const InterpretOptions& options, toolpath::MachineSink& sink,
                  InterpretResult& result) :
-    m_text(text),
+    m_texts{text},
     m_options(options),
     m_sink(sink),
     m_result(result),
@@ -22,13 +22,16 @@ Program::Program(std::string_view text, const InterpretOptions& options, toolpat
 
 bool Program::readLine(std::string_view& line)
 {
-    if (m_next.offset >= m_text.size())
+    const std::string_view text = m_texts[static_cast<std::size_t>(m_next.file)];
+    if (m_next.offset >= text.size())
         return false;
-    const char* start = m_text.data() + m_next.offset;
-    const std::size_t left = m_text.size() - m_next.offset;
+    const char* start = text.data() + m_next.offset;
+    const std::size_t left = text.size() - m_next.offset;
     const void* newline = std::memchr(start, '\n', left);
     const std::size_t length = newline ? static_cast<std::size_t>(static_cast<const char*>(newline) - start) : left;
     line = std::string_view(start, length);
+    if (m_next.file != m_current.file)  // into or back from a subroutine file
+        m_reporter.setFile(m_result.files[static_cast<std::size_t>(m_next.file)]);
     m_current = m_next;
     m_lineNumber = m_next.line;
     m_next.offset += length + (newline ? 1 : 0);
@@ -71,6 +74,8 @@ void Program::run()
             ++i;
         if (i == line.size())
             continue;
+        if (line[i] == '%' && m_current.file != 0)
+            continue;  // a subroutine file's own delimiters
         if (line[i] == '%') {
             if (!first || percentOpened) {
                 m_programEnd = true;
@@ -97,7 +102,7 @@ void Program::run()
             continue;
         }
         applyAssignments();
-        if (m_machine.execute(m_block, m_lineNumber, 0) == BlockOutcome::ProgramEnd)
+        if (m_machine.execute(m_block, m_lineNumber, m_current.file) == BlockOutcome::ProgramEnd)
             m_programEnd = true;
     }
     if (!m_fatal && !m_programEnd)

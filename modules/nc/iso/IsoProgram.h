@@ -1,6 +1,7 @@
 // The ISO program runner: walks the text line by line (the whole file is one string_view, no
 // copy), reads each line into the one reused Block, applies its parameter assignments and hands
-// it to the Machine; O-word subroutines, loops and conditions move the read position. A runaway
+// it to the Machine; O-word subroutines, loops and conditions move the read position; o<name> call
+// of a subroutine defined nowhere in the program loads <name>.ngc through resolveProgram. A runaway
 // limit (InterpretOptions::maxBlocks) counts executed and skipped lines, so no input runs forever.
 #pragma once
 
@@ -12,6 +13,7 @@
 #include "nc/iso/IsoScanner.h"
 
 #include <cstddef>
+#include <deque>
 #include <map>
 #include <string>
 #include <string_view>
@@ -30,8 +32,9 @@ private:
     enum class Flow { Next, Stop };
 
     struct Position {
-        std::size_t offset = 0;  // start of a line in the text
+        std::size_t offset = 0;  // start of a line in its file's text
         int line = 1;            // its 1-based number
+        int file = 0;            // index into m_texts and InterpretResult::files
     };
     struct CallFrame {
         Position returnTo;
@@ -54,11 +57,14 @@ private:
     bool skipTo(const std::string& label, std::initializer_list<OKeyword> keywords, bool pastIt,
                 OKeyword* found = nullptr);
     bool findSubroutine(const std::string& label, Position& body);
+    void scanSubroutines(int file);
+    bool loadSubroutineFile(const std::string& label);
     void returnFromCall();
     ControlFrame* innermost(const std::string& label, std::initializer_list<OKeyword> kinds);
     void oError(std::string message);
 
-    std::string_view m_text;
+    std::vector<std::string_view> m_texts;  // [0] the program, then subroutine files as first called
+    std::deque<std::string> m_loaded;       // the texts of subroutine files (stable addresses)
     const InterpretOptions& m_options;
     toolpath::MachineSink& m_sink;
     InterpretResult& m_result;
@@ -78,6 +84,7 @@ private:
     std::vector<ControlFrame> m_control;
     std::map<std::string, Position> m_subroutines;  // label -> first line of the body
     bool m_scannedSubroutines = false;
+    std::map<std::string, bool> m_triedFiles;  // subroutine names looked up with resolveProgram
     std::string m_labelScratch;
 };
 

@@ -37,6 +37,7 @@ public:
         report(Severity::Warning, line, column, std::move(message));
     }
     bool hadErrors() const { return m_errors; }
+    void setFile(std::string file) { m_file = std::move(file); }
 
 private:
     std::vector<Diagnostic>& m_out;

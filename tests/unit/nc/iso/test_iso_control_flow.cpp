@@ -88,3 +88,37 @@ TEST(IsoControlFlow, Mismatches)
 
 }  // namespace
 }  // namespace camwb::nc::iso::test
+
+namespace camwb::nc::iso::test {
+namespace {
+
+InterpretOptions withFiles()
+{
+    InterpretOptions options;
+    options.fileName = "main.ngc";
+    options.resolveProgram = [](std::string_view name) -> std::optional<ProgramSource> {
+        if (name == "hole")
+            return ProgramSource{"subs/hole.ngc", "%\n(drill one hole)\no<hole> sub\nG0 X#1 Y#2\nG1 Z-1 F100\n"
+                                                  "G0 Z1 E\no<hole> endsub\n%\n"};
+        return std::nullopt;
+    };
+    return options;
+}
+
+TEST(IsoControlFlow, SubroutineFromItsOwnFile)
+{
+    const IsoRun r = run("G0 Z1\no<hole> call [5] [6]\no<hole> call [7] [8]\no<nothing> call\nM2\n", withFiles());
+    EXPECT_EQ(r.result.files, (std::vector<std::string>{"main.ngc", "subs/hole.ngc"}));
+    ASSERT_EQ(r.result.diagnostics.size(), 3u);  // the file's error twice, then the missing subroutine
+    EXPECT_EQ(formatDiagnostic(r.result.diagnostics[0]), "subs/hole.ngc:6:7: error: missing value after E");
+    EXPECT_EQ(formatDiagnostic(r.result.diagnostics[2]), "main.ngc:4:1: error: subroutine onothing is not defined");
+    const auto rapids = r.all<Rapid>();
+    ASSERT_EQ(rapids.size(), 3u);
+    EXPECT_EQ(rapids[1].to, (Vec3{5, 6, 1}));
+    EXPECT_EQ(rapids[2].to, (Vec3{7, 8, -1}));
+    EXPECT_NE(r.trace.find("hole.ngc:4 rapid 5.0000 6.0000 1.0000"), std::string::npos) << r.trace;
+    EXPECT_NE(r.trace.find("hole.ngc:5 linear 7.0000 8.0000 -1.0000"), std::string::npos) << r.trace;
+}
+
+}  // namespace
+}  // namespace camwb::nc::iso::test

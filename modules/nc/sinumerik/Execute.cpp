@@ -444,8 +444,9 @@ bool Machine::executeNormal(const Program& p, const Block& b)
             component(target, i) = incremental ? component(m_pos, i) + mm : mm;
         }
         const int m = m_modal.motion;
-        const bool mcallPositioning =
-            m_modalCall && m_modalCall->cycle > 0 && !callWord && m == 0 && target.z == m_pos.z && m_modal.plane == 17;
+        const bool mcallPositioning = m_modalCall && m_modalCall->cycle > 0 && !callWord && m == 0 &&
+                                      m_modalCall->level == m_stack.size() && target.z == m_pos.z &&
+                                      m_modal.plane == 17;
         if (m == 0) {
             if (!mcallPositioning) {
                 setSource(line);
@@ -469,7 +470,7 @@ bool Machine::executeNormal(const Program& p, const Block& b)
         warning(p, {line, 0}, "arc words without G2/G3: ignored");
     }
 
-    if (moved && m_modalCall && !callWord) {
+    if (moved && m_modalCall && !callWord && m_modalCall->level == m_stack.size()) {
         if (m_modalCall->cycle > 0) {
             const ModalCall call = *m_modalCall;
             runCycle(p, call.cycle, call.args, {line, 0}, line);

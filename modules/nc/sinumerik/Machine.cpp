@@ -313,6 +313,7 @@ bool Machine::step()
         m_evalFailed = false;
         ModalCall call;
         call.line = b.line;
+        call.level = m_stack.size();
         call.args = evalArgs(p, b);
         if (m_evalFailed)
             return true;

@@ -37,6 +37,7 @@ struct ModalCall {
     std::string name;
     std::vector<std::optional<double>> args;
     int line = 0;
+    std::size_t level = 0;  // call-stack depth it was set at: it does not fire inside its own call
 };
 
 struct Frame {

@@ -78,6 +78,29 @@ TEST(SinumerikControlFlow, SubprogramsWithParametersRepetitionsAndGlobals)
     EXPECT_EQ(r.path.source(1).line, 2);
 }
 
+TEST(SinumerikControlFlow, ModalSubprogramCallAndEnds)
+{
+    const std::map<std::string, std::string> subs{
+        {"HOLE", "PROC HOLE\nG1 Z-1 F50\nG0 Z1\nM30\n"},
+        {"L7", "G0 Y7\nM17\n"},
+    };
+    const NcRun r = run("G0 X0 Y0 Z1\nMCALL HOLE\nX10\nX20\nMCALL\nX30\nL7\nM2\nG0 X99\n", subs);
+    EXPECT_EQ(r.errors(), 0) << r.diagnostics();
+    EXPECT_EQ(r.all<toolpath::Linear>().size(), 2u);
+    EXPECT_DOUBLE_EQ(r.all<toolpath::Rapid>().back().to.y, 7);
+    EXPECT_TRUE(r.result.completed);
+}
+
+TEST(SinumerikControlFlow, SetAlarmStops)
+{
+    const NcRun r = run("G0 X1\nIF R1==0\nSETAL(61000)\nENDIF\nG0 X2\n");
+    const Diagnostic* d = r.find("alarm 61000");
+    ASSERT_NE(d, nullptr) << r.diagnostics();
+    EXPECT_EQ(d->line, 3);
+    EXPECT_EQ(r.all<toolpath::Rapid>().size(), 1u);
+    EXPECT_FALSE(r.result.completed);
+}
+
 TEST(SinumerikControlFlow, RecursionStopsAtSixteenLevels)
 {
     const NcRun r = run("DEEP\nM30\n", {{"DEEP", "PROC DEEP\nR1=R1+1\nDEEP\nM17\n"}});

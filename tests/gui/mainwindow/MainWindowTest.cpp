@@ -362,6 +362,22 @@ private slots:
             QTest::qWait(300);
             QVERIFY(window.grab().save(shots + QLatin1Char('/') + QLatin1String(shot.file)));
         }
+        // The example job posted: the model with the trace of its program, cursor on an arc.
+        MainWindow window;
+        window.resize(1600, 1000);
+        window.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&window));
+        openExample(window);
+        QVERIFY(waitForTrace(window));
+        const QStringList lines = window.ncEditor()->text().split(QLatin1Char('\n'));
+        for (int i = 0; i < lines.size(); ++i) {
+            if (lines[i].contains(QLatin1String(" G2 ")) || lines[i].contains(QLatin1String(" G3 "))) {
+                window.ncEditor()->gotoLine(i + 1);
+                break;
+            }
+        }
+        QTest::qWait(300);
+        QVERIFY(window.grab().save(shots + QStringLiteral("/posted-job.png")));
     }
 
     void withoutOpenGlTheViewSaysSo()

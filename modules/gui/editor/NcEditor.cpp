@@ -101,6 +101,10 @@ NcEditor::NcEditor(QWidget* parent) : QWidget(parent), d(std::make_unique<Privat
     d->sci->setIndentationsUseTabs(false);
     d->sci->setTabWidth(4);
     d->sci->setEolMode(QsciScintilla::EolUnix);
+    // Jumping far into a big program styles what comes before the view in idle time, in slices,
+    // instead of freezing until everything up to there is styled (the view shows plain text for
+    // a moment instead).
+    d->sci->SendScintilla(Base::SCI_SETIDLESTYLING, static_cast<unsigned long>(Base::SC_IDLESTYLING_TOVISIBLE));
     // The horizontal scroll range follows the longest line seen, not a fixed 2000 pixels.
     d->sci->SendScintilla(Base::SCI_SETSCROLLWIDTH, 1UL);
     d->sci->SendScintilla(Base::SCI_SETSCROLLWIDTHTRACKING, 1UL);
@@ -264,6 +268,13 @@ int NcEditor::styleAt(int line, int column) const
     const long position = d->sci->positionFromLineIndex(line - 1, column - 1);
     styleThrough(line);
     return static_cast<int>(d->sci->SendScintilla(Base::SCI_GETSTYLEAT, static_cast<unsigned long>(position)));
+}
+
+bool NcEditor::isStyledThrough(int line) const
+{
+    const long lineEnd =
+        d->sci->SendScintilla(Base::SCI_GETLINEENDPOSITION, static_cast<unsigned long>(std::max(0, line - 1)));
+    return d->sci->SendScintilla(Base::SCI_GETENDSTYLED) >= lineEnd;
 }
 
 int NcEditor::foldDepth(int line) const

@@ -63,6 +63,7 @@ public:
     // Fold depth at the start of a 1-based line (0 = top level) and whether the line opens a
     // fold; -1 / false outside the text. Styles up to the line first if needed.
     int foldDepth(int line) const;
+    bool isStyledThrough(int line) const;  // without styling anything: what idle styling has done
     bool isFoldHeader(int line) const;
 
     // Markers in the margin and boxed annotations under the lines (worst severity per line).

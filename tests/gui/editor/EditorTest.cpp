@@ -523,6 +523,20 @@ private slots:
         QApplication::processEvents();
         const qint64 scrollEndMs = timer.restart();
         QVERIFY(editor.firstVisibleLine() > 990'000);
+        // Styling up to the view goes on in idle time: wait until the last line is styled, and
+        // record the longest the event loop stood still meanwhile (a ticking 5 ms timer).
+        QElapsedTimer tick;
+        tick.start();
+        qint64 longestStallMs = 0;
+        QTimer ticker;
+        ticker.setInterval(5);
+        QObject::connect(&ticker, &QTimer::timeout, [&] { longestStallMs = std::max(longestStallMs, tick.restart()); });
+        ticker.start();
+        QTRY_VERIFY_WITH_TIMEOUT(editor.isStyledThrough(1'000'000), 60'000);
+        ticker.stop();
+        const qint64 styledEndMs = timer.restart();
+        saveShot(&editor, QStringLiteral("editor-1M-lines-end.png"));
+        timer.restart();
         QCOMPARE(static_cast<NcStyle>(editor.styleAt(1'000'000, 1)), NcStyle::BlockNumber);
         editor.gotoLine(500'000);
         editor.repaint();
@@ -548,11 +562,13 @@ private slots:
         editor.repaint();
         const qint64 undoMs = timer.restart();
         QVERIFY(editor.text().startsWith(QStringLiteral("N10 G1")));
-        qInfo("1M lines (%lld MB): setText %lld ms, first paint %lld ms, scroll to end %lld ms, "
+        qInfo("1M lines (%lld MB): setText %lld ms, first paint %lld ms, scroll to end %lld ms (styled there after "
+              "%lld ms more in idle time, longest stall %lld ms), "
               "back to the middle %lld ms, 50 page steps %lld ms; renumber (kernel) %lld ms, "
               "replace text %lld ms, undo %lld ms",
               static_cast<long long>(program.size() / 1'000'000), static_cast<long long>(setTextMs),
               static_cast<long long>(firstPaintMs), static_cast<long long>(scrollEndMs),
+              static_cast<long long>(styledEndMs), static_cast<long long>(longestStallMs),
               static_cast<long long>(scrollMiddleMs), static_cast<long long>(pageStepsMs),
               static_cast<long long>(renumberMs), static_cast<long long>(replaceMs), static_cast<long long>(undoMs));
     }

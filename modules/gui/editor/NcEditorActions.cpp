@@ -113,8 +113,12 @@ void registerNcEditorActions(ActionRegistry& registry, NcEditor* editor, QWidget
     add({QStringLiteral("Cam.Nc.Renumber"), Tr::tr("&Renumber Blocks…"), menu, QKeySequence(), false, true,
          Tr::tr("Renumber the blocks of the NC program (one undo step)")},
         [ed, parent] {
-            if (!ed || ed->isReadOnly())
+            if (!ed)
                 return;
+            if (ed->isReadOnly()) {
+                showMessage(parent, Tr::tr("The NC program is read-only"));
+                return;
+            }
             RenumberDialog dialog(ed->dialect(), parent);
             if (dialog.exec() != QDialog::Accepted || !ed)
                 return;
@@ -124,8 +128,12 @@ void registerNcEditorActions(ActionRegistry& registry, NcEditor* editor, QWidget
     add({QStringLiteral("Cam.Nc.RemoveNumbers"), Tr::tr("Re&move Block Numbers"), menu, QKeySequence(), false, false,
          Tr::tr("Remove the N numbers (blocks a GOTO jumps to keep theirs)")},
         [ed, parent] {
-            if (!ed || ed->isReadOnly())
+            if (!ed)
                 return;
+            if (ed->isReadOnly()) {
+                showMessage(parent, Tr::tr("The NC program is read-only"));
+                return;
+            }
             const QByteArray text = ed->utf8Text();
             applyRewrite(ed, parent, nc::removeBlockNumbers(view(text), ed->dialect()), true);
         });

@@ -207,6 +207,8 @@ BlockOutcome Machine::execute(const Block& block, int line, int fileIndex)
 {
     m_line = line;
     m_file = fileIndex;
+    if (executeMotionOnly(block))
+        return BlockOutcome::Continue;
     for (const std::string_view text : block.comments) {
         source();
         m_sink.comment(Comment{std::string(text)});
@@ -374,13 +376,13 @@ BlockOutcome Machine::execute(const Block& block, int line, int fileIndex)
             m_reporter.warning(m_line, groups.gColumn[0],
                                "G53 machine coordinates are traced as work coordinates (no machine offsets known)");
         }
-        motion(block, mode, groups);
+        motion(block, mode, g[0] == 530);
     } else if (g[1] != -1 && g[1] != 0 && g[1] != 10 && g[1] != 20 && g[1] != 30 && g[1] != 800 && !axesTaken) {
         m_reporter.error(m_line, groups.gColumn[1], gName(g[1]) + " without X, Y or Z: no hole to drill");
         return BlockOutcome::Continue;
     } else if ((m_state.motion == 20 || m_state.motion == 30) && !axesTaken &&
                (block.has('I') || block.has('J') || block.has('K') || block.has('R'))) {
-        motion(block, m_state.motion, groups);  // a full circle needs no axis word
+        motion(block, m_state.motion, false);  // a full circle needs no axis word
     }
 
     if (groups.stop == 0 || groups.stop == 1 || groups.stop == 60) {

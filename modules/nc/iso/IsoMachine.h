@@ -68,7 +68,8 @@ private:
     void source() { m_sink.setSource(toolpath::SourceRef{-1, -1, m_line, m_file}); }
     void setSpindle(double rpm, int direction);
     void setCoolant(bool mist, bool flood);
-    void motion(const Block& block, int mode, const Groups& groups);
+    void motion(const Block& block, int mode, bool machineCoordinates);
+    bool executeMotionOnly(const Block& block);
     toolpath::Vec3 target(const Block& block, bool machineCoordinates) const;
     void checkAxes(const Block& block);
 

@@ -52,13 +52,40 @@ double Machine::feedFor(const Block& block, const char* what)
     return m_state.feed;
 }
 
-void Machine::motion(const Block& block, int mode, const Groups& groups)
+// Most blocks of a posted program are axis words, centre words and F with at most a G0..G3:
+// they skip the modal-group bookkeeping of execute(). False: the block needs the full path.
+bool Machine::executeMotionOnly(const Block& block)
+{
+    constexpr std::uint32_t kMotionLetters = (1u << ('X' - 'A')) | (1u << ('Y' - 'A')) | (1u << ('Z' - 'A')) |
+                                             (1u << ('I' - 'A')) | (1u << ('J' - 'A')) | (1u << ('K' - 'A')) |
+                                             (1u << ('F' - 'A'));
+    constexpr std::uint32_t kXyz = (1u << ('X' - 'A')) | (1u << ('Y' - 'A')) | (1u << ('Z' - 'A'));
+    if (block.mCount != 0 || block.gCount > 1 || (block.present & ~kMotionLetters) || !block.comments.empty())
+        return false;
+    const int g = block.gCount ? block.g[0].code10 : -1;
+    if (g != -1 && g != 0 && g != 10 && g != 20 && g != 30)
+        return false;
+    const int mode = g == -1 ? m_state.motion : g;
+    constexpr std::uint32_t kCentre = (1u << ('I' - 'A')) | (1u << ('J' - 'A')) | (1u << ('K' - 'A'));
+    const bool moves = (block.present & kXyz) || ((mode == 20 || mode == 30) && (block.present & kCentre));
+    if ((block.has('F') && block.get('F') < 0) || (moves && mode == 800))
+        return false;  // the full path says what is wrong
+    if (block.has('F'))
+        m_state.feed = m_state.feedMode == FeedMode::InverseTime ? block.get('F') : block.get('F') * m_state.unit;
+    if (g != -1)
+        m_state.motion = m_state.lastMotion = g;
+    if (moves)
+        motion(block, mode, false);
+    return true;
+}
+
+void Machine::motion(const Block& block, int mode, bool machineCoordinates)
 {
     checkAxes(block);
     constexpr std::uint32_t kXyz = (1u << ('X' - 'A')) | (1u << ('Y' - 'A')) | (1u << ('Z' - 'A'));
     if ((mode == 0 || mode == 10) && !(block.present & kXyz))
         return;  // rotary or UVW words only: nothing moves in the three-axis trace
-    const Vec3 to = target(block, groups.g[0] == 530);
+    const Vec3 to = target(block, machineCoordinates);
     if (!(std::abs(to.x) < kTravelLimitMm && std::abs(to.y) < kTravelLimitMm && std::abs(to.z) < kTravelLimitMm)) {
         m_reporter.error(m_line, 0, "target out of range (more than 1000 m from the origin)");
         return;

@@ -276,6 +276,21 @@ private slots:
         }
     }
 
+    void fanucMacroLoopsFold()
+    {
+        NcEditor editor;
+        editor.setDialect(nc::Dialect::Iso);
+        editor.setText(QStringLiteral("O1000\n#1=0\nWHILE[#1LT3]DO1\nG91 G1 X10 F100\n#1=#1+1\nEND1\n"
+                                      "IF[#1GT2]GOTO10\nN10 M30\n"));
+        QCOMPARE(static_cast<NcStyle>(editor.styleAt(3, 1)), NcStyle::Keyword);   // WHILE
+        QCOMPARE(static_cast<NcStyle>(editor.styleAt(3, 13)), NcStyle::Keyword);  // DO1
+        QCOMPARE(static_cast<NcStyle>(editor.styleAt(7, 10)), NcStyle::Keyword);  // GOTO10
+        const int depth[] = {0, 0, 0, 1, 1, 1, 0, 0};
+        for (int line = 1; line <= 8; ++line)
+            QCOMPARE(editor.foldDepth(line), depth[line - 1]);
+        QVERIFY(editor.isFoldHeader(3));
+    }
+
     void switchingTheDialectRestyles()
     {
         NcEditor editor;

@@ -8,6 +8,7 @@
 #include <vtkUnsignedCharArray.h>
 
 #include <algorithm>
+#include <cmath>
 
 namespace camwb::gui {
 
@@ -31,7 +32,56 @@ vtkSmartPointer<vtkPolyData> linesOf(vtkPoints* points, vtkCellArray* lines)
     return data;
 }
 
+double distanceToSegment2d(double px, double py, double ax, double ay, double bx, double by)
+{
+    const double dx = bx - ax, dy = by - ay;
+    const double lengthSquared = dx * dx + dy * dy;
+    double t = lengthSquared > 0 ? ((px - ax) * dx + (py - ay) * dy) / lengthSquared : 0.0;
+    t = std::clamp(t, 0.0, 1.0);
+    return std::hypot(px - (ax + t * dx), py - (ay + t * dy));
+}
+
 }  // namespace
+
+bool ScreenProjection::project(const base::Vec3& p, double& x, double& y) const
+{
+    const double w = m[12] * p.x + m[13] * p.y + m[14] * p.z + m[15];
+    if (w <= 1e-12)
+        return false;
+    const double nx = (m[0] * p.x + m[1] * p.y + m[2] * p.z + m[3]) / w;
+    const double ny = (m[4] * p.x + m[5] * p.y + m[6] * p.z + m[7]) / w;
+    x = (nx + 1.0) * 0.5 * width;
+    y = (1.0 - ny) * 0.5 * height;
+    return true;
+}
+
+int ToolpathScene::nearestSegment(const ScreenProjection& projection, double x, double y, double tolerancePx,
+                                  const std::set<int>& hiddenTools) const
+{
+    const auto& points = m_polylines.points();
+    const auto& segments = m_polylines.segments();
+    int best = -1;
+    double bestDistance = tolerancePx;
+    for (const Part& part : m_parts) {
+        if (hiddenTools.count(part.tool) > 0)
+            continue;
+        for (const auto* list : {&part.cutSegments, &part.rapidSegments}) {
+            for (std::uint32_t s : *list) {
+                double ax = 0, ay = 0, bx = 0, by = 0;
+                if (!projection.project(points[segments[s].from], ax, ay) ||
+                    !projection.project(points[segments[s].to], bx, by))
+                    continue;
+                const double distance = distanceToSegment2d(x, y, ax, ay, bx, by);
+                // Ties (shared end points) go to the later segment, the one drawn on top.
+                if (distance < bestDistance || (distance == bestDistance && best >= 0 && int(s) > best)) {
+                    bestDistance = distance;
+                    best = static_cast<int>(s);
+                }
+            }
+        }
+    }
+    return best;
+}
 
 std::shared_ptr<ToolpathScene> ToolpathScene::build(const toolpath::Toolpath& toolpath, double chordToleranceMm)
 {

@@ -39,7 +39,6 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <limits>
 #include <set>
 
 namespace camwb::gui {
@@ -477,45 +476,17 @@ const std::vector<std::uint32_t>& View3D::highlightedSegments() const { return d
 
 namespace {
 
-// World -> widget (logical pixels, y down) with the renderer's current camera.
-struct Projector {
-    double m[16];
-    double width = 0;
-    double height = 0;
-
-    bool project(const base::Vec3& p, double& x, double& y) const
-    {
-        const double w = m[12] * p.x + m[13] * p.y + m[14] * p.z + m[15];
-        if (w <= 1e-12)
-            return false;
-        const double nx = (m[0] * p.x + m[1] * p.y + m[2] * p.z + m[3]) / w;
-        const double ny = (m[4] * p.x + m[5] * p.y + m[6] * p.z + m[7]) / w;
-        x = (nx + 1.0) * 0.5 * width;
-        y = (1.0 - ny) * 0.5 * height;
-        return true;
-    }
-};
-
-Projector projectorOf(vtkRenderer* renderer, double width, double height)
+ScreenProjection projectionOf(vtkRenderer* renderer, double width, double height)
 {
-    Projector projector;
-    projector.width = width;
-    projector.height = height;
+    ScreenProjection projection;
+    projection.width = width;
+    projection.height = height;
     const double aspect = height > 0 ? width / height : 1.0;
     vtkMatrix4x4* matrix = renderer->GetActiveCamera()->GetCompositeProjectionTransformMatrix(aspect, -1, 1);
     for (int r = 0; r < 4; ++r)
         for (int c = 0; c < 4; ++c)
-            projector.m[4 * r + c] = matrix->GetElement(r, c);
-    return projector;
-}
-
-double distanceToSegment(double px, double py, double ax, double ay, double bx, double by)
-{
-    const double dx = bx - ax, dy = by - ay;
-    const double lengthSquared = dx * dx + dy * dy;
-    double t = lengthSquared > 0 ? ((px - ax) * dx + (py - ay) * dy) / lengthSquared : 0.0;
-    t = std::clamp(t, 0.0, 1.0);
-    return std::hypot(px - (ax + t * dx), py - (ay + t * dy));
+            projection.m[4 * r + c] = matrix->GetElement(r, c);
+    return projection;
 }
 
 }  // namespace
@@ -524,45 +495,20 @@ std::optional<QPointF> View3D::projectToWidget(const base::Vec3& point) const
 {
     if (d->gl == nullptr)
         return std::nullopt;
-    const Projector projector = projectorOf(d->renderer, d->gl->width(), d->gl->height());
+    const ScreenProjection projection = projectionOf(d->renderer, d->gl->width(), d->gl->height());
     double x = 0, y = 0;
-    if (!projector.project(point, x, y))
+    if (!projection.project(point, x, y))
         return std::nullopt;
     return QPointF(x, y) + QPointF(d->gl->mapTo(this, QPoint(0, 0)));
 }
 
-// A plain search in screen space: every visible segment projected with the camera, the nearest
-// within the tolerance wins. Linear in the segments (a million take a few tens of ms), exact for
-// thin lines where a ray picker needs a world tolerance, and the same with or without GL picking.
 int View3D::pickSegment(const QPointF& widgetPosition, double tolerancePx) const
 {
     if (d->gl == nullptr || !d->scene)
         return -1;
     const QPointF local = widgetPosition - QPointF(d->gl->mapTo(this, QPoint(0, 0)));
-    const Projector projector = projectorOf(d->renderer, d->gl->width(), d->gl->height());
-    const auto& points = d->scene->polylines().points();
-    const auto& segments = d->scene->polylines().segments();
-    int best = -1;
-    double bestDistance = tolerancePx;
-    for (const ToolpathScene::Part& part : d->scene->parts()) {
-        if (!isToolVisible(part.tool))
-            continue;
-        for (const auto* list : {&part.cutSegments, &part.rapidSegments}) {
-            for (std::uint32_t s : *list) {
-                double ax = 0, ay = 0, bx = 0, by = 0;
-                if (!projector.project(points[segments[s].from], ax, ay) ||
-                    !projector.project(points[segments[s].to], bx, by))
-                    continue;
-                const double distance = distanceToSegment(local.x(), local.y(), ax, ay, bx, by);
-                // Ties (shared end points) go to the later segment, the one drawn on top.
-                if (distance < bestDistance || (distance == bestDistance && best >= 0 && int(s) > best)) {
-                    bestDistance = distance;
-                    best = static_cast<int>(s);
-                }
-            }
-        }
-    }
-    return best;
+    return d->scene->nearestSegment(projectionOf(d->renderer, d->gl->width(), d->gl->height()), local.x(), local.y(),
+                                    tolerancePx, d->hiddenTools);
 }
 
 bool View3D::eventFilter(QObject* watched, QEvent* event)

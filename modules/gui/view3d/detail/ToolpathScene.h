@@ -13,6 +13,7 @@
 
 #include <cstdint>
 #include <memory>
+#include <set>
 #include <vector>
 
 namespace camwb::toolpath {
@@ -20,6 +21,15 @@ class Toolpath;
 }
 
 namespace camwb::gui {
+
+// World -> widget pixels (y down) with a camera's composite projection matrix (row major).
+struct ScreenProjection {
+    double m[16]{};
+    double width = 0;
+    double height = 0;
+
+    bool project(const base::Vec3& p, double& x, double& y) const;  // false behind the camera
+};
 
 class ToolpathScene {
 public:
@@ -41,6 +51,11 @@ public:
     std::vector<int> tools() const;
     // Lines for the given segment indices (highlighting), sharing this scene's points.
     vtkSmartPointer<vtkPolyData> subset(const std::vector<std::uint32_t>& segments) const;
+    // The segment nearest to (x, y) within `tolerancePx` on screen, skipping hidden tools; -1 if
+    // none. A plain search over the exact segments: linear (a million take a few tens of ms),
+    // exact for thin lines where a ray picker needs a world tolerance.
+    int nearestSegment(const ScreenProjection& projection, double x, double y, double tolerancePx,
+                       const std::set<int>& hiddenTools) const;
     // How far the drawn lines may stray from the exact segments (only huge programs stray).
     double displayToleranceMm() const { return m_displayToleranceMm; }
 

@@ -258,40 +258,11 @@ bool Machine::step()
         if (b.expr >= 0 && !condition(false))
             return true;
         const std::string& label = p.texts[static_cast<std::size_t>(b.text)];
-        std::vector<std::int32_t> targets;
-        if (auto it = p.labels.find(label); it != p.labels.end())
-            targets = it->second;
-        if (label.size() > 1 && label[0] == 'N') {
-            std::int64_t n = 0;
-            const auto r = std::from_chars(label.data() + 1, label.data() + label.size(), n);
-            if (r.ec == std::errc() && r.ptr == label.data() + label.size())
-                for (auto it = std::lower_bound(p.blockNumbers.begin(), p.blockNumbers.end(),
-                                                std::pair<std::int64_t, std::int32_t>{n, 0},
-                                                [](const auto&a, const auto&b) { return a.first < b.first; });
-                     it != p.blockNumbers.end() && it->first == n; ++it)
-                    targets.push_back(it->second);
-        }
-        std::sort(targets.begin(), targets.end());
-        int target = -1;
-        const bool forward = b.gotoDir != GotoDir::Backward;
-        const bool backward = b.gotoDir != GotoDir::Forward;
-        if (forward)
-            for (std::int32_t t : targets)
-                if (t > pc) {
-                    target = t;
-                    break;
-                }
-        if (target < 0 && backward)
-            for (auto it = targets.rbegin(); it != targets.rend(); ++it)
-                if (*it <= pc) {
-                    target = *it;
-                    break;
-                }
-        if (target < 0 && b.gotoDir == GotoDir::Both && !targets.empty())
-            target = targets.front();
+        bool anyTarget = false;
+        const int target = jumpTarget(p, label, pc, b.gotoDir, anyTarget);
         if (target < 0) {
             // Undefined labels were reported with the program; the block after the jump goes on.
-            if (b.gotoDir != GotoDir::BothNoAlarm && !targets.empty())
+            if (b.gotoDir != GotoDir::BothNoAlarm && anyTarget)
                 error(p, {b.line, 0}, "jump target " + label + " not found in the direction of the GOTO");
             return true;
         }
@@ -328,6 +299,64 @@ bool Machine::step()
     }
     }
     return true;
+}
+
+// The block a GOTO jumps to: labels and block numbers are kept in block order, so the nearest
+// one in the direction is found by binary search (a label repeated a million times stays cheap).
+int Machine::jumpTarget(const Program& p, const std::string& label, int pc, GotoDir dir, bool& anyTarget) const
+{
+    std::vector<std::int32_t> none;
+    const std::vector<std::int32_t>* labels = &none;
+    if (auto it = p.labels.find(label); it != p.labels.end())
+        labels = &it->second;
+    using NumberIt = std::vector<std::pair<std::int64_t, std::int32_t>>::const_iterator;
+    NumberIt numbersBegin = p.blockNumbers.end(), numbersEnd = p.blockNumbers.end();
+    if (label.size() > 1 && label[0] == 'N') {
+        std::int64_t n = 0;
+        const auto r = std::from_chars(label.data() + 1, label.data() + label.size(), n);
+        if (r.ec == std::errc() && r.ptr == label.data() + label.size()) {
+            const auto range = std::equal_range(p.blockNumbers.begin(), p.blockNumbers.end(),
+                                                std::pair<std::int64_t, std::int32_t>{n, 0},
+                                                [](const auto& a, const auto& b) { return a.first < b.first; });
+            numbersBegin = range.first;
+            numbersEnd = range.second;
+        }
+    }
+    anyTarget = !labels->empty() || numbersBegin != numbersEnd;
+    auto indexOf = [](const std::pair<std::int64_t, std::int32_t>& e) { return e.second; };
+    int forward = -1, backward = -1, first = -1;
+    auto consider = [&](int candidate) {
+        if (candidate > pc && (forward < 0 || candidate < forward))
+            forward = candidate;
+        if (candidate <= pc && candidate > backward)
+            backward = candidate;
+        if (first < 0 || candidate < first)
+            first = candidate;
+    };
+    if (!labels->empty()) {
+        const auto up = std::upper_bound(labels->begin(), labels->end(), pc);
+        if (up != labels->end())
+            consider(*up);
+        if (up != labels->begin())
+            consider(*(up - 1));
+        consider(labels->front());
+    }
+    if (numbersBegin != numbersEnd) {
+        const auto up = std::upper_bound(numbersBegin, numbersEnd, pc,
+                                         [&](int value, const auto& e) { return value < indexOf(e); });
+        if (up != numbersEnd)
+            consider(indexOf(*up));
+        if (up != numbersBegin)
+            consider(indexOf(*(up - 1)));
+        consider(indexOf(*numbersBegin));
+    }
+    if (dir != GotoDir::Backward && forward >= 0)
+        return forward;
+    if (dir != GotoDir::Forward && backward >= 0)
+        return backward;
+    if (dir == GotoDir::Both)
+        return first;
+    return -1;
 }
 
 std::vector<std::optional<double>> Machine::evalArgs(const Program& p, const Block& b)

@@ -77,6 +77,7 @@ private:
     bool returnFromCall();
     void checkProcName(const Program& p, std::string_view expected);
     void reportRunaway();
+    int jumpTarget(const Program& p, const std::string& label, int pc, GotoDir dir, bool& anyTarget) const;
     void addParseDiagnostics(const Program& p);
 
     // Execute.cpp

@@ -49,6 +49,21 @@ TEST(SinumerikControlFlow, GotoLabelsAndBlockNumbers)
     EXPECT_EQ(xs(r), (std::vector<double>{0, 1, 2, 50}));
 }
 
+TEST(SinumerikControlFlow, RepeatedLabelsJumpToTheNearestInTheDirection)
+{
+    const NcRun r = run("L: G0 X1\nL: G0 X2\nR1=R1+1\nIF R1<3 GOTOB L\nGOTOF L\nG0 X9\nL: G0 X3\n");
+    EXPECT_EQ(r.errors(), 0) << r.diagnostics();
+    EXPECT_EQ(xs(r), (std::vector<double>{1, 2, 2, 2, 3}));
+    std::string many;
+    for (int i = 0; i < 100000; ++i)
+        many += "L:\n";
+    InterpretOptions options;
+    options.maxBlocks = 300000;
+    const NcRun big = run(many + "R1=R1+1\nIF R1<50000 GOTOB L\nG0 X5\n", {}, options);
+    EXPECT_EQ(big.errors(), 0) << big.diagnostics();
+    EXPECT_EQ(xs(big), (std::vector<double>{5}));
+}
+
 TEST(SinumerikControlFlow, UnmatchedStructuresAndLabelsAreErrors)
 {
     const NcRun r = run("IF R1==0\nG0 X1\nWHILE R1<1\nR1=1\nENDIF\nENDWHILE\nENDFOR\nGOTOF NOWHERE\nGOTOC NOWHERE2\n");

@@ -335,6 +335,24 @@ private slots:
         QVERIFY(!rig.editor.diagnosticSeverityAt(line).has_value());
     }
 
+    void chosenDialectOverridesTheGuess()
+    {
+        Rig rig;
+        LOAD_OR_SKIP(rig, QString::fromLatin1(kProgram));
+        QVERIFY(rig.inspector.trace()->dialectGuessed);
+        QCOMPARE(rig.inspector.trace()->dialect, camwb::nc::Dialect::Iso);
+        QSignalSpy finished(&rig.inspector, &NcInspector::traceFinished);
+        rig.inspector.setDialect(camwb::nc::Dialect::Heidenhain);  // re-traces at once
+        QVERIFY(finished.wait(60000));
+        QVERIFY(!rig.inspector.trace()->dialectGuessed);
+        QCOMPARE(rig.inspector.trace()->dialect, camwb::nc::Dialect::Heidenhain);
+        QCOMPARE(rig.editor.dialect(), camwb::nc::Dialect::Heidenhain);  // highlighting follows
+        QVERIFY(rig.inspector.trace()->result.hasErrors());              // ISO is no Klartext
+        rig.inspector.setDialect(std::nullopt);
+        QVERIFY(finished.wait(60000));
+        QCOMPARE(rig.inspector.trace()->dialect, camwb::nc::Dialect::Iso);
+    }
+
     void toolsCanBeHidden()
     {
         Rig rig;

@@ -60,6 +60,7 @@ struct CompareDialog::Private {
     nc::LineDiff diff;
     int current = -1;
     bool syncing = false;
+    bool dirty = true;  // texts or options changed since the last diff
 };
 
 CompareDialog::CompareDialog(nc::Dialect dialect, QWidget* parent) : QDialog(parent), d(std::make_unique<Private>())
@@ -147,8 +148,8 @@ CompareDialog::CompareDialog(nc::Dialect dialect, QWidget* parent) : QDialog(par
     d->ignoreNumbers->setObjectName(QStringLiteral("compareIgnoreNumbers"));
     d->ignoreBlanks = new QCheckBox(tr("Ignore &blanks"), this);
     d->ignoreBlanks->setObjectName(QStringLiteral("compareIgnoreBlanks"));
-    connect(d->ignoreNumbers, &QCheckBox::toggled, this, [this] { recompute(); });
-    connect(d->ignoreBlanks, &QCheckBox::toggled, this, [this] { recompute(); });
+    connect(d->ignoreNumbers, &QCheckBox::toggled, this, [this] { invalidate(); });
+    connect(d->ignoreBlanks, &QCheckBox::toggled, this, [this] { invalidate(); });
     d->summary = new QLabel(this);
     d->summary->setObjectName(QStringLiteral("compareSummary"));
     d->previous = new QPushButton(tr("&Previous Difference"), this);
@@ -168,7 +169,6 @@ CompareDialog::CompareDialog(nc::Dialect dialect, QWidget* parent) : QDialog(par
     bottom->addWidget(d->next);
     bottom->addWidget(close);
     layout->addLayout(bottom);
-    recompute();
 }
 
 CompareDialog::~CompareDialog() = default;
@@ -177,14 +177,14 @@ void CompareDialog::setLeft(const QString& text, const QString& title)
 {
     d->texts[0] = text;
     d->titles[0]->setText(title);
-    recompute();
+    invalidate();
 }
 
 void CompareDialog::setRight(const QString& text, const QString& title)
 {
     d->texts[1] = text;
     d->titles[1]->setText(title);
-    recompute();
+    invalidate();
 }
 
 bool CompareDialog::loadLeft(const QString& path)
@@ -215,25 +215,64 @@ void CompareDialog::setIgnoreBlockNumbers(bool ignore) { d->ignoreNumbers->setCh
 
 void CompareDialog::setIgnoreWhitespace(bool ignore) { d->ignoreBlanks->setChecked(ignore); }
 
-const nc::LineDiff& CompareDialog::diff() const { return d->diff; }
+void CompareDialog::invalidate()
+{
+    // Setting both sides (or a side and an option) diffs once, when the result is needed.
+    d->dirty = true;
+    if (isVisible())
+        QMetaObject::invokeMethod(
+            this, [this] { ensureComputed(); }, Qt::QueuedConnection);
+}
 
-int CompareDialog::differenceCount() const { return static_cast<int>(d->diff.hunks.size()); }
+void CompareDialog::ensureComputed() const
+{
+    if (d->dirty)
+        const_cast<CompareDialog*>(this)->recompute();
+}
 
-int CompareDialog::currentDifference() const { return d->current; }
+void CompareDialog::showEvent(QShowEvent* event)
+{
+    ensureComputed();
+    QDialog::showEvent(event);
+}
+
+const nc::LineDiff& CompareDialog::diff() const
+{
+    ensureComputed();
+    return d->diff;
+}
+
+int CompareDialog::differenceCount() const
+{
+    ensureComputed();
+    return static_cast<int>(d->diff.hunks.size());
+}
+
+int CompareDialog::currentDifference() const
+{
+    ensureComputed();
+    return d->current;
+}
 
 void CompareDialog::nextDifference()
 {
+    ensureComputed();
     if (differenceCount() > 0)
         showDifference(std::min(d->current + 1, differenceCount() - 1));
 }
 
 void CompareDialog::previousDifference()
 {
+    ensureComputed();
     if (differenceCount() > 0)
         showDifference(std::max(d->current - 1, 0));
 }
 
-int CompareDialog::firstVisibleRow(bool left) const { return d->views[left ? 0 : 1]->firstVisibleLine(); }
+int CompareDialog::firstVisibleRow(bool left) const
+{
+    ensureComputed();
+    return d->views[left ? 0 : 1]->firstVisibleLine();
+}
 
 void CompareDialog::chooseFile(bool left)
 {
@@ -250,6 +289,7 @@ void CompareDialog::chooseFile(bool left)
 
 void CompareDialog::recompute()
 {
+    d->dirty = false;
     nc::DiffOptions options;
     options.dialect = d->dialect;
     options.ignoreBlockNumbers = d->ignoreNumbers->isChecked();

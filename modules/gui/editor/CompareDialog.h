@@ -34,8 +34,13 @@ public:
     void previousDifference();
     int firstVisibleRow(bool left) const;  // 0-based display row, for the synced scrolling
 
+protected:
+    void showEvent(QShowEvent* event) override;
+
 private:
     struct Private;
+    void invalidate();
+    void ensureComputed() const;
     void recompute();
     void showDifference(int index);
     void chooseFile(bool left);

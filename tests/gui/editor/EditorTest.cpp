@@ -587,6 +587,26 @@ private slots:
               static_cast<long long>(scrollMiddleMs), static_cast<long long>(pageStepsMs),
               static_cast<long long>(renumberMs), static_cast<long long>(replaceMs), static_cast<long long>(undoMs));
     }
+
+    void compareHundredThousandLines()
+    {
+        // Two 100k-line programs, every 100th line changed: diff and display. Figures printed only.
+        QString left;
+        QString right;
+        for (int i = 1; i <= 100'000; ++i) {
+            const QString line = QStringLiteral("N%1 G1 X%2 Y%3\n").arg(i * 10).arg(i % 500).arg(i % 37);
+            left += line;
+            right += i % 100 == 0 ? QStringLiteral("N%1 G1 X%2 Y-1\n").arg(i * 10).arg(i % 500) : line;
+        }
+        CompareDialog dialog(nc::Dialect::Sinumerik);
+        QElapsedTimer timer;
+        timer.start();
+        dialog.setLeft(left, QStringLiteral("a"));
+        dialog.setRight(right, QStringLiteral("b"));
+        QCOMPARE(dialog.differenceCount(), 1000);  // diffs and fills both views once, here
+        const qint64 ms = timer.elapsed();
+        qInfo("compare 2 x 100k lines, 1000 differences: %lld ms (diff and both views)", static_cast<long long>(ms));
+    }
 };
 
 int main(int argc, char** argv)

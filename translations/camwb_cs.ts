@@ -2,6 +2,270 @@
 <!DOCTYPE TS>
 <TS version="2.1" language="cs_CZ">
 <context>
+    <name>NcEditorActions</name>
+    <message>
+        <source>Removed %1 block number(s)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Numbered %1 block(s)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>, %1 jump target(s) follow their blocks</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>; line %1: %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>; %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source> (and %1 more note(s))</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;NC</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Find…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Find text in the NC program</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Go to Block…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Jump to the block with a given number</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Go to Block</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Block number:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>No block number %1 in the program</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Renumber Blocks…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Renumber the blocks of the NC program (one undo step)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The NC program is read-only</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Re&amp;move Block Numbers</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Remove the N numbers (blocks a GOTO jumps to keep theirs)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Compare with File…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Compare the NC program with another file side by side</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Current program</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 (in the editor)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Program &amp;Information…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Extents, path lengths and machining time of the NC program</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>NcLexer</name>
+    <message>
+        <source>Default</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Comment</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Block number</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>G word</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>M word</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Axis word</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Feed, speed, tool</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Keyword or cycle</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Number</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>String</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Parameter</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>camwb::gui::CompareDialog</name>
+    <message>
+        <source>Compare NC Programs</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Open &amp;Left…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Open &amp;Right…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Ignore block &amp;numbers</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Ignore &amp;blanks</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Previous Difference</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Ne&amp;xt Difference</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Cannot read %1: %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Open Left NC Program</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Open Right NC Program</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>NC programs (*.mpf *.spf *.MPF *.SPF *.h *.H *.nc *.ngc *.tap *.iso *.cnc *.txt);;All files (*)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Open two programs to compare</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The programs are identical</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message numerus="yes">
+        <source>%n difference(s)</source>
+        <translation type="unfinished">
+            <numerusform></numerusform>
+            <numerusform></numerusform>
+            <numerusform></numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Difference %1 of %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>camwb::gui::InspectorPanel</name>
+    <message>
+        <source>Automatic</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>SINUMERIK</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Heidenhain Klartext</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>ISO (LinuxCNC, Fanuc)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>NC program (traced)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Operations&apos; toolpath</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Dialect</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>3D shows</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Tools</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>T%1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>before the first tool</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
     <name>camwb::gui::JobTree</name>
     <message>
         <source>Item</source>
@@ -251,6 +515,286 @@ CAM and post-processor workbench.</source>
         <source>Discard the unsaved changes of this job?</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <source>NC inspector</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Opened NC program %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;NC</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Open NC Program…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Open NC program</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>NC programs (*.mpf *.spf *.nc *.ngc *.tap *.h *.iso *.cnc *.txt);;All files (*)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Trace NC Program</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>posted</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Tracing the NC program…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Segment from the called program %1; the editor shows its call.</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>camwb::gui::ModalStatePanel</name>
+    <message>
+        <source>unknown (no move yet)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 mm/min (G94)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 mm/rev (G95)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 1/min (G93)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>stopped (M5)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>CW (M3)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>CCW (M4)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 m/min constant surface speed, %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 rpm %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>off (M9)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>flood (M8)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>mist (M7)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>through tool</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>off (G40)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>left (G41)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>right (G42)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Block</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Move</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Tool</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Feed</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Spindle</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Coolant</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Work offset</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Compensation</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Plane</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Units</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Abs/inc</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Before</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>After</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>No NC program traced yet.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>line %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>, runs %1 times (first run shown)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>no motion</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>none called yet</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 (G%2)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>none in the trace (control default)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1, from the last arc</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>no arc yet (not in the trace)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>mm (inch programs converted)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>not in the trace; positions absolute</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message numerus="yes">
+        <source>%n diagnostic(s) in this program.</source>
+        <translation type="unfinished">
+            <numerusform></numerusform>
+            <numerusform></numerusform>
+            <numerusform></numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>camwb::gui::NcEditor</name>
+    <message>
+        <source>column %1: </source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>camwb::gui::NcFindBar</name>
+    <message>
+        <source>Find:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Previous</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Find the previous match (Shift+Enter)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Next</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Find the next match (Enter)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Match case</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Whole words</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Close the find bar (Escape)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Not found</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>camwb::gui::NcInspector</name>
+    <message>
+        <source>Tracing the NC program…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>NC program</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1: %2 more diagnostics not listed</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Traced %1 as %2%3: %4 blocks, %5 lines, %6 arcs, %7 rapids, %8 cycles in %9 s</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source> (guessed)</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>camwb::gui::ProfileDialog</name>
@@ -304,6 +848,180 @@ CAM and post-processor workbench.</source>
     </message>
 </context>
 <context>
+    <name>camwb::gui::ProgramInfoDialog</name>
+    <message>
+        <source>%1 s</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Program Information</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source> mm/min</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Rapid rate the time estimate assumes (the machine&apos;s, when it says)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Rapid rate:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Interpreting the program…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 blocks interpreted; %2 error(s), %3 other diagnostic(s): the figures cover what could be interpreted.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 blocks interpreted, %2 diagnostic(s).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Extents (mm)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Cutting</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Rapid</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>All</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Motion</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Feed length</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 mm</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Rapid length</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Feed time</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Rapid time (at %1 mm/min)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Dwell time</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&lt;b&gt;Estimated machining time&lt;/b&gt;</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Rapids / feed moves / arcs</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Cycle holes</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Tool changes</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Feed moves without a usable feed (not timed)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Per tool</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Tool</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Feed length (mm)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Rapid length (mm)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Time</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Z min (cutting)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>(none)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Diagnostics</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>… and %1 more</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>camwb::gui::RenumberDialog</name>
+    <message>
+        <source>Renumber Blocks</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Start at:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>S&amp;tep:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Number &amp;comment-only lines</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Number &amp;empty lines</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Keep existing numbers, number only blocks without one</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Renumber &amp;only blocks that have a number</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Heidenhain Klartext blocks are always numbered 0, 1, 2, … on every line (continuation lines excepted).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Jump targets (GOTOF N100, GOTO 100) follow their blocks. Labels, comments and strings are left as they are.</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
     <name>camwb::gui::ReportView</name>
     <message>
         <source>warning: </source>
@@ -311,53 +1029,6 @@ CAM and post-processor workbench.</source>
     </message>
     <message>
         <source>error: </source>
-        <translation type="unfinished"></translation>
-    </message>
-</context>
-<context>
-    <name>camwb::gui::SinumerikLexer</name>
-    <message>
-        <source>Default</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Comment</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Block number</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>G word</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>M word</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Axis word</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Feed, speed, tool</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Keyword or cycle</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Number</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>String</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Parameter</source>
         <translation type="unfinished"></translation>
     </message>
 </context>

@@ -39,10 +39,6 @@ target_link_libraries(camwb_gui_widgets
   PRIVATE Qt6::OpenGL Qt6::OpenGLWidgets camwb_qscintilla ${_camwb_gui_vtk_modules})
 # The NC editor speaks the NC module's dialects and diagnostics and runs its text tools.
 target_link_libraries(camwb_gui_widgets PUBLIC camwb_nc)
-# The editor's actions need ActionRegistry, which lives in camwb_gui (defined after this file):
-# they join camwb_gui once the directory is processed.
-cmake_language(DEFER CALL target_sources camwb_gui PRIVATE
-  ${_camwb_gui_widgets_dir}/editor/NcEditorActions.h ${_camwb_gui_widgets_dir}/editor/NcEditorActions.cpp)
 # Registers VTK's object factories (OpenGL2 render classes, FreeType text) in this library.
 vtk_module_autoinit(TARGETS camwb_gui_widgets MODULES ${_camwb_gui_vtk_modules})
 target_compile_options(camwb_gui_widgets PRIVATE -Wall -Wextra -Wno-unused-parameter)

@@ -55,7 +55,7 @@ struct Spindle {
     double rpm = 0;
     bool clockwise = true;
     double surfaceSpeedMPerMin = 0;  // constant surface speed (lathe G96); rpm is then the limit, 0 = none
-};  // rpm 0 = stop
+};                                   // rpm 0 = stop
 struct Coolant {
     CoolantMode mode = CoolantMode::Off;
 };

@@ -211,7 +211,8 @@ base::Result<ClImport> readTrace(std::string_view text, const std::string& fileN
                 in.fail("expected cw or ccw", 0);
             s.clockwise = direction == "cw";
             if (!in.atEnd()) {
-                if (in.word() != "css" && !in.failed()) in.fail("expected css", 0);
+                if (in.word() != "css" && !in.failed())
+                    in.fail("expected css", 0);
                 s.surfaceSpeedMPerMin = in.number();
             }
             record = s;

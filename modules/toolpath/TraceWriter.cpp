@@ -46,7 +46,8 @@ void TraceWriter::toolChange(const ToolChange& r)
 void TraceWriter::spindle(const Spindle& r)
 {
     m_out += "spindle " + num(r.rpm) + (r.clockwise ? " cw" : " ccw");
-    if (r.surfaceSpeedMPerMin > 0) m_out += " css " + num(r.surfaceSpeedMPerMin);
+    if (r.surfaceSpeedMPerMin > 0)
+        m_out += " css " + num(r.surfaceSpeedMPerMin);
     m_out += '\n';
 }
 

@@ -3,8 +3,8 @@
 // programs resolve to the input itself, so recursion limits are fuzzed too.
 #include "nc/Interpreter.h"
 #include "toolpath/ClImport.h"
-#include "toolpath/TraceReader.h"
 #include "toolpath/ToolpathRecorder.h"
+#include "toolpath/TraceReader.h"
 
 #include <cstddef>
 #include <cstdint>
@@ -36,12 +36,24 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
 {
     const std::string_view text(reinterpret_cast<const char*>(data), size);
     switch (kParser) {
-    case Parser::Sinumerik: interpretNc(text, camwb::nc::Dialect::Sinumerik); break;
-    case Parser::Heidenhain: interpretNc(text, camwb::nc::Dialect::Heidenhain); break;
-    case Parser::Iso: interpretNc(text, camwb::nc::Dialect::Iso); break;
-    case Parser::Apt: (void)camwb::toolpath::readAptSource(text, "fuzz.apt"); break;
-    case Parser::FreeCadDump: (void)camwb::toolpath::readFreeCadDump(text, "fuzz.dump"); break;
-    case Parser::Trace: (void)camwb::toolpath::readTrace(text, "fuzz.trace"); break;
+    case Parser::Sinumerik:
+        interpretNc(text, camwb::nc::Dialect::Sinumerik);
+        break;
+    case Parser::Heidenhain:
+        interpretNc(text, camwb::nc::Dialect::Heidenhain);
+        break;
+    case Parser::Iso:
+        interpretNc(text, camwb::nc::Dialect::Iso);
+        break;
+    case Parser::Apt:
+        (void)camwb::toolpath::readAptSource(text, "fuzz.apt");
+        break;
+    case Parser::FreeCadDump:
+        (void)camwb::toolpath::readFreeCadDump(text, "fuzz.dump");
+        break;
+    case Parser::Trace:
+        (void)camwb::toolpath::readTrace(text, "fuzz.trace");
+        break;
     }
     return 0;
 }

@@ -4,6 +4,7 @@
 
 #include <Qsci/qsciscintilla.h>
 
+#include <QCoreApplication>
 #include <QFontDatabase>
 
 namespace camwb::gui {
@@ -58,27 +59,27 @@ QString NcLexer::description(int style) const
     // QScintilla enumerates styles until the description is empty.
     switch (static_cast<NcStyle>(style)) {
     case NcStyle::Default:
-        return tr("Default");
+        return QCoreApplication::translate("NcLexer", "Default");
     case NcStyle::Comment:
-        return tr("Comment");
+        return QCoreApplication::translate("NcLexer", "Comment");
     case NcStyle::BlockNumber:
-        return tr("Block number");
+        return QCoreApplication::translate("NcLexer", "Block number");
     case NcStyle::GWord:
-        return tr("G word");
+        return QCoreApplication::translate("NcLexer", "G word");
     case NcStyle::MWord:
-        return tr("M word");
+        return QCoreApplication::translate("NcLexer", "M word");
     case NcStyle::AxisWord:
-        return tr("Axis word");
+        return QCoreApplication::translate("NcLexer", "Axis word");
     case NcStyle::FeedSpeedTool:
-        return tr("Feed, speed, tool");
+        return QCoreApplication::translate("NcLexer", "Feed, speed, tool");
     case NcStyle::Keyword:
-        return tr("Keyword or cycle");
+        return QCoreApplication::translate("NcLexer", "Keyword or cycle");
     case NcStyle::Number:
-        return tr("Number");
+        return QCoreApplication::translate("NcLexer", "Number");
     case NcStyle::String:
-        return tr("String");
+        return QCoreApplication::translate("NcLexer", "String");
     case NcStyle::Parameter:
-        return tr("Parameter");
+        return QCoreApplication::translate("NcLexer", "Parameter");
     case NcStyle::Count:
         break;
     }

@@ -93,7 +93,8 @@ void NcInspector::loadProgram(const QString& text, const QString& path)
         m_dialect ? *m_dialect : nc::guessDialect(text.left(kGuessChars).toStdString(), path.toStdString());
     if (m_editor->dialect() != dialect)
         m_editor->setDialect(dialect);
-    m_editor->setText(text);  // a new document: no diagnostics in the margin
+    m_editor->setText(text);         // a new document: no diagnostics in the margin
+    m_editor->setProgramPath(path);  // program info finds subprograms beside it, dialogs name it
     m_editorHasDiagnostics = false;
     traceNow();
 }

@@ -5,8 +5,7 @@
 
 namespace camwb::nc::detail {
 
-InterpretResult interpretSinumerik(std::string_view text, const InterpretOptions& options,
-                                   toolpath::MachineSink& sink);
+InterpretResult interpretSinumerik(std::string_view text, const InterpretOptions& options, toolpath::MachineSink& sink);
 InterpretResult interpretHeidenhain(std::string_view text, const InterpretOptions& options,
                                     toolpath::MachineSink& sink);
 InterpretResult interpretIso(std::string_view text, const InterpretOptions& options, toolpath::MachineSink& sink);

@@ -1,6 +1,17 @@
 // Entry point of the Heidenhain Klartext interpreter (iTNC 530 / TNC 640): parse once, then run
 // the blocks with a program counter, driving the sink. Never throws: an allocation failure on
 // absurd input is reported as an error.
+//
+// Choices where the manuals leave room or the trace cannot follow the control:
+// - RL/RR are recorded (CutterComp) but not applied: the trace follows the programmed contour.
+// - Cycles 200/201/202/203/205/206/207/209/240 and 1/2/17 are Cycle records (clearance =
+//   Q203+Q204, retract = Q203+Q200, top = Q203, bottom = Q203+Q201); 204 and 208 become moves.
+// - M89 stays on through a new CYCL DEF and ends with M99 or CYCL CALL (TNC 306 manual).
+// - A positive depth Q201 warns and is traced below the surface; a decimal comma warns.
+// - Inch programs read F in 1/10 inch/min, as the TNC does.
+// - "..." elisions warn and make the position unknown (no radius check on the next circle).
+// - M91/M92 positions are taken as workpiece coordinates; M140 MB MAX moves nothing.
+// - PLANE, CYCL DEF 19, M128, FUNCTION TCPM and A/B/C warn until the five-axis model exists.
 #include "nc/detail/Dialects.h"
 #include "nc/heidenhain/Machine.h"
 

@@ -1,5 +1,15 @@
 // Entry of the plain ISO (LinuxCNC / Fanuc style RS274NGC) interpreter and its line loop.
-// Block delete ('/') is read as with the switch off: the block runs, as rs274 does by default.
+//
+// Choices, following LinuxCNC 2.9 where it has one:
+// - Block delete ('/') is read as with the switch off: the block runs, as rs274 does by default.
+// - Canned cycles are Cycle records with top = retract = R: LinuxCNC counts G83/G73 pecks from R.
+//   clearance is the Z before the first hole, returnToClearance means G98.
+// - M6 stops a running spindle; M2/M30 stop spindle and coolant, cancel compensation and reset
+//   G54 and G94, as LinuxCNC's program end does.
+// - Other controls' programs read with warnings, not errors: G70/G71 as inch/mm, G0/G1 kept
+//   through G80 (Fanuc), O program numbers, "..." elisions, unknown G/M codes, A/B/C/U/V/W and
+//   M128 (five-axis: traced once the machine model exists).
+// - G53, G28/G30, G10/G92 and G96 are accepted with a warning and do not move the trace.
 #include "nc/detail/Dialects.h"
 #include "nc/iso/IsoProgram.h"
 

@@ -24,6 +24,9 @@ constexpr int kFoldMargin = 2;
 // Markers and squiggle indicators per severity, indexed by nc::Severity (Note, Warning, Error).
 constexpr int kFirstMarker = 8;
 constexpr int kFirstIndicator = 8;
+// Annotation styles per severity: fixed numbers far above the lexer's styles (QsciStyle's own
+// allocation counts down from 63 and is shared by every editor in the process).
+constexpr int kFirstAnnotationStyle = 200;
 
 // QScintilla's accessibility interface turns the caret position into a character offset by
 // counting from the document start on every repaint: half a second per scroll step at the end of
@@ -130,8 +133,8 @@ NcEditor::NcEditor(QWidget* parent) : QWidget(parent), d(std::make_unique<Privat
         d->sci->setIndicatorForegroundColor(severityColor(s), indicator);
         QFont font = d->lexer->defaultFont(0);
         font.setItalic(true);
-        d->annotationStyles.emplace_back(-1, QStringLiteral("diagnostic"), severityColor(s).darker(130),
-                                         annotationPaper(s), font);
+        d->annotationStyles.emplace_back(kFirstAnnotationStyle + severityIndex(s), QStringLiteral("diagnostic"),
+                                         severityColor(s).darker(130), annotationPaper(s), font);
     }
     d->sci->setMarginMarkerMask(kMarkerMargin, markerMask);
     d->sci->setMarginMarkerMask(0, 0);

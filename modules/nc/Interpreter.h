@@ -16,6 +16,7 @@
 #include "nc/Diagnostic.h"
 #include "nc/Dialect.h"
 
+#include <atomic>
 #include <cstdint>
 #include <functional>
 #include <optional>
@@ -52,7 +53,20 @@ struct InterpretOptions {
     std::int64_t maxBlocks = 10'000'000;           // executed blocks before a runaway-program error
     double arcRadiusToleranceMm = 0.01;            // start/end radius mismatch that is an error
     std::size_t maxDiagnostics = 1000;             // further ones are counted, not kept
+    // Set from another thread to stop the run (a newer trace supersedes this one): checked every
+    // kCancelCheckBlocks executed blocks; the result is then marked cancelled, without a diagnostic.
+    const std::atomic<bool>* cancel = nullptr;
 };
+
+inline constexpr std::int64_t kCancelCheckBlocks = 1024;
+
+// True when the run should stop: `blocksExecuted` is a multiple of kCancelCheckBlocks and the
+// caller's cancel flag is set. Every dialect's block loop asks this.
+inline bool cancelRequested(const InterpretOptions& options, std::int64_t blocksExecuted)
+{
+    return options.cancel && blocksExecuted % kCancelCheckBlocks == 0 &&
+           options.cancel->load(std::memory_order_relaxed);
+}
 
 struct InterpretResult {
     std::vector<Diagnostic> diagnostics;
@@ -60,6 +74,7 @@ struct InterpretResult {
     std::int64_t blocksExecuted = 0;
     std::size_t diagnosticsDropped = 0;
     bool completed = false;  // reached the program end (M30/M2/END PGM or the last line) without a fatal error
+    bool cancelled = false;  // stopped by InterpretOptions::cancel
 
     bool hasErrors() const { return nc::hasErrors(diagnostics); }
 };

@@ -83,6 +83,7 @@ NcTrace traceNc(const NcTraceRequest& request)
     nc::InterpretOptions options;
     options.dialect = trace.dialect;
     options.fileName = request.path;
+    options.cancel = request.cancel;
     if (!request.path.empty()) {
         const std::string folder = std::filesystem::path(request.path).parent_path().string();
         options.resolveProgram = trace.dialect == nc::Dialect::Heidenhain
@@ -93,7 +94,7 @@ NcTrace traceNc(const NcTraceRequest& request)
     const auto start = std::chrono::steady_clock::now();
     TraceRecorder recorder(trace, request.cancel);
     trace.result = nc::interpret(request.text, options, recorder);
-    trace.cancelled = recorder.cancelled();
+    trace.cancelled = recorder.cancelled() || trace.result.cancelled;
     trace.interpretSeconds = secondsSince(start);
     if (trace.cancelled)
         return trace;

@@ -68,8 +68,8 @@ struct NcTraceRequest {
 };
 
 // Interprets the text (subprograms looked up in the folder of `path` when it has one) and builds
-// the indexes. Once `cancel` is set the rest of the run records nothing and the trace is marked
-// cancelled (the interpreter has no stop hook; see the inspector's notes).
+// the indexes. Once `cancel` is set the interpreter stops within a thousand blocks (SINUMERIK and
+// Heidenhain finish parsing first), nothing more is recorded and the trace is marked cancelled.
 NcTrace traceNc(const NcTraceRequest& request);
 
 }  // namespace camwb::gui

@@ -93,6 +93,11 @@ void Machine::run(std::string_view text)
             endProgram(true);
             break;
         }
+        if (cancelRequested(m_options, m_result.blocksExecuted)) {
+            m_result.cancelled = true;
+            m_result.completed = false;
+            break;
+        }
         if (++m_result.blocksExecuted > m_options.maxBlocks) {
             const Block& b = blocks[m_pc];
             report(Severity::Error, b.line, 0,

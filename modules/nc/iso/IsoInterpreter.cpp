@@ -51,6 +51,11 @@ bool Program::readLine(std::string_view& line)
 
 bool Program::countBlock()
 {
+    if (cancelRequested(m_options, m_result.blocksExecuted)) {
+        m_result.cancelled = true;
+        m_fatal = true;
+        return false;
+    }
     if (++m_result.blocksExecuted <= m_options.maxBlocks)
         return true;
     m_reporter.error(m_lineNumber, 0,

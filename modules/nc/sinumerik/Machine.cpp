@@ -99,6 +99,11 @@ void Machine::runLoop()
                 m_result.completed = true;
             continue;
         }
+        if (cancelRequested(m_options, m_result.blocksExecuted)) {
+            m_result.cancelled = true;
+            m_stopped = true;
+            break;
+        }
         if (++m_result.blocksExecuted > m_options.maxBlocks) {
             reportRunaway();
             m_stopped = true;

@@ -2,6 +2,8 @@
 // the one entry point the CLI, the NC inspector and the round-trip tests use. Before each record
 // the interpreter calls sink.setSource() with the program line that made it (SourceRef::line,
 // SourceRef::file indexing InterpretResult::files), so the GUI can link segments and lines.
+// Before entering a called program it announces the calling block the same way (no record need
+// follow), so records of the callee can be linked to the exact call.
 //
 // What reaches the sink, whatever the dialect: positions in mm in the work offset's frame (inch
 // programs scaled, diameter programming halved), feeds in mm/min, mm/rev or 1/min with a

@@ -18,8 +18,8 @@ public:
 
     void setSource(const toolpath::SourceRef& source) override
     {
-        // Interpreters that announce every block (not only those with records) give the exact
-        // calling line here; the others give the last main-program block with a record.
+        // The interpreters announce the calling block before entering a called program
+        // (Interpreter.h), so the last main-program line seen is the call.
         if (source.file == 0)
             m_mainLine = source.line;
         m_source = source;

@@ -346,6 +346,7 @@ void Machine::callProgram(const Block& b)
         m_programs.push_back(std::move(called));
     }
     m_programByName.emplace(key, index);
+    source(b.line);  // the calling block, so the callee's records link back to it
     m_frames.push_back(Frame{m_prog, m_pc, m_pc + 1, 0, 0, true});
     ++m_programDepth;
     m_prog = index;

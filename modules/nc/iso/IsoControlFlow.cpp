@@ -168,6 +168,7 @@ Program::Flow Program::oWord()
             m_fatal = true;
             return Flow::Stop;
         }
+        m_machine.announce(m_lineNumber, m_current.file);
         m_calls.push_back(CallFrame{here, static_cast<int>(m_control.size())});
         m_parameters.pushFrame(args.data(), static_cast<int>(std::min<std::size_t>(args.size(), kCallArguments)));
         m_next = body;

@@ -56,6 +56,9 @@ public:
     // M2/M30 resets (also at the end of a file without them, as LinuxCNC's end of program does not).
     void programEnd();
     const ModalState& state() const { return m_state; }
+    // Tells the sink which block is running without a record: the call line before a subroutine's
+    // records, so a viewer links them to the exact call (Interpreter.h).
+    void announce(int line, int fileIndex) { m_sink.setSource(toolpath::SourceRef{-1, -1, line, fileIndex}); }
 
 private:
     struct Groups {  // codes of one block by modal group, x10; -1 = none

@@ -415,6 +415,7 @@ bool Machine::callProgram(const std::string& name, const Block& block, const Pro
     const int index = loadProgram(name, pos, caller);
     if (index < 0)
         return true;
+    setSource(block.line);  // the calling block, so the callee's records link back to it
     const Program& callee = *m_programs[static_cast<std::size_t>(index)];
     if (args.size() > callee.procParams.size()) {
         error(caller, pos,

@@ -4,6 +4,7 @@
 #include "toolpath/RecordNames.h"
 
 #include <array>
+#include <limits>
 #include <optional>
 
 namespace camwb::toolpath {
@@ -88,9 +89,11 @@ public:
     {
         const Token* t = m_index < m_tokens.size() ? &m_tokens[m_index] : nullptr;
         const double value = number();
-        if (t && !failed() && value != static_cast<int>(value))
+        // Range first: converting a double outside int's range is undefined (found by fuzz.trace).
+        const bool representable = value >= std::numeric_limits<int>::min() && value <= std::numeric_limits<int>::max();
+        if (t && !failed() && (!representable || value != static_cast<int>(value)))
             fail("expected an integer, found '" + std::string(t->text) + "'", t->column);
-        return static_cast<int>(value);
+        return representable ? static_cast<int>(value) : 0;
     }
     Vec3 point() { return {number(), number(), number()}; }
     std::string text()

@@ -86,6 +86,9 @@ TEST(TraceReader, ErrorsNameLineAndColumn)
     EXPECT_EQ(failure("coolant lots\n").toString(), "in.trace:1:9: unknown name 'lots'");
     EXPECT_EQ(failure("comment \"open\n").toString(), "in.trace:1:9: unterminated quoted text");
     EXPECT_EQ(failure("workoffset 1.5\n").toString(), "in.trace:1:12: expected an integer, found '1.5'");
+    // Beyond int: an error, not an undefined conversion (found by fuzz.trace).
+    EXPECT_EQ(failure("workoffset 88888888888888888882\n").toString(),
+              "in.trace:1:12: expected an integer, found '88888888888888888882'");
     EXPECT_EQ(failure("cycle drill clear 5 retract 2 top 0 bottom -5 peck 0 dwell 0 f 100 return clear holes 2\n"
                       "  hole 1 1 0\n")
                   .toString(),

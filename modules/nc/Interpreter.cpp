@@ -66,6 +66,13 @@ InterpretResult interpret(std::string_view text, const InterpretOptions& options
     return {};
 }
 
+ProgramResolver resolverBeside(const std::string& programPath, Dialect dialect)
+{
+    const std::string folder = std::filesystem::path(programPath).parent_path().string();
+    return dialect == Dialect::Heidenhain ? folderResolver(folder, {".h"})
+                                          : folderResolver(folder, {".spf", ".mpf", ".ngc", ".nc"});
+}
+
 InterpretResult interpretFile(const std::string& path, std::optional<Dialect> dialect, InterpretOptions options,
                               toolpath::MachineSink& sink)
 {
@@ -78,12 +85,8 @@ InterpretResult interpretFile(const std::string& path, std::optional<Dialect> di
     }
     options.dialect = dialect ? *dialect : guessDialect(text.value(), path);
     options.fileName = path;
-    if (!options.resolveProgram) {
-        const std::string folder = std::filesystem::path(path).parent_path().string();
-        options.resolveProgram = options.dialect == Dialect::Heidenhain
-                                     ? folderResolver(folder, {".h"})
-                                     : folderResolver(folder, {".spf", ".mpf", ".ngc", ".nc"});
-    }
+    if (!options.resolveProgram)
+        options.resolveProgram = resolverBeside(path, options.dialect);
     return interpret(text.value(), options, sink);
 }
 

@@ -47,6 +47,10 @@ using ProgramResolver = std::function<std::optional<ProgramSource>(std::string_v
 // written, upper case and lower case (controls store SPF files in upper case).
 ProgramResolver folderResolver(std::string folder, std::vector<std::string> extensions);
 
+// The folder of `programPath`, with the extensions the dialect's called programs have (.h for
+// Heidenhain; .spf, .mpf, .ngc, .nc otherwise): how the CLI and the inspector find subprograms.
+ProgramResolver resolverBeside(const std::string& programPath, Dialect dialect);
+
 struct InterpretOptions {
     Dialect dialect = Dialect::Iso;
     std::string fileName;                          // for diagnostics; empty = "<input>"

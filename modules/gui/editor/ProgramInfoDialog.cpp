@@ -104,12 +104,8 @@ void ProgramInfoDialog::analyze(const QString& text, nc::Dialect dialect, const 
     nc::InterpretOptions options;
     options.dialect = dialect;
     options.fileName = fileName.toStdString();
-    if (!fileName.isEmpty() && QFileInfo(fileName).isAbsolute()) {
-        const std::string folder = QFileInfo(fileName).absolutePath().toStdString();
-        options.resolveProgram = dialect == nc::Dialect::Heidenhain
-                                     ? nc::folderResolver(folder, {".h"})
-                                     : nc::folderResolver(folder, {".spf", ".mpf", ".ngc", ".nc"});
-    }
+    if (!fileName.isEmpty() && QFileInfo(fileName).isAbsolute())
+        options.resolveProgram = nc::resolverBeside(fileName.toStdString(), dialect);
     const double rapid = m_rapid->value();
     m_thread = QThread::create([result, source = std::move(source), options, rapid] {
         toolpath::ToolpathRecorder recorder;

@@ -84,12 +84,8 @@ NcTrace traceNc(const NcTraceRequest& request)
     options.dialect = trace.dialect;
     options.fileName = request.path;
     options.cancel = request.cancel;
-    if (!request.path.empty()) {
-        const std::string folder = std::filesystem::path(request.path).parent_path().string();
-        options.resolveProgram = trace.dialect == nc::Dialect::Heidenhain
-                                     ? nc::folderResolver(folder, {".h"})
-                                     : nc::folderResolver(folder, {".spf", ".mpf", ".ngc", ".nc"});
-    }
+    if (!request.path.empty())
+        options.resolveProgram = nc::resolverBeside(request.path, trace.dialect);
 
     const auto start = std::chrono::steady_clock::now();
     TraceRecorder recorder(trace, request.cancel);

@@ -5,12 +5,15 @@
 
 #include "base/Result.h"
 #include "base/Vec.h"
+#include "geom/Hole.h"
 #include "geom/Profile.h"
+#include "geom/Region.h"
 #include "occ/DisplayMesh.h"
 
 #include <functional>
 #include <memory>
 #include <string>
+#include <vector>
 
 namespace camwb::occ {
 
@@ -23,6 +26,13 @@ struct FaceInfo {
     base::Vec3 normal;  // planar faces: outward unit normal
     double planeZ = 0;  // planar faces with normal +-Z: their Z level
     double areaMm2 = 0;
+};
+
+struct EdgeInfo {
+    int index = 0;  // 1-based; 0 = no such edge
+    enum class Curve { Line, Circle, BSpline, Other } curve = Curve::Other;
+    base::Vec3 start, end;
+    double lengthMm = 0;
 };
 
 struct ModelData;
@@ -49,6 +59,27 @@ public:
     // Outer wire of a planar face with normal +Z or -Z as a closed counter-clockwise Profile in XY.
     // Lines and circle arcs stay exact; other curves become line segments within toleranceMm.
     base::Result<geom::Profile> planarFaceOuterProfile(int faceIndex, double toleranceMm = 0.01) const;
+
+    // The whole face seen from +Z: outer wire as the outer loop, inner wires as holes (islands and
+    // openings). Faces with normal +Z or -Z only. Lines and circle arcs stay exact; B-splines and
+    // other curves become lines and arcs within toleranceMm (geom/ArcFit.h).
+    base::Result<geom::Region> planarFaceRegion(int faceIndex, double toleranceMm = 0.01) const;
+
+    int edgeCount() const;           // edges in TopExp::MapShapes order
+    EdgeInfo edge(int index) const;  // 1-based; EdgeInfo{} (index 0) when out of range
+    // The edges chained end to end into profiles projected on XY (each open or closed; chain
+    // direction follows the first edge of each chain as listed). Errors: unknown edge index,
+    // an edge used twice, an edge whose ends differ in Z from its chain's plane... (vertical edges
+    // are refused), branching (three edges at one vertex).
+    base::Result<std::vector<geom::Profile>> edgeChains(const std::vector<int>& edgeIndices,
+                                                        double toleranceMm = 0.01) const;
+
+    // Cylindrical holes with a vertical axis (material outside the cylinder), found on the whole
+    // model; half-cylinder faces of one hole are merged (faceIndex = the first). Ordered by faceIndex.
+    std::vector<geom::Hole> holes() const;
+    // A circular edge with a vertical axis as a hole (a picked circle): diameter and centre from
+    // the circle, top and bottom at its Z. Error when the edge is not such a circle.
+    base::Result<geom::Hole> circleEdgeAsHole(int edgeIndex) const;
 
     // Triangles (triangleFace filled; 0 for STL), per-vertex normals, feature edges as polylines.
     // STL models return their own triangles and no edges; linearDeflectionMm is ignored for them.

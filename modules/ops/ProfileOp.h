@@ -4,18 +4,13 @@
 
 #include "base/Result.h"
 #include "geom/Profile.h"
+#include "ops/OpCommon.h"
 #include "toolpath/Toolpath.h"
 
 #include <string>
 
 namespace camwb::ops {
 
-struct ToolController {
-    toolpath::Tool tool;
-    double spindleRpm = 0;
-    double cuttingFeedMmPerMin = 0;
-    double plungeFeedMmPerMin = 0;
-};
 
 struct ProfileParams {
     std::string name = "Profile";

@@ -27,6 +27,8 @@ struct Tool {
     double fluteLengthMm = 0;
     double lengthMm = 0;
     int flutes = 2;
+    double pointAngleDeg = 0;   // drills (118, 135, ...) and chamfer mills: included tip angle; 0 = flat
+    bool centreCutting = true;  // false: must not plunge straight down (pockets ramp or helix instead)
 };
 
 struct Rapid {

@@ -1,0 +1,76 @@
+// What every 2.5D operation shares: the tool controller (tool + speeds and feeds), the heights,
+// progress and cancellation, the result (toolpath, warnings, arc/line counts) and the checks made
+// before computing. Operations are pure functions of (geometry, parameters, tool controller):
+// they never touch the model or the job, so they run on any thread.
+#pragma once
+
+#include "base/Result.h"
+#include "toolpath/Toolpath.h"
+
+#include <atomic>
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace camwb::ops {
+
+struct ToolController {
+    toolpath::Tool tool;
+    double spindleRpm = 0;
+    double cuttingFeedMmPerMin = 0;
+    double plungeFeedMmPerMin = 0;
+    double rampFeedMmPerMin = 0;  // 0 = the cutting feed
+    double rampFeed() const { return rampFeedMmPerMin > 0 ? rampFeedMmPerMin : cuttingFeedMmPerMin; }
+};
+
+// Resolved heights in workpiece Z (mm). clearance >= safe > start >= final.
+// clearance: rapids between features/operations; safe: rapid down to here before feeding;
+// start: top of the material to cut (first step-down starts below it); final: the bottom.
+struct Heights {
+    double clearanceZ = 0;
+    double safeZ = 0;
+    double startZ = 0;
+    double finalZ = 0;
+};
+
+// Progress and cancellation for one computation. Operations call step() now and then; when it
+// returns false (cancel requested) they stop and return the error "cancelled", producing nothing.
+struct Progress {
+    std::function<void(double fraction)> report;  // 0..1, may be empty
+    const std::atomic<bool>* cancel = nullptr;    // may be null
+
+    bool cancelled() const { return cancel && cancel->load(std::memory_order_relaxed); }
+    bool step(double fraction) const
+    {
+        if (report)
+            report(fraction);
+        return !cancelled();
+    }
+};
+
+// Motion counts of a computed toolpath, so the user sees that arcs stayed arcs.
+struct MotionCounts {
+    int rapids = 0, lines = 0, arcs = 0, helices = 0, cycles = 0;
+};
+MotionCounts countMotions(const toolpath::Toolpath& toolpath);
+
+struct OpResult {
+    toolpath::Toolpath toolpath;        // SectionBegin ... SectionEnd; ToolChange/Spindle are the caller's
+    std::vector<std::string> warnings;  // computed anyway, but the user should know (left corners, ...)
+    MotionCounts counts;
+};
+
+// Z levels from start down to final in equal steps no deeper than stepDown (the last one at
+// final). stepDown <= 0 or >= the whole depth: one level at final.
+std::vector<double> stepDownLevels(double startZ, double finalZ, double stepDown);
+
+// The checks every operation makes before computing; errors name the operation
+// ("pocket \"Pocket 2\": tool diameter must be positive, got 0 mm").
+base::Status checkToolController(const std::string& what, const ToolController& tc);
+base::Status checkHeights(const std::string& what, const Heights& heights);
+// The cut depth (start - final) must not exceed the tool's flute length (when the tool states it).
+base::Status checkCuttingLength(const std::string& what, const Heights& heights, const toolpath::Tool& tool);
+base::Error opError(const std::string& what, const std::string& message);  // "what: message"
+base::Error cancelledError(const std::string& what);                        // "what: cancelled"
+
+}  // namespace camwb::ops

@@ -18,4 +18,10 @@ namespace camwb::geom {
 // between elements that are not neighbours is not detected here.
 base::Result<Profile> offsetOutside(const Profile& profile, double distance);
 
+// Offsets a closed profile by `distance` mm into the area it encloses, keeping its orientation;
+// the same rules as offsetOutside with the sides swapped (the profile's convex arcs shrink, its
+// concave corners get arcs). An offset that would split the area into several loops or let it
+// vanish is reported only where a trimmed element vanishes (local trimming, as above).
+base::Result<Profile> offsetInside(const Profile& profile, double distance);
+
 }  // namespace camwb::geom

@@ -1,0 +1,1 @@
+set(GEOM_PART_SOURCES ChainOffset.cpp detail/OffsetCore.cpp)

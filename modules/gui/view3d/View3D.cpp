@@ -1,7 +1,9 @@
 #include "gui/view3d/View3D.h"
 
+#include "gui/view3d/TaskOverlay.h"
 #include "gui/view3d/ToolpathPolylines.h"
 #include "gui/view3d/VtkOpenGLWidget.h"
+#include "gui/view3d/detail/ModelActors.h"
 #include "gui/view3d/detail/ToolpathScene.h"
 #include "occ/DisplayMesh.h"
 #include "toolpath/Toolpath.h"
@@ -17,24 +19,20 @@
 #include <vtkAxesActor.h>
 #include <vtkCamera.h>
 #include <vtkCaptionActor2D.h>
-#include <vtkCellArray.h>
 #include <vtkCellData.h>
-#include <vtkFloatArray.h>
+#include <vtkCellPicker.h>
 #include <vtkGenericOpenGLRenderWindow.h>
+#include <vtkIntArray.h>
 #include <vtkLightKit.h>
 #include <vtkMatrix4x4.h>
 #include <vtkNew.h>
-#include <vtkPointData.h>
-#include <vtkPoints.h>
 #include <vtkPolyData.h>
 #include <vtkPolyDataMapper.h>
-#include <vtkPolyDataNormals.h>
 #include <vtkProperty.h>
 #include <vtkRenderer.h>
 #include <vtkSmartPointer.h>
 #include <vtkTextActor.h>
 #include <vtkTextProperty.h>
-#include <vtkUnsignedCharArray.h>
 
 #include <algorithm>
 #include <array>
@@ -49,94 +47,6 @@ constexpr double kChordToleranceMm = 0.01;
 
 // A click that moves the mouse less than this (logical pixels) picks instead of rotating.
 constexpr double kClickSlopPx = 4.0;
-constexpr double kModelColor[3]{0.80, 0.81, 0.83};
-constexpr double kEdgeColor[3]{0.10, 0.10, 0.12};
-
-vtkSmartPointer<vtkActor> makeActor(vtkPolyData* data)
-{
-    vtkNew<vtkPolyDataMapper> mapper;
-    mapper->SetInputData(data);
-    auto actor = vtkSmartPointer<vtkActor>::New();
-    actor->SetMapper(mapper);
-    return actor;
-}
-
-vtkSmartPointer<vtkActor> makeModelActor(const occ::DisplayMesh& mesh)
-{
-    const vtkIdType vertexCount = static_cast<vtkIdType>(mesh.positions.size() / 3);
-    if (mesh.triangles.size() < 3 || vertexCount == 0)
-        return nullptr;
-    vtkNew<vtkPoints> points;
-    points->SetDataTypeToFloat();
-    points->SetNumberOfPoints(vertexCount);
-    for (vtkIdType i = 0; i < vertexCount; ++i)
-        points->SetPoint(i, mesh.positions[3 * i], mesh.positions[3 * i + 1], mesh.positions[3 * i + 2]);
-    vtkNew<vtkCellArray> triangles;
-    triangles->AllocateExact(static_cast<vtkIdType>(mesh.triangles.size() / 3),
-                             static_cast<vtkIdType>(mesh.triangles.size()));
-    for (std::size_t t = 0; t + 2 < mesh.triangles.size(); t += 3) {
-        const vtkIdType ids[3]{mesh.triangles[t], mesh.triangles[t + 1], mesh.triangles[t + 2]};
-        if (ids[0] < vertexCount && ids[1] < vertexCount && ids[2] < vertexCount)
-            triangles->InsertNextCell(3, ids);
-    }
-    auto data = vtkSmartPointer<vtkPolyData>::New();
-    data->SetPoints(points);
-    data->SetPolys(triangles);
-
-    if (mesh.normals.size() == mesh.positions.size()) {
-        vtkNew<vtkFloatArray> normals;
-        normals->SetNumberOfComponents(3);
-        normals->SetNumberOfTuples(vertexCount);
-        for (vtkIdType i = 0; i < vertexCount * 3; ++i)
-            normals->SetValue(i, mesh.normals[static_cast<std::size_t>(i)]);
-        data->GetPointData()->SetNormals(normals);
-    } else {
-        vtkNew<vtkPolyDataNormals> filter;
-        filter->SetInputData(data);
-        filter->SetFeatureAngle(30.0);
-        filter->SplittingOn();
-        filter->Update();
-        data = filter->GetOutput();
-    }
-
-    auto actor = makeActor(data);
-    auto* mapper = actor->GetMapper();
-    mapper->ScalarVisibilityOff();
-    // Push faces back so that the feature edges lying on them always win the depth test.
-    mapper->SetRelativeCoincidentTopologyPolygonOffsetParameters(2.0, 4.0);
-    vtkProperty* property = actor->GetProperty();
-    property->SetColor(kModelColor[0], kModelColor[1], kModelColor[2]);
-    property->SetAmbient(0.15);
-    property->SetDiffuse(0.8);
-    property->SetSpecular(0.25);
-    property->SetSpecularPower(30.0);
-    property->SetInterpolationToPhong();
-    return actor;
-}
-
-vtkSmartPointer<vtkActor> makeEdgeActor(const occ::DisplayMesh& mesh)
-{
-    vtkNew<vtkPoints> points;
-    vtkNew<vtkCellArray> lines;
-    for (const auto& edge : mesh.featureEdges) {
-        if (edge.size() < 2)
-            continue;
-        lines->InsertNextCell(static_cast<vtkIdType>(edge.size()));
-        for (const base::Vec3& p : edge)
-            lines->InsertCellPoint(points->InsertNextPoint(p.x, p.y, p.z));
-    }
-    if (lines->GetNumberOfCells() == 0)
-        return nullptr;
-    vtkNew<vtkPolyData> data;
-    data->SetPoints(points);
-    data->SetLines(lines);
-    auto actor = makeActor(data);
-    actor->GetMapper()->ScalarVisibilityOff();
-    actor->GetProperty()->SetColor(kEdgeColor[0], kEdgeColor[1], kEdgeColor[2]);
-    actor->GetProperty()->SetLineWidth(1.5f);
-    actor->GetProperty()->LightingOff();
-    return actor;
-}
 
 }  // namespace
 
@@ -148,6 +58,7 @@ struct View3D::Private {
     vtkNew<vtkRenderer> markerRenderer;
     vtkNew<vtkAxesActor> axes;
     vtkSmartPointer<vtkActor> modelActor;
+    TaskOverlay* overlay = nullptr;
     vtkSmartPointer<vtkActor> edgeActor;
     struct ToolActors {
         int tool = 0;
@@ -219,6 +130,8 @@ void View3D::Private::syncMarker()
 View3D::View3D(QWidget* parent) : QWidget(parent), d(std::make_unique<Private>())
 {
     d->setupScene();
+    d->overlay = new TaskOverlay(
+        d->renderer, [this] { d->render(); }, this);
     auto* layout = new QVBoxLayout(this);
     layout->setContentsMargins(0, 0, 0, 0);
 
@@ -310,8 +223,10 @@ void View3D::setModel(const occ::DisplayMesh& mesh)
     clearModel();
     d->modelActor = makeModelActor(mesh);
     d->edgeActor = makeEdgeActor(mesh);
-    if (d->modelActor)
+    if (d->modelActor) {
         d->renderer->AddActor(d->modelActor);
+        d->overlay->setModel(vtkPolyData::SafeDownCast(d->modelActor->GetMapper()->GetInput()));
+    }
     if (d->edgeActor)
         d->renderer->AddActor(d->edgeActor);
     fitAll();
@@ -325,6 +240,7 @@ void View3D::clearModel()
         d->renderer->RemoveActor(d->edgeActor);
     d->modelActor = nullptr;
     d->edgeActor = nullptr;
+    d->overlay->setModel(nullptr);
     d->render();
 }
 
@@ -511,6 +427,27 @@ int View3D::pickSegment(const QPointF& widgetPosition, double tolerancePx) const
                                     tolerancePx, d->hiddenTools);
 }
 
+TaskOverlay& View3D::overlay() const { return *d->overlay; }
+
+int View3D::pickFace(const QPointF& widgetPosition) const
+{
+    if (d->gl == nullptr || !d->modelActor)
+        return 0;
+    // VTK's display coordinates: device pixels, origin at the bottom left.
+    const QPointF local = widgetPosition - QPointF(d->gl->mapTo(this, QPoint(0, 0)));
+    const double ratio = d->gl->devicePixelRatioF();
+    vtkNew<vtkCellPicker> picker;
+    picker->SetTolerance(1e-4);
+    picker->PickFromListOn();
+    picker->AddPickList(d->modelActor);
+    if (picker->Pick(local.x() * ratio, (d->gl->height() - local.y()) * ratio, 0.0, d->renderer) == 0)
+        return 0;
+    auto* data = vtkPolyData::SafeDownCast(d->modelActor->GetMapper()->GetInput());
+    auto* faceOf = data ? vtkIntArray::SafeDownCast(data->GetCellData()->GetArray("face")) : nullptr;
+    const vtkIdType cell = picker->GetCellId();
+    return faceOf != nullptr && cell >= 0 && cell < faceOf->GetNumberOfTuples() ? faceOf->GetValue(cell) : 0;
+}
+
 bool View3D::eventFilter(QObject* watched, QEvent* event)
 {
     if (d->gl == nullptr || watched != d->gl)
@@ -524,9 +461,12 @@ bool View3D::eventFilter(QObject* watched, QEvent* event)
         d->pressed = false;
         const QPointF moved = mouse->position() - d->pressPosition;
         if (mouse->button() == Qt::LeftButton && std::abs(moved.x()) + std::abs(moved.y()) <= kClickSlopPx) {
-            const int segment = pickSegment(mouse->position() + QPointF(d->gl->mapTo(this, QPoint(0, 0))));
+            const QPointF at = mouse->position() + QPointF(d->gl->mapTo(this, QPoint(0, 0)));
+            const int segment = pickSegment(at);
             if (segment >= 0)
                 emit segmentPicked(segment, static_cast<int>(d->scene->polylines().segments()[segment].record));
+            else
+                d->overlay->clickFace(pickFace(at), mouse->modifiers().testFlag(Qt::ControlModifier));
         }
     }
     return QWidget::eventFilter(watched, event);

@@ -28,6 +28,7 @@ class Toolpath;
 
 namespace camwb::gui {
 
+class TaskOverlay;
 class ToolpathPolylines;
 class ToolpathScene;
 
@@ -80,6 +81,12 @@ public:
     int pickSegment(const QPointF& widgetPosition, double tolerancePx = 6.0) const;
     // Where a world point appears in the widget (logical pixels), nullopt behind the camera.
     std::optional<QPointF> projectToWidget(const base::Vec3& point) const;
+
+    // The task panels' layer: the live preview of an operation and the faces picked for it. A
+    // click on the model that picks no segment selects its face there (Ctrl: adds/removes).
+    TaskOverlay& overlay() const;
+    // The model face (1-based) under a widget position, 0 for none. Needs OpenGL.
+    int pickFace(const QPointF& widgetPosition) const;
 
     void setViewPreset(Preset preset);  // also fits everything into the view
     void fitAll();

@@ -1,0 +1,51 @@
+// What a task panel draws over the model in the 3D view, apart from the job's backplot: the live
+// preview of the operation being edited (orange, thick, rapids thin) and the faces picked as the
+// operation's geometry (tinted green). Owned by View3D (View3D::overlay()); VTK stays in the .cpp,
+// so the data calls work without OpenGL too (headless tests).
+#pragma once
+
+#include <QObject>
+
+#include <functional>
+#include <memory>
+#include <vector>
+
+class vtkPolyData;
+class vtkRenderer;
+
+namespace camwb::gui {
+
+class ToolpathPolylines;
+
+class TaskOverlay : public QObject {
+    Q_OBJECT
+public:
+    ~TaskOverlay() override;
+
+    // Replaces the preview; null or empty clears it. Built on a worker, shown here.
+    void showPreview(std::shared_ptr<const ToolpathPolylines> polylines);
+    void clearPreview();
+    int previewSegmentCount() const;  // 0 when no preview is shown
+
+    // Model faces (1-based) picked in the view, in picking order.
+    const std::vector<int>& selectedFaces() const;
+    void setSelectedFaces(std::vector<int> faces);
+    // A click on `face` (0 = on nothing): alone it selects just that face (nothing clears);
+    // `toggle` (Ctrl held) adds or removes it and keeps the rest.
+    void clickFace(int face, bool toggle);
+
+signals:
+    void selectionChanged();
+
+private:
+    friend class View3D;
+    TaskOverlay(vtkRenderer* renderer, std::function<void()> render, QObject* parent);
+    // The model's triangles with a "face" cell array; null when the model is cleared.
+    void setModel(vtkPolyData* model);
+    void rebuildSelection();
+
+    struct Private;
+    std::unique_ptr<Private> d;
+};
+
+}  // namespace camwb::gui

@@ -1,0 +1,18 @@
+// VTK actors of the 3D view's model: shaded triangles (with each triangle's model face as the
+// "face" cell array, for picking and the task panels' face selection) and feature edges.
+// Private to gui/view3d.
+#pragma once
+
+#include "occ/DisplayMesh.h"
+
+#include <vtkActor.h>
+#include <vtkPolyData.h>
+#include <vtkSmartPointer.h>
+
+namespace camwb::gui {
+
+vtkSmartPointer<vtkActor> makeActor(vtkPolyData* data);
+vtkSmartPointer<vtkActor> makeModelActor(const occ::DisplayMesh& mesh);  // null without triangles
+vtkSmartPointer<vtkActor> makeEdgeActor(const occ::DisplayMesh& mesh);   // null without edges
+
+}  // namespace camwb::gui

@@ -13,17 +13,32 @@ namespace camwb::geom {
 
 // delta < 0 shrinks the regions (the tool-centre area of a pocket: -(tool radius + stock)),
 // delta > 0 grows them (round joins). May split a region into several or make it vanish.
+// Shrinking offsets by |delta| + offsetSafetyMargin(tolerance) so that the fitted result stays at
+// least |delta| from the exact input loops; growing offsets by delta itself (result within
+// tolerance of the exact offset). delta == 0 returns the regions normalised. Tolerances below
+// 1e-5 mm are raised to it. Coordinates beyond 1e9 mm give an empty result.
 std::vector<Region> offsetRegions(const std::vector<Region>& regions, double delta, double tolerance);
 
+// What a shrink adds to |delta| (about 1.28 * tolerance): chords of the input arcs (tolerance/2)
+// + fit of the result (tolerance/2) + chords of Clipper's round joins (2.25 * offsetArcTolerance:
+// Clipper rounds the step count, so a join's last step may be 1.5 steps long) + 4 nm rounding.
+double offsetSafetyMargin(double tolerance);
+// Nominal chord error of Clipper's round joins in offsets and swept areas: tolerance/8 (so that
+// even a join's long last step, 2.25 times that, stays below the fit tolerance/2).
+double offsetArcTolerance(double tolerance);
+
 // Regions from closed loops with even-odd nesting (outer loops and holes in any orientation,
-// a loop inside a hole is a new outer loop). Loops are taken as given (no discretisation).
+// a loop inside a hole is a new outer loop). Loops are taken as given (no discretisation); they
+// must not cross each other. Loops with an area below 1e-3 * tolerance^2 are dropped.
 std::vector<Region> regionsFromLoops(const std::vector<Profile>& loops, double tolerance);
 
 std::vector<Region> unite(const std::vector<Region>& a, const std::vector<Region>& b, double tolerance);
 std::vector<Region> subtract(const std::vector<Region>& a, const std::vector<Region>& b, double tolerance);
 std::vector<Region> intersect(const std::vector<Region>& a, const std::vector<Region>& b, double tolerance);
 
-// The parts of open polylines that lie inside the regions (zig-zag lines, links), in order.
+// The parts of open polylines that lie inside the regions (zig-zag lines, links), in order and in
+// the polylines' direction. Exact (edges are cut at their exact crossings with the line/arc loops;
+// parts running along a loop count as inside); `tolerance` is not needed and kept for symmetry.
 std::vector<std::vector<Vec2>> clipPolylines(const std::vector<std::vector<Vec2>>& polylines,
                                              const std::vector<Region>& regions, double tolerance);
 
@@ -31,7 +46,9 @@ std::vector<std::vector<Vec2>> clipPolylines(const std::vector<std::vector<Vec2>
 bool segmentInside(Vec2 a, Vec2 b, const std::vector<Region>& regions);
 
 // The area a tool of `radius` sweeps along the polylines (the footprint), as regions. Used to
-// find uncut material: subtract(machinable, sweptArea(paths)).
+// find uncut material: subtract(machinable, sweptArea(paths)). A single-point path gives a disc.
+// Round ends and joins are inscribed polygons (chord error offsetArcTolerance), then fitted
+// within tolerance/2: the result lies within tolerance of the exact footprint.
 std::vector<Region> sweptArea(const std::vector<std::vector<Vec2>>& paths, double radius, double tolerance);
 
 }  // namespace camwb::geom

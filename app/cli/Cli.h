@@ -46,5 +46,6 @@ int runCommand(const std::vector<std::string>& args);    // camwb-cli run <job> 
 int postsCommand(const std::vector<std::string>& args);  // camwb-cli posts [<id>]
 int postCommand(const std::vector<std::string>& args);   // camwb-cli post <input> --post <id> ...
 int ncCommand(const std::vector<std::string>& args);     // camwb-cli nc trace <file> ...
+int clCommand(const std::vector<std::string>& args);     // camwb-cli cl <job> [-o <file>]
 
 }  // namespace camwb::cli

@@ -192,9 +192,12 @@ int postCommand(const std::vector<std::string>& args)
         auto model = document::loadJobModel(job.value());
         if (!model)
             return fail(model.error().toString());
-        auto computed = document::computeProgram(job.value(), model.value());
+        document::ProgramReport report;
+        auto computed = document::computeProgram(job.value(), model.value(), {}, &report);
         if (!computed)
             return fail(input + ": " + computed.error().message);
+        for (const std::string& warning : report.warnings)
+            std::cerr << "camwb-cli: warning: " << warning << "\n";
         program = std::move(computed).value();
         postId = postId.empty() ? job->postId : postId;
         machineId = machineId.empty() ? job->machineId : machineId;

@@ -28,6 +28,8 @@ int main(int argc, char** argv)
         return postsCommand(rest);
     if (args[0] == "post")
         return postCommand(rest);
+    if (args[0] == "cl")
+        return clCommand(rest);
     if (args[0] == "nc")
         return ncCommand(rest);
     return usageError("unknown command '" + args[0] + "'");

@@ -10,4 +10,29 @@ const ops::ToolController* Job::tool(int number) const
     return nullptr;
 }
 
+const std::string& Operation::name() const
+{
+    return std::visit([](const auto& p) -> const std::string& { return p.name; }, params);
+}
+
+void Operation::setName(const std::string& name)
+{
+    std::visit([&](auto& p) { p.name = name; }, params);
+}
+
+const char* kindName(OperationKind kind)
+{
+    switch (kind) {
+    case OperationKind::Contour:
+        return "contour";
+    case OperationKind::Pocket:
+        return "pocket";
+    case OperationKind::Helix:
+        return "helix";
+    case OperationKind::Drill:
+        return "drill";
+    }
+    return "operation";
+}
+
 }  // namespace camwb::document

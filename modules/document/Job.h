@@ -3,10 +3,15 @@
 #pragma once
 
 #include "base/Vec.h"
-#include "ops/ProfileOp.h"
+#include "ops/ContourOp.h"
+#include "ops/DrillOp.h"
+#include "ops/HelixOp.h"
+#include "ops/PocketOp.h"
 
 #include <map>
+#include <optional>
 #include <string>
+#include <variant>
 #include <vector>
 
 namespace camwb::document {
@@ -16,13 +21,37 @@ struct Stock {
     base::Vec3 max;
 };
 
-// One operation of the job. Only the outer-boundary profile exists so far; `type` names it in
-// the file so that later operation kinds extend the format instead of changing it.
-struct Operation {
-    std::string type = "profile";
-    int toolNumber = 1;
-    ops::ProfileParams profile;
+// What an operation cuts, as references into the loaded model (indices are stable for a file:
+// OCCT's map order, 1-based). Resolved to geometry by OperationGeometry.h.
+struct GeometryRefs {
+    std::vector<int> faces;  // planar faces: contour = their outer wires, pocket = face with islands
+    std::vector<int> edges;  // edge chains (contour), open or closed
+    std::vector<int> holes;  // holes by their cylindrical face (helix, drilling)
 };
+
+// Heights the user set; the others are derived from the model and stock when the job is computed.
+struct HeightOverrides {
+    std::optional<double> clearanceZ, safeZ, startZ, finalZ;
+};
+
+enum class OperationKind { Contour, Pocket, Helix, Drill };
+using OperationParams = std::variant<ops::ContourParams, ops::PocketParams, ops::HelixParams, ops::DrillParams>;
+
+// One operation of the job. `params.heights` is filled from `heights` and the model on compute;
+// what is stored in the file is the overrides, so derived heights follow model changes.
+struct Operation {
+    int toolNumber = 1;
+    GeometryRefs geometry;
+    HeightOverrides heights;
+    OperationParams params;
+
+    OperationKind kind() const { return static_cast<OperationKind>(params.index()); }
+    const std::string& name() const;
+    void setName(const std::string& name);
+};
+
+// "contour", "pocket", "helix", "drill": the operation's type in the file and in messages.
+const char* kindName(OperationKind kind);
 
 struct Job {
     std::string name;

@@ -2,6 +2,7 @@
 
 #include "base/AtomicFile.h"
 #include "base/JsonRead.h"
+#include "document/detail/OperationFile.h"
 
 #include <filesystem>
 
@@ -28,27 +29,13 @@ ops::ToolController readTool(const json& t, const std::string& where)
     tc.spindleRpm = number(t, "spindleRpm", where);
     tc.cuttingFeedMmPerMin = number(t, "cuttingFeed", where);
     tc.plungeFeedMmPerMin = number(t, "plungeFeed", where);
+    if (optionalMember(t, "rampFeed", where))
+        tc.rampFeedMmPerMin = number(t, "rampFeed", where);
+    if (optionalMember(t, "pointAngle", where))
+        tc.tool.pointAngleDeg = number(t, "pointAngle", where);
+    if (optionalMember(t, "centreCutting", where))
+        tc.tool.centreCutting = boolean(t, "centreCutting", where);
     return tc;
-}
-
-Operation readOperation(const json& o, const std::string& where)
-{
-    Operation op;
-    op.type = text(o, "type", where);
-    if (op.type != "profile")
-        throw JsonFieldError{where + ".type: unknown operation type \"" + op.type + "\""};
-    op.toolNumber = integer(o, "tool", where);
-    ops::ProfileParams& p = op.profile;
-    p.name = text(o, "name", where);
-    p.faceIndex = integer(o, "face", where);
-    p.finalDepthZ = number(o, "finalDepth", where);
-    p.safeZ = number(o, "safeHeight", where);
-    p.clearanceZ = number(o, "clearanceHeight", where);
-    const std::string direction = text(o, "direction", where);
-    if (direction != "climb" && direction != "conventional")
-        throw JsonFieldError{where + ".direction: expected \"climb\" or \"conventional\""};
-    p.climb = direction == "climb";
-    return op;
 }
 
 Job readJob(const json& root)
@@ -101,7 +88,7 @@ Job readJob(const json& root)
         throw JsonFieldError{where + ".operations: expected an array"};
     for (std::size_t i = 0; i < operations.size(); ++i) {
         const std::string at = where + ".operations[" + std::to_string(i) + "]";
-        Operation op = readOperation(operations[i], at);
+        Operation op = detail::readOperation(operations[i], at);
         if (!job.tool(op.toolNumber))
             throw JsonFieldError{at + ".tool: no tool number " + std::to_string(op.toolNumber) + " in the job"};
         job.operations.push_back(std::move(op));
@@ -140,7 +127,7 @@ std::string serializeJob(const Job& job)
     using ojson = nlohmann::ordered_json;
     ojson root;
     root["format"] = "camwb-job";
-    root["version"] = job.machineId.empty() && job.postProperties.empty() ? 1 : kJobFormatVersion;
+    root["version"] = kJobFormatVersion;
     root["name"] = job.name;
     root["model"] = job.modelPath;
     root["stock"] = {{"min", {job.stock.min.x, job.stock.min.y, job.stock.min.z}},
@@ -153,30 +140,29 @@ std::string serializeJob(const Job& job)
         root["postProperties"] = job.postProperties;
     root["tools"] = ojson::array();
     for (const ops::ToolController& tc : job.tools) {
-        root["tools"].push_back({{"number", tc.tool.number},
-                                 {"name", tc.tool.name},
-                                 {"kind", tc.tool.kind},
-                                 {"diameter", tc.tool.diameterMm},
-                                 {"cornerRadius", tc.tool.cornerRadiusMm},
-                                 {"fluteLength", tc.tool.fluteLengthMm},
-                                 {"length", tc.tool.lengthMm},
-                                 {"flutes", tc.tool.flutes},
-                                 {"spindleRpm", tc.spindleRpm},
-                                 {"cuttingFeed", tc.cuttingFeedMmPerMin},
-                                 {"plungeFeed", tc.plungeFeedMmPerMin}});
+        ojson tool = {{"number", tc.tool.number},
+                      {"name", tc.tool.name},
+                      {"kind", tc.tool.kind},
+                      {"diameter", tc.tool.diameterMm},
+                      {"cornerRadius", tc.tool.cornerRadiusMm},
+                      {"fluteLength", tc.tool.fluteLengthMm},
+                      {"length", tc.tool.lengthMm},
+                      {"flutes", tc.tool.flutes},
+                      {"spindleRpm", tc.spindleRpm},
+                      {"cuttingFeed", tc.cuttingFeedMmPerMin},
+                      {"plungeFeed", tc.plungeFeedMmPerMin}};
+        // Written only when set, so tools that do not use them read as before.
+        if (tc.rampFeedMmPerMin > 0)
+            tool["rampFeed"] = tc.rampFeedMmPerMin;
+        if (tc.tool.pointAngleDeg > 0)
+            tool["pointAngle"] = tc.tool.pointAngleDeg;
+        if (!tc.tool.centreCutting)
+            tool["centreCutting"] = false;
+        root["tools"].push_back(tool);
     }
     root["operations"] = ojson::array();
-    for (const Operation& op : job.operations) {
-        const ops::ProfileParams& p = op.profile;
-        root["operations"].push_back({{"type", op.type},
-                                      {"name", p.name},
-                                      {"tool", op.toolNumber},
-                                      {"face", p.faceIndex},
-                                      {"finalDepth", p.finalDepthZ},
-                                      {"safeHeight", p.safeZ},
-                                      {"clearanceHeight", p.clearanceZ},
-                                      {"direction", p.climb ? "climb" : "conventional"}});
-    }
+    for (const Operation& op : job.operations)
+        root["operations"].push_back(detail::writeOperation(op));
     return root.dump(2) + "\n";
 }
 

@@ -9,9 +9,10 @@
 
 namespace camwb::document {
 
-// Version 2 added the optional "machine" and "postProperties"; a job that uses neither is still
-// written as version 1, so older readers keep reading what they can read correctly.
-inline constexpr int kJobFormatVersion = 2;
+// Version 2 added the optional "machine" and "postProperties"; version 3 the operation kinds
+// (contour, pocket, helix, drill) with geometry references, height overrides and parameters.
+// Versions 1 and 2 are still read (their "profile" becomes an outside contour); writing gives 3.
+inline constexpr int kJobFormatVersion = 3;
 
 // In memory a job's model path is absolute; in the file it is relative to the job file's folder.
 // loadJob resolves it, saveJob makes it relative again, so jobs can be moved with their models.

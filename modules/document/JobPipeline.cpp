@@ -1,6 +1,9 @@
 #include "document/JobPipeline.h"
 
+#include "document/OperationGeometry.h"
 #include "post/PostRegistry.h"
+
+#include <algorithm>
 
 namespace camwb::document {
 
@@ -11,34 +14,38 @@ base::Result<occ::Model> loadJobModel(const Job& job, const occ::ProgressFn& pro
     return occ::Model::load(job.modelPath, progress);
 }
 
-base::Result<toolpath::Toolpath> computeProgram(const Job& job, const occ::Model& model)
+base::Result<toolpath::Toolpath> computeProgram(const Job& job, const occ::Model& model, const ops::Progress& progress,
+                                                ProgramReport* report)
 {
     toolpath::Toolpath program;
     program.add(toolpath::WorkOffset{job.workOffset});
     int currentTool = -1;
+    const double count = static_cast<double>(std::max<std::size_t>(job.operations.size(), 1));
 
     for (std::size_t i = 0; i < job.operations.size(); ++i) {
-        const Operation& op = job.operations[i];
         const int index = static_cast<int>(i);
-        const std::string label = "operation \"" + op.profile.name + "\": ";
-        const ops::ToolController* tc = job.tool(op.toolNumber);
-        if (!tc)
-            return base::makeError(label + "no tool number " + std::to_string(op.toolNumber) + " in the job");
-
-        auto boundary = model.planarFaceOuterProfile(op.profile.faceIndex);
-        if (!boundary)
-            return base::makeError(label + boundary.error().message);
-        auto section = ops::computeOuterProfile(boundary.value(), op.profile, *tc, index);
+        // Each operation reports its own 0..1 as a slice of the whole.
+        ops::Progress slice{nullptr, progress.cancel};
+        if (progress.report)
+            slice.report = [&, i](double f) { progress.report((static_cast<double>(i) + f) / count); };
+        auto section = computeOperation(job, index, model, slice);
         if (!section)
-            return base::makeError(label + section.error().message);
-
-        for (std::size_t r = 0; r < section->size(); ++r) {
-            program.add(section->record(r), section->source(r));
-            const bool isSectionStart = std::holds_alternative<toolpath::SectionBegin>(section->record(r));
-            if (isSectionStart && tc->tool.number != currentTool) {
-                program.add(toolpath::ToolChange{tc->tool}, {index, -1});
-                program.add(toolpath::Spindle{tc->spindleRpm, true}, {index, -1});
-                currentTool = tc->tool.number;
+            return section.error();
+        const Operation& op = job.operations[i];
+        if (report) {
+            for (const std::string& w : section->warnings)
+                report->warnings.push_back(std::string(kindName(op.kind())) + " \"" + op.name() + "\": " + w);
+            report->counts.push_back(section->counts);
+        }
+        const ops::ToolController& tc = *job.tool(op.toolNumber);  // computeOperation checked it
+        const toolpath::Toolpath& records = section->toolpath;
+        for (std::size_t r = 0; r < records.size(); ++r) {
+            program.add(records.record(r), records.source(r));
+            const bool isSectionStart = std::holds_alternative<toolpath::SectionBegin>(records.record(r));
+            if (isSectionStart && tc.tool.number != currentTool) {
+                program.add(toolpath::ToolChange{tc.tool}, {index, -1});
+                program.add(toolpath::Spindle{tc.spindleRpm, true}, {index, -1});
+                currentTool = tc.tool.number;
             }
         }
     }

@@ -7,6 +7,7 @@
 #include "base/Result.h"
 #include "document/Job.h"
 #include "occ/Model.h"
+#include "ops/OpCommon.h"
 #include "post/PostProcessor.h"
 #include "toolpath/Toolpath.h"
 
@@ -19,7 +20,13 @@ base::Result<occ::Model> loadJobModel(const Job& job, const occ::ProgressFn& pro
 
 // The whole program: work offset, then per operation its section with the tool change and
 // spindle start inserted after SectionBegin when the tool differs from the previous one.
-base::Result<toolpath::Toolpath> computeProgram(const Job& job, const occ::Model& model);
+// The first failing operation's error is returned.
+struct ProgramReport {
+    std::vector<std::string> warnings;      // named by operation: "pocket \"P\": ..."
+    std::vector<ops::MotionCounts> counts;  // per operation, in job order
+};
+base::Result<toolpath::Toolpath> computeProgram(const Job& job, const occ::Model& model,
+                                                const ops::Progress& progress = {}, ProgramReport* report = nullptr);
 
 base::Result<post::PostProcessor> loadJobPost(const Job& job, const std::vector<base::DataDir>& postDirs);
 

@@ -27,13 +27,49 @@ Job sampleJob()
     job.tools.push_back(tc);
     document::Operation op;
     op.toolNumber = 3;
-    op.profile.name = "Outer";
-    op.profile.faceIndex = 7;
-    op.profile.finalDepthZ = 10.25;
-    op.profile.safeZ = 17;
-    op.profile.clearanceZ = 25;
-    op.profile.climb = false;
+    ops::ContourParams contour;
+    contour.name = "Outer";
+    contour.climb = false;
+    contour.side = ops::ContourSide::Inside;
+    contour.tabCount = 3;
+    op.params = contour;
+    op.geometry.faces = {7};
+    op.heights.finalZ = 10.25;
+    op.heights.safeZ = 17;
+    op.heights.clearanceZ = 25;
     job.operations.push_back(op);
+
+    document::Operation pocket;
+    pocket.toolNumber = 3;
+    ops::PocketParams p;
+    p.name = "Pocket";
+    p.pattern = ops::PocketPattern::ZigZag;
+    p.zigZagAngleDeg = 30;
+    p.entry = ops::EntryKind::Ramp;
+    p.finishWalls = true;
+    pocket.params = p;
+    pocket.geometry.faces = {4, 9};
+    job.operations.push_back(pocket);
+
+    document::Operation helix;
+    helix.toolNumber = 3;
+    ops::HelixParams h;
+    h.name = "Bore";
+    h.pitchMm = 0.75;
+    helix.params = h;
+    helix.geometry.holes = {12};
+    job.operations.push_back(helix);
+
+    document::Operation drill;
+    drill.toolNumber = 3;
+    ops::DrillParams d;
+    d.name = "Holes";
+    d.cycle = toolpath::CycleKind::ChipBreak;
+    d.peckMm = 2;
+    drill.params = d;
+    drill.geometry.holes = {13, 14};
+    drill.heights.startZ = 15;
+    job.operations.push_back(drill);
     return job;
 }
 
@@ -63,9 +99,21 @@ TEST(JobFile, SerializeParseRoundTripKeepsEveryField)
     EXPECT_EQ(document::serializeJob(job.value()), text);
     EXPECT_EQ(job->name, "Sample");
     EXPECT_EQ(job->workOffset, 2);
-    ASSERT_EQ(job->operations.size(), 1u);
-    EXPECT_DOUBLE_EQ(job->operations[0].profile.finalDepthZ, 10.25);
-    EXPECT_FALSE(job->operations[0].profile.climb);
+    ASSERT_EQ(job->operations.size(), 4u);
+    const document::Operation& contour = job->operations[0];
+    EXPECT_EQ(contour.kind(), document::OperationKind::Contour);
+    EXPECT_DOUBLE_EQ(*contour.heights.finalZ, 10.25);
+    EXPECT_FALSE(contour.heights.startZ.has_value()) << "only overridden heights are stored";
+    EXPECT_FALSE(std::get<ops::ContourParams>(contour.params).climb);
+    EXPECT_EQ(std::get<ops::ContourParams>(contour.params).side, ops::ContourSide::Inside);
+    EXPECT_EQ(std::get<ops::ContourParams>(contour.params).tabCount, 3);
+    EXPECT_EQ(job->operations[1].geometry.faces, (std::vector<int>{4, 9}));
+    EXPECT_EQ(std::get<ops::PocketParams>(job->operations[1].params).pattern, ops::PocketPattern::ZigZag);
+    EXPECT_EQ(std::get<ops::PocketParams>(job->operations[1].params).entry, ops::EntryKind::Ramp);
+    EXPECT_DOUBLE_EQ(std::get<ops::HelixParams>(job->operations[2].params).pitchMm, 0.75);
+    EXPECT_EQ(std::get<ops::DrillParams>(job->operations[3].params).cycle, toolpath::CycleKind::ChipBreak);
+    EXPECT_EQ(job->operations[3].geometry.holes, (std::vector<int>{13, 14}));
+    EXPECT_EQ(job->operations[3].name(), "Holes");
     EXPECT_EQ(job->tools[0].tool.name, "Flat D6");
 }
 
@@ -73,7 +121,61 @@ TEST(JobFile, FileIsVersionedJson)
 {
     const std::string text = validText();
     EXPECT_NE(text.find("\"format\": \"camwb-job\""), std::string::npos);
-    EXPECT_NE(text.find("\"version\": 1"), std::string::npos);
+    EXPECT_NE(text.find("\"version\": 3"), std::string::npos);
+}
+
+TEST(JobFile, VersionOneProfileIsReadAsAnOutsideContourWithItsHeights)
+{
+    const std::string legacy = R"({"format": "camwb-job", "version": 1, "name": "Old", "model": "m.step",
+        "stock": {"min": [0, 0, 0], "max": [10, 10, 5]}, "workOffset": 1, "post": "linuxcnc",
+        "tools": [{"number": 1, "name": "D10", "kind": "flat", "diameter": 10, "cornerRadius": 0,
+                   "fluteLength": 22, "length": 50, "flutes": 3, "spindleRpm": 3000, "cuttingFeed": 600,
+                   "plungeFeed": 150}],
+        "operations": [{"type": "profile", "name": "Outer profile", "tool": 1, "face": 2, "finalDepth": 10.0,
+                        "safeHeight": 17.0, "clearanceHeight": 25.0, "direction": "conventional"}]})";
+    auto job = document::parseJob(legacy, "old.camwb");
+    ASSERT_TRUE(job.ok()) << job.error().toString();
+    const document::Operation& op = job->operations[0];
+    EXPECT_EQ(op.kind(), document::OperationKind::Contour);
+    EXPECT_EQ(op.name(), "Outer profile");
+    EXPECT_EQ(op.geometry.faces, std::vector<int>{2});
+    EXPECT_EQ(*op.heights.finalZ, 10.0);
+    EXPECT_EQ(*op.heights.safeZ, 17.0);
+    EXPECT_EQ(*op.heights.clearanceZ, 25.0);
+    EXPECT_FALSE(op.heights.startZ.has_value());
+    EXPECT_EQ(std::get<ops::ContourParams>(op.params).side, ops::ContourSide::Outside);
+    EXPECT_FALSE(std::get<ops::ContourParams>(op.params).climb);
+}
+
+TEST(JobFile, ParametersMayBeLeftOutButNotMisspelled)
+{
+    auto job = document::parseJob(replaced(validText(), "\"pitch\": 0.75,", ""), "job.camwb");
+    ASSERT_TRUE(job.ok()) << job.error().toString();
+    EXPECT_DOUBLE_EQ(std::get<ops::HelixParams>(job->operations[2].params).pitchMm, ops::HelixParams{}.pitchMm);
+    EXPECT_NE(
+        parseError(replaced(validText(), "\"pitch\": 0.75", "\"pich\": 0.75")).message.find("params.pich: unknown"),
+        std::string::npos);
+    EXPECT_NE(parseError(replaced(validText(), "\"pattern\": \"zigzag\"", "\"pattern\": \"spiral\""))
+                  .message.find("expected one of \"offset\", \"zigzag\", got \"spiral\""),
+              std::string::npos);
+    EXPECT_NE(parseError(replaced(validText(), "\"holes\": [\n          12", "\"holes\": [\n          0"))
+                  .message.find("holes"),
+              std::string::npos);
+}
+
+TEST(JobFile, ToolExtrasAreOptional)
+{
+    Job job = sampleJob();
+    job.tools[0].rampFeedMmPerMin = 200;
+    job.tools[0].tool.pointAngleDeg = 118;
+    job.tools[0].tool.centreCutting = false;
+    const std::string text = document::serializeJob(job);
+    auto read = document::parseJob(text, "job.camwb");
+    ASSERT_TRUE(read.ok()) << read.error().toString();
+    EXPECT_EQ(read->tools[0].rampFeedMmPerMin, 200);
+    EXPECT_EQ(read->tools[0].tool.pointAngleDeg, 118);
+    EXPECT_FALSE(read->tools[0].tool.centreCutting);
+    EXPECT_EQ(validText().find("rampFeed"), std::string::npos);
 }
 
 TEST(JobFile, MalformedJsonNamesLineAndColumn)
@@ -87,22 +189,23 @@ TEST(JobFile, MalformedJsonNamesLineAndColumn)
 
 TEST(JobFile, NewerVersionIsRefusedWithAReason)
 {
-    const base::Error e = parseError(replaced(validText(), "\"version\": 1", "\"version\": 99"));
+    const base::Error e = parseError(replaced(validText(), "\"version\": 3", "\"version\": 99"));
     EXPECT_NE(e.message.find("newer"), std::string::npos) << e.message;
 }
 
 TEST(JobFile, MissingOrWrongFieldsAreNamed)
 {
-    EXPECT_NE(parseError(replaced(validText(), "\"finalDepth\"", "\"finalDepht\"")).message.find("finalDepth"),
-              std::string::npos);
+    EXPECT_NE(
+        parseError(replaced(validText(), "\"final\": 10.25", "\"final\": \"deep\"")).message.find("heights.final"),
+        std::string::npos);
     EXPECT_NE(
         parseError(replaced(validText(), "\"workOffset\": 2", "\"workOffset\": \"G55\"")).message.find("workOffset"),
         std::string::npos);
-    EXPECT_NE(parseError(replaced(validText(), "\"type\": \"profile\"", "\"type\": \"knurl\"")).message.find("knurl"),
+    EXPECT_NE(parseError(replaced(validText(), "\"type\": \"contour\"", "\"type\": \"knurl\"")).message.find("knurl"),
               std::string::npos);
     EXPECT_NE(parseError(replaced(validText(), "\"tool\": 3", "\"tool\": 4")).message.find("no tool number 4"),
               std::string::npos);
-    EXPECT_NE(parseError(replaced(validText(), "\"conventional\"", "\"sideways\"")).message.find("direction"),
+    EXPECT_NE(parseError(replaced(validText(), "\"side\": \"inside\"", "\"side\": \"sideways\"")).message.find("side"),
               std::string::npos);
     EXPECT_NE(parseError("[1, 2]").message.find("expected an object"), std::string::npos);
     EXPECT_NE(parseError(replaced(validText(), "camwb-job", "other")).message.find("not a CAM Workbench job"),
@@ -135,13 +238,12 @@ TEST(JobFile, MissingFileIsAnErrorNamingIt)
     EXPECT_EQ(job.error().file, "/nonexistent/x.camwb");
 }
 
-TEST(JobFile, MachineAndPostPropertiesMakeVersionTwo)
+TEST(JobFile, MachineAndPostPropertiesAreKept)
 {
     Job job = sampleJob();
     job.machineId = "emco-concept-mill-105";
     job.postProperties = {{"drillingCalls", "perHole"}, {"sequenceStep", "5"}};
     const std::string text = document::serializeJob(job);
-    EXPECT_NE(text.find("\"version\": 2"), std::string::npos);
     EXPECT_NE(text.find("\"machine\": \"emco-concept-mill-105\""), std::string::npos);
     auto read = document::parseJob(text, "job.camwb");
     ASSERT_TRUE(read.ok()) << read.error().toString();

@@ -71,10 +71,12 @@ TEST(JobPipeline, ErrorsNameTheOperation)
     auto model = document::loadJobModel(job.value());
     ASSERT_TRUE(model.ok());
     document::Job bad = job.value();
-    bad.operations[0].profile.faceIndex = 9999;
+    bad.operations[0].geometry.faces = {9999};
     auto program = document::computeProgram(bad, model.value());
     ASSERT_FALSE(program.ok());
-    EXPECT_NE(program.error().message.find(bad.operations[0].profile.name), std::string::npos)
+    EXPECT_NE(
+        program.error().message.find("contour \"" + bad.operations[0].name() + "\": face 9999 is not in the model"),
+        std::string::npos)
         << program.error().message;
 }
 

@@ -1,0 +1,63 @@
+// camwb-cli cl <job.camwb> [-o <file>]: recompute a job's operations and write the CL trace
+// (toolpath/TraceWriter.h) instead of NC, with each operation's motion counts on stderr, so
+// that what an operation produced can be read, diffed and kept as a golden before any post.
+#include "Cli.h"
+
+#include "base/AtomicFile.h"
+#include "document/JobFile.h"
+#include "document/JobPipeline.h"
+#include "toolpath/TraceWriter.h"
+
+#include <iostream>
+
+namespace camwb::cli {
+
+int clCommand(const std::vector<std::string>& args)
+{
+    std::string jobPath, output;
+    for (std::size_t i = 0; i < args.size(); ++i) {
+        if (args[i] == "-o" || args[i] == "--output") {
+            if (i + 1 >= args.size())
+                return usageError(args[i] + " needs a file name");
+            output = args[++i];
+        } else if (jobPath.empty() && !args[i].empty() && args[i][0] != '-') {
+            jobPath = args[i];
+        } else {
+            return usageError("unexpected argument '" + args[i] + "'");
+        }
+    }
+    if (jobPath.empty())
+        return usageError("cl needs a job file");
+
+    auto job = document::loadJob(jobPath);
+    if (!job)
+        return fail(job.error().toString());
+    auto model = document::loadJobModel(job.value());
+    if (!model)
+        return fail(model.error().toString());
+    document::ProgramReport report;
+    auto program = document::computeProgram(job.value(), model.value(), {}, &report);
+    if (!program)
+        return fail(jobPath + ": " + program.error().message);
+
+    for (std::size_t i = 0; i < report.counts.size(); ++i) {
+        const document::Operation& op = job->operations[i];
+        const ops::MotionCounts& c = report.counts[i];
+        std::cerr << "camwb-cli: " << document::kindName(op.kind()) << " \"" << op.name() << "\": " << c.lines
+                  << " lines, " << c.arcs << " arcs, " << c.helices << " helices, " << c.cycles << " cycles, "
+                  << c.rapids << " rapids\n";
+    }
+    for (const std::string& warning : report.warnings)
+        std::cerr << "camwb-cli: warning: " << warning << "\n";
+
+    const std::string trace = toolpath::traceOf(program.value());
+    if (output.empty()) {
+        std::cout << trace;
+        return kExitOk;
+    }
+    if (base::Status written = base::writeFileAtomically(output, trace); !written)
+        return fail(written.error().toString());
+    return kExitOk;
+}
+
+}  // namespace camwb::cli

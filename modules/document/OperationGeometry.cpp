@@ -1,0 +1,195 @@
+#include "document/OperationGeometry.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace camwb::document {
+
+namespace {
+
+std::string label(const Operation& op) { return std::string(kindName(op.kind())) + " \"" + op.name() + "\""; }
+
+base::Error refError(const Operation& op, const std::string& message)
+{
+    return base::makeError(label(op) + ": " + message);
+}
+
+// Pocket faces: the largest faces are boundaries; a face lying inside another one's outer loop
+// (and not in one of its holes) is an island of it: its outer loop becomes a hole there.
+std::vector<geom::Region> nestFaces(std::vector<geom::Region> faces)
+{
+    std::stable_sort(faces.begin(), faces.end(),
+                     [](const geom::Region& a, const geom::Region& b) { return a.area() > b.area(); });
+    std::vector<geom::Region> boundaries;
+    for (geom::Region& face : faces) {
+        const base::Vec2 probe = face.outer.segments.front().start;
+        auto host = std::find_if(boundaries.begin(), boundaries.end(),
+                                 [&](const geom::Region& b) { return b.contains(probe); });
+        if (host == boundaries.end())
+            boundaries.push_back(std::move(face));
+        else
+            host->holes.push_back(face.outer.reversed());
+    }
+    return boundaries;
+}
+
+base::Result<OperationGeometry> resolveFaces(const Operation& op, const occ::Model& model, double tolerance,
+                                             OperationGeometry geometry)
+{
+    std::vector<geom::Region> faces;
+    for (int face : op.geometry.faces) {
+        if (face < 1 || face > model.faceCount())
+            return refError(op, "face " + std::to_string(face) + " is not in the model (it has " +
+                                    std::to_string(model.faceCount()) + " faces)");
+        if (op.kind() == OperationKind::Contour) {
+            auto outline = model.planarFaceOuterProfile(face, tolerance);
+            if (!outline)
+                return refError(op, outline.error().message);
+            geometry.contours.push_back(std::move(outline).value());
+        } else {
+            auto region = model.planarFaceRegion(face, tolerance);
+            if (!region)
+                return refError(op, region.error().message);
+            faces.push_back(std::move(region).value());
+        }
+    }
+    if (!faces.empty())
+        geometry.regions = nestFaces(std::move(faces));
+    return geometry;
+}
+
+double toleranceOf(const Operation& op)
+{
+    return std::visit(
+        [](const auto& p) {
+            if constexpr (requires { p.toleranceMm; })
+                return p.toleranceMm;
+            else
+                return 0.01;
+        },
+        op.params);
+}
+
+}  // namespace
+
+base::Result<OperationGeometry> resolveGeometry(const Operation& op, const occ::Model& model)
+{
+    const OperationKind kind = op.kind();
+    const bool wantsHoles = kind == OperationKind::Helix || kind == OperationKind::Drill;
+    if (!model.hasBRep())
+        return refError(op, "the model has no solid geometry (STL meshes cannot be machined from)");
+    if (wantsHoles && (!op.geometry.faces.empty() || !op.geometry.edges.empty()) && op.geometry.holes.empty())
+        return refError(op, "works on holes; select holes, not faces or edges");
+    if (!wantsHoles && !op.geometry.holes.empty())
+        return refError(op, "works on faces and edges, not holes");
+    if (kind == OperationKind::Pocket && !op.geometry.edges.empty())
+        return refError(op, "a pocket is made from faces; edges are not supported");
+
+    const double tolerance = toleranceOf(op);
+    OperationGeometry geometry;
+    if (!op.geometry.edges.empty()) {
+        auto chains = model.edgeChains(op.geometry.edges, tolerance);
+        if (!chains)
+            return refError(op, chains.error().message);
+        geometry.contours = std::move(chains).value();
+    }
+    if (!op.geometry.holes.empty()) {
+        const std::vector<geom::Hole> all = model.holes();
+        for (int face : op.geometry.holes) {
+            auto hole = std::find_if(all.begin(), all.end(), [&](const geom::Hole& h) { return h.faceIndex == face; });
+            if (hole == all.end())
+                return refError(op, "face " + std::to_string(face) + " is not a vertical cylindrical hole");
+            geometry.holes.push_back(*hole);
+        }
+    }
+    auto resolved = resolveFaces(op, model, tolerance, std::move(geometry));
+    if (!resolved)
+        return resolved;
+    if (resolved->contours.empty() && resolved->regions.empty() && resolved->holes.empty())
+        return refError(op,
+                        "nothing selected: choose " + std::string(wantsHoles                      ? "holes"
+                                                                  : kind == OperationKind::Pocket ? "faces"
+                                                                                                  : "faces or edges"));
+    return resolved;
+}
+
+ops::Heights resolveHeights(const Operation& op, const OperationGeometry& geometry, const occ::Model& model,
+                            const Stock& stock)
+{
+    const double top = std::max(stock.max.z, model.boundsMax().z);
+    ops::Heights h;
+    h.clearanceZ = top + 10;
+    h.safeZ = top + 2;
+    h.startZ = top;
+    h.finalZ = model.boundsMin().z;
+
+    double featureTop = -1e300, featureBottom = 1e300;
+    for (const geom::Hole& hole : geometry.holes) {
+        featureTop = std::max(featureTop, hole.topZ);
+        featureBottom = std::min(featureBottom, hole.bottomZ);
+    }
+    switch (op.kind()) {
+    case OperationKind::Pocket:
+        // The floor: the lowest selected face.
+        for (int face : op.geometry.faces)
+            featureBottom = std::min(featureBottom, model.face(face).planeZ);
+        h.finalZ = featureBottom < 1e299 ? featureBottom : h.finalZ;
+        break;
+    case OperationKind::Contour:
+        // Through the part along a face's outline; at the level of selected edges.
+        for (int edge : op.geometry.edges)
+            featureBottom = std::min(featureBottom, model.edge(edge).start.z);
+        if (op.geometry.faces.empty() && featureBottom < 1e299)
+            h.finalZ = featureBottom;
+        break;
+    case OperationKind::Helix:
+    case OperationKind::Drill:
+        if (featureTop > -1e299) {
+            h.startZ = featureTop;
+            h.finalZ = featureBottom;
+        }
+        break;
+    }
+    if (op.heights.clearanceZ)
+        h.clearanceZ = *op.heights.clearanceZ;
+    if (op.heights.safeZ)
+        h.safeZ = *op.heights.safeZ;
+    if (op.heights.startZ)
+        h.startZ = *op.heights.startZ;
+    if (op.heights.finalZ)
+        h.finalZ = *op.heights.finalZ;
+    return h;
+}
+
+base::Result<ops::OpResult> computeOperation(const Job& job, int index, const occ::Model& model,
+                                             const ops::Progress& progress)
+{
+    if (index < 0 || index >= static_cast<int>(job.operations.size()))
+        return base::makeError("no operation " + std::to_string(index + 1) + " in the job");
+    const Operation& op = job.operations[index];
+    const ops::ToolController* tc = job.tool(op.toolNumber);
+    if (!tc)
+        return refError(op, "no tool number " + std::to_string(op.toolNumber) + " in the job");
+    auto geometry = resolveGeometry(op, model);
+    if (!geometry)
+        return geometry.error();
+    const ops::Heights heights = resolveHeights(op, geometry.value(), model, job.stock);
+    const OperationGeometry& g = geometry.value();
+
+    return std::visit(
+        [&](auto params) -> base::Result<ops::OpResult> {
+            params.heights = heights;
+            using P = decltype(params);
+            if constexpr (std::is_same_v<P, ops::ContourParams>)
+                return ops::computeContour(g.contours, params, *tc, index, progress);
+            else if constexpr (std::is_same_v<P, ops::PocketParams>)
+                return ops::computePocket(g.regions, params, *tc, index, progress);
+            else if constexpr (std::is_same_v<P, ops::HelixParams>)
+                return ops::computeHelix(g.holes, params, *tc, index, progress);
+            else
+                return ops::computeDrill(g.holes, params, *tc, index, progress);
+        },
+        op.params);
+}
+
+}  // namespace camwb::document

@@ -1,0 +1,93 @@
+// The parameters of each operation kind as a list of named fields, so that reading and writing a
+// .camwb file walk the same list and cannot drift apart. `visitFields(params, f)` calls f(key, member)
+// for plain members (double, int, bool, std::string) and f(key, EnumField{...}) for enums.
+#pragma once
+
+#include "ops/ContourOp.h"
+#include "ops/DrillOp.h"
+#include "ops/HelixOp.h"
+#include "ops/PocketOp.h"
+
+#include <initializer_list>
+#include <string_view>
+
+namespace camwb::document::detail {
+
+// An enum member with its names in the file, in enum order.
+template <class E> struct EnumField {
+    E& value;
+    std::initializer_list<std::string_view> names;
+};
+
+template <class E> EnumField<E> enumField(E& e, std::initializer_list<std::string_view> names) { return {e, names}; }
+
+template <class T> inline constexpr bool kIsEnumField = false;
+template <class E> inline constexpr bool kIsEnumField<EnumField<E>> = true;
+
+template <class F> void visitFields(ops::ContourParams& p, F&& f)
+{
+    f("side", enumField(p.side, {"outside", "inside", "on", "left", "right"}));
+    f("climb", p.climb);
+    f("radialStock", p.radialStockMm);
+    f("axialStock", p.axialStockMm);
+    f("stepDown", p.stepDownMm);
+    f("radialPasses", p.radialPasses);
+    f("radialStepover", p.radialStepoverMm);
+    f("leadIn", enumField(p.leadIn, {"none", "arc", "line"}));
+    f("leadOut", enumField(p.leadOut, {"none", "arc", "line"}));
+    f("leadRadius", p.leadRadiusMm);
+    f("entry", enumField(p.entry, {"plunge", "ramp", "helix"}));
+    f("rampAngle", p.rampAngleDeg);
+    f("helixDiameter", p.helixDiameterMm);
+    f("helixPitch", p.helixPitchMm);
+    f("tabCount", p.tabCount);
+    f("tabWidth", p.tabWidthMm);
+    f("tabHeight", p.tabHeightMm);
+    f("compensation", enumField(p.compensation, {"toolCentre", "control"}));
+    f("tolerance", p.toleranceMm);
+}
+
+template <class F> void visitFields(ops::PocketParams& p, F&& f)
+{
+    f("pattern", enumField(p.pattern, {"offset", "zigzag"}));
+    f("zigZagAngle", p.zigZagAngleDeg);
+    f("stepoverPercent", p.stepoverPercent);
+    f("stepover", p.stepoverMm);
+    f("stepDown", p.stepDownMm);
+    f("wallStock", p.wallStockMm);
+    f("floorStock", p.floorStockMm);
+    f("finishWalls", p.finishWalls);
+    f("finishFloor", p.finishFloor);
+    f("climb", p.climb);
+    f("entry", enumField(p.entry, {"plunge", "ramp", "helix"}));
+    f("helixDiameter", p.helixDiameterMm);
+    f("helixPitch", p.helixPitchMm);
+    f("rampAngle", p.rampAngleDeg);
+    f("tolerance", p.toleranceMm);
+}
+
+template <class F> void visitFields(ops::HelixParams& p, F&& f)
+{
+    f("depthsFromHoles", p.depthsFromHoles);
+    f("pitch", p.pitchMm);
+    f("climb", p.climb);
+    f("radialStock", p.radialStockMm);
+    f("finishingCircle", p.finishingCircle);
+    f("breakthrough", p.breakthroughMm);
+    f("tolerance", p.toleranceMm);
+}
+
+template <class F> void visitFields(ops::DrillParams& p, F&& f)
+{
+    // CycleKind also has Tap and Bore, which drilling does not offer: the names stop at chipBreak.
+    f("cycle", enumField(p.cycle, {"drill", "dwell", "peck", "chipBreak"}));
+    f("depthsFromHoles", p.depthsFromHoles);
+    f("peck", p.peckMm);
+    f("dwell", p.dwellSeconds);
+    f("retractToClearance", p.retractToClearance);
+    f("keepOrder", p.keepOrder);
+    f("depthAtShoulder", p.depthAtShoulder);
+    f("breakthrough", p.breakthroughMm);
+}
+
+}  // namespace camwb::document::detail

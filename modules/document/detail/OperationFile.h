@@ -1,0 +1,17 @@
+// Reading and writing one operation of a .camwb file (JobFile.cpp does the rest of the job).
+// Version 3 layout: {"type", "name", "tool", "geometry": {"faces", "edges", "holes"},
+// "heights": {only the overridden ones of "clearance", "safe", "start", "final"}, "params": {...}}.
+// Versions 1-2 had only {"type": "profile", "face", "finalDepth", "safeHeight", "clearanceHeight",
+// "direction"}; it is read as an outside contour of that face with those heights overridden.
+#pragma once
+
+#include "base/JsonRead.h"
+#include "document/Job.h"
+
+namespace camwb::document::detail {
+
+// Throws base::jsonread::JsonFieldError naming the field ("job.operations[1].params.stepover: ...").
+Operation readOperation(const base::jsonread::Json& o, const std::string& where);
+nlohmann::ordered_json writeOperation(const Operation& op);
+
+}  // namespace camwb::document::detail

@@ -1,5 +1,6 @@
 // A CAD model loaded from a file (STEP, IGES, BREP or STL) and the questions the workbench asks of it:
-// which faces it has, the outline of a planar face as a geom::Profile, and a mesh for display.
+// which faces and edges it has, planar faces as geom profiles and regions, picked edges as chains,
+// its vertical holes, and a mesh for display.
 // OCCT stays behind the pimpl: nothing that includes this header sees an OCCT type.
 #pragma once
 
@@ -31,7 +32,7 @@ struct FaceInfo {
 struct EdgeInfo {
     int index = 0;  // 1-based; 0 = no such edge
     enum class Curve { Line, Circle, BSpline, Other } curve = Curve::Other;
-    base::Vec3 start, end;
+    base::Vec3 start, end;  // in the curve's parameter direction (the direction edgeChains follows)
     double lengthMm = 0;
 };
 
@@ -57,28 +58,37 @@ public:
     int topPlanarFace() const;
 
     // Outer wire of a planar face with normal +Z or -Z as a closed counter-clockwise Profile in XY.
-    // Lines and circle arcs stay exact; other curves become line segments within toleranceMm.
+    // Lines and circle arcs stay exact; other curves become lines and arcs within toleranceMm
+    // (sampled, then geom::fitLinesAndArcs).
     base::Result<geom::Profile> planarFaceOuterProfile(int faceIndex, double toleranceMm = 0.01) const;
 
     // The whole face seen from +Z: outer wire as the outer loop, inner wires as holes (islands and
     // openings). Faces with normal +Z or -Z only. Lines and circle arcs stay exact; B-splines and
-    // other curves become lines and arcs within toleranceMm (geom/ArcFit.h).
+    // other curves become lines and arcs within toleranceMm (geom/ArcFit.h). Consecutive segments
+    // meet exactly (they end on the wire's vertices).
     base::Result<geom::Region> planarFaceRegion(int faceIndex, double toleranceMm = 0.01) const;
 
     int edgeCount() const;           // edges in TopExp::MapShapes order
     EdgeInfo edge(int index) const;  // 1-based; EdgeInfo{} (index 0) when out of range
     // The edges chained end to end into profiles projected on XY (each open or closed; chain
-    // direction follows the first edge of each chain as listed). Errors: unknown edge index,
-    // an edge used twice, an edge whose ends differ in Z from its chain's plane... (vertical edges
-    // are refused), branching (three edges at one vertex).
+    // direction follows the first listed edge of each chain, in its parameter direction; chains in
+    // the order of their first listed edge). Ends within 1e-6 mm meet. Curves as in
+    // planarFaceRegion. Errors, naming the edge: unknown edge index, an edge listed twice, an edge
+    // not in an XY plane (Z varies by more than 1e-6 mm; vertical edges are refused), branching
+    // (three edge ends at one point), no edges.
     base::Result<std::vector<geom::Profile>> edgeChains(const std::vector<int>& edgeIndices,
                                                         double toleranceMm = 0.01) const;
 
     // Cylindrical holes with a vertical axis (material outside the cylinder), found on the whole
-    // model; half-cylinder faces of one hole are merged (faceIndex = the first). Ordered by faceIndex.
+    // model; faces of one hole (same axis and radius within 1e-6 mm, touching Z ranges, e.g. half
+    // cylinders) are merged, faceIndex = the smallest; they must cover the full circle (concave
+    // fillets are not holes). Holes covered at the top (not reachable from +Z) are left out.
+    // through: no material just below the bottom inside the circle (a flat floor, a drill-point
+    // cone or a counterbore shoulder make a hole blind). Ordered by faceIndex; empty for STL.
     std::vector<geom::Hole> holes() const;
     // A circular edge with a vertical axis as a hole (a picked circle): diameter and centre from
-    // the circle, top and bottom at its Z. Error when the edge is not such a circle.
+    // the circle (full or an arc), top and bottom at its Z, faceIndex 0, through false. Error when
+    // the edge is not such a circle.
     base::Result<geom::Hole> circleEdgeAsHole(int edgeIndex) const;
 
     // Triangles (triangleFace filled; 0 for STL), per-vertex normals, feature edges as polylines.

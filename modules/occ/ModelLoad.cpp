@@ -191,6 +191,10 @@ void describeShape(ModelData& data)
     data.faceInfos.reserve(static_cast<std::size_t>(data.faces.Extent()));
     for (int i = 1; i <= data.faces.Extent(); ++i)
         data.faceInfos.push_back(describeFace(TopoDS::Face(data.faces(i)), i));
+    TopExp::MapShapes(data.shape, TopAbs_EDGE, data.edges);
+    data.edgeInfos.reserve(static_cast<std::size_t>(data.edges.Extent()));
+    for (int i = 1; i <= data.edges.Extent(); ++i)
+        data.edgeInfos.push_back(describeEdge(TopoDS::Edge(data.edges(i)), i));
 
     Bnd_Box box;
     BRepBndLib::AddOptimal(data.shape, box, Standard_False, Standard_False);

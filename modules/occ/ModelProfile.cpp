@@ -1,83 +1,29 @@
-// Model::planarFaceOuterProfile: the outer wire of a face lying in an XY plane, as a geom::Profile.
-// Circles stay arcs (centre and direction from the curve and the edge orientation); other curves
-// are split into lines within the requested tolerance.
+// Model::planarFaceOuterProfile and Model::planarFaceRegion: the wires of a face lying in an XY
+// plane as geom profiles (the edge-to-segment rules live in EdgeProfile.cpp).
 #include "occ/Model.h"
 
+#include "occ/detail/EdgeProfile.h"
 #include "occ/detail/ModelData.h"
 
-#include <BRepAdaptor_Curve.hxx>
 #include <BRepTools.hxx>
-#include <BRepTools_WireExplorer.hxx>
-#include <BRep_Tool.hxx>
-#include <GCPnts_QuasiUniformDeflection.hxx>
 #include <Standard_Failure.hxx>
-#include <TopExp.hxx>
+#include <TopExp_Explorer.hxx>
 #include <TopoDS.hxx>
-#include <TopoDS_Edge.hxx>
-#include <TopoDS_Face.hxx>
-#include <TopoDS_Vertex.hxx>
-#include <TopoDS_Wire.hxx>
 
-#include <algorithm>
 #include <cmath>
 #include <string>
-#include <vector>
 
 namespace camwb::occ {
 namespace {
 
-using base::Vec2;
-using geom::Segment;
+std::string faceName(int faceIndex) { return "face " + std::to_string(faceIndex); }
 
-Vec2 xy(const gp_Pnt& p) { return {p.X(), p.Y()}; }
-
-// Appends one edge, travelled in its wire orientation from `from` to `to` (its vertices, so that
-// consecutive segments meet exactly).
-void appendEdge(geom::Profile& profile, const TopoDS_Edge& edge, Vec2 from, Vec2 to, double toleranceMm)
+// Counter-clockwise seen from +Z (or clockwise when `ccw` is false), whatever way the wire ran.
+geom::Profile oriented(geom::Profile profile, bool ccw)
 {
-    BRepAdaptor_Curve curve(edge);
-    const bool reversed = edge.Orientation() == TopAbs_REVERSED;
-    const GeomAbs_CurveType type = curve.GetType();
-
-    if (type == GeomAbs_Line) {
-        if (distance(from, to) > 0)
-            profile.segments.push_back(Segment::line(from, to));
-        return;
-    }
-    if (type == GeomAbs_Circle) {
-        const gp_Circ circle = curve.Circle();
-        const double axisZ = circle.Axis().Direction().Z();
-        if (1 - std::abs(axisZ) < kZAxisTolerance) {
-            // Parameters run counter-clockwise about the circle's axis; the edge may run against them.
-            const bool ccw = (axisZ > 0) != reversed;
-            const Vec2 centre = xy(circle.Location());
-            if (distance(from, to) <= 1e-9) {
-                // A full circle: two half arcs, so that no segment starts where it ends.
-                const Vec2 opposite = centre * 2 - from;
-                profile.segments.push_back(Segment::arc(from, opposite, centre, ccw));
-                profile.segments.push_back(Segment::arc(opposite, to, centre, ccw));
-            } else {
-                profile.segments.push_back(Segment::arc(from, to, centre, ccw));
-            }
-            return;
-        }
-    }
-
-    GCPnts_QuasiUniformDeflection points(curve, toleranceMm, curve.FirstParameter(), curve.LastParameter());
-    std::vector<Vec2> polyline;
-    if (points.IsDone() && points.NbPoints() >= 2) {
-        for (int i = 1; i <= points.NbPoints(); ++i)
-            polyline.push_back(xy(points.Value(i)));
-        if (reversed)
-            std::reverse(polyline.begin(), polyline.end());
-    }
-    if (polyline.size() < 2)
-        polyline = {from, to};
-    polyline.front() = from;
-    polyline.back() = to;
-    for (std::size_t i = 0; i + 1 < polyline.size(); ++i)
-        if (distance(polyline[i], polyline[i + 1]) > 0)
-            profile.segments.push_back(Segment::line(polyline[i], polyline[i + 1]));
+    if ((profile.signedArea() > 0) != ccw)
+        profile = profile.reversed();
+    return profile;
 }
 
 base::Result<geom::Profile> outerProfile(const TopoDS_Face& face, double toleranceMm)
@@ -85,49 +31,66 @@ base::Result<geom::Profile> outerProfile(const TopoDS_Face& face, double toleran
     const TopoDS_Wire wire = BRepTools::OuterWire(face);
     if (wire.IsNull())
         return base::makeError("the face has no outer wire");
-    geom::Profile profile;
-    profile.closed = true;
-    for (BRepTools_WireExplorer it(wire, face); it.More(); it.Next()) {
-        const TopoDS_Edge& edge = it.Current();
-        if (BRep_Tool::Degenerated(edge))
-            continue;
-        // Oriented vertices: the first is where the edge starts in the wire's direction.
-        const TopoDS_Vertex first = TopExp::FirstVertex(edge, Standard_True);
-        const TopoDS_Vertex last = TopExp::LastVertex(edge, Standard_True);
-        if (first.IsNull() || last.IsNull())
-            return base::makeError("the outer wire has an edge without vertices");
-        appendEdge(profile, edge, xy(BRep_Tool::Pnt(first)), xy(BRep_Tool::Pnt(last)), toleranceMm);
+    base::Result<geom::Profile> profile = wireProfile(wire, face, toleranceMm);
+    if (!profile)
+        return profile;
+    return oriented(std::move(profile.value()), true);
+}
+
+base::Result<geom::Region> region(const TopoDS_Face& face, double toleranceMm)
+{
+    const TopoDS_Wire outerWire = BRepTools::OuterWire(face);
+    if (outerWire.IsNull())
+        return base::makeError("the face has no outer wire");
+    geom::Region result;
+    for (TopExp_Explorer it(face, TopAbs_WIRE); it.More(); it.Next()) {
+        const TopoDS_Wire& wire = TopoDS::Wire(it.Current());
+        const bool outer = wire.IsSame(outerWire);
+        base::Result<geom::Profile> profile = wireProfile(wire, face, toleranceMm);
+        if (!profile)
+            return profile.error();
+        if (outer)
+            result.outer = oriented(std::move(profile.value()), true);
+        else
+            result.holes.push_back(oriented(std::move(profile.value()), false));
     }
-    if (profile.empty())
-        return base::makeError("the outer wire has no edges");
-    // The wire runs counter-clockwise about the face normal; faces looking down come out clockwise.
-    if (profile.signedArea() < 0)
-        profile = profile.reversed();
-    return profile;
+    return result;
+}
+
+// Runs `make` on a face normal to Z, turning the checks and OCCT failures into errors naming the face.
+template <class T, class Make>
+base::Result<T> withZFace(const Model& model, const ModelData* data, int faceIndex, double toleranceMm, Make make)
+{
+    if (faceIndex < 1 || faceIndex > model.faceCount())
+        return base::makeError(faceName(faceIndex) + " does not exist (the model has " +
+                               std::to_string(model.faceCount()) + " faces)");
+    const FaceInfo info = model.face(faceIndex);
+    if (!info.planar)
+        return base::makeError(faceName(faceIndex) + " is not planar");
+    if (1 - std::abs(info.normal.z) >= kZAxisTolerance)
+        return base::makeError(faceName(faceIndex) + " is not normal to Z");
+    if (!(toleranceMm > 0))
+        return base::makeError("the tolerance must be positive");
+    try {
+        base::Result<T> result = make(TopoDS::Face(data->faces(faceIndex)), toleranceMm);
+        if (!result)
+            return base::makeError(faceName(faceIndex) + ": " + result.error().message);
+        return result;
+    } catch (const Standard_Failure& e) {
+        return base::makeError(faceName(faceIndex) + ": OCCT failure: " + e.GetMessageString());
+    }
 }
 
 }  // namespace
 
 base::Result<geom::Profile> Model::planarFaceOuterProfile(int faceIndex, double toleranceMm) const
 {
-    if (faceIndex < 1 || faceIndex > faceCount())
-        return base::makeError("face " + std::to_string(faceIndex) + " does not exist (the model has " +
-                               std::to_string(faceCount()) + " faces)");
-    const FaceInfo info = face(faceIndex);
-    if (!info.planar)
-        return base::makeError("face " + std::to_string(faceIndex) + " is not planar");
-    if (1 - std::abs(info.normal.z) >= kZAxisTolerance)
-        return base::makeError("face " + std::to_string(faceIndex) + " is not normal to Z");
-    if (!(toleranceMm > 0))
-        return base::makeError("the tolerance must be positive");
-    try {
-        base::Result<geom::Profile> profile = outerProfile(TopoDS::Face(m_data->faces(faceIndex)), toleranceMm);
-        if (!profile)
-            return base::makeError("face " + std::to_string(faceIndex) + ": " + profile.error().message);
-        return profile;
-    } catch (const Standard_Failure& e) {
-        return base::makeError("face " + std::to_string(faceIndex) + ": OCCT failure: " + e.GetMessageString());
-    }
+    return withZFace<geom::Profile>(*this, m_data.get(), faceIndex, toleranceMm, outerProfile);
+}
+
+base::Result<geom::Region> Model::planarFaceRegion(int faceIndex, double toleranceMm) const
+{
+    return withZFace<geom::Region>(*this, m_data.get(), faceIndex, toleranceMm, region);
 }
 
 }  // namespace camwb::occ

@@ -5,6 +5,7 @@
 #include "occ/Model.h"
 
 #include <TopTools_IndexedMapOfShape.hxx>
+#include <TopoDS_Edge.hxx>
 #include <TopoDS_Shape.hxx>
 
 #include <mutex>
@@ -21,6 +22,8 @@ struct ModelData {
     TopoDS_Shape shape;                // null for STL
     TopTools_IndexedMapOfShape faces;  // TopExp::MapShapes(shape, TopAbs_FACE) order
     std::vector<FaceInfo> faceInfos;   // [i - 1] describes faces(i)
+    TopTools_IndexedMapOfShape edges;  // TopExp::MapShapes(shape, TopAbs_EDGE) order
+    std::vector<EdgeInfo> edgeInfos;   // [i - 1] describes edges(i)
     DisplayMesh stlMesh;               // STL only: the file's triangles
     base::Vec3 boundsMin;
     base::Vec3 boundsMax;
@@ -28,5 +31,8 @@ struct ModelData {
     // BRepMesh writes the triangulation into the shared shape; one mesher per model at a time.
     mutable std::mutex meshMutex;
 };
+
+// Curve kind, ends in the edge's parameter direction, length (ModelEdges.cpp).
+EdgeInfo describeEdge(const TopoDS_Edge& edge, int index);
 
 }  // namespace camwb::occ

@@ -1,61 +1,36 @@
 // writeExamplePart: builds the teaching block with OCCT primitives and booleans and writes it as STEP.
 #include "occ/ExamplePart.h"
 
+#include "occ/detail/PartBuilders.h"
+
 #include <APIHeaderSection_MakeHeader.hxx>
-#include <BRepAlgoAPI_Cut.hxx>
-#include <BRepFilletAPI_MakeFillet.hxx>
-#include <BRepPrimAPI_MakeBox.hxx>
-#include <BRepPrimAPI_MakeCylinder.hxx>
-#include <BRep_Tool.hxx>
 #include <IFSelect_ReturnStatus.hxx>
 #include <STEPControl_Writer.hxx>
 #include <Standard_Failure.hxx>
 #include <TCollection_HAsciiString.hxx>
-#include <TopExp.hxx>
-#include <TopExp_Explorer.hxx>
-#include <TopoDS.hxx>
-#include <TopoDS_Edge.hxx>
-#include <TopoDS_Vertex.hxx>
-#include <gp_Ax2.hxx>
-#include <gp_Pnt.hxx>
 
-#include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <string>
 #include <system_error>
+#include <utility>
 
 namespace camwb::occ {
 namespace {
 
-// A box from (x0, y0, z0) to (x1, y1, z1) with its vertical edges rounded to `radius`.
-TopoDS_Shape roundedBox(gp_Pnt lo, gp_Pnt hi, double radius)
-{
-    const TopoDS_Shape box = BRepPrimAPI_MakeBox(lo, hi).Shape();
-    BRepFilletAPI_MakeFillet fillet(box);
-    for (TopExp_Explorer it(box, TopAbs_EDGE); it.More(); it.Next()) {
-        const TopoDS_Edge& edge = TopoDS::Edge(it.Current());
-        const gp_Pnt a = BRep_Tool::Pnt(TopExp::FirstVertex(edge));
-        const gp_Pnt b = BRep_Tool::Pnt(TopExp::LastVertex(edge));
-        if (std::abs(a.X() - b.X()) < 1e-9 && std::abs(a.Y() - b.Y()) < 1e-9)
-            fillet.Add(radius, edge);  // the explorer meets each edge twice; Add ignores repeats
-    }
-    return fillet.Shape();
-}
-
 TopoDS_Shape buildExamplePart()
 {
-    const TopoDS_Shape block = roundedBox(gp_Pnt(0, 0, 0), gp_Pnt(90, 60, 15), 8);
-    // Tools reach 1 mm past the faces they open so the booleans see no coplanar faces.
-    const TopoDS_Shape pocket = roundedBox(gp_Pnt(35 - 20, 30 - 12, 10), gp_Pnt(35 + 20, 30 + 12, 16), 5);
-    const TopoDS_Shape hole = BRepPrimAPI_MakeCylinder(gp_Ax2(gp_Pnt(72, 30, -1), gp::DZ()), 5, 17).Shape();
-
-    BRepAlgoAPI_Cut withPocket(block, pocket);
-    if (!withPocket.IsDone())
-        throw Standard_Failure("cutting the pocket failed");
-    BRepAlgoAPI_Cut withHole(withPocket.Shape(), hole);
-    if (!withHole.IsDone())
-        throw Standard_Failure("cutting the hole failed");
-    return withHole.Shape();
+    using parts::cut, parts::roundedBox, parts::verticalCylinder;
+    TopoDS_Shape part = roundedBox(gp_Pnt(0, 0, 0), gp_Pnt(90, 60, 15), 8);
+    // Tools reach 1 mm past the faces they open so the booleans see no coplanar faces. The pocket
+    // tool has the island cut out of it, so the island keeps the block's top at Z 15.
+    const TopoDS_Shape pocket = roundedBox(gp_Pnt(33 - 22, 30 - 18, 10), gp_Pnt(33 + 22, 30 + 18, 16), 6);
+    part = cut(part, cut(pocket, verticalCylinder(33, 30, 5, 9, 17), "the island"), "the pocket");
+    part = cut(part, verticalCylinder(72, 30, 5, -1, 16), "the through hole");
+    // Blind holes concentric with the R8 corners: 5.5 mm of wall to the outside, about 5 mm to the pocket.
+    for (const auto& [x, y] : {std::pair{8.0, 8.0}, {82.0, 8.0}, {82.0, 52.0}, {8.0, 52.0}})
+        part = cut(part, verticalCylinder(x, y, 2.5, 7, 16), "a drilled hole");
+    return part;
 }
 
 }  // namespace

@@ -9,9 +9,11 @@
 namespace camwb::occ {
 
 // A 90 x 60 x 15 mm block (corner at the origin, top at Z=15) with its four vertical edges rounded
-// R8, a rectangular pocket 40 x 24 mm, 5 mm deep, corner radius 5, centred at (35, 30), and a
-// through hole of diameter 10 at (72, 30). Written as AP214 STEP in mm, with a fixed header time
-// stamp so that regenerating gives the same file.
+// R8; a pocket 44 x 36 mm, 5 mm deep (floor at Z=10), corner radius 6, centred at (33, 30), with a
+// round island of diameter 10 at its centre rising back to the top (Z=15); a through hole of
+// diameter 10 at (72, 30); four blind holes of diameter 5, 8 mm deep (flat bottom at Z=7) at
+// (8, 8), (82, 8), (82, 52) and (8, 52), concentric with the rounded corners. Written as AP214 STEP
+// in mm, with a fixed header time stamp so that regenerating gives the same file.
 base::Status writeExamplePart(const std::string& stepPath);
 
 }  // namespace camwb::occ

@@ -1,4 +1,5 @@
-// The example part built, written as STEP, read back: faces, the top face's profile, meshing.
+// The example part built, written as STEP, read back: faces, the top face's profile, the pocket
+// floor with its island, the holes, meshing, and the face indices the example job relies on.
 #include "OccTestUtil.h"
 
 #include "occ/ExamplePart.h"
@@ -10,6 +11,7 @@
 #include <numbers>
 #include <set>
 #include <thread>
+#include <vector>
 
 namespace camwb::occ {
 namespace {
@@ -76,8 +78,9 @@ TEST_F(ExamplePartTest, FacesOfTheBlock)
 {
     EXPECT_FALSE(model->empty());
     EXPECT_TRUE(model->hasBRep());
-    // Block: 4 sides + 4 corner cylinders + top + bottom; pocket: 4 walls + 4 corners + floor; hole: 1.
-    EXPECT_EQ(model->faceCount(), 20);
+    // Block: 4 sides + 4 corner cylinders + top + bottom; pocket: 4 walls + 4 corners + floor; island:
+    // side + top; through hole: 1; drilled holes: 4 x (side + floor).
+    EXPECT_EQ(model->faceCount(), 10 + 9 + 2 + 1 + 8);
     int planar = 0;
     for (int i = 1; i <= model->faceCount(); ++i) {
         const FaceInfo f = model->face(i);
@@ -88,7 +91,7 @@ TEST_F(ExamplePartTest, FacesOfTheBlock)
             EXPECT_NEAR(f.normal.length(), 1.0, 1e-12);
         }
     }
-    EXPECT_EQ(planar, 4 + 2 + 4 + 1);
+    EXPECT_EQ(planar, 4 + 2 + 4 + 1 + 1 + 4);
     EXPECT_EQ(model->face(0).index, 0);
     EXPECT_EQ(model->face(model->faceCount() + 1).index, 0);
 }
@@ -102,9 +105,9 @@ TEST_F(ExamplePartTest, TopPlanarFaceIsTheTopAtZ15)
     EXPECT_NEAR(f.normal.z, 1.0, 1e-12);
     EXPECT_NEAR(f.planeZ, 15.0, 1e-9);
     const double outline = 90 * 60 - (4 - kPi) * 64;
-    const double pocket = 40 * 24 - (4 - kPi) * 25;
-    const double hole = kPi * 25;
-    EXPECT_NEAR(f.areaMm2, outline - pocket - hole, 1e-6 * outline);
+    const double pocket = 44 * 36 - (4 - kPi) * 36;
+    const double holes = kPi * 25 + 4 * kPi * 2.5 * 2.5;
+    EXPECT_NEAR(f.areaMm2, outline - pocket - holes, 1e-6 * outline);
 }
 
 TEST_F(ExamplePartTest, TopOuterProfileIsTheRoundedRectangle)
@@ -135,21 +138,67 @@ TEST_F(ExamplePartTest, TopOuterProfileIsTheRoundedRectangle)
     EXPECT_NEAR(profile.length(), 2 * (90 - 16) + 2 * (60 - 16) + 2 * kPi * 8, 1e-6);
 }
 
-TEST_F(ExamplePartTest, PocketFloorProfile)
+TEST_F(ExamplePartTest, PocketFloorRegionHasTheIsland)
 {
     const int floor = findZFace(*model, 1.0, 10.0);
     ASSERT_GT(floor, 0);
-    const base::Result<geom::Profile> result = model->planarFaceOuterProfile(floor);
-    ASSERT_TRUE(result.ok()) << result.error().toString();
-    const double expected = 40 * 24 - (4 - kPi) * 25;
-    EXPECT_NEAR(result->signedArea(), expected, 1e-6 * expected);
-    EXPECT_TRUE(result->isContinuous(1e-9));
-    const SegmentCounts counts = countSegments(result.value());
+    const double outline = 44 * 36 - (4 - kPi) * 36;
+    const base::Result<geom::Profile> profile = model->planarFaceOuterProfile(floor);
+    ASSERT_TRUE(profile.ok()) << profile.error().toString();
+    EXPECT_NEAR(profile->signedArea(), outline, 1e-6 * outline);
+
+    const base::Result<geom::Region> region = model->planarFaceRegion(floor);
+    ASSERT_TRUE(region.ok()) << region.error().toString();
+    EXPECT_NEAR(region->outer.signedArea(), outline, 1e-6 * outline);
+    EXPECT_TRUE(region->outer.isContinuous(1e-9));
+    const SegmentCounts counts = countSegments(region->outer);
     EXPECT_EQ(counts.arcs, 4);
     EXPECT_EQ(counts.lines, 4);
-    for (const geom::Segment& s : result->segments)
-        if (s.isArc())
-            EXPECT_NEAR(s.radius(), 5.0, 1e-6);
+    std::set<std::pair<long, long>> centres;
+    for (const geom::Segment& s : region->outer.segments)
+        if (s.isArc()) {
+            EXPECT_NEAR(s.radius(), 6.0, 1e-9);
+            centres.insert({std::lround(s.center.x), std::lround(s.center.y)});
+        }
+    EXPECT_EQ(centres, (std::set<std::pair<long, long>>{{17, 18}, {49, 18}, {49, 42}, {17, 42}}));
+
+    ASSERT_EQ(region->holes.size(), 1u);  // the island, D10 at the pocket centre
+    const geom::Profile& island = region->holes[0];
+    EXPECT_NEAR(island.signedArea(), -kPi * 25, 1e-9);
+    for (const geom::Segment& s : island.segments) {
+        ASSERT_TRUE(s.isArc());
+        EXPECT_NEAR(s.center.x, 33, 1e-9);
+        EXPECT_NEAR(s.center.y, 30, 1e-9);
+        EXPECT_NEAR(s.radius(), 5, 1e-9);
+    }
+    // A D6 end mill fits between the island and every wall.
+    EXPECT_GE(geom::distanceToProfile({33, 30}, region->outer) - 5, 6);
+}
+
+TEST_F(ExamplePartTest, OneThroughHoleAndFourBlindHoles)
+{
+    const std::vector<geom::Hole> holes = model->holes();
+    ASSERT_EQ(holes.size(), 5u);
+    int through = 0;
+    std::set<std::pair<long, long>> blind;
+    for (const geom::Hole& h : holes) {
+        EXPECT_NEAR(h.topZ, 15, 1e-9);
+        if (h.through) {
+            ++through;
+            EXPECT_NEAR(h.diameterMm, 10, 1e-9);
+            EXPECT_NEAR(h.center.x, 72, 1e-9);
+            EXPECT_NEAR(h.center.y, 30, 1e-9);
+            EXPECT_NEAR(h.bottomZ, 0, 1e-9);
+        } else {
+            EXPECT_NEAR(h.diameterMm, 5, 1e-9);
+            EXPECT_NEAR(h.bottomZ, 7, 1e-9);
+            EXPECT_NEAR(h.center.x, std::round(h.center.x), 1e-9);
+            EXPECT_NEAR(h.center.y, std::round(h.center.y), 1e-9);
+            blind.insert({std::lround(h.center.x), std::lround(h.center.y)});
+        }
+    }
+    EXPECT_EQ(through, 1);
+    EXPECT_EQ(blind, (std::set<std::pair<long, long>>{{8, 8}, {82, 8}, {82, 52}, {8, 52}}));
 }
 
 TEST_F(ExamplePartTest, BottomFaceLooksDownButItsProfileIsCounterClockwise)
@@ -269,9 +318,31 @@ TEST_F(ExamplePartTest, CommittedExampleMatchesTheGenerator)
     const base::Result<Model> loaded = Model::load(committed);
     ASSERT_TRUE(loaded.ok()) << loaded.error().toString();
     EXPECT_EQ(loaded->faceCount(), model->faceCount());
+    EXPECT_EQ(loaded->edgeCount(), model->edgeCount());
     const int top = loaded->topPlanarFace();
     EXPECT_NEAR(loaded->face(top).planeZ, 15.0, 1e-9);
     EXPECT_EQ(loaded->boundsMax(), model->boundsMax());
+}
+
+// The example job names faces by index: these must not move when the file is regenerated.
+TEST_F(ExamplePartTest, FaceIndicesTheExampleJobUses)
+{
+    const Model committed =
+        Model::load(std::string(CAMWB_TEST_DATA_DIR) + "/resources/examples/example-block.step").value();
+    for (const Model* m : std::vector<const Model*>{model, &committed}) {
+        EXPECT_EQ(m->topPlanarFace(), 2);
+        EXPECT_EQ(findZFace(*m, 1.0, 10.0), 25);  // pocket floor
+        const FaceInfo islandTop = m->face(30);
+        EXPECT_TRUE(islandTop.planar);
+        EXPECT_NEAR(islandTop.planeZ, 15, 1e-9);
+        EXPECT_NEAR(islandTop.areaMm2, kPi * 25, 1e-6);
+        std::vector<int> holeFaces;
+        for (const geom::Hole& h : m->holes())
+            holeFaces.push_back(h.faceIndex);
+        EXPECT_EQ(holeFaces, (std::vector<int>{11, 20, 21, 22, 23}));
+        for (int side : {1, 6, 7, 10})
+            EXPECT_NEAR(std::abs(m->face(side).normal.x) + std::abs(m->face(side).normal.y), 1, 1e-12);
+    }
 }
 
 }  // namespace

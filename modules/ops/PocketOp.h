@@ -42,7 +42,9 @@ struct PocketParams {
 
 // `regions`: the floor to clear, seen from above (islands as holes). Plunge entry is refused for a
 // tool that is not centre-cutting (Tool::centreCutting). Errors: empty regions, a tool that fits
-// nowhere, a helix that fits nowhere (use ramp), the common checks.
+// nowhere, bad stepover/stock/ramp angle/helix diameter or pitch, the common checks. Where a
+// helix fits nowhere near a cut start, that cut ramps instead (with a warning); corners the tool
+// cannot reach and material clean-up could not reach are reported in OpResult.warnings.
 base::Result<OpResult> computePocket(const std::vector<geom::Region>& regions, const PocketParams& params,
                                      const ToolController& tc, int operationIndex, const Progress& progress = {});
 

@@ -1,0 +1,172 @@
+// The pocket operation: checks, the tool-centre region, the pattern computed once (offset or
+// zig-zag, clean-up detours), entries planned once, then the same program written at each level
+// with the wall finishing pass and the floor finishing level where asked.
+#include "ops/PocketOp.h"
+
+#include "base/NumberFormat.h"
+#include "geom/RegionOps.h"
+#include "ops/pocket/Cleanup.h"
+#include "ops/pocket/Patterns.h"
+#include "ops/pocket/Program.h"
+
+#include <cmath>
+
+namespace camwb::ops {
+
+namespace {
+
+using namespace pocket;
+
+std::string fmt(double v) { return base::NumberFormat{4, true}.format(v); }
+
+double helixDiameter(const PocketParams& p, const ToolController& tc)
+{
+    return p.helixDiameterMm > 0 ? p.helixDiameterMm : 0.9 * tc.tool.diameterMm;
+}
+
+base::Status check(const std::string& what, const std::vector<geom::Region>& regions, const PocketParams& p,
+                   const ToolController& tc)
+{
+    if (base::Status s = checkToolController(what, tc); !s)
+        return s;
+    if (base::Status s = checkHeights(what, p.heights); !s)
+        return s;
+    if (base::Status s = checkCuttingLength(what, p.heights, tc.tool); !s)
+        return s;
+    if (regions.empty() || !(geom::totalArea(regions) > 0))
+        return opError(what, "no regions to pocket (the selection is empty)");
+    const double d = tc.tool.diameterMm;
+    const double stepover = p.stepover(d);
+    if (!(stepover > 0) || stepover > d + 1e-9)
+        return opError(what, "stepover " + fmt(stepover) + " mm must be positive and at most the tool diameter " +
+                                 fmt(d) + " mm");
+    if (p.stepDownMm < 0)
+        return opError(what, "step-down must not be negative, got " + fmt(p.stepDownMm) + " mm");
+    if (p.wallStockMm < 0 || p.floorStockMm < 0)
+        return opError(what, "stock to leave must not be negative (walls " + fmt(p.wallStockMm) + " mm, floor " +
+                                 fmt(p.floorStockMm) + " mm)");
+    if (p.heights.finalZ + p.floorStockMm >= p.heights.startZ)
+        return opError(what, "floor stock " + fmt(p.floorStockMm) +
+                                 " mm leaves nothing to cut between the start depth " + fmt(p.heights.startZ) +
+                                 " and the final depth " + fmt(p.heights.finalZ));
+    if (!(p.rampAngleDeg > 0) || p.rampAngleDeg > 90)
+        return opError(what, "ramp angle must be in (0, 90] degrees, got " + fmt(p.rampAngleDeg));
+    if (!(p.toleranceMm > 0))
+        return opError(what, "tolerance must be positive, got " + fmt(p.toleranceMm) + " mm");
+    if (p.entry == EntryKind::Plunge && !tc.tool.centreCutting)
+        return opError(what, "tool " + std::to_string(tc.tool.number) +
+                                 " is not centre cutting and cannot plunge; use a helix or ramp entry");
+    if (p.entry == EntryKind::Helix) {
+        if (p.helixDiameterMm < 0 || helixDiameter(p, tc) > d + 1e-9)
+            return opError(what, "helix diameter " + fmt(p.helixDiameterMm) +
+                                     " mm must be positive and at most the tool diameter " + fmt(d) +
+                                     " mm (a larger helix leaves a core standing)");
+        if (!(p.helixPitchMm > 0))
+            return opError(what, "helix pitch must be positive, got " + fmt(p.helixPitchMm) + " mm");
+    }
+    return base::Status::success();
+}
+
+std::vector<double> levelsOf(const PocketParams& p)
+{
+    std::vector<double> levels = stepDownLevels(p.heights.startZ, p.heights.finalZ + p.floorStockMm, p.stepDownMm);
+    if (p.finishFloor)
+        levels.push_back(p.heights.finalZ);
+    return levels;
+}
+
+}  // namespace
+
+base::Result<OpResult> computePocket(const std::vector<geom::Region>& regions, const PocketParams& params,
+                                     const ToolController& tc, int operationIndex, const Progress& progress)
+{
+    const std::string what = "pocket \"" + params.name + "\"";
+    if (base::Status s = check(what, regions, params, tc); !s)
+        return s.error();
+    const double radius = tc.tool.diameterMm / 2;
+    const double tol = params.toleranceMm;
+    const std::vector<geom::Region> toolCentre = geom::offsetRegions(regions, -(radius + params.wallStockMm), tol);
+    if (toolCentre.empty())
+        return opError(what, "tool diameter " + fmt(tc.tool.diameterMm) + " mm" +
+                                 (params.wallStockMm > 0 ? " with wall stock " + fmt(params.wallStockMm) + " mm" : "") +
+                                 " does not fit the pocket");
+
+    PatternInput input{&toolCentre,          params.stepover(tc.tool.diameterMm), radius, params.climb, tol,
+                       params.zigZagAngleDeg};
+    std::optional<std::vector<Cut>> cuts =
+        params.pattern == PocketPattern::Offset ? offsetPattern(input, progress) : zigZagPattern(input, progress);
+    if (!cuts)
+        return cancelledError(what);
+    OpResult result;
+    const CleanupResult cleanup = addCleanup(*cuts, toolCentre, radius, tol);
+    if (cleanup.uncutArea > 0)
+        result.warnings.push_back(what + ": " + fmt(cleanup.uncutArea) +
+                                  " mm^2 between passes could not be reached by clean-up moves");
+    if (!progress.step(0.6))
+        return cancelledError(what);
+
+    // Corners the tool cannot reach: the floor (less wall stock) beyond the tool's reach.
+    const std::vector<geom::Region> floor =
+        params.wallStockMm > 0 ? geom::offsetRegions(regions, -params.wallStockMm, tol) : regions;
+    const double left =
+        geom::totalArea(geom::subtract(floor, geom::offsetRegions(toolCentre, radius + 2 * tol, tol), tol));
+    if (left > std::max(1e-3, 10 * tol * tol))
+        result.warnings.push_back(what + ": " + fmt(left) + " mm^2 in corners the tool (diameter " +
+                                  fmt(tc.tool.diameterMm) + " mm) cannot reach is left uncut");
+
+    EntrySettings entry;
+    entry.kind = params.entry;
+    entry.helixRadius = helixDiameter(params, tc) / 2;
+    entry.helixPitch = params.helixPitchMm;
+    entry.rampAngleDeg = params.rampAngleDeg;
+    entry.ccw = params.climb;
+    entry.toleranceMm = tol;
+    entry.rampFeed = tc.rampFeed();
+    entry.plungeFeed = tc.plungeFeedMmPerMin;
+    entry.cuttingFeed = tc.cuttingFeedMmPerMin;
+    EntryPlanner planner(toolCentre, entry);
+    const Program rough = makeProgram(std::move(*cuts), toolCentre, planner);
+
+    std::vector<geom::Region> finishRegion;
+    std::optional<EntryPlanner> finishPlanner;
+    Program finish;
+    if (params.finishWalls) {
+        finishRegion = params.wallStockMm > 0 ? geom::offsetRegions(regions, -radius, tol) : toolCentre;
+        finishPlanner.emplace(finishRegion, entry);
+        finish =
+            makeProgram(wallLoops(finishRegion, params.climb, rough.cuts.back().end()), finishRegion, *finishPlanner);
+    }
+    const int fallbacks = planner.helixFallbacks() + (finishPlanner ? finishPlanner->helixFallbacks() : 0);
+    if (fallbacks > 0)
+        result.warnings.push_back(what + ": the helix of diameter " + fmt(2 * entry.helixRadius) +
+                                  " mm fits nowhere near " + std::to_string(fallbacks) +
+                                  " cut start(s); ramped there instead");
+
+    PathWriter out(result.toolpath, operationIndex);
+    toolpath::SectionBegin begin;
+    begin.operationName = params.name;
+    begin.strategy = "pocket";
+    begin.toolNumber = tc.tool.number;
+    begin.feeds.cuttingMmPerMin = tc.cuttingFeedMmPerMin;
+    begin.feeds.plungeMmPerMin = tc.plungeFeedMmPerMin;
+    begin.feeds.entryMmPerMin = tc.rampFeed();
+    begin.feeds.finishingMmPerMin = tc.cuttingFeedMmPerMin;
+    out.add(begin);
+    const Clearances clearances{params.heights.clearanceZ, params.heights.safeZ};
+    const std::vector<double> levels = levelsOf(params);
+    double top = params.heights.startZ;
+    for (std::size_t i = 0; i < levels.size(); ++i) {
+        writeProgram(out, rough, top, levels[i], clearances, entry);
+        if (params.finishWalls)
+            writeProgram(out, finish, top, levels[i], clearances, entry);
+        top = levels[i];
+        if (!progress.step(0.6 + 0.4 * static_cast<double>(i + 1) / static_cast<double>(levels.size())))
+            return cancelledError(what);
+    }
+    out.rapid({out.position().x, out.position().y, params.heights.clearanceZ});
+    out.add(toolpath::SectionEnd{});
+    result.counts = countMotions(result.toolpath);
+    return result;
+}
+
+}  // namespace camwb::ops

@@ -1,0 +1,29 @@
+// A pattern ready to be written at any level: the cuts, how each is reached (a feed at the level
+// from the previous cut when the straight link stays inside the region, else retract to the safe
+// height and enter again) and each entry's plan. Written once per level.
+#pragma once
+
+#include "ops/pocket/Entry.h"
+
+#include <vector>
+
+namespace camwb::ops::pocket {
+
+struct Program {
+    std::vector<Cut> cuts;
+    std::vector<EntryPlan> entries;  // per cut
+    std::vector<bool> linked;        // cut i follows cut i-1 by a feed at the level
+    const std::vector<geom::Region>* region = nullptr;
+};
+
+Program makeProgram(std::vector<Cut> cuts, const std::vector<geom::Region>& region, EntryPlanner& planner);
+
+struct Clearances {
+    double clearanceZ = 0, safeZ = 0;
+};
+
+// The program at `level`, material already removed down to `top` (the previous level).
+void writeProgram(PathWriter& out, const Program& program, double top, double level, const Clearances& heights,
+                  const EntrySettings& entry);
+
+}  // namespace camwb::ops::pocket

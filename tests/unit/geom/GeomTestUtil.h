@@ -72,7 +72,7 @@ inline double distanceToProfile(Vec2 p, const Profile& profile)
 {
     double best = std::numeric_limits<double>::infinity();
     for (const Segment& s : profile.segments)
-        best = std::min(best, distanceToSegment(p, s));
+        best = std::min(best, test::distanceToSegment(p, s));
     return best;
 }
 

@@ -15,7 +15,9 @@ namespace camwb::ops {
 // Outside/Inside for closed loops (relative to the area they enclose); Left/Right for open chains
 // (relative to the chain's direction as given); On: the tool centre on the contour, both kinds.
 enum class ContourSide { Outside, Inside, On, Left, Right };
-enum class LeadKind { None, Arc, Line };
+// Arc: a tangent quarter arc; Line: a tangent straight; PerpendicularLine: straight in from the
+// free side at right angles. leadRadiusMm is the arc's radius or the line's length.
+enum class LeadKind { None, Arc, Line, PerpendicularLine };
 enum class EntryKind { Plunge, Ramp, Helix };
 enum class CompensationOutput { ToolCentre, Control };  // Control: programmed contour + CutterComp
 
@@ -33,14 +35,14 @@ struct ContourParams {
     LeadKind leadOut = LeadKind::None;
     double leadRadiusMm = 0;  // arc leads: radius; line leads: length
     EntryKind entry = EntryKind::Plunge;
-    double rampAngleDeg = 3;      // ramp entry: along the contour at this angle
-    double helixDiameterMm = 0;   // helical entry (0 = tool diameter)
-    double helixPitchMm = 1;      // helical entry: Z per revolution
-    int tabCount = 0;             // holding tabs on the last levels, evenly spaced along each loop
+    double rampAngleDeg = 3;     // ramp entry: along the contour at this angle
+    double helixDiameterMm = 0;  // helical entry (0 = tool diameter)
+    double helixPitchMm = 1;     // helical entry: Z per revolution
+    int tabCount = 0;            // holding tabs on the last levels, evenly spaced along each loop
     double tabWidthMm = 5;
-    double tabHeightMm = 2;       // above finalZ
+    double tabHeightMm = 2;  // above finalZ
     CompensationOutput compensation = CompensationOutput::ToolCentre;
-    double toleranceMm = 0.01;    // arc fitting / approximation
+    double toleranceMm = 0.01;  // arc fitting / approximation
 };
 
 // Each input profile is one loop or chain, cut in turn (nearest next start). Closed profiles

@@ -1,0 +1,75 @@
+#include "HoleTestSupport.h"
+
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <fstream>
+#include <limits>
+#include <sstream>
+
+namespace camwb::ops::test {
+
+double uniform(std::mt19937& random, double low, double high)
+{
+    // Not std::uniform_real_distribution: its sequence differs between standard libraries.
+    return low + (high - low) * (random() / 4294967296.0);
+}
+
+std::vector<geom::Hole> randomHoles(std::mt19937& random, int count, double minDiameter, double maxDiameter)
+{
+    std::vector<geom::Hole> holes;
+    while (static_cast<int>(holes.size()) < count) {
+        geom::Hole hole;
+        hole.faceIndex = static_cast<int>(holes.size()) + 1;
+        hole.center = {uniform(random, -150, 150), uniform(random, -150, 150)};
+        hole.diameterMm = uniform(random, minDiameter, maxDiameter);
+        hole.topZ = uniform(random, -5, 5);
+        hole.bottomZ = hole.topZ - uniform(random, 0.2, 25);
+        hole.through = random() % 2 == 0;
+        bool overlaps = false;
+        for (const geom::Hole& other : holes)
+            overlaps |= base::distance(other.center, hole.center) < (other.diameterMm + hole.diameterMm) / 2 + 1;
+        if (!overlaps)
+            holes.push_back(hole);
+    }
+    return holes;
+}
+
+ToolController toolController(double diameterMm)
+{
+    ToolController tc;
+    tc.tool.number = 4;
+    tc.tool.name = "test tool";
+    tc.tool.diameterMm = diameterMm;
+    tc.spindleRpm = 3000;
+    tc.cuttingFeedMmPerMin = 600;
+    tc.plungeFeedMmPerMin = 150;
+    tc.rampFeedMmPerMin = 300;
+    return tc;
+}
+
+const geom::Hole& holeAround(const std::vector<geom::Hole>& holes, base::Vec2 p)
+{
+    auto outside = [&](const geom::Hole& hole) { return base::distance(hole.center, p) - hole.diameterMm / 2; };
+    const geom::Hole* best = &holes.front();
+    for (const geom::Hole& hole : holes)
+        if (outside(hole) < outside(*best))
+            best = &hole;
+    return *best;
+}
+
+void expectGolden(const std::string& name, const std::string& trace)
+{
+    const std::string path = std::string(CAMWB_TEST_DATA_DIR) + "/tests/unit/ops/holes/golden/" + name;
+    if (const char* update = std::getenv("CAMWB_UPDATE_GOLDEN"); update && std::string(update) == "1") {
+        std::ofstream(path, std::ios::binary) << trace;
+        return;
+    }
+    std::ifstream in(path, std::ios::binary);
+    ASSERT_TRUE(in) << "no golden " << path << " (CAMWB_UPDATE_GOLDEN=1 writes it)";
+    std::stringstream expected;
+    expected << in.rdbuf();
+    EXPECT_EQ(trace, expected.str()) << "golden " << path << " differs (CAMWB_UPDATE_GOLDEN=1 rewrites it)";
+}
+
+}  // namespace camwb::ops::test

@@ -1,0 +1,28 @@
+// Shared by the helix and drilling tests: generated hole sets, a tool controller, a golden trace
+// comparison and small geometry helpers.
+#pragma once
+
+#include "geom/Hole.h"
+#include "ops/OpCommon.h"
+
+#include <random>
+#include <string>
+#include <vector>
+
+namespace camwb::ops::test {
+
+// Holes with random centres (none overlapping), diameters in [minDiameter, maxDiameter], tops in
+// [-5, 5], depths in [0.2, 25]; about half of them through.
+std::vector<geom::Hole> randomHoles(std::mt19937& random, int count, double minDiameter, double maxDiameter);
+
+ToolController toolController(double diameterMm);
+
+// The hole `p` is in (or nearest to, by distance from its wall; the holes do not overlap).
+const geom::Hole& holeAround(const std::vector<geom::Hole>& holes, base::Vec2 p);
+
+// Compares `trace` with tests/unit/ops/holes/golden/<name>; CAMWB_UPDATE_GOLDEN=1 rewrites the file.
+void expectGolden(const std::string& name, const std::string& trace);
+
+double uniform(std::mt19937& random, double low, double high);
+
+}  // namespace camwb::ops::test

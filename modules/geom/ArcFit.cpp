@@ -208,7 +208,7 @@ Profile toProfile(const std::vector<Piece>& pieces, bool closed)
 
 Profile fitLinesAndArcs(const std::vector<Vec2>& points, bool closed, double tolerance, double maxArcRadius)
 {
-    const double tol = std::max(tolerance, 1e-9);
+    const double tol = tolerance >= 1e-9 ? tolerance : 1e-9;  // NaN too
     std::vector<Vec2> v = withoutRepeats(points, closed);
     if (v.size() < 2)
         return Profile{{}, closed};

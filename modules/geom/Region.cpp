@@ -19,7 +19,8 @@ double Region::area() const
 
 bool Region::contains(Vec2 p) const
 {
-    if (distanceToBoundary(p) <= detail::kOnBoundary)
+    if (detail::onLoop(outer, p) ||
+        std::any_of(holes.begin(), holes.end(), [p](const Profile& hole) { return detail::onLoop(hole, p); }))
         return true;
     if (!detail::insideLoop(outer, p))
         return false;

@@ -10,12 +10,10 @@ namespace camwb::geom {
 
 namespace {
 
-using detail::kOnBoundary;
-
 // Tolerances below this are raised to it: they would be lost in Clipper's 1 nm grid anyway.
 constexpr double kMinTolerance = 1e-5;
 
-double usable(double tolerance) { return std::max(tolerance, kMinTolerance); }
+double usable(double tolerance) { return tolerance >= kMinTolerance ? tolerance : kMinTolerance; }  // NaN too
 
 // Clipper 6.4 rounds the number of steps of a round join, so its last step can span 1.5 nominal
 // steps and its chord error 1.5^2 times ArcTolerance.

@@ -33,7 +33,7 @@ public:
         const Box box{std::min(a.x, b.x), std::min(a.y, b.y), std::max(a.x, b.x), std::max(a.y, b.y)};
         for (std::size_t i = 0; i < m_segments.size(); ++i)
             if (m_boxes[i].overlaps(box, kOnBoundary))
-                detail::appendCrossings(a, b, m_segments[i], ts);
+                detail::appendCrossings(a, b, *m_segments[i], ts);
         if (touched)
             *touched = ts.size() > 2;
         std::sort(ts.begin(), ts.end());
@@ -45,12 +45,12 @@ private:
     void add(const Profile& loop)
     {
         for (const Segment& s : loop.segments) {
-            m_segments.push_back(s);
+            m_segments.push_back(&s);
             m_boxes.push_back(detail::boxOf(s));
         }
     }
 
-    std::vector<Segment> m_segments;
+    std::vector<const Segment*> m_segments;  // into the regions, which outlive the index
     std::vector<Box> m_boxes;
 };
 

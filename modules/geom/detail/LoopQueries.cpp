@@ -1,5 +1,7 @@
 #include "geom/detail/LoopQueries.h"
 
+#include "geom/Region.h"
+
 #include <algorithm>
 #include <cmath>
 #include <numbers>
@@ -160,6 +162,23 @@ bool insideLoop(const Profile& loop, Vec2 p)
             });
     }
     return crossings % 2 == 1;
+}
+
+bool onLoop(const Profile& loop, Vec2 p)
+{
+    constexpr double e = kOnBoundary;
+    for (const Segment& s : loop.segments) {
+        if (s.isArc()) {
+            if (std::abs(distance(p, s.center) - s.radius()) > e)
+                continue;
+        } else if (p.x < std::min(s.start.x, s.end.x) - e || p.x > std::max(s.start.x, s.end.x) + e ||
+                   p.y < std::min(s.start.y, s.end.y) - e || p.y > std::max(s.start.y, s.end.y) + e) {
+            continue;
+        }
+        if (distanceToSegment(p, s) <= e)
+            return true;
+    }
+    return false;
 }
 
 void appendCrossings(Vec2 a, Vec2 b, const Segment& s, std::vector<double>& ts)

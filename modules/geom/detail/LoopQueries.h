@@ -15,6 +15,10 @@ inline constexpr double kOnBoundary = 1e-9;
 // orientation), arcs exact. Undefined for points on the loop; callers test that first.
 bool insideLoop(const Profile& loop, Vec2 p);
 
+// Whether p lies within kOnBoundary of the loop (cheap rejections first: contains() asks this of
+// every point it tests).
+bool onLoop(const Profile& loop, Vec2 p);
+
 // Appends the parameters t in [0, 1] where the segment a + t (b - a) meets `s` (crossings,
 // touches, the ends of a collinear overlap), within kOnBoundary.
 void appendCrossings(Vec2 a, Vec2 b, const Segment& s, std::vector<double>& ts);

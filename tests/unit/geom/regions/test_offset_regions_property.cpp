@@ -8,85 +8,12 @@
 #include <gtest/gtest.h>
 #include <polyclipping/clipper.hpp>
 
-#include <numbers>
 #include <random>
 
 using namespace camwb::geom;
 namespace t = camwb::geom::test;
-constexpr double kPi = std::numbers::pi;
 
 namespace {
-
-// The arc from a through m to b (m strictly between them along the arc).
-Segment arcThrough(Vec2 a, Vec2 m, Vec2 b)
-{
-    const Vec2 ab = m - a, ac = b - a;
-    const double d = 2 * ab.cross(ac);
-    const Vec2 c = a + Vec2{(ac.y * ab.dot(ab) - ab.y * ac.dot(ac)) / d, (ab.x * ac.dot(ac) - ac.x * ab.dot(ab)) / d};
-    return Segment::arc(a, b, c, d > 0);
-}
-
-// Star-shaped polygon around (50, 50) whose edges are lines or arcs bulging in or out.
-Profile bulgedStar(std::mt19937& rng)
-{
-    std::uniform_real_distribution<double> unit(0, 1);
-    const int n = 5 + static_cast<int>(unit(rng) * 5);
-    std::vector<Vec2> pts;
-    for (int i = 0; i < n; ++i) {
-        const double a = 2 * kPi * (i + 0.3 * unit(rng)) / n;
-        const double r = 28 + 12 * unit(rng);
-        pts.push_back({50 + r * std::cos(a), 50 + r * std::sin(a)});
-    }
-    Profile p;
-    for (int i = 0; i < n; ++i) {
-        const Vec2 a = pts[i], b = pts[(i + 1) % n];
-        const double bulge = (unit(rng) - 0.5) * 0.3 * distance(a, b);
-        if (unit(rng) < 0.3 || std::abs(bulge) < 0.5) {
-            p.segments.push_back(Segment::line(a, b));
-            continue;
-        }
-        const Vec2 m = (a + b) * 0.5 + (b - a).normalized().rightNormal() * bulge;
-        p.segments.push_back(arcThrough(a, m, b));
-    }
-    return p;
-}
-
-Profile randomIsland(std::mt19937& rng)
-{
-    std::uniform_real_distribution<double> unit(0, 1);
-    const Vec2 c{30 + 40 * unit(rng), 30 + 40 * unit(rng)};
-    if (unit(rng) < 0.5)
-        return t::circle(c, 2 + 4 * unit(rng)).reversed();
-    const double w = 4 + 8 * unit(rng), h = 4 + 8 * unit(rng);
-    return t::roundedRectangle(c.x - w / 2, c.y - h / 2, w, h, std::min(w, h) * 0.45 * unit(rng)).reversed();
-}
-
-bool loopClear(const Profile& loop, const Region& region, double clearance)
-{
-    for (const Vec2& p : t::samples(loop, 32))
-        if (!region.contains(p) || region.distanceToBoundary(p) < clearance)
-            return false;
-    return true;
-}
-
-Region randomRegion(std::mt19937& rng)
-{
-    std::uniform_real_distribution<double> unit(0, 1);
-    Region region;
-    if (unit(rng) < 0.4) {
-        const double w = 40 + 40 * unit(rng), h = 40 + 40 * unit(rng);
-        region.outer = t::roundedRectangle(50 - w / 2, 50 - h / 2, w, h, std::min(w, h) * 0.4 * unit(rng));
-    } else {
-        region.outer = bulgedStar(rng);
-    }
-    const int islands = static_cast<int>(unit(rng) * 4);
-    for (int i = 0; i < 20 && static_cast<int>(region.holes.size()) < islands; ++i) {
-        const Profile island = randomIsland(rng);
-        if (loopClear(island, region, 1.0))
-            region.holes.push_back(island);
-    }
-    return region;
-}
 
 // Area of a Clipper offset of the input discretised to 0.1 um chords (the exact offset's area
 // to within ~perimeter * 1e-4) and the perimeter of that offset.
@@ -125,7 +52,7 @@ TEST(OffsetRegionsProperty, ShrinkKeepsDistanceAndArea)
     const double tolerances[] = {0.001, 0.005, 0.01, 0.03};
     int nonEmpty = 0;
     for (int round = 0; round < 60; ++round) {
-        const Region input = randomRegion(rng).normalized();
+        const Region input = t::randomRegion(rng).normalized();
         const double delta = 0.5 + 8 * unit(rng);
         const double tol = tolerances[round % 4];
         SCOPED_TRACE("round " + std::to_string(round) + " delta " + std::to_string(delta) + " tol " +
@@ -165,7 +92,7 @@ TEST(OffsetRegionsProperty, GrowStaysNearExactOffset)
     std::mt19937 rng(99);
     std::uniform_real_distribution<double> unit(0, 1);
     for (int round = 0; round < 20; ++round) {
-        const Region input = randomRegion(rng).normalized();
+        const Region input = t::randomRegion(rng).normalized();
         const double delta = 0.5 + 5 * unit(rng);
         const double tol = 0.01;
         SCOPED_TRACE(round);

@@ -60,9 +60,9 @@ TEST(Region, ContainsAgreesWithFinePolygonOnRandomPoints)
     Region region = t::roundedRectWithCircle(40, 30, 8, {28, 18}, 6);
     region.holes.push_back(t::roundedRectangle(5, 5, 12, 9, 3).reversed());
     region.holes.push_back(Region{t::circle({10, 24}, 2.5), {}}.outer.reversed());
-    std::vector<std::vector<Vec2>> loops{discretize(region.outer, 1e-7)};
+    std::vector<std::vector<Vec2>> loops{discretize(region.outer, 1e-6)};
     for (const Profile& hole : region.holes)
-        loops.push_back(discretize(hole, 1e-7));
+        loops.push_back(discretize(hole, 1e-6));
     std::mt19937 rng(3);
     std::uniform_real_distribution<double> x(-2, 42), y(-2, 32);
     int checked = 0;

@@ -98,7 +98,16 @@ base::Result<OpResult> computePocket(const std::vector<geom::Region>& regions, c
     if (!cuts)
         return cancelledError(what);
     OpResult result;
-    const CleanupResult cleanup = addCleanup(*cuts, toolCentre, radius, tol);
+    // Clean-up is needed only where the pattern does not cover by construction. Offset: a point of
+    // the tool-centre region lies within one ring spacing of the last ring around it, so spacings up
+    // to the radius leave nothing. Zig-zag: a point lies within half a spacing of a line or of the
+    // wall pass. Both less the offsets' safety margins and fitting tolerance. (The union of many
+    // overlapping footprints is by far the most expensive step, so it is skipped where it cannot
+    // find anything.)
+    const double spacing = std::min(input.stepover, 2 * radius - 2 * tol);
+    const double covered = params.pattern == PocketPattern::Offset ? spacing : spacing / 2;
+    const CleanupResult cleanup =
+        covered <= radius - 4 * tol ? CleanupResult{} : addCleanup(*cuts, toolCentre, radius, spacing, tol);
     if (cleanup.uncutArea > 0)
         result.warnings.push_back(what + ": " + fmt(cleanup.uncutArea) +
                                   " mm^2 between passes could not be reached by clean-up moves");

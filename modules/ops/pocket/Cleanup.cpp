@@ -49,7 +49,8 @@ Vec2 interiorPoint(const geom::Region& piece, double tolerance)
 // Where to send the tool for one uncut piece: round the part of the piece the tool centre may
 // enter when the piece is long (a sliver between passes), else to one point inside it, clamped
 // into the tool-centre region (a cusp, a corner between rings).
-Detour plan(const geom::Region& piece, const std::vector<geom::Region>& toolCentre, double radius, double tolerance)
+Detour plan(const geom::Region& piece, const std::vector<geom::Region>& toolCentre,
+            const std::vector<geom::Region>& innerCentre, double radius, double tolerance)
 {
     Detour detour;
     const Vec2 q = interiorPoint(piece, tolerance);
@@ -58,7 +59,8 @@ Detour plan(const geom::Region& piece, const std::vector<geom::Region>& toolCent
         x0 = std::min(x0, p.x), x1 = std::max(x1, p.x), y0 = std::min(y0, p.y), y1 = std::max(y1, p.y);
     }
     if (std::hypot(x1 - x0, y1 - y0) > radius) {
-        const std::vector<geom::Region> enterable = geom::intersect({piece}, toolCentre, tolerance);
+        // Against the tool-centre region shrunk by the tolerance: the fitted loop may stray that far.
+        const std::vector<geom::Region> enterable = geom::intersect({piece}, innerCentre, tolerance);
         const geom::Region* largest = nullptr;
         for (const geom::Region& r : enterable)
             if (!largest || r.area() > largest->area())
@@ -114,15 +116,20 @@ std::vector<std::vector<Vec2>> cutPolylines(const std::vector<Cut>& cuts, double
 }
 
 CleanupResult addCleanup(std::vector<Cut>& cuts, const std::vector<geom::Region>& toolCentre, double radius,
-                         double tolerance)
+                         double spacing, double tolerance)
 {
     CleanupResult result;
-    // Reach less the fitting tolerance: the wall loop is the tool-centre boundary itself, so the
+    // The footprints are compared coarsely where they overlap a lot (small stepovers: the union of
+    // many overlapping footprints is the expensive part) and finely where they barely touch.
+    const double overlap = 2 * radius - spacing;
+    const double sweepTol = std::clamp(overlap / 4, tolerance, std::max(tolerance, 0.05));
+    // Reach less the sampling margins: the wall loop is the tool-centre boundary itself, so the
     // band between its exact and its sampled footprint is not material left behind.
-    const std::vector<geom::Region> reach = geom::offsetRegions(toolCentre, radius - tolerance, tolerance);
+    const std::vector<geom::Region> reach = geom::offsetRegions(toolCentre, radius - 2 * sweepTol, tolerance);
     std::vector<geom::Region> uncut =
-        geom::subtract(reach, geom::sweptArea(cutPolylines(cuts, tolerance), radius, tolerance), tolerance);
+        geom::subtract(reach, geom::sweptArea(cutPolylines(cuts, sweepTol), radius, sweepTol), sweepTol);
     const double minArea = std::max(1e-3, 10 * tolerance * tolerance);
+    std::vector<geom::Region> innerCentre;
     for (int round = 0; round < kRounds; ++round) {
         std::vector<geom::Region> pieces;
         for (geom::Region& piece : uncut)
@@ -134,7 +141,9 @@ CleanupResult addCleanup(std::vector<Cut>& cuts, const std::vector<geom::Region>
         std::map<std::size_t, std::vector<Detour>> byCut;
         std::vector<std::vector<Vec2>> added;
         for (const geom::Region& piece : pieces) {
-            Detour detour = plan(piece, toolCentre, radius, tolerance);
+            if (innerCentre.empty())
+                innerCentre = geom::offsetRegions(toolCentre, -tolerance, tolerance);
+            Detour detour = plan(piece, toolCentre, innerCentre, radius, tolerance);
             // The nearest pattern point whose link stays inside (nearest points per cut, in order).
             std::vector<std::pair<PathPoint, std::size_t>> near;
             for (std::size_t c = 0; c < cuts.size(); ++c)
@@ -164,7 +173,7 @@ CleanupResult addCleanup(std::vector<Cut>& cuts, const std::vector<geom::Region>
             break;
         }
         applyDetours(cuts, byCut);
-        uncut = geom::subtract(pieces, geom::sweptArea(added, radius, tolerance), tolerance);
+        uncut = geom::subtract(pieces, geom::sweptArea(added, radius, sweepTol), sweepTol);
     }
     for (const geom::Region& piece : uncut)
         if (piece.area() > minArea)

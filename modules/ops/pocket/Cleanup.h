@@ -15,8 +15,9 @@ struct CleanupResult {
     double uncutArea = 0;  // what is still left after the clean-up (mm^2)
 };
 
+// `spacing`: the pattern's stepover (how far apart neighbouring passes run).
 CleanupResult addCleanup(std::vector<Cut>& cuts, const std::vector<geom::Region>& toolCentre, double radius,
-                         double tolerance);
+                         double spacing, double tolerance);
 
 // Polylines of the cuts (arcs sampled within the tolerance), for swept areas.
 std::vector<std::vector<Vec2>> cutPolylines(const std::vector<Cut>& cuts, double tolerance);

@@ -21,7 +21,7 @@ MotionCounts countMotions(const toolpath::Toolpath& toolpath)
             ++counts.lines;
         else if (const auto* arc = std::get_if<toolpath::Arc>(&r))
             ++(arc->turns > 0 || std::abs((arc->to - arc->center).dot(arc->normal)) > 1e-9 ? counts.helices
-                                                                                          : counts.arcs);
+                                                                                           : counts.arcs);
         else if (std::holds_alternative<toolpath::Cycle>(r))
             ++counts.cycles;
     }
@@ -79,8 +79,8 @@ base::Status checkCuttingLength(const std::string& what, const Heights& h, const
 {
     const double depth = h.startZ - h.finalZ;
     if (tool.fluteLengthMm > 0 && depth > tool.fluteLengthMm + 1e-9)
-        return opError(what, "cut depth " + fmt(depth) + " mm is beyond the cutting length " +
-                                 fmt(tool.fluteLengthMm) + " mm of tool " + std::to_string(tool.number));
+        return opError(what, "cut depth " + fmt(depth) + " mm is beyond the cutting length " + fmt(tool.fluteLengthMm) +
+                                 " mm of tool " + std::to_string(tool.number));
     return base::Status::success();
 }
 

@@ -71,6 +71,6 @@ base::Status checkHeights(const std::string& what, const Heights& heights);
 // The cut depth (start - final) must not exceed the tool's flute length (when the tool states it).
 base::Status checkCuttingLength(const std::string& what, const Heights& heights, const toolpath::Tool& tool);
 base::Error opError(const std::string& what, const std::string& message);  // "what: message"
-base::Error cancelledError(const std::string& what);                        // "what: cancelled"
+base::Error cancelledError(const std::string& what);                       // "what: cancelled"
 
 }  // namespace camwb::ops

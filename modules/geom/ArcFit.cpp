@@ -1,5 +1,7 @@
 #include "geom/ArcFit.h"
 
+#include "geom/detail/LoopQueries.h"
+
 #include <algorithm>
 #include <cmath>
 #include <numbers>
@@ -8,6 +10,9 @@
 namespace camwb::geom {
 
 namespace {
+
+using detail::fastDistance;
+using detail::fastLength;
 
 // Arcs longer than this are split: a full circle gives two arcs instead of one arc and a short
 // closing chord, and no fitted arc comes near start == end.
@@ -23,9 +28,9 @@ struct Piece {
 double distanceToChord(Vec2 p, Vec2 a, Vec2 d, double len2)
 {
     if (len2 <= 0)
-        return distance(p, a);
+        return fastDistance(p, a);
     const double t = std::clamp((p - a).dot(d) / len2, 0.0, 1.0);
-    return distance(p, a + d * t);
+    return fastDistance(p, a + d * t);
 }
 
 // Greedy cover of v[0..last] by lines and arcs. Runs are found by growing the run length
@@ -66,7 +71,7 @@ public:
         if (std::abs(d) <= 1e-300)
             return std::nullopt;
         const Vec2 c = a + Vec2{(ac.y * ab2 - ab.y * ac2) / d, (ab.x * ac2 - ac.x * ab2) / d};
-        const double r = distance(a, c);
+        const double r = fastDistance(a, c);
         if (!(r < m_maxRadius) || !std::isfinite(r))
             return std::nullopt;
         const bool ccw = d > 0;
@@ -76,7 +81,7 @@ public:
         Vec2 prev = a - c;
         for (std::size_t k = i + 1; k <= j; ++k) {
             const Vec2 u = m_v[k] - c;
-            if (std::abs(u.length() - r) > m_tol)
+            if (std::abs(fastLength(u) - r) > m_tol)
                 return std::nullopt;
             // The whole edge within the band r +- tol (its ends are checked as vertices; its
             // point nearest the centre here): then the arc and the edge stay within tol of
@@ -167,10 +172,10 @@ std::vector<Vec2> withoutRepeats(const std::vector<Vec2>& points, bool closed)
     for (const Vec2& p : points) {
         if (!std::isfinite(p.x) || !std::isfinite(p.y))
             continue;
-        if (out.empty() || distance(out.back(), p) > 1e-12)
+        if (out.empty() || fastDistance(out.back(), p) > 1e-12)
             out.push_back(p);
     }
-    while (closed && out.size() > 1 && distance(out.front(), out.back()) <= 1e-12)
+    while (closed && out.size() > 1 && fastDistance(out.front(), out.back()) <= 1e-12)
         out.pop_back();
     return out;
 }

@@ -9,6 +9,10 @@
 
 namespace camwb::geom {
 
+using detail::fastDistance;
+using detail::fastLength;
+using detail::radiusOf;
+
 double Region::area() const
 {
     double total = std::abs(outer.signedArea());
@@ -51,20 +55,12 @@ double distanceToSegment(Vec2 p, const Segment& s)
         const Vec2 d = s.end - s.start;
         const double len2 = d.dot(d);
         const double t = len2 > 0 ? std::clamp((p - s.start).dot(d) / len2, 0.0, 1.0) : 0.0;
-        return distance(p, s.start + d * t);
+        return fastDistance(p, s.start + d * t);
     }
     // Within the arc's angular range the nearest point is radial; outside it, an end point.
-    const Vec2 a = s.start - s.center;
-    const Vec2 q = p - s.center;
-    const double sweep = s.sweep();
-    double angle = std::atan2(a.cross(q), a.dot(q));
-    if (sweep < 0)
-        angle = -angle;
-    if (angle < 0)
-        angle += 2 * std::numbers::pi;
-    if (angle <= std::abs(sweep))
-        return std::abs(q.length() - s.radius());
-    return std::min(distance(p, s.start), distance(p, s.end));
+    if (detail::angleAlongArc(s, p) <= std::abs(s.sweep()))
+        return std::abs(fastDistance(p, s.center) - radiusOf(s));
+    return std::min(fastDistance(p, s.start), fastDistance(p, s.end));
 }
 
 double distanceToProfile(Vec2 p, const Profile& profile)

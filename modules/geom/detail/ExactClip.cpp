@@ -1,7 +1,7 @@
 // The exact (arc-aware, no discretisation) parts of RegionOps.h: segmentInside, clipPolylines and
 // regionsFromLoops. They only cut segments at exact loop crossings and test containment.
 #include "geom/RegionOps.h"
-#include "geom/detail/LoopQueries.h"
+#include "geom/detail/RegionLocator.h"
 
 #include <algorithm>
 #include <cmath>
@@ -11,48 +11,6 @@ namespace camwb::geom {
 namespace {
 
 using detail::Box;
-using detail::kOnBoundary;
-
-// All loop segments of the regions with their boxes, for crossing queries.
-class BoundaryIndex {
-public:
-    explicit BoundaryIndex(const std::vector<Region>& regions)
-    {
-        for (const Region& region : regions) {
-            add(region.outer);
-            for (const Profile& hole : region.holes)
-                add(hole);
-        }
-    }
-
-    // Sorted parameters in [0, 1], 0 and 1 included, where a-b meets a loop or may change side.
-    // `touched`: a-b meets some loop (at an end, too).
-    std::vector<double> breakpoints(Vec2 a, Vec2 b, bool* touched = nullptr) const
-    {
-        std::vector<double> ts{0.0, 1.0};
-        const Box box{std::min(a.x, b.x), std::min(a.y, b.y), std::max(a.x, b.x), std::max(a.y, b.y)};
-        for (std::size_t i = 0; i < m_segments.size(); ++i)
-            if (m_boxes[i].overlaps(box, kOnBoundary))
-                detail::appendCrossings(a, b, *m_segments[i], ts);
-        if (touched)
-            *touched = ts.size() > 2;
-        std::sort(ts.begin(), ts.end());
-        ts.erase(std::unique(ts.begin(), ts.end(), [](double x, double y) { return y - x <= 1e-12; }), ts.end());
-        return ts;
-    }
-
-private:
-    void add(const Profile& loop)
-    {
-        for (const Segment& s : loop.segments) {
-            m_segments.push_back(&s);
-            m_boxes.push_back(detail::boxOf(s));
-        }
-    }
-
-    std::vector<const Segment*> m_segments;  // into the regions, which outlive the index
-    std::vector<Box> m_boxes;
-};
 
 Vec2 lerp(Vec2 a, Vec2 b, double t) { return a + (b - a) * t; }
 
@@ -66,16 +24,28 @@ void appendPoint(std::vector<Vec2>& piece, Vec2 p)
 
 bool segmentInside(Vec2 a, Vec2 b, const std::vector<Region>& regions)
 {
+    // One query: a plain scan over the loops beats building a RegionLocator.
     if (regions.empty())
         return false;
-    const BoundaryIndex index(regions);
-    const std::vector<double> ts = index.breakpoints(a, b);
-    if (ts.size() < 2)
-        return anyContains(regions, a);
+    std::vector<double> ts{0.0, 1.0};
+    const Box box{std::min(a.x, b.x), std::min(a.y, b.y), std::max(a.x, b.x), std::max(a.y, b.y)};
+    auto scan = [&](const Profile& loop) {
+        for (const Segment& s : loop.segments) {
+            if (!s.isArc() && !detail::boxOf(s).overlaps(box, detail::kOnBoundary))
+                continue;
+            detail::appendCrossings(a, b, s, ts);
+        }
+    };
+    for (const Region& region : regions) {
+        scan(region.outer);
+        for (const Profile& hole : region.holes)
+            scan(hole);
+    }
+    std::sort(ts.begin(), ts.end());
     for (std::size_t i = 0; i + 1 < ts.size(); ++i)
-        if (!anyContains(regions, lerp(a, b, 0.5 * (ts[i] + ts[i + 1]))))
+        if (ts[i + 1] - ts[i] > 1e-12 && !anyContains(regions, lerp(a, b, 0.5 * (ts[i] + ts[i + 1]))))
             return false;
-    return true;
+    return anyContains(regions, a) && anyContains(regions, b);
 }
 
 std::vector<std::vector<Vec2>> clipPolylines(const std::vector<std::vector<Vec2>>& polylines,
@@ -84,14 +54,14 @@ std::vector<std::vector<Vec2>> clipPolylines(const std::vector<std::vector<Vec2>
     std::vector<std::vector<Vec2>> out;
     if (regions.empty())
         return out;
-    const BoundaryIndex index(regions);
+    const detail::RegionLocator index(regions);
     auto flush = [&out](std::vector<Vec2>& piece) {
         if (piece.size() >= 2)
             out.push_back(std::move(piece));
         piece.clear();
     };
     for (const std::vector<Vec2>& polyline : polylines) {
-        if (polyline.size() == 1 && anyContains(regions, polyline[0]))
+        if (polyline.size() == 1 && index.contains(polyline[0]))
             out.push_back(polyline);
         std::vector<Vec2> piece;
         // Whether the previous edge ended inside, known when its end touched no loop: an edge
@@ -106,8 +76,7 @@ std::vector<std::vector<Vec2>> clipPolylines(const std::vector<std::vector<Vec2>
             const std::vector<double> ts = index.breakpoints(a, b, &touched);
             bool inside = false;
             for (std::size_t i = 0; i + 1 < ts.size(); ++i) {
-                inside =
-                    carried && !touched ? carriedInside : anyContains(regions, lerp(a, b, 0.5 * (ts[i] + ts[i + 1])));
+                inside = carried && !touched ? carriedInside : index.contains(lerp(a, b, 0.5 * (ts[i] + ts[i + 1])));
                 if (inside) {
                     appendPoint(piece, lerp(a, b, ts[i]));
                     appendPoint(piece, i + 2 == ts.size() ? b : lerp(a, b, ts[i + 1]));

@@ -1,0 +1,44 @@
+// Private accelerator for many point and segment queries against one set of regions (clipping
+// zig-zag lines, link checks): loop segments bucketed by y, so a containment test or a crossing
+// search looks at the few segments in the query's horizontal band instead of all of them.
+#pragma once
+
+#include "geom/Region.h"
+#include "geom/detail/LoopQueries.h"
+
+#include <vector>
+
+namespace camwb::geom::detail {
+
+class RegionLocator {
+public:
+    // The regions must outlive the locator (it keeps pointers to their segments).
+    explicit RegionLocator(const std::vector<Region>& regions);
+
+    // Same answer as anyContains(regions, p) (points on a loop count as inside).
+    bool contains(Vec2 p) const;
+    // Sorted parameters in [0, 1], 0 and 1 included, where the segment a-b meets a loop (and so
+    // may change side). `touched`: it meets some loop, at an end too.
+    std::vector<double> breakpoints(Vec2 a, Vec2 b, bool* touched = nullptr) const;
+
+private:
+    struct Entry {
+        const Segment* segment;
+        Box box;
+        int loop;
+    };
+    int binOf(double y) const;
+
+    std::vector<Entry> m_entries;
+    std::vector<int> m_regionOfLoop;
+    std::vector<bool> m_loopIsOuter;
+    std::vector<std::vector<int>> m_bins;  // entry indices per horizontal band
+    double m_minY = 0, m_maxY = 0, m_binHeight = 1;
+    // Per-query scratch (a locator serves one thread).
+    mutable std::vector<int> m_crossings;
+    mutable std::vector<int> m_touchedLoops;
+    mutable std::vector<unsigned> m_seen;
+    mutable unsigned m_query = 0;
+};
+
+}  // namespace camwb::geom::detail

@@ -28,9 +28,7 @@ std::string operationName(const DrillParams& params) { return "drilling \"" + pa
 base::Status checkParams(const std::string& what, const std::vector<geom::Hole>& holes, const DrillParams& p,
                          const ToolController& tc)
 {
-    if (holes.empty())
-        return opError(what, "no holes selected");
-    if (base::Status status = checkToolController(what, tc); !status)
+    if (base::Status status = checkHolesAndTool(what, holes, tc); !status)
         return status;
     switch (p.cycle) {
     case CycleKind::Drill:
@@ -92,23 +90,16 @@ base::Result<OpResult> computeDrill(const std::vector<geom::Hole>& holes, const 
     if (base::Status status = checkParams(what, holes, params, tc); !status)
         return status.error();
     OpResult result;
-    std::vector<DrillHole> plans;
-    for (int i : holeVisitingOrder(holes, params.keepOrder)) {
-        auto plan = planHole(what, holes[i], params, tc, result.warnings);
-        if (!plan)
-            return plan.error();
-        plans.push_back(plan.value());
-    }
+    auto planned = planHoles<DrillHole>(holes, params.keepOrder, [&](const geom::Hole& hole) {
+        return planHole(what, hole, params, tc, result.warnings);
+    });
+    if (!planned)
+        return planned.error();
+    const std::vector<DrillHole>& plans = planned.value();
 
     int index = 0;
     auto add = [&](toolpath::Record r) { result.toolpath.add(std::move(r), {operationIndex, index++}); };
-    toolpath::SectionBegin begin;
-    begin.operationName = params.name;
-    begin.strategy = "drilling";
-    begin.toolNumber = tc.tool.number;
-    begin.feeds.cuttingMmPerMin = tc.cuttingFeedMmPerMin;
-    begin.feeds.plungeMmPerMin = tc.plungeFeedMmPerMin;
-    add(begin);
+    add(holeSection(params.name, "drilling", tc));
 
     const double clearance = params.heights.clearanceZ;
     add(toolpath::Rapid{{plans.front().top.x, plans.front().top.y, clearance}});

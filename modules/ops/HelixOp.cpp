@@ -26,9 +26,7 @@ std::string operationName(const HelixParams& params) { return "helix \"" + param
 base::Status checkParams(const std::string& what, const std::vector<geom::Hole>& holes, const HelixParams& p,
                          const ToolController& tc)
 {
-    if (holes.empty())
-        return opError(what, "no holes selected");
-    if (base::Status status = checkToolController(what, tc); !status)
+    if (base::Status status = checkHolesAndTool(what, holes, tc); !status)
         return status;
     if (!(p.pitchMm > 0))
         return opError(what, "pitch must be positive, got " + formatMm(p.pitchMm) + " mm");
@@ -179,25 +177,18 @@ base::Result<OpResult> computeHelix(const std::vector<geom::Hole>& holes, const 
     if (base::Status status = checkParams(what, holes, params, tc); !status)
         return status.error();
     OpResult result;
-    std::vector<HelixHole> plans;
-    for (int i : holeVisitingOrder(holes, false)) {
-        auto plan = planHole(what, holes[i], params, tc, result.warnings);
-        if (!plan)
-            return plan.error();
-        plans.push_back(plan.value());
-    }
+    auto planned = planHoles<HelixHole>(
+        holes, false, [&](const geom::Hole& hole) { return planHole(what, hole, params, tc, result.warnings); });
+    if (!planned)
+        return planned.error();
+    const std::vector<HelixHole>& plans = planned.value();
 
     int index = 0;
     const std::function<void(toolpath::Record)> add = [&](toolpath::Record r) {
         result.toolpath.add(std::move(r), {operationIndex, index++});
     };
-    toolpath::SectionBegin begin;
-    begin.operationName = params.name;
-    begin.strategy = "helix";
-    begin.toolNumber = tc.tool.number;
-    begin.feeds.cuttingMmPerMin = tc.cuttingFeedMmPerMin;
-    begin.feeds.plungeMmPerMin = tc.plungeFeedMmPerMin;
-    begin.feeds.entryMmPerMin = tc.rampFeed();
+    toolpath::SectionBegin begin = holeSection(params.name, "helix", tc);
+    begin.feeds.entryMmPerMin = tc.rampFeed();  // the helix is the way in
     add(begin);
 
     const double clearance = params.heights.clearanceZ;

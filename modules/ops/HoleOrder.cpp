@@ -117,6 +117,24 @@ Heights holeHeights(const geom::Hole& hole, const Heights& heights, bool depthsF
 
 std::string formatMm(double value) { return base::NumberFormat{4, true}.format(value); }
 
+base::Status checkHolesAndTool(const std::string& what, const std::vector<geom::Hole>& holes, const ToolController& tc)
+{
+    if (holes.empty())
+        return opError(what, "no holes selected");
+    return checkToolController(what, tc);
+}
+
+toolpath::SectionBegin holeSection(const std::string& name, const std::string& strategy, const ToolController& tc)
+{
+    toolpath::SectionBegin begin;
+    begin.operationName = name;
+    begin.strategy = strategy;
+    begin.toolNumber = tc.tool.number;
+    begin.feeds.cuttingMmPerMin = tc.cuttingFeedMmPerMin;
+    begin.feeds.plungeMmPerMin = tc.plungeFeedMmPerMin;
+    return begin;
+}
+
 std::string describeHole(const geom::Hole& hole)
 {
     return "hole at (" + formatMm(hole.center.x) + ", " + formatMm(hole.center.y) + ") of " +

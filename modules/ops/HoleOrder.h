@@ -1,6 +1,7 @@
-// What the helix and drilling operations share about holes: the per-hole depths, the visiting
-// order (shortRapidOrder, declared in DrillOp.h, implemented in HoleOrder.cpp) and how an error
-// names a hole. Internal to modules/ops.
+// What the helix and drilling operations share about holes: the first checks, the per-hole
+// depths, the visiting order (shortRapidOrder, declared in DrillOp.h, implemented in
+// HoleOrder.cpp), planning in that order, the section record and how messages name a hole.
+// Internal to modules/ops.
 #pragma once
 
 #include "geom/Hole.h"
@@ -24,5 +25,25 @@ std::vector<int> holeVisitingOrder(const std::vector<geom::Hole>& holes, bool ke
 
 // "0.5" rather than "0.5000": numbers in messages.
 std::string formatMm(double value);
+
+// The checks both hole operations start with: a selection that is not empty, the tool controller.
+base::Status checkHolesAndTool(const std::string& what, const std::vector<geom::Hole>& holes, const ToolController& tc);
+
+// The SectionBegin of a hole operation, with the cutting and plunge feeds.
+toolpath::SectionBegin holeSection(const std::string& name, const std::string& strategy, const ToolController& tc);
+
+// planHole(hole) -> base::Result<Plan> for every hole in visiting order; the first error stops.
+template <class Plan, class PlanHole>
+base::Result<std::vector<Plan>> planHoles(const std::vector<geom::Hole>& holes, bool keepOrder, PlanHole planHole)
+{
+    std::vector<Plan> plans;
+    for (int i : holeVisitingOrder(holes, keepOrder)) {
+        base::Result<Plan> plan = planHole(holes[i]);
+        if (!plan)
+            return plan.error();
+        plans.push_back(std::move(plan.value()));
+    }
+    return plans;
+}
 
 }  // namespace camwb::ops

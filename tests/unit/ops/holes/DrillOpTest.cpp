@@ -7,7 +7,6 @@
 
 #include <gtest/gtest.h>
 
-#include <atomic>
 #include <cmath>
 #include <map>
 #include <numbers>
@@ -313,15 +312,11 @@ TEST(DrillOp, ReportsProgressAndStopsWhenCancelled)
     const std::vector<geom::Hole> holes = ops::test::randomHoles(random, 6, 6, 6);
     ops::DrillParams p;
     p.heights = {30, 8, 0, 0};
-    std::vector<double> reported;
-    std::atomic<bool> cancel = false;
-    ops::Progress progress{[&](double f) { reported.push_back(f); }, &cancel};
-    ASSERT_TRUE(ops::computeDrill(holes, p, ops::test::toolController(6), 0, progress));
-    EXPECT_EQ(reported.size(), holes.size() + 1);
-    cancel = true;
-    auto result = ops::computeDrill(holes, p, ops::test::toolController(6), 0, progress);
-    ASSERT_FALSE(result);
-    EXPECT_EQ(result.error().message, "drilling \"Drilling\": cancelled");
+    ops::test::expectProgressAndCancel(
+        [&](const ops::Progress& progress) {
+            return ops::computeDrill(holes, p, ops::test::toolController(6), 0, progress);
+        },
+        holes.size(), "drilling \"Drilling\"");
 }
 
 TEST(DrillOp, GoldenTrace)

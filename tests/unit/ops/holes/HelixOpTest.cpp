@@ -8,7 +8,6 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
-#include <atomic>
 #include <cmath>
 #include <map>
 #include <numbers>
@@ -287,16 +286,11 @@ TEST(HelixOp, ReportsProgressAndStopsWhenCancelled)
     const std::vector<geom::Hole> holes = ops::test::randomHoles(random, 4, 20, 30);
     ops::HelixParams p;
     p.heights = {40, 12, 0, 0};
-    std::vector<double> reported;
-    std::atomic<bool> cancel = false;
-    ops::Progress progress{[&](double f) { reported.push_back(f); }, &cancel};
-    ASSERT_TRUE(ops::computeHelix(holes, p, ops::test::toolController(10), 0, progress));
-    EXPECT_EQ(reported.size(), holes.size() + 1);
-    EXPECT_EQ(reported.back(), 1);
-    cancel = true;
-    auto result = ops::computeHelix(holes, p, ops::test::toolController(10), 0, progress);
-    ASSERT_FALSE(result);
-    EXPECT_EQ(result.error().message, "helix \"Helix\": cancelled");
+    ops::test::expectProgressAndCancel(
+        [&](const ops::Progress& progress) {
+            return ops::computeHelix(holes, p, ops::test::toolController(10), 0, progress);
+        },
+        holes.size(), "helix \"Helix\"");
 }
 
 TEST(HelixOp, GoldenTrace)

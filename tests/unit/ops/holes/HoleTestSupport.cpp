@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <atomic>
 #include <cstdlib>
 #include <fstream>
 #include <limits>
@@ -56,6 +58,22 @@ const geom::Hole& holeAround(const std::vector<geom::Hole>& holes, base::Vec2 p)
         if (outside(hole) < outside(*best))
             best = &hole;
     return *best;
+}
+
+void expectProgressAndCancel(const std::function<base::Result<OpResult>(const Progress&)>& compute,
+                             std::size_t holeCount, const std::string& what)
+{
+    std::vector<double> reported;
+    std::atomic<bool> cancel = false;
+    const Progress progress{[&](double f) { reported.push_back(f); }, &cancel};
+    ASSERT_TRUE(compute(progress));
+    EXPECT_EQ(reported.size(), holeCount + 1);
+    EXPECT_TRUE(std::is_sorted(reported.begin(), reported.end()));
+    EXPECT_EQ(reported.back(), 1);
+    cancel = true;
+    auto result = compute(progress);
+    ASSERT_FALSE(result);
+    EXPECT_EQ(result.error().message, what + ": cancelled");
 }
 
 void expectGolden(const std::string& name, const std::string& trace)

@@ -5,6 +5,7 @@
 #include "geom/Hole.h"
 #include "ops/OpCommon.h"
 
+#include <functional>
 #include <random>
 #include <string>
 #include <vector>
@@ -22,6 +23,11 @@ const geom::Hole& holeAround(const std::vector<geom::Hole>& holes, base::Vec2 p)
 
 // Compares `trace` with tests/unit/ops/holes/golden/<name>; CAMWB_UPDATE_GOLDEN=1 rewrites the file.
 void expectGolden(const std::string& name, const std::string& trace);
+
+// Runs `compute` with a progress that records its reports: one per hole and 1 at the end; then
+// again with cancel set, which must fail with "<what>: cancelled".
+void expectProgressAndCancel(const std::function<base::Result<OpResult>(const Progress&)>& compute,
+                             std::size_t holeCount, const std::string& what);
 
 double uniform(std::mt19937& random, double low, double high);
 

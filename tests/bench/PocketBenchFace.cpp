@@ -223,13 +223,13 @@ ops::ToolController pocketBenchTool()
     return tc;
 }
 
-ops::PocketParams pocketBenchParams(ops::PocketPattern pattern)
+ops::PocketParams pocketBenchParams(ops::PocketPattern pattern, int levels)
 {
     ops::PocketParams params;
     params.name = pattern == ops::PocketPattern::Offset ? "Bench pocket offset" : "Bench pocket zigzag";
     params.pattern = pattern;
     params.stepoverMm = 1;
-    params.heights = {10, 3, 0, -10};
+    params.heights = {10, 3, 0, -1.0 * levels};
     params.stepDownMm = 1;
     params.entry = ops::EntryKind::Helix;
     params.toleranceMm = 0.01;

@@ -21,8 +21,9 @@ geom::Region pocketBenchFace();
 // Tool D6 flat end mill, 2 flutes, 25 mm flute length; feeds for the record only.
 ops::ToolController pocketBenchTool();
 
-// Stepover 1 mm, 10 equal levels from Z 0 to Z -10 (step-down 1), helix entry, no stock.
-ops::PocketParams pocketBenchParams(ops::PocketPattern pattern);
+// Stepover 1 mm, `levels` equal levels from Z 0 down (step-down 1: the benchmark's 10 levels end
+// at Z -10), helix entry, no stock.
+ops::PocketParams pocketBenchParams(ops::PocketPattern pattern, int levels = 10);
 
 // The face and the parameters as JSON: {"toolDiameterMm", "stepoverMm", "startZ", "finalZ",
 // "stepDownMm", "toleranceMm", "areaMm2", "loops": [{"role": "outer"|"island", "segments":

@@ -4,6 +4,7 @@
 #   CAMWB_POCKET_PATTERN  offset (default) or zigzag
 #   CAMWB_POCKET_MODE     levels (default) or sections, see below
 #   CAMWB_POCKET_RUNS     timed runs after one warm-up run (default 3)
+#   CAMWB_POCKET_LEVELS   step-down levels from the start depth (default: down to the JSON's finalZ)
 # Both modes time FreeCAD's pocket engine, Path.Area (what its Pocket operations call), with the
 # pocket parameters PathPocketBase sets, for every step-down level, then Path.fromShapes turning
 # the pockets into the path (sorting, retracts, G1/G2/G3), as PathAreaOp._buildPathArea does:
@@ -100,6 +101,8 @@ if not face.isValid() or abs(face.Area - spec['areaMm2']) > 1e-6 * spec['areaMm2
 # up to the start depth.
 buffer = 0.000001
 start_z, final_z = spec['startZ'], spec['finalZ']
+if os.environ.get('CAMWB_POCKET_LEVELS'):
+    final_z = start_z - spec['stepDownMm'] * int(os.environ['CAMWB_POCKET_LEVELS'])
 face.translate(V(0, 0, final_z - buffer))
 solid = face.extrude(V(0, 0, start_z - final_z + buffer))
 heights = depths(start_z, final_z, spec['stepDownMm'])

@@ -13,6 +13,26 @@ constexpr int kOperationRole = Qt::UserRole + 1;
 
 QString mm(double v) { return QString::number(v, 'f', 3); }
 
+QString indexList(const std::vector<int>& indices)
+{
+    QStringList parts;
+    for (int i : indices)
+        parts << QString::number(i);
+    return parts.join(QLatin1Char(' '));
+}
+
+QString geometrySummary(const document::GeometryRefs& geometry)
+{
+    QStringList parts;
+    if (!geometry.faces.empty())
+        parts << JobTree::tr("faces %1").arg(indexList(geometry.faces));
+    if (!geometry.edges.empty())
+        parts << JobTree::tr("edges %1").arg(indexList(geometry.edges));
+    if (!geometry.holes.empty())
+        parts << JobTree::tr("holes %1").arg(indexList(geometry.holes));
+    return parts.isEmpty() ? JobTree::tr("no geometry") : parts.join(QStringLiteral(", "));
+}
+
 }  // namespace
 
 JobTree::JobTree(Workbench& workbench, QWidget* parent) : QTreeWidget(parent), m_workbench(workbench)
@@ -74,11 +94,11 @@ void JobTree::rebuild()
     auto* operations = new QTreeWidgetItem(jobItem, {tr("Operations"), QString::number(job.operations.size())});
     for (std::size_t i = 0; i < job.operations.size(); ++i) {
         const document::Operation& op = job.operations[i];
-        auto* item = new QTreeWidgetItem(operations,
-                                         {QString::fromStdString(op.profile.name), tr("profile, face %1, Z%2, T%3")
-                                                                                       .arg(op.profile.faceIndex)
-                                                                                       .arg(mm(op.profile.finalDepthZ))
-                                                                                       .arg(op.toolNumber)});
+        auto* item = new QTreeWidgetItem(
+            operations, {QString::fromStdString(op.name()), tr("%1, T%2, %3")
+                                                                .arg(QString::fromLatin1(document::kindName(op.kind())))
+                                                                .arg(op.toolNumber)
+                                                                .arg(geometrySummary(op.geometry))});
         item->setData(0, kOperationRole, static_cast<int>(i));
     }
     expandAll();

@@ -9,9 +9,11 @@
 #include "gui/inspector/ModalStatePanel.h"
 #include "gui/inspector/NcInspector.h"
 #include "gui/shell/JobTree.h"
-#include "gui/shell/ProfileDialog.h"
+#include "gui/shell/NewOperation.h"
 #include "gui/shell/ReportView.h"
 #include "gui/shell/Workbench.h"
+#include "gui/tasks/OperationPanel.h"
+#include "gui/view3d/TaskOverlay.h"
 #include "gui/view3d/View3D.h"
 
 #include <QAction>
@@ -68,6 +70,10 @@ MainWindow::MainWindow(QWidget* parent) :
     QDockWidget* modalDock =
         addDock(this, tr("NC inspector"), QStringLiteral("modalDock"), m_inspectorPanel, Qt::LeftDockWidgetArea);
     // Wide enough for a full NC block and the job tree's values; the 3D view takes the rest.
+    // The task panel (FreeCAD's place for it): on the right, over the NC dock while open.
+    m_taskDock = addDock(this, tr("Task"), QStringLiteral("taskDock"), new QWidget(this), Qt::RightDockWidgetArea);
+    tabifyDockWidget(ncDock, m_taskDock);
+    m_taskDock->hide();
     resizeDocks({jobDock, ncDock}, {330, 470}, Qt::Horizontal);
     resizeDocks({reportDock}, {140}, Qt::Vertical);
     resizeDocks({jobDock, modalDock}, {260, 420}, Qt::Vertical);
@@ -168,8 +174,14 @@ void MainWindow::registerActions()
     connect(m_workbench, &Workbench::jobChanged, this, updateUndo);
     updateUndo();
 
-    add({"Cam.Op.NewProfile", tr("New &Profile"), operation, QKeySequence(Qt::CTRL | Qt::Key_P), true, true},
-        [this] { m_workbench->addProfileOperation(); });
+    using document::OperationKind;
+    add({"Cam.Op.NewContour", tr("New &Contour…"), operation, QKeySequence(Qt::CTRL | Qt::Key_P), true, true},
+        [this] { newOperation(OperationKind::Contour); });
+    add({"Cam.Op.NewPocket", tr("New P&ocket…"), operation, {}, true}, [this] { newOperation(OperationKind::Pocket); });
+    add({"Cam.Op.NewHelix", tr("New &Helix…"), operation, {}, true}, [this] { newOperation(OperationKind::Helix); });
+    add({"Cam.Op.NewDrill", tr("New &Drilling…"), operation, {}, true}, [this] { newOperation(OperationKind::Drill); });
+    // The foundation's profile is the contour now; the id stays for scripts (no menu entry).
+    add({"Cam.Op.NewProfile", tr("New &Profile"), {}}, [this] { newOperation(OperationKind::Contour); });
     add({"Cam.Op.Edit", tr("&Edit Operation…"), operation, QKeySequence(Qt::Key_F2)},
         [this] { editOperation(m_jobTree->selectedOperation()); });
     add({"Cam.Op.Delete", tr("&Delete Operation"), operation, QKeySequence::Delete},
@@ -305,9 +317,42 @@ void MainWindow::editOperation(int index)
     const auto& operations = m_workbench->job().operations;
     if (index < 0 || index >= static_cast<int>(operations.size()))
         return;
-    ProfileDialog dialog(operations[index], m_workbench->job(), m_workbench->model(), this);
-    if (dialog.exec() == QDialog::Accepted)
-        m_workbench->updateOperation(index, dialog.operation());
+    openTaskPanel(index, operations[static_cast<std::size_t>(index)], std::nullopt);
+}
+
+bool MainWindow::newOperation(document::OperationKind kind)
+{
+    auto proposal = proposeOperation(kind, m_workbench->job(), m_workbench->model(), m_view->overlay().selectedFaces());
+    if (!proposal) {
+        m_report->append(Workbench::Severity::Error, QString::fromStdString(proposal.error().toString()));
+        return false;
+    }
+    m_view->overlay().setSelectedFaces({});  // taken into the operation
+    openTaskPanel(-1, proposal->operation, proposal->newTool);
+    return true;
+}
+
+void MainWindow::openTaskPanel(int index, const document::Operation& operation,
+                               const std::optional<ops::ToolController>& newTool)
+{
+    closeTaskPanel();
+    m_taskPanel = OperationPanel::create(*m_workbench, &m_view->overlay(), index, operation, newTool, m_taskDock);
+    connect(m_taskPanel, &OperationPanel::closed, this, &MainWindow::closeTaskPanel);
+    m_taskDock->setWidget(m_taskPanel);
+    m_taskDock->setWindowTitle(tr("Task: %1").arg(QString::fromStdString(operation.name())));
+    m_taskDock->show();
+    m_taskDock->raise();
+}
+
+void MainWindow::closeTaskPanel()
+{
+    if (m_taskPanel == nullptr)
+        return;
+    OperationPanel* panel = std::exchange(m_taskPanel, nullptr);
+    panel->reject();  // no-op after OK or Cancel
+    m_taskDock->hide();
+    m_taskDock->setWidget(new QWidget(m_taskDock));
+    panel->deleteLater();
 }
 
 bool MainWindow::confirmDiscard()

@@ -2,8 +2,13 @@
 // editor and the report, menus and toolbar built from the action registry.
 #pragma once
 
+#include "document/Job.h"
+
 #include <QMainWindow>
 
+#include <optional>
+
+class QDockWidget;
 class QProgressBar;
 
 namespace camwb::gui {
@@ -13,6 +18,7 @@ class InspectorPanel;
 class NcInspector;
 class JobTree;
 class NcEditor;
+class OperationPanel;
 class ReportView;
 class View3D;
 class Workbench;
@@ -31,11 +37,18 @@ public:
     JobTree* jobTree() const { return m_jobTree; }
     NcInspector* inspector() const { return m_inspector; }
     InspectorPanel* inspectorPanel() const { return m_inspectorPanel; }
+    // The open task panel (docked on the right), or nullptr.
+    OperationPanel* taskPanel() const { return m_taskPanel; }
 
     // A .camwb job, or any other file as an NC program (openNcFile).
     bool openJob(const QString& path);
     // Reads an NC program of any dialect into the editor (editable) and traces it.
     bool openNcFile(const QString& path);
+    // Opens the task panel of operation `index`; replaces (cancels) a panel already open.
+    void editOperation(int index);
+    // Proposes an operation of `kind` from the faces picked in the 3D view (or the model's
+    // defaults) and opens its panel; OK adds it. False (reported) when the model has nothing.
+    bool newOperation(document::OperationKind kind);
 
 protected:
     void closeEvent(QCloseEvent* event) override;
@@ -46,7 +59,9 @@ private:
     void connectInspector();
     void refreshToolList();
     void updateTitle();
-    void editOperation(int index);
+    void openTaskPanel(int index, const document::Operation& operation,
+                       const std::optional<ops::ToolController>& newTool);
+    void closeTaskPanel();
     bool confirmDiscard();
 
     Workbench* m_workbench;
@@ -58,6 +73,8 @@ private:
     QProgressBar* m_progress;
     NcInspector* m_inspector;
     InspectorPanel* m_inspectorPanel;
+    QDockWidget* m_taskDock = nullptr;
+    OperationPanel* m_taskPanel = nullptr;
     bool m_fitWithToolpath = false;
     bool m_fitWithTrace = false;
 };

@@ -3,6 +3,7 @@
 #include "base/AtomicFile.h"
 #include "document/JobFile.h"
 #include "document/JobPipeline.h"
+#include "gui/shell/NewOperation.h"
 #include "kinematics/Machine.h"
 #include "post/PostRegistry.h"
 
@@ -155,53 +156,42 @@ void Workbench::importModel(const QString& path)
     }));
 }
 
-bool Workbench::addProfileOperation(int faceIndex)
+bool Workbench::addOperation(document::OperationKind kind, const std::vector<int>& selectedFaces)
 {
-    if (!m_model.hasBRep()) {
-        report(Severity::Error, tr("A profile needs a solid model (STEP, IGES or BREP); import one first."));
+    auto proposal = proposeOperation(kind, job(), m_model, selectedFaces);
+    if (!proposal) {
+        report(Severity::Error, qs(proposal.error().toString()));
         return false;
     }
-    const int face = faceIndex > 0 ? faceIndex : m_model.topPlanarFace();
-    if (face < 1 || face > m_model.faceCount() || !m_model.face(face).planar) {
-        report(Severity::Error, tr("Face %1 is not a planar face of the model.").arg(face));
-        return false;
-    }
-    const double top = m_model.face(face).planeZ;
-    const double bottom = m_model.boundsMin().z;
-    const double modelTop = m_model.boundsMax().z;
-    m_document.edit("New profile", [&](document::Job& j) {
-        if (j.tools.empty()) {
-            ops::ToolController tc;
-            tc.tool = {1, "Flat end mill D10", "flat", 10.0, 0.0, 22.0, 50.0, 3};
-            tc.spindleRpm = 3000;
-            tc.cuttingFeedMmPerMin = 600;
-            tc.plungeFeedMmPerMin = 150;
-            j.tools.push_back(tc);
-        }
-        document::Operation op;
-        op.toolNumber = j.tools.front().tool.number;
-        op.profile.name = "Profile " + std::to_string(j.operations.size() + 1);
-        op.profile.faceIndex = face;
-        op.profile.finalDepthZ = std::max(bottom, top - 5.0);
-        op.profile.safeZ = modelTop + 2.0;
-        op.profile.clearanceZ = modelTop + 10.0;
-        j.operations.push_back(op);
-    });
+    addOperation(proposal->operation, proposal->newTool);
     return true;
+}
+
+void Workbench::addOperation(const document::Operation& operation, const std::optional<ops::ToolController>& newTool)
+{
+    m_document.edit("New " + operation.name(), [&](document::Job& j) {
+        if (newTool && j.tool(newTool->tool.number) == nullptr)
+            j.tools.push_back(*newTool);
+        j.operations.push_back(operation);
+    });
 }
 
 void Workbench::updateOperation(int index, const document::Operation& operation)
 {
     if (index < 0 || index >= static_cast<int>(job().operations.size()))
         return;
-    m_document.edit("Edit " + operation.profile.name, [&](document::Job& j) { j.operations[index] = operation; });
+    document::Job edited = job();
+    edited.operations[index] = operation;
+    if (document::serializeJob(edited) == document::serializeJob(job()))
+        return;  // OK without a change: no empty undo step
+    m_document.edit("Edit " + operation.name(), [&](document::Job& j) { j.operations[index] = operation; });
 }
 
 void Workbench::removeOperation(int index)
 {
     if (index < 0 || index >= static_cast<int>(job().operations.size()))
         return;
-    m_document.edit("Delete " + job().operations[index].profile.name,
+    m_document.edit("Delete " + job().operations[index].name(),
                     [&](document::Job& j) { j.operations.erase(j.operations.begin() + index); });
 }
 

@@ -13,6 +13,7 @@
 #include <QString>
 
 #include <memory>
+#include <optional>
 #include <vector>
 
 namespace camwb::gui {
@@ -46,9 +47,13 @@ public:
     void post();
     bool saveNc(const QString& path);
 
-    // Adds a profile of the outer boundary of `faceIndex` (0 = the top planar face) with
-    // heights derived from the model; one undoable step.
-    bool addProfileOperation(int faceIndex = 0);
+    // Adds an operation of `kind` made from the selected faces or the model's defaults
+    // (gui/shell/NewOperation.h), with a default tool controller when the job has no suited
+    // tool; one undoable step. False (and a message) when the model offers nothing to cut.
+    bool addOperation(document::OperationKind kind, const std::vector<int>& selectedFaces = {});
+    // Adds `operation` (and `newTool` first, when given) as one undoable step.
+    void addOperation(const document::Operation& operation, const std::optional<ops::ToolController>& newTool = {});
+    // Replaces the operation as one undoable step ("Edit <name>"); unchanged operations add none.
     void updateOperation(int index, const document::Operation& operation);
     void removeOperation(int index);
     void undo();

@@ -1,6 +1,7 @@
 #include "gui/view3d/TaskOverlay.h"
 
 #include "gui/view3d/ToolpathPolylines.h"
+#include "gui/view3d/detail/ToolpathScene.h"
 
 #include <vtkActor.h>
 #include <vtkCellArray.h>
@@ -26,12 +27,10 @@ namespace {
 constexpr double kPreviewCutColor[3]{1.0, 0.45, 0.0};
 constexpr double kPreviewRapidColor[3]{0.95, 0.65, 0.35};
 constexpr double kSelectedFaceColor[3]{0.30, 0.80, 0.35};
+constexpr std::size_t kThickPreviewSegments = 100000;
 
-vtkSmartPointer<vtkActor> lineActor(vtkPoints* points, vtkCellArray* lines, const double color[3], float width)
+vtkSmartPointer<vtkActor> lineActor(vtkPolyData* data, const double color[3], float width)
 {
-    vtkNew<vtkPolyData> data;
-    data->SetPoints(points);
-    data->SetLines(lines);
     vtkNew<vtkPolyDataMapper> mapper;
     mapper->SetInputData(data);
     mapper->ScalarVisibilityOff();
@@ -40,9 +39,8 @@ vtkSmartPointer<vtkActor> lineActor(vtkPoints* points, vtkCellArray* lines, cons
     auto actor = vtkSmartPointer<vtkActor>::New();
     actor->SetMapper(mapper);
     actor->GetProperty()->SetColor(color[0], color[1], color[2]);
+    // Plain wide lines, not tubes: a pocket preview has a million segments.
     actor->GetProperty()->SetLineWidth(width);
-    if (width > 1.5f)
-        actor->GetProperty()->SetRenderLinesAsTubes(true);  // wide lines are not in the core profile
     actor->GetProperty()->LightingOff();
     actor->PickableOff();
     return actor;
@@ -53,9 +51,8 @@ vtkSmartPointer<vtkActor> lineActor(vtkPoints* points, vtkCellArray* lines, cons
 struct TaskOverlay::Private {
     vtkRenderer* renderer = nullptr;
     std::function<void()> render;
-    std::shared_ptr<const ToolpathPolylines> preview;
-    vtkSmartPointer<vtkActor> cutActor;
-    vtkSmartPointer<vtkActor> rapidActor;
+    std::shared_ptr<const ToolpathScene> preview;
+    std::vector<vtkSmartPointer<vtkActor>> previewActors;
     vtkSmartPointer<vtkPolyData> model;
     std::vector<int> selected;
     vtkSmartPointer<vtkActor> selectionActor;
@@ -78,28 +75,23 @@ TaskOverlay::TaskOverlay(vtkRenderer* renderer, std::function<void()> render, QO
 
 TaskOverlay::~TaskOverlay() = default;
 
-void TaskOverlay::showPreview(std::shared_ptr<const ToolpathPolylines> polylines)
+void TaskOverlay::showPreview(std::shared_ptr<const ToolpathScene> scene)
 {
-    d->remove(d->cutActor);
-    d->remove(d->rapidActor);
-    d->preview = polylines && !polylines->empty() ? std::move(polylines) : nullptr;
+    for (vtkSmartPointer<vtkActor>& actor : d->previewActors)
+        d->remove(actor);
+    d->previewActors.clear();
+    d->preview = scene && !scene->polylines().empty() ? std::move(scene) : nullptr;
     if (d->preview) {
-        vtkNew<vtkPoints> points;
-        points->SetDataTypeToDouble();
-        points->SetNumberOfPoints(static_cast<vtkIdType>(d->preview->points().size()));
-        for (std::size_t i = 0; i < d->preview->points().size(); ++i) {
-            const base::Vec3& p = d->preview->points()[i];
-            points->SetPoint(static_cast<vtkIdType>(i), p.x, p.y, p.z);
+        // Wide lines cost a pass each on software GL; a dense preview reads as well thin.
+        const float width = d->preview->polylines().segments().size() > kThickPreviewSegments ? 1.0f : 2.0f;
+        for (const ToolpathScene::Part& part : d->preview->parts()) {
+            if (part.rapid)
+                d->previewActors.push_back(lineActor(part.rapid, kPreviewRapidColor, 1.0f));
+            if (part.cut)
+                d->previewActors.push_back(lineActor(part.cut, kPreviewCutColor, width));
         }
-        vtkNew<vtkCellArray> cuts, rapids;
-        for (const PathSegment& s : d->preview->segments()) {
-            const vtkIdType ids[2]{s.from, s.to};
-            (s.kind == PathSegmentKind::Rapid ? rapids : cuts)->InsertNextCell(2, ids);
-        }
-        d->cutActor = lineActor(points, cuts, kPreviewCutColor, 3.0f);
-        d->rapidActor = lineActor(points, rapids, kPreviewRapidColor, 1.0f);
-        d->renderer->AddActor(d->rapidActor);
-        d->renderer->AddActor(d->cutActor);
+        for (const vtkSmartPointer<vtkActor>& actor : d->previewActors)
+            d->renderer->AddActor(actor);
     }
     d->render();
 }
@@ -108,7 +100,12 @@ void TaskOverlay::clearPreview() { showPreview(nullptr); }
 
 int TaskOverlay::previewSegmentCount() const
 {
-    return d->preview ? static_cast<int>(d->preview->segments().size()) : 0;
+    return d->preview ? static_cast<int>(d->preview->polylines().segments().size()) : 0;
+}
+
+const ToolpathPolylines* TaskOverlay::previewPolylines() const
+{
+    return d->preview ? &d->preview->polylines() : nullptr;
 }
 
 const std::vector<int>& TaskOverlay::selectedFaces() const { return d->selected; }

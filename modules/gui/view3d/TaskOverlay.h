@@ -16,16 +16,19 @@ class vtkRenderer;
 namespace camwb::gui {
 
 class ToolpathPolylines;
+class ToolpathScene;
 
 class TaskOverlay : public QObject {
     Q_OBJECT
 public:
     ~TaskOverlay() override;
 
-    // Replaces the preview; null or empty clears it. Built on a worker, shown here.
-    void showPreview(std::shared_ptr<const ToolpathPolylines> polylines);
+    // Replaces the preview; null or empty clears it. Prepare the scene on a worker with
+    // View3D::prepareToolpath (huge paths are simplified for display there, not here).
+    void showPreview(std::shared_ptr<const ToolpathScene> scene);
     void clearPreview();
-    int previewSegmentCount() const;  // 0 when no preview is shown
+    int previewSegmentCount() const;                    // exact segments; 0 when no preview is shown
+    const ToolpathPolylines* previewPolylines() const;  // nullptr when no preview is shown
 
     // Model faces (1-based) picked in the view, in picking order.
     const std::vector<int>& selectedFaces() const;

@@ -6,13 +6,14 @@
 #include "gui/inspector/InspectorPanel.h"
 #include "gui/inspector/ModalStatePanel.h"
 #include "gui/inspector/NcInspector.h"
-#include "gui/shell/ProfileDialog.h"
 #include "gui/shell/Workbench.h"
+#include "gui/tasks/OperationPanel.h"
 #include "gui/view3d/ToolpathPolylines.h"
 #include "gui/view3d/View3D.h"
 
 #include <QAction>
 #include <QApplication>
+#include <QCheckBox>
 #include <QComboBox>
 #include <QDockWidget>
 #include <QDoubleSpinBox>
@@ -123,7 +124,11 @@ private slots:
         MainWindow window;
         openExample(window);
         const auto before = window.workbench().job().operations.size();
+        // The foundation's id opens the contour's task panel; OK adds the operation.
         QVERIFY(window.actions().trigger(QStringLiteral("Cam.Op.NewProfile")));
+        QVERIFY(window.taskPanel());
+        QCOMPARE(window.workbench().job().operations.size(), before);
+        window.taskPanel()->accept();
         QCOMPARE(window.workbench().job().operations.size(), before + 1);
         QVERIFY(window.actions().trigger(QStringLiteral("Cam.Edit.Undo")));
         QCOMPARE(window.workbench().job().operations.size(), before);
@@ -139,27 +144,28 @@ private slots:
         MainWindow window;
         openExample(window);
         Workbench& wb = window.workbench();
-        camwb::gui::ProfileDialog dialog(wb.job().operations[0], wb.job(), wb.model(), &window);
-        auto* faces = dialog.findChild<QComboBox*>(QStringLiteral("faceCombo"));
-        QVERIFY(faces);
-        QVERIFY(faces->count() >= 3);  // top, pocket floor, bottom: the horizontal faces only
-        QCOMPARE(faces->currentData().toInt(), wb.job().operations[0].profile.faceIndex);
-        auto* depth = dialog.findChild<QDoubleSpinBox*>(QStringLiteral("finalDepthBox"));
-        QVERIFY(depth);
-        depth->setValue(8.0);
+        const QString postedBefore = window.ncEditor()->text();
+        window.editOperation(0);
+        camwb::gui::OperationPanel* panel = window.taskPanel();
+        QVERIFY(panel);
+        auto* finalAuto = panel->findChild<QCheckBox*>(QStringLiteral("finalAuto"));
+        auto* finalBox = panel->findChild<QDoubleSpinBox*>(QStringLiteral("finalBox"));
+        QVERIFY(finalAuto && finalBox);
+        finalAuto->setChecked(false);
+        finalBox->setValue(8.0);
         if (withGl())
-            dialog.grab().save(QStringLiteral(CAMWB_SCREENSHOT_DIR "/profiledialog.png"));
+            panel->grab().save(QStringLiteral(CAMWB_SCREENSHOT_DIR "/operationpanel.png"));
 
         QSignalSpy posted(&wb, &Workbench::postFinished);
-        wb.updateOperation(0, dialog.operation());
+        panel->accept();
         QVERIFY(posted.wait(120000));
-        QVERIFY(window.ncEditor()->text().contains(QLatin1String("G1 Z8.000 F150")));
+        QCOMPARE(wb.job().operations[0].heights.finalZ, std::optional<double>(8.0));
+        QVERIFY(window.ncEditor()->text() != postedBefore);
         QVERIFY(window.windowTitle().contains(QLatin1Char('*')));
 
         QVERIFY(window.actions().trigger(QStringLiteral("Cam.Edit.Undo")));
         QVERIFY(posted.wait(120000));
-        QVERIFY(window.ncEditor()->text().contains(QLatin1String("G1 Z10.000 F150")));
-        QCOMPARE(window.workbench().job().operations[0].profile.finalDepthZ, 10.0);
+        QCOMPARE(window.ncEditor()->text(), postedBefore);
         QVERIFY(!window.windowTitle().contains(QLatin1Char('*')));
     }
 

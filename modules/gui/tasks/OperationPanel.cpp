@@ -1,0 +1,301 @@
+#include "gui/tasks/OperationPanel.h"
+
+#include "gui/shell/Workbench.h"
+#include "gui/tasks/GeometryList.h"
+#include "gui/tasks/HeightsBox.h"
+#include "gui/tasks/ParamForm.h"
+#include "gui/tasks/PreviewRunner.h"
+#include "gui/tasks/detail/KindPanels.h"
+#include "gui/view3d/TaskOverlay.h"
+
+#include <QComboBox>
+#include <QDialogButtonBox>
+#include <QFormLayout>
+#include <QGroupBox>
+#include <QHBoxLayout>
+#include <QLabel>
+#include <QLineEdit>
+#include <QProgressBar>
+#include <QPushButton>
+#include <QScrollArea>
+#include <QVBoxLayout>
+
+namespace camwb::gui {
+
+namespace {
+
+QString kindTitle(document::OperationKind kind)
+{
+    switch (kind) {
+    case document::OperationKind::Contour:
+        return OperationPanel::tr("Contour");
+    case document::OperationKind::Pocket:
+        return OperationPanel::tr("Pocket");
+    case document::OperationKind::Helix:
+        return OperationPanel::tr("Helix");
+    case document::OperationKind::Drill:
+        break;
+    }
+    return OperationPanel::tr("Drilling");
+}
+
+QGroupBox* group(const QString& title, QWidget* content)
+{
+    auto* box = new QGroupBox(title);
+    auto* layout = new QVBoxLayout(box);
+    layout->setContentsMargins(6, 6, 6, 6);
+    layout->addWidget(content);
+    return box;
+}
+
+}  // namespace
+
+OperationPanel* OperationPanel::create(Workbench& workbench, TaskOverlay* overlay, int index,
+                                       const document::Operation& operation,
+                                       const std::optional<ops::ToolController>& newTool, QWidget* parent)
+{
+    const OperationPanelArgs args{workbench, overlay, index, operation, newTool, parent};
+    OperationPanel* panel = nullptr;
+    switch (operation.kind()) {
+    case document::OperationKind::Contour:
+        panel = makeContourPanel(args);
+        break;
+    case document::OperationKind::Pocket:
+        panel = makePocketPanel(args);
+        break;
+    case document::OperationKind::Helix:
+        panel = makeHelixPanel(args);
+        break;
+    case document::OperationKind::Drill:
+        panel = makeDrillPanel(args);
+        break;
+    }
+    panel->build();
+    return panel;
+}
+
+OperationPanel::OperationPanel(const OperationPanelArgs& args) :
+    QWidget(args.parent),
+    m_op(args.operation),
+    m_workbench(args.workbench),
+    m_overlay(args.overlay),
+    m_index(args.index),
+    m_newTool(args.newTool),
+    m_preview(new PreviewRunner(this))
+{
+    setObjectName(QStringLiteral("operationPanel"));
+}
+
+OperationPanel::~OperationPanel()
+{
+    if (!m_finished && m_overlay != nullptr)
+        m_overlay->clearPreview();
+}
+
+void OperationPanel::build()
+{
+    auto* outer = new QVBoxLayout(this);
+    outer->setContentsMargins(4, 4, 4, 4);
+    auto* title = new QLabel(
+        QStringLiteral("<b>%1</b> — %2")
+            .arg(kindTitle(m_op.kind()), m_index < 0 ? tr("new operation") : tr("operation %1").arg(m_index + 1)),
+        this);
+    auto* buttons = new QDialogButtonBox(QDialogButtonBox::Ok | QDialogButtonBox::Cancel, this);
+    buttons->button(QDialogButtonBox::Ok)->setObjectName(QStringLiteral("okButton"));
+    buttons->button(QDialogButtonBox::Cancel)->setObjectName(QStringLiteral("cancelButton"));
+    connect(buttons, &QDialogButtonBox::accepted, this, &OperationPanel::accept);
+    connect(buttons, &QDialogButtonBox::rejected, this, &OperationPanel::reject);
+    outer->addWidget(title);
+    outer->addWidget(buttons);
+
+    // Preview status first: it answers "did my change work" without scrolling.
+    auto* previewBox = new QWidget;
+    auto* previewLayout = new QVBoxLayout(previewBox);
+    previewLayout->setContentsMargins(0, 0, 0, 0);
+    m_status = new QLabel(tr("Preview pending…"));
+    m_status->setObjectName(QStringLiteral("previewStatus"));
+    m_status->setWordWrap(true);
+    m_status->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    m_progress = new QProgressBar;
+    m_progress->setObjectName(QStringLiteral("previewProgress"));
+    m_progress->setRange(0, 100);
+    m_cancelCompute = new QPushButton(tr("Cancel"));
+    m_cancelCompute->setObjectName(QStringLiteral("cancelPreviewButton"));
+    m_cancelCompute->setToolTip(tr("Stop computing the preview (the operation stays as edited)"));
+    auto* progressRow = new QHBoxLayout;
+    progressRow->addWidget(m_progress, 1);
+    progressRow->addWidget(m_cancelCompute);
+    previewLayout->addWidget(m_status);
+    previewLayout->addLayout(progressRow);
+    outer->addWidget(group(tr("Preview"), previewBox));
+
+    auto* content = new QWidget;
+    auto* column = new QVBoxLayout(content);
+    column->setContentsMargins(0, 0, 0, 0);
+
+    auto* general = new QWidget;
+    auto* generalForm = new QFormLayout(general);
+    m_name = new QLineEdit(QString::fromStdString(m_op.name()));
+    m_name->setObjectName(QStringLiteral("nameEdit"));
+    generalForm->addRow(tr("Name"), m_name);
+    m_tool = new QComboBox;
+    m_tool->setObjectName(QStringLiteral("toolCombo"));
+    std::vector<ops::ToolController> tools = m_workbench.job().tools;
+    if (m_newTool)
+        tools.push_back(*m_newTool);
+    for (const ops::ToolController& tc : tools) {
+        m_tool->addItem(tr("T%1 %2 (Ø%3 mm)")
+                            .arg(tc.tool.number)
+                            .arg(QString::fromStdString(tc.tool.name))
+                            .arg(tc.tool.diameterMm, 0, 'g', 4),
+                        tc.tool.number);
+        if (tc.tool.number == m_op.toolNumber)
+            m_tool->setCurrentIndex(m_tool->count() - 1);
+    }
+    generalForm->addRow(tr("Tool"), m_tool);
+    column->addWidget(group(tr("Operation"), general));
+
+    m_geometry = new GeometryList(m_op.geometry, geometryKinds(), m_workbench.model(), m_overlay);
+    column->addWidget(group(tr("Geometry"), m_geometry));
+
+    auto* params = new QWidget;
+    auto* paramsForm = new QFormLayout(params);
+    m_form = std::make_unique<ParamForm>(paramsForm, [this] { parametersChanged(); });
+    buildParameters(*m_form);
+    column->addWidget(group(tr("Parameters"), params));
+
+    m_heights = new HeightsBox(m_op.heights);
+    column->addWidget(group(tr("Heights"), m_heights));
+    column->addStretch(1);
+
+    auto* scroll = new QScrollArea(this);
+    scroll->setWidget(content);
+    scroll->setWidgetResizable(true);
+    scroll->setFrameShape(QFrame::NoFrame);
+    scroll->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);  // the dock's width; rows shrink
+    outer->addWidget(scroll, 1);
+
+    connect(m_name, &QLineEdit::textEdited, this, [this](const QString& text) { m_op.setName(text.toStdString()); });
+    connect(m_tool, &QComboBox::currentIndexChanged, this, [this] {
+        m_op.toolNumber = m_tool->currentData().toInt();
+        parametersChanged();
+    });
+    connect(m_geometry, &GeometryList::changed, this, &OperationPanel::parametersChanged);
+    connect(m_geometry, &GeometryList::rejected, this, [this](const QString& why) { m_status->setText(why); });
+    connect(m_heights, &HeightsBox::changed, this, &OperationPanel::parametersChanged);
+    connect(m_cancelCompute, &QPushButton::clicked, m_preview, &PreviewRunner::cancel);
+    connect(m_preview, &PreviewRunner::started, this, [this] { setComputing(true); });
+    connect(m_preview, &PreviewRunner::progress, m_progress, &QProgressBar::setValue);
+    connect(m_preview, &PreviewRunner::finished, this, &OperationPanel::showOutcome);
+    connect(m_preview, &PreviewRunner::cancelled, this, [this] {
+        setComputing(false);
+        m_status->setStyleSheet({});
+        m_status->setText(tr("Preview cancelled; change a parameter to compute it again."));
+    });
+    // An undo or another edit underneath: preview against the job as it is now.
+    connect(&m_workbench, &Workbench::jobChanged, this, [this] {
+        if (m_finished)
+            return;
+        if (m_index >= static_cast<int>(m_workbench.job().operations.size()))
+            reject();  // the operation is gone
+        else
+            parametersChanged();
+    });
+    setComputing(false);
+    parametersChanged();
+}
+
+document::Job OperationPanel::previewJob(int* index) const
+{
+    document::Job job = m_workbench.job();
+    if (m_newTool && job.tool(m_newTool->tool.number) == nullptr)
+        job.tools.push_back(*m_newTool);
+    if (m_index < 0) {
+        job.operations.push_back(m_op);
+        *index = static_cast<int>(job.operations.size()) - 1;
+    } else {
+        job.operations[static_cast<std::size_t>(m_index)] = m_op;
+        *index = m_index;
+    }
+    return job;
+}
+
+void OperationPanel::parametersChanged()
+{
+    if (m_finished)
+        return;
+    int index = 0;
+    document::Job job = previewJob(&index);
+    m_preview->request(std::move(job), index, m_workbench.model());
+}
+
+void OperationPanel::setComputing(bool computing)
+{
+    m_progress->setValue(0);
+    m_progress->setVisible(computing);
+    m_cancelCompute->setVisible(computing);
+    if (computing) {
+        m_status->setStyleSheet({});
+        m_status->setText(tr("Computing…"));
+    }
+}
+
+void OperationPanel::showOutcome()
+{
+    setComputing(false);
+    const auto& outcome = m_preview->lastOutcome();
+    if (!outcome)
+        return;
+    if (outcome->heightsKnown)
+        m_heights->setDerived(outcome->heights);
+    if (!outcome->ok) {
+        m_status->setStyleSheet(QStringLiteral("color: #b00020;"));
+        m_status->setText(QString::fromStdString(outcome->error));
+        if (m_overlay != nullptr)
+            m_overlay->clearPreview();
+        return;
+    }
+    const ops::MotionCounts& c = outcome->result.counts;
+    QStringList lines{
+        tr("%1 lines, %2 arcs, %3 helices, %4 cycles").arg(c.lines).arg(c.arcs).arg(c.helices).arg(c.cycles) +
+        tr(" (%1 rapids; %2 ms)").arg(c.rapids).arg(qRound(outcome->seconds * 1000))};
+    for (const std::string& warning : outcome->result.warnings)
+        lines << tr("Warning: %1").arg(QString::fromStdString(warning));
+    m_status->setStyleSheet(outcome->result.warnings.empty() ? QString() : QStringLiteral("color: #8a5a00;"));
+    m_status->setText(lines.join(QLatin1Char('\n')));
+    if (m_overlay != nullptr)
+        m_overlay->showPreview(outcome->scene);
+}
+
+QString OperationPanel::statusText() const { return m_status != nullptr ? m_status->text() : QString(); }
+
+void OperationPanel::accept()
+{
+    if (m_finished)
+        return;
+    m_op.setName(m_name->text().toStdString());
+    finish();
+    if (m_index < 0)
+        m_workbench.addOperation(m_op, m_newTool);
+    else
+        m_workbench.updateOperation(m_index, m_op);
+    emit closed();
+}
+
+void OperationPanel::reject()
+{
+    if (m_finished)
+        return;
+    finish();
+    emit closed();
+}
+
+void OperationPanel::finish()
+{
+    m_finished = true;
+    m_preview->cancel();
+    if (m_overlay != nullptr)
+        m_overlay->clearPreview();
+}
+
+}  // namespace camwb::gui

@@ -22,7 +22,10 @@ std::vector<geom::Region> nestFaces(std::vector<geom::Region> faces)
                      [](const geom::Region& a, const geom::Region& b) { return a.area() > b.area(); });
     std::vector<geom::Region> boundaries;
     for (geom::Region& face : faces) {
-        const base::Vec2 probe = face.outer.segments.front().start;
+        // A point just inside the face (left of its ccw outer loop), so that a face whose outline
+        // coincides with another face's hole (an island's top over its floor) is not nested there.
+        const geom::Segment& first = face.outer.segments.front();
+        const base::Vec2 probe = first.pointAt(0.5) + first.startTangent().leftNormal() * 1e-3;
         auto host = std::find_if(boundaries.begin(), boundaries.end(),
                                  [&](const geom::Region& b) { return b.contains(probe); });
         if (host == boundaries.end())

@@ -1,6 +1,10 @@
-# Runs camwb-cli on a job and compares the NC with the expected file byte for byte.
-# With CAMWB_UPDATE_GOLDEN=1 in the environment it rewrites the expected file instead.
-execute_process(COMMAND ${CLI} run ${JOB} -o ${OUT} RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+# Runs camwb-cli on a job and compares the output with the expected file byte for byte: the NC
+# (`run`, the default) or the CL trace (-DCOMMAND=cl). With CAMWB_UPDATE_GOLDEN=1 in the
+# environment it rewrites the expected file instead.
+if(NOT COMMAND)
+  set(COMMAND run)
+endif()
+execute_process(COMMAND ${CLI} ${COMMAND} ${JOB} -o ${OUT} RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
 if(NOT rc EQUAL 0)
   message(FATAL_ERROR "camwb-cli failed (${rc}):\n${out}${err}")
 endif()
@@ -12,5 +16,5 @@ endif()
 execute_process(COMMAND ${CMAKE_COMMAND} -E compare_files ${OUT} ${EXPECTED} RESULT_VARIABLE different)
 if(different)
   execute_process(COMMAND diff -u ${EXPECTED} ${OUT} OUTPUT_VARIABLE diff)
-  message(FATAL_ERROR "NC differs from ${EXPECTED}:\n${diff}")
+  message(FATAL_ERROR "${COMMAND} output differs from ${EXPECTED}:\n${diff}")
 endif()

@@ -48,17 +48,17 @@ TEST(JobPipeline, SameToolTwiceChangesOnceAnotherToolChangesAgain)
     ASSERT_TRUE(model.ok());
 
     document::Job twice = job.value();
-    twice.operations.push_back(twice.operations[0]);
+    twice.operations = {job->operations[0], job->operations[0]};
     auto same = document::computeProgram(twice, model.value());
     ASSERT_TRUE(same.ok());
     EXPECT_EQ(countOf<toolpath::ToolChange>(same.value()), 1u);
     EXPECT_EQ(countOf<toolpath::SectionBegin>(same.value()), 2u);
 
     ops::ToolController other = twice.tools[0];
-    other.tool.number = 2;
+    other.tool.number = 7;
     other.tool.diameterMm = 6;
     twice.tools.push_back(other);
-    twice.operations[1].toolNumber = 2;
+    twice.operations[1].toolNumber = 7;
     auto changed = document::computeProgram(twice, model.value());
     ASSERT_TRUE(changed.ok());
     EXPECT_EQ(countOf<toolpath::ToolChange>(changed.value()), 2u);

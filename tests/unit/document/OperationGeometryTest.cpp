@@ -1,0 +1,121 @@
+// Operation references resolved on the example part (face and hole indices pinned by the occ
+// tests): pocket regions with their islands, holes, derived and overridden heights, and errors.
+#include "document/OperationGeometry.h"
+#include "document/JobFile.h"
+#include "document/JobPipeline.h"
+
+#include <gtest/gtest.h>
+
+using namespace camwb;
+
+namespace {
+
+const std::string kExampleJob = std::string(CAMWB_TEST_DATA_DIR) + "/resources/examples/example-block.camwb";
+constexpr int kTopFace = 2, kBottomFace = 5, kPocketFloor = 25, kIslandTop = 30, kThroughHole = 21;
+
+struct Example {
+    document::Job job;
+    occ::Model model;
+};
+
+const Example& example()
+{
+    static const Example loaded = [] {
+        auto job = document::loadJob(kExampleJob);
+        EXPECT_TRUE(job.ok()) << job.error().toString();
+        auto model = document::loadJobModel(job.value());
+        EXPECT_TRUE(model.ok()) << model.error().toString();
+        return Example{job.value(), model.value()};
+    }();
+    return loaded;
+}
+
+document::Operation pocketOf(std::vector<int> faces)
+{
+    document::Operation op;
+    op.params = ops::PocketParams{};
+    op.geometry.faces = std::move(faces);
+    return op;
+}
+
+}  // namespace
+
+TEST(OperationGeometry, PocketFloorBringsItsIslandAsAHole)
+{
+    auto g = document::resolveGeometry(pocketOf({kPocketFloor}), example().model);
+    ASSERT_TRUE(g.ok()) << g.error().toString();
+    ASSERT_EQ(g->regions.size(), 1u);
+    EXPECT_EQ(g->regions[0].holes.size(), 1u);
+    EXPECT_GT(g->regions[0].outer.signedArea(), 0);
+}
+
+TEST(OperationGeometry, AFaceInsideAnotherSelectedFaceBecomesItsIsland)
+{
+    // The bottom face (the block's outline with the through hole) and the island's top: the
+    // island top lies inside the outline, so it is a second hole of the one region.
+    auto g = document::resolveGeometry(pocketOf({kIslandTop, kBottomFace}), example().model);
+    ASSERT_TRUE(g.ok()) << g.error().toString();
+    ASSERT_EQ(g->regions.size(), 1u);
+    EXPECT_EQ(g->regions[0].holes.size(), 2u);
+    // The island top over the top face's pocket opening is not inside the top face: two regions.
+    auto apart = document::resolveGeometry(pocketOf({kTopFace, kIslandTop}), example().model);
+    ASSERT_TRUE(apart.ok()) << apart.error().toString();
+    EXPECT_EQ(apart->regions.size(), 2u);
+}
+
+TEST(OperationGeometry, HeightsAreDerivedUnlessOverridden)
+{
+    const Example& ex = example();
+    document::Operation op = pocketOf({kPocketFloor});
+    auto g = document::resolveGeometry(op, ex.model);
+    ASSERT_TRUE(g.ok());
+    ops::Heights h = document::resolveHeights(op, g.value(), ex.model, ex.job.stock);
+    EXPECT_DOUBLE_EQ(h.startZ, 16);  // the stock top, above the model's 15
+    EXPECT_DOUBLE_EQ(h.finalZ, 10);  // the floor face
+    EXPECT_DOUBLE_EQ(h.safeZ, 18);
+    EXPECT_DOUBLE_EQ(h.clearanceZ, 26);
+    op.heights.finalZ = 11;
+    op.heights.clearanceZ = 40;
+    h = document::resolveHeights(op, g.value(), ex.model, ex.job.stock);
+    EXPECT_DOUBLE_EQ(h.finalZ, 11);
+    EXPECT_DOUBLE_EQ(h.clearanceZ, 40);
+    EXPECT_DOUBLE_EQ(h.safeZ, 18);
+
+    document::Operation helix;
+    helix.params = ops::HelixParams{};
+    helix.geometry.holes = {kThroughHole};
+    auto holes = document::resolveGeometry(helix, ex.model);
+    ASSERT_TRUE(holes.ok()) << holes.error().toString();
+    ASSERT_EQ(holes->holes.size(), 1u);
+    EXPECT_DOUBLE_EQ(holes->holes[0].diameterMm, 10);
+    h = document::resolveHeights(helix, holes.value(), ex.model, ex.job.stock);
+    EXPECT_DOUBLE_EQ(h.startZ, 15);  // the hole's top
+    EXPECT_DOUBLE_EQ(h.finalZ, 0);
+}
+
+TEST(OperationGeometry, BadReferencesAreNamed)
+{
+    const occ::Model& model = example().model;
+    auto message = [&](const document::Operation& op) {
+        auto g = document::resolveGeometry(op, model);
+        EXPECT_FALSE(g.ok());
+        return g.ok() ? std::string() : g.error().message;
+    };
+    document::Operation pocket = pocketOf({99});
+    pocket.setName("P");
+    EXPECT_EQ(message(pocket), "pocket \"P\": face 99 is not in the model (it has 30 faces)");
+    pocket.geometry.faces.clear();
+    EXPECT_EQ(message(pocket), "pocket \"P\": nothing selected: choose faces");
+    pocket.geometry.edges = {3};
+    EXPECT_NE(message(pocket).find("edges are not supported"), std::string::npos);
+
+    document::Operation drill;
+    drill.params = ops::DrillParams{};
+    drill.setName("D");
+    drill.geometry.holes = {kTopFace};
+    EXPECT_EQ(message(drill), "drill \"D\": face 2 is not a vertical cylindrical hole");
+    drill.geometry = {{kTopFace}, {}, {}};
+    EXPECT_NE(message(drill).find("works on holes"), std::string::npos);
+    EXPECT_EQ(document::resolveGeometry(drill, occ::Model{}).error().message,
+              "drill \"D\": the model has no solid geometry (STL meshes cannot be machined from)");
+}

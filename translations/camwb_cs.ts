@@ -219,6 +219,373 @@
     </message>
 </context>
 <context>
+    <name>camwb::gui::ContourPanel</name>
+    <message>
+        <source>Side</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Outside</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Inside</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>On the contour</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Left (open chains)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Right (open chains)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Climb milling</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Radial stock</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Axial stock</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Step-down (0 = one level)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Radial passes</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Radial stepover</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>None</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Arc</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Line</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Lead-in</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Lead-out</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Lead radius / length</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Entry</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Plunge</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Ramp</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Helix</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Ramp angle</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source> °</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Helix diameter (0 = tool)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Helix pitch</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Tabs</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Tab width</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Tab height</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Output</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Tool centre path</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Contour, G41/G42</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Tolerance</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>camwb::gui::DrillPanel</name>
+    <message>
+        <source>Cycle</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Drill</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Drill with dwell</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Peck (full retract)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Chip breaking</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Peck depth</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Dwell</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source> s</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Depths from each hole</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Each hole from its top to its bottom; unchecked: the start and final Z of the heights</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Retract to clearance (G98)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Between holes; unchecked: to the safe plane (R, G99)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Keep the listed order</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Unchecked: the order that shortens the rapids</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Depth at full diameter</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The final depth is where the drill has its full diameter: the tip goes deeper by the point length</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Breakthrough</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>camwb::gui::GeometryList</name>
+    <message>
+        <source>Add selected faces</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Click faces in the 3D view (Ctrl+click for several), then add them here. For holes, click the hole&apos;s wall.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Remove</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Face</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Edge</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Hole (face)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Add</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>This operation takes no %1.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>faces</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>edges</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>holes</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The model has no face %1.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The model has no edge %1.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Face %1 is not the wall of a vertical cylindrical hole.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Already in the list.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>face %1: %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Face %1 (not in the model)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Face %1 — not planar</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Face %1 — planar, Z %2, %3 mm²</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Edge %1 (not in the model)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Edge %1 — %2, %3 mm</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Hole %1 — Ø%2 at (%3, %4), Z %5 → %6%7</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>, through</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Hole %1 (not a hole of the model)</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>camwb::gui::HeightsBox</name>
+    <message>
+        <source>Clearance Z</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Safe Z</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Start Z</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Final Z</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>auto</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Derived from the model and the stock; uncheck to set it</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>camwb::gui::HelixPanel</name>
+    <message>
+        <source>Pitch per turn</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Climb milling</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Depths from each hole</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Each hole from its top to its bottom; unchecked: the start and final Z of the heights</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Breakthrough</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Radial stock</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Finishing circle</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Tolerance</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
     <name>camwb::gui::InspectorPanel</name>
     <message>
         <source>Automatic</source>
@@ -324,7 +691,23 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>profile, face %1, Z%2, T%3</source>
+        <source>faces %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>edges %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>holes %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>no geometry</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1, T%2, %3</source>
         <translation type="unfinished"></translation>
     </message>
 </context>
@@ -553,6 +936,30 @@ CAM and post-processor workbench.</source>
     </message>
     <message>
         <source>Segment from the called program %1; the editor shows its call.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Task</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>New &amp;Contour…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>New P&amp;ocket…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>New &amp;Helix…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>New &amp;Drilling…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Task: %1</source>
         <translation type="unfinished"></translation>
     </message>
 </context>
@@ -797,9 +1204,45 @@ CAM and post-processor workbench.</source>
     </message>
 </context>
 <context>
-    <name>camwb::gui::ProfileDialog</name>
+    <name>camwb::gui::OperationPanel</name>
     <message>
-        <source>Profile: %1</source>
+        <source>Contour</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Pocket</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Helix</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Drilling</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>new operation</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>operation %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Preview pending…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Stop computing the preview (the operation stays as edited)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Preview</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
@@ -807,11 +1250,7 @@ CAM and post-processor workbench.</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>Face %1 at Z %2 (%3 mm²)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Boundary of face</source>
+        <source>T%1 %2 (Ø%3 mm)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
@@ -819,31 +1258,130 @@ CAM and post-processor workbench.</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>Climb</source>
+        <source>Operation</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>Conventional</source>
+        <source>Geometry</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>Direction</source>
+        <source>Parameters</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>Final depth (Z)</source>
+        <source>Heights</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>Safe height (Z)</source>
+        <source>Preview cancelled; change a parameter to compute it again.</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>Clearance height (Z)</source>
+        <source>Computing…</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>Heights must satisfy clearance ≥ safe height &gt; final depth.</source>
+        <source>%1 lines, %2 arcs, %3 helices, %4 cycles</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source> (%1 rapids; %2 ms)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Warning: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>camwb::gui::PocketPanel</name>
+    <message>
+        <source>Pattern</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Offset (spiral inward)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Zig-zag</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Zig-zag angle</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source> °</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Stepover</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source> % of Ø</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Stepover (mm, 0 = use %)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Step-down (0 = one level)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Wall stock</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Floor stock</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Finish walls</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Finish floor</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Climb milling</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Entry</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Helix</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Ramp</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Plunge</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Helix diameter (0 = 90 % Ø)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Helix pitch</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Ramp angle</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Tolerance</source>
         <translation type="unfinished"></translation>
     </message>
 </context>
@@ -1099,14 +1637,6 @@ CAM and post-processor workbench.</source>
     </message>
     <message>
         <source>Imported %1 (%2 faces)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>A profile needs a solid model (STEP, IGES or BREP); import one first.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Face %1 is not a planar face of the model.</source>
         <translation type="unfinished"></translation>
     </message>
     <message>

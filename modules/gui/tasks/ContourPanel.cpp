@@ -5,6 +5,7 @@
 #include "gui/tasks/ParamForm.h"
 #include "gui/tasks/detail/KindPanels.h"
 
+#include <QCoreApplication>
 #include <QDoubleSpinBox>
 #include <QSpinBox>
 
@@ -13,6 +14,9 @@ namespace camwb::gui {
 namespace {
 
 class ContourPanel : public OperationPanel {
+    // No Q_OBJECT in a .cpp-local class: tr() needs its own context to match what lupdate records.
+    Q_DECLARE_TR_FUNCTIONS(camwb::gui::ContourPanel)
+
 public:
     explicit ContourPanel(const OperationPanelArgs& args) : OperationPanel(args) {}
 

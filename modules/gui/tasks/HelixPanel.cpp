@@ -5,6 +5,7 @@
 #include "gui/tasks/ParamForm.h"
 #include "gui/tasks/detail/KindPanels.h"
 
+#include <QCoreApplication>
 #include <QDoubleSpinBox>
 
 namespace camwb::gui {
@@ -12,6 +13,9 @@ namespace camwb::gui {
 namespace {
 
 class HelixPanel : public OperationPanel {
+    // No Q_OBJECT in a .cpp-local class: tr() needs its own context to match what lupdate records.
+    Q_DECLARE_TR_FUNCTIONS(camwb::gui::HelixPanel)
+
 public:
     explicit HelixPanel(const OperationPanelArgs& args) : OperationPanel(args) {}
 

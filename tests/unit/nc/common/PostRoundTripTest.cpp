@@ -1,6 +1,7 @@
-// Round trip of every post golden (posts/<id>/tests/<case>/): the NC the post wrote
-// (expected.<ext>), read back by our interpreter for its dialect, must move the machine as the CL
-// it was posted from (input.*) does, within the output precision (MotionMatch.h).
+// Round trip of every post golden (posts/<id>/tests/<case>/) and of the example job's goldens
+// (tests/golden/jobs/example-block: the NC and the CL the operations made): the NC the post wrote,
+// read back by our interpreter for its dialect, must move the machine as the CL it was posted
+// from does, within the output precision (MotionMatch.h).
 #include "MotionMatch.h"
 
 #include "nc/Interpreter.h"
@@ -21,7 +22,10 @@ namespace fs = std::filesystem;
 struct PostCase {
     std::string name;  // "<post>_<case>" for the test name
     fs::path dir;
+    fs::path input, nc;  // the CL and the NC; empty: input.* and expected.* in dir
 };
+
+void PrintTo(const PostCase& c, std::ostream* out) { *out << c.name; }
 
 std::vector<PostCase> postCases()
 {
@@ -40,6 +44,8 @@ std::vector<PostCase> postCases()
         }
     }
     std::sort(cases.begin(), cases.end(), [](const PostCase& a, const PostCase& b) { return a.name < b.name; });
+    const fs::path example = fs::path(CAMWB_TEST_DATA_DIR) / "tests/golden/jobs/example-block";
+    cases.push_back({"example_job", example, example / "expected.trace", example / "expected.mpf"});
     return cases;
 }
 
@@ -93,8 +99,8 @@ class PostRoundTrip : public testing::TestWithParam<PostCase> {};
 TEST_P(PostRoundTrip, NcTracesBackToTheCl)
 {
     const fs::path dir = GetParam().dir;
-    const fs::path input = onlyFile(dir, "input");
-    const fs::path nc = onlyFile(dir, "expected", ".warnings");
+    const fs::path input = GetParam().input.empty() ? onlyFile(dir, "input") : GetParam().input;
+    const fs::path nc = GetParam().nc.empty() ? onlyFile(dir, "expected", ".warnings") : GetParam().nc;
     ASSERT_FALSE(input.empty()) << dir;
     ASSERT_FALSE(nc.empty()) << dir;
 

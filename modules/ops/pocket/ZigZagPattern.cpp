@@ -79,30 +79,25 @@ std::optional<std::vector<Cut>> zigZagPattern(const PatternInput& in, const Prog
             first.used = true;
             Cut chain;
             chain.path.push_back(Segment::line(first.a, first.b));
-            // Back and forth: the nearest free end on the next line, while the connector is inside.
+            // Back and forth: the nearest free end on the next line whose connector stays inside
+            // (a nearer piece may lie beyond an island or a bay of the wall).
             for (std::size_t next = j + 1; next < byLine.size(); ++next) {
                 const Vec2 end = chain.end();
-                Piece* best = nullptr;
-                bool fromA = true;
-                double bestDistance = std::numeric_limits<double>::infinity();
-                for (Piece& p : byLine[next]) {
-                    if (p.used)
-                        continue;
-                    for (const bool a : {true, false}) {
-                        const double d = distance(end, a ? p.a : p.b);
-                        if (d < bestDistance) {
-                            best = &p;
-                            fromA = a;
-                            bestDistance = d;
-                        }
-                    }
-                }
-                if (!best)
+                std::vector<std::pair<double, std::pair<Piece*, bool>>> candidates;
+                for (Piece& p : byLine[next])
+                    if (!p.used)
+                        for (const bool a : {true, false})
+                            candidates.push_back({distance(end, a ? p.a : p.b), {&p, a}});
+                std::sort(candidates.begin(), candidates.end(),
+                          [](const auto& x, const auto& y) { return x.first < y.first; });
+                const auto linkable = std::find_if(candidates.begin(), candidates.end(), [&](const auto& c) {
+                    return geom::segmentInside(end, c.second.second ? c.second.first->a : c.second.first->b, region);
+                });
+                if (linkable == candidates.end())
                     break;
+                auto [best, fromA] = linkable->second;
                 const Vec2 s = fromA ? best->a : best->b;
                 const Vec2 e = fromA ? best->b : best->a;
-                if (!geom::segmentInside(end, s, region))
-                    break;
                 best->used = true;
                 appendLine(chain.path, end, s);
                 chain.path.push_back(Segment::line(s, e));

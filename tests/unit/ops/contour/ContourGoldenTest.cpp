@@ -1,12 +1,9 @@
 // CL trace goldens of representative contours, compared with the files under golden/.
 // Regenerate with CAMWB_UPDATE_GOLDEN=1 (the test then writes the files and passes); review
 // each changed file before committing it.
+#include "../support/OpsGolden.h"
 #include "ContourTestUtil.h"
 #include "toolpath/TraceWriter.h"
-
-#include <cstdlib>
-#include <fstream>
-#include <sstream>
 
 using namespace camwb;
 using namespace camwb::ops::test;
@@ -15,18 +12,7 @@ namespace {
 
 void compareWithGolden(const std::string& name, const toolpath::Toolpath& tp)
 {
-    const std::string path = std::string(CAMWB_TEST_DATA_DIR) + "/tests/unit/ops/contour/golden/" + name + ".trace";
-    const std::string trace = toolpath::traceOf(tp);
-    const char* update = std::getenv("CAMWB_UPDATE_GOLDEN");
-    if (update && std::string(update) == "1") {
-        std::ofstream(path, std::ios::binary) << trace;
-        return;
-    }
-    std::ifstream in(path, std::ios::binary);
-    ASSERT_TRUE(in) << "missing golden " << path << " (run with CAMWB_UPDATE_GOLDEN=1 to create it)";
-    std::stringstream expected;
-    expected << in.rdbuf();
-    EXPECT_EQ(trace, expected.str()) << "trace differs from " << path;
+    expectGolden("contour", name + ".trace", toolpath::traceOf(tp));
 }
 
 toolpath::Toolpath compute(const std::vector<Profile>& loops, const ops::ContourParams& p)

@@ -336,5 +336,5 @@ TEST(DrillOp, GoldenTrace)
     };
     auto result = ops::computeDrill(holes, p, tc, 5);
     ASSERT_TRUE(result) << result.error().message;
-    ops::test::expectGolden("drill.trace", toolpath::traceOf(result->toolpath));
+    ops::test::expectGolden("holes", "drill.trace", toolpath::traceOf(result->toolpath));
 }

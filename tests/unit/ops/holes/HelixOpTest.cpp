@@ -309,5 +309,5 @@ TEST(HelixOp, GoldenTrace)
     };
     auto result = ops::computeHelix(holes, p, ops::test::toolController(6), 2);
     ASSERT_TRUE(result) << result.error().message;
-    ops::test::expectGolden("helix.trace", toolpath::traceOf(result->toolpath));
+    ops::test::expectGolden("holes", "helix.trace", toolpath::traceOf(result->toolpath));
 }

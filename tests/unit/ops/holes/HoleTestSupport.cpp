@@ -4,10 +4,7 @@
 
 #include <algorithm>
 #include <atomic>
-#include <cstdlib>
-#include <fstream>
 #include <limits>
-#include <sstream>
 
 namespace camwb::ops::test {
 
@@ -74,20 +71,6 @@ void expectProgressAndCancel(const std::function<base::Result<OpResult>(const Pr
     auto result = compute(progress);
     ASSERT_FALSE(result);
     EXPECT_EQ(result.error().message, what + ": cancelled");
-}
-
-void expectGolden(const std::string& name, const std::string& trace)
-{
-    const std::string path = std::string(CAMWB_TEST_DATA_DIR) + "/tests/unit/ops/holes/golden/" + name;
-    if (const char* update = std::getenv("CAMWB_UPDATE_GOLDEN"); update && std::string(update) == "1") {
-        std::ofstream(path, std::ios::binary) << trace;
-        return;
-    }
-    std::ifstream in(path, std::ios::binary);
-    ASSERT_TRUE(in) << "no golden " << path << " (CAMWB_UPDATE_GOLDEN=1 writes it)";
-    std::stringstream expected;
-    expected << in.rdbuf();
-    EXPECT_EQ(trace, expected.str()) << "golden " << path << " differs (CAMWB_UPDATE_GOLDEN=1 rewrites it)";
 }
 
 }  // namespace camwb::ops::test

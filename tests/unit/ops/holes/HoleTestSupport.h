@@ -1,7 +1,8 @@
-// Shared by the helix and drilling tests: generated hole sets, a tool controller, a golden trace
-// comparison and small geometry helpers.
+// Shared by the helix and drilling tests: generated hole sets, a tool controller, progress and
+// cancel checks and small geometry helpers (golden traces: ../support/OpsGolden.h).
 #pragma once
 
+#include "../support/OpsGolden.h"
 #include "geom/Hole.h"
 #include "ops/OpCommon.h"
 
@@ -20,9 +21,6 @@ ToolController toolController(double diameterMm);
 
 // The hole `p` is in (or nearest to, by distance from its wall; the holes do not overlap).
 const geom::Hole& holeAround(const std::vector<geom::Hole>& holes, base::Vec2 p);
-
-// Compares `trace` with tests/unit/ops/holes/golden/<name>; CAMWB_UPDATE_GOLDEN=1 rewrites the file.
-void expectGolden(const std::string& name, const std::string& trace);
 
 // Runs `compute` with a progress that records its reports: one per hole and 1 at the end; then
 // again with cancel set, which must fail with "<what>: cancelled".

@@ -4,6 +4,7 @@
 #include "PocketTestSupport.h"
 
 #include "../../geom/GeomTestUtil.h"
+#include "../support/OpsGolden.h"
 #include "toolpath/TraceWriter.h"
 
 #include <gtest/gtest.h>
@@ -290,7 +291,7 @@ TEST(PocketOp, GoldenOffsetWithIslandAndHelix)
         {geom::test::roundedRectangle(0, 0, 36, 26, 5), {geom::test::circle({18, 13}, 4).reversed()}}};
     auto result = ops::computePocket(shape, p, toolOf(6), 2);
     ASSERT_TRUE(result.ok()) << result.error().message;
-    compareGolden("offset_island_helix.trace", toolpath::traceOf(result->toolpath));
+    ops::test::expectGolden("pocket", "offset_island_helix.trace", toolpath::traceOf(result->toolpath));
 }
 
 TEST(PocketOp, GoldenZigZagRamp)
@@ -306,5 +307,5 @@ TEST(PocketOp, GoldenZigZagRamp)
     p.wallStockMm = 0.3;
     auto result = ops::computePocket({rectRegion(0, 0, 30, 20)}, p, toolOf(5), 3);
     ASSERT_TRUE(result.ok()) << result.error().message;
-    compareGolden("zigzag_ramp.trace", toolpath::traceOf(result->toolpath));
+    ops::test::expectGolden("pocket", "zigzag_ramp.trace", toolpath::traceOf(result->toolpath));
 }

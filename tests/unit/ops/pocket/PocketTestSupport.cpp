@@ -6,12 +6,9 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdlib>
-#include <fstream>
 #include <limits>
 #include <numbers>
 #include <random>
-#include <sstream>
 
 namespace camwb::ops::pocket::test {
 
@@ -156,9 +153,9 @@ double distanceToLoops(const std::vector<geom::Region>& regions, Vec2 p)
 {
     double best = std::numeric_limits<double>::infinity();
     for (const geom::Region& r : regions) {
-        best = std::min(best, geom::test::distanceToProfile(p, r.outer));
+        best = std::min(best, geom::distanceToProfile(p, r.outer));
         for (const geom::Profile& hole : r.holes)
-            best = std::min(best, geom::test::distanceToProfile(p, hole));
+            best = std::min(best, geom::distanceToProfile(p, hole));
     }
     return best;
 }
@@ -238,20 +235,6 @@ Coverage rasterCoverage(const std::vector<geom::Region>& area, const std::vector
             }
     }
     return result;
-}
-
-void compareGolden(const std::string& name, const std::string& trace)
-{
-    const std::string path = std::string(CAMWB_TEST_DATA_DIR) + "/tests/unit/ops/pocket/golden/" + name;
-    if (const char* update = std::getenv("CAMWB_UPDATE_GOLDEN"); update && std::string(update) == "1") {
-        std::ofstream(path, std::ios::binary) << trace;
-        return;
-    }
-    std::ifstream in(path, std::ios::binary);
-    ASSERT_TRUE(in) << "no golden " << path << " (CAMWB_UPDATE_GOLDEN=1 writes it)";
-    std::stringstream expected;
-    expected << in.rdbuf();
-    EXPECT_EQ(trace, expected.str()) << "golden " << path << " differs (CAMWB_UPDATE_GOLDEN=1 rewrites it)";
 }
 
 }  // namespace camwb::ops::pocket::test

@@ -49,7 +49,4 @@ struct Coverage {
 Coverage rasterCoverage(const std::vector<geom::Region>& area, const std::vector<Vec2>& centres, double radius,
                         double cell);
 
-// Compares with tests/unit/ops/pocket/golden/<name>; CAMWB_UPDATE_GOLDEN=1 rewrites the file.
-void compareGolden(const std::string& name, const std::string& trace);
-
 }  // namespace camwb::ops::pocket::test

@@ -1,36 +1,15 @@
 #include "ops/contour/Clearance.h"
 
 #include "base/NumberFormat.h"
+#include "geom/Region.h"
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <numbers>
 
 namespace camwb::ops::contour {
 
 namespace {
-
-double distanceToSegment(Vec2 p, const Segment& s)
-{
-    if (!s.isArc()) {
-        const Vec2 d = s.end - s.start;
-        const double len2 = d.dot(d);
-        const double t = len2 > 0 ? std::clamp((p - s.start).dot(d) / len2, 0.0, 1.0) : 0.0;
-        return distance(p, s.start + d * t);
-    }
-    const Vec2 a = s.start - s.center;
-    const Vec2 q = p - s.center;
-    double angle = std::atan2(a.cross(q), a.dot(q));
-    const double sweep = s.sweep();
-    if (sweep < 0)
-        angle = -angle;
-    if (angle < 0)
-        angle += 2 * std::numbers::pi;
-    if (angle <= std::abs(sweep))
-        return std::abs(q.length() - s.radius());
-    return std::min(distance(p, s.start), distance(p, s.end));
-}
 
 // Which side of the segment's carrier p lies on, seen along its direction: > 0 left.
 double sideOf(Vec2 p, const Segment& s)
@@ -67,8 +46,9 @@ double Material::clearance(Vec2 p) const
 {
     double best = std::numeric_limits<double>::infinity();
     const Segment* nearest = nullptr;
+    // Not geom::distanceToProfile: the side tests of open chains need the nearest segment too.
     for (const Segment& s : m_contour.segments) {
-        const double d = distanceToSegment(p, s);
+        const double d = geom::distanceToSegment(p, s);
         if (d < best) {
             best = d;
             nearest = &s;

@@ -1,9 +1,10 @@
 #include "ops/contour/Path.h"
 
+#include "ops/pocket/CutPath.h"  // nearestOnSegment: the pocket's nearest point on a line or arc
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <numbers>
 
 namespace camwb::ops::contour {
 
@@ -46,37 +47,12 @@ std::vector<Segment> piecesBetween(const Path& path, double from, double to)
     return out;
 }
 
-namespace {
-
-// Length fraction along s of the point nearest to p.
-double nearestFraction(const Segment& s, Vec2 p)
-{
-    if (!s.isArc()) {
-        const Vec2 d = s.end - s.start;
-        const double len2 = d.dot(d);
-        return len2 > 0 ? std::clamp((p - s.start).dot(d) / len2, 0.0, 1.0) : 0.0;
-    }
-    const Vec2 a = s.start - s.center;
-    const Vec2 q = p - s.center;
-    double angle = std::atan2(a.cross(q), a.dot(q));
-    const double sweep = s.sweep();
-    if (sweep < 0)
-        angle = -angle;
-    if (angle < 0)
-        angle += 2 * std::numbers::pi;
-    if (angle <= std::abs(sweep))
-        return angle / std::abs(sweep);
-    return distance(p, s.start) <= distance(p, s.end) ? 0.0 : 1.0;
-}
-
-}  // namespace
-
 double nearestArclength(const Path& path, Vec2 p)
 {
     double best = std::numeric_limits<double>::infinity();
     double bestS = 0, at = 0;
     for (const Segment& s : path.segments) {
-        const double t = nearestFraction(s, p);
+        const double t = pocket::nearestOnSegment(s, p).t;
         const double d = distance(p, s.pointAt(t));
         if (d < best) {
             best = d;

@@ -1,7 +1,8 @@
-// Shapes and a point-to-profile distance shared by the geom and ops unit tests.
+// Shapes shared by the geom and ops unit tests (distances: geom::distanceToProfile in Region.h).
 #pragma once
 
 #include "geom/Profile.h"
+#include "geom/Region.h"  // geom::distanceToSegment / distanceToProfile, used with these shapes
 
 #include <algorithm>
 #include <cmath>
@@ -44,36 +45,6 @@ inline Profile circle(Vec2 c, double r)
     Profile p;
     p.segments = {Segment::arc(c + Vec2{r, 0}, c + Vec2{r, 0}, c, true)};
     return p;
-}
-
-inline double distanceToSegment(Vec2 p, const Segment& s)
-{
-    if (!s.isArc()) {
-        const Vec2 d = s.end - s.start;
-        const double len2 = d.dot(d);
-        const double t = len2 > 0 ? std::clamp((p - s.start).dot(d) / len2, 0.0, 1.0) : 0.0;
-        return distance(p, s.start + d * t);
-    }
-    // Inside the arc's angular range the nearest point is radial; outside it is an end point.
-    const Vec2 a = s.start - s.center;
-    const Vec2 q = p - s.center;
-    double angle = std::atan2(a.cross(q), a.dot(q));
-    const double sweep = s.sweep();
-    if (sweep < 0)
-        angle = -angle;
-    if (angle < 0)
-        angle += 2 * std::numbers::pi;
-    if (angle <= std::abs(sweep))
-        return std::abs(q.length() - s.radius());
-    return std::min(distance(p, s.start), distance(p, s.end));
-}
-
-inline double distanceToProfile(Vec2 p, const Profile& profile)
-{
-    double best = std::numeric_limits<double>::infinity();
-    for (const Segment& s : profile.segments)
-        best = std::min(best, test::distanceToSegment(p, s));
-    return best;
 }
 
 inline std::size_t countArcs(const Profile& p)

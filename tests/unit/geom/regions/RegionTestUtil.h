@@ -27,7 +27,7 @@ inline double distanceToPolyline(Vec2 p, const std::vector<Vec2>& pts, bool clos
     double best = std::numeric_limits<double>::infinity();
     const std::size_t n = pts.size();
     for (std::size_t i = 0; i + (closed ? 0 : 1) < n; ++i)
-        best = std::min(best, test::distanceToSegment(p, Segment::line(pts[i], pts[(i + 1) % n])));
+        best = std::min(best, geom::distanceToSegment(p, Segment::line(pts[i], pts[(i + 1) % n])));
     return best;
 }
 

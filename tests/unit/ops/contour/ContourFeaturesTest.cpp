@@ -5,7 +5,7 @@
 
 using namespace camwb;
 using namespace camwb::ops::test;
-using geom::test::distanceToProfile;
+using geom::distanceToProfile;
 using geom::test::roundedRectangle;
 
 namespace {

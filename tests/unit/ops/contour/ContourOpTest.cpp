@@ -7,8 +7,8 @@
 
 using namespace camwb;
 using namespace camwb::ops::test;
+using geom::distanceToProfile;
 using geom::test::circle;
-using geom::test::distanceToProfile;
 using geom::test::rectangle;
 using geom::test::roundedRectangle;
 

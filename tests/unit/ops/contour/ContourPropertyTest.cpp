@@ -75,7 +75,7 @@ double chainSide(const Profile& chain, Vec2 p)
 {
     double best = 1e300, side = 0;
     for (const Segment& s : chain.segments) {
-        const double d = geom::test::distanceToSegment(p, s);
+        const double d = geom::distanceToSegment(p, s);
         if (d < best) {
             best = d;
             side = s.isArc() ? (s.ccw ? 1 : -1) * (s.radius() - distance(p, s.center))
@@ -130,7 +130,7 @@ TEST(ContourProperty, NoGougeRapidsAboveSafeLevelsExactArcsKept)
                     EXPECT_GE(pt.z, bottom - 1e-12);
                     const double c = shape.profile.closed ? clearance(shape.profile, poly, pt.xy(),
                                                                       shape.side == ops::ContourSide::Outside)
-                                                          : geom::test::distanceToProfile(pt.xy(), shape.profile);
+                                                          : geom::distanceToProfile(pt.xy(), shape.profile);
                     ASSERT_GE(c, minClear)
                         << "gouge by record " << m.record << " at " << pt.x << ", " << pt.y << ", " << pt.z;
                     if (!shape.profile.closed && m.lengthXY > 0)  // the tool stays on its side of the chain

@@ -122,7 +122,7 @@ inline std::vector<Move> walk(const toolpath::Toolpath& tp)
 // `poly`: the contour discretised (geom::discretize, 1e-4), for the inside test.
 inline double clearance(const Profile& contour, const std::vector<Vec2>& poly, Vec2 p, bool materialInside)
 {
-    const double d = geom::test::distanceToProfile(p, contour);
+    const double d = geom::distanceToProfile(p, contour);
     if (!contour.closed)
         return d;
     bool inside = false;

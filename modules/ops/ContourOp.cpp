@@ -158,12 +158,7 @@ base::Result<OpResult> computeContour(const std::vector<geom::Profile>& contours
     }
 
     Emitter out(result.toolpath, operationIndex);
-    toolpath::SectionBegin begin;
-    begin.operationName = params.name;
-    begin.strategy = "contour";
-    begin.toolNumber = tc.tool.number;
-    begin.feeds.cuttingMmPerMin = tc.cuttingFeedMmPerMin;
-    begin.feeds.plungeMmPerMin = tc.plungeFeedMmPerMin;
+    toolpath::SectionBegin begin = sectionBegin(params.name, "contour", tc);
     begin.feeds.entryMmPerMin = tc.rampFeed();
     begin.feeds.exitMmPerMin = tc.cuttingFeedMmPerMin;
     out.add(begin);

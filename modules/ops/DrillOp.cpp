@@ -99,7 +99,7 @@ base::Result<OpResult> computeDrill(const std::vector<geom::Hole>& holes, const 
 
     int index = 0;
     auto add = [&](toolpath::Record r) { result.toolpath.add(std::move(r), {operationIndex, index++}); };
-    add(holeSection(params.name, "drilling", tc));
+    add(sectionBegin(params.name, "drilling", tc));
 
     const double clearance = params.heights.clearanceZ;
     add(toolpath::Rapid{{plans.front().top.x, plans.front().top.y, clearance}});

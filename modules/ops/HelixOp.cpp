@@ -187,7 +187,7 @@ base::Result<OpResult> computeHelix(const std::vector<geom::Hole>& holes, const 
     const std::function<void(toolpath::Record)> add = [&](toolpath::Record r) {
         result.toolpath.add(std::move(r), {operationIndex, index++});
     };
-    toolpath::SectionBegin begin = holeSection(params.name, "helix", tc);
+    toolpath::SectionBegin begin = sectionBegin(params.name, "helix", tc);
     begin.feeds.entryMmPerMin = tc.rampFeed();  // the helix is the way in
     add(begin);
 

@@ -124,17 +124,6 @@ base::Status checkHolesAndTool(const std::string& what, const std::vector<geom::
     return checkToolController(what, tc);
 }
 
-toolpath::SectionBegin holeSection(const std::string& name, const std::string& strategy, const ToolController& tc)
-{
-    toolpath::SectionBegin begin;
-    begin.operationName = name;
-    begin.strategy = strategy;
-    begin.toolNumber = tc.tool.number;
-    begin.feeds.cuttingMmPerMin = tc.cuttingFeedMmPerMin;
-    begin.feeds.plungeMmPerMin = tc.plungeFeedMmPerMin;
-    return begin;
-}
-
 std::string describeHole(const geom::Hole& hole)
 {
     return "hole at (" + formatMm(hole.center.x) + ", " + formatMm(hole.center.y) + ") of " +

@@ -1,6 +1,6 @@
 // What the helix and drilling operations share about holes: the first checks, the per-hole
 // depths, the visiting order (shortRapidOrder, declared in DrillOp.h, implemented in
-// HoleOrder.cpp), planning in that order, the section record and how messages name a hole.
+// HoleOrder.cpp), planning in that order and how messages name a hole.
 // Internal to modules/ops.
 #pragma once
 
@@ -28,9 +28,6 @@ std::string formatMm(double value);
 
 // The checks both hole operations start with: a selection that is not empty, the tool controller.
 base::Status checkHolesAndTool(const std::string& what, const std::vector<geom::Hole>& holes, const ToolController& tc);
-
-// The SectionBegin of a hole operation, with the cutting and plunge feeds.
-toolpath::SectionBegin holeSection(const std::string& name, const std::string& strategy, const ToolController& tc);
 
 // planHole(hole) -> base::Result<Plan> for every hole in visiting order; the first error stops.
 template <class Plan, class PlanHole>

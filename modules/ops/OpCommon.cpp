@@ -28,6 +28,17 @@ MotionCounts countMotions(const toolpath::Toolpath& toolpath)
     return counts;
 }
 
+toolpath::SectionBegin sectionBegin(const std::string& name, const std::string& strategy, const ToolController& tc)
+{
+    toolpath::SectionBegin begin;
+    begin.operationName = name;
+    begin.strategy = strategy;
+    begin.toolNumber = tc.tool.number;
+    begin.feeds.cuttingMmPerMin = tc.cuttingFeedMmPerMin;
+    begin.feeds.plungeMmPerMin = tc.plungeFeedMmPerMin;
+    return begin;
+}
+
 std::vector<double> stepDownLevels(double startZ, double finalZ, double stepDown)
 {
     const double depth = startZ - finalZ;

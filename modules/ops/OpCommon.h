@@ -60,6 +60,11 @@ struct OpResult {
     MotionCounts counts;
 };
 
+// The SectionBegin an operation opens its toolpath with: name, strategy ("contour", "pocket",
+// "helix", "drilling"), tool number and the cutting and plunge feeds; the operation adds the
+// other feeds it uses (entry, exit, finishing).
+toolpath::SectionBegin sectionBegin(const std::string& name, const std::string& strategy, const ToolController& tc);
+
 // Z levels from start down to final in equal steps no deeper than stepDown (the last one at
 // final). stepDown <= 0 or >= the whole depth: one level at final.
 std::vector<double> stepDownLevels(double startZ, double finalZ, double stepDown);

@@ -152,12 +152,7 @@ base::Result<OpResult> computePocket(const std::vector<geom::Region>& regions, c
                                   " cut start(s); ramped there instead");
 
     PathWriter out(result.toolpath, operationIndex);
-    toolpath::SectionBegin begin;
-    begin.operationName = params.name;
-    begin.strategy = "pocket";
-    begin.toolNumber = tc.tool.number;
-    begin.feeds.cuttingMmPerMin = tc.cuttingFeedMmPerMin;
-    begin.feeds.plungeMmPerMin = tc.plungeFeedMmPerMin;
+    toolpath::SectionBegin begin = sectionBegin(params.name, "pocket", tc);
     begin.feeds.entryMmPerMin = tc.rampFeed();
     begin.feeds.finishingMmPerMin = tc.cuttingFeedMmPerMin;
     out.add(begin);

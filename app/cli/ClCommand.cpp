@@ -29,19 +29,13 @@ int clCommand(const std::vector<std::string>& args)
     if (jobPath.empty())
         return usageError("cl needs a job file");
 
-    auto job = document::loadJob(jobPath);
-    if (!job)
-        return fail(job.error().toString());
-    auto model = document::loadJobModel(job.value());
-    if (!model)
-        return fail(model.error().toString());
-    document::ProgramReport report;
-    auto program = document::computeProgram(job.value(), model.value(), {}, &report);
-    if (!program)
-        return fail(jobPath + ": " + program.error().message);
+    const std::optional<ComputedJob> computed = computeJobFile(jobPath);
+    if (!computed)
+        return kExitError;
+    const document::ProgramReport& report = computed->report;
 
     for (std::size_t i = 0; i < report.counts.size(); ++i) {
-        const document::Operation& op = job->operations[i];
+        const document::Operation& op = computed->job.operations[i];
         const ops::MotionCounts& c = report.counts[i];
         std::cerr << "camwb-cli: " << document::kindName(op.kind()) << " \"" << op.name() << "\": " << c.lines
                   << " lines, " << c.arcs << " arcs, " << c.helices << " helices, " << c.cycles << " cycles, "
@@ -50,7 +44,7 @@ int clCommand(const std::vector<std::string>& args)
     for (const std::string& warning : report.warnings)
         std::cerr << "camwb-cli: warning: " << warning << "\n";
 
-    const std::string trace = toolpath::traceOf(program.value());
+    const std::string trace = toolpath::traceOf(computed->program);
     if (output.empty()) {
         std::cout << trace;
         return kExitOk;

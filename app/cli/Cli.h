@@ -2,9 +2,12 @@
 // messages to stderr, and the options that choose a post, a machine and property values.
 #pragma once
 
+#include "document/Job.h"
+#include "document/JobPipeline.h"
 #include "post/PostProcessor.h"
 
 #include <map>
+#include <optional>
 #include <ostream>
 #include <string>
 #include <vector>
@@ -41,6 +44,16 @@ bool takePostOption(const std::vector<std::string>& args, std::size_t& i, PostOp
 // Posts `toolpath` into `outputPath` atomically and reports like every posting command does.
 int postToFile(const post::PostProcessor& post, const toolpath::Toolpath& toolpath, const post::RunOptions& options,
                const std::string& outputPath);
+
+// A job file with its operations recomputed on its model (what `post` and `cl` start from).
+struct ComputedJob {
+    document::Job job;
+    toolpath::Toolpath program;
+    document::ProgramReport report;  // warnings and motion counts, per operation
+};
+// Loads the job and its model and computes the program; on an error, reports it (fail()) and
+// returns nothing. The warnings are left to the caller to print.
+std::optional<ComputedJob> computeJobFile(const std::string& path);
 
 int runCommand(const std::vector<std::string>& args);    // camwb-cli run <job> -o <file>
 int postsCommand(const std::vector<std::string>& args);  // camwb-cli posts [<id>]

@@ -2,6 +2,7 @@
 #include "Cli.h"
 
 #include "base/Result.h"
+#include "document/JobFile.h"
 #include "post/PostInfo.h"
 
 #include <iostream>
@@ -108,6 +109,29 @@ int postToFile(const post::PostProcessor& post, const toolpath::Toolpath& toolpa
     std::cout << "camwb-cli: wrote " << outputPath << " (" << summary->lines << " lines, " << warnings
               << (warnings == 1 ? " warning)\n" : " warnings)\n");
     return kExitOk;
+}
+
+std::optional<ComputedJob> computeJobFile(const std::string& path)
+{
+    auto job = document::loadJob(path);
+    if (!job) {
+        fail(job.error().toString());
+        return std::nullopt;
+    }
+    auto model = document::loadJobModel(job.value());
+    if (!model) {
+        fail(model.error().toString());
+        return std::nullopt;
+    }
+    ComputedJob computed;
+    auto program = document::computeProgram(job.value(), model.value(), {}, &computed.report);
+    if (!program) {
+        fail(path + ": " + program.error().message);
+        return std::nullopt;
+    }
+    computed.job = std::move(job).value();
+    computed.program = std::move(program).value();
+    return computed;
 }
 
 }  // namespace camwb::cli

@@ -186,22 +186,16 @@ int postCommand(const std::vector<std::string>& args)
     std::string postId = options.postId, machineId = options.machineId;
     std::map<std::string, std::string> properties;
     if (format->job) {
-        auto job = document::loadJob(input);
-        if (!job)
-            return fail(job.error().toString());
-        auto model = document::loadJobModel(job.value());
-        if (!model)
-            return fail(model.error().toString());
-        document::ProgramReport report;
-        auto computed = document::computeProgram(job.value(), model.value(), {}, &report);
+        std::optional<ComputedJob> computed = computeJobFile(input);
         if (!computed)
-            return fail(input + ": " + computed.error().message);
-        for (const std::string& warning : report.warnings)
+            return kExitError;
+        for (const std::string& warning : computed->report.warnings)
             std::cerr << "camwb-cli: warning: " << warning << "\n";
-        program = std::move(computed).value();
-        postId = postId.empty() ? job->postId : postId;
-        machineId = machineId.empty() ? job->machineId : machineId;
-        properties = job->postProperties;
+        program = std::move(computed->program);
+        const document::Job& job = computed->job;
+        postId = postId.empty() ? job.postId : postId;
+        machineId = machineId.empty() ? job.machineId : machineId;
+        properties = job.postProperties;
     } else {
         auto imported = toolpath::readClFile(input, format->cl);
         if (!imported)

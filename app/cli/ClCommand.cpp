@@ -37,7 +37,7 @@ int clCommand(const std::vector<std::string>& args)
     for (std::size_t i = 0; i < report.counts.size(); ++i) {
         const document::Operation& op = computed->job.operations[i];
         const ops::MotionCounts& c = report.counts[i];
-        std::cerr << "camwb-cli: " << document::kindName(op.kind()) << " \"" << op.name() << "\": " << c.lines
+        std::cerr << "camwb-cli: " << document::kindLabel(op.kind()) << " \"" << op.name() << "\": " << c.lines
                   << " lines, " << c.arcs << " arcs, " << c.helices << " helices, " << c.cycles << " cycles, "
                   << c.rapids << " rapids\n";
     }

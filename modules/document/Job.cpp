@@ -35,4 +35,6 @@ const char* kindName(OperationKind kind)
     return "operation";
 }
 
+const char* kindLabel(OperationKind kind) { return kind == OperationKind::Drill ? "drilling" : kindName(kind); }
+
 }  // namespace camwb::document

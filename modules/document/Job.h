@@ -50,8 +50,10 @@ struct Operation {
     void setName(const std::string& name);
 };
 
-// "contour", "pocket", "helix", "drill": the operation's type in the file and in messages.
+// "contour", "pocket", "helix", "drill": the operation's type in the file.
 const char* kindName(OperationKind kind);
+// The word messages name it by, as the operations do: "contour", "pocket", "helix", "drilling".
+const char* kindLabel(OperationKind kind);
 
 struct Job {
     std::string name;

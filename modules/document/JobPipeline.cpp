@@ -33,8 +33,8 @@ base::Result<toolpath::Toolpath> computeProgram(const Job& job, const occ::Model
             return section.error();
         const Operation& op = job.operations[i];
         if (report) {
-            for (const std::string& w : section->warnings)
-                report->warnings.push_back(std::string(kindName(op.kind())) + " \"" + op.name() + "\": " + w);
+            // The operations name themselves in their warnings ("pocket \"P\": ...").
+            report->warnings.insert(report->warnings.end(), section->warnings.begin(), section->warnings.end());
             report->counts.push_back(section->counts);
         }
         const ops::ToolController& tc = *job.tool(op.toolNumber);  // computeOperation checked it

@@ -7,7 +7,7 @@ namespace camwb::document {
 
 namespace {
 
-std::string label(const Operation& op) { return std::string(kindName(op.kind())) + " \"" + op.name() + "\""; }
+std::string label(const Operation& op) { return std::string(kindLabel(op.kind())) + " \"" + op.name() + "\""; }
 
 base::Error refError(const Operation& op, const std::string& message)
 {

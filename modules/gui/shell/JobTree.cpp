@@ -94,11 +94,11 @@ void JobTree::rebuild()
     auto* operations = new QTreeWidgetItem(jobItem, {tr("Operations"), QString::number(job.operations.size())});
     for (std::size_t i = 0; i < job.operations.size(); ++i) {
         const document::Operation& op = job.operations[i];
-        auto* item = new QTreeWidgetItem(
-            operations, {QString::fromStdString(op.name()), tr("%1, T%2, %3")
-                                                                .arg(QString::fromLatin1(document::kindName(op.kind())))
-                                                                .arg(op.toolNumber)
-                                                                .arg(geometrySummary(op.geometry))});
+        auto* item = new QTreeWidgetItem(operations, {QString::fromStdString(op.name()),
+                                                      tr("%1, T%2, %3")
+                                                          .arg(QString::fromLatin1(document::kindLabel(op.kind())))
+                                                          .arg(op.toolNumber)
+                                                          .arg(geometrySummary(op.geometry))});
         item->setData(0, kOperationRole, static_cast<int>(i));
     }
     expandAll();

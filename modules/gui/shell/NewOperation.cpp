@@ -186,7 +186,7 @@ const ops::ToolController* suitedTool(OperationKind kind, const document::Job& j
 base::Result<OperationProposal> proposeOperation(OperationKind kind, const document::Job& job, const occ::Model& model,
                                                  const std::vector<int>& selectedFaces)
 {
-    const std::string what = document::kindName(kind);
+    const std::string what = document::kindLabel(kind);
     if (!model.hasBRep())
         return base::Error{what + ": needs a solid model (STEP, IGES or BREP); import one first"};
     OperationProposal proposal;

@@ -48,6 +48,7 @@ struct Workbench::ComputeOutcome {
     std::optional<toolpath::Toolpath> toolpath;
     std::optional<post::PostOutput> nc;
     std::string ncExtension;
+    std::vector<std::string> warnings;  // the operations' (left corners, helix fallbacks, ...)
     std::vector<std::string> errors;
 };
 
@@ -233,7 +234,9 @@ void Workbench::startCompute()
             outcome->model = current;
             outcome->modelPath = job.modelPath;
         }
-        auto program = document::computeProgram(job, current);
+        document::ProgramReport report;
+        auto program = document::computeProgram(job, current, {}, &report);
+        outcome->warnings = std::move(report.warnings);
         if (!program) {
             outcome->errors.push_back(program.error().message);
             return outcome;
@@ -278,6 +281,8 @@ void Workbench::finishCompute(const std::shared_ptr<ComputeOutcome>& outcome)
                                    .arg(stats.rapids));
         emit toolpathChanged();
     }
+    for (const std::string& w : outcome->warnings)
+        report(Severity::Warning, qs(w));
     if (outcome->nc) {
         m_nc = qs(outcome->nc->text);
         m_ncExtension = qs(outcome->ncExtension);

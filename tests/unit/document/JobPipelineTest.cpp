@@ -120,3 +120,26 @@ TEST(JobPipeline, RunOptionsCarryTheJobsMachineAndProperties)
     ASSERT_TRUE(options.ok());
     EXPECT_EQ(options->properties, custom.postProperties);
 }
+
+TEST(JobPipeline, WarningsAndCountsOfEachOperationAreReported)
+{
+    auto job = document::loadJob(kExampleJob);
+    ASSERT_TRUE(job.ok());
+    auto model = document::loadJobModel(job.value());
+    ASSERT_TRUE(model.ok());
+    document::Job j = job.value();
+    // The D5 drill in the D10 through hole: drilled, but the hole comes out undersize.
+    document::Operation& drill = j.operations.back();
+    ASSERT_EQ(drill.kind(), document::OperationKind::Drill);
+    drill.geometry.holes = {21};
+    document::ProgramReport report;
+    auto program = document::computeProgram(j, model.value(), {}, &report);
+    ASSERT_TRUE(program.ok()) << program.error().toString();
+    ASSERT_EQ(report.counts.size(), j.operations.size());
+    EXPECT_EQ(report.counts.back().cycles, 1);
+    EXPECT_GT(report.counts[0].arcs, 0) << "the contour's corners stay arcs";
+    EXPECT_GT(report.counts[2].helices, 0);
+    ASSERT_EQ(report.warnings.size(), 1u);
+    EXPECT_EQ(report.warnings[0].rfind("drilling \"" + drill.name() + "\": ", 0), 0u) << report.warnings[0];
+    EXPECT_NE(report.warnings[0].find("undersize"), std::string::npos) << report.warnings[0];
+}

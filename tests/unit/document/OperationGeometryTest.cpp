@@ -113,9 +113,9 @@ TEST(OperationGeometry, BadReferencesAreNamed)
     drill.params = ops::DrillParams{};
     drill.setName("D");
     drill.geometry.holes = {kTopFace};
-    EXPECT_EQ(message(drill), "drill \"D\": face 2 is not a vertical cylindrical hole");
+    EXPECT_EQ(message(drill), "drilling \"D\": face 2 is not a vertical cylindrical hole");
     drill.geometry = {{kTopFace}, {}, {}};
     EXPECT_NE(message(drill).find("works on holes"), std::string::npos);
     EXPECT_EQ(document::resolveGeometry(drill, occ::Model{}).error().message,
-              "drill \"D\": the model has no solid geometry (STL meshes cannot be machined from)");
+              "drilling \"D\": the model has no solid geometry (STL meshes cannot be machined from)");
 }

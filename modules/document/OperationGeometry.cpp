@@ -165,7 +165,7 @@ ops::Heights resolveHeights(const Operation& op, const OperationGeometry& geomet
 }
 
 base::Result<ops::OpResult> computeOperation(const Job& job, int index, const occ::Model& model,
-                                             const ops::Progress& progress)
+                                             const ops::Progress& progress, std::optional<ops::Heights>* heightsUsed)
 {
     if (index < 0 || index >= static_cast<int>(job.operations.size()))
         return base::makeError("no operation " + std::to_string(index + 1) + " in the job");
@@ -177,6 +177,8 @@ base::Result<ops::OpResult> computeOperation(const Job& job, int index, const oc
     if (!geometry)
         return geometry.error();
     const ops::Heights heights = resolveHeights(op, geometry.value(), model, job.stock);
+    if (heightsUsed)
+        *heightsUsed = heights;
     const OperationGeometry& g = geometry.value();
 
     return std::visit(

@@ -10,6 +10,7 @@
 #include "occ/Model.h"
 #include "ops/OpCommon.h"
 
+#include <optional>
 #include <vector>
 
 namespace camwb::document {
@@ -31,7 +32,10 @@ ops::Heights resolveHeights(const Operation& op, const OperationGeometry& geomet
                             const Stock& stock);
 
 // The operation computed as the job would: geometry and heights resolved, the tool looked up.
+// `heightsUsed` (may be null) receives the resolved heights once the geometry resolved, even when
+// the operation itself then fails (the task panel shows them beside the error).
 base::Result<ops::OpResult> computeOperation(const Job& job, int index, const occ::Model& model,
-                                             const ops::Progress& progress = {});
+                                             const ops::Progress& progress = {},
+                                             std::optional<ops::Heights>* heightsUsed = nullptr);
 
 }  // namespace camwb::document

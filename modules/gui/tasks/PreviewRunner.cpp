@@ -15,19 +15,19 @@ namespace {
 
 constexpr int kProgressPollMs = 50;
 
-// Resolves the heights for the panel's "auto" fields, then computes as the job will.
+// Computes as the job will, keeping the resolved heights for the panel's "auto" fields.
 std::shared_ptr<const PreviewOutcome> compute(const document::Job& job, int index, const occ::Model& model,
                                               const ops::Progress& progress)
 {
     QElapsedTimer clock;
     clock.start();
     auto outcome = std::make_shared<PreviewOutcome>();
-    const document::Operation& op = job.operations[static_cast<std::size_t>(index)];
-    if (auto geometry = document::resolveGeometry(op, model)) {
-        outcome->heights = document::resolveHeights(op, geometry.value(), model, job.stock);
+    std::optional<ops::Heights> heights;
+    auto result = document::computeOperation(job, index, model, progress, &heights);
+    if (heights) {
+        outcome->heights = *heights;
         outcome->heightsKnown = true;
     }
-    auto result = document::computeOperation(job, index, model, progress);
     if (progress.cancelled()) {
         outcome->cancelled = true;
     } else if (!result) {

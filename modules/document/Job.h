@@ -25,7 +25,7 @@ struct Stock {
 // OCCT's map order, 1-based). Resolved to geometry by OperationGeometry.h.
 struct GeometryRefs {
     std::vector<int> faces;  // planar faces: contour = their outer wires, pocket = face with islands
-    std::vector<int> edges;  // edge chains (contour), open or closed
+    std::vector<int> edges;  // edge chains (contour), open or closed; circular edges (helix)
     std::vector<int> holes;  // holes by their cylindrical face (helix, drilling)
 };
 

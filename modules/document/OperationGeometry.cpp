@@ -81,7 +81,10 @@ base::Result<OperationGeometry> resolveGeometry(const Operation& op, const occ::
     const bool wantsHoles = kind == OperationKind::Helix || kind == OperationKind::Drill;
     if (!model.hasBRep())
         return refError(op, "the model has no solid geometry (STL meshes cannot be machined from)");
-    if (wantsHoles && (!op.geometry.faces.empty() || !op.geometry.edges.empty()) && op.geometry.holes.empty())
+    if (wantsHoles && !op.geometry.faces.empty())
+        return refError(op, kind == OperationKind::Helix ? "works on holes; select holes or circular edges, not faces"
+                                                         : "works on holes; select holes, not faces or edges");
+    if (kind == OperationKind::Drill && !op.geometry.edges.empty())
         return refError(op, "works on holes; select holes, not faces or edges");
     if (!wantsHoles && !op.geometry.holes.empty())
         return refError(op, "works on faces and edges, not holes");
@@ -90,7 +93,18 @@ base::Result<OperationGeometry> resolveGeometry(const Operation& op, const occ::
 
     const double tolerance = toleranceOf(op);
     OperationGeometry geometry;
-    if (!op.geometry.edges.empty()) {
+    if (kind == OperationKind::Helix && !op.geometry.edges.empty()) {
+        // A picked circle has a position and a diameter but no depth: the heights give it.
+        if (std::get<ops::HelixParams>(op.params).depthsFromHoles)
+            return refError(op, "a picked circle (edge " + std::to_string(op.geometry.edges.front()) +
+                                    ") has no depth: untick \"depths from holes\" and set the final depth");
+        for (int edge : op.geometry.edges) {
+            auto circle = model.circleEdgeAsHole(edge);
+            if (!circle)
+                return refError(op, circle.error().message);
+            geometry.holes.push_back(circle.value());
+        }
+    } else if (!op.geometry.edges.empty()) {
         auto chains = model.edgeChains(op.geometry.edges, tolerance);
         if (!chains)
             return refError(op, chains.error().message);
@@ -149,7 +163,8 @@ ops::Heights resolveHeights(const Operation& op, const OperationGeometry& geomet
     case OperationKind::Drill:
         if (featureTop > -1e299) {
             h.startZ = featureTop;
-            h.finalZ = featureBottom;
+            // Picked circles have no depth of their own: down to the model's bottom by default.
+            h.finalZ = op.geometry.edges.empty() ? featureBottom : model.boundsMin().z;
         }
         break;
     }

@@ -18,7 +18,7 @@ namespace camwb::document {
 struct OperationGeometry {
     std::vector<geom::Profile> contours;  // contour: face outer wires and edge chains
     std::vector<geom::Region> regions;    // pocket: faces with their islands
-    std::vector<geom::Hole> holes;        // helix, drilling
+    std::vector<geom::Hole> holes;        // helix, drilling (helix: also picked circular edges)
 };
 
 // Errors name the operation and the reference ("pocket \\"Pocket 2\\": face 7 is not planar").

@@ -20,7 +20,7 @@ public:
     explicit HelixPanel(const OperationPanelArgs& args) : OperationPanel(args) {}
 
 protected:
-    int geometryKinds() const override { return GeometryList::Holes; }
+    int geometryKinds() const override { return GeometryList::Holes | GeometryList::Edges; }  // edges: circles
 
     void buildParameters(ParamForm& form) override
     {

@@ -93,6 +93,41 @@ TEST(OperationGeometry, HeightsAreDerivedUnlessOverridden)
     EXPECT_DOUBLE_EQ(h.finalZ, 0);
 }
 
+TEST(OperationGeometry, AHelixOnAPickedCircleTakesItsDepthFromTheHeights)
+{
+    const Example& ex = example();
+    constexpr int kThroughHoleTopCircle = 22;
+    document::Job job = ex.job;
+    document::Operation& helix = job.operations[2];
+    ASSERT_EQ(helix.kind(), document::OperationKind::Helix);
+    helix.geometry = {{}, {kThroughHoleTopCircle}, {}};
+    auto refused = document::resolveGeometry(helix, ex.model);
+    ASSERT_FALSE(refused.ok());
+    EXPECT_NE(refused.error().message.find("has no depth: untick \"depths from holes\""), std::string::npos)
+        << refused.error().message;
+
+    std::get<ops::HelixParams>(helix.params).depthsFromHoles = false;
+    auto g = document::resolveGeometry(helix, ex.model);
+    ASSERT_TRUE(g.ok()) << g.error().toString();
+    ASSERT_EQ(g->holes.size(), 1u);
+    EXPECT_NEAR(g->holes[0].diameterMm, 10, 1e-9);
+    EXPECT_NEAR(g->holes[0].center.x, 72, 1e-9);
+    EXPECT_NEAR(g->holes[0].center.y, 30, 1e-9);
+    const ops::Heights h = document::resolveHeights(helix, g.value(), ex.model, ex.job.stock);
+    EXPECT_DOUBLE_EQ(h.startZ, 15);
+    EXPECT_DOUBLE_EQ(h.finalZ, 0);  // the model's bottom
+
+    helix.heights.finalZ = 5;
+    auto result = document::computeOperation(job, 2, ex.model);
+    ASSERT_TRUE(result.ok()) << result.error().toString();
+    EXPECT_GT(result->counts.helices, 0);
+    double lowest = 1e9;
+    for (const toolpath::Record& r : result->toolpath.records())
+        if (const auto* arc = std::get_if<toolpath::Arc>(&r))
+            lowest = std::min(lowest, arc->to.z);
+    EXPECT_DOUBLE_EQ(lowest, 5);
+}
+
 TEST(OperationGeometry, BadReferencesAreNamed)
 {
     const occ::Model& model = example().model;

@@ -3,6 +3,7 @@
 #include "occ/Model.h"
 
 #include "occ/detail/ModelData.h"
+#include "occ/detail/OcctMessages.h"
 
 #include <BRepAdaptor_Surface.hxx>
 #include <BRepBndLib.hxx>
@@ -267,15 +268,18 @@ base::Result<Model> Model::load(const std::string& path, const ProgressFn& progr
         return base::makeError("cancelled", path);
     auto data = std::make_shared<ModelData>();
     data->path = path;
+    // OCCT's own complaints become part of the error instead of lines on stdout.
+    detail::OcctMessageCapture occt;
+    auto failed = [&](std::string message) { return base::makeError(message + occt.failureNote(), path); };
     try {
         if (base::Status status = loadInto(*data, ext, bridge); !status)
-            return status.error();
+            return bridge.cancelled() ? status.error() : failed(status.error().message);
     } catch (const Standard_Failure& e) {
-        return base::makeError(std::string("could not read the file: ") + e.GetMessageString(), path);
+        return failed(std::string("could not read the file: ") + e.GetMessageString());
     } catch (const std::exception& e) {
-        return base::makeError(std::string("could not read the file: ") + e.what(), path);
+        return failed(std::string("could not read the file: ") + e.what());
     } catch (...) {
-        return base::makeError("could not read the file: unknown error", path);
+        return failed("could not read the file: unknown error");
     }
     return Model(std::move(data));
 }

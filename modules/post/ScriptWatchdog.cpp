@@ -4,19 +4,15 @@
 
 namespace camwb::post {
 
-namespace {
-
-long long nowNs()
+std::chrono::nanoseconds ScriptWatchdog::steadyNow()
 {
-    return std::chrono::duration_cast<std::chrono::nanoseconds>(std::chrono::steady_clock::now().time_since_epoch())
-        .count();
+    return std::chrono::duration_cast<std::chrono::nanoseconds>(std::chrono::steady_clock::now().time_since_epoch());
 }
 
-}  // namespace
-
-ScriptWatchdog::ScriptWatchdog(QJSEngine& engine, std::chrono::milliseconds budget) :
+ScriptWatchdog::ScriptWatchdog(QJSEngine& engine, std::chrono::milliseconds budget, Clock clock) :
     m_engine(engine),
     m_budget(budget),
+    m_clock(std::move(clock)),
     m_thread([this] { watch(); })
 {
 }
@@ -34,7 +30,14 @@ ScriptWatchdog::~ScriptWatchdog()
 void ScriptWatchdog::enter()
 {
     if (m_depth++ == 0)
-        m_deadline.store(nowNs() + std::chrono::duration_cast<std::chrono::nanoseconds>(m_budget).count());
+        // At least 1: a deadline of 0 means "not armed".
+        m_deadline.store(std::max<long long>(1, (m_clock() + m_budget).count()));
+}
+
+bool ScriptWatchdog::expired() const
+{
+    const long long deadline = m_deadline.load();
+    return deadline != 0 && m_clock().count() > deadline;
 }
 
 bool ScriptWatchdog::leave()
@@ -61,7 +64,7 @@ void ScriptWatchdog::watch()
         m_wake.wait_for(lock, interval);
         long long deadline = m_deadline.load();
         // Claiming the deadline first means a call that ends now cannot be confused with the next.
-        if (deadline != 0 && nowNs() > deadline && m_deadline.compare_exchange_strong(deadline, 0)) {
+        if (deadline != 0 && m_clock().count() > deadline && m_deadline.compare_exchange_strong(deadline, 0)) {
             m_engine.setInterrupted(true);
             m_fired.store(true);
         }

@@ -1,6 +1,7 @@
 // Private: interrupts a post script that runs past its budget. Armed around each outermost call
 // into the script (evaluation, one handler); a background thread checks the deadline and asks
 // QJSEngine to interrupt. Arming is two atomic stores, so the per-move cost stays negligible.
+// The clock is a parameter so that tests decide what time it is instead of measuring it.
 #pragma once
 
 #include <QJSEngine>
@@ -8,6 +9,7 @@
 #include <atomic>
 #include <chrono>
 #include <condition_variable>
+#include <functional>
 #include <mutex>
 #include <thread>
 
@@ -15,7 +17,10 @@ namespace camwb::post {
 
 class ScriptWatchdog {
 public:
-    ScriptWatchdog(QJSEngine& engine, std::chrono::milliseconds budget);
+    using Clock = std::function<std::chrono::nanoseconds()>;
+    static std::chrono::nanoseconds steadyNow();
+
+    ScriptWatchdog(QJSEngine& engine, std::chrono::milliseconds budget, Clock clock = steadyNow);
     ~ScriptWatchdog();
     ScriptWatchdog(const ScriptWatchdog&) = delete;
     ScriptWatchdog& operator=(const ScriptWatchdog&) = delete;
@@ -25,13 +30,16 @@ public:
     // Returns true when the call was interrupted (and lets the engine run again).
     bool leave();
     std::chrono::milliseconds budget() const { return m_budget; }
+    // Whether a call is in progress and past its deadline (the watcher interrupts it at its next check).
+    bool expired() const;
 
 private:
     void watch();
 
     QJSEngine& m_engine;
     std::chrono::milliseconds m_budget;
-    std::atomic<long long> m_deadline{0};  // steady_clock nanoseconds; 0 = not armed
+    Clock m_clock;
+    std::atomic<long long> m_deadline{0};  // m_clock nanoseconds; 0 = not armed
     std::atomic<bool> m_fired{false};      // the engine was interrupted for the current call
     int m_depth = 0;
     std::mutex m_mutex;

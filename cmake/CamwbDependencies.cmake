@@ -6,6 +6,9 @@ find_package(GTest REQUIRED)
 find_package(PkgConfig REQUIRED)
 pkg_check_modules(POLYCLIPPING REQUIRED IMPORTED_TARGET polyclipping)
 
+if(NOT CAMWB_BUILD_GUI)
+  return()  # VTK and QScintilla are the GUI's alone
+endif()
 # Debian's VTK config refers to MPI::MPI_C, so C must be enabled and MPI found before VTK.
 find_package(MPI COMPONENTS C)
 find_package(VTK 9.1 REQUIRED COMPONENTS

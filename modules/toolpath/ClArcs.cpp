@@ -3,7 +3,6 @@
 #include "toolpath/ClText.h"
 
 #include <cmath>
-#include <numbers>
 
 namespace camwb::toolpath {
 
@@ -26,27 +25,6 @@ std::optional<Vec3> unitVector(const Vec3& v)
     if (!(length > 1e-12))
         return std::nullopt;
     return v * (1.0 / length);
-}
-
-double forwardAngle(const Arc& arc, const Vec3& from, const Vec3& to)
-{
-    const Vec3& n = arc.normal;
-    const Vec3 u = (from - arc.center) - n * (from - arc.center).dot(n);
-    const Vec3 w = (to - arc.center) - n * (to - arc.center).dot(n);
-    double angle = std::atan2(n.dot(u.cross(w)), u.dot(w));  // counter-clockwise about n
-    if (arc.clockwise)
-        angle = -angle;
-    if (angle < 0)
-        angle += 2 * std::numbers::pi;
-    return angle >= 2 * std::numbers::pi ? 0.0 : angle;
-}
-
-Vec3 arcEndTangent(const Arc& arc)
-{
-    const Vec3 radius = arc.to - arc.center;
-    const Vec3 inPlane = radius - arc.normal * radius.dot(arc.normal);
-    const Vec3 ccw = arc.normal.cross(inPlane);
-    return arc.clockwise ? ccw * -1.0 : ccw;
 }
 
 bool isPlusZ(const Vec3& axis) { return std::abs(axis.x) < 1e-7 && std::abs(axis.y) < 1e-7 && axis.z > 0; }

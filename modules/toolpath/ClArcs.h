@@ -4,6 +4,7 @@
 // against the circle so that inconsistent CL data is reported rather than posted.
 #pragma once
 
+#include "toolpath/ArcGeometry.h"
 #include "toolpath/ClRecords.h"
 
 #include <optional>
@@ -21,13 +22,6 @@ Arc makeArc(const Vec3& start, const Vec3& to, const Vec3& center, const Vec3& a
 // axis. Empty when the arc is consistent.
 std::vector<std::string> arcRadiusProblems(const Vec3& start, const Arc& arc, std::optional<double> radiusMm,
                                            double toleranceMm);
-
-// Angle in [0, 2*pi) travelled from `from` to `to` round `arc`'s centre in `arc`'s direction (both
-// points projected into the arc's plane).
-double forwardAngle(const Arc& arc, const Vec3& from, const Vec3& to);
-
-// Tangent (not normalised) at the end of `arc` in its direction of travel, in its plane.
-Vec3 arcEndTangent(const Arc& arc);
 
 // The unit vector along `v`, nullopt for a (near) zero vector.
 std::optional<Vec3> unitVector(const Vec3& v);

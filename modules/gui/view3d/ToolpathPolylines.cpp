@@ -1,11 +1,10 @@
 #include "gui/view3d/ToolpathPolylines.h"
 
+#include "toolpath/ArcGeometry.h"
 #include "toolpath/CycleExpansion.h"
 #include "toolpath/Toolpath.h"
 
 #include <algorithm>
-#include <cmath>
-#include <numbers>
 
 namespace camwb::gui {
 
@@ -13,17 +12,9 @@ using base::Vec3;
 
 namespace {
 
-constexpr double kTwoPi = 2.0 * std::numbers::pi;
 // Even where the chord tolerance allows longer chords, helices and small arcs look round only
 // with a few dozen segments per turn.
-constexpr double kMaxStepRad = std::numbers::pi / 18.0;
-constexpr double kCoincidentMm = 1e-7;
-
-Vec3 normalizedOr(Vec3 v, Vec3 fallback)
-{
-    const double l = v.length();
-    return l > 1e-12 ? v * (1.0 / l) : fallback;
-}
+constexpr double kMaxStepDeg = 10;
 
 }  // namespace
 
@@ -110,56 +101,15 @@ void ToolpathPolylines::toolAxisMove(const toolpath::ToolAxisMove& m)
     lineTo(m.tip, m.feedMmPerMin > 0 ? PathSegmentKind::Feed : PathSegmentKind::Rapid);
 }
 
-// Start = current position. The sweep runs from the start to the end projected into the arc's
-// plane, in the arc's direction; coincident projections mean a full circle. `turns` adds full
-// revolutions. The height along the normal and the radius are interpolated linearly with the
-// angle, which makes helices (and slightly inconsistent NC radii) come out right.
+// Start = the current position (toolpath/ArcGeometry.h says how helices and inconsistent radii go).
 void ToolpathPolylines::arc(const toolpath::Arc& a)
 {
     if (!m_hasPosition) {
         setStartPosition(a.to);
         return;
     }
-    const Vec3 n = normalizedOr(a.normal, Vec3{0, 0, 1});
-    const Vec3 s = m_position - a.center;
-    const Vec3 e = a.to - a.center;
-    const double h0 = n.dot(s);
-    const double h1 = n.dot(e);
-    const Vec3 u = s - n * h0;
-    const Vec3 v = e - n * h1;
-    const double r0 = u.length();
-    const double r1 = v.length();
-    if (r0 < 1e-9 || r1 < 1e-9) {
-        lineTo(a.to, PathSegmentKind::Arc);
-        return;
-    }
-    const Vec3 ux = u * (1.0 / r0);
-    const Vec3 uy = n.cross(ux);
-
-    double sweep = kTwoPi;
-    if (base::distance(u * (r1 / r0), v) > kCoincidentMm) {
-        const double ccw = std::atan2(v.dot(uy), v.dot(ux));  // (-pi, pi]
-        sweep = a.clockwise ? -ccw : ccw;
-        if (sweep <= 0)
-            sweep += kTwoPi;
-    }
-    sweep += kTwoPi * std::max(0, a.turns);
-
-    const double rMax = std::max(r0, r1);
-    double step = kMaxStepRad;
-    if (m_chordToleranceMm < rMax)
-        step = std::min(step, 2.0 * std::acos(1.0 - m_chordToleranceMm / rMax));
-    const int count = static_cast<int>(std::clamp(std::ceil(sweep / step), 1.0, double(kMaxSegmentsPerArc)));
-    const double sign = a.clockwise ? -1.0 : 1.0;
-
-    for (int i = 1; i < count; ++i) {
-        const double t = double(i) / count;
-        const double angle = sign * sweep * t;
-        const double r = r0 + (r1 - r0) * t;
-        const double h = h0 + (h1 - h0) * t;
-        lineTo(a.center + n * h + (ux * std::cos(angle) + uy * std::sin(angle)) * r, PathSegmentKind::Arc);
-    }
-    lineTo(a.to, PathSegmentKind::Arc);
+    for (const Vec3& p : toolpath::linearizeArc(m_position, a, m_chordToleranceMm, kMaxStepDeg, kMaxSegmentsPerArc))
+        lineTo(p, PathSegmentKind::Arc);
 }
 
 // Canned cycles are drawn as the moves a control makes for each hole: the same expansion posts

@@ -42,8 +42,8 @@ inline base::Error failureAs(ClFormat format, std::string_view text)
 inline std::string warningsText(const ClImport& imported)
 {
     std::string out;
-    for (const base::Error& w : imported.warnings)
-        out += w.toString() + '\n';
+    for (const base::Diagnostic& w : imported.warnings)
+        out += base::Error{w.message, w.file, w.line, w.column}.toString() + '\n';
     return out;
 }
 

@@ -1,6 +1,6 @@
 #include "MotionMatch.h"
 
-#include "post/ArcGeometry.h"
+#include "toolpath/ArcGeometry.h"
 #include "toolpath/CycleExpansion.h"
 #include "toolpath/TraceWriter.h"
 
@@ -80,7 +80,7 @@ private:
     void visit(const Linear& r) { segment(r.to, false, r.feedMmPerMin); }
     void visit(const Arc& r)
     {
-        for (const Vec3& p : post::linearizeArc(m_at, r, m_chord))
+        for (const Vec3& p : toolpath::linearizeArc(m_at, r, m_chord))
             segment(p, false, r.feedMmPerMin);
     }
     void visit(const Cycle& c)

@@ -1,6 +1,6 @@
-// Arc geometry of the post kernel: splitting, linearising within the tolerance and exact extents,
+// The CL arc geometry: splitting, linearising within the tolerance and exact extents,
 // checked against dense sampling of the arc rather than against hand-picked numbers only.
-#include "post/ArcGeometry.h"
+#include "toolpath/ArcGeometry.h"
 
 #include <gtest/gtest.h>
 
@@ -8,11 +8,8 @@
 #include <cstdint>
 #include <numbers>
 
-namespace camwb::post {
+namespace camwb::toolpath {
 namespace {
-
-using toolpath::Arc;
-using toolpath::Vec3;
 
 // A point on the arc at fraction t of its sweep, from the pieces of a 1-degree split.
 std::vector<Vec3> sample(const Vec3& start, const Arc& arc)
@@ -142,4 +139,4 @@ TEST(ArcGeometry, ExtentsMatchDenseSampling)
 }
 
 }  // namespace
-}  // namespace camwb::post
+}  // namespace camwb::toolpath

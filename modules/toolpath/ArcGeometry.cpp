@@ -1,13 +1,11 @@
-#include "post/ArcGeometry.h"
+#include "toolpath/ArcGeometry.h"
 
 #include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <optional>
 
-namespace camwb::post {
-
-using toolpath::Vec3;
+namespace camwb::toolpath {
 
 namespace {
 
@@ -20,6 +18,17 @@ Vec3 unit(const Vec3& v)
 {
     const double length = v.length();
     return length > 0 ? v * (1.0 / length) : Vec3{0, 0, 1};
+}
+
+// Angle in (0, 2*pi] from the in-plane radius vector `from` to `to` about the unit normal `n`, in
+// the direction of travel; vectors within kPointTolerance of each other are a full turn.
+double sweepBetween(const Vec3& from, const Vec3& to, const Vec3& n, bool clockwise)
+{
+    if ((from - to).length() < kPointTolerance)
+        return kTwoPi;
+    const double ccw = std::atan2(n.dot(from.cross(to)), from.dot(to));  // (-pi, pi]
+    const double sweep = clockwise ? -ccw : ccw;
+    return sweep <= 0 ? sweep + kTwoPi : sweep;
 }
 
 // An arc as a function of t in [0, 1]: the angle grows linearly in the direction of travel, and
@@ -41,7 +50,7 @@ struct ArcFrame {
     bool helical() const { return std::abs(axialEnd - axialStart) > kAxisTolerance; }
 };
 
-std::optional<ArcFrame> frameOf(const Vec3& start, const toolpath::Arc& arc)
+std::optional<ArcFrame> frameOf(const Vec3& start, const Arc& arc)
 {
     ArcFrame f;
     f.center = arc.center;
@@ -72,15 +81,7 @@ std::optional<ArcFrame> frameOf(const Vec3& start, const toolpath::Arc& arc)
     if (f.radiusStart < kPointTolerance || f.radiusEnd < kPointTolerance)
         return std::nullopt;
 
-    if ((radialStart - radialEnd).length() < kPointTolerance) {
-        f.sweep = kTwoPi;
-    } else {
-        const double ccw = std::atan2(n.dot(radialStart.cross(radialEnd)), radialStart.dot(radialEnd));  // (-pi, pi]
-        f.sweep = f.clockwise ? -ccw : ccw;
-        if (f.sweep <= 0)
-            f.sweep += kTwoPi;
-    }
-    f.sweep += kTwoPi * std::max(0, arc.turns);
+    f.sweep = sweepBetween(radialStart, radialEnd, n, f.clockwise) + kTwoPi * std::max(0, arc.turns);
     f.u = radialStart * (1.0 / f.radiusStart);
     f.v = n.cross(f.u);
     return f;
@@ -100,13 +101,39 @@ std::string arcPlane(const Vec3& normal)
     return {};
 }
 
-double arcSweepDeg(const Vec3& start, const toolpath::Arc& arc)
+double arcSweepDeg(const Vec3& start, const Arc& arc)
 {
     const std::optional<ArcFrame> frame = frameOf(start, arc);
     return frame ? frame->sweep * 180 / std::numbers::pi : 0;
 }
 
-std::vector<ArcPiece> splitArc(const Vec3& start, const toolpath::Arc& arc, double maxSweepDeg)
+double arcLength(const Vec3& start, const Arc& arc)
+{
+    const std::optional<ArcFrame> frame = frameOf(start, arc);
+    if (!frame)
+        return (arc.to - start).length();
+    const double meanRadius = (frame->radiusStart + frame->radiusEnd) / 2;
+    return std::hypot(meanRadius * frame->sweep, frame->axialEnd - frame->axialStart);
+}
+
+double forwardAngle(const Arc& arc, const Vec3& from, const Vec3& to)
+{
+    const Vec3 n = unit(arc.normal);
+    const Vec3 u = (from - arc.center) - n * (from - arc.center).dot(n);
+    const Vec3 w = (to - arc.center) - n * (to - arc.center).dot(n);
+    const double sweep = sweepBetween(u, w, n, arc.clockwise);
+    return sweep >= kTwoPi ? 0.0 : sweep;
+}
+
+Vec3 arcEndTangent(const Arc& arc)
+{
+    const Vec3 radius = arc.to - arc.center;
+    const Vec3 inPlane = radius - arc.normal * radius.dot(arc.normal);
+    const Vec3 ccw = arc.normal.cross(inPlane);
+    return arc.clockwise ? ccw * -1.0 : ccw;
+}
+
+std::vector<ArcPiece> splitArc(const Vec3& start, const Arc& arc, double maxSweepDeg)
 {
     const std::optional<ArcFrame> frame = frameOf(start, arc);
     if (!frame)
@@ -129,7 +156,7 @@ std::vector<ArcPiece> splitArc(const Vec3& start, const toolpath::Arc& arc, doub
     return pieces;
 }
 
-std::vector<Vec3> linearizeArc(const Vec3& start, const toolpath::Arc& arc, double toleranceMm)
+std::vector<Vec3> linearizeArc(const Vec3& start, const Arc& arc, double toleranceMm, double maxStepDeg, int maxPoints)
 {
     const std::optional<ArcFrame> frame = frameOf(start, arc);
     if (!frame)
@@ -137,8 +164,11 @@ std::vector<Vec3> linearizeArc(const Vec3& start, const toolpath::Arc& arc, doub
     // A chord of angle a on radius r strays r (1 - cos(a/2)) from the arc.
     const double radius = std::max(frame->radiusStart, frame->radiusEnd);
     const double tolerance = std::clamp(toleranceMm, 1e-6, radius);
-    const double maxStep = std::max(2 * std::acos(1 - tolerance / radius), 1e-3);
-    const int count = std::max(1, static_cast<int>(std::ceil(frame->sweep / maxStep)));
+    const double maxStep =
+        std::clamp(2 * std::acos(1 - tolerance / radius), 1e-3, std::max(maxStepDeg, 1e-3) * std::numbers::pi / 180);
+    int count = std::max(1, static_cast<int>(std::ceil(frame->sweep / maxStep)));
+    if (maxPoints > 0)
+        count = std::min(count, maxPoints);
     std::vector<Vec3> points;
     points.reserve(count);
     for (int i = 1; i < count; ++i)
@@ -147,7 +177,7 @@ std::vector<Vec3> linearizeArc(const Vec3& start, const toolpath::Arc& arc, doub
     return points;
 }
 
-void extendByArc(Vec3& min, Vec3& max, const Vec3& start, const toolpath::Arc& arc)
+void extendByArc(Vec3& min, Vec3& max, const Vec3& start, const Arc& arc)
 {
     auto extend = [&min, &max](const Vec3& p) {
         min = {std::min(min.x, p.x), std::min(min.y, p.y), std::min(min.z, p.z)};
@@ -201,4 +231,4 @@ void extendByArc(Vec3& min, Vec3& max, const Vec3& start, const toolpath::Arc& a
     max = {high[0], high[1], high[2]};
 }
 
-}  // namespace camwb::post
+}  // namespace camwb::toolpath

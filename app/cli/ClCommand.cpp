@@ -41,8 +41,7 @@ int clCommand(const std::vector<std::string>& args)
                   << " lines, " << c.arcs << " arcs, " << c.helices << " helices, " << c.cycles << " cycles, "
                   << c.rapids << " rapids\n";
     }
-    for (const std::string& warning : report.warnings)
-        std::cerr << "camwb-cli: warning: " << warning << "\n";
+    printDiagnostics(report.warnings);
 
     const std::string trace = toolpath::traceOf(computed->program);
     if (output.empty()) {

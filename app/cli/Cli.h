@@ -2,6 +2,7 @@
 // messages to stderr, and the options that choose a post, a machine and property values.
 #pragma once
 
+#include "base/Diagnostic.h"
 #include "document/Job.h"
 #include "document/JobPipeline.h"
 #include "post/PostProcessor.h"
@@ -24,9 +25,11 @@ int fail(const std::string& message);
 int usageError(const std::string& message);
 void printUsage(std::ostream& out);
 
-// Warnings and errors of a post run on stderr, one per line with file and line; returns the
-// number of warnings.
-int printMessages(const std::vector<post::PostMessage>& messages);
+// A diagnostic on stderr as compilers write them, "file:line:column: severity: message", which
+// editors and CI parsers understand; one that is about no file reads "camwb-cli: severity: message".
+void printDiagnostic(const base::Diagnostic& diagnostic);
+// Each of them; returns the number of warnings.
+int printDiagnostics(const std::vector<base::Diagnostic>& diagnostics);
 
 // Options shared by the commands that post.
 struct PostOptions {
@@ -49,7 +52,7 @@ int postToFile(const post::PostProcessor& post, const toolpath::Toolpath& toolpa
 struct ComputedJob {
     document::Job job;
     toolpath::Toolpath program;
-    document::ProgramReport report;  // warnings and motion counts, per operation
+    document::ProgramReport report;  // warnings (their file: the job's) and motion counts, per operation
 };
 // Loads the job and its model and computes the program; on an error, reports it (fail()) and
 // returns nothing. The warnings are left to the caller to print.

@@ -57,16 +57,16 @@ int usageError(const std::string& message)
     return kExitUsage;
 }
 
-int printMessages(const std::vector<post::PostMessage>& messages)
+void printDiagnostic(const base::Diagnostic& diagnostic)
 {
-    int warnings = 0;
-    for (const post::PostMessage& message : messages) {
-        const bool isError = message.severity == post::PostMessage::Severity::Error;
-        std::cerr << "camwb-cli: " << (isError ? "error: " : "warning: ")
-                  << base::Error{message.text, message.file, message.line}.toString() << "\n";
-        warnings += isError ? 0 : 1;
-    }
-    return warnings;
+    std::cerr << (diagnostic.file.empty() ? "camwb-cli: " : "") << base::formatDiagnostic(diagnostic) << "\n";
+}
+
+int printDiagnostics(const std::vector<base::Diagnostic>& diagnostics)
+{
+    for (const base::Diagnostic& diagnostic : diagnostics)
+        printDiagnostic(diagnostic);
+    return static_cast<int>(base::countOf(diagnostics, base::Severity::Warning));
 }
 
 bool takePostOption(const std::vector<std::string>& args, std::size_t& i, PostOptions& options, std::string& error)
@@ -105,7 +105,7 @@ int postToFile(const post::PostProcessor& post, const toolpath::Toolpath& toolpa
     auto summary = post.runToFile(toolpath, options, outputPath);
     if (!summary)
         return fail(summary.error().toString());
-    const int warnings = printMessages(summary->messages);
+    const int warnings = printDiagnostics(summary->messages);
     std::cout << "camwb-cli: wrote " << outputPath << " (" << summary->lines << " lines, " << warnings
               << (warnings == 1 ? " warning)\n" : " warnings)\n");
     return kExitOk;
@@ -129,6 +129,8 @@ std::optional<ComputedJob> computeJobFile(const std::string& path)
         fail(path + ": " + program.error().message);
         return std::nullopt;
     }
+    for (base::Diagnostic& warning : computed.report.warnings)
+        warning.file = path;
     computed.job = std::move(job).value();
     computed.program = std::move(program).value();
     return computed;

@@ -93,8 +93,7 @@ int ncCommand(const std::vector<std::string>& args)
 
     toolpath::ToolpathRecorder recorder;
     const nc::InterpretResult result = nc::interpretFile(options.input, options.dialect, interpretOptions, recorder);
-    for (const nc::Diagnostic& diagnostic : result.diagnostics)
-        std::cerr << "camwb-cli: " << nc::formatDiagnostic(diagnostic) << "\n";
+    printDiagnostics(result.diagnostics);
     if (result.diagnosticsDropped > 0)
         std::cerr << "camwb-cli: note: " << result.diagnosticsDropped << " more diagnostics not shown\n";
 

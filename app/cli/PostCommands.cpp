@@ -189,8 +189,7 @@ int postCommand(const std::vector<std::string>& args)
         std::optional<ComputedJob> computed = computeJobFile(input);
         if (!computed)
             return kExitError;
-        for (const std::string& warning : computed->report.warnings)
-            std::cerr << "camwb-cli: warning: " << warning << "\n";
+        printDiagnostics(computed->report.warnings);
         program = std::move(computed->program);
         const document::Job& job = computed->job;
         postId = postId.empty() ? job.postId : postId;
@@ -200,8 +199,7 @@ int postCommand(const std::vector<std::string>& args)
         auto imported = toolpath::readClFile(input, format->cl);
         if (!imported)
             return fail(imported.error().toString());
-        for (const base::Error& warning : imported->warnings)
-            std::cerr << "camwb-cli: warning: " << warning.toString() << "\n";
+        printDiagnostics(imported->warnings);
         program = std::move(imported->toolpath);
         if (postId.empty())
             return usageError("posting a CL file needs --post <id> (see camwb-cli posts)");

@@ -39,6 +39,23 @@ struct Vec3 {
     Vec2 xy() const { return {x, y}; }
 };
 
+// Axis-aligned box of the points added to it; empty until the first one.
+struct Box3 {
+    Vec3 min, max;
+    bool empty = true;
+
+    void add(const Vec3& p)
+    {
+        if (empty) {
+            min = max = p;
+            empty = false;
+            return;
+        }
+        min = {std::fmin(min.x, p.x), std::fmin(min.y, p.y), std::fmin(min.z, p.z)};
+        max = {std::fmax(max.x, p.x), std::fmax(max.y, p.y), std::fmax(max.z, p.z)};
+    }
+};
+
 inline double distance(Vec2 a, Vec2 b) { return (a - b).length(); }
 inline double distance(Vec3 a, Vec3 b) { return (a - b).length(); }
 

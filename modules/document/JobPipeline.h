@@ -22,8 +22,8 @@ base::Result<occ::Model> loadJobModel(const Job& job, const occ::ProgressFn& pro
 // spindle start inserted after SectionBegin when the tool differs from the previous one.
 // The first failing operation's error is returned.
 struct ProgramReport {
-    std::vector<std::string> warnings;      // each names its operation: "pocket \"P\": ..."
-    std::vector<ops::MotionCounts> counts;  // per operation, in job order
+    std::vector<base::Diagnostic> warnings;  // each names its operation: "pocket \"P\": ..."
+    std::vector<ops::MotionCounts> counts;   // per operation, in job order
 };
 base::Result<toolpath::Toolpath> computeProgram(const Job& job, const occ::Model& model,
                                                 const ops::Progress& progress = {}, ProgramReport* report = nullptr);

@@ -43,6 +43,7 @@ base::Result<Machine> loadMachine(const std::string& path);
 
 // $CAMWB_MACHINE_PATH entries, ~/.local/share/camwb/machines, the installed share/camwb/machines
 // and the source tree's resources/machines, in that order; "<dir>/<id>.json", first match wins.
+// An `id` ending in ".json" is the path of a machine file, read as it is.
 std::vector<std::string> defaultMachineDirs();
 base::Result<Machine> findMachine(const std::string& id, const std::vector<std::string>& dirs);
 

@@ -124,6 +124,8 @@ std::vector<std::string> defaultMachineDirs()
 
 base::Result<Machine> findMachine(const std::string& id, const std::vector<std::string>& dirs)
 {
+    if (id.size() > 5 && id.compare(id.size() - 5, 5, ".json") == 0)
+        return loadMachine(id);  // a machine file named by its path, not looked up
     auto path = base::findDataFile("machine", id, ".json", dirs);
     if (!path)
         return path.error();

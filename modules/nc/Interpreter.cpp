@@ -1,7 +1,7 @@
 #include "nc/Interpreter.h"
 
 #include "base/AtomicFile.h"
-#include "nc/LimitCheck.h"
+#include "kinematics/LimitCheck.h"
 #include "nc/detail/Dialects.h"
 
 #include <algorithm>
@@ -53,7 +53,9 @@ ProgramResolver folderResolver(std::string folder, std::vector<std::string> exte
     };
 }
 
-InterpretResult interpret(std::string_view text, const InterpretOptions& options, toolpath::MachineSink& sink)
+namespace {
+
+InterpretResult interpretDialect(std::string_view text, const InterpretOptions& options, toolpath::MachineSink& sink)
 {
     switch (options.dialect) {
     case Dialect::Sinumerik:
@@ -64,6 +66,22 @@ InterpretResult interpret(std::string_view text, const InterpretOptions& options
         return detail::interpretIso(text, options, sink);
     }
     return {};
+}
+
+}  // namespace
+
+InterpretResult interpret(std::string_view text, const InterpretOptions& options, toolpath::MachineSink& sink)
+{
+    if (!options.machine)
+        return interpretDialect(text, options, sink);
+    // The same check the post kernel makes, on what the control would do, whatever the dialect.
+    kinematics::LimitCheck check(*options.machine, sink);
+    InterpretResult result = interpretDialect(text, options, check);
+    if (!result.cancelled) {
+        for (base::Diagnostic& d : check.ncDiagnostics(result.files))
+            result.diagnostics.push_back(std::move(d));
+    }
+    return result;
 }
 
 ProgramResolver resolverBeside(const std::string& programPath, Dialect dialect)

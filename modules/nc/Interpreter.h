@@ -55,7 +55,7 @@ struct InterpretOptions {
     Dialect dialect = Dialect::Iso;
     std::string fileName;                          // for diagnostics; empty = "<input>"
     ProgramResolver resolveProgram;                // empty: calls to other programs are errors
-    const kinematics::Machine* machine = nullptr;  // travel and spindle range checks when set
+    const kinematics::Machine* machine = nullptr;  // kinematics::LimitCheck on what the program does, when set
     std::int64_t maxBlocks = 10'000'000;           // executed blocks before a runaway-program error
     double arcRadiusToleranceMm = 0.01;            // start/end radius mismatch that is an error
     std::size_t maxDiagnostics = 1000;             // further ones are counted, not kept

@@ -139,7 +139,7 @@ base::Result<OpResult> computeContour(const std::vector<geom::Profile>& contours
     const std::string w = what(params);
     OpResult result;
     if (params.side == ContourSide::On && (params.radialStockMm > 0 || params.radialPasses > 1))
-        result.warnings.push_back(w + ": radial stock and radial passes do not apply on the contour; ignored");
+        result.warn(w + ": radial stock and radial passes do not apply on the contour; ignored");
 
     const Heights& h = params.heights;
     const std::vector<double> levels = stepDownLevels(h.startZ, h.finalZ + params.axialStockMm, params.stepDownMm);

@@ -62,7 +62,7 @@ double tipLength(const toolpath::Tool& tool)
 }
 
 base::Result<DrillHole> planHole(const std::string& what, const geom::Hole& hole, const DrillParams& p,
-                                 const ToolController& tc, std::vector<std::string>& warnings)
+                                 const ToolController& tc, OpResult& result)
 {
     Heights h = holeHeights(hole, p.heights, p.depthsFromHoles, p.breakthroughMm);
     if (p.depthAtShoulder)
@@ -77,7 +77,7 @@ base::Result<DrillHole> planHole(const std::string& what, const geom::Hole& hole
         return opError(what, "the " + formatMm(drill) + " mm drill is larger than the " + describeHole(hole));
     // Smaller by more than a tenth of a millimetre and 5 %: not a drill of the hole's size.
     if (hole.diameterMm - drill > std::max(0.1, 0.05 * hole.diameterMm))
-        warnings.push_back(holeWhat + ": the " + formatMm(drill) + " mm drill leaves it undersize");
+        result.warn(holeWhat + ": the " + formatMm(drill) + " mm drill leaves it undersize");
     return DrillHole{{hole.center.x, hole.center.y, h.startZ}, h.finalZ};
 }
 
@@ -90,9 +90,8 @@ base::Result<OpResult> computeDrill(const std::vector<geom::Hole>& holes, const 
     if (base::Status status = checkParams(what, holes, params, tc); !status)
         return status.error();
     OpResult result;
-    auto planned = planHoles<DrillHole>(holes, params.keepOrder, [&](const geom::Hole& hole) {
-        return planHole(what, hole, params, tc, result.warnings);
-    });
+    auto planned = planHoles<DrillHole>(
+        holes, params.keepOrder, [&](const geom::Hole& hole) { return planHole(what, hole, params, tc, result); });
     if (!planned)
         return planned.error();
     const std::vector<DrillHole>& plans = planned.value();

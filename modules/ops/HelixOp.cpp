@@ -41,7 +41,7 @@ base::Status checkParams(const std::string& what, const std::vector<geom::Hole>&
 }
 
 base::Result<HelixHole> planHole(const std::string& what, const geom::Hole& hole, const HelixParams& p,
-                                 const ToolController& tc, std::vector<std::string>& warnings)
+                                 const ToolController& tc, OpResult& result)
 {
     HelixHole plan;
     plan.hole = hole;
@@ -62,9 +62,9 @@ base::Result<HelixHole> planHole(const std::string& what, const geom::Hole& hole
     const bool coreLeft = plan.radius > toolRadius;
     plan.coreStands = coreLeft && (!hole.through || plan.heights.finalZ > hole.bottomZ);
     if (plan.coreStands)
-        warnings.push_back(holeWhat + ": the " + formatMm(tc.tool.diameterMm) + " mm tool leaves a core of " +
-                           formatMm(2 * (plan.radius - toolRadius)) +
-                           " mm diameter standing (tool narrower than half the hole)");
+        result.warn(holeWhat + ": the " + formatMm(tc.tool.diameterMm) + " mm tool leaves a core of " +
+                    formatMm(2 * (plan.radius - toolRadius)) +
+                    " mm diameter standing (tool narrower than half the hole)");
     return plan;
 }
 
@@ -178,7 +178,7 @@ base::Result<OpResult> computeHelix(const std::vector<geom::Hole>& holes, const 
         return status.error();
     OpResult result;
     auto planned = planHoles<HelixHole>(
-        holes, false, [&](const geom::Hole& hole) { return planHole(what, hole, params, tc, result.warnings); });
+        holes, false, [&](const geom::Hole& hole) { return planHole(what, hole, params, tc, result); });
     if (!planned)
         return planned.error();
     const std::vector<HelixHole>& plans = planned.value();

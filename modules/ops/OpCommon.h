@@ -4,6 +4,7 @@
 // they never touch the model or the job, so they run on any thread.
 #pragma once
 
+#include "base/Diagnostic.h"
 #include "base/Result.h"
 #include "toolpath/Toolpath.h"
 
@@ -55,9 +56,11 @@ struct MotionCounts {
 MotionCounts countMotions(const toolpath::Toolpath& toolpath);
 
 struct OpResult {
-    toolpath::Toolpath toolpath;        // SectionBegin ... SectionEnd; ToolChange/Spindle are the caller's
-    std::vector<std::string> warnings;  // computed anyway, but the user should know (left corners, ...)
+    toolpath::Toolpath toolpath;             // SectionBegin ... SectionEnd; ToolChange/Spindle are the caller's
+    std::vector<base::Diagnostic> warnings;  // computed anyway, but the user should know (left corners, ...)
     MotionCounts counts;
+
+    void warn(std::string message) { warnings.push_back(base::warningDiagnostic(std::move(message))); }
 };
 
 // The SectionBegin an operation opens its toolpath with: name, strategy ("contour", "pocket",

@@ -109,8 +109,8 @@ base::Result<OpResult> computePocket(const std::vector<geom::Region>& regions, c
     const CleanupResult cleanup =
         covered <= radius - 4 * tol ? CleanupResult{} : addCleanup(*cuts, toolCentre, radius, spacing, tol);
     if (cleanup.uncutArea > 0)
-        result.warnings.push_back(what + ": " + fmt(cleanup.uncutArea) +
-                                  " mm^2 between passes could not be reached by clean-up moves");
+        result.warn(what + ": " + fmt(cleanup.uncutArea) +
+                    " mm^2 between passes could not be reached by clean-up moves");
     if (!progress.step(0.6))
         return cancelledError(what);
 
@@ -120,8 +120,8 @@ base::Result<OpResult> computePocket(const std::vector<geom::Region>& regions, c
     const double left =
         geom::totalArea(geom::subtract(floor, geom::offsetRegions(toolCentre, radius + 2 * tol, tol), tol));
     if (left > std::max(1e-3, 10 * tol * tol))
-        result.warnings.push_back(what + ": " + fmt(left) + " mm^2 in corners the tool (diameter " +
-                                  fmt(tc.tool.diameterMm) + " mm) cannot reach is left uncut");
+        result.warn(what + ": " + fmt(left) + " mm^2 in corners the tool (diameter " + fmt(tc.tool.diameterMm) +
+                    " mm) cannot reach is left uncut");
 
     EntrySettings entry;
     entry.kind = params.entry;
@@ -147,9 +147,8 @@ base::Result<OpResult> computePocket(const std::vector<geom::Region>& regions, c
     }
     const int fallbacks = planner.helixFallbacks() + (finishPlanner ? finishPlanner->helixFallbacks() : 0);
     if (fallbacks > 0)
-        result.warnings.push_back(what + ": the helix of diameter " + fmt(2 * entry.helixRadius) +
-                                  " mm fits nowhere near " + std::to_string(fallbacks) +
-                                  " cut start(s); ramped there instead");
+        result.warn(what + ": the helix of diameter " + fmt(2 * entry.helixRadius) + " mm fits nowhere near " +
+                    std::to_string(fallbacks) + " cut start(s); ramped there instead");
 
     PathWriter out(result.toolpath, operationIndex);
     toolpath::SectionBegin begin = sectionBegin(params.name, "pocket", tc);

@@ -1,8 +1,11 @@
 #include "post/PostProcessor.h"
 
 #include "base/AtomicFile.h"
+#include "kinematics/LimitCheck.h"
 #include "post/ProgramSummary.h"
 #include "post/detail/ScriptRun.h"
+#include "toolpath/ForwardingSink.h"
+#include "toolpath/MachineSink.h"
 
 #include <QCoreApplication>
 
@@ -43,15 +46,19 @@ base::Status prepare(ScriptRun& run, const PostInfo& info, const std::string& so
     return run.evaluate(source, evaluated);
 }
 
-std::vector<PostMessage> playAndCollect(ScriptRun& run, const toolpath::Toolpath& toolpath, const RunOptions& options,
-                                        base::Status& status)
+std::vector<base::Diagnostic> playAndCollect(ScriptRun& run, const toolpath::Toolpath& toolpath,
+                                             const RunOptions& options, base::Status& status)
 {
     const ProgramSummary summary = summarizeProgram(toolpath);
-    std::vector<PostMessage> messages;
-    if (options.machine)
-        messages = checkMachineLimits(toolpath, summary, *options.machine);
+    std::vector<base::Diagnostic> messages;
+    if (options.machine) {
+        toolpath::NullSink nowhere;
+        kinematics::LimitCheck check(*options.machine, nowhere);
+        toolpath::play(toolpath, check);
+        messages = check.clDiagnostics();
+    }
     status = run.play(toolpath, summary);
-    std::vector<PostMessage>& fromRun = run.messages();
+    std::vector<base::Diagnostic>& fromRun = run.messages();
     messages.insert(messages.end(), fromRun.begin(), fromRun.end());
     return messages;
 }

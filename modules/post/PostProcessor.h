@@ -4,6 +4,7 @@
 // a fresh script engine, so runs are independent and thread-safe.
 #pragma once
 
+#include "base/Diagnostic.h"
 #include "base/Result.h"
 #include "kinematics/Machine.h"
 #include "post/PostInfo.h"
@@ -37,23 +38,15 @@ struct RunOptions {
     std::chrono::milliseconds scriptBudget{10000};
 };
 
-struct PostMessage {
-    enum class Severity { Warning, Error };
-    Severity severity = Severity::Warning;
-    std::string text;
-    std::string file;
-    int line = 0;
-};
-
 struct PostOutput {
-    std::string text;                   // every line ends with "\n"
-    std::vector<PostMessage> messages;  // warnings from the kernel and the post
-    std::vector<int> lineOperation;     // per output line: operation index of its CL record, -1 = none
+    std::string text;                        // every line ends with "\n"
+    std::vector<base::Diagnostic> messages;  // warnings from the kernel, the machine check and the post
+    std::vector<int> lineOperation;          // per output line: operation index of its CL record, -1 = none
 };
 
 // What a run into a file reports (the text itself went to the file).
 struct PostSummary {
-    std::vector<PostMessage> messages;
+    std::vector<base::Diagnostic> messages;
     std::size_t lines = 0;
     std::size_t bytes = 0;
 };

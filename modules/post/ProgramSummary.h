@@ -1,10 +1,7 @@
-// Facts about a whole program that a post wants before it writes its first line (the work
-// offset, the tools for a header list, the extents) and that the kernel checks against the
-// machine's limits (travel, spindle range, tool changer, feeds, coolants) before posting.
+// Facts about a whole program that a post wants before it writes its first line: the work
+// offset, the tools for a header list, the extents.
 #pragma once
 
-#include "kinematics/Machine.h"
-#include "post/PostProcessor.h"
 #include "toolpath/Toolpath.h"
 
 #include <vector>
@@ -19,9 +16,5 @@ struct ProgramSummary {
 };
 
 ProgramSummary summarizeProgram(const toolpath::Toolpath& toolpath);
-
-// One warning per kind of violation, naming the first CL record and how many there are.
-std::vector<PostMessage> checkMachineLimits(const toolpath::Toolpath& toolpath, const ProgramSummary& summary,
-                                            const kinematics::Machine& machine);
 
 }  // namespace camwb::post

@@ -201,7 +201,7 @@ int ScriptKernel::callerLine()
 
 void ScriptKernel::warning(const QJSValue& text)
 {
-    m_messages.push_back({PostMessage::Severity::Warning, wordText(text), m_postFile, callerLine()});
+    m_messages.push_back(base::warningDiagnostic(wordText(text), m_postFile, callerLine()));
 }
 
 void ScriptKernel::error(const QJSValue& text)

@@ -3,8 +3,8 @@
 // linearised where the post cannot write them; cycles the post does not write are expanded into
 // moves; five-axis moves are refused by three-axis posts; cutter compensation must change on a
 // straight move and works in XY.
-#include "post/ArcGeometry.h"
 #include "post/detail/ScriptRun.h"
+#include "toolpath/ArcGeometry.h"
 #include "toolpath/CycleExpansion.h"
 #include "toolpath/MachineSink.h"
 #include "toolpath/RecordNames.h"
@@ -132,33 +132,25 @@ public:
     }
 
     // Warnings for what this run could not write as the CL said, once per kind.
-    void report(std::vector<PostMessage>& messages) const
+    void report(std::vector<base::Diagnostic>& messages) const
     {
-        const std::string& file = m_run.m_postFile;
+        auto warn = [&messages, &file = m_run.m_postFile](std::string text) {
+            messages.push_back(base::warningDiagnostic(std::move(text), file));
+        };
         for (const auto& [what, count] : m_unhandled)
-            messages.push_back({PostMessage::Severity::Warning,
-                                "post " + m_run.m_postId + " has no handler for " + what + "; " +
-                                    counted(count, "record", "records") + " not output",
-                                file, 0});
+            warn("post " + m_run.m_postId + " has no handler for " + what + "; " + counted(count, "record", "records") +
+                 " not output");
         if (m_missingFeed.count > 0)
-            messages.push_back({PostMessage::Severity::Warning,
-                                counted(m_missingFeed.count, "feed move", "feed moves") +
-                                    " without a feed rate: F not written (first: CL record " +
-                                    std::to_string(m_missingFeed.first) + ")",
-                                file, 0});
+            warn(counted(m_missingFeed.count, "feed move", "feed moves") +
+                 " without a feed rate: F not written (first: CL record " + std::to_string(m_missingFeed.first) + ")");
         if (m_shortCompEntry.count > 0)
-            messages.push_back(
-                {PostMessage::Severity::Warning,
-                 counted(m_shortCompEntry.count, "cutter compensation entry move", "cutter compensation entry moves") +
-                     " not longer than the tool radius: the control may refuse it (first: CL record " +
-                     std::to_string(m_shortCompEntry.first) + ")",
-                 file, 0});
+            warn(counted(m_shortCompEntry.count, "cutter compensation entry move", "cutter compensation entry moves") +
+                 " not longer than the tool radius: the control may refuse it (first: CL record " +
+                 std::to_string(m_shortCompEntry.first) + ")");
         for (const auto& [reason, tally] : m_linearised)
-            messages.push_back({PostMessage::Severity::Warning,
-                                counted(tally.count, "arc", "arcs") + " " + reason + ": written as lines within " +
-                                    base::NumberFormat{6, true}.format(m_caps.toleranceMm) + " mm (first: CL record " +
-                                    std::to_string(tally.first) + ")",
-                                file, 0});
+            warn(counted(tally.count, "arc", "arcs") + " " + reason + ": written as lines within " +
+                 base::NumberFormat{6, true}.format(m_caps.toleranceMm) + " mm (first: CL record " +
+                 std::to_string(tally.first) + ")");
     }
 
 private:

@@ -8,14 +8,14 @@ namespace {
 
 // The same message on many lines (NX writes a PAINT statement every few lines) is one warning
 // that lists the lines, so that the one that matters is not buried.
-std::vector<base::Error> mergeRepeatedWarnings(std::vector<base::Error> warnings)
+std::vector<base::Diagnostic> mergeRepeatedWarnings(std::vector<base::Diagnostic> warnings)
 {
     constexpr std::size_t kLinesListed = 8;
-    std::vector<base::Error> merged;
+    std::vector<base::Diagnostic> merged;
     std::vector<std::vector<int>> repeats;  // further lines, per merged warning
-    for (base::Error& warning : warnings) {
+    for (base::Diagnostic& warning : warnings) {
         auto same = std::find_if(merged.begin(), merged.end(),
-                                 [&](const base::Error& w) { return w.message == warning.message; });
+                                 [&](const base::Diagnostic& w) { return w.message == warning.message; });
         if (same == merged.end()) {
             merged.push_back(std::move(warning));
             repeats.emplace_back();
@@ -76,7 +76,7 @@ bool ClBuilder::endSection(int line)
 
 void ClBuilder::warn(std::string message, int line, int column)
 {
-    m_warnings.push_back(base::makeError(std::move(message), m_fileName, line, column));
+    m_warnings.push_back(base::warningDiagnostic(std::move(message), m_fileName, line, column));
 }
 
 base::Error ClBuilder::error(std::string message, int line, int column) const

@@ -43,7 +43,7 @@ private:
     std::string m_fileName;
     std::vector<Record> m_records;
     std::vector<SourceRef> m_sources;
-    std::vector<base::Error> m_warnings;
+    std::vector<base::Diagnostic> m_warnings;
     int m_sectionCount = 0;
     int m_openSection = -1;  // index of the open section, -1 outside sections
     std::size_t m_openSectionRecord = 0;

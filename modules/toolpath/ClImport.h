@@ -3,6 +3,7 @@
 // simulator take like any operation's output; what the CL model cannot carry becomes a warning.
 #pragma once
 
+#include "base/Diagnostic.h"
 #include "base/Result.h"
 #include "toolpath/Toolpath.h"
 
@@ -26,8 +27,8 @@ enum class ClFormat { Apt, FreeCadDump, Trace };  // Trace: our own canonical tr
 //    number of the last line.
 // Feeds after a FeedModeChange to PerRevolution are in mm/rev, as ClRecords.h says.
 struct ClImport {
-    Toolpath toolpath;                  // records in mm, mm/min, degrees, rpm, seconds
-    std::vector<base::Error> warnings;  // unknown/ignored records: message + file + line (+ column)
+    Toolpath toolpath;                       // records in mm, mm/min, degrees, rpm, seconds
+    std::vector<base::Diagnostic> warnings;  // unknown/ignored records, with file, line (and column)
 };
 
 // .apt .aptsource .cl .cls -> Apt; .dump -> FreeCadDump; .trace -> Trace (case-insensitive); else nullopt.

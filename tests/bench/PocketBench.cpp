@@ -102,8 +102,8 @@ int runOnce(const char* patternName, int levels)
     std::printf("pocket %s, %d levels: records=%zu lines=%d arcs=%d helices=%d rapids=%d feed_xy_m=%.3f warnings=%zu\n",
                 zigzag ? "zigzag" : "offset", levels, result->toolpath.size(), counts.lines, counts.arcs,
                 counts.helices, counts.rapids, feedLengthXyM(result->toolpath), result->warnings.size());
-    for (const std::string& warning : result->warnings)
-        std::printf("  warning: %s\n", warning.c_str());
+    for (const base::Diagnostic& warning : result->warnings)
+        std::printf("  warning: %s\n", warning.message.c_str());
     return 0;
 }
 

@@ -88,8 +88,8 @@ std::optional<RoundTrip> LinuxCncRoundTrip::postAndRead(const Toolpath& cl)
     if (!posted.ok())
         return std::nullopt;
     result.posted = std::move(posted).value();
-    for (const post::PostMessage& message : result.posted.messages)
-        ADD_FAILURE() << "post warning: " << message.text << " (line " << message.line << ")";
+    for (const base::Diagnostic& message : result.posted.messages)
+        ADD_FAILURE() << "post warning: " << message.message << " (line " << message.line << ")";
 
     result.ngcPath = m_dir + "/program.ngc";
     std::ofstream(result.ngcPath, std::ios::binary) << result.posted.text;

@@ -21,19 +21,6 @@ namespace {
 // not bury the report (the editor's margin shows them all).
 constexpr int kReportedDiagnostics = 50;
 
-Workbench::Severity severityOf(nc::Severity severity)
-{
-    switch (severity) {
-    case nc::Severity::Note:
-        return Workbench::Severity::Info;
-    case nc::Severity::Warning:
-        return Workbench::Severity::Warning;
-    case nc::Severity::Error:
-        return Workbench::Severity::Error;
-    }
-    return Workbench::Severity::Error;
-}
-
 }  // namespace
 
 struct NcInspector::Result {
@@ -207,14 +194,14 @@ void NcInspector::reportDiagnostics(const NcTrace& trace)
     for (const nc::Diagnostic& diagnostic : diagnostics) {
         if (reported++ == kReportedDiagnostics)
             break;
-        emit message(severityOf(diagnostic.severity), QString::fromStdString(nc::formatDiagnostic(diagnostic)));
+        emit message(diagnostic.severity, QString::fromStdString(nc::formatDiagnostic(diagnostic)));
     }
     const std::size_t more = diagnostics.size() + trace.result.diagnosticsDropped -
                              std::min<std::size_t>(diagnostics.size(), kReportedDiagnostics);
     if (more > 0)
         emit message(Workbench::Severity::Warning, tr("%1: %2 more diagnostics not listed").arg(name).arg(more));
     const toolpath::ToolpathStats stats = toolpath::statistics(trace.program);
-    emit message(Workbench::Severity::Info,
+    emit message(Workbench::Severity::Note,
                  tr("Traced %1 as %2%3: %4 blocks, %5 lines, %6 arcs, %7 rapids, %8 cycles in %9 s")
                      .arg(name, QString::fromLatin1(nc::dialectName(trace.dialect)),
                           trace.dialectGuessed ? tr(" (guessed)") : QString())

@@ -119,7 +119,7 @@ bool MainWindow::openNcFile(const QString& path)
     m_fitWithTrace = true;
     m_inspector->loadProgram(QString::fromStdString(text.value()), QFileInfo(path).absoluteFilePath());
     m_editor->setReadOnly(false);
-    m_report->append(Workbench::Severity::Info, tr("Opened NC program %1").arg(path));
+    m_report->append(Workbench::Severity::Note, tr("Opened NC program %1").arg(path));
     return true;
 }
 

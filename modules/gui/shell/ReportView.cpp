@@ -21,7 +21,7 @@ void ReportView::append(Workbench::Severity severity, const QString& text)
     case Workbench::Severity::Error:
         prefix = tr("error: ");
         break;
-    case Workbench::Severity::Info:
+    case Workbench::Severity::Note:
         break;
     }
     appendPlainText(QTime::currentTime().toString(QStringLiteral("HH:mm:ss ")) + prefix + text);

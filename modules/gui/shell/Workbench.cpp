@@ -48,7 +48,7 @@ struct Workbench::ComputeOutcome {
     std::optional<toolpath::Toolpath> toolpath;
     std::optional<post::PostOutput> nc;
     std::string ncExtension;
-    std::vector<std::string> warnings;  // the operations' (left corners, helix fallbacks, ...)
+    std::vector<base::Diagnostic> warnings;  // the operations' (left corners, helix fallbacks, ...)
     std::vector<std::string> errors;
 };
 
@@ -74,7 +74,7 @@ bool Workbench::openJob(const QString& path)
     m_modelPath.clear();  // always read the model again: the file may have changed on disk
     m_document.reset(std::move(job.value()), path.toStdString());
     m_suppressRecompute = false;
-    report(Severity::Info, tr("Opened job %1").arg(path));
+    report(Severity::Note, tr("Opened job %1").arg(path));
     startCompute();
     return true;
 }
@@ -85,7 +85,7 @@ bool Workbench::saveJob(const QString& path)
         report(Severity::Error, qs(saved.error().toString()));
         return false;
     }
-    report(Severity::Info, tr("Saved job %1").arg(path));
+    report(Severity::Note, tr("Saved job %1").arg(path));
     return true;
 }
 
@@ -101,7 +101,7 @@ bool Workbench::saveNc(const QString& path)
         report(Severity::Error, qs(written.error().toString()));
         return false;
     }
-    report(Severity::Info, tr("Wrote NC program %1").arg(path));
+    report(Severity::Note, tr("Wrote NC program %1").arg(path));
     return true;
 }
 
@@ -131,7 +131,7 @@ void Workbench::importModel(const QString& path)
         m_modelPath = file;
         m_mesh = std::move(outcome->mesh);
         emit modelChanged();
-        report(Severity::Info, tr("Imported %1 (%2 faces)").arg(qs(file)).arg(m_model.faceCount()));
+        report(Severity::Note, tr("Imported %1 (%2 faces)").arg(qs(file)).arg(m_model.faceCount()));
         const base::Vec3 lo = m_model.boundsMin(), hi = m_model.boundsMax();
         const bool hadModel = !job().modelPath.empty();
         m_document.edit("Import model", [&](document::Job& j) {
@@ -275,22 +275,20 @@ void Workbench::finishCompute(const std::shared_ptr<ComputeOutcome>& outcome)
     if (outcome->toolpath) {
         m_toolpath = std::move(*outcome->toolpath);
         const toolpath::ToolpathStats stats = toolpath::statistics(m_toolpath);
-        report(Severity::Info, tr("Toolpath: %1 lines, %2 arcs, %3 rapids")
+        report(Severity::Note, tr("Toolpath: %1 lines, %2 arcs, %3 rapids")
                                    .arg(stats.lines)
                                    .arg(stats.arcs + stats.helices)
                                    .arg(stats.rapids));
         emit toolpathChanged();
     }
-    for (const std::string& w : outcome->warnings)
-        report(Severity::Warning, qs(w));
+    for (const base::Diagnostic& w : outcome->warnings)
+        report(w.severity, qs(w.message));
     if (outcome->nc) {
         m_nc = qs(outcome->nc->text);
         m_ncExtension = qs(outcome->ncExtension);
-        for (const post::PostMessage& m : outcome->nc->messages) {
-            const bool isError = m.severity == post::PostMessage::Severity::Error;
-            report(isError ? Severity::Error : Severity::Warning, qs(base::Error{m.text, m.file, m.line}.toString()));
-        }
-        report(Severity::Info, tr("Posted %1 lines with %2").arg(m_nc.count('\n')).arg(qs(job().postId)));
+        for (const base::Diagnostic& m : outcome->nc->messages)
+            report(m.severity, qs(base::formatDiagnostic(m)));
+        report(Severity::Note, tr("Posted %1 lines with %2").arg(m_nc.count('\n')).arg(qs(job().postId)));
         emit ncChanged();
     }
     for (const std::string& e : outcome->errors)

@@ -3,6 +3,7 @@
 // signals. No widgets here, so every action can be driven and tested without a window.
 #pragma once
 
+#include "base/Diagnostic.h"
 #include "document/JobDocument.h"
 #include "occ/DisplayMesh.h"
 #include "occ/Model.h"
@@ -21,8 +22,7 @@ namespace camwb::gui {
 class Workbench : public QObject {
     Q_OBJECT
 public:
-    enum class Severity { Info, Warning, Error };
-    Q_ENUM(Severity)
+    using Severity = base::Severity;
 
     explicit Workbench(QObject* parent = nullptr);
     ~Workbench() override;

@@ -259,8 +259,8 @@ void OperationPanel::showOutcome()
     QStringList lines{
         tr("%1 lines, %2 arcs, %3 helices, %4 cycles").arg(c.lines).arg(c.arcs).arg(c.helices).arg(c.cycles) +
         tr(" (%1 rapids; %2 ms)").arg(c.rapids).arg(qRound(outcome->seconds * 1000))};
-    for (const std::string& warning : outcome->result.warnings)
-        lines << tr("Warning: %1").arg(QString::fromStdString(warning));
+    for (const base::Diagnostic& warning : outcome->result.warnings)
+        lines << tr("Warning: %1").arg(QString::fromStdString(warning.message));
     m_status->setStyleSheet(outcome->result.warnings.empty() ? QString() : QStringLiteral("color: #8a5a00;"));
     m_status->setText(lines.join(QLatin1Char('\n')));
     if (m_overlay != nullptr)

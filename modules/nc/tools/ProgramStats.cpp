@@ -1,12 +1,10 @@
 #include "nc/tools/ProgramStats.h"
 
 #include "kinematics/Machine.h"
-#include "toolpath/ClArcs.h"
+#include "toolpath/ArcGeometry.h"
 #include "toolpath/CycleExpansion.h"
 
 #include <algorithm>
-#include <cmath>
-#include <numbers>
 #include <type_traits>
 
 namespace camwb::nc {
@@ -15,8 +13,6 @@ using base::Vec3;
 namespace tp = toolpath;
 
 namespace {
-
-constexpr double kTwoPi = 2.0 * std::numbers::pi;
 
 // Walks the records with the modal state the time estimate needs.
 class StatsWalker {
@@ -155,45 +151,11 @@ private:
             return;
         }
         const Vec3 start = *m_position;
-        const Vec3 n = tp::unitVector(a.normal).value_or(Vec3{0, 0, 1});
-        const Vec3 rs = start - a.center;
-        const Vec3 u0 = rs - n * rs.dot(n);  // start radius vector in the plane
-        const double radius = u0.length();
-        double sweep = tp::forwardAngle(a, start, a.to);
-        if (sweep <= 1e-12)
-            sweep = kTwoPi;  // start == end: a full circle
-        sweep += kTwoPi * std::max(0, a.turns);
-        const double rise = (a.to - start).dot(n);
-        const double length = std::hypot(radius * sweep, rise);
-        addPoint(start, true);
-        addPoint(a.to, true);
-        if (radius > 0) {
-            // Signed angle about n: counter-clockwise positive; cw arcs run negative.
-            const Vec3 ux = u0 * (1.0 / radius);
-            const Vec3 uy = n.cross(ux);
-            const double dir = a.clockwise ? -1.0 : 1.0;
-            const Vec3 base = start - u0;   // centre in the start's plane
-            auto pointAt = [&](double t) {  // t: angle travelled
-                const double phi = dir * t;
-                return base + (ux * std::cos(phi) + uy * std::sin(phi)) * radius + n * (rise * t / sweep);
-            };
-            // Extremes per axis of r(ux cos + uy sin): phi = atan2(uy_k, ux_k) and opposite.
-            const double ux_[3] = {ux.x, ux.y, ux.z};
-            const double uy_[3] = {uy.x, uy.y, uy.z};
-            for (int k = 0; k < 3; ++k) {
-                if (std::abs(ux_[k]) < 1e-12 && std::abs(uy_[k]) < 1e-12)
-                    continue;
-                const double phi0 = std::atan2(uy_[k], ux_[k]);
-                for (double phi : {phi0, phi0 + std::numbers::pi}) {
-                    // travelled angle t with dir * t == phi (mod 2 pi), every lap within the sweep
-                    double t = std::fmod(dir * phi, kTwoPi);
-                    if (t < 0)
-                        t += kTwoPi;
-                    for (; t <= sweep; t += kTwoPi)
-                        addPoint(pointAt(t), true);
-                }
-            }
-        }
+        Vec3 min = start, max = start;
+        tp::extendByArc(min, max, start, a);
+        addPoint(min, true);
+        addPoint(max, true);
+        const double length = tp::arcLength(start, a);
         addFeed(length, a.feedMmPerMin);
         m_position = a.to;
     }
@@ -227,25 +189,6 @@ private:
 };
 
 }  // namespace
-
-void Extents::add(const Vec3& p)
-{
-    if (empty) {
-        min = max = p;
-        empty = false;
-        return;
-    }
-    min = {std::min(min.x, p.x), std::min(min.y, p.y), std::min(min.z, p.z)};
-    max = {std::max(max.x, p.x), std::max(max.y, p.y), std::max(max.z, p.z)};
-}
-
-void Extents::add(const Extents& other)
-{
-    if (other.empty)
-        return;
-    add(other.min);
-    add(other.max);
-}
 
 ProgramStats programStats(const toolpath::Toolpath& program, const StatsOptions& options)
 {

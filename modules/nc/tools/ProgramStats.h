@@ -17,14 +17,7 @@ struct Machine;
 namespace camwb::nc {
 
 // Axis-aligned box of what was visited; empty until a point is added.
-struct Extents {
-    base::Vec3 min;
-    base::Vec3 max;
-    bool empty = true;
-
-    void add(const base::Vec3& p);
-    void add(const Extents& other);
-};
+using Extents = base::Box3;
 
 struct MotionTotals {
     Extents rapidExtents;    // end points of rapids (and the start points they leave from)

@@ -73,7 +73,7 @@ public:
     ScriptKernel(QJSEngine* engine, std::string postFile) : m_engine(engine), m_postFile(std::move(postFile)) {}
 
     OutputWriter& writer() { return m_writer; }
-    std::vector<PostMessage>& messages() { return m_messages; }
+    std::vector<base::Diagnostic>& messages() { return m_messages; }
     void setPosition(std::optional<toolpath::Vec3> position) { m_position = position; }
     const std::optional<toolpath::Vec3>& position() const { return m_position; }
     // Text of the last error() call by the post; cleared by takePostError().
@@ -113,7 +113,7 @@ private:
     QJSEngine* m_engine;
     std::string m_postFile;
     OutputWriter m_writer;
-    std::vector<PostMessage> m_messages;
+    std::vector<base::Diagnostic> m_messages;
     std::optional<toolpath::Vec3> m_position;
     std::optional<std::string> m_postError;
     QJSValue m_properties;

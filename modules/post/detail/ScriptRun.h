@@ -61,7 +61,7 @@ public:
     base::Status play(const toolpath::Toolpath& toolpath, const ProgramSummary& summary);
 
     OutputWriter& writer() { return m_kernel->writer(); }
-    std::vector<PostMessage>& messages() { return m_kernel->messages(); }
+    std::vector<base::Diagnostic>& messages() { return m_kernel->messages(); }
 
 private:
     friend class ScriptSink;

@@ -140,6 +140,8 @@ TEST(JobPipeline, WarningsAndCountsOfEachOperationAreReported)
     EXPECT_GT(report.counts[0].arcs, 0) << "the contour's corners stay arcs";
     EXPECT_GT(report.counts[2].helices, 0);
     ASSERT_EQ(report.warnings.size(), 1u);
-    EXPECT_EQ(report.warnings[0].rfind("drilling \"" + drill.name() + "\": ", 0), 0u) << report.warnings[0];
-    EXPECT_NE(report.warnings[0].find("undersize"), std::string::npos) << report.warnings[0];
+    const std::string& warning = report.warnings[0].message;
+    EXPECT_EQ(report.warnings[0].severity, base::Severity::Warning);
+    EXPECT_EQ(warning.rfind("drilling \"" + drill.name() + "\": ", 0), 0u) << warning;
+    EXPECT_NE(warning.find("undersize"), std::string::npos) << warning;
 }

@@ -112,7 +112,7 @@ TEST(BlockTemplates, WriteWhatTheSameRulesWriteAsHandlers)
             "N150 G18 G3 X10.000 Z45.000 I5.000 K0.000 CR=5.000", "N160 G1 X0.000 Y0.000 Z0.000"}))
         << templates.text;
     ASSERT_EQ(templates.messages.size(), 1u);
-    EXPECT_EQ(templates.messages[0].text, "1 feed move without a feed rate: F not written (first: CL record 15)");
+    EXPECT_EQ(templates.messages[0].message, "1 feed move without a feed rate: F not written (first: CL record 15)");
 }
 
 TEST(BlockTemplates, MalformedTemplatesAreLoadErrors)

@@ -124,7 +124,7 @@ TEST_F(LinuxCncPost, CoolantMistAndFloodNeedM9Between)
     EXPECT_EQ(std::vector<std::string>(all.begin() + 7, all.end() - 3),
               (std::vector<std::string>{"M7", "M9", "M8", "M9"}));
     ASSERT_EQ(output.messages.size(), 1u);
-    EXPECT_NE(output.messages[0].text.find("throughTool has no LinuxCNC code"), std::string::npos);
+    EXPECT_NE(output.messages[0].message.find("throughTool has no LinuxCNC code"), std::string::npos);
 }
 
 TEST_F(LinuxCncPost, MotionIsModalAndFeedNeverOnRapids)
@@ -293,7 +293,7 @@ TEST_F(LinuxCncPost, PeckDwellIsDroppedWithAWarning)
     const PostOutput output = run(path);
     EXPECT_EQ(output.text.find(" P0.5"), std::string::npos) << output.text;
     ASSERT_EQ(output.messages.size(), 1u);
-    EXPECT_NE(output.messages[0].text.find("no dwell in G73/G83"), std::string::npos);
+    EXPECT_NE(output.messages[0].message.find("no dwell in G73/G83"), std::string::npos);
 }
 
 TEST_F(LinuxCncPost, CutterCompensation)
@@ -313,8 +313,8 @@ TEST_F(LinuxCncPost, CutterCompensation)
               (std::vector<std::string>{"G0 X-20.000 Y-20.000 Z5.000", "G41 D7", "G1 X0.000 Y-10.000 F400", "X30.000",
                                         "G40", "X60.000 Y40.000", "G42 D7", "X62.000"}));
     ASSERT_EQ(output.messages.size(), 1u);  // the kernel's check, for every post
-    EXPECT_EQ(output.messages[0].text, "1 cutter compensation entry move not longer than the tool radius: the "
-                                       "control may refuse it (first: CL record 10)");
+    EXPECT_EQ(output.messages[0].message, "1 cutter compensation entry move not longer than the tool radius: the "
+                                          "control may refuse it (first: CL record 10)");
 
     Toolpath switchSides = sectionWithTool();
     switchSides.add(Rapid{{0, 0, 5}});

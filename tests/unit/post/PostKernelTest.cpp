@@ -85,8 +85,8 @@ TEST(PostKernel, MissingHandlersWarnOncePerKind)
     ASSERT_TRUE(output.ok()) << output.error().toString();
     EXPECT_EQ(output->text, "");
     ASSERT_EQ(output->messages.size(), 2u);
-    EXPECT_EQ(output->messages[0].text, "post partial has no handler for Dwell (onDwell); 1 record not output");
-    EXPECT_EQ(output->messages[1].text, "post partial has no handler for Rapid (onRapid); 2 records not output");
+    EXPECT_EQ(output->messages[0].message, "post partial has no handler for Dwell (onDwell); 1 record not output");
+    EXPECT_EQ(output->messages[1].message, "post partial has no handler for Rapid (onRapid); 2 records not output");
 }
 
 TEST(PostKernel, HandlersMayBeMethodsOfPost)
@@ -107,7 +107,7 @@ TEST(PostKernel, WarningNamesFileAndLine)
     const auto output = runScript("warn.js", source);
     ASSERT_TRUE(output.ok()) << output.error().toString();
     ASSERT_EQ(output->messages.size(), 1u);
-    EXPECT_EQ(output->messages[0].text, "careful");
+    EXPECT_EQ(output->messages[0].message, "careful");
     EXPECT_EQ(output->messages[0].line, 3);
     EXPECT_NE(output->messages[0].file.find("warn.js"), std::string::npos);
 }

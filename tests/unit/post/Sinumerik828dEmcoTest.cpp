@@ -266,7 +266,7 @@ TEST_F(EmcoPost, ObliqueArcsAreLinearisedWithAWarning)
     const PostOutput output = run(path);
     EXPECT_EQ(output.text.find("G2"), std::string::npos);
     ASSERT_EQ(output.messages.size(), 1u);
-    EXPECT_EQ(output.messages[0].text,
+    EXPECT_EQ(output.messages[0].message,
               "1 arc in an oblique plane: written as lines within 0.01 mm (first: CL record 4)");
 }
 
@@ -361,7 +361,7 @@ TEST_F(EmcoPost, CoolantDwellStopsAndPassThrough)
     const PostOutput output = run(path);
     EXPECT_EQ(body(path), (std::vector<std::string>{"M8", "G4 F1.5", "M0", "M1", "SOFT", "M9", "M5"}));
     ASSERT_EQ(output.messages.size(), 1u);
-    EXPECT_EQ(output.messages[0].text, "coolant throughTool is not written by this post: not output");
+    EXPECT_EQ(output.messages[0].message, "coolant throughTool is not written by this post: not output");
     EXPECT_GT(output.messages[0].line, 0);
 }
 
@@ -478,17 +478,20 @@ TEST_F(EmcoPost, MachineLimitsOfTheEmcoAreCheckedWithWarnings)
     auto output = m_post->run(path, options);
     ASSERT_TRUE(output.ok()) << output.error().toString();
     std::vector<std::string> texts;
-    for (const PostMessage& m : output->messages)
-        texts.push_back(m.text);
+    for (const base::Diagnostic& m : output->messages)
+        texts.push_back(m.message);
+    // In the order they are first met; the span (known only at the end) last, blamed on the move
+    // that made it too long.
     EXPECT_EQ(texts, (std::vector<std::string>{
-                         "the program spans 250 mm in X; the EMCO Concept MILL 105 travels 200 mm",
-                         "coolant mist is not available on the EMCO Concept MILL 105 (CL record 4)",
+                         "tool T12 has no station: the EMCO Concept MILL 105 has stations 1..10 (CL record 0)",
+                         "tool T12 is 63 mm in diameter; the EMCO Concept MILL 105 takes at most 55 mm (CL record 0)",
+                         "tool T12 is 75 mm long; the EMCO Concept MILL 105 takes at most 50 mm (CL record 0)",
                          "spindle speed 6000 rpm is above the EMCO Concept MILL 105's maximum of 5000 rpm (CL record "
                          "1; 2 records in all)",
                          "spindle speed 100 rpm is below the EMCO Concept MILL 105's minimum of 150 rpm (CL record 2)",
-                         "tool T12 is 63 mm in diameter; the EMCO Concept MILL 105 takes at most 55 mm (CL record 0)",
-                         "tool T12 is 75 mm long; the EMCO Concept MILL 105 takes at most 50 mm (CL record 0)",
-                         "tool T12 has no station: the EMCO Concept MILL 105 has stations 1..10 (CL record 0)"}));
+                         "coolant mist is not available on the EMCO Concept MILL 105 (CL record 4)",
+                         "the program spans 250 mm in X (0 to 250); the EMCO Concept MILL 105 travels 200 mm (CL "
+                         "record 6)"}));
     EXPECT_NE(output->text.find(";machine EMCO Concept MILL 105"), std::string::npos);
 }
 

@@ -251,7 +251,7 @@ TEST(DrillOp, DrillMuchSmallerThanTheHoleWarns)
     auto result = ops::computeDrill({{1, {1, 2}, 8, 0, -10, false}}, p, ops::test::toolController(6.8), 0);
     ASSERT_TRUE(result);
     ASSERT_EQ(result->warnings.size(), 1u);
-    EXPECT_EQ(result->warnings[0],
+    EXPECT_EQ(result->warnings[0].message,
               "drilling \"D\": hole at (1, 2) of 8 mm diameter: the 6.8 mm drill leaves it undersize");
 }
 

@@ -228,8 +228,9 @@ TEST(HelixOp, ACoreLeftInABlindHoleWarnsAndTheToolLeavesStraightUp)
     auto result = ops::computeHelix({hole}, p, ops::test::toolController(6), 0);  // radius 12 > 3
     ASSERT_TRUE(result);
     ASSERT_EQ(result->warnings.size(), 1u);
-    EXPECT_EQ(result->warnings[0], "helix \"Bore\": hole at (0, 0) of 30 mm diameter: the 6 mm tool leaves a core of "
-                                   "18 mm diameter standing (tool narrower than half the hole)");
+    EXPECT_EQ(result->warnings[0].message,
+              "helix \"Bore\": hole at (0, 0) of 30 mm diameter: the 6 mm tool leaves a core of "
+              "18 mm diameter standing (tool narrower than half the hole)");
     const auto& exit = std::get<toolpath::Rapid>(result->toolpath.record(result->toolpath.size() - 2));
     EXPECT_NEAR(base::distance(exit.to.xy(), {0, 0}), 12, 1e-9);
 

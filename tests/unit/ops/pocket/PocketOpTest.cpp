@@ -125,8 +125,8 @@ TEST(PocketOp, RoundedPocketKeepsArcs)
     const ops::MotionCounts recount = ops::countMotions(result->toolpath);
     EXPECT_EQ(recount.arcs, result->counts.arcs);
     // The corners (radius 8) are within the reach of a 6 mm tool: no corner warning.
-    for (const std::string& w : result->warnings)
-        EXPECT_EQ(w.find("cannot reach"), std::string::npos) << w;
+    for (const base::Diagnostic& w : result->warnings)
+        EXPECT_EQ(w.message.find("cannot reach"), std::string::npos) << w.message;
 }
 
 TEST(PocketOp, SharpCornersAreReportedNotGouged)
@@ -134,12 +134,12 @@ TEST(PocketOp, SharpCornersAreReportedNotGouged)
     auto result = ops::computePocket(kRect, baseParams(), toolOf(6), 0);
     ASSERT_TRUE(result.ok()) << result.error().message;
     bool reported = false;
-    for (const std::string& w : result->warnings)
-        if (w.find("cannot reach") != std::string::npos) {
+    for (const base::Diagnostic& w : result->warnings)
+        if (w.message.find("cannot reach") != std::string::npos) {
             reported = true;
             // Four corners of r^2 (1 - pi/4) each, r = 3: 7.73 mm^2 (less the tolerance margin).
-            const double area = std::stod(w.substr(w.find(": ") + 2));
-            EXPECT_NEAR(area, 4 * 9 * (1 - kPi / 4), 0.5) << w;
+            const double area = std::stod(w.message.substr(w.message.find(": ") + 2));
+            EXPECT_NEAR(area, 4 * 9 * (1 - kPi / 4), 0.5) << w.message;
         }
     EXPECT_TRUE(reported);
 }
@@ -274,8 +274,8 @@ TEST(PocketOp, HelixThatFitsNowhereRampsWithAWarning)
     auto result = ops::computePocket(slot, p, toolOf(6), 0);
     ASSERT_TRUE(result.ok()) << result.error().message;
     bool warned = false;
-    for (const std::string& w : result->warnings)
-        warned = warned || w.find("ramped there instead") != std::string::npos;
+    for (const base::Diagnostic& w : result->warnings)
+        warned = warned || w.message.find("ramped there instead") != std::string::npos;
     EXPECT_TRUE(warned);
     EXPECT_EQ(result->counts.helices, 0);
 }

@@ -1,0 +1,280 @@
+#include "kinematics/LimitCheck.h"
+
+#include "base/NumberFormat.h"
+#include "toolpath/ArcGeometry.h"
+#include "toolpath/CycleExpansion.h"
+#include "toolpath/RecordNames.h"
+
+#include <algorithm>
+
+namespace camwb::kinematics {
+
+using namespace toolpath;
+
+namespace {
+
+std::string num(double value) { return base::NumberFormat{3, true}.format(value); }
+
+std::string toolName(int number) { return "tool T" + std::to_string(number); }
+
+double component(const Vec3& v, int axis) { return axis == 0 ? v.x : axis == 1 ? v.y : v.z; }
+
+constexpr const char* kAxisNames[3] = {"X", "Y", "Z"};
+
+}  // namespace
+
+LimitCheck::LimitCheck(const Machine& machine, MachineSink& next) :
+    ForwardingSink(next),
+    m_machine(machine),
+    m_name(machine.name.empty() ? machine.id : machine.name)
+{
+}
+
+void LimitCheck::setSource(const SourceRef& source)
+{
+    m_source = source;
+    ForwardingSink::setSource(source);
+}
+
+void LimitCheck::nextRecord() { ++m_records; }
+
+void LimitCheck::flag(const std::string& key, const std::string& message)
+{
+    const auto [it, inserted] = m_findingOfKey.emplace(key, m_findings.size());
+    if (inserted)
+        m_findings.push_back({m_source, m_records - 1, 0, message});
+    ++m_findings[it->second].count;
+}
+
+void LimitCheck::reach(const Vec3& p)
+{
+    for (int axis = 0; axis < 3; ++axis) {
+        const double v = component(p, axis);
+        if (!m_reached || v < m_low[axis].value)
+            m_low[axis] = {v, m_source, m_records - 1};
+        if (!m_reached || v > m_high[axis].value)
+            m_high[axis] = {v, m_source, m_records - 1};
+    }
+    m_reached = true;
+}
+
+void LimitCheck::cutting(double feed)
+{
+    if (m_noTool)
+        flag("no tool", "a cutting move with no tool in the spindle (after T0)");
+    if (m_perMinute && m_machine.maxCuttingFeedMmPerMin > 0 && feed > m_machine.maxCuttingFeedMmPerMin)
+        flag("feed", "feed " + num(feed) + " mm/min is above the " + m_name + "'s maximum cutting feed of " +
+                         num(m_machine.maxCuttingFeedMmPerMin) + " mm/min");
+}
+
+void LimitCheck::rapid(const Rapid& r)
+{
+    nextRecord();
+    reach(r.to);
+    m_position = r.to;
+    ForwardingSink::rapid(r);
+}
+
+void LimitCheck::linear(const Linear& r)
+{
+    nextRecord();
+    reach(r.to);
+    m_position = r.to;
+    cutting(r.feedMmPerMin);
+    ForwardingSink::linear(r);
+}
+
+void LimitCheck::arc(const Arc& r)
+{
+    nextRecord();
+    if (m_position) {
+        Vec3 min = *m_position, max = *m_position;
+        extendByArc(min, max, *m_position, r);
+        reach(min);
+        reach(max);
+    }
+    reach(r.to);
+    m_position = r.to;
+    cutting(r.feedMmPerMin);
+    ForwardingSink::arc(r);
+}
+
+void LimitCheck::toolAxisMove(const ToolAxisMove& r)
+{
+    nextRecord();
+    reach(r.tip);
+    m_position = r.tip;
+    if (r.feedMmPerMin > 0)
+        cutting(r.feedMmPerMin);
+    ForwardingSink::toolAxisMove(r);
+}
+
+void LimitCheck::cycle(const Cycle& r)
+{
+    nextRecord();
+    for (const Vec3& hole : r.holes) {
+        reach({hole.x, hole.y, r.bottomZ});
+        reach({hole.x, hole.y, std::max(cycleReturnZ(r), r.retractZ)});
+    }
+    if (!r.holes.empty()) {
+        m_position = Vec3{r.holes.back().x, r.holes.back().y, cycleReturnZ(r)};
+        cutting(r.feedMmPerMin);
+    }
+    ForwardingSink::cycle(r);
+}
+
+void LimitCheck::feedMode(const FeedModeChange& r)
+{
+    nextRecord();
+    m_perMinute = r.mode == FeedMode::PerMinute;
+    ForwardingSink::feedMode(r);
+}
+
+void LimitCheck::toolChange(const ToolChange& r)
+{
+    nextRecord();
+    const Tool& tool = r.tool;
+    m_noTool = tool.number == 0;
+    if (m_machine.toolStations > 0 && (tool.number < 0 || tool.number > m_machine.toolStations))
+        flag("tool station " + std::to_string(tool.number), toolName(tool.number) + " has no station: the " + m_name +
+                                                                " has stations 1.." +
+                                                                std::to_string(m_machine.toolStations));
+    if (m_machine.maxToolDiameterMm > 0 && tool.diameterMm > m_machine.maxToolDiameterMm)
+        flag("tool diameter " + std::to_string(tool.number), toolName(tool.number) + " is " + num(tool.diameterMm) +
+                                                                 " mm in diameter; the " + m_name + " takes at most " +
+                                                                 num(m_machine.maxToolDiameterMm) + " mm");
+    if (m_machine.maxToolLengthMm > 0 && tool.lengthMm > m_machine.maxToolLengthMm)
+        flag("tool length " + std::to_string(tool.number), toolName(tool.number) + " is " + num(tool.lengthMm) +
+                                                               " mm long; the " + m_name + " takes at most " +
+                                                               num(m_machine.maxToolLengthMm) + " mm");
+    ForwardingSink::toolChange(r);
+}
+
+void LimitCheck::spindle(const Spindle& r)
+{
+    nextRecord();
+    if (r.rpm > 0 && m_machine.spindleMaxRpm > 0 && r.rpm > m_machine.spindleMaxRpm)
+        flag("spindle max", "spindle speed " + num(r.rpm) + " rpm is above the " + m_name + "'s maximum of " +
+                                num(m_machine.spindleMaxRpm) + " rpm");
+    if (r.rpm > 0 && r.rpm < m_machine.spindleMinRpm)
+        flag("spindle min", "spindle speed " + num(r.rpm) + " rpm is below the " + m_name + "'s minimum of " +
+                                num(m_machine.spindleMinRpm) + " rpm");
+    ForwardingSink::spindle(r);
+}
+
+void LimitCheck::coolant(const Coolant& r)
+{
+    nextRecord();
+    if (r.mode != CoolantMode::Off && !m_machine.hasCoolant(toolpath::name(r.mode)))
+        flag(std::string("coolant ") + toolpath::name(r.mode),
+             std::string("coolant ") + toolpath::name(r.mode) + " is not available on the " + m_name);
+    ForwardingSink::coolant(r);
+}
+
+void LimitCheck::workOffset(const WorkOffset& r)
+{
+    nextRecord();
+    ForwardingSink::workOffset(r);
+}
+
+void LimitCheck::dwell(const Dwell& r)
+{
+    nextRecord();
+    ForwardingSink::dwell(r);
+}
+
+void LimitCheck::cutterComp(const CutterComp& r)
+{
+    nextRecord();
+    ForwardingSink::cutterComp(r);
+}
+
+void LimitCheck::comment(const Comment& r)
+{
+    nextRecord();
+    ForwardingSink::comment(r);
+}
+
+void LimitCheck::sectionBegin(const SectionBegin& r)
+{
+    nextRecord();
+    ForwardingSink::sectionBegin(r);
+}
+
+void LimitCheck::sectionEnd(const SectionEnd& r)
+{
+    nextRecord();
+    ForwardingSink::sectionEnd(r);
+}
+
+void LimitCheck::programStop(const ProgramStop& r)
+{
+    nextRecord();
+    ForwardingSink::programStop(r);
+}
+
+void LimitCheck::passThrough(const PassThrough& r)
+{
+    nextRecord();
+    ForwardingSink::passThrough(r);
+}
+
+std::vector<LimitCheck::Finding> LimitCheck::spanFindings() const
+{
+    std::vector<Finding> out;
+    if (!m_reached)
+        return out;
+    for (int axis = 0; axis < 3; ++axis) {
+        const Axis* travel = m_machine.axis(kAxisNames[axis]);
+        if (!travel || travel->rotary || travel->max <= travel->min)
+            continue;
+        const Reach& low = m_low[axis];
+        const Reach& high = m_high[axis];
+        const double span = high.value - low.value;
+        if (span <= travel->max - travel->min + 1e-6)
+            continue;
+        // Blame the record that made the span too long: the later of the two extremes.
+        const Reach& at = high.record > low.record ? high : low;
+        out.push_back({at.source, at.record, 1,
+                       std::string("the program spans ") + num(span) + " mm in " + kAxisNames[axis] + " (" +
+                           num(low.value) + " to " + num(high.value) + "); the " + m_name + " travels " +
+                           num(travel->max - travel->min) + " mm"});
+    }
+    return out;
+}
+
+std::vector<LimitCheck::Finding> LimitCheck::findings() const
+{
+    std::vector<Finding> out = m_findings;
+    for (Finding& span : spanFindings())
+        out.push_back(std::move(span));
+    return out;
+}
+
+std::vector<base::Diagnostic> LimitCheck::ncDiagnostics(const std::vector<std::string>& files) const
+{
+    std::vector<base::Diagnostic> out;
+    for (const Finding& f : findings()) {
+        const bool known = f.source.file >= 0 && f.source.file < static_cast<int>(files.size());
+        std::string message = f.message;
+        if (f.count > 1)
+            message += " (" + std::to_string(f.count) + " times in all)";
+        out.push_back(base::warningDiagnostic(std::move(message), known ? files[f.source.file] : std::string(),
+                                              std::max(f.source.line, 0)));
+    }
+    return out;
+}
+
+std::vector<base::Diagnostic> LimitCheck::clDiagnostics() const
+{
+    std::vector<base::Diagnostic> out;
+    for (const Finding& f : findings()) {
+        std::string message = f.message + " (CL record " + std::to_string(f.record);
+        if (f.count > 1)
+            message += "; " + std::to_string(f.count) + " records in all";
+        out.push_back(base::warningDiagnostic(message + ")"));
+    }
+    return out;
+}
+
+}  // namespace camwb::kinematics

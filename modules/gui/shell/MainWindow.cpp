@@ -10,6 +10,7 @@
 #include "gui/inspector/NcInspector.h"
 #include "gui/shell/JobTree.h"
 #include "gui/shell/NewOperation.h"
+#include "gui/shell/Prompter.h"
 #include "gui/shell/ReportView.h"
 #include "gui/shell/Workbench.h"
 #include "gui/tasks/OperationPanel.h"
@@ -47,6 +48,7 @@ QDockWidget* addDock(QMainWindow* window, const QString& title, const QString& n
 
 MainWindow::MainWindow(QWidget* parent) :
     QMainWindow(parent),
+    m_prompter(std::make_unique<DialogPrompter>()),
     m_workbench(new Workbench(this)),
     m_actions(new ActionRegistry(this)),
     m_view(new View3D(this)),
@@ -101,6 +103,12 @@ MainWindow::MainWindow(QWidget* parent) :
 }
 
 MainWindow::~MainWindow() = default;
+
+void MainWindow::setPrompter(std::unique_ptr<Prompter> prompter)
+{
+    if (prompter)
+        m_prompter = std::move(prompter);
+}
 
 bool MainWindow::openJob(const QString& path)
 {

@@ -6,6 +6,7 @@
 
 #include <QMainWindow>
 
+#include <memory>
 #include <optional>
 
 class QDockWidget;
@@ -19,6 +20,7 @@ class NcInspector;
 class JobTree;
 class NcEditor;
 class OperationPanel;
+class Prompter;
 class ReportView;
 class View3D;
 class Workbench;
@@ -39,6 +41,9 @@ public:
     InspectorPanel* inspectorPanel() const { return m_inspectorPanel; }
     // The open task panel (docked on the right), or nullptr.
     OperationPanel* taskPanel() const { return m_taskPanel; }
+    // Asks the user (message boxes and file dialogs unless replaced; tests answer with their own).
+    Prompter& prompter() const { return *m_prompter; }
+    void setPrompter(std::unique_ptr<Prompter> prompter);
 
     // A .camwb job, or any other file as an NC program (openNcFile).
     bool openJob(const QString& path);
@@ -64,6 +69,7 @@ private:
     void closeTaskPanel();
     bool confirmDiscard();
 
+    std::unique_ptr<Prompter> m_prompter;
     Workbench* m_workbench;
     ActionRegistry* m_actions;
     View3D* m_view;

@@ -18,6 +18,7 @@ class ActionRegistry;
 class InspectorPanel;
 class NcInspector;
 class JobTree;
+class NcDocument;
 class NcEditor;
 class OperationPanel;
 class Prompter;
@@ -35,6 +36,8 @@ public:
     ActionRegistry& actions() { return *m_actions; }
     View3D* view() const { return m_view; }
     NcEditor* ncEditor() const { return m_editor; }
+    // The editor's program as a document: its file, unsaved edits, Save and the prompt before loss.
+    NcDocument* ncDocument() const { return m_ncDocument; }
     ReportView* reportView() const { return m_report; }
     JobTree* jobTree() const { return m_jobTree; }
     NcInspector* inspector() const { return m_inspector; }
@@ -47,7 +50,8 @@ public:
 
     // A .camwb job, or any other file as an NC program (openNcFile).
     bool openJob(const QString& path);
-    // Reads an NC program of any dialect into the editor (editable) and traces it.
+    // Reads an NC program of any dialect into the editor (editable) and traces it. False when it
+    // cannot be read or the user keeps the editor's unsaved edits (Cancel).
     bool openNcFile(const QString& path);
     // Opens the task panel of operation `index`; replaces (cancels) a panel already open.
     void editOperation(int index);
@@ -74,6 +78,8 @@ private:
     ActionRegistry* m_actions;
     View3D* m_view;
     NcEditor* m_editor;
+    NcDocument* m_ncDocument;
+    QDockWidget* m_ncDock = nullptr;
     ReportView* m_report;
     JobTree* m_jobTree;
     QProgressBar* m_progress;

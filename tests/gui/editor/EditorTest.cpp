@@ -1,7 +1,10 @@
 // Tests of the NC editor: highlighting at exact positions and folding for Sinumerik, ISO and
 // Heidenhain, diagnostics markers, find, the NC tools through their actions (renumber is one undo
 // step, remove numbers, go to block, compare, program info) and a million-line program whose
-// figures are printed, never asserted. CAMWB_EDITOR_SHOTS=<dir> saves screenshots for a look.
+// figures are printed, never asserted. Screenshots always (Shots.h: CAMWB_SHOTS_DIR=<dir> keeps them).
+#include "QtTestRun.h"
+#include "ScriptedPrompter.h"
+#include "Shots.h"
 #include "gui/actions/ActionRegistry.h"
 #include "gui/editor/CompareDialog.h"
 #include "gui/editor/NcEditor.h"
@@ -9,9 +12,7 @@
 #include "gui/editor/NcStyles.h"
 #include "gui/editor/ProgramInfoDialog.h"
 #include "gui/editor/RenumberDialog.h"
-#include "nc/Interpreter.h"
 #include "nc/tools/BlockNumbers.h"
-#include "toolpath/ToolpathRecorder.h"
 
 #include <QApplication>
 #include <QDir>
@@ -24,6 +25,7 @@
 #include <QSignalSpy>
 #include <QSpinBox>
 #include <QStatusBar>
+#include <QTemporaryDir>
 #include <QTest>
 #include <QTimer>
 
@@ -93,18 +95,14 @@ constexpr const char* kHeidenhain = "0  BEGIN PGM F3D_TEST MM\n"           // 1
                                     "11 LBL 0\n"                           // 14
                                     "12 END PGM F3D_TEST MM\n";            // 15
 
-QString shotDir() { return qEnvironmentVariable("CAMWB_EDITOR_SHOTS"); }
-
 void saveShot(QWidget* widget, const QString& name)
 {
-    const QString dir = shotDir();
-    if (dir.isEmpty())
-        return;
-    QDir().mkpath(dir);
     widget->show();
     QVERIFY(QTest::qWaitForWindowExposed(widget));
     QTest::qWait(100);
-    QVERIFY(widget->grab().save(dir + QLatin1Char('/') + name));
+    const QImage image = widget->grab().toImage();
+    QVERIFY2(showsSomething(image), qPrintable(name + QStringLiteral(": the grab shows nothing")));
+    QVERIFY(image.save(shotsDir() + QLatin1Char('/') + name));
 }
 
 // Runs `handle` on the next modal dialog that opens (polling, so the timer cannot fire before
@@ -121,18 +119,6 @@ void onNextModal(std::function<void(QWidget*)> handle)
         }
     });
     timer->start();
-}
-
-bool isoInterpreterBuilt()
-{
-    camwb::toolpath::ToolpathRecorder recorder;
-    nc::InterpretOptions options;
-    options.dialect = nc::Dialect::Iso;
-    const nc::InterpretResult r = nc::interpret("G0 X1\n", options, recorder);
-    for (const nc::Diagnostic& d : r.diagnostics)
-        if (d.message.find("not built yet") != std::string::npos)
-            return false;
-    return true;
 }
 
 }  // namespace
@@ -259,8 +245,6 @@ private slots:
     void realProgramsForALook()
     {
         // Screenshots of programs from the repository's goldens, one per dialect.
-        if (shotDir().isEmpty())
-            QSKIP("set CAMWB_EDITOR_SHOTS to save screenshots");
         const std::pair<const char*, nc::Dialect> programs[] = {
             {"tests/golden/jobs/example-block/expected.mpf", nc::Dialect::Sinumerik},
             {"tests/golden/nc/heidenhain/thesis/input.h", nc::Dialect::Heidenhain},
@@ -349,6 +333,16 @@ private:
     QMainWindow* m_window = nullptr;
     NcEditor* m_editor = nullptr;
     ActionRegistry* m_registry = nullptr;
+    ScriptedPrompter m_prompter;
+    QTemporaryDir m_files;
+
+    QString writeFile(const QString& name, const QByteArray& text)
+    {
+        QFile file(m_files.filePath(name));
+        if (!file.open(QIODevice::WriteOnly) || file.write(text) != text.size())
+            return {};
+        return file.fileName();
+    }
 
 private slots:
     void init()
@@ -358,7 +352,9 @@ private slots:
         m_window->setCentralWidget(m_editor);
         m_window->statusBar();
         m_registry = new ActionRegistry(m_window);
-        camwb::gui::registerNcEditorActions(*m_registry, m_editor, m_window);
+        m_prompter = ScriptedPrompter();
+        camwb::gui::registerNcEditorActions(*m_registry, m_editor, m_window,
+                                            [this]() -> camwb::gui::Prompter& { return m_prompter; });
         m_window->resize(900, 600);
     }
 
@@ -440,15 +436,20 @@ private slots:
         QVERIFY(!bar->isVisible());
     }
 
+    // Compare with File asks for the file first and opens with both programs.
     void compareFindsTheDifferences()
     {
+        const QString other = writeFile(QStringLiteral("other.mpf"),
+                                        "N10 G0 X0 Y0\nN20 G1 Z-3 F100\nN30 X50\nN40 Y50\nN45 X25\nN50 X0\nN60 M30\n");
+        QVERIFY(!other.isEmpty());
         m_editor->setDialect(nc::Dialect::Sinumerik);
         m_editor->setText(QStringLiteral("N10 G0 X0 Y0\nN20 G1 Z-2 F100\nN30 X50\nN40 Y50\nN50 X0\nN60 M30\n"));
+        m_prompter.fileAnswers.push_back(other);
         QVERIFY(m_registry->trigger(QStringLiteral("Cam.Nc.Compare")));
+        QCOMPARE(m_prompter.count(ScriptedPrompter::Kind::OpenFile), 1);
         auto* dialog = m_window->findChild<CompareDialog*>();
         QVERIFY(dialog != nullptr);
-        dialog->setRight(QStringLiteral("N10 G0 X0 Y0\nN20 G1 Z-3 F100\nN30 X50\nN40 Y50\nN45 X25\nN50 X0\nN60 M30\n"),
-                         QStringLiteral("other.mpf"));
+        QCOMPARE(dialog->summaryText(), QStringLiteral("2 difference(s)"));
         QCOMPARE(dialog->differenceCount(), 2);
         const nc::LineDiff& diff = dialog->diff();
         QCOMPARE(diff.rows[std::size_t(diff.hunks[0].firstRow)].kind, nc::DiffKind::Changed);
@@ -466,6 +467,25 @@ private slots:
         saveShot(dialog, QStringLiteral("compare-dialog.png"));
         dialog->setIgnoreBlockNumbers(true);
         QCOMPARE(dialog->differenceCount(), 2);
+    }
+
+    // Without a second program there is nothing to compare: no dialog when the file choice is
+    // cancelled, and a dialog with one side says so instead of counting the whole program as one
+    // difference.
+    void compareWithoutASecondProgramComparesNothing()
+    {
+        m_editor->setText(QStringLiteral("G0 X0\nG1 X10 F100\nM30\n"));
+        QVERIFY(m_registry->trigger(QStringLiteral("Cam.Nc.Compare")));  // no answer: cancelled
+        QCOMPARE(m_prompter.count(ScriptedPrompter::Kind::OpenFile), 1);
+        QVERIFY(m_window->findChild<CompareDialog*>() == nullptr);
+
+        CompareDialog dialog(nc::Dialect::Iso);
+        dialog.setLeft(m_editor->text(), QStringLiteral("in the editor"));
+        QCOMPARE(dialog.differenceCount(), 0);
+        QCOMPARE(dialog.summaryText(), QStringLiteral("Open a program on the right to compare"));
+        dialog.setRight(QString(), QStringLiteral("empty.ngc"));  // an empty file is a program
+        QCOMPARE(dialog.differenceCount(), 1);
+        QCOMPARE(dialog.summaryText(), QStringLiteral("1 difference(s)"));
     }
 
     void compareScrollsBothSidesTogether()
@@ -491,8 +511,6 @@ private slots:
 
     void programInfo()
     {
-        if (!isoInterpreterBuilt())
-            QSKIP("the ISO interpreter is not built yet");
         m_editor->setDialect(nc::Dialect::Iso);
         m_editor->setText(QStringLiteral("G21 G90 G17\nT1 M6\nS1000 M3\nG0 X0 Y0 Z10\nG1 Z-1 F100\nG1 X100 F600\n"
                                          "G0 Z10\nM30\n"));
@@ -508,6 +526,30 @@ private slots:
         QVERIFY(std::abs(s.totals.feedSeconds - (11.0 / 100 + 100.0 / 600) * 60) < 1e-6);
         QVERIFY(dialog->reportText().contains(QStringLiteral("100.000")));
         saveShot(dialog, QStringLiteral("program-info.png"));
+    }
+};
+
+class ProgramInfoErrorTest : public QObject {
+    Q_OBJECT
+
+private slots:
+    // An arc whose radii disagree (an error in the editor's margin) is left out of the extents and
+    // lengths: drawn as a circle it would add a 200 mm bulge to a 30 mm program.
+    void errorBlocksAreLeftOutOfTheFigures()
+    {
+        ProgramInfoDialog dialog;
+        dialog.analyze(QStringLiteral("G21 G90 G17\nG0 X0 Y0 Z0\nG1 X10 F100\nG2 X20 Y0 I100 J0\nG1 X30\nM30\n"),
+                       nc::Dialect::Iso, QStringLiteral("bad-arc.ngc"));
+        QTRY_VERIFY_WITH_TIMEOUT(dialog.hasStats() && !dialog.isBusy(), 20000);
+        QCOMPARE(dialog.errorCount(), 1);
+        const nc::ProgramStats& s = dialog.stats();
+        QCOMPARE(s.movesLeftOut, 1);
+        QVERIFY2(std::abs(s.totals.cuttingExtents.max.y) < 1e-9 && std::abs(s.totals.cuttingExtents.min.y) < 1e-9,
+                 qPrintable(QStringLiteral("Y extents %1 .. %2")
+                                .arg(s.totals.cuttingExtents.min.y)
+                                .arg(s.totals.cuttingExtents.max.y)));
+        QVERIFY(std::abs(s.totals.cuttingExtents.max.x - 30.0) < 1e-9);
+        QVERIFY(std::abs(s.totals.feedLengthMm - 20.0) < 1e-9);  // the two lines, not the arc
     }
 };
 
@@ -612,16 +654,19 @@ private slots:
 int main(int argc, char** argv)
 {
     QApplication app(argc, argv);
-    int failures = 0;
+    QtTestRun run(argc, argv);
     EditorHighlightTest highlight;
-    failures += QTest::qExec(&highlight, argc, argv);
+    run.run(&highlight);
     EditorActionsTest actions;
-    failures += QTest::qExec(&actions, argc, argv);
-    if (qEnvironmentVariableIsEmpty("CAMWB_EDITOR_SKIP_LARGE")) {
-        LargeProgramTest large;
-        failures += QTest::qExec(&large, argc, argv);
-    }
-    return failures == 0 ? 0 : 1;
+    run.run(&actions);
+    ProgramInfoErrorTest errors;
+    run.run(&errors);
+    LargeProgramTest large;
+    if (qEnvironmentVariableIsEmpty("CAMWB_EDITOR_SKIP_LARGE"))
+        run.run(&large);
+    else
+        run.skip("LargeProgramTest", "CAMWB_EDITOR_SKIP_LARGE is set");
+    return run.finish();
 }
 
 #include "EditorTest.moc"

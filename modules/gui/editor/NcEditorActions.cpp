@@ -146,7 +146,7 @@ void registerNcEditorActions(ActionRegistry& registry, NcEditor* editor, QWidget
                 return;
             // The file first: a dialog with one side would compare the program with nothing.
             const QString path = prompter().openFileName(
-                parent, Tr::tr("Compare with File"), QFileInfo(ed->programPath()).absolutePath(),
+                Tr::tr("Compare with File"),
                 Tr::tr("NC programs (*.mpf *.spf *.MPF *.SPF *.h *.H *.nc *.ngc *.tap *.iso *.cnc *.txt);;"
                        "All files (*)"));
             if (path.isEmpty() || !ed)

@@ -49,7 +49,7 @@ QDockWidget* addDock(QMainWindow* window, const QString& title, const QString& n
 
 MainWindow::MainWindow(QWidget* parent) :
     QMainWindow(parent),
-    m_prompter(std::make_unique<DialogPrompter>()),
+    m_prompter(std::make_unique<DialogPrompter>(this)),
     m_workbench(new Workbench(this)),
     m_actions(new ActionRegistry(this)),
     m_view(new View3D(this)),

@@ -10,11 +10,10 @@
 
 namespace camwb::gui {
 
-NcDocument::NcDocument(NcEditor* editor, std::function<Prompter&()> prompter, QWidget* dialogParent) :
-    QObject(dialogParent),
+NcDocument::NcDocument(NcEditor* editor, std::function<Prompter&()> prompter, QObject* parent) :
+    QObject(parent),
     m_editor(editor),
-    m_prompter(std::move(prompter)),
-    m_parent(dialogParent)
+    m_prompter(std::move(prompter))
 {
     connect(m_editor, &NcEditor::modificationChanged, this, [this] { emit titleChanged(title()); });
 }
@@ -41,7 +40,7 @@ bool NcDocument::save()
 {
     QString path = m_path;
     if (path.isEmpty())
-        path = m_prompter().saveFileName(m_parent, tr("Save NC program"), QString(),
+        path = m_prompter().saveFileName(tr("Save NC program"), QString(),
                                          tr("NC programs (*.mpf *.spf *.nc *.ngc *.tap *.h *.iso *.cnc *.txt);;"
                                             "All files (*)"));
     if (path.isEmpty())
@@ -65,16 +64,16 @@ bool NcDocument::mayReplace(const QString& consequence)
     if (!hasUnsavedEdits())
         return true;
     const QString name = m_path.isEmpty() ? tr("The NC program") : QFileInfo(m_path).fileName();
-    const SaveChoice choice = m_prompter().askSaveChanges(
-        m_parent, tr("Unsaved NC edits"),
-        tr("%1 has edits that are not saved. %2\n\nSave them first?").arg(name, consequence));
-    switch (choice) {
-    case SaveChoice::Save:
+    const Prompter::Answer answer = m_prompter().ask(
+        {tr("Unsaved NC edits"), tr("%1 has edits that are not saved. %2\n\nSave them first?").arg(name, consequence),
+         QString(), QString()});
+    switch (answer) {
+    case Prompter::Answer::Accept:
         return save();
-    case SaveChoice::Discard:
+    case Prompter::Answer::Discard:
         m_editor->markSaved();  // what replaces the text next needs no second question
         return true;
-    case SaveChoice::Cancel:
+    case Prompter::Answer::Cancel:
         break;
     }
     return false;

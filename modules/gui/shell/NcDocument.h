@@ -11,8 +11,6 @@
 
 #include <functional>
 
-class QWidget;
-
 namespace camwb::gui {
 
 class NcEditor;
@@ -21,7 +19,7 @@ class Prompter;
 class NcDocument : public QObject {
     Q_OBJECT
 public:
-    NcDocument(NcEditor* editor, std::function<Prompter&()> prompter, QWidget* dialogParent);
+    NcDocument(NcEditor* editor, std::function<Prompter&()> prompter, QObject* parent);
 
     // The editor now holds the program read from `path` (editable) / the job's posted program.
     void openedFile(const QString& path);
@@ -46,7 +44,6 @@ signals:
 private:
     NcEditor* m_editor;
     std::function<Prompter&()> m_prompter;
-    QWidget* m_parent;
     QString m_path;
 };
 

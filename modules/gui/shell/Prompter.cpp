@@ -2,36 +2,54 @@
 
 #include <QFileDialog>
 #include <QMessageBox>
+#include <QPushButton>
 
 namespace camwb::gui {
 
-SaveChoice DialogPrompter::askSaveChanges(QWidget* parent, const QString& title, const QString& text)
+DialogPrompter::DialogPrompter(QWidget* parent) : m_parent(parent) {}
+
+Prompter::Answer DialogPrompter::ask(const Question& question)
 {
-    const auto answer = QMessageBox::warning(
-        parent, title, text, QMessageBox::Save | QMessageBox::Discard | QMessageBox::Cancel, QMessageBox::Save);
-    if (answer == QMessageBox::Save)
-        return SaveChoice::Save;
-    if (answer == QMessageBox::Discard)
-        return SaveChoice::Discard;
-    return SaveChoice::Cancel;  // Escape and closing the box too
+    QMessageBox box(QMessageBox::Question, question.title, question.text, QMessageBox::NoButton, m_parent);
+    QAbstractButton* accept = question.acceptText.isEmpty()
+                                  ? box.addButton(QMessageBox::Save)
+                                  : box.addButton(question.acceptText, QMessageBox::AcceptRole);
+    QAbstractButton* discard = question.discardText.isEmpty()
+                                   ? box.addButton(QMessageBox::Discard)
+                                   : box.addButton(question.discardText, QMessageBox::DestructiveRole);
+    QAbstractButton* cancel = box.addButton(QMessageBox::Cancel);
+    box.setDefaultButton(qobject_cast<QPushButton*>(accept));
+    box.setEscapeButton(cancel);
+    box.exec();
+    if (box.clickedButton() == accept)
+        return Answer::Accept;
+    if (box.clickedButton() == discard)
+        return Answer::Discard;
+    return Answer::Cancel;
 }
 
-bool DialogPrompter::confirm(QWidget* parent, const QString& title, const QString& text)
+QString DialogPrompter::openFileName(const QString& title, const QString& filter)
 {
-    return QMessageBox::question(parent, title, text, QMessageBox::Ok | QMessageBox::Cancel, QMessageBox::Cancel) ==
-           QMessageBox::Ok;
+    return QFileDialog::getOpenFileName(m_parent, title, {}, filter);
 }
 
-QString DialogPrompter::openFileName(QWidget* parent, const QString& caption, const QString& suggested,
-                                     const QString& filter)
+QString DialogPrompter::saveFileName(const QString& title, const QString& suggested, const QString& filter)
 {
-    return QFileDialog::getOpenFileName(parent, caption, suggested, filter);
+    return QFileDialog::getSaveFileName(m_parent, title, suggested, filter);
 }
 
-QString DialogPrompter::saveFileName(QWidget* parent, const QString& caption, const QString& suggested,
-                                     const QString& filter)
+void DialogPrompter::showError(const QString& title, const QString& text)
 {
-    return QFileDialog::getSaveFileName(parent, caption, suggested, filter);
+    if (m_error && m_error->isVisible()) {
+        // Errors that follow one another (a failed post and its consequences) share one box.
+        m_error->setText(m_error->text() + QStringLiteral("\n\n") + text);
+        return;
+    }
+    m_error = new QMessageBox(QMessageBox::Critical, title, text, QMessageBox::Close, m_parent);
+    m_error->setAttribute(Qt::WA_DeleteOnClose);
+    m_error->setObjectName(QStringLiteral("errorMessage"));
+    m_error->setWindowModality(Qt::NonModal);  // the user reads it and goes on working
+    m_error->show();
 }
 
 }  // namespace camwb::gui

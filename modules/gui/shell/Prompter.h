@@ -1,40 +1,49 @@
-// The questions the window asks the user (unsaved changes, a file to open or save, a yes/no before
-// something is lost) behind one interface: DialogPrompter shows the usual message boxes and file
-// dialogs; a test gives the window its own Prompter and answers them without a modal dialog.
+// Every question the window asks the user (file names, "save the changes?", "drop these
+// operations?") and every error it shows goes through this interface, so tests answer the
+// questions and read the errors without a person and without a modal dialog blocking them.
+// DialogPrompter is the real one: file dialogs, message boxes, errors in a non-modal box.
 #pragma once
 
+#include <QPointer>
 #include <QString>
 
+class QMessageBox;
 class QWidget;
 
 namespace camwb::gui {
 
-enum class SaveChoice { Save, Discard, Cancel };
-
 class Prompter {
 public:
-    virtual ~Prompter() = default;
+    // A question with three answers: keep the work (Save/Apply/Keep), throw it away
+    // (Discard/Delete) or go back (Cancel). Empty texts use the standard Save and Discard buttons.
+    struct Question {
+        QString title;
+        QString text;
+        QString acceptText;   // e.g. "Apply", "Keep the operations"; empty: Save
+        QString discardText;  // e.g. "Delete them"; empty: Discard
+    };
+    enum class Answer { Accept, Discard, Cancel };
 
-    // `text` says what has unsaved changes and what would lose them; Cancel is the safe answer.
-    virtual SaveChoice askSaveChanges(QWidget* parent, const QString& title, const QString& text) = 0;
-    // An action whose consequence `text` states: true to go on.
-    virtual bool confirm(QWidget* parent, const QString& title, const QString& text) = 0;
-    // A file to read or to write (`suggested`: the proposed name or folder); empty when cancelled.
-    virtual QString openFileName(QWidget* parent, const QString& caption, const QString& suggested,
-                                 const QString& filter) = 0;
-    virtual QString saveFileName(QWidget* parent, const QString& caption, const QString& suggested,
-                                 const QString& filter) = 0;
+    virtual ~Prompter() = default;
+    virtual Answer ask(const Question& question) = 0;
+    // A file to read or to write; empty when the user cancelled.
+    virtual QString openFileName(const QString& title, const QString& filter) = 0;
+    virtual QString saveFileName(const QString& title, const QString& suggested, const QString& filter) = 0;
+    // An error that stopped what the user asked for, shown where they look; never blocks.
+    virtual void showError(const QString& title, const QString& text) = 0;
 };
 
-// Message boxes and file dialogs.
 class DialogPrompter : public Prompter {
 public:
-    SaveChoice askSaveChanges(QWidget* parent, const QString& title, const QString& text) override;
-    bool confirm(QWidget* parent, const QString& title, const QString& text) override;
-    QString openFileName(QWidget* parent, const QString& caption, const QString& suggested,
-                         const QString& filter) override;
-    QString saveFileName(QWidget* parent, const QString& caption, const QString& suggested,
-                         const QString& filter) override;
+    explicit DialogPrompter(QWidget* parent);
+    Answer ask(const Question& question) override;
+    QString openFileName(const QString& title, const QString& filter) override;
+    QString saveFileName(const QString& title, const QString& suggested, const QString& filter) override;
+    void showError(const QString& title, const QString& text) override;
+
+private:
+    QWidget* m_parent;
+    QPointer<QMessageBox> m_error;  // one box: later errors are added to it while it is open
 };
 
 }  // namespace camwb::gui

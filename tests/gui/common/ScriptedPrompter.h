@@ -1,68 +1,54 @@
-// A Prompter for GUI tests: answers from queues the test fills and records every question, so a
-// test can check that a prompt came (or did not) and what it said. A question with no answer
-// queued gets the safe answer (Cancel, false, no file) and counts as unexpected.
+// A Prompter for GUI tests: answers from queues the test fills and records every question, file
+// request and error, so a test can check that a prompt came (or did not) and what it said. A
+// question with no answer queued is answered Cancel (a file request: none), the safe answers.
 #pragma once
 
 #include "gui/shell/Prompter.h"
 
 #include <QList>
 #include <QString>
+#include <QStringList>
 
 #include <deque>
 
 class ScriptedPrompter : public camwb::gui::Prompter {
 public:
-    enum class Kind { SaveChanges, Confirm, OpenFile, SaveFile };
-    struct Question {
-        Kind kind;
-        QString title;
-        QString text;
-    };
+    std::deque<Answer> answers;
+    std::deque<QString> files;  // for openFileName and saveFileName, in order
+    QList<Question> questions;
+    QStringList fileTitles;  // the title of every file request
+    QStringList errors;
+    int unanswered = 0;  // questions and file requests that found no answer queued
 
-    std::deque<camwb::gui::SaveChoice> saveAnswers;
-    std::deque<bool> confirmAnswers;
-    std::deque<QString> fileAnswers;  // for both openFileName and saveFileName, in order
-    QList<Question> asked;
-    int unexpected = 0;
-
-    int count(Kind kind) const
+    Answer ask(const Question& question) override
     {
-        int n = 0;
-        for (const Question& q : asked)
-            n += q.kind == kind ? 1 : 0;
-        return n;
+        questions << question;
+        return next(answers, Answer::Cancel);
     }
-
-    camwb::gui::SaveChoice askSaveChanges(QWidget*, const QString& title, const QString& text) override
+    QString openFileName(const QString& title, const QString&) override
     {
-        asked.append({Kind::SaveChanges, title, text});
-        return next(saveAnswers, camwb::gui::SaveChoice::Cancel);
+        fileTitles << title;
+        return next(files, QString());
     }
-    bool confirm(QWidget*, const QString& title, const QString& text) override
+    QString saveFileName(const QString& title, const QString&, const QString&) override
     {
-        asked.append({Kind::Confirm, title, text});
-        return next(confirmAnswers, false);
+        fileTitles << title;
+        return next(files, QString());
     }
-    QString openFileName(QWidget*, const QString& caption, const QString&, const QString&) override
+    void showError(const QString& title, const QString& text) override
     {
-        asked.append({Kind::OpenFile, caption, {}});
-        return next(fileAnswers, QString());
-    }
-    QString saveFileName(QWidget*, const QString& caption, const QString& suggested, const QString&) override
-    {
-        asked.append({Kind::SaveFile, caption, suggested});
-        return next(fileAnswers, QString());
+        errors << title + QStringLiteral(": ") + text;
     }
 
 private:
-    template <class T> T next(std::deque<T>& answers, T safe)
+    template <class T> T next(std::deque<T>& queue, T safe)
     {
-        if (answers.empty()) {
-            ++unexpected;
+        if (queue.empty()) {
+            ++unanswered;
             return safe;
         }
-        T answer = answers.front();
-        answers.pop_front();
+        T answer = queue.front();
+        queue.pop_front();
         return answer;
     }
 };

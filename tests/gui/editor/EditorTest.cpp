@@ -444,9 +444,9 @@ private slots:
         QVERIFY(!other.isEmpty());
         m_editor->setDialect(nc::Dialect::Sinumerik);
         m_editor->setText(QStringLiteral("N10 G0 X0 Y0\nN20 G1 Z-2 F100\nN30 X50\nN40 Y50\nN50 X0\nN60 M30\n"));
-        m_prompter.fileAnswers.push_back(other);
+        m_prompter.files.push_back(other);
         QVERIFY(m_registry->trigger(QStringLiteral("Cam.Nc.Compare")));
-        QCOMPARE(m_prompter.count(ScriptedPrompter::Kind::OpenFile), 1);
+        QCOMPARE(int(m_prompter.fileTitles.size()), 1);
         auto* dialog = m_window->findChild<CompareDialog*>();
         QVERIFY(dialog != nullptr);
         QCOMPARE(dialog->summaryText(), QStringLiteral("2 difference(s)"));
@@ -476,7 +476,7 @@ private slots:
     {
         m_editor->setText(QStringLiteral("G0 X0\nG1 X10 F100\nM30\n"));
         QVERIFY(m_registry->trigger(QStringLiteral("Cam.Nc.Compare")));  // no answer: cancelled
-        QCOMPARE(m_prompter.count(ScriptedPrompter::Kind::OpenFile), 1);
+        QCOMPARE(int(m_prompter.fileTitles.size()), 1);
         QVERIFY(m_window->findChild<CompareDialog*>() == nullptr);
 
         CompareDialog dialog(nc::Dialect::Iso);

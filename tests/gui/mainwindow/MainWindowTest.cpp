@@ -39,7 +39,7 @@
 
 using camwb::gui::MainWindow;
 using camwb::gui::NcInspector;
-using camwb::gui::SaveChoice;
+using Answer = camwb::gui::Prompter::Answer;
 using camwb::gui::View3D;
 using camwb::gui::Workbench;
 
@@ -457,7 +457,7 @@ private slots:
         QVERIFY(window.openNcFile(a));
         QVERIFY(window.openNcFile(b));  // no edits: no question
         QVERIFY(window.openNcFile(a));
-        QVERIFY(prompter->asked.isEmpty());
+        QVERIFY(prompter->questions.isEmpty());
         QVERIFY(!ncDockTitle(window).contains(QLatin1Char('*')));
 
         const QString edited = QStringLiteral("G0 X0\nG1 X12 F100\nM30\n");
@@ -465,26 +465,27 @@ private slots:
         QVERIFY(window.ncDocument()->hasUnsavedEdits());
         QVERIFY2(ncDockTitle(window).contains(QLatin1String("a.ngc*")), qPrintable(ncDockTitle(window)));
 
-        prompter->saveAnswers.push_back(SaveChoice::Cancel);
+        prompter->answers.push_back(Answer::Cancel);
         QVERIFY(!window.openNcFile(b));
-        QCOMPARE(prompter->count(ScriptedPrompter::Kind::SaveChanges), 1);
-        QVERIFY2(prompter->asked.last().text.contains(QLatin1String("a.ngc")), qPrintable(prompter->asked.last().text));
+        QCOMPARE(int(prompter->questions.size()), 1);
+        QVERIFY2(prompter->questions.last().text.contains(QLatin1String("a.ngc")),
+                 qPrintable(prompter->questions.last().text));
         QCOMPARE(editor->text(), edited);
         QCOMPARE(window.ncDocument()->filePath(), QFileInfo(a).absoluteFilePath());
 
-        prompter->saveAnswers.push_back(SaveChoice::Save);
+        prompter->answers.push_back(Answer::Accept);
         QVERIFY(window.openNcFile(b));
         QCOMPARE(readFile(a), edited.toUtf8());
         QVERIFY(editor->text().startsWith(QLatin1String("G0 X5")));
         QVERIFY(!window.ncDocument()->hasUnsavedEdits());
 
         editor->replaceText(QStringLiteral("G0 X6\nM30\n"));
-        prompter->saveAnswers.push_back(SaveChoice::Discard);
+        prompter->answers.push_back(Answer::Discard);
         QVERIFY(window.openNcFile(a));
         QCOMPARE(readFile(b), QByteArray("G0 X5\nM30\n"));
         QCOMPARE(editor->text(), edited);
-        QCOMPARE(prompter->count(ScriptedPrompter::Kind::SaveChanges), 3);
-        QCOMPARE(prompter->unexpected, 0);
+        QCOMPARE(int(prompter->questions.size()), 3);
+        QCOMPARE(prompter->unanswered, 0);
     }
 
     // F9 and any other post (an operation edited, undo) would put the job's program in the editor:
@@ -506,27 +507,27 @@ private slots:
 
         Workbench& wb = window.workbench();
         QSignalSpy posted(&wb, &Workbench::postFinished);
-        prompter->saveAnswers.push_back(SaveChoice::Cancel);
+        prompter->answers.push_back(Answer::Cancel);
         QVERIFY(window.actions().trigger(QStringLiteral("Cam.Job.Post")));
-        QCOMPARE(prompter->count(ScriptedPrompter::Kind::SaveChanges), 1);
+        QCOMPARE(int(prompter->questions.size()), 1);
         QVERIFY(!wb.isBusy());  // not posted
         QCOMPARE(window.ncEditor()->text(), edited);
 
-        prompter->saveAnswers.push_back(SaveChoice::Cancel);
+        prompter->answers.push_back(Answer::Cancel);
         wb.post();  // as an edited operation or undo reposts
         QVERIFY(posted.wait(120000));
-        QCOMPARE(prompter->count(ScriptedPrompter::Kind::SaveChanges), 2);
+        QCOMPARE(int(prompter->questions.size()), 2);
         QCOMPARE(window.ncEditor()->text(), edited);
         QVERIFY(window.reportView()->toPlainText().contains(QLatin1String("keeps the unsaved edits of part.ngc*")));
 
-        prompter->saveAnswers.push_back(SaveChoice::Discard);
+        prompter->answers.push_back(Answer::Discard);
         QVERIFY(window.actions().trigger(QStringLiteral("Cam.Job.Post")));
         QVERIFY(posted.wait(120000));
-        QCOMPARE(prompter->count(ScriptedPrompter::Kind::SaveChanges), 3);
+        QCOMPARE(int(prompter->questions.size()), 3);
         QCOMPARE(window.ncEditor()->text(), wb.ncText());
         QVERIFY(window.ncEditor()->isReadOnly());
         QCOMPARE(readFile(path), original);  // discarded, the file untouched
-        QCOMPARE(prompter->unexpected, 0);
+        QCOMPARE(prompter->unanswered, 0);
     }
 
     // Another job and closing the window ask too.
@@ -541,18 +542,18 @@ private slots:
         QVERIFY(window.openNcFile(path));
         window.ncEditor()->replaceText(QStringLiteral("G0 X1\nM30\n"));
 
-        prompter->saveAnswers.push_back(SaveChoice::Cancel);
+        prompter->answers.push_back(Answer::Cancel);
         QVERIFY(!window.openJob(QStringLiteral(CAMWB_EXAMPLE_JOB)));
         QVERIFY(window.workbench().job().modelPath.empty());  // no job opened
-        prompter->saveAnswers.push_back(SaveChoice::Cancel);
+        prompter->answers.push_back(Answer::Cancel);
         QVERIFY(!window.close());
         QVERIFY(window.isVisible());
-        QCOMPARE(prompter->count(ScriptedPrompter::Kind::SaveChanges), 2);
+        QCOMPARE(int(prompter->questions.size()), 2);
 
-        prompter->saveAnswers.push_back(SaveChoice::Save);
+        prompter->answers.push_back(Answer::Accept);
         QVERIFY(window.close());
         QCOMPARE(readFile(path), QByteArray("G0 X1\nM30\n"));
-        QCOMPARE(prompter->unexpected, 0);
+        QCOMPARE(prompter->unanswered, 0);
     }
 };
 

@@ -38,34 +38,35 @@ struct Options {
                                      QStringLiteral("N")};
 };
 
-void describe(QCommandLineParser& parser, const Options& options)
-{
-    parser.setApplicationDescription(QStringLiteral("CAM and post-processor workbench"));
-    parser.addHelpOption();
-    parser.addVersionOption();
-    parser.addPositionalArgument(QStringLiteral("job"), QStringLiteral("Job file (.camwb) to open."));
-    parser.addOption(options.screenshot);
-    parser.addOption(options.grabScreen);
-    parser.addOption(options.editOperation);
-}
+// The application's identity, its translations (Qt's own texts such as the help's "Usage:", and
+// ours) and its command line, the same for the help and for a run. Made after the application.
+struct CommandLine {
+    Options options;
+    QCommandLineParser parser;
+    QTranslator qtTranslator;
+    QTranslator appTranslator;
 
-void setIdentity()
-{
-    QCoreApplication::setApplicationName(QStringLiteral("CAM Workbench"));
-    QCoreApplication::setApplicationVersion(QStringLiteral(CAMWB_VERSION));
-    QCoreApplication::setOrganizationName(QStringLiteral("camwb"));
-}
-
-// Qt's own texts (the help's "Usage:") and ours in the user's language. The translators must
-// outlive the application's use of them: the caller owns them.
-void installTranslators(QTranslator& qt, QTranslator& app)
-{
-    if (qt.load(QLocale(), QStringLiteral("qtbase"), QStringLiteral("_"),
-                QLibraryInfo::path(QLibraryInfo::TranslationsPath)))
-        QCoreApplication::installTranslator(&qt);
-    if (app.load(QLocale(), QStringLiteral("camwb"), QStringLiteral("_"), QStringLiteral(":/i18n")))
-        QCoreApplication::installTranslator(&app);
-}
+    // Exits the process for --help, --version and a wrong option.
+    void process(QCoreApplication& application)
+    {
+        QCoreApplication::setApplicationName(QStringLiteral("CAM Workbench"));
+        QCoreApplication::setApplicationVersion(QStringLiteral(CAMWB_VERSION));
+        QCoreApplication::setOrganizationName(QStringLiteral("camwb"));
+        if (qtTranslator.load(QLocale(), QStringLiteral("qtbase"), QStringLiteral("_"),
+                              QLibraryInfo::path(QLibraryInfo::TranslationsPath)))
+            QCoreApplication::installTranslator(&qtTranslator);
+        if (appTranslator.load(QLocale(), QStringLiteral("camwb"), QStringLiteral("_"), QStringLiteral(":/i18n")))
+            QCoreApplication::installTranslator(&appTranslator);
+        parser.setApplicationDescription(QStringLiteral("CAM and post-processor workbench"));
+        parser.addHelpOption();
+        parser.addVersionOption();
+        parser.addPositionalArgument(QStringLiteral("job"), QStringLiteral("Job file (.camwb) to open."));
+        parser.addOption(options.screenshot);
+        parser.addOption(options.grabScreen);
+        parser.addOption(options.editOperation);
+        parser.process(application);
+    }
+};
 
 // --help and --version need no display: they are answered by a QCoreApplication, before the
 // QApplication would load a platform plugin (and abort where there is no X or Wayland server).
@@ -81,13 +82,8 @@ bool asksForHelpOrVersion(int argc, char** argv)
 int printHelpOrVersion(int argc, char** argv)
 {
     QCoreApplication app(argc, argv);
-    setIdentity();
-    QTranslator qtTranslator, appTranslator;
-    installTranslators(qtTranslator, appTranslator);
-    Options options;
-    QCommandLineParser parser;
-    describe(parser, options);
-    parser.process(app);  // prints the help or the version and exits
+    CommandLine commandLine;
+    commandLine.process(app);  // prints the help or the version and exits
     return 0;
 }
 
@@ -99,18 +95,12 @@ int main(int argc, char** argv)
         return printHelpOrVersion(argc, argv);
     camwb::gui::View3D::setDefaultSurfaceFormat();  // before QApplication: VTK needs a core profile
     QApplication app(argc, argv);
-    setIdentity();
-
-    QTranslator qtTranslator, appTranslator;
-    installTranslators(qtTranslator, appTranslator);
-
-    Options options;
-    QCommandLineParser parser;
-    describe(parser, options);
-    parser.process(app);
-    const QCommandLineOption& screenshot = options.screenshot;
-    const QCommandLineOption& grabScreen = options.grabScreen;
-    const QCommandLineOption& editOperation = options.editOperation;
+    CommandLine commandLine;
+    commandLine.process(app);
+    const QCommandLineParser& parser = commandLine.parser;
+    const QCommandLineOption& screenshot = commandLine.options.screenshot;
+    const QCommandLineOption& grabScreen = commandLine.options.grabScreen;
+    const QCommandLineOption& editOperation = commandLine.options.editOperation;
 
     camwb::gui::MainWindow window;
     window.show();

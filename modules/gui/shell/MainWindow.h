@@ -48,7 +48,8 @@ public:
     Prompter& prompter() const { return *m_prompter; }
     void setPrompter(std::unique_ptr<Prompter> prompter);
 
-    // A .camwb job, or any other file as an NC program (openNcFile).
+    // A .camwb job, or any other file as an NC program (openNcFile). False when it cannot be opened
+    // or the user keeps the editor's unsaved edits (Cancel).
     bool openJob(const QString& path);
     // Reads an NC program of any dialect into the editor (editable) and traces it. False when it
     // cannot be read or the user keeps the editor's unsaved edits (Cancel).

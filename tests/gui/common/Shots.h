@@ -8,6 +8,8 @@
 #include <QSet>
 #include <QString>
 #include <QTemporaryDir>
+#include <QTest>
+#include <QWidget>
 
 inline QString shotsDir()
 {
@@ -31,3 +33,15 @@ inline int distinctColours(const QImage& image)
 }
 
 inline bool showsSomething(const QImage& image) { return !image.isNull() && distinctColours(image) >= 8; }
+
+// Shows the widget (a no-op when it is shown already), grabs it, checks the picture shows
+// something and saves it as shotsDir()/name.
+inline void saveShot(QWidget* widget, const QString& name)
+{
+    widget->show();
+    QVERIFY(QTest::qWaitForWindowExposed(widget));
+    QTest::qWait(100);
+    const QImage image = widget->grab().toImage();
+    QVERIFY2(showsSomething(image), qPrintable(name + QStringLiteral(": the grab shows nothing")));
+    QVERIFY(image.save(shotsDir() + QLatin1Char('/') + name));
+}

@@ -373,12 +373,6 @@ private slots:
     // something (the grab of a window that drew nothing is one colour).
     void inspectorScreenshots()
     {
-        const QString shots = shotsDir();
-        auto save = [&shots](MainWindow& window, const QString& file) {
-            const QImage image = window.grab().toImage();
-            QVERIFY2(showsSomething(image), qPrintable(file + QStringLiteral(": the grab shows nothing")));
-            QVERIFY(image.save(shots + QLatin1Char('/') + file));
-        };
         struct Shot {
             const char* program;
             const char* arcBlock;  // text that starts the block to put the cursor on
@@ -404,7 +398,7 @@ private slots:
             QVERIFY2(line > 1, shot.arcBlock);
             window.ncEditor()->gotoLine(line);
             QTest::qWait(300);
-            save(window, QLatin1String(shot.file));
+            saveShot(&window, QLatin1String(shot.file));
         }
         // The example job posted: the model with the trace of its program, cursor on an arc.
         MainWindow window;
@@ -421,7 +415,7 @@ private slots:
             }
         }
         QTest::qWait(300);
-        save(window, QStringLiteral("posted-job.png"));
+        saveShot(&window, QStringLiteral("posted-job.png"));
     }
 
     // Offscreen there is no OpenGL; under Xvfb CAMWB_NO_OPENGL=1 turns it off the same way.

@@ -103,6 +103,18 @@
         <source>Extents, path lengths and machining time of the NC program</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <source>Compare with File</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>NC programs (*.mpf *.spf *.MPF *.SPF *.h *.H *.nc *.ngc *.tap *.iso *.cnc *.txt);;All files (*)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Cannot read %1</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>NcLexer</name>
@@ -215,6 +227,14 @@
     </message>
     <message>
         <source>Difference %1 of %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Open a program on the right to compare</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Open a program on the left to compare</source>
         <translation type="unfinished"></translation>
     </message>
 </context>
@@ -962,6 +982,42 @@ CAM and post-processor workbench.</source>
         <source>Task: %1</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <source>Opening the job %1 replaces them with its program.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Opening %1 replaces them.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Opening another job replaces them with its program.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Posting the job replaces them with its program.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Save NC File</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The job&apos;s program, posted again, replaces them.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The editor keeps the unsaved edits of %1; the job&apos;s new program is not shown (Post shows it).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>NC program — %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Closing the window loses them.</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>camwb::gui::ModalStatePanel</name>
@@ -1135,6 +1191,35 @@ CAM and post-processor workbench.</source>
     </message>
 </context>
 <context>
+    <name>camwb::gui::NcDocument</name>
+    <message>
+        <source>Save NC program</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>NC programs (*.mpf *.spf *.nc *.ngc *.tap *.h *.iso *.cnc *.txt);;All files (*)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Saved NC program %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The NC program</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Unsaved NC edits</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 has edits that are not saved. %2
+
+Save them first?</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
     <name>camwb::gui::NcEditor</name>
     <message>
         <source>column %1: </source>
@@ -1195,11 +1280,11 @@ CAM and post-processor workbench.</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>Traced %1 as %2%3: %4 blocks, %5 lines, %6 arcs, %7 rapids, %8 cycles in %9 s</source>
+        <source> (guessed)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source> (guessed)</source>
+        <source>Traced %1 as %2%3: %4 blocks, %5 lines, %6 arcs, %7 rapids, %8 cycles in %9 ms</source>
         <translation type="unfinished"></translation>
     </message>
 </context>
@@ -1412,10 +1497,6 @@ CAM and post-processor workbench.</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>%1 blocks interpreted; %2 error(s), %3 other diagnostic(s): the figures cover what could be interpreted.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
         <source>%1 blocks interpreted, %2 diagnostic(s).</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1517,6 +1598,10 @@ CAM and post-processor workbench.</source>
     </message>
     <message>
         <source>… and %1 more</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 blocks interpreted; %2 error(s), %3 other diagnostic(s): the figures cover what could be interpreted; %4 move(s) of blocks with an error are left out.</source>
         <translation type="unfinished"></translation>
     </message>
 </context>

@@ -1,5 +1,5 @@
 // camwb: the CAM Workbench desktop application.
-//   camwb [job.camwb] [--screenshot file.png [--grab-screen]] [--edit-operation N]
+//   camwb [job.camwb] [--screenshot file.png [--grab-screen]] [--edit-operation N] | --help | --version
 // --screenshot grabs the main window once the job is posted, writes the PNG and quits
 // (used for the README picture and for checking the window without a person at it);
 // --grab-screen grabs the whole screen instead (what a person sees, menus and docks included).
@@ -22,40 +22,85 @@
 #include <QTranslator>
 
 #include <cstdio>
+#include <cstring>
 #include <memory>
+
+namespace {
+
+struct Options {
+    QCommandLineOption screenshot{QStringLiteral("screenshot"),
+                                  QStringLiteral("Write a PNG of the window once the job is posted, then quit."),
+                                  QStringLiteral("file")};
+    QCommandLineOption grabScreen{QStringLiteral("grab-screen"),
+                                  QStringLiteral("With --screenshot: grab the whole screen, not the window.")};
+    QCommandLineOption editOperation{QStringLiteral("edit-operation"),
+                                     QStringLiteral("Open the task panel of operation N (1-based) once posted."),
+                                     QStringLiteral("N")};
+};
+
+// The application's identity, its translations (Qt's own texts such as the help's "Usage:", and
+// ours) and its command line, the same for the help and for a run. Made after the application.
+struct CommandLine {
+    Options options;
+    QCommandLineParser parser;
+    QTranslator qtTranslator;
+    QTranslator appTranslator;
+
+    // Exits the process for --help, --version and a wrong option.
+    void process(QCoreApplication& application)
+    {
+        QCoreApplication::setApplicationName(QStringLiteral("CAM Workbench"));
+        QCoreApplication::setApplicationVersion(QStringLiteral(CAMWB_VERSION));
+        QCoreApplication::setOrganizationName(QStringLiteral("camwb"));
+        if (qtTranslator.load(QLocale(), QStringLiteral("qtbase"), QStringLiteral("_"),
+                              QLibraryInfo::path(QLibraryInfo::TranslationsPath)))
+            QCoreApplication::installTranslator(&qtTranslator);
+        if (appTranslator.load(QLocale(), QStringLiteral("camwb"), QStringLiteral("_"), QStringLiteral(":/i18n")))
+            QCoreApplication::installTranslator(&appTranslator);
+        parser.setApplicationDescription(QStringLiteral("CAM and post-processor workbench"));
+        parser.addHelpOption();
+        parser.addVersionOption();
+        parser.addPositionalArgument(QStringLiteral("job"), QStringLiteral("Job file (.camwb) to open."));
+        parser.addOption(options.screenshot);
+        parser.addOption(options.grabScreen);
+        parser.addOption(options.editOperation);
+        parser.process(application);
+    }
+};
+
+// --help and --version need no display: they are answered by a QCoreApplication, before the
+// QApplication would load a platform plugin (and abort where there is no X or Wayland server).
+bool asksForHelpOrVersion(int argc, char** argv)
+{
+    for (int i = 1; i < argc; ++i)
+        for (const char* option : {"-h", "--help", "-?", "--help-all", "-v", "--version"})
+            if (std::strcmp(argv[i], option) == 0)
+                return true;
+    return false;
+}
+
+int printHelpOrVersion(int argc, char** argv)
+{
+    QCoreApplication app(argc, argv);
+    CommandLine commandLine;
+    commandLine.process(app);  // prints the help or the version and exits
+    return 0;
+}
+
+}  // namespace
 
 int main(int argc, char** argv)
 {
+    if (asksForHelpOrVersion(argc, argv))
+        return printHelpOrVersion(argc, argv);
     camwb::gui::View3D::setDefaultSurfaceFormat();  // before QApplication: VTK needs a core profile
     QApplication app(argc, argv);
-    QApplication::setApplicationName(QStringLiteral("CAM Workbench"));
-    QApplication::setApplicationVersion(QStringLiteral(CAMWB_VERSION));
-    QApplication::setOrganizationName(QStringLiteral("camwb"));
-
-    QTranslator qtTranslator, appTranslator;
-    if (qtTranslator.load(QLocale(), QStringLiteral("qtbase"), QStringLiteral("_"),
-                          QLibraryInfo::path(QLibraryInfo::TranslationsPath)))
-        QApplication::installTranslator(&qtTranslator);
-    if (appTranslator.load(QLocale(), QStringLiteral("camwb"), QStringLiteral("_"), QStringLiteral(":/i18n")))
-        QApplication::installTranslator(&appTranslator);
-
-    QCommandLineParser parser;
-    parser.setApplicationDescription(QStringLiteral("CAM and post-processor workbench"));
-    parser.addHelpOption();
-    parser.addVersionOption();
-    parser.addPositionalArgument(QStringLiteral("job"), QStringLiteral("Job file (.camwb) to open."));
-    QCommandLineOption screenshot(QStringLiteral("screenshot"),
-                                  QStringLiteral("Write a PNG of the window once the job is posted, then quit."),
-                                  QStringLiteral("file"));
-    parser.addOption(screenshot);
-    QCommandLineOption grabScreen(QStringLiteral("grab-screen"),
-                                  QStringLiteral("With --screenshot: grab the whole screen, not the window."));
-    parser.addOption(grabScreen);
-    QCommandLineOption editOperation(QStringLiteral("edit-operation"),
-                                     QStringLiteral("Open the task panel of operation N (1-based) once posted."),
-                                     QStringLiteral("N"));
-    parser.addOption(editOperation);
-    parser.process(app);
+    CommandLine commandLine;
+    commandLine.process(app);
+    const QCommandLineParser& parser = commandLine.parser;
+    const QCommandLineOption& screenshot = commandLine.options.screenshot;
+    const QCommandLineOption& grabScreen = commandLine.options.grabScreen;
+    const QCommandLineOption& editOperation = commandLine.options.editOperation;
 
     camwb::gui::MainWindow window;
     window.show();

@@ -50,6 +50,7 @@ QStringList splitLines(const QString& text)
 struct CompareDialog::Private {
     nc::Dialect dialect = nc::Dialect::Iso;
     std::array<QString, 2> texts;
+    std::array<bool, 2> loaded{};  // a side without a program is not compared (not an empty file)
     std::array<QsciScintilla*, 2> views{};
     std::array<QLabel*, 2> titles{};
     QCheckBox* ignoreNumbers = nullptr;
@@ -176,6 +177,7 @@ CompareDialog::~CompareDialog() = default;
 void CompareDialog::setLeft(const QString& text, const QString& title)
 {
     d->texts[0] = text;
+    d->loaded[0] = true;
     d->titles[0]->setText(title);
     invalidate();
 }
@@ -183,6 +185,7 @@ void CompareDialog::setLeft(const QString& text, const QString& title)
 void CompareDialog::setRight(const QString& text, const QString& title)
 {
     d->texts[1] = text;
+    d->loaded[1] = true;
     d->titles[1]->setText(title);
     invalidate();
 }
@@ -248,6 +251,12 @@ int CompareDialog::differenceCount() const
     return static_cast<int>(d->diff.hunks.size());
 }
 
+QString CompareDialog::summaryText() const
+{
+    ensureComputed();
+    return d->summary->text();
+}
+
 int CompareDialog::currentDifference() const
 {
     ensureComputed();
@@ -287,9 +296,37 @@ void CompareDialog::chooseFile(bool left)
         loadRight(path);
 }
 
+// Until both sides hold a program, each side shows its own text and nothing is compared: a
+// program against nothing is no difference to step through.
+void CompareDialog::showUncompared()
+{
+    d->diff = {};
+    d->current = -1;
+    for (int side = 0; side < 2; ++side) {
+        QsciScintilla* view = d->views[side];
+        view->setReadOnly(false);
+        view->setText(d->loaded[side] ? d->texts[side] : QString());
+        view->setReadOnly(true);
+        view->markerDeleteAll();
+        view->SendScintilla(Base::SCI_MARGINTEXTCLEARALL);
+    }
+    d->previous->setEnabled(false);
+    d->next->setEnabled(false);
+    if (!d->loaded[0] && !d->loaded[1])
+        d->summary->setText(tr("Open two programs to compare"));
+    else if (!d->loaded[1])
+        d->summary->setText(tr("Open a program on the right to compare"));
+    else
+        d->summary->setText(tr("Open a program on the left to compare"));
+}
+
 void CompareDialog::recompute()
 {
     d->dirty = false;
+    if (!d->loaded[0] || !d->loaded[1]) {
+        showUncompared();
+        return;
+    }
     nc::DiffOptions options;
     options.dialect = d->dialect;
     options.ignoreBlockNumbers = d->ignoreNumbers->isChecked();
@@ -357,9 +394,7 @@ void CompareDialog::recompute()
     const int count = differenceCount();
     d->previous->setEnabled(count > 0);
     d->next->setEnabled(count > 0);
-    if (d->texts[0].isEmpty() && d->texts[1].isEmpty())
-        d->summary->setText(tr("Open two programs to compare"));
-    else if (count == 0)
+    if (count == 0)
         d->summary->setText(tr("The programs are identical"));
     else
         d->summary->setText(tr("%n difference(s)", nullptr, count));

@@ -20,6 +20,8 @@ public:
     explicit CompareDialog(nc::Dialect dialect, QWidget* parent = nullptr);
     ~CompareDialog() override;
 
+    // A side is compared once it holds a program (an empty file is a program); until both do, the
+    // dialog shows the sides as they are, with no differences.
     void setLeft(const QString& text, const QString& title);
     void setRight(const QString& text, const QString& title);
     bool loadLeft(const QString& path);  // false (and a message in the title) when unreadable
@@ -29,6 +31,7 @@ public:
 
     const nc::LineDiff& diff() const;
     int differenceCount() const;
+    QString summaryText() const;    // "2 difference(s)", "Open a program on the right to compare", …
     int currentDifference() const;  // index into diff().hunks, -1 before the first
     void nextDifference();
     void previousDifference();
@@ -42,6 +45,7 @@ private:
     void invalidate();
     void ensureComputed() const;
     void recompute();
+    void showUncompared();
     void showDifference(int index);
     void chooseFile(bool left);
 

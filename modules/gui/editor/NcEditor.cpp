@@ -155,6 +155,7 @@ NcEditor::NcEditor(QWidget* parent) : QWidget(parent), d(std::make_unique<Privat
     connect(d->sci, &QsciScintilla::linesChanged, this, updateMargin);
     connect(d->sci, &QsciScintilla::cursorPositionChanged, this, [this](int, int) { checkCursorLine(); });
     connect(d->sci, &QsciScintilla::textChanged, this, &NcEditor::textChanged);
+    connect(d->sci, &QsciScintilla::modificationChanged, this, &NcEditor::modificationChanged);
 }
 
 NcEditor::~NcEditor() = default;
@@ -164,6 +165,7 @@ void NcEditor::setText(const QString& text)
     clearDiagnostics();
     d->sci->setText(text);
     d->sci->SendScintilla(Base::SCI_EMPTYUNDOBUFFER);
+    d->sci->SendScintilla(Base::SCI_SETSAVEPOINT);
     checkCursorLine();
 }
 
@@ -212,6 +214,10 @@ void NcEditor::redo()
 void NcEditor::setReadOnly(bool readOnly) { d->sci->setReadOnly(readOnly); }
 
 bool NcEditor::isReadOnly() const { return d->sci->isReadOnly(); }
+
+bool NcEditor::isModified() const { return d->sci->isModified(); }
+
+void NcEditor::markSaved() { d->sci->SendScintilla(Base::SCI_SETSAVEPOINT); }
 
 void NcEditor::setDialect(nc::Dialect dialect) { d->lexer->setDialect(dialect); }
 

@@ -33,7 +33,7 @@ public:
     explicit NcEditor(QWidget* parent = nullptr);
     ~NcEditor() override;
 
-    void setText(const QString& text);  // a new document: clears undo history and diagnostics
+    void setText(const QString& text);  // a new document: clears undo history, diagnostics, modified
     QString text() const;
     // The text as Scintilla holds it, without a round trip through QString (the tools' fast path).
     QByteArray utf8Text() const;
@@ -44,6 +44,9 @@ public:
     void redo();
     void setReadOnly(bool readOnly);
     bool isReadOnly() const;
+    // Edits since setText or the last markSaved (undoing back to that point clears it again).
+    bool isModified() const;
+    void markSaved();
 
     void setDialect(nc::Dialect dialect);  // Sinumerik by default
     nc::Dialect dialect() const;
@@ -82,6 +85,7 @@ public:
 signals:
     void cursorLineChanged(int line);  // 1-based
     void textChanged();                // any edit, setText and replaceText included
+    void modificationChanged(bool modified);
 
 private:
     struct Private;

@@ -5,6 +5,7 @@
 #include "gui/editor/NcEditor.h"
 #include "gui/editor/ProgramInfoDialog.h"
 #include "gui/editor/RenumberDialog.h"
+#include "gui/shell/Prompter.h"
 #include "nc/tools/BlockNumbers.h"
 
 #include <QAction>
@@ -75,7 +76,8 @@ template <class Dialog> Dialog* reuseOrCreate(QWidget* parent, NcEditor* editor)
 
 }  // namespace
 
-void registerNcEditorActions(ActionRegistry& registry, NcEditor* editor, QWidget* dialogParent)
+void registerNcEditorActions(ActionRegistry& registry, NcEditor* editor, QWidget* dialogParent,
+                             std::function<Prompter&()> prompter)
 {
     const QString menu = Tr::tr("&NC");
     QPointer<NcEditor> ed(editor);
@@ -139,13 +141,22 @@ void registerNcEditorActions(ActionRegistry& registry, NcEditor* editor, QWidget
         });
     add({QStringLiteral("Cam.Nc.Compare"), Tr::tr("&Compare with File…"), menu, QKeySequence(), false, true,
          Tr::tr("Compare the NC program with another file side by side")},
-        [ed, parent] {
+        [ed, parent, prompter] {
             if (!ed || !parent)
+                return;
+            // The file first: a dialog with one side would compare the program with nothing.
+            const QString path = prompter().openFileName(
+                Tr::tr("Compare with File"),
+                Tr::tr("NC programs (*.mpf *.spf *.MPF *.SPF *.h *.H *.nc *.ngc *.tap *.iso *.cnc *.txt);;"
+                       "All files (*)"));
+            if (path.isEmpty() || !ed)
                 return;
             CompareDialog* dialog = reuseOrCreate<CompareDialog>(parent, ed);
             const QString name = QFileInfo(ed->programPath()).fileName();
             dialog->setLeft(ed->text(),
                             name.isEmpty() ? Tr::tr("Current program") : Tr::tr("%1 (in the editor)").arg(name));
+            if (!dialog->loadRight(path))
+                showMessage(parent, Tr::tr("Cannot read %1").arg(path));
             dialog->show();
             dialog->raise();
         });

@@ -3,18 +3,23 @@
 // tests trigger them by id through the registry.
 #pragma once
 
+#include <functional>
+
 class QWidget;
 
 namespace camwb::gui {
 
 class ActionRegistry;
 class NcEditor;
+class Prompter;
 
 // Ids: Cam.Nc.Find, Cam.Nc.GotoBlock, Cam.Nc.Renumber, Cam.Nc.RemoveNumbers, Cam.Nc.Compare,
 // Cam.Nc.ProgramInfo. Dialogs open over `dialogParent`; Compare and Program Info are modeless
 // children of it (found with findChild<CompareDialog*>() / findChild<ProgramInfoDialog*>()).
-// Renumbering and removing numbers are one undo step each in the editor. Results and notes go
-// to the status bar when `dialogParent` is a QMainWindow.
-void registerNcEditorActions(ActionRegistry& registry, NcEditor* editor, QWidget* dialogParent);
+// Compare asks `prompter` for the file first and opens with both sides. Renumbering and removing
+// numbers are one undo step each in the editor. Results and notes go to the status bar when
+// `dialogParent` is a QMainWindow.
+void registerNcEditorActions(ActionRegistry& registry, NcEditor* editor, QWidget* dialogParent,
+                             std::function<Prompter&()> prompter);
 
 }  // namespace camwb::gui

@@ -1,6 +1,7 @@
 #include "gui/editor/ProgramInfoDialog.h"
 
 #include "nc/Interpreter.h"
+#include "nc/tools/ErrorRecords.h"
 #include "toolpath/ToolpathRecorder.h"
 
 #include <QDialogButtonBox>
@@ -20,6 +21,7 @@ namespace camwb::gui {
 struct ProgramInfoDialog::Result {
     toolpath::Toolpath program;
     nc::InterpretResult interpretation;
+    std::vector<bool> recordsInError;  // left out of the figures
     nc::ProgramStats stats;
 };
 
@@ -81,6 +83,7 @@ ProgramInfoDialog::ProgramInfoDialog(QWidget* parent) : QDialog(parent)
         if (m_result && !isBusy()) {
             nc::StatsOptions options;
             options.rapidMmPerMin = m_rapid->value();
+            options.recordsInError = &m_result->recordsInError;
             m_result->stats = nc::programStats(m_result->program, options);
             render();
         }
@@ -111,8 +114,10 @@ void ProgramInfoDialog::analyze(const QString& text, nc::Dialect dialect, const 
         toolpath::ToolpathRecorder recorder;
         result->interpretation = nc::interpret(source, options, recorder);
         result->program = recorder.take();
+        result->recordsInError = nc::recordsInError(result->program, result->interpretation);
         nc::StatsOptions statsOptions;
         statsOptions.rapidMmPerMin = rapid;
+        statsOptions.recordsInError = &result->recordsInError;
         result->stats = nc::programStats(result->program, statsOptions);
     });
     QThread* thread = m_thread;
@@ -157,10 +162,12 @@ void ProgramInfoDialog::render()
     const int errors = errorCount();
     const int others = static_cast<int>(ir.diagnostics.size()) - errors;
     m_status->setText(errors > 0 ? tr("%1 blocks interpreted; %2 error(s), %3 other diagnostic(s): the figures "
-                                      "cover what could be interpreted.")
+                                      "cover what could be interpreted; %4 move(s) of blocks with an error are "
+                                      "left out.")
                                        .arg(ir.blocksExecuted)
                                        .arg(errors)
                                        .arg(others)
+                                       .arg(s.movesLeftOut)
                                  : tr("%1 blocks interpreted, %2 diagnostic(s).").arg(ir.blocksExecuted).arg(others));
     QString html;
     html += QStringLiteral("<h3>%1</h3>").arg(tr("Extents (mm)"));

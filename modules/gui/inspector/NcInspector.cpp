@@ -138,7 +138,7 @@ void NcInspector::traceNow()
         if (result->trace.cancelled || cancel->load())
             return;
         const auto start = std::chrono::steady_clock::now();
-        result->scene = View3D::prepareToolpath(result->trace.program);
+        result->scene = View3D::prepareToolpath(result->trace.program, result->trace.recordsInError);
         result->sceneSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     }));
 }
@@ -202,7 +202,7 @@ void NcInspector::reportDiagnostics(const NcTrace& trace)
         emit message(Workbench::Severity::Warning, tr("%1: %2 more diagnostics not listed").arg(name).arg(more));
     const toolpath::ToolpathStats stats = toolpath::statistics(trace.program);
     emit message(Workbench::Severity::Note,
-                 tr("Traced %1 as %2%3: %4 blocks, %5 lines, %6 arcs, %7 rapids, %8 cycles in %9 s")
+                 tr("Traced %1 as %2%3: %4 blocks, %5 lines, %6 arcs, %7 rapids, %8 cycles in %9 ms")
                      .arg(name, QString::fromLatin1(nc::dialectName(trace.dialect)),
                           trace.dialectGuessed ? tr(" (guessed)") : QString())
                      .arg(trace.result.blocksExecuted)
@@ -210,7 +210,7 @@ void NcInspector::reportDiagnostics(const NcTrace& trace)
                      .arg(stats.arcs + stats.helices)
                      .arg(stats.rapids)
                      .arg(stats.cycles)
-                     .arg(trace.interpretSeconds, 0, 'f', 3));
+                     .arg(trace.interpretSeconds * 1e3, 0, 'f', trace.interpretSeconds < 0.01 ? 2 : 0));
 }
 
 void NcInspector::onCursorLine(int line) { showLine(line); }

@@ -1,5 +1,6 @@
 #include "gui/inspector/NcTrace.h"
 
+#include "nc/tools/ErrorRecords.h"
 #include "toolpath/MachineSink.h"
 
 #include <algorithm>
@@ -106,6 +107,7 @@ NcTrace traceNc(const NcTraceRequest& request)
     if (!std::is_sorted(trace.lineRecords.begin(), trace.lineRecords.end()))
         std::stable_sort(trace.lineRecords.begin(), trace.lineRecords.end());
     trace.modal = ModalStateTable(trace.program);
+    trace.recordsInError = nc::recordsInError(trace.program, trace.result);
     trace.indexSeconds = secondsSince(indexStart);
     return trace;
 }

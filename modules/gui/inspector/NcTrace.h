@@ -37,6 +37,9 @@ struct NcTrace {
     bool cancelled = false;      // a newer trace superseded this one; its records are incomplete
     double interpretSeconds = 0;
     double indexSeconds = 0;
+    // Per record, true for a block with an error (nc::recordsInError; empty when none): drawn
+    // marked, not as what it claims.
+    std::vector<bool> recordsInError;
 
     // Records of a line of the main program (file 0), in execution order (a line in a loop has
     // several runs). Subprogram records are not in here: see callerLine().

@@ -9,7 +9,9 @@
 #include "gui/inspector/ModalStatePanel.h"
 #include "gui/inspector/NcInspector.h"
 #include "gui/shell/JobTree.h"
+#include "gui/shell/NcDocument.h"
 #include "gui/shell/NewOperation.h"
+#include "gui/shell/Prompter.h"
 #include "gui/shell/ReportView.h"
 #include "gui/shell/Workbench.h"
 #include "gui/tasks/OperationPanel.h"
@@ -47,10 +49,13 @@ QDockWidget* addDock(QMainWindow* window, const QString& title, const QString& n
 
 MainWindow::MainWindow(QWidget* parent) :
     QMainWindow(parent),
+    m_prompter(std::make_unique<DialogPrompter>(this)),
     m_workbench(new Workbench(this)),
     m_actions(new ActionRegistry(this)),
     m_view(new View3D(this)),
     m_editor(new NcEditor(this)),
+    m_ncDocument(new NcDocument(
+        m_editor, [this]() -> Prompter& { return *m_prompter; }, this)),
     m_report(new ReportView(this)),
     m_jobTree(new JobTree(*m_workbench, this)),
     m_progress(new QProgressBar(this)),
@@ -65,6 +70,7 @@ MainWindow::MainWindow(QWidget* parent) :
 
     QDockWidget* jobDock = addDock(this, tr("Job"), QStringLiteral("jobDock"), m_jobTree, Qt::LeftDockWidgetArea);
     QDockWidget* ncDock = addDock(this, tr("NC program"), QStringLiteral("ncDock"), m_editor, Qt::RightDockWidgetArea);
+    m_ncDock = ncDock;
     QDockWidget* reportDock =
         addDock(this, tr("Report"), QStringLiteral("reportDock"), m_report, Qt::BottomDockWidgetArea);
     QDockWidget* modalDock =
@@ -102,15 +108,26 @@ MainWindow::MainWindow(QWidget* parent) :
 
 MainWindow::~MainWindow() = default;
 
+void MainWindow::setPrompter(std::unique_ptr<Prompter> prompter)
+{
+    if (prompter)
+        m_prompter = std::move(prompter);
+}
+
 bool MainWindow::openJob(const QString& path)
 {
     if (!path.endsWith(QLatin1String(".camwb"), Qt::CaseInsensitive))
         return openNcFile(path);
+    if (!m_ncDocument->mayReplace(
+            tr("Opening the job %1 replaces them with its program.").arg(QFileInfo(path).fileName())))
+        return false;
     return m_workbench->openJob(path);
 }
 
 bool MainWindow::openNcFile(const QString& path)
 {
+    if (!m_ncDocument->mayReplace(tr("Opening %1 replaces them.").arg(QFileInfo(path).fileName())))
+        return false;
     auto text = base::readTextFile(path.toStdString());
     if (!text) {
         m_report->append(Workbench::Severity::Error, QString::fromStdString(text.error().toString()));
@@ -118,7 +135,7 @@ bool MainWindow::openNcFile(const QString& path)
     }
     m_fitWithTrace = true;
     m_inspector->loadProgram(QString::fromStdString(text.value()), QFileInfo(path).absoluteFilePath());
-    m_editor->setReadOnly(false);
+    m_ncDocument->openedFile(path);
     m_report->append(Workbench::Severity::Note, tr("Opened NC program %1").arg(path));
     return true;
 }
@@ -134,7 +151,7 @@ void MainWindow::registerActions()
     };
 
     add({"Cam.File.Open", tr("&Open Job…"), file, QKeySequence::Open, true}, [this] {
-        if (!confirmDiscard())
+        if (!confirmDiscard() || !m_ncDocument->mayReplace(tr("Opening another job replaces them with its program.")))
             return;
         const QString path = QFileDialog::getOpenFileName(this, tr("Open job"), {}, tr("CAM Workbench jobs (*.camwb)"));
         if (!path.isEmpty())
@@ -187,7 +204,10 @@ void MainWindow::registerActions()
     add({"Cam.Op.Delete", tr("&Delete Operation"), operation, QKeySequence::Delete},
         [this] { m_workbench->removeOperation(m_jobTree->selectedOperation()); });
 
-    add({"Cam.Job.Post", tr("&Post"), jobMenu, QKeySequence(Qt::Key_F9), true, true}, [this] { m_workbench->post(); });
+    add({"Cam.Job.Post", tr("&Post"), jobMenu, QKeySequence(Qt::Key_F9), true, true}, [this] {
+        if (m_ncDocument->mayReplace(tr("Posting the job replaces them with its program.")))
+            m_workbench->post();
+    });
     add({"Cam.Job.SaveNc", tr("&Save NC Program…"), jobMenu, QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_S)}, [this] {
         const QString suffix = m_workbench->ncExtension();
         const QString base = QFileInfo(QString::fromStdString(m_workbench->document().path())).completeBaseName();
@@ -205,9 +225,16 @@ void MainWindow::registerActions()
         if (!path.isEmpty())
             openNcFile(path);
     });
+    add({"Cam.Nc.Save", tr("&Save NC File"), nc, QKeySequence(Qt::CTRL | Qt::ALT | Qt::Key_S)}, [this] {
+        // The posted program is not an editable file: it is saved with Save NC Program.
+        if (m_editor->isReadOnly())
+            m_actions->trigger(QStringLiteral("Cam.Job.SaveNc"));
+        else
+            m_ncDocument->save();
+    });
     add({"Cam.Nc.Trace", tr("&Trace NC Program"), nc, QKeySequence(Qt::Key_F5), true},
         [this] { m_inspector->traceNow(); });
-    registerNcEditorActions(*m_actions, m_editor, this);
+    registerNcEditorActions(*m_actions, m_editor, this, [this]() -> Prompter& { return *m_prompter; });
 
     add({"Cam.View.Isometric", tr("&Isometric"), view, QKeySequence(Qt::Key_0), true, true},
         [this] { m_view->setViewPreset(View3D::Preset::Isometric); });
@@ -244,10 +271,22 @@ void MainWindow::connectWorkbench()
             m_view->fitAll();
     });
     connect(m_workbench, &Workbench::ncChanged, this, [this] {
+        if (!m_ncDocument->mayReplace(tr("The job's program, posted again, replaces them."))) {
+            m_report->append(Workbench::Severity::Warning,
+                             tr("The editor keeps the unsaved edits of %1; the job's new program is not shown "
+                                "(Post shows it).")
+                                 .arg(m_ncDocument->title()));
+            return;
+        }
         // The posted program is traced as the machine will read it; its name gives the dialect.
         const QString job = QString::fromStdString(m_workbench->document().path());
         const QString base = job.isEmpty() ? tr("posted") : QFileInfo(job).completeBaseName();
         m_inspector->loadProgram(m_workbench->ncText(), base + '.' + m_workbench->ncExtension());
+        m_ncDocument->showsPostedProgram();
+    });
+    connect(m_ncDocument, &NcDocument::message, m_report, &ReportView::append);
+    connect(m_ncDocument, &NcDocument::titleChanged, this, [this](const QString& title) {
+        m_ncDock->setWindowTitle(title.isEmpty() ? tr("NC program") : tr("NC program — %1").arg(title));
     });
     connect(m_workbench, &Workbench::jobChanged, this, &MainWindow::updateTitle);
     connect(m_workbench, &Workbench::busyChanged, this, [this](bool busy) {
@@ -365,6 +404,10 @@ bool MainWindow::confirmDiscard()
 
 void MainWindow::closeEvent(QCloseEvent* event)
 {
+    if (!m_ncDocument->mayReplace(tr("Closing the window loses them."))) {
+        event->ignore();
+        return;
+    }
     if (confirmDiscard())
         event->accept();
     else

@@ -6,6 +6,7 @@
 
 #include <QMainWindow>
 
+#include <memory>
 #include <optional>
 
 class QDockWidget;
@@ -17,8 +18,10 @@ class ActionRegistry;
 class InspectorPanel;
 class NcInspector;
 class JobTree;
+class NcDocument;
 class NcEditor;
 class OperationPanel;
+class Prompter;
 class ReportView;
 class View3D;
 class Workbench;
@@ -33,16 +36,23 @@ public:
     ActionRegistry& actions() { return *m_actions; }
     View3D* view() const { return m_view; }
     NcEditor* ncEditor() const { return m_editor; }
+    // The editor's program as a document: its file, unsaved edits, Save and the prompt before loss.
+    NcDocument* ncDocument() const { return m_ncDocument; }
     ReportView* reportView() const { return m_report; }
     JobTree* jobTree() const { return m_jobTree; }
     NcInspector* inspector() const { return m_inspector; }
     InspectorPanel* inspectorPanel() const { return m_inspectorPanel; }
     // The open task panel (docked on the right), or nullptr.
     OperationPanel* taskPanel() const { return m_taskPanel; }
+    // Asks the user (message boxes and file dialogs unless replaced; tests answer with their own).
+    Prompter& prompter() const { return *m_prompter; }
+    void setPrompter(std::unique_ptr<Prompter> prompter);
 
-    // A .camwb job, or any other file as an NC program (openNcFile).
+    // A .camwb job, or any other file as an NC program (openNcFile). False when it cannot be opened
+    // or the user keeps the editor's unsaved edits (Cancel).
     bool openJob(const QString& path);
-    // Reads an NC program of any dialect into the editor (editable) and traces it.
+    // Reads an NC program of any dialect into the editor (editable) and traces it. False when it
+    // cannot be read or the user keeps the editor's unsaved edits (Cancel).
     bool openNcFile(const QString& path);
     // Opens the task panel of operation `index`; replaces (cancels) a panel already open.
     void editOperation(int index);
@@ -64,10 +74,13 @@ private:
     void closeTaskPanel();
     bool confirmDiscard();
 
+    std::unique_ptr<Prompter> m_prompter;
     Workbench* m_workbench;
     ActionRegistry* m_actions;
     View3D* m_view;
     NcEditor* m_editor;
+    NcDocument* m_ncDocument;
+    QDockWidget* m_ncDock = nullptr;
     ReportView* m_report;
     JobTree* m_jobTree;
     QProgressBar* m_progress;

@@ -23,12 +23,14 @@ ToolpathPolylines::ToolpathPolylines(double chordToleranceMm) :
 {
 }
 
-ToolpathPolylines ToolpathPolylines::fromToolpath(const toolpath::Toolpath& toolpath, double chordToleranceMm)
+ToolpathPolylines ToolpathPolylines::fromToolpath(const toolpath::Toolpath& toolpath, double chordToleranceMm,
+                                                  const std::vector<bool>& recordsInError)
 {
     ToolpathPolylines polylines(chordToleranceMm);
     polylines.begin();
     for (std::size_t i = 0; i < toolpath.size(); ++i) {
         polylines.setCurrentRecord(static_cast<std::uint32_t>(i));
+        polylines.setCurrentRecordInError(i < recordsInError.size() && recordsInError[i]);
         polylines.setSource(toolpath.source(i));
         toolpath::dispatch(toolpath.record(i), polylines);
     }
@@ -57,6 +59,7 @@ void ToolpathPolylines::clear()
     m_segments.clear();
     m_record = 0;
     m_tool = 0;
+    m_inError = false;
     m_hasPosition = false;
     m_positionStored = false;
 }
@@ -92,18 +95,60 @@ void ToolpathPolylines::lineTo(const Vec3& to, PathSegmentKind kind)
     m_positionStored = true;
 }
 
-void ToolpathPolylines::rapid(const toolpath::Rapid& r) { lineTo(r.to, PathSegmentKind::Rapid); }
+// Dashes along the straight line from the current position: what the block claims is not drawn,
+// so a wrong block cannot look like a path (or blow up the view with a huge circle).
+void ToolpathPolylines::errorTo(const Vec3& to)
+{
+    if (!m_hasPosition) {
+        setStartPosition(to);
+        return;
+    }
+    const Vec3 from = m_position;
+    if (base::distance(to, from) < 1e-12)
+        return;
+    constexpr int kPieces = 2 * kErrorDashes - 1;  // dash, gap, ..., dash: the last ends at `to`
+    for (int i = 0; i < kPieces; i += 2) {
+        m_points.push_back(from + (to - from) * (double(i) / kPieces));
+        m_points.push_back(from + (to - from) * (double(i + 1) / kPieces));
+        const auto last = static_cast<std::uint32_t>(m_points.size() - 1);
+        m_segments.push_back({last - 1, last, m_record, m_tool, PathSegmentKind::Error});
+    }
+    m_points.back() = to;
+    m_position = to;
+    m_positionStored = true;
+}
 
-void ToolpathPolylines::linear(const toolpath::Linear& l) { lineTo(l.to, PathSegmentKind::Feed); }
+void ToolpathPolylines::rapid(const toolpath::Rapid& r)
+{
+    if (m_inError)
+        errorTo(r.to);
+    else
+        lineTo(r.to, PathSegmentKind::Rapid);
+}
+
+void ToolpathPolylines::linear(const toolpath::Linear& l)
+{
+    if (m_inError)
+        errorTo(l.to);
+    else
+        lineTo(l.to, PathSegmentKind::Feed);
+}
 
 void ToolpathPolylines::toolAxisMove(const toolpath::ToolAxisMove& m)
 {
-    lineTo(m.tip, m.feedMmPerMin > 0 ? PathSegmentKind::Feed : PathSegmentKind::Rapid);
+    if (m_inError)
+        errorTo(m.tip);
+    else
+        lineTo(m.tip, m.feedMmPerMin > 0 ? PathSegmentKind::Feed : PathSegmentKind::Rapid);
 }
 
 // Start = the current position (toolpath/ArcGeometry.h says how helices and inconsistent radii go).
 void ToolpathPolylines::arc(const toolpath::Arc& a)
 {
+    if (m_inError) {
+        errorTo(a.to);
+        return;
+    }
     if (!m_hasPosition) {
         setStartPosition(a.to);
         return;
@@ -116,6 +161,8 @@ void ToolpathPolylines::arc(const toolpath::Arc& a)
 // without native cycles write (pecks, dwells and the return plane included).
 void ToolpathPolylines::cycle(const toolpath::Cycle& c)
 {
+    // A cycle block with an error: its holes' expansions are drawn dashed (the moves dispatched
+    // below see m_inError).
     for (const Vec3& hole : c.holes) {
         const Vec3 from = m_hasPosition ? m_position : Vec3{hole.x, hole.y, toolpath::cycleReturnZ(c)};
         for (const toolpath::Record& record : toolpath::expandCycleHole(c, hole, from, {}))

@@ -17,7 +17,9 @@ class Toolpath;
 
 namespace camwb::gui {
 
-enum class PathSegmentKind : std::uint8_t { Rapid, Feed, Arc };
+// Error: a dash of a record from a block with an error, drawn straight from where it starts to
+// where it ends instead of what it claims (an arc whose radii disagree would be a huge circle).
+enum class PathSegmentKind : std::uint8_t { Rapid, Feed, Arc, Error };
 
 // One straight display segment between two entries of ToolpathPolylines::points(). `record` is
 // the index of the toolpath record that made it (the NC inspector links segments to lines with
@@ -35,8 +37,10 @@ public:
     // chordToleranceMm: largest distance between a tessellated arc and its chords.
     explicit ToolpathPolylines(double chordToleranceMm = 0.01);
 
-    // Convenience: plays `toolpath` into a fresh instance.
-    static ToolpathPolylines fromToolpath(const toolpath::Toolpath& toolpath, double chordToleranceMm = 0.01);
+    // Convenience: plays `toolpath` into a fresh instance; records flagged in `recordsInError`
+    // (nc::recordsInError: one flag per record, or empty) are drawn as Error dashes.
+    static ToolpathPolylines fromToolpath(const toolpath::Toolpath& toolpath, double chordToleranceMm = 0.01,
+                                          const std::vector<bool>& recordsInError = {});
 
     const std::vector<base::Vec3>& points() const { return m_points; }
     const std::vector<PathSegment>& segments() const { return m_segments; }
@@ -51,6 +55,10 @@ public:
 
     // The record index stamped on the segments made from now on (fromToolpath sets it per record).
     void setCurrentRecord(std::uint32_t record) { m_record = record; }
+    // Whether the moves from now on come from a block with an error (drawn as Error dashes).
+    void setCurrentRecordInError(bool inError) { m_inError = inError; }
+    // Dashes of one Error move (with gaps between them), whatever its length.
+    static constexpr int kErrorDashes = 8;
     // Segments of records [first, last] (segments are in record order): [begin, end) indices.
     std::pair<std::size_t, std::size_t> segmentsOfRecords(std::uint32_t first, std::uint32_t last) const;
 
@@ -77,6 +85,7 @@ public:
 
 private:
     void lineTo(const base::Vec3& to, PathSegmentKind kind);
+    void errorTo(const base::Vec3& to);
     std::uint32_t currentIndex();
 
     double m_chordToleranceMm;
@@ -87,6 +96,7 @@ private:
     bool m_positionStored = false;  // m_points.back() == m_position
     std::uint32_t m_record = 0;
     std::int32_t m_tool = 0;
+    bool m_inError = false;
 };
 
 }  // namespace camwb::gui

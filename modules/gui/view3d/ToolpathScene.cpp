@@ -83,10 +83,11 @@ int ToolpathScene::nearestSegment(const ScreenProjection& projection, double x, 
     return best;
 }
 
-std::shared_ptr<ToolpathScene> ToolpathScene::build(const toolpath::Toolpath& toolpath, double chordToleranceMm)
+std::shared_ptr<ToolpathScene> ToolpathScene::build(const toolpath::Toolpath& toolpath, double chordToleranceMm,
+                                                    const std::vector<bool>& recordsInError)
 {
     auto scene = std::make_shared<ToolpathScene>();
-    scene->m_polylines = ToolpathPolylines::fromToolpath(toolpath, chordToleranceMm);
+    scene->m_polylines = ToolpathPolylines::fromToolpath(toolpath, chordToleranceMm, recordsInError);
     const ToolpathPolylines& polylines = scene->m_polylines;
     if (polylines.empty())
         return scene;
@@ -174,7 +175,9 @@ std::size_t ToolpathScene::buildCells(const std::vector<std::size_t>& partOfSegm
             builder.rapid->InsertNextCell(static_cast<vtkIdType>(run.size()), run.data());
         } else {
             builder.cut->InsertNextCell(static_cast<vtkIdType>(run.size()), run.data());
-            builder.colors->InsertNextTypedTuple(first.kind == PathSegmentKind::Arc ? kArcRgb : kFeedRgb);
+            builder.colors->InsertNextTypedTuple(first.kind == PathSegmentKind::Arc     ? kArcRgb
+                                                 : first.kind == PathSegmentKind::Error ? kErrorRgb
+                                                                                        : kFeedRgb);
         }
         vertices += run.size();
         run.clear();

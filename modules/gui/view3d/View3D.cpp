@@ -246,9 +246,10 @@ void View3D::clearModel()
 
 void View3D::setToolpath(const toolpath::Toolpath& toolpath) { setPreparedToolpath(prepareToolpath(toolpath)); }
 
-std::shared_ptr<const ToolpathScene> View3D::prepareToolpath(const toolpath::Toolpath& toolpath)
+std::shared_ptr<const ToolpathScene> View3D::prepareToolpath(const toolpath::Toolpath& toolpath,
+                                                             const std::vector<bool>& recordsInError)
 {
-    return ToolpathScene::build(toolpath, kChordToleranceMm);
+    return ToolpathScene::build(toolpath, kChordToleranceMm, recordsInError);
 }
 
 void View3D::setPreparedToolpath(std::shared_ptr<const ToolpathScene> scene)

@@ -56,8 +56,10 @@ public:
     void setModel(const occ::DisplayMesh& mesh);           // shaded (light grey) + feature edges
     void setToolpath(const toolpath::Toolpath& toolpath);  // rapid red, feed green, arc/helix blue
     // Builds the backplot data of `toolpath` without touching the view: safe on a worker thread,
-    // so a huge program never blocks the GUI. Show it with setPreparedToolpath().
-    static std::shared_ptr<const ToolpathScene> prepareToolpath(const toolpath::Toolpath& toolpath);
+    // so a huge program never blocks the GUI. Show it with setPreparedToolpath(). Records flagged
+    // in `recordsInError` (nc::recordsInError) are drawn as magenta dashes from start to end.
+    static std::shared_ptr<const ToolpathScene> prepareToolpath(const toolpath::Toolpath& toolpath,
+                                                                const std::vector<bool>& recordsInError = {});
     void setPreparedToolpath(std::shared_ptr<const ToolpathScene> scene);
     void clearModel();
     void clearToolpath();

@@ -54,6 +54,29 @@ public:
             r);
     }
 
+    // A motion of a block with an error: the next move starts where it ends, nothing else counts.
+    void leaveOut(const tp::Record& r)
+    {
+        std::visit(
+            [this, &r](const auto& rec) {
+                using T = std::decay_t<decltype(rec)>;
+                if constexpr (std::is_same_v<T, tp::Rapid> || std::is_same_v<T, tp::Linear> ||
+                              std::is_same_v<T, tp::Arc>)
+                    m_position = rec.to;
+                else if constexpr (std::is_same_v<T, tp::ToolAxisMove>)
+                    m_position = rec.tip;
+                else if constexpr (std::is_same_v<T, tp::Cycle>) {
+                    if (!rec.holes.empty())
+                        m_position = Vec3{rec.holes.back().x, rec.holes.back().y, tp::cycleReturnZ(rec)};
+                } else {
+                    record(r);  // not a motion: tools, spindle and feed modes still apply
+                    return;
+                }
+                ++m_stats.movesLeftOut;
+            },
+            r);
+    }
+
 private:
     MotionTotals& toolTotals()
     {
@@ -197,8 +220,13 @@ ProgramStats programStats(const toolpath::Toolpath& program, const StatsOptions&
     if (options.machine != nullptr && options.machine->rapidMmPerMin > 0)
         stats.rapidMmPerMin = options.machine->rapidMmPerMin;
     StatsWalker walker(stats, stats.rapidMmPerMin, options.startPosition);
-    for (const tp::Record& r : program.records())
-        walker.record(r);
+    const std::vector<bool>* inError = options.recordsInError;
+    for (std::size_t i = 0; i < program.size(); ++i) {
+        if (inError != nullptr && i < inError->size() && (*inError)[i])
+            walker.leaveOut(program.record(i));
+        else
+            walker.record(program.record(i));
+    }
     return stats;
 }
 

@@ -45,6 +45,7 @@ struct ProgramStats {
     int cycleHoles = 0;
     int toolChanges = 0;
     int movesWithoutFeed = 0;  // feed moves at feed 0 (or per revolution with the spindle off): no time counted
+    int movesLeftOut = 0;      // motions of blocks with an error (StatsOptions::recordsInError)
     double rapidMmPerMin = 0;  // the rate the estimate used
 };
 
@@ -53,6 +54,9 @@ struct StatsOptions {
     const kinematics::Machine* machine = nullptr;  // its rapidMmPerMin wins when > 0
     // Where the tool is before the first move; unknown: the first move only sets the position.
     std::optional<base::Vec3> startPosition;
+    // Per record, true for a block with an error (nc::recordsInError): its motion is not what the
+    // program means, so it only moves the position, adding no extents, length or time.
+    const std::vector<bool>* recordsInError = nullptr;
 };
 
 ProgramStats programStats(const toolpath::Toolpath& program, const StatsOptions& options = {});

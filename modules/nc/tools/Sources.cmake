@@ -1,2 +1,3 @@
 # Sources of the NC text tools, relative to this folder.
-set(NC_PART_SOURCES BlockNumbers.h BlockNumbers.cpp LineDiff.h LineDiff.cpp ProgramStats.h ProgramStats.cpp)
+set(NC_PART_SOURCES BlockNumbers.h BlockNumbers.cpp LineDiff.h LineDiff.cpp ProgramStats.h ProgramStats.cpp ErrorRecords.h
+    ErrorRecords.cpp)

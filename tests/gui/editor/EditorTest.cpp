@@ -1,7 +1,11 @@
 // Tests of the NC editor: highlighting at exact positions and folding for Sinumerik, ISO and
 // Heidenhain, diagnostics markers, find, the NC tools through their actions (renumber is one undo
 // step, remove numbers, go to block, compare, program info) and a million-line program whose
-// figures are printed, never asserted. CAMWB_EDITOR_SHOTS=<dir> saves screenshots for a look.
+// figures are printed, never asserted. Screenshots always (Shots.h: CAMWB_SHOTS_DIR=<dir> keeps them).
+#include "LargeProgramTest.h"
+#include "QtTestRun.h"
+#include "ScriptedPrompter.h"
+#include "Shots.h"
 #include "gui/actions/ActionRegistry.h"
 #include "gui/editor/CompareDialog.h"
 #include "gui/editor/NcEditor.h"
@@ -9,9 +13,7 @@
 #include "gui/editor/NcStyles.h"
 #include "gui/editor/ProgramInfoDialog.h"
 #include "gui/editor/RenumberDialog.h"
-#include "nc/Interpreter.h"
 #include "nc/tools/BlockNumbers.h"
-#include "toolpath/ToolpathRecorder.h"
 
 #include <QApplication>
 #include <QDir>
@@ -24,6 +26,7 @@
 #include <QSignalSpy>
 #include <QSpinBox>
 #include <QStatusBar>
+#include <QTemporaryDir>
 #include <QTest>
 #include <QTimer>
 
@@ -93,20 +96,6 @@ constexpr const char* kHeidenhain = "0  BEGIN PGM F3D_TEST MM\n"           // 1
                                     "11 LBL 0\n"                           // 14
                                     "12 END PGM F3D_TEST MM\n";            // 15
 
-QString shotDir() { return qEnvironmentVariable("CAMWB_EDITOR_SHOTS"); }
-
-void saveShot(QWidget* widget, const QString& name)
-{
-    const QString dir = shotDir();
-    if (dir.isEmpty())
-        return;
-    QDir().mkpath(dir);
-    widget->show();
-    QVERIFY(QTest::qWaitForWindowExposed(widget));
-    QTest::qWait(100);
-    QVERIFY(widget->grab().save(dir + QLatin1Char('/') + name));
-}
-
 // Runs `handle` on the next modal dialog that opens (polling, so the timer cannot fire before
 // exec() shows it).
 void onNextModal(std::function<void(QWidget*)> handle)
@@ -121,18 +110,6 @@ void onNextModal(std::function<void(QWidget*)> handle)
         }
     });
     timer->start();
-}
-
-bool isoInterpreterBuilt()
-{
-    camwb::toolpath::ToolpathRecorder recorder;
-    nc::InterpretOptions options;
-    options.dialect = nc::Dialect::Iso;
-    const nc::InterpretResult r = nc::interpret("G0 X1\n", options, recorder);
-    for (const nc::Diagnostic& d : r.diagnostics)
-        if (d.message.find("not built yet") != std::string::npos)
-            return false;
-    return true;
 }
 
 }  // namespace
@@ -259,8 +236,6 @@ private slots:
     void realProgramsForALook()
     {
         // Screenshots of programs from the repository's goldens, one per dialect.
-        if (shotDir().isEmpty())
-            QSKIP("set CAMWB_EDITOR_SHOTS to save screenshots");
         const std::pair<const char*, nc::Dialect> programs[] = {
             {"tests/golden/jobs/example-block/expected.mpf", nc::Dialect::Sinumerik},
             {"tests/golden/nc/heidenhain/thesis/input.h", nc::Dialect::Heidenhain},
@@ -349,6 +324,16 @@ private:
     QMainWindow* m_window = nullptr;
     NcEditor* m_editor = nullptr;
     ActionRegistry* m_registry = nullptr;
+    ScriptedPrompter m_prompter;
+    QTemporaryDir m_files;
+
+    QString writeFile(const QString& name, const QByteArray& text)
+    {
+        QFile file(m_files.filePath(name));
+        if (!file.open(QIODevice::WriteOnly) || file.write(text) != text.size())
+            return {};
+        return file.fileName();
+    }
 
 private slots:
     void init()
@@ -358,7 +343,9 @@ private slots:
         m_window->setCentralWidget(m_editor);
         m_window->statusBar();
         m_registry = new ActionRegistry(m_window);
-        camwb::gui::registerNcEditorActions(*m_registry, m_editor, m_window);
+        m_prompter = ScriptedPrompter();
+        camwb::gui::registerNcEditorActions(*m_registry, m_editor, m_window,
+                                            [this]() -> camwb::gui::Prompter& { return m_prompter; });
         m_window->resize(900, 600);
     }
 
@@ -440,15 +427,20 @@ private slots:
         QVERIFY(!bar->isVisible());
     }
 
+    // Compare with File asks for the file first and opens with both programs.
     void compareFindsTheDifferences()
     {
+        const QString other = writeFile(QStringLiteral("other.mpf"),
+                                        "N10 G0 X0 Y0\nN20 G1 Z-3 F100\nN30 X50\nN40 Y50\nN45 X25\nN50 X0\nN60 M30\n");
+        QVERIFY(!other.isEmpty());
         m_editor->setDialect(nc::Dialect::Sinumerik);
         m_editor->setText(QStringLiteral("N10 G0 X0 Y0\nN20 G1 Z-2 F100\nN30 X50\nN40 Y50\nN50 X0\nN60 M30\n"));
+        m_prompter.files.push_back(other);
         QVERIFY(m_registry->trigger(QStringLiteral("Cam.Nc.Compare")));
+        QCOMPARE(int(m_prompter.fileTitles.size()), 1);
         auto* dialog = m_window->findChild<CompareDialog*>();
         QVERIFY(dialog != nullptr);
-        dialog->setRight(QStringLiteral("N10 G0 X0 Y0\nN20 G1 Z-3 F100\nN30 X50\nN40 Y50\nN45 X25\nN50 X0\nN60 M30\n"),
-                         QStringLiteral("other.mpf"));
+        QCOMPARE(dialog->summaryText(), QStringLiteral("2 difference(s)"));
         QCOMPARE(dialog->differenceCount(), 2);
         const nc::LineDiff& diff = dialog->diff();
         QCOMPARE(diff.rows[std::size_t(diff.hunks[0].firstRow)].kind, nc::DiffKind::Changed);
@@ -466,6 +458,25 @@ private slots:
         saveShot(dialog, QStringLiteral("compare-dialog.png"));
         dialog->setIgnoreBlockNumbers(true);
         QCOMPARE(dialog->differenceCount(), 2);
+    }
+
+    // Without a second program there is nothing to compare: no dialog when the file choice is
+    // cancelled, and a dialog with one side says so instead of counting the whole program as one
+    // difference.
+    void compareWithoutASecondProgramComparesNothing()
+    {
+        m_editor->setText(QStringLiteral("G0 X0\nG1 X10 F100\nM30\n"));
+        QVERIFY(m_registry->trigger(QStringLiteral("Cam.Nc.Compare")));  // no answer: cancelled
+        QCOMPARE(int(m_prompter.fileTitles.size()), 1);
+        QVERIFY(m_window->findChild<CompareDialog*>() == nullptr);
+
+        CompareDialog dialog(nc::Dialect::Iso);
+        dialog.setLeft(m_editor->text(), QStringLiteral("in the editor"));
+        QCOMPARE(dialog.differenceCount(), 0);
+        QCOMPARE(dialog.summaryText(), QStringLiteral("Open a program on the right to compare"));
+        dialog.setRight(QString(), QStringLiteral("empty.ngc"));  // an empty file is a program
+        QCOMPARE(dialog.differenceCount(), 1);
+        QCOMPARE(dialog.summaryText(), QStringLiteral("1 difference(s)"));
     }
 
     void compareScrollsBothSidesTogether()
@@ -491,8 +502,6 @@ private slots:
 
     void programInfo()
     {
-        if (!isoInterpreterBuilt())
-            QSKIP("the ISO interpreter is not built yet");
         m_editor->setDialect(nc::Dialect::Iso);
         m_editor->setText(QStringLiteral("G21 G90 G17\nT1 M6\nS1000 M3\nG0 X0 Y0 Z10\nG1 Z-1 F100\nG1 X100 F600\n"
                                          "G0 Z10\nM30\n"));
@@ -511,117 +520,46 @@ private slots:
     }
 };
 
-class LargeProgramTest : public QObject {
+class ProgramInfoErrorTest : public QObject {
     Q_OBJECT
 
 private slots:
-    void millionLines()
+    // An arc whose radii disagree (an error in the editor's margin) is left out of the extents and
+    // lengths: drawn as a circle it would add a 200 mm bulge to a 30 mm program.
+    void errorBlocksAreLeftOutOfTheFigures()
     {
-        // ~38 MB of NC: opens, paints, scrolls to the end. Figures printed; times never asserted.
-        QString program;
-        program.reserve(40'000'000);
-        for (int i = 1; i <= 1'000'000; ++i)
-            program += QStringLiteral("N%1 G1 X%2 Y%3 F1200 ; move\n").arg(i * 10).arg(i % 1000).arg(i % 97);
-        NcEditor editor;
-        editor.resize(1000, 700);
-        QElapsedTimer timer;
-        timer.start();
-        editor.setText(program);
-        const qint64 setTextMs = timer.restart();
-        editor.show();
-        QVERIFY(QTest::qWaitForWindowExposed(&editor));
-        editor.repaint();
-        const qint64 firstPaintMs = timer.restart();
-        QCOMPARE(editor.lineCount(), 1'000'001);
-        editor.gotoLine(1'000'000);
-        editor.repaint();
-        QApplication::processEvents();
-        const qint64 scrollEndMs = timer.restart();
-        QVERIFY(editor.firstVisibleLine() > 990'000);
-        // Styling up to the view goes on in idle time: wait until the last line is styled, and
-        // record the longest the event loop stood still meanwhile (a ticking 5 ms timer).
-        QElapsedTimer tick;
-        tick.start();
-        qint64 longestStallMs = 0;
-        QTimer ticker;
-        ticker.setInterval(5);
-        QObject::connect(&ticker, &QTimer::timeout, [&] { longestStallMs = std::max(longestStallMs, tick.restart()); });
-        ticker.start();
-        QTRY_VERIFY_WITH_TIMEOUT(editor.isStyledThrough(1'000'000), 60'000);
-        ticker.stop();
-        const qint64 styledEndMs = timer.restart();
-        saveShot(&editor, QStringLiteral("editor-1M-lines-end.png"));
-        timer.restart();
-        QCOMPARE(static_cast<NcStyle>(editor.styleAt(1'000'000, 1)), NcStyle::BlockNumber);
-        editor.gotoLine(500'000);
-        editor.repaint();
-        const qint64 scrollMiddleMs = timer.restart();
-        for (int k = 0; k < 50; ++k) {
-            editor.gotoLine(500'000 + k * 40);
-            editor.repaint();
-        }
-        const qint64 pageStepsMs = timer.restart();
-        // Renumbering the whole program is one undo step, even at this size.
-        const QByteArray bytes = editor.utf8Text();
-        nc::RenumberOptions options;
-        options.start = 5;
-        options.step = 5;
-        const nc::RenumberResult renumbered =
-            nc::renumberBlocks(std::string_view(bytes.constData(), std::size_t(bytes.size())), options);
-        const qint64 renumberMs = timer.restart();
-        editor.replaceUtf8Text(QByteArray::fromStdString(renumbered.text));
-        editor.repaint();
-        const qint64 replaceMs = timer.restart();
-        QCOMPARE(renumbered.report.linesNumbered, 1'000'000);
-        editor.undo();
-        editor.repaint();
-        const qint64 undoMs = timer.restart();
-        QVERIFY(editor.text().startsWith(QStringLiteral("N10 G1")));
-        qInfo("1M lines (%lld MB): setText %lld ms, first paint %lld ms, scroll to end %lld ms (styled there after "
-              "%lld ms more in idle time, longest stall %lld ms), "
-              "back to the middle %lld ms, 50 page steps %lld ms; renumber (kernel) %lld ms, "
-              "replace text %lld ms, undo %lld ms",
-              static_cast<long long>(program.size() / 1'000'000), static_cast<long long>(setTextMs),
-              static_cast<long long>(firstPaintMs), static_cast<long long>(scrollEndMs),
-              static_cast<long long>(styledEndMs), static_cast<long long>(longestStallMs),
-              static_cast<long long>(scrollMiddleMs), static_cast<long long>(pageStepsMs),
-              static_cast<long long>(renumberMs), static_cast<long long>(replaceMs), static_cast<long long>(undoMs));
-    }
-
-    void compareHundredThousandLines()
-    {
-        // Two 100k-line programs, every 100th line changed: diff and display. Figures printed only.
-        QString left;
-        QString right;
-        for (int i = 1; i <= 100'000; ++i) {
-            const QString line = QStringLiteral("N%1 G1 X%2 Y%3\n").arg(i * 10).arg(i % 500).arg(i % 37);
-            left += line;
-            right += i % 100 == 0 ? QStringLiteral("N%1 G1 X%2 Y-1\n").arg(i * 10).arg(i % 500) : line;
-        }
-        CompareDialog dialog(nc::Dialect::Sinumerik);
-        QElapsedTimer timer;
-        timer.start();
-        dialog.setLeft(left, QStringLiteral("a"));
-        dialog.setRight(right, QStringLiteral("b"));
-        QCOMPARE(dialog.differenceCount(), 1000);  // diffs and fills both views once, here
-        const qint64 ms = timer.elapsed();
-        qInfo("compare 2 x 100k lines, 1000 differences: %lld ms (diff and both views)", static_cast<long long>(ms));
+        ProgramInfoDialog dialog;
+        dialog.analyze(QStringLiteral("G21 G90 G17\nG0 X0 Y0 Z0\nG1 X10 F100\nG2 X20 Y0 I100 J0\nG1 X30\nM30\n"),
+                       nc::Dialect::Iso, QStringLiteral("bad-arc.ngc"));
+        QTRY_VERIFY_WITH_TIMEOUT(dialog.hasStats() && !dialog.isBusy(), 20000);
+        QCOMPARE(dialog.errorCount(), 1);
+        const nc::ProgramStats& s = dialog.stats();
+        QCOMPARE(s.movesLeftOut, 1);
+        QVERIFY2(std::abs(s.totals.cuttingExtents.max.y) < 1e-9 && std::abs(s.totals.cuttingExtents.min.y) < 1e-9,
+                 qPrintable(QStringLiteral("Y extents %1 .. %2")
+                                .arg(s.totals.cuttingExtents.min.y)
+                                .arg(s.totals.cuttingExtents.max.y)));
+        QVERIFY(std::abs(s.totals.cuttingExtents.max.x - 30.0) < 1e-9);
+        QVERIFY(std::abs(s.totals.feedLengthMm - 20.0) < 1e-9);  // the two lines, not the arc
     }
 };
 
 int main(int argc, char** argv)
 {
     QApplication app(argc, argv);
-    int failures = 0;
+    QtTestRun run(argc, argv);
     EditorHighlightTest highlight;
-    failures += QTest::qExec(&highlight, argc, argv);
+    run.run(&highlight);
     EditorActionsTest actions;
-    failures += QTest::qExec(&actions, argc, argv);
-    if (qEnvironmentVariableIsEmpty("CAMWB_EDITOR_SKIP_LARGE")) {
-        LargeProgramTest large;
-        failures += QTest::qExec(&large, argc, argv);
-    }
-    return failures == 0 ? 0 : 1;
+    run.run(&actions);
+    ProgramInfoErrorTest errors;
+    run.run(&errors);
+    LargeProgramTest large;
+    if (qEnvironmentVariableIsEmpty("CAMWB_EDITOR_SKIP_LARGE"))
+        run.run(&large);
+    else
+        run.skip("LargeProgramTest", "CAMWB_EDITOR_SKIP_LARGE is set");
+    return run.finish();
 }
 
 #include "EditorTest.moc"

@@ -1,7 +1,9 @@
 // The NC inspector against the real ISO interpreter: every 3D segment maps to the block that made
 // it, the cursor's block is highlighted and its modal state shown, a click in the real view (Xvfb)
-// moves the editor, edits re-trace after the debounce, tools can be hidden. Runs under Xvfb and
-// offscreen (no GL: everything but the clicks).
+// moves the editor, edits re-trace after the debounce, tools can be hidden, a block with an error
+// is drawn marked. Runs under Xvfb and offscreen (no GL: everything but the clicks, which
+// InspectorViewTest does under Xvfb).
+#include "QtTestRun.h"
 #include "gui/editor/NcEditor.h"
 #include "gui/inspector/ModalState.h"
 #include "gui/inspector/ModalStatePanel.h"
@@ -13,6 +15,7 @@
 #include <QApplication>
 #include <QFile>
 #include <QGuiApplication>
+#include <QRegularExpression>
 #include <QSignalSpy>
 #include <QTemporaryDir>
 #include <QTest>
@@ -57,7 +60,8 @@ struct Rig {
         inspector.setFilePath(QStringLiteral("inspector-test.ngc"));
     }
 
-    // Loads the text and waits for its trace; false (with the reason) when there is none.
+    // Loads the text and waits for its trace; false (with the reason) when there is none: a hang or
+    // an interpreter that cannot read the program is a failure of the test that needs it.
     bool load(const QString& text, QString* why)
     {
         QSignalSpy finished(&inspector, &NcInspector::traceFinished);
@@ -86,11 +90,10 @@ struct Rig {
     }
 };
 
-#define LOAD_OR_SKIP(rig, text)                                                                                        \
+#define LOAD_OR_FAIL(rig, text)                                                                                        \
     do {                                                                                                               \
         QString why;                                                                                                   \
-        if (!(rig).load((text), &why))                                                                                 \
-            QSKIP(qPrintable(why));                                                                                    \
+        QVERIFY2((rig).load((text), &why), qPrintable(why));                                                           \
     } while (false)
 
 }  // namespace
@@ -133,7 +136,7 @@ private slots:
     void everySegmentMapsToItsLine()
     {
         Rig rig;
-        LOAD_OR_SKIP(rig, QString::fromLatin1(kProgram));
+        LOAD_OR_FAIL(rig, QString::fromLatin1(kProgram));
         const ToolpathPolylines* polylines = rig.view.toolpathPolylines();
         QVERIFY(polylines != nullptr);
         const std::vector<int> lines = rig.segmentLines();
@@ -150,7 +153,7 @@ private slots:
     void cursorLineHighlightsItsSegments()
     {
         Rig rig;
-        LOAD_OR_SKIP(rig, QString::fromLatin1(kProgram));
+        LOAD_OR_FAIL(rig, QString::fromLatin1(kProgram));
         const std::vector<int> lines = rig.segmentLines();
         for (int line : {8, 12, 13}) {
             rig.editor.gotoLine(line);
@@ -166,7 +169,7 @@ private slots:
     void modalStateAtChosenLines()
     {
         Rig rig;
-        LOAD_OR_SKIP(rig, QString::fromLatin1(kProgram));
+        LOAD_OR_FAIL(rig, QString::fromLatin1(kProgram));
         rig.editor.gotoLine(8);
         QCOMPARE(rig.panel.value(QStringLiteral("move")), QStringLiteral("arc CW"));
         QCOMPARE(rig.panel.value(QStringLiteral("tool")), QStringLiteral("T1"));
@@ -190,52 +193,10 @@ private slots:
         QVERIFY(rig.panel.value(QStringLiteral("before")).startsWith(QLatin1String("unknown")));
     }
 
-    void clickInTheViewMovesTheEditor()
-    {
-        if (!withGl())
-            QSKIP("picking needs the GL view (Xvfb run)");
-        Rig rig;
-        rig.view.resize(800, 600);
-        rig.view.show();
-        QVERIFY(QTest::qWaitForWindowExposed(&rig.view));
-        LOAD_OR_SKIP(rig, QString::fromLatin1(kProgram));
-        rig.view.setViewPreset(View3D::Preset::Top);
-        QTest::qWait(50);
-
-        const ToolpathPolylines* polylines = rig.view.toolpathPolylines();
-        const std::vector<int> lines = rig.segmentLines();
-        auto* gl = rig.view.findChild<QWidget*>(QStringLiteral("view3dGl"));
-        QVERIFY(gl != nullptr);
-        for (int line : {13, 7}) {
-            // The middle segment of the block, clicked at its middle.
-            std::vector<std::size_t> ofLine;
-            for (std::size_t s = 0; s < lines.size(); ++s)
-                if (lines[s] == line)
-                    ofLine.push_back(s);
-            QVERIFY(!ofLine.empty());
-            const PathSegment& segment = polylines->segments()[ofLine[ofLine.size() / 2]];
-            const camwb::base::Vec3 middle =
-                (polylines->points()[segment.from] + polylines->points()[segment.to]) * 0.5;
-            const std::optional<QPointF> at = rig.view.projectToWidget(middle);
-            QVERIFY(at.has_value());
-            QVERIFY(rig.view.rect().contains(at->toPoint()));
-            QSignalSpy picked(&rig.view, &View3D::segmentPicked);
-            QTest::mouseClick(gl, Qt::LeftButton, {}, gl->mapFrom(&rig.view, at->toPoint()));
-            QCOMPARE(picked.count(), 1);
-            QCOMPARE(rig.editor.currentLine(), line);
-            QVERIFY(!rig.view.highlightedSegments().empty());  // the jump highlights the block
-        }
-        // Far from every segment: nothing picked, the editor stays.
-        QSignalSpy picked(&rig.view, &View3D::segmentPicked);
-        QTest::mouseClick(gl, Qt::LeftButton, {}, QPoint(3, 3));
-        QCOMPARE(picked.count(), 0);
-        QCOMPARE(rig.editor.currentLine(), 7);
-    }
-
     void editsRetraceAfterTheDebounce()
     {
         Rig rig;
-        LOAD_OR_SKIP(rig, QString::fromLatin1(kProgram));
+        LOAD_OR_FAIL(rig, QString::fromLatin1(kProgram));
         rig.inspector.setDebounceMs(150);
         const int before = rig.view.toolpathSegmentCount();
         QSignalSpy started(&rig.inspector, &NcInspector::traceStarted);
@@ -255,7 +216,7 @@ private slots:
     void newerTraceSupersedesOlder()
     {
         Rig rig;
-        LOAD_OR_SKIP(rig, QString::fromLatin1(kProgram));
+        LOAD_OR_FAIL(rig, QString::fromLatin1(kProgram));
         QSignalSpy finished(&rig.inspector, &NcInspector::traceFinished);
         QString longer = QString::fromLatin1(kProgram);
         longer.replace(QLatin1String("M30\n"), QLatin1String("G1 X60 F300\nM30\n"));
@@ -289,18 +250,17 @@ private slots:
         QVERIFY(write("MAIN.MPF", main));
         Rig rig;
         rig.inspector.setFilePath(dir.filePath(QStringLiteral("MAIN.MPF")));
-        LOAD_OR_SKIP(rig, QString::fromLatin1(main));
+        LOAD_OR_FAIL(rig, QString::fromLatin1(main));
         const auto trace = rig.inspector.trace();
         QCOMPARE(trace->dialect, camwb::nc::Dialect::Sinumerik);
         std::vector<std::size_t> called;
         for (std::size_t r = 0; r < trace->program.size(); ++r)
             if (trace->isInSubprogram(r))
                 called.push_back(r);
-        if (called.empty())
-            QSKIP(qPrintable(QStringLiteral("the SINUMERIK interpreter made no subprogram records: ") +
-                             QString::fromStdString(trace->result.diagnostics.empty()
-                                                        ? std::string("no diagnostics")
-                                                        : trace->result.diagnostics.front().message)));
+        QVERIFY2(!called.empty(), qPrintable(QStringLiteral("the SINUMERIK interpreter made no subprogram records: ") +
+                                             QString::fromStdString(trace->result.diagnostics.empty()
+                                                                        ? std::string("no diagnostics")
+                                                                        : trace->result.diagnostics.front().message)));
         QCOMPARE(called.size(), std::size_t(3));
         QCOMPARE(trace->whereOf(called.front()), std::string("POCKET.SPF:1"));
         // The interpreter announces the calling block before entering the subprogram.
@@ -315,7 +275,7 @@ private slots:
         const QString text =
             QString::fromLatin1(kProgram).replace(QLatin1String("G1 X10\n"), QLatin1String("G1 X10 Q?\n"));
         QSignalSpy messages(&rig.inspector, &NcInspector::message);
-        LOAD_OR_SKIP(rig, text);
+        LOAD_OR_FAIL(rig, text);
         const auto trace = rig.inspector.trace();
         QVERIFY(!trace->result.diagnostics.empty());
         const int line = trace->result.diagnostics.front().line;
@@ -338,7 +298,7 @@ private slots:
     void chosenDialectOverridesTheGuess()
     {
         Rig rig;
-        LOAD_OR_SKIP(rig, QString::fromLatin1(kProgram));
+        LOAD_OR_FAIL(rig, QString::fromLatin1(kProgram));
         QVERIFY(rig.inspector.trace()->dialectGuessed);
         QCOMPARE(rig.inspector.trace()->dialect, camwb::nc::Dialect::Iso);
         QSignalSpy finished(&rig.inspector, &NcInspector::traceFinished);
@@ -356,7 +316,7 @@ private slots:
     void toolsCanBeHidden()
     {
         Rig rig;
-        LOAD_OR_SKIP(rig, QString::fromLatin1(kProgram));
+        LOAD_OR_FAIL(rig, QString::fromLatin1(kProgram));
         QCOMPARE(rig.view.toolpathTools(), (std::vector<int>{1, 2}));
         const int all = rig.view.visibleSegmentCount();
         QCOMPARE(all, rig.view.toolpathSegmentCount());
@@ -370,14 +330,119 @@ private slots:
         rig.view.setToolVisible(2, true);
         QCOMPARE(rig.view.visibleSegmentCount(), all);
     }
+
+    // An arc whose radii disagree (an error): dashes from its start to its end, kind Error, not a
+    // circle of the wrong radius that would blow up the view's extents.
+    void errorBlockIsDrawnMarked()
+    {
+        Rig rig;
+        const QString text = QString::fromLatin1(kProgram).replace(QLatin1String("G2 X20 Y0 I5 J0\n"),
+                                                                   QLatin1String("G2 X20 Y0 I100 J0\n"));
+        LOAD_OR_FAIL(rig, text);
+        const auto trace = rig.inspector.trace();
+        QCOMPARE(rig.editor.diagnosticSeverityAt(8), std::optional(camwb::nc::Severity::Error));
+        const std::vector<std::size_t> arc = trace->recordsOfLine(8);
+        QCOMPARE(arc.size(), std::size_t(1));
+        QVERIFY(arc.front() < trace->recordsInError.size() && trace->recordsInError[arc.front()]);
+
+        const ToolpathPolylines* polylines = rig.view.toolpathPolylines();
+        QVERIFY(polylines != nullptr);
+        const std::vector<int> lines = rig.segmentLines();
+        int dashes = 0;
+        for (std::size_t s = 0; s < lines.size(); ++s) {
+            const PathSegment& segment = polylines->segments()[s];
+            QCOMPARE(lines[s] == 8, segment.kind == PathSegmentKind::Error);
+            if (lines[s] != 8)
+                continue;
+            ++dashes;
+            for (std::uint32_t p : {segment.from, segment.to}) {  // on the chord X10 -> X20 at Y0 Z-1
+                const camwb::base::Vec3& point = polylines->points()[p];
+                QVERIFY(point.x >= 10 - 1e-9 && point.x <= 20 + 1e-9);
+                QVERIFY(std::abs(point.y) < 1e-9 && std::abs(point.z + 1) < 1e-9);
+            }
+        }
+        QCOMPARE(dashes, ToolpathPolylines::kErrorDashes);
+        for (const camwb::base::Vec3& point : polylines->points())
+            QVERIFY2(std::abs(point.y) <= 5 + 1e-9, qPrintable(QStringLiteral("a point at Y%1").arg(point.y)));
+        // The cursor on the block still highlights it.
+        rig.editor.gotoLine(8);
+        QCOMPARE(int(rig.view.highlightedSegments().size()), dashes);
+    }
+
+    // The report gives the interpreter's time in milliseconds: "0.000 s" told nothing.
+    void reportGivesTheTraceTimeInMilliseconds()
+    {
+        Rig rig;
+        QSignalSpy messages(&rig.inspector, &NcInspector::message);
+        LOAD_OR_FAIL(rig, QString::fromLatin1(kProgram));
+        QString traced;
+        for (const auto& m : messages)
+            if (m.at(1).toString().startsWith(QLatin1String("Traced ")))
+                traced = m.at(1).toString();
+        const QRegularExpression time(QStringLiteral(" in [0-9]+(\\.[0-9]+)? ms$"));
+        QVERIFY2(time.match(traced).hasMatch(), qPrintable(traced));
+    }
+};
+
+// Picking needs the GL view: run in the Xvfb registration only.
+class InspectorViewTest : public QObject {
+    Q_OBJECT
+
+private slots:
+    void clickInTheViewMovesTheEditor()
+    {
+        Rig rig;
+        rig.view.resize(800, 600);
+        rig.view.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&rig.view));
+        LOAD_OR_FAIL(rig, QString::fromLatin1(kProgram));
+        rig.view.setViewPreset(View3D::Preset::Top);
+        QTest::qWait(50);
+
+        const ToolpathPolylines* polylines = rig.view.toolpathPolylines();
+        const std::vector<int> lines = rig.segmentLines();
+        auto* gl = rig.view.findChild<QWidget*>(QStringLiteral("view3dGl"));
+        QVERIFY(gl != nullptr);
+        for (int line : {13, 7}) {
+            // The middle segment of the block, clicked at its middle.
+            std::vector<std::size_t> ofLine;
+            for (std::size_t s = 0; s < lines.size(); ++s)
+                if (lines[s] == line)
+                    ofLine.push_back(s);
+            QVERIFY(!ofLine.empty());
+            const PathSegment& segment = polylines->segments()[ofLine[ofLine.size() / 2]];
+            const camwb::base::Vec3 middle =
+                (polylines->points()[segment.from] + polylines->points()[segment.to]) * 0.5;
+            const std::optional<QPointF> at = rig.view.projectToWidget(middle);
+            QVERIFY(at.has_value());
+            QVERIFY(rig.view.rect().contains(at->toPoint()));
+            QSignalSpy picked(&rig.view, &View3D::segmentPicked);
+            QTest::mouseClick(gl, Qt::LeftButton, {}, gl->mapFrom(&rig.view, at->toPoint()));
+            QCOMPARE(picked.count(), 1);
+            QCOMPARE(rig.editor.currentLine(), line);
+            QVERIFY(!rig.view.highlightedSegments().empty());  // the jump highlights the block
+        }
+        // Far from every segment: nothing picked, the editor stays.
+        QSignalSpy picked(&rig.view, &View3D::segmentPicked);
+        QTest::mouseClick(gl, Qt::LeftButton, {}, QPoint(3, 3));
+        QCOMPARE(picked.count(), 0);
+        QCOMPARE(rig.editor.currentLine(), 7);
+    }
 };
 
 int main(int argc, char** argv)
 {
     View3D::setDefaultSurfaceFormat();
     QApplication app(argc, argv);
+    QtTestRun run(argc, argv);
     InspectorTest test;
-    return QTest::qExec(&test, argc, argv);
+    run.run(&test);
+    InspectorViewTest view;
+    if (withGl())
+        run.run(&view);
+    else
+        run.notOnThisPlatform("InspectorViewTest", "picking needs OpenGL, which the offscreen platform has not");
+    return run.finish();
 }
 
 #include "InspectorTest.moc"

@@ -1,11 +1,17 @@
 // Drives the real main window: opens the example job, posts through the action registry and
-// checks the editor dock, the 3D view and undo. Runs twice: under Xvfb (GL) and offscreen (no GL).
+// checks the editor dock, the 3D view and undo; unsaved NC edits are never replaced without
+// asking (answered by a ScriptedPrompter). Runs twice: under Xvfb (GL) and offscreen (no GL).
 #include "gui/shell/MainWindow.h"
+#include "QtTestRun.h"
+#include "ScriptedPrompter.h"
+#include "Shots.h"
 #include "gui/actions/ActionRegistry.h"
 #include "gui/editor/NcEditor.h"
 #include "gui/inspector/InspectorPanel.h"
 #include "gui/inspector/ModalStatePanel.h"
 #include "gui/inspector/NcInspector.h"
+#include "gui/shell/NcDocument.h"
+#include "gui/shell/ReportView.h"
 #include "gui/shell/Workbench.h"
 #include "gui/tasks/OperationPanel.h"
 #include "gui/view3d/ToolpathPolylines.h"
@@ -19,6 +25,7 @@
 #include <QDoubleSpinBox>
 #include <QElapsedTimer>
 #include <QFile>
+#include <QFileInfo>
 #include <QGuiApplication>
 #include <QLabel>
 #include <QListWidget>
@@ -32,6 +39,7 @@
 
 using camwb::gui::MainWindow;
 using camwb::gui::NcInspector;
+using Answer = camwb::gui::Prompter::Answer;
 using camwb::gui::View3D;
 using camwb::gui::Workbench;
 
@@ -76,6 +84,34 @@ private:
             return {};
         file.write(text);
         return file.fileName();
+    }
+
+    static QByteArray readFile(const QString& path)
+    {
+        QFile file(path);
+        return file.open(QIODevice::ReadOnly) ? file.readAll() : QByteArray();
+    }
+
+    // The first error of a trace, for a failure's message (QVERIFY2 evaluates it in any case).
+    static QString firstError(const camwb::gui::NcTrace& trace)
+    {
+        for (const auto& d : trace.result.diagnostics)
+            if (d.severity == camwb::nc::Severity::Error)
+                return QString::fromStdString(camwb::nc::formatDiagnostic(d));
+        return QStringLiteral("no error");
+    }
+
+    // Gives the window a prompter the test answers; the window owns it.
+    static ScriptedPrompter* scriptPrompts(MainWindow& window)
+    {
+        auto* prompter = new ScriptedPrompter;
+        window.setPrompter(std::unique_ptr<camwb::gui::Prompter>(prompter));
+        return prompter;
+    }
+
+    static QString ncDockTitle(MainWindow& window)
+    {
+        return window.findChild<QDockWidget*>(QStringLiteral("ncDock"))->windowTitle();
     }
 
 private slots:
@@ -202,8 +238,7 @@ private slots:
         QVERIFY(window.ncEditor()->text().startsWith(QLatin1String("(part)")));
         QVERIFY(waitForTrace(window));
         const auto trace = window.inspector()->trace();
-        if (trace->program.empty() && trace->result.hasErrors())
-            QSKIP(qPrintable(QString::fromStdString(trace->result.diagnostics.front().message)));
+        QVERIFY2(!(trace->program.empty() && trace->result.hasErrors()), qPrintable(firstError(*trace)));
         QCOMPARE(trace->dialect, camwb::nc::Dialect::Iso);
         QVERIFY(window.view()->hasToolpathActor());
         QVERIFY(window.view()->toolpathSegmentCount() > 10);
@@ -257,9 +292,8 @@ private slots:
         QVERIFY(waitForTrace(window));
         const auto trace = window.inspector()->trace();
         QCOMPARE(trace->dialect, camwb::nc::Dialect::Sinumerik);
-        if (trace->program.empty() && trace->result.hasErrors())
-            QSKIP(qPrintable(QStringLiteral("SINUMERIK interpreter: ") +
-                             QString::fromStdString(trace->result.diagnostics.front().message)));
+        QVERIFY2(!(trace->program.empty() && trace->result.hasErrors()),
+                 qPrintable(QStringLiteral("SINUMERIK interpreter: ") + firstError(*trace)));
         // The view shows the trace of the posted program, not the operations' toolpath.
         QVERIFY(window.inspector()->showsInView());
         QCOMPARE(window.view()->toolpathSegmentCount(),
@@ -328,20 +362,17 @@ private slots:
             timings.show * 1e3, shownMs, nextFrameMs, longestStall, window.view()->toolpathSegmentCount(),
             int(window.inspector()->trace()->result.diagnostics.size()));
         const auto trace = window.inspector()->trace();
-        if (trace->program.empty() && trace->result.hasErrors())
-            QSKIP(qPrintable(QString::fromStdString(trace->result.diagnostics.front().message)));
+        QVERIFY2(!(trace->program.empty() && trace->result.hasErrors()), qPrintable(firstError(*trace)));
         QVERIFY(window.view()->toolpathSegmentCount() >= lines - 10);
         window.ncEditor()->gotoLine(lines / 2);
         QVERIFY(!window.view()->highlightedSegments().empty());
     }
 
-    // Pictures of the inspector for people (CAMWB_SHOTS_DIR=<folder>): posted SINUMERIK and ISO
-    // programs with the cursor on an arc block.
+    // Pictures of the inspector (kept in CAMWB_SHOTS_DIR when set): posted SINUMERIK, ISO and
+    // Heidenhain programs with the cursor on an arc block, and the example job. Each must show
+    // something (the grab of a window that drew nothing is one colour).
     void inspectorScreenshots()
     {
-        const QString shots = qEnvironmentVariable("CAMWB_SHOTS_DIR");
-        if (shots.isEmpty() || !withGl())
-            QSKIP("set CAMWB_SHOTS_DIR (Xvfb run) to write the inspector screenshots");
         struct Shot {
             const char* program;
             const char* arcBlock;  // text that starts the block to put the cursor on
@@ -364,9 +395,10 @@ private slots:
                 if (lines[i].startsWith(QLatin1String(shot.arcBlock)) && line == 1 &&
                     !window.inspector()->trace()->recordsOfLine(i + 1).empty())
                     line = i + 1;
+            QVERIFY2(line > 1, shot.arcBlock);
             window.ncEditor()->gotoLine(line);
             QTest::qWait(300);
-            QVERIFY(window.grab().save(shots + QLatin1Char('/') + QLatin1String(shot.file)));
+            saveShot(&window, QLatin1String(shot.file));
         }
         // The example job posted: the model with the trace of its program, cursor on an arc.
         MainWindow window;
@@ -383,13 +415,16 @@ private slots:
             }
         }
         QTest::qWait(300);
-        QVERIFY(window.grab().save(shots + QStringLiteral("/posted-job.png")));
+        saveShot(&window, QStringLiteral("posted-job.png"));
     }
 
+    // Offscreen there is no OpenGL; under Xvfb CAMWB_NO_OPENGL=1 turns it off the same way.
     void withoutOpenGlTheViewSaysSo()
     {
-        if (withGl())
-            QSKIP("runs on the offscreen platform only");
+        struct NoOpenGl {
+            NoOpenGl() { qputenv("CAMWB_NO_OPENGL", "1"); }
+            ~NoOpenGl() { qunsetenv("CAMWB_NO_OPENGL"); }
+        } noOpenGl;
         MainWindow window;
         window.show();
         QVERIFY(!window.view()->hasOpenGl());
@@ -401,14 +436,129 @@ private slots:
         QVERIFY(!View3D::openGlAvailable(&reason));
         QVERIFY(!reason.isEmpty());
     }
+
+    // Another NC file over unsaved edits: asked first. Cancel keeps everything, Save writes the
+    // edits to their file, Discard drops them; the dock's title marks unsaved edits.
+    void ncEditsAskBeforeAnotherFileReplacesThem()
+    {
+        QTemporaryDir dir;
+        const QByteArray original = "G0 X0\nG1 X10 F100\nM30\n";
+        const QString a = writeFile(dir, QStringLiteral("a.ngc"), original);
+        const QString b = writeFile(dir, QStringLiteral("b.ngc"), "G0 X5\nM30\n");
+        MainWindow window;
+        ScriptedPrompter* prompter = scriptPrompts(window);
+        auto* editor = window.ncEditor();
+        QVERIFY(window.openNcFile(a));
+        QVERIFY(window.openNcFile(b));  // no edits: no question
+        QVERIFY(window.openNcFile(a));
+        QVERIFY(prompter->questions.isEmpty());
+        QVERIFY(!ncDockTitle(window).contains(QLatin1Char('*')));
+
+        const QString edited = QStringLiteral("G0 X0\nG1 X12 F100\nM30\n");
+        editor->replaceText(edited);  // as typing would
+        QVERIFY(window.ncDocument()->hasUnsavedEdits());
+        QVERIFY2(ncDockTitle(window).contains(QLatin1String("a.ngc*")), qPrintable(ncDockTitle(window)));
+
+        prompter->answers.push_back(Answer::Cancel);
+        QVERIFY(!window.openNcFile(b));
+        QCOMPARE(int(prompter->questions.size()), 1);
+        QVERIFY2(prompter->questions.last().text.contains(QLatin1String("a.ngc")),
+                 qPrintable(prompter->questions.last().text));
+        QCOMPARE(editor->text(), edited);
+        QCOMPARE(window.ncDocument()->filePath(), QFileInfo(a).absoluteFilePath());
+
+        prompter->answers.push_back(Answer::Accept);
+        QVERIFY(window.openNcFile(b));
+        QCOMPARE(readFile(a), edited.toUtf8());
+        QVERIFY(editor->text().startsWith(QLatin1String("G0 X5")));
+        QVERIFY(!window.ncDocument()->hasUnsavedEdits());
+
+        editor->replaceText(QStringLiteral("G0 X6\nM30\n"));
+        prompter->answers.push_back(Answer::Discard);
+        QVERIFY(window.openNcFile(a));
+        QCOMPARE(readFile(b), QByteArray("G0 X5\nM30\n"));
+        QCOMPARE(editor->text(), edited);
+        QCOMPARE(int(prompter->questions.size()), 3);
+        QCOMPARE(prompter->unanswered, 0);
+    }
+
+    // F9 and any other post (an operation edited, undo) would put the job's program in the editor:
+    // asked first; Cancel keeps the edits (and says the new program is not shown), Discard shows
+    // the posted program, read-only again.
+    void ncEditsAskBeforeAPostReplacesThem()
+    {
+        QTemporaryDir dir;
+        const QByteArray original = "G0 X0\nG1 X10 F100\nM30\n";
+        const QString path = writeFile(dir, QStringLiteral("part.ngc"), original);
+        MainWindow window;
+        ScriptedPrompter* prompter = scriptPrompts(window);
+        openExample(window);
+        QVERIFY(window.ncEditor()->isReadOnly());  // the posted program is what the post made
+        QVERIFY(window.openNcFile(path));
+        QVERIFY(!window.ncEditor()->isReadOnly());
+        const QString edited = QStringLiteral("G0 X0\nG1 X11 F100\nM30\n");
+        window.ncEditor()->replaceText(edited);
+
+        Workbench& wb = window.workbench();
+        QSignalSpy posted(&wb, &Workbench::postFinished);
+        prompter->answers.push_back(Answer::Cancel);
+        QVERIFY(window.actions().trigger(QStringLiteral("Cam.Job.Post")));
+        QCOMPARE(int(prompter->questions.size()), 1);
+        QVERIFY(!wb.isBusy());  // not posted
+        QCOMPARE(window.ncEditor()->text(), edited);
+
+        prompter->answers.push_back(Answer::Cancel);
+        wb.post();  // as an edited operation or undo reposts
+        QVERIFY(posted.wait(120000));
+        QCOMPARE(int(prompter->questions.size()), 2);
+        QCOMPARE(window.ncEditor()->text(), edited);
+        QVERIFY(window.reportView()->toPlainText().contains(QLatin1String("keeps the unsaved edits of part.ngc*")));
+
+        prompter->answers.push_back(Answer::Discard);
+        QVERIFY(window.actions().trigger(QStringLiteral("Cam.Job.Post")));
+        QVERIFY(posted.wait(120000));
+        QCOMPARE(int(prompter->questions.size()), 3);
+        QCOMPARE(window.ncEditor()->text(), wb.ncText());
+        QVERIFY(window.ncEditor()->isReadOnly());
+        QCOMPARE(readFile(path), original);  // discarded, the file untouched
+        QCOMPARE(prompter->unanswered, 0);
+    }
+
+    // Another job and closing the window ask too.
+    void ncEditsAskBeforeAnotherJobOrClosing()
+    {
+        QTemporaryDir dir;
+        const QString path = writeFile(dir, QStringLiteral("part.ngc"), "G0 X0\nM30\n");
+        MainWindow window;
+        ScriptedPrompter* prompter = scriptPrompts(window);
+        window.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&window));
+        QVERIFY(window.openNcFile(path));
+        window.ncEditor()->replaceText(QStringLiteral("G0 X1\nM30\n"));
+
+        prompter->answers.push_back(Answer::Cancel);
+        QVERIFY(!window.openJob(QStringLiteral(CAMWB_EXAMPLE_JOB)));
+        QVERIFY(window.workbench().job().modelPath.empty());  // no job opened
+        prompter->answers.push_back(Answer::Cancel);
+        QVERIFY(!window.close());
+        QVERIFY(window.isVisible());
+        QCOMPARE(int(prompter->questions.size()), 2);
+
+        prompter->answers.push_back(Answer::Accept);
+        QVERIFY(window.close());
+        QCOMPARE(readFile(path), QByteArray("G0 X1\nM30\n"));
+        QCOMPARE(prompter->unanswered, 0);
+    }
 };
 
 int main(int argc, char** argv)
 {
     View3D::setDefaultSurfaceFormat();
     QApplication app(argc, argv);
+    QtTestRun run(argc, argv);
     MainWindowTest test;
-    return QTest::qExec(&test, argc, argv);
+    run.run(&test);
+    return run.finish();
 }
 
 #include "MainWindowTest.moc"

@@ -1,6 +1,7 @@
 // Tests of the GUI widgets library: ToolpathPolylines (pure), View3D with a real GL context under
 // Xvfb and without one on the offscreen platform (run with --no-gl), and the NC editor.
 // CAMWB_VIEW3D_SCREENSHOT=<file.png> saves what the 3D view rendered, for a look by eye.
+#include "QtTestRun.h"
 #include "gui/editor/NcEditor.h"
 #include "gui/editor/NcStyles.h"
 #include "gui/view3d/ToolpathPolylines.h"
@@ -440,19 +441,21 @@ int main(int argc, char** argv)
     int count = static_cast<int>(args.size());
     View3D::setDefaultSurfaceFormat();
     QApplication app(count, args.data());
-    int failures = 0;
+    QtTestRun run(count, args.data());
+    View3DNoGlTest noGlTest;
+    ToolpathPolylinesTest polylines;
+    View3DTest view;
+    run.run(&polylines);
     if (noGl) {
-        View3DNoGlTest noGlTest;
-        failures += QTest::qExec(&noGlTest, count, args.data());
+        run.run(&noGlTest);
+        run.notOnThisPlatform("View3DTest", "the Xvfb registration runs it");
     } else {
-        ToolpathPolylinesTest polylines;
-        failures += QTest::qExec(&polylines, count, args.data());
-        View3DTest view;
-        failures += QTest::qExec(&view, count, args.data());
+        run.run(&view);
+        run.notOnThisPlatform("View3DNoGlTest", "the offscreen registration (--no-gl) runs it");
     }
     NcEditorTest editor;
-    failures += QTest::qExec(&editor, count, args.data());
-    return failures == 0 ? 0 : 1;
+    run.run(&editor);
+    return run.finish();
 }
 
 #include "WidgetsTest.moc"

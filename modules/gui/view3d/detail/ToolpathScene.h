@@ -41,8 +41,9 @@ public:
         std::vector<std::uint32_t> rapidSegments;
     };
 
-    // Safe on any thread: touches no render window.
-    static std::shared_ptr<ToolpathScene> build(const toolpath::Toolpath& toolpath, double chordToleranceMm);
+    // Safe on any thread: touches no render window. `recordsInError`: see ToolpathPolylines.
+    static std::shared_ptr<ToolpathScene> build(const toolpath::Toolpath& toolpath, double chordToleranceMm,
+                                                const std::vector<bool>& recordsInError = {});
 
     const ToolpathPolylines& polylines() const { return m_polylines; }
     const std::vector<Part>& parts() const { return m_parts; }
@@ -79,6 +80,8 @@ private:
 // Colours of the backplot (as SinuTrain and CAMotics draw them): rapid red, feed green, arc blue.
 inline constexpr unsigned char kFeedRgb[3]{25, 160, 55};
 inline constexpr unsigned char kArcRgb[3]{40, 95, 230};
+// Blocks with an error: magenta dashes, a colour no move has.
+inline constexpr unsigned char kErrorRgb[3]{225, 0, 200};
 inline constexpr double kRapidColor[3]{0.90, 0.12, 0.10};
 inline constexpr double kHighlightColor[3]{1.0, 0.85, 0.0};
 

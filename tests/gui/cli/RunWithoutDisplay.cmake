@@ -1,0 +1,17 @@
+# Runs `${APP} ${OPTION}` (the caller has unset DISPLAY, WAYLAND_DISPLAY and QT_QPA_PLATFORM) and
+# checks exit code 0, the expected text on stdout and nothing from Qt's platform plugins.
+execute_process(COMMAND ${APP} ${OPTION} RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+if(NOT rc EQUAL 0)
+  message(FATAL_ERROR "${APP} ${OPTION}: expected exit 0, got ${rc}\nstdout: ${out}\nstderr: ${err}")
+endif()
+if(OPTION STREQUAL "--help")
+  set(expected "^Usage: [^\n]*camwb \\[options\\] job\n.*-v, --version.*--screenshot <file>")
+else()
+  set(expected "^CAM Workbench ${VERSION}\n$")
+endif()
+if(NOT out MATCHES "${expected}")
+  message(FATAL_ERROR "${APP} ${OPTION}: stdout does not match '${expected}':\n${out}")
+endif()
+if(NOT err STREQUAL "")
+  message(FATAL_ERROR "${APP} ${OPTION}: unexpected stderr:\n${err}")
+endif()

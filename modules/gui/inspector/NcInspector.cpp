@@ -201,6 +201,8 @@ void NcInspector::showInEditor(const NcTrace& trace)
 
 void NcInspector::reportDiagnostics(const NcTrace& trace)
 {
+    if (m_editor != nullptr && m_editor->text().isEmpty())
+        return;  // no program (a job whose post failed or whose model is missing): nothing to report
     const auto& diagnostics = trace.result.diagnostics;
     const QString name = m_path.isEmpty() ? tr("NC program") : QFileInfo(m_path).fileName();
     int reported = 0;

@@ -6,6 +6,7 @@
 
 #include <QMainWindow>
 
+#include <memory>
 #include <optional>
 
 class QDockWidget;
@@ -14,11 +15,13 @@ class QProgressBar;
 namespace camwb::gui {
 
 class ActionRegistry;
+class Banner;
 class InspectorPanel;
 class NcInspector;
 class JobTree;
 class NcEditor;
 class OperationPanel;
+class Prompter;
 class ReportView;
 class View3D;
 class Workbench;
@@ -39,16 +42,25 @@ public:
     InspectorPanel* inspectorPanel() const { return m_inspectorPanel; }
     // The open task panel (docked on the right), or nullptr.
     OperationPanel* taskPanel() const { return m_taskPanel; }
+    // Asks the user's questions and shows the errors that stop an action (dialogs by default;
+    // tests put in one that answers by itself).
+    Prompter& prompter() const { return *m_prompter; }
+    void setPrompter(std::unique_ptr<Prompter> prompter);
 
     // A .camwb job, or any other file as an NC program (openNcFile).
     bool openJob(const QString& path);
     // Reads an NC program of any dialect into the editor (editable) and traces it.
     bool openNcFile(const QString& path);
-    // Opens the task panel of operation `index`; replaces (cancels) a panel already open.
+    // Opens the task panel of operation `index`; a panel already open with unapplied changes is
+    // first settled (settleTaskPanel), else replaced.
     void editOperation(int index);
     // Proposes an operation of `kind` from the faces picked in the 3D view (or the model's
-    // defaults) and opens its panel; OK adds it. False (reported) when the model has nothing.
+    // defaults) and opens its panel; OK adds it. False (shown) when the model has nothing, or
+    // when the user keeps the open panel's unapplied changes.
     bool newOperation(document::OperationKind kind);
+    // Closes the open task panel; with unapplied changes the user is asked first: Apply (refused
+    // when the operation cannot be made), Discard, or Cancel (false: the panel stays).
+    bool settleTaskPanel();
 
 protected:
     void closeEvent(QCloseEvent* event) override;
@@ -63,6 +75,8 @@ private:
                        const std::optional<ops::ToolController>& newTool);
     void closeTaskPanel();
     bool confirmDiscard();
+    void registerDockActions(const QString& viewMenu);
+    void showProgramState();
 
     Workbench* m_workbench;
     ActionRegistry* m_actions;
@@ -75,6 +89,11 @@ private:
     InspectorPanel* m_inspectorPanel;
     QDockWidget* m_taskDock = nullptr;
     OperationPanel* m_taskPanel = nullptr;
+    std::unique_ptr<Prompter> m_prompter;
+    Banner* m_viewBanner;
+    Banner* m_ncBanner;
+    QDockWidget* m_ncDock = nullptr;
+    bool m_editorShowsPosted = false;  // the editor holds the job's posted program (not an opened file)
     bool m_fitWithToolpath = false;
     bool m_fitWithTrace = false;
 };

@@ -1011,6 +1011,14 @@ CAM and post-processor workbench.</source>
         <source>NC program (out of date)</source>
         <translation type="unfinished"></translation>
     </message>
+    <message numerus="yes">
+        <source> (and %n more, see the job tree)</source>
+        <translation type="unfinished">
+            <numerusform></numerusform>
+            <numerusform></numerusform>
+            <numerusform></numerusform>
+        </translation>
+    </message>
 </context>
 <context>
     <name>camwb::gui::ModalStatePanel</name>

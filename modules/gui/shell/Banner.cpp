@@ -15,10 +15,10 @@ Banner::Banner(const QString& objectName, QWidget* parent) : QLabel(parent)
     hide();
 }
 
-void Banner::setMessage(const QString& text)
+void Banner::setMessage(const QString& text, const QString& details)
 {
     setText(text);
-    setToolTip(text);
+    setToolTip(details.isEmpty() ? text : details);
     setVisible(!text.isEmpty());
 }
 

@@ -10,7 +10,8 @@ class Banner : public QLabel {
     Q_OBJECT
 public:
     explicit Banner(const QString& objectName, QWidget* parent = nullptr);
-    void setMessage(const QString& text);  // empty: hidden
+    // Empty: hidden. `details` (default: the text) is the tooltip, for what is too long to show.
+    void setMessage(const QString& text, const QString& details = {});
 
     // One widget holding `banner` above `content` (for a dock or the central area).
     static QWidget* above(Banner* banner, QWidget* content, QWidget* parent);

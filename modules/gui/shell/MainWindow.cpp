@@ -453,16 +453,22 @@ void MainWindow::registerDockActions(const QString& viewMenu)
 void MainWindow::showProgramState()
 {
     const QString& problem = m_workbench->programProblem();
+    // The first reason in the banner (a long list would hide the view); all of them in its
+    // tooltip, and each failing operation's in the job tree.
+    const QStringList reasons = problem.split(QLatin1Char('\n'), Qt::SkipEmptyParts);
+    QString first = reasons.value(0);
+    if (reasons.size() > 1)
+        first += tr(" (and %n more, see the job tree)", nullptr, static_cast<int>(reasons.size() - 1));
     QString text;
     if (!problem.isEmpty())
-        text = m_workbench->ncText().isEmpty() ? tr("No NC program: %1").arg(problem)
+        text = m_workbench->ncText().isEmpty() ? tr("No NC program: %1").arg(first)
                                                : tr("Out of date — the last post failed; this is the previous "
                                                     "program and it cannot be saved:\n%1")
-                                                     .arg(problem);
+                                                     .arg(first);
     // Only while the editor (and so the view's trace) shows the posted program, not an NC file
     // opened apart.
-    m_viewBanner->setMessage(m_editorShowsPosted ? text : QString());
-    m_ncBanner->setMessage(m_editorShowsPosted ? text : QString());
+    m_viewBanner->setMessage(m_editorShowsPosted ? text : QString(), problem);
+    m_ncBanner->setMessage(m_editorShowsPosted ? text : QString(), problem);
     m_ncDock->setWindowTitle(m_editorShowsPosted && !problem.isEmpty() ? tr("NC program (out of date)")
                                                                        : tr("NC program"));
 }

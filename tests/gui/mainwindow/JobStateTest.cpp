@@ -615,7 +615,6 @@ private slots:
         QTemporaryDir dir;
         MainWindow window;
         QVERIFY(openExample(window, dir));
-        window.view()->setViewPreset(camwb::gui::View3D::Preset::Top);
         const QImage before = window.view()->grabImage();
         // A point of the top face away from the toolpath: between the pocket and the through hole.
         const auto at = window.view()->projectToWidget({58.0, 50.0, 15.0});

@@ -1786,5 +1786,9 @@ Keep the operations without them (they are marked until you choose new geometry 
         <source>unresolved: the model is not loaded (%1)</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <source>The job is being computed; save the NC program when the post has finished.</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 </TS>

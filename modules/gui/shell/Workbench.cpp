@@ -131,6 +131,11 @@ void Workbench::post()
 
 bool Workbench::ncSavable()
 {
+    if (m_busy) {
+        // Every edit starts a compute at once: while it runs, the program is of the job before.
+        fail(tr("Save NC program"), tr("The job is being computed; save the NC program when the post has finished."));
+        return false;
+    }
     if (!isProgramCurrent()) {
         fail(tr("Save NC program"),
              tr("The NC program is out of date and was not saved: %1\nFix the job and post it again.")

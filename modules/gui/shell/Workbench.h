@@ -65,9 +65,10 @@ public:
     void importModel(const QString& path);
     // Recomputes every operation and posts the program in the background; a failure is shown.
     void post();
-    // Whether there is a current program to save; when not, says why (shown) and answers false.
+    // Whether there is a current program to save; when not, says why (shown) and answers false:
+    // out of date, none, or being recomputed (the program is of the job before the last edit).
     bool ncSavable();
-    // Refused (false, the reason shown) while the program is out of date or there is none.
+    // Refused (false, the reason shown) unless ncSavable().
     bool saveNc(const QString& path);
 
     // Adds an operation of `kind` made from the selected faces or the model's defaults

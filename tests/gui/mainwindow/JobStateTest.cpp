@@ -208,6 +208,14 @@ private slots:
 
         QSignalSpy posted(&wb, &Workbench::postFinished);
         wb.updateOperation(0, tooDeep(window));
+        // While the edit is computed the program is still the one before it: not saved either.
+        const QString target = dir.filePath(QStringLiteral("out.mpf"));
+        prompter->files = {target};
+        QVERIFY(wb.isBusy());
+        QVERIFY(window.actions().trigger(QStringLiteral("Cam.Job.SaveNc")));
+        QVERIFY(!QFile::exists(target));
+        QCOMPARE(prompter->errors.size(), 1);
+        QVERIFY(prompter->errors.last().contains(QLatin1String("being computed")));
         QVERIFY(posted.wait(120000));
         QCOMPARE(posted.last().first().toBool(), false);
         waitIdle(window);
@@ -231,19 +239,17 @@ private slots:
         shot(window, "failed-post.png");
 
         // Save NC refuses it, says why and asks for no file name.
-        const QString target = dir.filePath(QStringLiteral("out.mpf"));
-        prompter->files = {target};
         QVERIFY(window.actions().trigger(QStringLiteral("Cam.Job.SaveNc")));
         QVERIFY(!QFile::exists(target));
         QCOMPARE(prompter->fileRequests, 0);
-        QCOMPARE(prompter->errors.size(), 1);
+        QCOMPARE(prompter->errors.size(), 2);
         QVERIFY(prompter->errors.last().contains(QLatin1String("out of date")));
 
         // F9 says it failed where the user looks, not only in the report.
         QVERIFY(window.actions().trigger(QStringLiteral("Cam.Job.Post")));
         QVERIFY(posted.wait(120000));
         waitIdle(window);
-        QCOMPARE(prompter->errors.size(), 2);
+        QCOMPARE(prompter->errors.size(), 3);
         QVERIFY(prompter->errors.last().contains(QLatin1String("cutting length")));
 
         // Undone: current again, the marks go, and Save NC writes the program.

@@ -730,6 +730,14 @@
         <source>%1, T%2, %3</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <source>Error</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>not loaded: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>camwb::gui::MainWindow</name>
@@ -915,10 +923,6 @@ CAM and post-processor workbench.</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>Discard the unsaved changes of this job?</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
         <source>NC inspector</source>
         <translation type="unfinished"></translation>
     </message>
@@ -983,6 +987,55 @@ CAM and post-processor workbench.</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
+        <source>Select an operation in the job tree first.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The job&apos;s model is not loaded: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>New operation</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Unapplied changes</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The task panel of &quot;%1&quot; has changes that are not applied.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Apply</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Discard</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The job has changes that are not saved. Save them?</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>No NC program: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Out of date — the last post failed; this is the previous program and it cannot be saved:
+%1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message numerus="yes">
+        <source> (and %n more, see the job tree)</source>
+        <translation type="unfinished">
+            <numerusform></numerusform>
+            <numerusform></numerusform>
+            <numerusform></numerusform>
+        </translation>
+    </message>
+    <message>
         <source>Opening the job %1 replaces them with its program.</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1012,6 +1065,10 @@ CAM and post-processor workbench.</source>
     </message>
     <message>
         <source>NC program — %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source> (out of date)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
@@ -1378,6 +1435,11 @@ Save them first?</source>
         <source>Warning: %1</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <source>Not applied: this operation cannot be made. Change it, or Cancel.
+%1</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>camwb::gui::PocketPanel</name>
@@ -1734,6 +1796,83 @@ Save them first?</source>
     </message>
     <message>
         <source>Posted %1 lines with %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Open job</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Save job</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Save NC program</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The NC program is out of date and was not saved: %1
+Fix the job and post it again.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Import model</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message numerus="yes">
+        <source>The previous model is not loaded, so the references of the %n operation(s) cannot be checked against %1. Keep them with their face, edge and hole numbers (check each operation), or delete them?</source>
+        <translation type="unfinished">
+            <numerusform></numerusform>
+            <numerusform></numerusform>
+            <numerusform></numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Keep the operations</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Delete the operations</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>These references of the operations are not in %1:
+%2
+
+Keep the operations without them (they are marked until you choose new geometry in their task panels), or delete the operations that lost references?</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Delete those operations</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Import of %1 cancelled; the job is unchanged.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message numerus="yes">
+        <source>Deleted %n operation(s) that lost references.</source>
+        <translation type="unfinished">
+            <numerusform></numerusform>
+            <numerusform></numerusform>
+            <numerusform></numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Kept the operations; these references are not in the new model:
+%1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Post</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>unresolved: the model is not loaded (%1)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The job is being computed; save the NC program when the post has finished.</source>
         <translation type="unfinished"></translation>
     </message>
 </context>

@@ -4,6 +4,7 @@
 #include "post/PostRegistry.h"
 
 #include <algorithm>
+#include <optional>
 
 namespace camwb::document {
 
@@ -21,6 +22,7 @@ base::Result<toolpath::Toolpath> computeProgram(const Job& job, const occ::Model
     program.add(toolpath::WorkOffset{job.workOffset});
     int currentTool = -1;
     const double count = static_cast<double>(std::max<std::size_t>(job.operations.size(), 1));
+    std::optional<base::Error> firstError;
 
     for (std::size_t i = 0; i < job.operations.size(); ++i) {
         const int index = static_cast<int>(i);
@@ -29,8 +31,16 @@ base::Result<toolpath::Toolpath> computeProgram(const Job& job, const occ::Model
         if (progress.report)
             slice.report = [&, i](double f) { progress.report((static_cast<double>(i) + f) / count); };
         auto section = computeOperation(job, index, model, slice);
-        if (!section)
-            return section.error();
+        if (!section) {
+            if (report)
+                report->failures.push_back({index, section.error().toString()});
+            if (!report || !report->allFailures || progress.cancelled())
+                return section.error();
+            if (!firstError)
+                firstError = section.error();
+            report->counts.emplace_back();  // keeps `counts` in job order
+            continue;
+        }
         const Operation& op = job.operations[i];
         if (report) {
             // The operations name themselves in their warnings ("pocket \"P\": ...").
@@ -49,6 +59,8 @@ base::Result<toolpath::Toolpath> computeProgram(const Job& job, const occ::Model
             }
         }
     }
+    if (firstError)
+        return *firstError;
     return program;
 }
 

@@ -79,6 +79,8 @@ base::Result<OperationGeometry> resolveGeometry(const Operation& op, const occ::
 {
     const OperationKind kind = op.kind();
     const bool wantsHoles = kind == OperationKind::Helix || kind == OperationKind::Drill;
+    if (model.empty())
+        return refError(op, "no model is loaded");
     if (!model.hasBRep())
         return refError(op, "the model has no solid geometry (STL meshes cannot be machined from)");
     if (wantsHoles && !op.geometry.faces.empty())

@@ -11,11 +11,20 @@ ActionRegistry::ActionRegistry(QObject* parent) : QObject(parent) {}
 
 QAction* ActionRegistry::add(const ActionSpec& spec)
 {
-    Q_ASSERT_X(!m_byId.count(spec.id), "ActionRegistry::add", "duplicate action id");
     auto* action = new QAction(spec.text, this);
-    action->setObjectName(spec.id);
     action->setShortcut(spec.shortcut);
-    action->setToolTip(spec.toolTip.isEmpty() ? QString(spec.text).remove('&') : spec.toolTip);
+    QString label = QString(spec.text).remove('&');
+    action->setToolTip(spec.toolTip.isEmpty() ? label : spec.toolTip);
+    if (label.endsWith(QChar(0x2026)))
+        label.chop(1);
+    action->setIconText(label);
+    return adopt(spec, action);
+}
+
+QAction* ActionRegistry::adopt(const ActionSpec& spec, QAction* action)
+{
+    Q_ASSERT_X(!m_byId.count(spec.id), "ActionRegistry::add", "duplicate action id");
+    action->setObjectName(spec.id);
     action->setData(spec.id);
     m_entries.push_back({spec, action});
     m_byId[spec.id] = action;

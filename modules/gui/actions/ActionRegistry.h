@@ -31,8 +31,13 @@ class ActionRegistry : public QObject {
 public:
     explicit ActionRegistry(QObject* parent = nullptr);
 
-    // Registers and returns the action (owned by the registry). Ids must be unique.
+    // Registers and returns the action (owned by the registry). Ids must be unique. Its toolbar
+    // label (iconText) is fixed to the spec's text, so a text that changes later (Undo <step>)
+    // changes the menu, not the toolbar's width.
     QAction* add(const ActionSpec& spec);
+    // Registers an action made elsewhere (a dock's show/hide action) for the menus and by id; it
+    // keeps its own text and owner.
+    QAction* adopt(const ActionSpec& spec, QAction* action);
     QAction* action(const QString& id) const;  // nullptr when unknown
     QStringList ids() const;                   // in registration order
     // Triggers an enabled action by id; false when unknown or disabled.

@@ -163,8 +163,12 @@ void NcInspector::finish(const std::shared_ptr<Result>& result)
     m_timings.show = show.nsecsElapsed() * 1e-9;
     m_timings.total = result->requested.nsecsElapsed() * 1e-9;
 
-    reportDiagnostics(*m_trace);
-    if (m_editor != nullptr)
+    // No program (a job whose post failed or whose model is missing) has nothing to report; its
+    // empty trace only clears the view.
+    const bool noProgram = m_editor != nullptr && m_editor->text().isEmpty();
+    if (!noProgram)
+        reportDiagnostics(*m_trace);
+    if (m_editor != nullptr && !noProgram)
         showInEditor(*m_trace);
     m_highlighted.clear();
     if (m_editor != nullptr)

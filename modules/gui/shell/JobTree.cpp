@@ -4,6 +4,7 @@
 
 #include <QFileInfo>
 #include <QHeaderView>
+#include <QStyle>
 
 namespace camwb::gui {
 
@@ -33,6 +34,22 @@ QString geometrySummary(const document::GeometryRefs& geometry)
     return parts.isEmpty() ? JobTree::tr("no geometry") : parts.join(QStringLiteral(", "));
 }
 
+// In red with the error icon, and the reason as a child row (read without hovering) and tooltip.
+void markProblem(QTreeWidgetItem* item, const QString& problem)
+{
+    const QBrush red(QColor(0xb0, 0x00, 0x20));
+    item->setIcon(0, item->treeWidget()->style()->standardIcon(QStyle::SP_MessageBoxCritical));
+    for (int column : {0, 1}) {
+        item->setForeground(column, red);
+        item->setToolTip(column, problem);
+    }
+    auto* reason = new QTreeWidgetItem(item, {JobTree::tr("Error"), problem});
+    reason->setForeground(0, red);
+    reason->setForeground(1, red);
+    reason->setToolTip(1, problem);
+    reason->setData(0, Qt::UserRole, QStringLiteral("problem"));
+}
+
 }  // namespace
 
 JobTree::JobTree(Workbench& workbench, QWidget* parent) : QTreeWidget(parent), m_workbench(workbench)
@@ -43,6 +60,7 @@ JobTree::JobTree(Workbench& workbench, QWidget* parent) : QTreeWidget(parent), m
     header()->setSectionResizeMode(0, QHeaderView::ResizeToContents);
     connect(&m_workbench, &Workbench::jobChanged, this, &JobTree::rebuild);
     connect(&m_workbench, &Workbench::modelChanged, this, &JobTree::rebuild);
+    connect(&m_workbench, &Workbench::programStateChanged, this, &JobTree::rebuild);
     connect(this, &QTreeWidget::itemDoubleClicked, this, [this](QTreeWidgetItem* item) {
         const QVariant op = item->data(0, kOperationRole);
         if (op.isValid())
@@ -68,6 +86,8 @@ void JobTree::rebuild()
         jobItem, {tr("Model"),
                   job.modelPath.empty() ? tr("(none)") : QFileInfo(QString::fromStdString(job.modelPath)).fileName()});
     model->setToolTip(1, QString::fromStdString(job.modelPath));
+    if (!m_workbench.modelProblem().isEmpty())
+        markProblem(model, tr("not loaded: %1").arg(m_workbench.modelProblem()));
     if (m_workbench.model().hasBRep())
         new QTreeWidgetItem(model, {tr("Faces"), QString::number(m_workbench.model().faceCount())});
 
@@ -100,6 +120,9 @@ void JobTree::rebuild()
                                                           .arg(op.toolNumber)
                                                           .arg(geometrySummary(op.geometry))});
         item->setData(0, kOperationRole, static_cast<int>(i));
+        const QString problem = m_workbench.operationProblem(static_cast<int>(i));
+        if (!problem.isEmpty())
+            markProblem(item, problem);
     }
     expandAll();
 }

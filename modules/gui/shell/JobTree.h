@@ -1,5 +1,6 @@
 // The job tree dock's widget: model, stock, tools and operations of the current job, rebuilt
-// from the Workbench on every change. Double-clicking an operation asks to edit it.
+// from the Workbench on every change. An operation that cannot be made (and a model that cannot
+// be read) is shown in red with the reason. Double-clicking an operation asks to edit it.
 #pragma once
 
 #include <QTreeWidget>

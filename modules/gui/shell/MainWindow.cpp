@@ -8,6 +8,7 @@
 #include "gui/inspector/InspectorPanel.h"
 #include "gui/inspector/ModalStatePanel.h"
 #include "gui/inspector/NcInspector.h"
+#include "gui/shell/Banner.h"
 #include "gui/shell/JobTree.h"
 #include "gui/shell/NcDocument.h"
 #include "gui/shell/NewOperation.h"
@@ -21,7 +22,6 @@
 #include <QAction>
 #include <QCloseEvent>
 #include <QDockWidget>
-#include <QFileDialog>
 #include <QFileInfo>
 #include <QMenuBar>
 #include <QMessageBox>
@@ -60,16 +60,21 @@ MainWindow::MainWindow(QWidget* parent) :
     m_jobTree(new JobTree(*m_workbench, this)),
     m_progress(new QProgressBar(this)),
     m_inspector(new NcInspector(this)),
-    m_inspectorPanel(new InspectorPanel(this))
+    m_inspectorPanel(new InspectorPanel(this)),
+    m_viewBanner(new Banner(QStringLiteral("viewBanner"), this)),
+    m_ncBanner(new Banner(QStringLiteral("ncBanner"), this))
 {
     setObjectName(QStringLiteral("mainWindow"));
     m_view->setObjectName(QStringLiteral("view3d"));
     m_editor->setObjectName(QStringLiteral("ncEditor"));
     m_editor->setReadOnly(true);
-    setCentralWidget(m_view);
+    m_workbench->setPrompter(m_prompter.get());
+    // The banners say when what the view and the editor show is not the job's current program.
+    setCentralWidget(Banner::above(m_viewBanner, m_view, this));
 
     QDockWidget* jobDock = addDock(this, tr("Job"), QStringLiteral("jobDock"), m_jobTree, Qt::LeftDockWidgetArea);
-    QDockWidget* ncDock = addDock(this, tr("NC program"), QStringLiteral("ncDock"), m_editor, Qt::RightDockWidgetArea);
+    QDockWidget* ncDock = addDock(this, tr("NC program"), QStringLiteral("ncDock"),
+                                  Banner::above(m_ncBanner, m_editor, this), Qt::RightDockWidgetArea);
     m_ncDock = ncDock;
     QDockWidget* reportDock =
         addDock(this, tr("Report"), QStringLiteral("reportDock"), m_report, Qt::BottomDockWidgetArea);
@@ -79,6 +84,8 @@ MainWindow::MainWindow(QWidget* parent) :
     // The task panel (FreeCAD's place for it): on the right, over the NC dock while open.
     m_taskDock = addDock(this, tr("Task"), QStringLiteral("taskDock"), new QWidget(this), Qt::RightDockWidgetArea);
     tabifyDockWidget(ncDock, m_taskDock);
+    // Closed by the panel's OK or Cancel only: a close button would leave the panel open unseen.
+    m_taskDock->setFeatures(QDockWidget::DockWidgetMovable | QDockWidget::DockWidgetFloatable);
     m_taskDock->hide();
     resizeDocks({jobDock, ncDock}, {330, 470}, Qt::Horizontal);
     resizeDocks({reportDock}, {140}, Qt::Vertical);
@@ -106,12 +113,14 @@ MainWindow::MainWindow(QWidget* parent) :
     updateTitle();
 }
 
-MainWindow::~MainWindow() = default;
+MainWindow::~MainWindow() { m_workbench->setPrompter(nullptr); }
 
 void MainWindow::setPrompter(std::unique_ptr<Prompter> prompter)
 {
-    if (prompter)
-        m_prompter = std::move(prompter);
+    if (!prompter)
+        return;
+    m_prompter = std::move(prompter);
+    m_workbench->setPrompter(m_prompter.get());
 }
 
 bool MainWindow::openJob(const QString& path)
@@ -121,6 +130,7 @@ bool MainWindow::openJob(const QString& path)
     if (!m_ncDocument->mayReplace(
             tr("Opening the job %1 replaces them with its program.").arg(QFileInfo(path).fileName())))
         return false;
+    closeTaskPanel();  // its operation belongs to the job being replaced
     return m_workbench->openJob(path);
 }
 
@@ -131,9 +141,12 @@ bool MainWindow::openNcFile(const QString& path)
     auto text = base::readTextFile(path.toStdString());
     if (!text) {
         m_report->append(Workbench::Severity::Error, QString::fromStdString(text.error().toString()));
+        m_prompter->showError(tr("Open NC program"), QString::fromStdString(text.error().toString()));
         return false;
     }
     m_fitWithTrace = true;
+    m_editorShowsPosted = false;
+    showProgramState();
     m_inspector->loadProgram(QString::fromStdString(text.value()), QFileInfo(path).absoluteFilePath());
     m_ncDocument->openedFile(path);
     m_report->append(Workbench::Severity::Note, tr("Opened NC program %1").arg(path));
@@ -151,11 +164,12 @@ void MainWindow::registerActions()
     };
 
     add({"Cam.File.Open", tr("&Open Job…"), file, QKeySequence::Open, true}, [this] {
-        if (!confirmDiscard() || !m_ncDocument->mayReplace(tr("Opening another job replaces them with its program.")))
+        if (!settleTaskPanel() || !confirmDiscard() ||
+            !m_ncDocument->mayReplace(tr("Opening another job replaces them with its program.")))
             return;
-        const QString path = QFileDialog::getOpenFileName(this, tr("Open job"), {}, tr("CAM Workbench jobs (*.camwb)"));
+        const QString path = m_prompter->openFileName(tr("Open job"), tr("CAM Workbench jobs (*.camwb)"));
         if (!path.isEmpty())
-            m_workbench->openJob(path);
+            openJob(path);
     });
     add({"Cam.File.Save", tr("&Save Job"), file, QKeySequence::Save, true}, [this] {
         const QString path = QString::fromStdString(m_workbench->document().path());
@@ -165,13 +179,15 @@ void MainWindow::registerActions()
             m_workbench->saveJob(path);
     });
     add({"Cam.File.SaveAs", tr("Save Job &As…"), file, QKeySequence::SaveAs}, [this] {
-        const QString path = QFileDialog::getSaveFileName(this, tr("Save job"), {}, tr("CAM Workbench jobs (*.camwb)"));
+        const QString path = m_prompter->saveFileName(tr("Save job"), {}, tr("CAM Workbench jobs (*.camwb)"));
         if (!path.isEmpty())
             m_workbench->saveJob(path.endsWith(QLatin1String(".camwb")) ? path : path + QStringLiteral(".camwb"));
     });
     add({"Cam.File.ImportModel", tr("&Import Model…"), file, QKeySequence(Qt::CTRL | Qt::Key_I), true, true}, [this] {
-        const QString path = QFileDialog::getOpenFileName(
-            this, tr("Import model"), {}, tr("Models (*.step *.stp *.iges *.igs *.brep *.brp *.stl);;All files (*)"));
+        if (!settleTaskPanel())  // an open panel's references belong to the model being replaced
+            return;
+        const QString path = m_prompter->openFileName(
+            tr("Import model"), tr("Models (*.step *.stp *.iges *.igs *.brep *.brp *.stl);;All files (*)"));
         if (!path.isEmpty())
             m_workbench->importModel(path);
     });
@@ -181,12 +197,21 @@ void MainWindow::registerActions()
         add({"Cam.Edit.Undo", tr("&Undo"), edit, QKeySequence::Undo, true, true}, [this] { m_workbench->undo(); });
     QAction* redo =
         add({"Cam.Edit.Redo", tr("&Redo"), edit, QKeySequence::Redo, true}, [this] { m_workbench->redo(); });
+    // Ctrl+Y beside the platform's redo keys (Ctrl+Shift+Z here): what users of other programs press.
+    QList<QKeySequence> redoKeys = QKeySequence::keyBindings(QKeySequence::Redo);
+    if (!redoKeys.contains(QKeySequence(Qt::CTRL | Qt::Key_Y)))
+        redoKeys << QKeySequence(Qt::CTRL | Qt::Key_Y);
+    redo->setShortcuts(redoKeys);
+    // The step's name goes into the menu and the tooltip; the toolbar keeps its short label
+    // (ActionRegistry fixes iconText), so it does not grow with the name.
     auto updateUndo = [this, undo, redo] {
         auto& stack = m_workbench->document().undoStack();
         undo->setEnabled(stack.canUndo());
         redo->setEnabled(stack.canRedo());
         undo->setText(stack.canUndo() ? tr("&Undo %1").arg(QString::fromStdString(stack.undoText())) : tr("&Undo"));
         redo->setText(stack.canRedo() ? tr("&Redo %1").arg(QString::fromStdString(stack.redoText())) : tr("&Redo"));
+        undo->setToolTip(QString(undo->text()).remove(QLatin1Char('&')));
+        redo->setToolTip(QString(redo->text()).remove(QLatin1Char('&')));
     };
     connect(m_workbench, &Workbench::jobChanged, this, updateUndo);
     updateUndo();
@@ -199,28 +224,37 @@ void MainWindow::registerActions()
     add({"Cam.Op.NewDrill", tr("New &Drilling…"), operation, {}, true}, [this] { newOperation(OperationKind::Drill); });
     // The foundation's profile is the contour now; the id stays for scripts (no menu entry).
     add({"Cam.Op.NewProfile", tr("New &Profile"), {}}, [this] { newOperation(OperationKind::Contour); });
+    // Without a selected operation these say so where the user looks (the status bar).
+    auto selected = [this] {
+        const int index = m_jobTree->selectedOperation();
+        if (index < 0)
+            statusBar()->showMessage(tr("Select an operation in the job tree first."), 5000);
+        return index;
+    };
     add({"Cam.Op.Edit", tr("&Edit Operation…"), operation, QKeySequence(Qt::Key_F2)},
-        [this] { editOperation(m_jobTree->selectedOperation()); });
+        [this, selected] { editOperation(selected()); });
     add({"Cam.Op.Delete", tr("&Delete Operation"), operation, QKeySequence::Delete},
-        [this] { m_workbench->removeOperation(m_jobTree->selectedOperation()); });
+        [this, selected] { m_workbench->removeOperation(selected()); });
 
     add({"Cam.Job.Post", tr("&Post"), jobMenu, QKeySequence(Qt::Key_F9), true, true}, [this] {
         if (m_ncDocument->mayReplace(tr("Posting the job replaces them with its program.")))
             m_workbench->post();
     });
     add({"Cam.Job.SaveNc", tr("&Save NC Program…"), jobMenu, QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_S)}, [this] {
+        if (!m_workbench->ncSavable())  // out of date or none: says why, asks for no file name
+            return;
         const QString suffix = m_workbench->ncExtension();
         const QString base = QFileInfo(QString::fromStdString(m_workbench->document().path())).completeBaseName();
-        const QString path = QFileDialog::getSaveFileName(this, tr("Save NC program"), base + '.' + suffix,
-                                                          tr("NC programs (*.%1);;All files (*)").arg(suffix));
+        const QString path = m_prompter->saveFileName(tr("Save NC program"), base + '.' + suffix,
+                                                      tr("NC programs (*.%1);;All files (*)").arg(suffix));
         if (!path.isEmpty())
             m_workbench->saveNc(path);
     });
 
     const QString nc = tr("&NC");
     add({"Cam.Nc.Open", tr("&Open NC Program…"), nc, QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_O), true}, [this] {
-        const QString path = QFileDialog::getOpenFileName(
-            this, tr("Open NC program"), {},
+        const QString path = m_prompter->openFileName(
+            tr("Open NC program"),
             tr("NC programs (*.mpf *.spf *.nc *.ngc *.tap *.h *.iso *.cnc *.txt);;All files (*)"));
         if (!path.isEmpty())
             openNcFile(path);
@@ -245,6 +279,7 @@ void MainWindow::registerActions()
     add({"Cam.View.Right", tr("&Right"), view, QKeySequence(Qt::Key_3), true},
         [this] { m_view->setViewPreset(View3D::Preset::Right); });
     add({"Cam.View.FitAll", tr("Fit &All"), view, QKeySequence(Qt::Key_F), true}, [this] { m_view->fitAll(); });
+    registerDockActions(view);
 
     add({"Cam.Help.About", tr("&About CAM Workbench"), help}, [this] {
         QMessageBox::about(
@@ -281,13 +316,14 @@ void MainWindow::connectWorkbench()
         // The posted program is traced as the machine will read it; its name gives the dialect.
         const QString job = QString::fromStdString(m_workbench->document().path());
         const QString base = job.isEmpty() ? tr("posted") : QFileInfo(job).completeBaseName();
+        m_editorShowsPosted = true;
+        showProgramState();
         m_inspector->loadProgram(m_workbench->ncText(), base + '.' + m_workbench->ncExtension());
         m_ncDocument->showsPostedProgram();
     });
     connect(m_ncDocument, &NcDocument::message, m_report, &ReportView::append);
-    connect(m_ncDocument, &NcDocument::titleChanged, this, [this](const QString& title) {
-        m_ncDock->setWindowTitle(title.isEmpty() ? tr("NC program") : tr("NC program — %1").arg(title));
-    });
+    connect(m_ncDocument, &NcDocument::titleChanged, this, &MainWindow::updateNcDockTitle);
+    connect(m_workbench, &Workbench::programStateChanged, this, &MainWindow::showProgramState);
     connect(m_workbench, &Workbench::jobChanged, this, &MainWindow::updateTitle);
     connect(m_workbench, &Workbench::busyChanged, this, [this](bool busy) {
         m_progress->setVisible(busy);
@@ -353,17 +389,22 @@ void MainWindow::updateTitle()
 
 void MainWindow::editOperation(int index)
 {
-    const auto& operations = m_workbench->job().operations;
-    if (index < 0 || index >= static_cast<int>(operations.size()))
+    if (index < 0 || index >= static_cast<int>(m_workbench->job().operations.size()) || !settleTaskPanel())
         return;
-    openTaskPanel(index, operations[static_cast<std::size_t>(index)], std::nullopt);
+    openTaskPanel(index, m_workbench->job().operations[static_cast<std::size_t>(index)], std::nullopt);
 }
 
 bool MainWindow::newOperation(document::OperationKind kind)
 {
+    if (!settleTaskPanel())
+        return false;
     auto proposal = proposeOperation(kind, m_workbench->job(), m_workbench->model(), m_view->overlay().selectedFaces());
     if (!proposal) {
-        m_report->append(Workbench::Severity::Error, QString::fromStdString(proposal.error().toString()));
+        QString text = QString::fromStdString(proposal.error().toString());
+        if (!m_workbench->modelProblem().isEmpty())
+            text = tr("The job's model is not loaded: %1").arg(m_workbench->modelProblem());
+        m_report->append(Workbench::Severity::Error, text);
+        m_prompter->showError(tr("New operation"), text);
         return false;
     }
     m_view->overlay().setSelectedFaces({});  // taken into the operation
@@ -394,12 +435,82 @@ void MainWindow::closeTaskPanel()
     panel->deleteLater();
 }
 
+bool MainWindow::settleTaskPanel()
+{
+    if (m_taskPanel == nullptr)
+        return true;
+    if (m_taskPanel->hasUnappliedChanges()) {
+        const Prompter::Answer answer =
+            m_prompter->ask({tr("Unapplied changes"),
+                             tr("The task panel of \"%1\" has changes that are not applied.")
+                                 .arg(QString::fromStdString(m_taskPanel->operation().name())),
+                             tr("Apply"), tr("Discard")});
+        if (answer == Prompter::Answer::Cancel)
+            return false;
+        if (answer == Prompter::Answer::Accept && !m_taskPanel->accept())
+            return false;  // cannot be made: the panel stays open and says why
+    }
+    closeTaskPanel();
+    return true;
+}
+
 bool MainWindow::confirmDiscard()
 {
     if (!m_workbench->document().isModified())
         return true;
-    return QMessageBox::question(this, tr("Unsaved changes"), tr("Discard the unsaved changes of this job?")) ==
-           QMessageBox::Yes;
+    const Prompter::Answer answer =
+        m_prompter->ask({tr("Unsaved changes"), tr("The job has changes that are not saved. Save them?"), {}, {}});
+    if (answer != Prompter::Answer::Accept)
+        return answer == Prompter::Answer::Discard;
+    m_actions->trigger(QStringLiteral("Cam.File.Save"));
+    return !m_workbench->document().isModified();  // saved, not cancelled in the file dialog
+}
+
+void MainWindow::registerDockActions(const QString& viewMenu)
+{
+    // The docks' own show/hide actions, so a closed dock comes back from the View menu.
+    const std::pair<const char*, const char*> docks[]{{"Cam.View.JobDock", "jobDock"},
+                                                      {"Cam.View.NcDock", "ncDock"},
+                                                      {"Cam.View.InspectorDock", "modalDock"},
+                                                      {"Cam.View.ReportDock", "reportDock"}};
+    bool first = true;
+    for (const auto& [id, name] : docks) {
+        auto* dock = findChild<QDockWidget*>(QLatin1String(name));
+        m_actions->adopt({QLatin1String(id), dock->windowTitle(), viewMenu, {}, false, std::exchange(first, false)},
+                         dock->toggleViewAction());
+    }
+}
+
+void MainWindow::showProgramState()
+{
+    const QString& problem = m_workbench->programProblem();
+    // The first reason in the banner (a long list would hide the view); all of them in its
+    // tooltip, and each failing operation's in the job tree.
+    const QStringList reasons = problem.split(QLatin1Char('\n'), Qt::SkipEmptyParts);
+    QString first = reasons.value(0);
+    if (reasons.size() > 1)
+        first += tr(" (and %n more, see the job tree)", nullptr, static_cast<int>(reasons.size() - 1));
+    QString text;
+    if (!problem.isEmpty())
+        text = m_workbench->ncText().isEmpty() ? tr("No NC program: %1").arg(first)
+                                               : tr("Out of date — the last post failed; this is the previous "
+                                                    "program and it cannot be saved:\n%1")
+                                                     .arg(first);
+    // Only while the editor (and so the view's trace) shows the posted program, not an NC file
+    // opened apart.
+    m_viewBanner->setMessage(m_editorShowsPosted ? text : QString(), problem);
+    m_ncBanner->setMessage(m_editorShowsPosted ? text : QString(), problem);
+    updateNcDockTitle();
+}
+
+// The program's name (with * while it has unsaved edits) and whether it is out of date.
+void MainWindow::updateNcDockTitle()
+{
+    const QString title = m_ncDocument->title();
+    QString text = title.isEmpty() ? tr("NC program") : tr("NC program — %1").arg(title);
+    if (m_editorShowsPosted && !m_workbench->programProblem().isEmpty())
+        text += tr(" (out of date)");
+    m_ncDock->setWindowTitle(text);
 }
 
 void MainWindow::closeEvent(QCloseEvent* event)
@@ -408,7 +519,7 @@ void MainWindow::closeEvent(QCloseEvent* event)
         event->ignore();
         return;
     }
-    if (confirmDiscard())
+    if (settleTaskPanel() && confirmDiscard())
         event->accept();
     else
         event->ignore();

@@ -15,6 +15,7 @@ class QProgressBar;
 namespace camwb::gui {
 
 class ActionRegistry;
+class Banner;
 class InspectorPanel;
 class NcInspector;
 class JobTree;
@@ -44,7 +45,8 @@ public:
     InspectorPanel* inspectorPanel() const { return m_inspectorPanel; }
     // The open task panel (docked on the right), or nullptr.
     OperationPanel* taskPanel() const { return m_taskPanel; }
-    // Asks the user (message boxes and file dialogs unless replaced; tests answer with their own).
+    // Asks the user's questions and shows the errors that stop an action (dialogs by default;
+    // tests put in one that answers by itself).
     Prompter& prompter() const { return *m_prompter; }
     void setPrompter(std::unique_ptr<Prompter> prompter);
 
@@ -54,11 +56,16 @@ public:
     // Reads an NC program of any dialect into the editor (editable) and traces it. False when it
     // cannot be read or the user keeps the editor's unsaved edits (Cancel).
     bool openNcFile(const QString& path);
-    // Opens the task panel of operation `index`; replaces (cancels) a panel already open.
+    // Opens the task panel of operation `index`; a panel already open with unapplied changes is
+    // first settled (settleTaskPanel), else replaced.
     void editOperation(int index);
     // Proposes an operation of `kind` from the faces picked in the 3D view (or the model's
-    // defaults) and opens its panel; OK adds it. False (reported) when the model has nothing.
+    // defaults) and opens its panel; OK adds it. False (shown) when the model has nothing, or
+    // when the user keeps the open panel's unapplied changes.
     bool newOperation(document::OperationKind kind);
+    // Closes the open task panel; with unapplied changes the user is asked first: Apply (refused
+    // when the operation cannot be made), Discard, or Cancel (false: the panel stays).
+    bool settleTaskPanel();
 
 protected:
     void closeEvent(QCloseEvent* event) override;
@@ -73,6 +80,9 @@ private:
                        const std::optional<ops::ToolController>& newTool);
     void closeTaskPanel();
     bool confirmDiscard();
+    void registerDockActions(const QString& viewMenu);
+    void showProgramState();
+    void updateNcDockTitle();
 
     std::unique_ptr<Prompter> m_prompter;
     Workbench* m_workbench;
@@ -88,6 +98,9 @@ private:
     InspectorPanel* m_inspectorPanel;
     QDockWidget* m_taskDock = nullptr;
     OperationPanel* m_taskPanel = nullptr;
+    Banner* m_viewBanner;
+    Banner* m_ncBanner;
+    bool m_editorShowsPosted = false;  // the editor holds the job's posted program (not an opened file)
     bool m_fitWithToolpath = false;
     bool m_fitWithTrace = false;
 };

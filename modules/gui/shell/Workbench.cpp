@@ -3,7 +3,9 @@
 #include "base/AtomicFile.h"
 #include "document/JobFile.h"
 #include "document/JobPipeline.h"
+#include "document/ReferenceRemap.h"
 #include "gui/shell/NewOperation.h"
+#include "gui/shell/Prompter.h"
 #include "kinematics/Machine.h"
 #include "post/PostRegistry.h"
 
@@ -14,6 +16,7 @@
 
 #include <algorithm>
 #include <optional>
+#include <utility>
 
 namespace camwb::gui {
 
@@ -50,6 +53,10 @@ struct Workbench::ComputeOutcome {
     std::string ncExtension;
     std::vector<base::Diagnostic> warnings;  // the operations' (left corners, helix fallbacks, ...)
     std::vector<std::string> errors;
+    std::vector<document::OperationFailure> failures;  // every operation that cannot be made
+    bool modelFailed = false;                          // the job's model could not be read
+    int generation = 0;
+    std::optional<document::RemappedOperations> remap;  // import: the operations on the new model
 };
 
 Workbench::Workbench(QObject* parent) : QObject(parent)
@@ -63,42 +70,91 @@ Workbench::Workbench(QObject* parent) : QObject(parent)
 
 Workbench::~Workbench() = default;
 
+QString Workbench::operationProblem(int index) const
+{
+    return index >= 0 && index < static_cast<int>(m_operationProblems.size())
+               ? m_operationProblems[static_cast<std::size_t>(index)]
+               : QString();
+}
+
 bool Workbench::openJob(const QString& path)
 {
     auto job = document::loadJob(path.toStdString());
     if (!job) {
-        report(Severity::Error, qs(job.error().toString()));
+        fail(tr("Open job"), qs(job.error().toString()));
         return false;
     }
+    ++m_generation;  // a compute of the previous job still running is not applied
     m_suppressRecompute = true;
-    m_modelPath.clear();  // always read the model again: the file may have changed on disk
     m_document.reset(std::move(job.value()), path.toStdString());
     m_suppressRecompute = false;
+    // Nothing of the previous job may stay on screen or be computed on: its model, toolpath and
+    // NC go now, not when (or if) this job's model has loaded.
+    clearDerived();
     report(Severity::Note, tr("Opened job %1").arg(path));
+    m_showComputeFailure = true;
     startCompute();
     return true;
+}
+
+void Workbench::clearDerived()
+{
+    m_model = {};
+    m_modelPath.clear();  // always read the model again: the file may have changed on disk
+    m_mesh = {};
+    m_toolpath = {};
+    m_nc.clear();
+    m_programProblem.clear();
+    m_modelProblem.clear();
+    m_operationProblems.clear();
+    emit modelChanged();
+    emit toolpathChanged();
+    emit ncChanged();
+    emit programStateChanged();
 }
 
 bool Workbench::saveJob(const QString& path)
 {
     if (base::Status saved = m_document.saveAs(path.toStdString()); !saved) {
-        report(Severity::Error, qs(saved.error().toString()));
+        fail(tr("Save job"), qs(saved.error().toString()));
         return false;
     }
     report(Severity::Note, tr("Saved job %1").arg(path));
     return true;
 }
 
-void Workbench::post() { startCompute(); }
+void Workbench::post()
+{
+    m_showComputeFailure = true;
+    startCompute();
+}
+
+bool Workbench::ncSavable()
+{
+    if (m_busy) {
+        // Every edit starts a compute at once: while it runs, the program is of the job before.
+        fail(tr("Save NC program"), tr("The job is being computed; save the NC program when the post has finished."));
+        return false;
+    }
+    if (!isProgramCurrent()) {
+        fail(tr("Save NC program"),
+             tr("The NC program is out of date and was not saved: %1\nFix the job and post it again.")
+                 .arg(m_programProblem));
+        return false;
+    }
+    if (m_nc.isEmpty()) {
+        fail(tr("Save NC program"), tr("There is no NC program to save; post the job first."));
+        return false;
+    }
+    return true;
+}
 
 bool Workbench::saveNc(const QString& path)
 {
-    if (m_nc.isEmpty()) {
-        report(Severity::Error, tr("There is no NC program to save; post the job first."));
+    if (!ncSavable())
         return false;
-    }
     if (base::Status written = base::writeFileAtomically(path.toStdString(), m_nc.toStdString()); !written) {
-        report(Severity::Error, qs(written.error().toString()));
+        fail(tr("Save NC program"), qs(written.error().toString()));
         return false;
     }
     report(Severity::Note, tr("Wrote NC program %1").arg(path));
@@ -108,7 +164,7 @@ bool Workbench::saveNc(const QString& path)
 void Workbench::importModel(const QString& path)
 {
     if (m_busy) {
-        report(Severity::Warning, tr("Busy; import the model again when the current work has finished."));
+        fail(tr("Import model"), tr("Busy; import the model again when the current work has finished."));
         emit modelImportFinished(false);
         return;
     }
@@ -120,31 +176,9 @@ void Workbench::importModel(const QString& path)
         std::shared_ptr<ComputeOutcome> outcome = watcher->result();
         watcher->deleteLater();
         setBusy(false);
-        if (!outcome->model) {
-            // The job stays exactly as it was.
-            for (const std::string& e : outcome->errors)
-                report(Severity::Error, qs(e));
-            emit modelImportFinished(false);
-            return;
-        }
-        m_model = std::move(*outcome->model);
-        m_modelPath = file;
-        m_mesh = std::move(outcome->mesh);
-        emit modelChanged();
-        report(Severity::Note, tr("Imported %1 (%2 faces)").arg(qs(file)).arg(m_model.faceCount()));
-        const base::Vec3 lo = m_model.boundsMin(), hi = m_model.boundsMax();
-        const bool hadModel = !job().modelPath.empty();
-        m_document.edit("Import model", [&](document::Job& j) {
-            j.modelPath = file;
-            if (!hadModel)
-                j.stock = {lo, hi};
-            // Faces of another model mean nothing for this one.
-            if (hadModel)
-                j.operations.clear();
-        });
-        emit modelImportFinished(true);
+        finishImport(file, outcome);
     });
-    watcher->setFuture(QtConcurrent::run([file, progress] {
+    watcher->setFuture(QtConcurrent::run([file, progress, previous = m_model, operations = job().operations] {
         auto outcome = std::make_shared<ComputeOutcome>();
         auto model = occ::Model::load(file, progress);
         if (!model) {
@@ -152,9 +186,82 @@ void Workbench::importModel(const QString& path)
             return outcome;
         }
         outcome->mesh = model->mesh();
+        outcome->remap = document::remapReferences(operations, previous, model.value());
         outcome->model = std::move(model.value());
         return outcome;
     }));
+}
+
+void Workbench::finishImport(const std::string& file, const std::shared_ptr<ComputeOutcome>& outcome)
+{
+    if (!outcome->model) {
+        // The job stays exactly as it was.
+        for (const std::string& e : outcome->errors)
+            fail(tr("Import model"), qs(e));
+        emit modelImportFinished(false);
+        return;
+    }
+    const document::RemappedOperations& remap = *outcome->remap;
+    const std::vector<document::Operation>& operations = job().operations;
+    // What happens to operations whose references are not in the new model: asked, never silent.
+    Prompter::Answer answer = Prompter::Answer::Accept;
+    if (!remap.checked && !operations.empty()) {
+        const Prompter::Question question{
+            tr("Import model"),
+            tr("The previous model is not loaded, so the references of the %n operation(s) cannot be checked "
+               "against %1. Keep them with their face, edge and hole numbers (check each operation), or delete "
+               "them?",
+               nullptr, static_cast<int>(operations.size()))
+                .arg(qs(file)),
+            tr("Keep the operations"), tr("Delete the operations")};
+        answer = m_prompter ? m_prompter->ask(question) : Prompter::Answer::Cancel;
+    } else if (!remap.lost.empty()) {
+        const Prompter::Question question{
+            tr("Import model"),
+            tr("These references of the operations are not in %1:\n%2\n\nKeep the operations without them "
+               "(they are marked until you choose new geometry in their task panels), or delete the operations "
+               "that lost references?")
+                .arg(qs(file), qs(document::describeLost(remap.lost, operations))),
+            tr("Keep the operations"), tr("Delete those operations")};
+        answer = m_prompter ? m_prompter->ask(question) : Prompter::Answer::Cancel;
+    }
+    if (answer == Prompter::Answer::Cancel) {
+        report(Severity::Note, tr("Import of %1 cancelled; the job is unchanged.").arg(qs(file)));
+        emit modelImportFinished(false);
+        return;
+    }
+    std::vector<document::Operation> kept = remap.operations;
+    if (answer == Prompter::Answer::Discard) {
+        std::vector<bool> drop(kept.size(), !remap.checked);
+        for (const document::LostReference& l : remap.lost)
+            drop[static_cast<std::size_t>(l.operation)] = true;
+        std::vector<document::Operation> remaining;
+        for (std::size_t i = 0; i < kept.size(); ++i)
+            if (!drop[i])
+                remaining.push_back(std::move(kept[i]));
+        report(Severity::Note, tr("Deleted %n operation(s) that lost references.", nullptr,
+                                  static_cast<int>(kept.size() - remaining.size())));
+        kept = std::move(remaining);
+    } else if (!remap.lost.empty()) {
+        report(Severity::Warning, tr("Kept the operations; these references are not in the new model:\n%1")
+                                      .arg(qs(document::describeLost(remap.lost, operations))));
+    }
+
+    m_model = std::move(*outcome->model);
+    m_modelPath = file;
+    m_mesh = std::move(outcome->mesh);
+    m_modelProblem.clear();
+    emit modelChanged();
+    report(Severity::Note, tr("Imported %1 (%2 faces)").arg(qs(file)).arg(m_model.faceCount()));
+    const base::Vec3 lo = m_model.boundsMin(), hi = m_model.boundsMax();
+    const bool hadModel = !job().modelPath.empty();
+    m_document.edit("Import model", [&](document::Job& j) {
+        j.modelPath = file;
+        if (!hadModel)
+            j.stock = {lo, hi};
+        j.operations = kept;
+    });
+    emit modelImportFinished(true);
 }
 
 bool Workbench::addOperation(document::OperationKind kind, const std::vector<int>& selectedFaces)
@@ -211,6 +318,7 @@ void Workbench::startCompute()
     const bool reloadModel = job.modelPath != m_modelPath;
     auto progress = progressReporter(this, tr("Loading model"));
     const std::string programName = QFileInfo(qs(m_document.path())).completeBaseName().toStdString();
+    const int generation = m_generation;
 
     auto* watcher = new QFutureWatcher<std::shared_ptr<ComputeOutcome>>(this);
     connect(watcher, &QFutureWatcherBase::finished, this, [this, watcher] {
@@ -218,14 +326,16 @@ void Workbench::startCompute()
         watcher->deleteLater();
         finishCompute(outcome);
     });
-    watcher->setFuture(QtConcurrent::run([job, model, reloadModel, progress, programName] {
+    watcher->setFuture(QtConcurrent::run([job, model, reloadModel, progress, programName, generation] {
         auto outcome = std::make_shared<ComputeOutcome>();
+        outcome->generation = generation;
         if (job.modelPath.empty())
             return outcome;  // a new job: nothing to compute yet
         occ::Model current = model;
         if (reloadModel) {
             auto loaded = document::loadJobModel(job, progress);
             if (!loaded) {
+                outcome->modelFailed = true;
                 outcome->errors.push_back(loaded.error().toString());
                 return outcome;
             }
@@ -235,10 +345,15 @@ void Workbench::startCompute()
             outcome->modelPath = job.modelPath;
         }
         document::ProgramReport report;
+        report.allFailures = true;  // the job tree marks every operation that cannot be made
         auto program = document::computeProgram(job, current, {}, &report);
         outcome->warnings = std::move(report.warnings);
+        outcome->failures = std::move(report.failures);
         if (!program) {
-            outcome->errors.push_back(program.error().message);
+            for (const document::OperationFailure& f : outcome->failures)
+                outcome->errors.push_back(f.message);
+            if (outcome->failures.empty())
+                outcome->errors.push_back(program.error().message);
             return outcome;
         }
         outcome->toolpath = program.value();
@@ -266,6 +381,24 @@ void Workbench::startCompute()
 
 void Workbench::finishCompute(const std::shared_ptr<ComputeOutcome>& outcome)
 {
+    if (outcome->generation != m_generation) {
+        // Computed for a job that is no longer open: the pending recompute is for this one.
+        setBusy(false);
+        if (std::exchange(m_recomputePending, false))
+            startCompute();
+        return;
+    }
+    if (outcome->modelFailed) {
+        // The job's model cannot be read: nothing may be shown or computed from another one.
+        m_model = {};
+        m_modelPath.clear();
+        m_mesh = {};
+        m_toolpath = {};
+        m_nc.clear();
+        emit modelChanged();
+        emit toolpathChanged();
+        emit ncChanged();
+    }
     if (outcome->model) {
         m_model = std::move(*outcome->model);
         m_modelPath = outcome->modelPath;
@@ -293,12 +426,32 @@ void Workbench::finishCompute(const std::shared_ptr<ComputeOutcome>& outcome)
     }
     for (const std::string& e : outcome->errors)
         report(Severity::Error, qs(e));
+    applyProblems(*outcome);
+    if (std::exchange(m_showComputeFailure, false) && !outcome->errors.empty() && m_prompter != nullptr)
+        m_prompter->showError(outcome->modelFailed ? tr("Open job") : tr("Post"), m_programProblem);  // reported above
     setBusy(false);
     emit postFinished(outcome->errors.empty());
     if (m_recomputePending) {
         m_recomputePending = false;
         startCompute();
     }
+}
+
+// What the window marks: the program out of date, each operation that cannot be made, the model.
+void Workbench::applyProblems(const ComputeOutcome& outcome)
+{
+    QStringList errors;
+    for (const std::string& e : outcome.errors)
+        errors << qs(e);
+    m_programProblem = errors.join(QLatin1Char('\n'));
+    m_modelProblem = outcome.modelFailed ? m_programProblem : QString();
+    m_operationProblems.assign(job().operations.size(), QString());
+    for (QString& problem : m_operationProblems)
+        problem = outcome.modelFailed ? tr("unresolved: the model is not loaded (%1)").arg(m_modelProblem) : QString();
+    for (const document::OperationFailure& f : outcome.failures)
+        if (f.operation >= 0 && f.operation < static_cast<int>(m_operationProblems.size()))
+            m_operationProblems[static_cast<std::size_t>(f.operation)] = qs(f.message);
+    emit programStateChanged();
 }
 
 void Workbench::setBusy(bool busy)
@@ -310,5 +463,12 @@ void Workbench::setBusy(bool busy)
 }
 
 void Workbench::report(Severity severity, const QString& text) { emit message(severity, text); }
+
+void Workbench::fail(const QString& title, const QString& text)
+{
+    report(Severity::Error, text);
+    if (m_prompter != nullptr)
+        m_prompter->showError(title, text);
+}
 
 }  // namespace camwb::gui

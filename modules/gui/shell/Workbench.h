@@ -19,6 +19,8 @@
 
 namespace camwb::gui {
 
+class Prompter;
+
 class Workbench : public QObject {
     Q_OBJECT
 public:
@@ -36,15 +38,37 @@ public:
     QString ncExtension() const { return m_ncExtension; }
     bool isBusy() const { return m_busy; }
 
-    // Opens a job: reads it now (errors reported, current job kept), then loads its model and
-    // computes + posts in the background (modelChanged, toolpathChanged, ncChanged, postFinished).
+    // Asks the questions (import over operations) and shows the errors that stop what the user
+    // asked for. Not owned; without one, nothing is dropped and errors go to the report only.
+    void setPrompter(Prompter* prompter) { m_prompter = prompter; }
+
+    // The NC program (ncText) is current when the last compute + post of the job as it is now
+    // succeeded. Otherwise programProblem() says why (a failed post, a model that cannot be
+    // read) and ncText() is the last good program (or empty): out of date, not to be saved.
+    bool isProgramCurrent() const { return m_programProblem.isEmpty(); }
+    const QString& programProblem() const { return m_programProblem; }
+    // Why operation `index` cannot be made as the job stands (empty when it can or is untried).
+    QString operationProblem(int index) const;
+    // Why the job's model is not loaded (empty when it is, or the job has none).
+    const QString& modelProblem() const { return m_modelProblem; }
+
+    // Opens a job: reads it now (errors reported, current job kept), drops everything derived from
+    // the previous job (model, toolpath, NC), then loads its model and computes + posts in the
+    // background (modelChanged, toolpathChanged, ncChanged, postFinished).
     bool openJob(const QString& path);
     bool saveJob(const QString& path);
-    // Loads a model in the background with progress; on success it becomes the job's model
-    // (one undoable step); on error the job is left unchanged.
+    // Loads a model in the background with progress. The operations are kept: their references
+    // are looked up on the new model (document/ReferenceRemap.h); when some are not found the
+    // prompter is asked whether to keep the operations without them, delete those operations, or
+    // cancel. Then the new model becomes the job's model in one undoable step. On error or cancel
+    // the job is left unchanged.
     void importModel(const QString& path);
-    // Recomputes every operation and posts the program in the background.
+    // Recomputes every operation and posts the program in the background; a failure is shown.
     void post();
+    // Whether there is a current program to save; when not, says why (shown) and answers false:
+    // out of date, none, or being recomputed (the program is of the job before the last edit).
+    bool ncSavable();
+    // Refused (false, the reason shown) unless ncSavable().
     bool saveNc(const QString& path);
 
     // Adds an operation of `kind` made from the selected faces or the model's defaults
@@ -66,6 +90,8 @@ signals:
     void ncChanged();
     void postFinished(bool ok);
     void modelImportFinished(bool ok);
+    // isProgramCurrent(), programProblem(), operationProblem() or modelProblem() changed.
+    void programStateChanged();
     void busyChanged(bool busy);
     void progress(int percent, const QString& what);
     void message(camwb::gui::Workbench::Severity severity, const QString& text);
@@ -75,8 +101,13 @@ private:
     // Recomputes (and posts) the job; reloads the model first when the job names another file.
     void startCompute();
     void finishCompute(const std::shared_ptr<ComputeOutcome>& outcome);
+    void applyProblems(const ComputeOutcome& outcome);
+    void finishImport(const std::string& file, const std::shared_ptr<ComputeOutcome>& outcome);
+    void clearDerived();
     void setBusy(bool busy);
     void report(Severity severity, const QString& text);
+    // An error that stops what the user asked for: in the report and shown by the prompter.
+    void fail(const QString& title, const QString& text);
 
     document::JobDocument m_document;
     occ::Model m_model;
@@ -85,9 +116,15 @@ private:
     toolpath::Toolpath m_toolpath;
     QString m_nc;
     QString m_ncExtension = QStringLiteral("nc");
+    QString m_programProblem;
+    QString m_modelProblem;
+    std::vector<QString> m_operationProblems;  // by operation index, from the last compute
+    Prompter* m_prompter = nullptr;
     bool m_busy = false;
     bool m_recomputePending = false;
     bool m_suppressRecompute = false;
+    bool m_showComputeFailure = false;  // the running compute was asked for (open, post): show its error
+    int m_generation = 0;               // a compute started for an earlier job is not applied
 };
 
 }  // namespace camwb::gui

@@ -1,5 +1,6 @@
 #include "gui/tasks/OperationPanel.h"
 
+#include "document/JobFile.h"
 #include "gui/shell/Workbench.h"
 #include "gui/tasks/GeometryList.h"
 #include "gui/tasks/HeightsBox.h"
@@ -81,7 +82,8 @@ OperationPanel::OperationPanel(const OperationPanelArgs& args) :
     m_overlay(args.overlay),
     m_index(args.index),
     m_newTool(args.newTool),
-    m_preview(new PreviewRunner(this))
+    m_preview(new PreviewRunner(this)),
+    m_original(args.operation)
 {
     setObjectName(QStringLiteral("operationPanel"));
 }
@@ -224,6 +226,7 @@ void OperationPanel::parametersChanged()
 {
     if (m_finished)
         return;
+    m_outcomeCurrent = false;
     int index = 0;
     document::Job job = previewJob(&index);
     m_preview->request(std::move(job), index, m_workbench.model());
@@ -246,6 +249,7 @@ void OperationPanel::showOutcome()
     const auto& outcome = m_preview->lastOutcome();
     if (!outcome)
         return;
+    m_outcomeCurrent = true;
     if (outcome->heightsKnown)
         m_heights->setDerived(outcome->heights);
     if (!outcome->ok) {
@@ -269,17 +273,43 @@ void OperationPanel::showOutcome()
 
 QString OperationPanel::statusText() const { return m_status != nullptr ? m_status->text() : QString(); }
 
-void OperationPanel::accept()
+document::Operation OperationPanel::current() const
+{
+    document::Operation op = m_op;
+    op.setName(m_name->text().toStdString());
+    return op;
+}
+
+bool OperationPanel::hasUnappliedChanges() const
 {
     if (m_finished)
-        return;
-    m_op.setName(m_name->text().toStdString());
+        return false;
+    // Compared as the job file writes them: every field, no hand-kept list to forget one in.
+    document::Job before, after;
+    before.operations = {m_original};
+    after.operations = {current()};
+    return document::serializeJob(before) != document::serializeJob(after);
+}
+
+bool OperationPanel::accept()
+{
+    if (m_finished)
+        return false;
+    const auto& outcome = m_preview->lastOutcome();
+    if (m_outcomeCurrent && outcome && !outcome->ok) {
+        m_status->setStyleSheet(QStringLiteral("color: #b00020;"));
+        m_status->setText(tr("Not applied: this operation cannot be made. Change it, or Cancel.\n%1")
+                              .arg(QString::fromStdString(outcome->error)));
+        return false;
+    }
+    m_op = current();
     finish();
     if (m_index < 0)
         m_workbench.addOperation(m_op, m_newTool);
     else
         m_workbench.updateOperation(m_index, m_op);
     emit closed();
+    return true;
 }
 
 void OperationPanel::reject()

@@ -1,7 +1,8 @@
 // The task panel of one operation (like FreeCAD's task panel, docked on the right, not modal):
 // name, tool, geometry, the kind's parameters, heights, and a live preview of the toolpath in the
 // 3D view computed off the GUI thread (progress, Cancel). OK applies the edit as one undoable step
-// (or adds the new operation); Cancel leaves the job as it was. Each kind adds its own rows
+// (or adds the new operation) unless the preview shows the operation cannot be made; Cancel
+// leaves the job as it was. Each kind adds its own rows
 // (ContourPanel.cpp, PocketPanel.cpp, HelixPanel.cpp, DrillPanel.cpp).
 #pragma once
 
@@ -45,8 +46,13 @@ public:
     // "N lines, M arcs, K helices, C cycles", the error, or "Computing…".
     QString statusText() const;
 
-    void accept();  // OK: applies (one undo step) and closes
+    // OK: applies (one undo step) and closes. Refused (false, the reason in the status) when the
+    // preview of the operation as it stands failed: an operation that cannot be made is not added.
+    // While the preview is still computing it applies; the job's post then marks a failure.
+    bool accept();
     void reject();  // Cancel: changes nothing and closes
+    // Whether OK would change the job: the operation differs from what the panel opened with.
+    bool hasUnappliedChanges() const;
 
 signals:
     void closed();
@@ -61,6 +67,7 @@ protected:
     document::Operation m_op;
 
 private:
+    document::Operation current() const;  // m_op with the name as typed
     void build();
     document::Job previewJob(int* index) const;
     void showOutcome();
@@ -80,7 +87,9 @@ private:
     QLabel* m_status = nullptr;
     QProgressBar* m_progress = nullptr;
     QPushButton* m_cancelCompute = nullptr;
+    document::Operation m_original;
     bool m_finished = false;
+    bool m_outcomeCurrent = false;  // the last preview is of the operation as it stands
 };
 
 }  // namespace camwb::gui

@@ -15,7 +15,6 @@ namespace camwb::gui {
 
 namespace {
 
-constexpr double kModelColor[3]{0.80, 0.81, 0.83};
 constexpr double kEdgeColor[3]{0.10, 0.10, 0.12};
 
 }  // namespace

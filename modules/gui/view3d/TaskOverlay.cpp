@@ -1,23 +1,22 @@
 #include "gui/view3d/TaskOverlay.h"
 
 #include "gui/view3d/ToolpathPolylines.h"
+#include "gui/view3d/detail/ModelActors.h"
 #include "gui/view3d/detail/ToolpathScene.h"
 
 #include <vtkActor.h>
-#include <vtkCellArray.h>
 #include <vtkCellData.h>
-#include <vtkIdList.h>
 #include <vtkIntArray.h>
 #include <vtkNew.h>
-#include <vtkPointData.h>
-#include <vtkPoints.h>
 #include <vtkPolyData.h>
 #include <vtkPolyDataMapper.h>
 #include <vtkProperty.h>
 #include <vtkRenderer.h>
 #include <vtkSmartPointer.h>
+#include <vtkUnsignedCharArray.h>
 
 #include <algorithm>
+#include <array>
 
 namespace camwb::gui {
 
@@ -53,9 +52,8 @@ struct TaskOverlay::Private {
     std::function<void()> render;
     std::shared_ptr<const ToolpathScene> preview;
     std::vector<vtkSmartPointer<vtkActor>> previewActors;
-    vtkSmartPointer<vtkPolyData> model;
+    vtkSmartPointer<vtkActor> model;
     std::vector<int> selected;
-    vtkSmartPointer<vtkActor> selectionActor;
 
     void remove(vtkSmartPointer<vtkActor>& actor)
     {
@@ -132,7 +130,7 @@ void TaskOverlay::clickFace(int face, bool toggle)
     setSelectedFaces(std::move(faces));
 }
 
-void TaskOverlay::setModel(vtkPolyData* model)
+void TaskOverlay::setModel(vtkActor* model)
 {
     d->model = model;
     d->selected.clear();
@@ -142,33 +140,33 @@ void TaskOverlay::setModel(vtkPolyData* model)
 
 void TaskOverlay::rebuildSelection()
 {
-    d->remove(d->selectionActor);
-    auto* faceOf = d->model ? vtkIntArray::SafeDownCast(d->model->GetCellData()->GetArray("face")) : nullptr;
-    if (faceOf != nullptr && !d->selected.empty()) {
-        vtkNew<vtkCellArray> triangles;
-        vtkNew<vtkIdList> ids;
-        for (vtkIdType cell = 0; cell < d->model->GetNumberOfCells(); ++cell) {
-            const int face = faceOf->GetValue(cell);
-            if (std::find(d->selected.begin(), d->selected.end(), face) == d->selected.end())
-                continue;
-            d->model->GetCellPoints(cell, ids);
-            triangles->InsertNextCell(ids);
+    auto* data = d->model ? vtkPolyData::SafeDownCast(d->model->GetMapper()->GetInput()) : nullptr;
+    auto* faceOf = data ? vtkIntArray::SafeDownCast(data->GetCellData()->GetArray("face")) : nullptr;
+    if (faceOf == nullptr) {
+        d->render();
+        return;
+    }
+    vtkMapper* mapper = d->model->GetMapper();
+    if (d->selected.empty()) {
+        mapper->ScalarVisibilityOff();  // the property's grey for every face
+    } else {
+        // One colour per triangle: the model's grey, the selected faces' green.
+        vtkNew<vtkUnsignedCharArray> colors;
+        colors->SetName("selection");
+        colors->SetNumberOfComponents(3);
+        colors->SetNumberOfTuples(data->GetNumberOfCells());
+        auto byte = [](double c) { return static_cast<unsigned char>(c * 255.0 + 0.5); };
+        for (vtkIdType cell = 0; cell < data->GetNumberOfCells(); ++cell) {
+            const bool picked =
+                std::find(d->selected.begin(), d->selected.end(), faceOf->GetValue(cell)) != d->selected.end();
+            const double* color = picked ? kSelectedFaceColor : kModelColor;
+            colors->SetTypedTuple(cell,
+                                  std::array<unsigned char, 3>{byte(color[0]), byte(color[1]), byte(color[2])}.data());
         }
-        vtkNew<vtkPolyData> data;
-        data->SetPoints(d->model->GetPoints());
-        data->GetPointData()->SetNormals(d->model->GetPointData()->GetNormals());
-        data->SetPolys(triangles);
-        vtkNew<vtkPolyDataMapper> mapper;
-        mapper->SetInputData(data);
-        mapper->ScalarVisibilityOff();
-        // In front of the model's own (pushed back) faces, behind its feature edges.
-        mapper->SetRelativeCoincidentTopologyPolygonOffsetParameters(0.0, 0.0);
-        d->selectionActor = vtkSmartPointer<vtkActor>::New();
-        d->selectionActor->SetMapper(mapper);
-        d->selectionActor->GetProperty()->SetColor(kSelectedFaceColor[0], kSelectedFaceColor[1], kSelectedFaceColor[2]);
-        d->selectionActor->GetProperty()->SetAmbient(0.3);
-        d->selectionActor->PickableOff();
-        d->renderer->AddActor(d->selectionActor);
+        data->GetCellData()->SetScalars(colors);
+        mapper->SetScalarModeToUseCellData();
+        mapper->SetColorModeToDirectScalars();
+        mapper->ScalarVisibilityOn();
     }
     d->render();
 }

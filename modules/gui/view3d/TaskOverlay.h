@@ -1,6 +1,7 @@
 // What a task panel draws over the model in the 3D view, apart from the job's backplot: the live
 // preview of the operation being edited (orange, thick, rapids thin) and the faces picked as the
-// operation's geometry (tinted green). Owned by View3D (View3D::overlay()); VTK stays in the .cpp,
+// operation's geometry (the model's own triangles coloured green: a second surface at the same
+// place would lose the depth test to the model). Owned by View3D (View3D::overlay()); VTK stays in the .cpp,
 // so the data calls work without OpenGL too (headless tests).
 #pragma once
 
@@ -10,7 +11,7 @@
 #include <memory>
 #include <vector>
 
-class vtkPolyData;
+class vtkActor;
 class vtkRenderer;
 
 namespace camwb::gui {
@@ -43,8 +44,8 @@ signals:
 private:
     friend class View3D;
     TaskOverlay(vtkRenderer* renderer, std::function<void()> render, QObject* parent);
-    // The model's triangles with a "face" cell array; null when the model is cleared.
-    void setModel(vtkPolyData* model);
+    // The model's actor (triangles with a "face" cell array); null when the model is cleared.
+    void setModel(vtkActor* model);
     void rebuildSelection();
 
     struct Private;

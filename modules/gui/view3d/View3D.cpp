@@ -225,7 +225,7 @@ void View3D::setModel(const occ::DisplayMesh& mesh)
     d->edgeActor = makeEdgeActor(mesh);
     if (d->modelActor) {
         d->renderer->AddActor(d->modelActor);
-        d->overlay->setModel(vtkPolyData::SafeDownCast(d->modelActor->GetMapper()->GetInput()));
+        d->overlay->setModel(d->modelActor);
     }
     if (d->edgeActor)
         d->renderer->AddActor(d->edgeActor);

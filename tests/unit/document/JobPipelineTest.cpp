@@ -145,3 +145,32 @@ TEST(JobPipeline, WarningsAndCountsOfEachOperationAreReported)
     EXPECT_EQ(warning.rfind("drilling \"" + drill.name() + "\": ", 0), 0u) << warning;
     EXPECT_NE(warning.find("undersize"), std::string::npos) << warning;
 }
+
+TEST(JobPipeline, EveryOperationThatCannotBeMadeIsNamedWhenAsked)
+{
+    auto job = document::loadJob(kExampleJob);
+    ASSERT_TRUE(job.ok());
+    auto model = document::loadJobModel(job.value());
+    ASSERT_TRUE(model.ok());
+    document::Job j = job.value();
+    ASSERT_GE(j.operations.size(), 3u);
+    j.operations[0].toolNumber = 98;
+    j.operations[2].toolNumber = 99;
+
+    document::ProgramReport first;  // by default the first failure ends the run
+    auto stopped = document::computeProgram(j, model.value(), {}, &first);
+    ASSERT_FALSE(stopped.ok());
+    ASSERT_EQ(first.failures.size(), 1u);
+    EXPECT_EQ(first.failures[0].operation, 0);
+
+    document::ProgramReport all;
+    all.allFailures = true;
+    auto program = document::computeProgram(j, model.value(), {}, &all);
+    ASSERT_FALSE(program.ok());
+    EXPECT_NE(program.error().message.find("no tool number 98"), std::string::npos) << program.error().message;
+    ASSERT_EQ(all.failures.size(), 2u);
+    EXPECT_EQ(all.failures[0].operation, 0);
+    EXPECT_EQ(all.failures[1].operation, 2);
+    EXPECT_NE(all.failures[1].message.find("no tool number 99"), std::string::npos) << all.failures[1].message;
+    EXPECT_EQ(all.counts.size(), j.operations.size());
+}

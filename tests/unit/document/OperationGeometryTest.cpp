@@ -1,6 +1,7 @@
 // Operation references resolved on the example part (face and hole indices pinned by the occ
 // tests): pocket regions with their islands, holes, derived and overridden heights, and errors.
 #include "document/OperationGeometry.h"
+#include "ExampleJob.h"
 #include "document/JobFile.h"
 #include "document/JobPipeline.h"
 
@@ -10,25 +11,9 @@ using namespace camwb;
 
 namespace {
 
-const std::string kExampleJob = std::string(CAMWB_TEST_DATA_DIR) + "/resources/examples/example-block.camwb";
+using document::test::Example;
+using document::test::example;
 constexpr int kTopFace = 2, kBottomFace = 5, kPocketFloor = 25, kIslandTop = 30, kThroughHole = 21;
-
-struct Example {
-    document::Job job;
-    occ::Model model;
-};
-
-const Example& example()
-{
-    static const Example loaded = [] {
-        auto job = document::loadJob(kExampleJob);
-        EXPECT_TRUE(job.ok()) << job.error().toString();
-        auto model = document::loadJobModel(job.value());
-        EXPECT_TRUE(model.ok()) << model.error().toString();
-        return Example{job.value(), model.value()};
-    }();
-    return loaded;
-}
 
 document::Operation pocketOf(std::vector<int> faces)
 {
@@ -151,6 +136,6 @@ TEST(OperationGeometry, BadReferencesAreNamed)
     EXPECT_EQ(message(drill), "drilling \"D\": face 2 is not a vertical cylindrical hole");
     drill.geometry = {{kTopFace}, {}, {}};
     EXPECT_NE(message(drill).find("works on holes"), std::string::npos);
-    EXPECT_EQ(document::resolveGeometry(drill, occ::Model{}).error().message,
-              "drilling \"D\": the model has no solid geometry (STL meshes cannot be machined from)");
+    // No model (a job whose model file is missing): said so, not blamed on the model's kind.
+    EXPECT_EQ(document::resolveGeometry(drill, occ::Model{}).error().message, "drilling \"D\": no model is loaded");
 }

@@ -11,6 +11,8 @@
 
 namespace camwb::gui {
 
+inline constexpr double kModelColor[3]{0.80, 0.81, 0.83};
+
 vtkSmartPointer<vtkActor> makeActor(vtkPolyData* data);
 vtkSmartPointer<vtkActor> makeModelActor(const occ::DisplayMesh& mesh);  // null without triangles
 vtkSmartPointer<vtkActor> makeEdgeActor(const occ::DisplayMesh& mesh);   // null without edges

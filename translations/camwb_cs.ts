@@ -651,6 +651,18 @@
         <source>before the first tool</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <source>Machine</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>none: no limits checked</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 (its limits are checked)</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>camwb::gui::JobTree</name>

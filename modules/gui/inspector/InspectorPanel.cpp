@@ -17,6 +17,7 @@ InspectorPanel::InspectorPanel(QWidget* parent) :
     m_dialect(new QComboBox(this)),
     m_source(new QComboBox(this)),
     m_tools(new QListWidget(this)),
+    m_machine(new QLabel(this)),
     m_modal(new ModalStatePanel(this))
 {
     m_dialect->setObjectName(QStringLiteral("dialectCombo"));
@@ -30,11 +31,15 @@ InspectorPanel::InspectorPanel(QWidget* parent) :
     m_tools->setObjectName(QStringLiteral("toolList"));
     m_tools->setMaximumHeight(64);
     m_modal->setObjectName(QStringLiteral("modalStatePanel"));
+    m_machine->setObjectName(QStringLiteral("machineLabel"));
+    m_machine->setWordWrap(true);
+    setMachineName({});
 
     auto* form = new QFormLayout;
     form->addRow(tr("Dialect"), m_dialect);
     form->addRow(tr("3D shows"), m_source);
     form->addRow(tr("Tools"), m_tools);
+    form->addRow(tr("Machine"), m_machine);
     auto* layout = new QVBoxLayout(this);
     layout->setContentsMargins(4, 4, 4, 4);
     layout->addLayout(form);
@@ -59,6 +64,11 @@ std::optional<nc::Dialect> InspectorPanel::dialect() const
 void InspectorPanel::setDialect(std::optional<nc::Dialect> dialect)
 {
     m_dialect->setCurrentIndex(m_dialect->findData(dialect ? static_cast<int>(*dialect) : -1));
+}
+
+void InspectorPanel::setMachineName(const QString& name)
+{
+    m_machine->setText(name.isEmpty() ? tr("none: no limits checked") : tr("%1 (its limits are checked)").arg(name));
 }
 
 bool InspectorPanel::showsNcTrace() const { return m_source->currentIndex() == 0; }

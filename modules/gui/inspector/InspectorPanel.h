@@ -11,6 +11,7 @@
 #include <vector>
 
 class QComboBox;
+class QLabel;
 class QListWidget;
 class QListWidgetItem;
 
@@ -33,6 +34,8 @@ public:
     void setTools(const std::vector<int>& tools, const std::vector<int>& hidden);
     void setToolChecked(int tool, bool checked);
     QListWidget* toolList() const { return m_tools; }
+    // The machine the program is checked against (empty: none).
+    void setMachineName(const QString& name);
 
 signals:
     void dialectChosen(std::optional<camwb::nc::Dialect> dialect);
@@ -43,6 +46,7 @@ private:
     QComboBox* m_dialect;
     QComboBox* m_source;
     QListWidget* m_tools;
+    QLabel* m_machine;
     ModalStatePanel* m_modal;
     bool m_filling = false;
 };

@@ -98,6 +98,8 @@ void NcInspector::setShowInView(bool show)
 
 void NcInspector::scheduleTrace() { m_debounce->start(); }
 
+void NcInspector::setMachine(std::shared_ptr<const kinematics::Machine> machine) { m_machine = std::move(machine); }
+
 void NcInspector::traceNow()
 {
     m_debounce->stop();
@@ -116,6 +118,7 @@ void NcInspector::traceNow()
     const QString text = m_editor->text();  // implicitly shared: the worker converts it
     const std::string path = m_path.toStdString();
     const std::optional<nc::Dialect> dialect = m_dialect;
+    std::shared_ptr<const kinematics::Machine> machine = m_machine;
 
     if (m_running++ == 0)
         emit busyChanged(true);
@@ -128,11 +131,12 @@ void NcInspector::traceNow()
         watcher->deleteLater();
         finish(result);
     });
-    watcher->setFuture(QtConcurrent::run([result, text, path, dialect, cancel] {
+    watcher->setFuture(QtConcurrent::run([result, text, path, dialect, machine, cancel] {
         NcTraceRequest request;
         request.text = text.toStdString();
         request.path = path;
         request.dialect = dialect;
+        request.machine = machine;
         request.cancel = cancel.get();
         result->trace = traceNc(request);
         if (result->trace.cancelled || cancel->load())

@@ -48,6 +48,10 @@ public:
     void setFilePath(const QString& path);
     QString filePath() const { return m_path; }
     void setDebounceMs(int milliseconds);
+    // The machine the program is checked against (the job's, as its post checks the CL) from the
+    // next trace on: its limit warnings join the program's diagnostics. nullptr: no machine checks.
+    void setMachine(std::shared_ptr<const kinematics::Machine> machine);
+    const kinematics::Machine* machine() const { return m_machine.get(); }
 
     // A new program for the editor (opened or posted): the editor gets the dialect first (so a
     // huge text is highlighted once, not twice), then the text; the trace starts at once.
@@ -91,6 +95,7 @@ private:
     QTimer* m_debounce;
     std::optional<nc::Dialect> m_dialect;
     QString m_path;
+    std::shared_ptr<const kinematics::Machine> m_machine;
     bool m_showInView = true;
     bool m_editorHasDiagnostics = false;
     int m_running = 0;

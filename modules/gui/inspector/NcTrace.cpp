@@ -85,6 +85,7 @@ NcTrace traceNc(const NcTraceRequest& request)
     options.dialect = trace.dialect;
     options.fileName = request.path;
     options.cancel = request.cancel;
+    options.machine = request.machine.get();
     if (!request.path.empty())
         options.resolveProgram = nc::resolverBeside(request.path, trace.dialect);
 

@@ -5,12 +5,14 @@
 #pragma once
 
 #include "gui/inspector/ModalState.h"
+#include "kinematics/Machine.h"
 #include "nc/Dialect.h"
 #include "nc/Interpreter.h"
 #include "toolpath/Toolpath.h"
 
 #include <atomic>
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <string>
 #include <utility>
@@ -67,6 +69,8 @@ struct NcTraceRequest {
     std::string text;
     std::string path;                    // for diagnostics, the dialect guess and subprogram lookup
     std::optional<nc::Dialect> dialect;  // nullopt: nc::guessDialect
+    // Checked against its limits (kinematics::LimitCheck) as posting checks CL, when set.
+    std::shared_ptr<const kinematics::Machine> machine;
     const std::atomic<bool>* cancel = nullptr;
 };
 

@@ -318,6 +318,10 @@ void MainWindow::connectWorkbench()
         const QString base = job.isEmpty() ? tr("posted") : QFileInfo(job).completeBaseName();
         m_editorShowsPosted = true;
         showProgramState();
+        const auto machine = m_workbench->machine();
+        m_inspector->setMachine(machine);
+        m_inspectorPanel->setMachineName(
+            machine ? QString::fromStdString(machine->name.empty() ? machine->id : machine->name) : QString());
         m_inspector->loadProgram(m_workbench->ncText(), base + '.' + m_workbench->ncExtension());
         m_ncDocument->showsPostedProgram();
     });

@@ -51,7 +51,8 @@ struct Workbench::ComputeOutcome {
     std::optional<toolpath::Toolpath> toolpath;
     std::optional<post::PostOutput> nc;
     std::string ncExtension;
-    std::vector<base::Diagnostic> warnings;  // the operations' (left corners, helix fallbacks, ...)
+    std::shared_ptr<const kinematics::Machine> machine;  // what the post checked the program against
+    std::vector<base::Diagnostic> warnings;              // the operations' (left corners, helix fallbacks, ...)
     std::vector<std::string> errors;
     std::vector<document::OperationFailure> failures;  // every operation that cannot be made
     bool modelFailed = false;                          // the job's model could not be read
@@ -369,6 +370,8 @@ void Workbench::startCompute()
             outcome->errors.push_back(options.error().toString());
             return outcome;
         }
+        if (options->machine)
+            outcome->machine = std::make_shared<const kinematics::Machine>(*options->machine);
         auto nc = post->run(program.value(), options.value());
         if (!nc) {
             outcome->errors.push_back(nc.error().toString());
@@ -419,6 +422,7 @@ void Workbench::finishCompute(const std::shared_ptr<ComputeOutcome>& outcome)
     if (outcome->nc) {
         m_nc = qs(outcome->nc->text);
         m_ncExtension = qs(outcome->ncExtension);
+        m_machine = outcome->machine;
         for (const base::Diagnostic& m : outcome->nc->messages)
             report(m.severity, qs(base::formatDiagnostic(m)));
         report(Severity::Note, tr("Posted %1 lines with %2").arg(m_nc.count('\n')).arg(qs(job().postId)));

@@ -47,6 +47,9 @@ public:
     // read) and ncText() is the last good program (or empty): out of date, not to be saved.
     bool isProgramCurrent() const { return m_programProblem.isEmpty(); }
     const QString& programProblem() const { return m_programProblem; }
+    // The machine the last posted program was checked against (the job's, else its post's
+    // default); nullptr when there is none. The NC inspector checks the program against it too.
+    std::shared_ptr<const kinematics::Machine> machine() const { return m_machine; }
     // Why operation `index` cannot be made as the job stands (empty when it can or is untried).
     QString operationProblem(int index) const;
     // Why the job's model is not loaded (empty when it is, or the job has none).
@@ -117,6 +120,7 @@ private:
     QString m_nc;
     QString m_ncExtension = QStringLiteral("nc");
     QString m_programProblem;
+    std::shared_ptr<const kinematics::Machine> m_machine;
     QString m_modelProblem;
     std::vector<QString> m_operationProblems;  // by operation index, from the last compute
     Prompter* m_prompter = nullptr;

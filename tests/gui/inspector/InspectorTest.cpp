@@ -295,6 +295,44 @@ private slots:
         QVERIFY(!rig.editor.diagnosticSeverityAt(line).has_value());
     }
 
+    // With a machine (the job's, see MainWindowTest) its limits join the program's diagnostics,
+    // in the editor's margin and the report, at the line that first breaks each one.
+    void machineLimitsJoinTheDiagnostics()
+    {
+        auto machine = std::make_shared<camwb::kinematics::Machine>();
+        machine->id = "tiny";
+        machine->name = "Tiny mill";
+        machine->axes = {{"X", false, 0, 25}, {"Y", false, 0, 25}, {"Z", false, -10, 10}};
+        machine->spindleMaxRpm = 800;
+        machine->toolStations = 1;
+        Rig rig;
+        rig.inspector.setMachine(machine);
+        QSignalSpy messages(&rig.inspector, &NcInspector::message);
+        LOAD_OR_FAIL(rig, QString::fromLatin1(kProgram));
+        std::vector<std::string> found;
+        for (const camwb::base::Diagnostic& d : rig.inspector.trace()->result.diagnostics)
+            found.push_back(camwb::base::formatDiagnostic(d));
+        const std::vector<std::string> expected{
+            "inspector-test.ngc:4: warning: spindle speed 1000 rpm is above the Tiny mill's maximum of 800 rpm",
+            "inspector-test.ngc:4: warning: coolant flood is not available on the Tiny mill",
+            "inspector-test.ngc:10: warning: tool T2 has no station: the Tiny mill has stations 1..1",
+            "inspector-test.ngc:13: warning: the program spans 40 mm in X (0 to 40); the Tiny mill travels 25 mm"};
+        QString all;
+        for (const std::string& f : found)
+            all += QString::fromStdString(f) + QLatin1Char('\n');
+        QVERIFY2(found == expected, qPrintable(all));
+        QCOMPARE(rig.editor.diagnosticSeverityAt(10), std::optional(camwb::base::Severity::Warning));
+        bool reported = false;
+        for (const auto& m : messages)
+            reported =
+                reported || m.at(1).toString().contains(QLatin1String("inspector-test.ngc:10: warning: tool T2"));
+        QVERIFY(reported);
+        // Without a machine, nothing of the kind.
+        rig.inspector.setMachine(nullptr);
+        LOAD_OR_FAIL(rig, QString::fromLatin1(kProgram));
+        QVERIFY(rig.inspector.trace()->result.diagnostics.empty());
+    }
+
     void chosenDialectOverridesTheGuess()
     {
         Rig rig;

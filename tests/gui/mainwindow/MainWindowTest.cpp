@@ -294,6 +294,15 @@ private slots:
         QCOMPARE(trace->dialect, camwb::nc::Dialect::Sinumerik);
         QVERIFY2(!(trace->program.empty() && trace->result.hasErrors()),
                  qPrintable(QStringLiteral("SINUMERIK interpreter: ") + firstError(*trace)));
+        // Checked against the machine its post checked the CL against (the EMCO, the post's default),
+        // which the inspector names; the example job breaks none of its limits.
+        QVERIFY(window.inspector()->machine() != nullptr);
+        QCOMPARE(QString::fromStdString(window.inspector()->machine()->id), QStringLiteral("emco-concept-mill-105"));
+        QVERIFY(window.inspectorPanel()
+                    ->findChild<QLabel*>(QStringLiteral("machineLabel"))
+                    ->text()
+                    .startsWith(QLatin1String("EMCO Concept MILL 105")));
+        QVERIFY2(!trace->result.hasErrors() && trace->result.diagnostics.empty(), qPrintable(firstError(*trace)));
         // The view shows the trace of the posted program, not the operations' toolpath.
         QVERIFY(window.inspector()->showsInView());
         QCOMPARE(window.view()->toolpathSegmentCount(),

@@ -14,6 +14,18 @@
 using namespace camwb::base;
 namespace fs = std::filesystem;
 
+// Pseudo-random numbers for the randomised checks: the same values every run.
+struct Xorshift {
+    std::uint64_t state;
+    std::uint64_t operator()()
+    {
+        state ^= state << 13;
+        state ^= state >> 7;
+        state ^= state << 17;
+        return state;
+    }
+};
+
 TEST(Error, NamesFileLineAndColumnWhenKnown)
 {
     EXPECT_EQ(makeError("bad", "a.nc", 3, 7).toString(), "a.nc:3:7: bad");
@@ -34,13 +46,7 @@ TEST(NumberFormat, FastPathWritesWhatToCharsWrites)
 {
     // formatFixed takes a shortcut for most values; std::to_chars is the reference it must match,
     // ties and near-ties included (they go the slow way).
-    std::uint64_t state = 88172645463325252ull;  // xorshift: the same values every run
-    auto next = [&state] {
-        state ^= state << 13;
-        state ^= state >> 7;
-        state ^= state << 17;
-        return state;
-    };
+    Xorshift next{88172645463325252ull};
     char reference[400];
     for (int i = 0; i < 200000; ++i) {
         const int decimals = static_cast<int>(next() % 7);
@@ -106,13 +112,7 @@ std::string referenceText(const NumberFormat& f, double value)
 
 TEST(NumberFormat, EveryOptionCombinationFollowsTheTextRules)
 {
-    std::uint64_t state = 0x9E3779B97F4A7C15ull;  // xorshift: the same values every run
-    auto next = [&state] {
-        state ^= state << 13;
-        state ^= state >> 7;
-        state ^= state << 17;
-        return state;
-    };
+    Xorshift next{0x9E3779B97F4A7C15ull};
     for (int i = 0; i < 100000; ++i) {
         NumberFormat f{static_cast<int>(next() % 13), next() % 2 == 0, next() % 2 == 0, next() % 2 == 0,
                        next() % 2 == 0};
@@ -220,13 +220,7 @@ TEST_F(AtomicFileTest, ReadsWholeFilesAndRefusesFolders)
 
 TEST(NumberFormat, RoundedValueIsWhatTheTextReadsBackAs)
 {
-    std::uint64_t state = 0x2545F4914F6CDD1Dull;
-    auto next = [&state] {
-        state ^= state << 13;
-        state ^= state >> 7;
-        state ^= state << 17;
-        return state;
-    };
+    Xorshift next{0x2545F4914F6CDD1Dull};
     for (int i = 0; i < 100000; ++i) {
         NumberFormat format{static_cast<int>(next() % 6), next() % 2 == 0, false, next() % 3 == 0};
         if (i % 5 == 0)

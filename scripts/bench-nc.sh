@@ -44,20 +44,26 @@ done
 # The median of the numbers on stdin.
 median() { sort -g | awk '{a[NR]=$1} END {print (NR % 2) ? a[(NR + 1) / 2] : (a[NR / 2] + a[NR / 2 + 1]) / 2}'; }
 
-# Runs "$@" $runs times after one warm-up run (file cache), stdout to $work/$1.out, and prints
-# "wall cpu" per run to $work/$1.times.
-timed() {
+# One timed run of "$@": stdout to $work/$name.out (removed first, so that no run pays for deleting
+# the last one's output), "wall cpu" appended to $work/$name.times. CPU = user + sys seconds.
+run_once() {
   local name=$1
   shift
-  "$@" > /dev/null 2>&1 || true
+  rm -f "$work/$name.out" "$work/$name.trace"
+  /usr/bin/time -f "%e %U %S" -o "$work/time.txt" "$@" < /dev/null > "$work/$name.out" 2> "$work/$name.err" || {
+    echo "bench-nc: $name failed:" >&2
+    tail -5 "$work/$name.err" >&2
+    exit 1
+  }
+  awk '{printf "%s %.2f\n", $1, $2 + $3}' "$work/time.txt" >> "$work/$name.times"
+}
+# Runs "$@" $runs times after one warm-up run (file cache) and prints the runs.
+timed() {
+  local name=$1
+  "${@:2}" > /dev/null 2>&1 < /dev/null || true
   : > "$work/$name.times"
   for _ in $(seq 1 "$runs"); do
-    /usr/bin/time -f "%e %U %S" -o "$work/time.txt" "$@" < /dev/null > "$work/$name.out" 2> "$work/$name.err" || {
-      echo "bench-nc: $name failed:" >&2
-      tail -5 "$work/$name.err" >&2
-      exit 1
-    }
-    awk '{printf "%s %.2f\n", $1, $2 + $3}' "$work/time.txt" >> "$work/$name.times"
+    run_once "$@"
   done
   echo "$name runs (wall s, cpu s): $(tr '\n' ';' < "$work/$name.times") $(load)"
 }
@@ -68,10 +74,21 @@ cpu() { cut -d' ' -f2 "$work/$1.times" | median; }
 mkdir -p "$work/rs274"
 echo "T1 P1 Z1.771653543307 D0.236220472441 ;" > "$work/rs274/tools.tbl"
 
-# 1. The headline: both read the file, interpret and write one line per motion to a file.
-timed camwb "$cli" nc trace "$work/bench.ngc" -o "$work/trace.txt"
-echo "camwb-cli trace lines: $(wc -l < "$work/trace.txt")"
-timed rs274 env HOME="$work/rs274" rs274 -t "$work/rs274/tools.tbl" -g "$work/bench.ngc"
+# 1. The headline: both read the file, interpret and write one line per motion to a file. The
+#    two alternate, run by run, so that the load of a shared machine weighs on both alike.
+camwb=("$cli" nc trace "$work/bench.ngc" -o "$work/camwb.trace")
+rs274=(env HOME="$work/rs274" rs274 -t "$work/rs274/tools.tbl" -g "$work/bench.ngc")
+"${camwb[@]}" > /dev/null 2>&1 < /dev/null || true
+"${rs274[@]}" > /dev/null 2>&1 < /dev/null || true
+: > "$work/camwb.times"
+: > "$work/rs274.times"
+for _ in $(seq 1 "$runs"); do
+  run_once camwb "${camwb[@]}"
+  run_once rs274 "${rs274[@]}"
+done
+echo "camwb runs (wall s, cpu s): $(tr '\n' ';' < "$work/camwb.times")"
+echo "rs274 runs (wall s, cpu s): $(tr '\n' ';' < "$work/rs274.times") $(load)"
+echo "camwb-cli trace lines: $(wc -l < "$work/camwb.trace")"
 echo "rs274 canonical lines: $(wc -l < "$work/rs274.out"); errors: $(grep -vc '^executing$' "$work/rs274.err" || true)"
 lines=$(wc -l < "$work/bench.ngc")
 awk -v b="$lines" -v cw="$(wall camwb)" -v cc="$(cpu camwb)" -v rw="$(wall rs274)" -v rc="$(cpu rs274)" 'BEGIN {
@@ -92,17 +109,22 @@ for entry in $programs; do
   }'
 done
 
-# 3. Instructions per block on a smaller program, both sides (callgrind; the load does not change them).
+# 3. Instructions per block, both sides (callgrind: the load does not change them), on ISO programs
+#    of N and 2N blocks: per block at N, and per block added from N to 2N, which leaves out what
+#    a process costs once (dynamic linking, start-up) on either side.
 if [ "$callgrind_blocks" -gt 0 ] && command -v valgrind > /dev/null; then
-  "$bench" --write-program "$work/small.ngc" "$callgrind_blocks" iso > /dev/null
-  small=$(wc -l < "$work/small.ngc")
-  instructions() { valgrind --tool=callgrind --callgrind-out-file="$work/cg.out" "$@" 2>&1 > /dev/null < /dev/null |
+  instructions() { valgrind --tool=callgrind --callgrind-out-file=/dev/null "$@" 2>&1 > /dev/null < /dev/null |
                      sed -n 's/.*Collected : *\([0-9]*\).*/\1/p'; }
-  ci=$(instructions "$cli" nc trace "$work/small.ngc" -o "$work/small.trace")
-  ri=$(HOME="$work/rs274" instructions rs274 -t "$work/rs274/tools.tbl" -g "$work/small.ngc")
-  awk -v b="$small" -v c="$ci" -v r="$ri" 'BEGIN {
-    printf "callgrind, %d lines: camwb-cli nc trace %.0f instructions/block, rs274 %.0f, ratio %.1fx\n", b, c / b, r / b, r / c
-  }'
+  for n in "$callgrind_blocks" $((2 * callgrind_blocks)); do
+    "$bench" --write-program "$work/cg$n.ngc" "$n" iso > /dev/null
+    echo "$(wc -l < "$work/cg$n.ngc") $(instructions "$cli" nc trace "$work/cg$n.ngc" -o "$work/cg$n.trace")" \
+         "$(HOME="$work/rs274" instructions rs274 -t "$work/rs274/tools.tbl" -g "$work/cg$n.ngc")" >> "$work/cg.txt"
+  done
+  awk 'NR == 1 {b = $1; c = $2; r = $3} NR == 2 {
+    printf "callgrind, %d lines: camwb-cli nc trace -o %.0f instructions/block, rs274 %.0f, ratio %.1fx\n", b, c / b, r / b, r / c
+    db = $1 - b; dc = ($2 - c) / db; dr = ($3 - r) / db
+    printf "callgrind, per block from %d to %d lines: camwb-cli %.0f, rs274 %.0f, ratio %.1fx\n", b, $1, dc, dr, dr / dc
+  }' "$work/cg.txt"
 fi
 
 # 4. Secondary: the interpreters in memory (Google Benchmark medians, no file, no process start).

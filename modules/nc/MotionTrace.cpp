@@ -160,6 +160,27 @@ private:
     NumberCache m_cache;
 };
 
+// The text a part of an entry had the last time, copied while what it shows stays the same (the
+// state that ends an entry, an arc's normal): far cheaper than writing it again.
+template <class Key> class RepeatedPart {
+public:
+    template <class WriteIt> void write(EntryWriter& w, const Key& key, WriteIt&& writeIt)
+    {
+        if (m_key && *m_key == key) {
+            w.raw(m_text);
+            return;
+        }
+        const std::size_t start = w.size();
+        writeIt();
+        m_key = key;
+        m_text.assign(w.since(start));
+    }
+
+private:
+    std::optional<Key> m_key;
+    std::string m_text;
+};
+
 // Turns records into entries, keeping the state they carry (feed mode, spindle, tool). The one
 // formatter of the trace: motionTrace() feeds it a recorded toolpath, MotionTraceWriter the
 // interpreter's records as they come.
@@ -207,8 +228,8 @@ private:
         // The text names only called programs' files; JSON names every entry's file.
         m_w.begin(m_names[called ? m_source.file : 0], called, m_source.line, kind);
     }
-    // What ends an entry: feed, spindle, tool. It repeats until the program changes one of them,
-    // so the last entry's text is copied when nothing changed (a third of the trace's time).
+    // What ends an entry: feed, spindle, tool. It repeats until the program changes one of them
+    // (writing it was a third of the trace's time).
     struct StateKey {
         std::uint64_t feed, rpm, surfaceSpeed;
         int tool;
@@ -225,14 +246,7 @@ private:
                            m_state.feedMode,
                            withFeed,
                            m_state.spindleCw};
-        if (m_lastState && *m_lastState == key) {
-            m_w.raw(m_lastStateText);
-            return;
-        }
-        const std::size_t start = m_w.size();
-        writeState(feed, withFeed);
-        m_lastState = key;
-        m_lastStateText.assign(m_w.since(start));
+        m_stateText.write(m_w, key, [&] { writeState(feed, withFeed); });
     }
     void writeState(double feed, bool withFeed)
     {
@@ -280,7 +294,7 @@ private:
         m_w.word(r.clockwise ? "cw" : "ccw");
         m_w.point("", "to", r.to);
         m_w.point("c", "center", r.center);
-        m_w.point("n", "normal", r.normal);
+        m_normalText.write(m_w, r.normal, [&] { m_w.point("n", "normal", r.normal); });
         m_w.boolean("cw", r.clockwise);
         m_w.integerField("turns", "turns", r.turns);
         state(r.feedMmPerMin, true);
@@ -334,8 +348,8 @@ private:
     EntryWriter m_w;
     std::vector<std::string> m_names;
     State m_state;
-    std::optional<StateKey> m_lastState;
-    std::string m_lastStateText;
+    RepeatedPart<StateKey> m_stateText;
+    RepeatedPart<Vec3> m_normalText;
     SourceRef m_source;
 };
 

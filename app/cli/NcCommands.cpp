@@ -6,9 +6,9 @@
 #include "kinematics/Machine.h"
 #include "nc/Interpreter.h"
 #include "nc/MotionTrace.h"
-#include "toolpath/ToolpathRecorder.h"
 
 #include <charconv>
+#include <cstdio>
 #include <iostream>
 #include <optional>
 
@@ -91,18 +91,32 @@ int ncCommand(const std::vector<std::string>& args)
     if (options.maxBlocks > 0)
         interpretOptions.maxBlocks = options.maxBlocks;
 
-    toolpath::ToolpathRecorder recorder;
-    const nc::InterpretResult result = nc::interpretFile(options.input, options.dialect, interpretOptions, recorder);
+    // The trace is written while the interpreter runs, nothing recorded: to stdout, or to a
+    // temporary file beside -o that replaces it only when complete.
+    std::optional<base::AtomicFileWriter> file;
+    if (!options.output.empty()) {
+        file.emplace(options.output);
+        if (const base::Status opened = file->open(); !opened)
+            return fail(opened.error().toString());
+    }
+    nc::MotionTraceWriter trace(options.input, options.format, [&file](std::string_view text) {
+        if (file) {
+            file->write(text);  // a failure shows at commit()
+            return true;
+        }
+        return std::fwrite(text.data(), 1, text.size(), stdout) == text.size();
+    });
+    const nc::InterpretResult result = nc::interpretFile(options.input, options.dialect, interpretOptions, trace);
     printDiagnostics(result.diagnostics);
     if (result.diagnosticsDropped > 0)
         std::cerr << "camwb-cli: note: " << result.diagnosticsDropped << " more diagnostics not shown\n";
 
-    const std::string trace = nc::motionTrace(recorder.toolpath(), result.files, options.format);
-    if (options.output.empty()) {
-        std::cout << trace;
-        std::cout.flush();
-    } else if (const base::Status written = base::writeFileAtomically(options.output, trace); !written) {
-        return fail(written.error().toString());
+    const bool traced = trace.finish(result.files);
+    if (file) {
+        if (const base::Status written = file->commit(); !written)
+            return fail(written.error().toString());
+    } else if (!traced || std::fflush(stdout) != 0) {
+        return fail("cannot write the trace to standard output");
     }
     return result.hasErrors() ? kExitError : kExitOk;
 }

@@ -3,8 +3,11 @@
 #include <algorithm>
 #include <charconv>
 #include <cmath>
+#include <cstdint>
 #include <cstring>
 #include <optional>
+#include <type_traits>
+#include <utility>
 
 namespace camwb::base {
 
@@ -26,44 +29,96 @@ struct ScaledDigits {
     bool negative;
 };
 
-std::optional<ScaledDigits> fastScaled(double value, int decimals)
+[[gnu::always_inline]] inline std::optional<ScaledDigits> fastScaled(double value, int decimals)
 {
     if (decimals < 0 || decimals > 12)
         return std::nullopt;
     const double scaled = value * kPowersOfTen[decimals];
     if (!(std::abs(scaled) < 1099511627776.0))  // 2^40; also false for NaN
         return std::nullopt;
-    const double whole = std::floor(std::abs(scaled));
-    const double fraction = std::abs(scaled) - whole;
+    // Below 2^40 the conversion truncates exactly (a floor, without calling floor()).
+    const unsigned long long whole = static_cast<unsigned long long>(std::abs(scaled));
+    const double fraction = std::abs(scaled) - static_cast<double>(whole);
     if (std::abs(fraction - 0.5) < 0.001)
         return std::nullopt;
-    return ScaledDigits{static_cast<unsigned long long>(whole) + (fraction > 0.5 ? 1 : 0), scaled < 0};
+    return ScaledDigits{whole + (fraction > 0.5 ? 1 : 0), scaled < 0};
 }
 
-std::size_t fastFixedTo(const ScaledDigits& scaled, int decimals, char* out)
+// "00" to "99": two digits per division.
+constexpr char kDigitPairs[] = "00010203040506070809101112131415161718192021222324252627282930313233343536373839"
+                               "40414243444546474849505152535455565758596061626364656667686970717273747576777879"
+                               "8081828384858687888990919293949596979899";
+
+// Exactly Count digits of `value` (below 10^Count) ending just before `end`, two at a time.
+template <int Count, class Unsigned> void writeDigits(Unsigned value, char* end)
+{
+    if constexpr (Count >= 2) {
+        std::memcpy(end - 2, kDigitPairs + 2 * (value % 100), 2);
+        writeDigits<Count - 2>(static_cast<Unsigned>(value / 100), end - 2);
+    } else if constexpr (Count == 1) {
+        end[-1] = static_cast<char>('0' + value);
+    }
+}
+
+// All digits of `value` ending just before `end`, two at a time.
+template <class Unsigned> void writeDigits(Unsigned value, char* end)
+{
+    while (value >= 100) {
+        end -= 2;
+        std::memcpy(end, kDigitPairs + 2 * (value % 100), 2);
+        value /= 100;
+    }
+    if (value >= 10)
+        std::memcpy(end - 2, kDigitPairs + 2 * value, 2);
+    else
+        end[-1] = static_cast<char>('0' + value);
+}
+
+// The whole part, the point and the decimals of scaled.digits written in place (no std::to_chars,
+// no copies): the trace writes eight numbers a block, and this was most of its time. The
+// decimals are a template argument so that the split at the point and the digits of the fraction
+// are divisions by constants, in 32 bits where the numbers fit.
+template <int Decimals> std::size_t fastFixedTo(const ScaledDigits& scaled, char* out)
 {
     char* p = out;
     if (scaled.negative && scaled.digits != 0)  // "-0.000" is never written
         *p++ = '-';
-    const unsigned long long power = kIntegerPowersOfTen[decimals];
-    p = std::to_chars(p, p + 24, scaled.digits / power).ptr;
-    if (decimals > 0) {
+    constexpr unsigned long long power = kIntegerPowersOfTen[Decimals];
+    const unsigned long long whole = scaled.digits / power;
+    int wholeDigits = 1;  // fastScaled keeps scaled.digits below 2^40 < 10^13
+    while (wholeDigits < 13 && whole >= kIntegerPowersOfTen[wholeDigits])
+        ++wholeDigits;
+    p += wholeDigits;
+    if (whole <= 0xffffffffull)
+        writeDigits(static_cast<std::uint32_t>(whole), p);
+    else
+        writeDigits(whole, p);
+    if constexpr (Decimals > 0) {
         *p++ = '.';
-        char fraction[16];
-        const char* end = std::to_chars(fraction, fraction + sizeof fraction, scaled.digits % power).ptr;
-        const int length = static_cast<int>(end - fraction);
-        std::memset(p, '0', static_cast<std::size_t>(decimals - length));  // leading zeros of the fraction
-        std::memcpy(p + decimals - length, fraction, static_cast<std::size_t>(length));
-        p += decimals;
+        using Fraction = std::conditional_t<(Decimals <= 9), std::uint32_t, unsigned long long>;
+        writeDigits<Decimals>(static_cast<Fraction>(scaled.digits % power), p + Decimals);
+        p += Decimals;
     }
     return static_cast<std::size_t>(p - out);
 }
 
-// Fixed text of `value` into out (kFixedCapacity bytes); "-0.000" becomes "0.000".
-std::size_t fixedTo(double value, int decimals, char* out)
+template <std::size_t... D>
+std::size_t fastFixedTo(const ScaledDigits& scaled, int decimals, char* out, std::index_sequence<D...>)
 {
-    if (const std::optional<ScaledDigits> scaled = fastScaled(value, decimals))
-        return fastFixedTo(*scaled, decimals, out);
+    using Writer = std::size_t (*)(const ScaledDigits&, char*);
+    static constexpr Writer writers[] = {&fastFixedTo<static_cast<int>(D)>...};
+    return writers[decimals](scaled, out);
+}
+
+// decimals: 0 to 12, as fastScaled checked.
+std::size_t fastFixedTo(const ScaledDigits& scaled, int decimals, char* out)
+{
+    return fastFixedTo(scaled, decimals, out, std::make_index_sequence<13>());
+}
+
+// fixedTo() for what the shortcut leaves: large values, ties, NaN and infinities.
+[[gnu::noinline]] std::size_t slowFixedTo(double value, int decimals, char* out)
+{
     if (!std::isfinite(value)) {
         std::memcpy(out, "nan", 3);
         return 3;
@@ -87,6 +142,15 @@ std::size_t fixedTo(double value, int decimals, char* out)
     return length;
 }
 
+// Fixed text of `value` into out (kFixedCapacity bytes); "-0.000" becomes "0.000". Inlined: the
+// shortcut is a few dozen instructions, and calls around it cost as much.
+[[gnu::always_inline]] inline std::size_t fixedTo(double value, int decimals, char* out)
+{
+    if (const std::optional<ScaledDigits> scaled = fastScaled(value, decimals))
+        return fastFixedTo(*scaled, decimals, out);
+    return slowFixedTo(value, decimals, out);
+}
+
 }  // namespace
 
 std::string formatFixed(double value, int decimals)
@@ -97,8 +161,10 @@ std::string formatFixed(double value, int decimals)
 
 std::size_t NumberFormat::formatTo(double value, char* out) const
 {
-    // One spare byte at the front so that a forced '+' can be prepended without moving the text.
-    char* text = out + 1;
+    if (!trimTrailingZeros && leadingZero && !forceSign)  // plain fixed decimals: nothing to adjust
+        return fixedTo(value * scale, decimals, out);
+    // A spare byte at the front when a '+' may be prepended; otherwise the text is written in place.
+    char* text = forceSign ? out + 1 : out;
     std::size_t length = fixedTo(value * scale, decimals, text);
     if (trimTrailingZeros && std::memchr(text, '.', length)) {
         while (text[length - 1] == '0')
@@ -125,7 +191,8 @@ std::size_t NumberFormat::formatTo(double value, char* out) const
         text[0] = '+';
         ++length;
     }
-    std::memmove(out, text, length);
+    if (text != out)
+        std::memmove(out, text, length);
     return length;
 }
 

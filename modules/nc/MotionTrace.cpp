@@ -1,18 +1,26 @@
 #include "nc/MotionTrace.h"
 
 #include "base/NumberFormat.h"
+#include "nc/detail/TraceText.h"
 #include "toolpath/RecordNames.h"
+#include "toolpath/ToolpathRecorder.h"
 
 #include <algorithm>
+#include <bit>
 #include <charconv>
 #include <cmath>
+#include <cstdint>
 #include <filesystem>
+#include <optional>
+#include <string_view>
 
 namespace camwb::nc {
 
 namespace {
 
 using namespace camwb::toolpath;
+using detail::NumberCache;
+using detail::TextBuffer;
 
 struct State {
     Vec3 position;
@@ -28,13 +36,13 @@ struct State {
 // interpreter's pace, not the allocator's.
 class EntryWriter {
 public:
-    EntryWriter(std::string& out, TraceFormat format) : m_out(out), m_text(format == TraceFormat::Text)
+    EntryWriter(TextBuffer& out, TraceFormat format) : m_out(out), m_text(format == TraceFormat::Text)
     {
         m_number.decimals = 4;
     }
 
     // Text: "<where> <kind>"; JSON: {"file":"<file>","line":n,"kind":"<kind>".
-    void begin(const std::string& file, bool showFile, int line, const char* kind)
+    void begin(std::string_view file, bool showFile, int line, std::string_view kind)
     {
         if (m_text) {
             if (showFile) {
@@ -54,17 +62,17 @@ public:
             m_out += '"';
         }
     }
-    void word(const char* text)  // a bare word in the text only ("cw"); JSON says it by field
+    void word(std::string_view text)  // a bare word in the text only ("cw"); JSON says it by field
     {
         if (m_text) {
             m_out += ' ';
             m_out += text;
         }
     }
-    void key(const char* textKey, const char* jsonKey)
+    CAMWB_TRACE_INLINE void key(std::string_view textKey, std::string_view jsonKey)
     {
         if (m_text) {
-            if (*textKey) {
+            if (!textKey.empty()) {
                 m_out += ' ';
                 m_out += textKey;
             }
@@ -75,17 +83,17 @@ public:
             m_out += "\":";
         }
     }
-    void number(const char* textKey, const char* jsonKey, double value)
+    CAMWB_TRACE_INLINE void number(std::string_view textKey, std::string_view jsonKey, double value)
     {
         key(textKey, jsonKey);
         number(value);
     }
-    void integerField(const char* textKey, const char* jsonKey, int value)
+    CAMWB_TRACE_INLINE void integerField(std::string_view textKey, std::string_view jsonKey, int value)
     {
         key(textKey, jsonKey);
         integer(value);
     }
-    void text(const char* textKey, const char* jsonKey, const char* value)
+    void text(std::string_view textKey, std::string_view jsonKey, std::string_view value)
     {
         key(textKey, jsonKey);
         if (m_text) {
@@ -96,14 +104,14 @@ public:
             m_out += '"';
         }
     }
-    void boolean(const char* jsonKey, bool value)  // JSON only
+    void boolean(std::string_view jsonKey, bool value)  // JSON only
     {
         if (!m_text) {
             key("", jsonKey);
-            m_out += value ? "true" : "false";
+            m_out += value ? std::string_view("true") : std::string_view("false");
         }
     }
-    void point(const char* textKey, const char* jsonKey, const Vec3& p)
+    CAMWB_TRACE_INLINE void point(std::string_view textKey, std::string_view jsonKey, const Vec3& p)
     {
         key(textKey, jsonKey);
         const char separator = m_text ? ' ' : ',';
@@ -117,31 +125,76 @@ public:
         if (!m_text)
             m_out += ']';
     }
-    void end() { m_out += m_text ? "\n" : "}\n"; }
+    void end()
+    {
+        if (!m_text)
+            m_out += '}';
+        m_out += '\n';
+    }
     bool isText() const { return m_text; }
+    // The text written since size() was `start`, and a copy of such text.
+    std::size_t size() const { return m_out.size(); }
+    std::string_view since(std::size_t start) const { return m_out.view().substr(start); }
+    void raw(std::string_view text) { m_out += text; }
 
 private:
-    void number(double value)
+    CAMWB_TRACE_INLINE void number(double value)
     {
-        char buffer[base::NumberFormat::kBufferSize];
-        m_out.append(buffer, m_number.formatTo(value, buffer));
+        char* at = m_out.room(base::NumberFormat::kBufferSize);
+        std::size_t length = m_cache.find(value, at);
+        if (length == 0) {
+            length = m_number.formatTo(value, at);
+            m_cache.store(value, at, length);
+        }
+        m_out.commit(at + length);
     }
-    void integer(int value)
+    CAMWB_TRACE_INLINE void integer(int value)
     {
-        char buffer[16];
-        const auto result = std::to_chars(buffer, buffer + sizeof buffer, value);
-        m_out.append(buffer, result.ptr);
+        char* at = m_out.room(16);
+        m_out.commit(std::to_chars(at, at + 16, value).ptr);
     }
 
-    std::string& m_out;
+    TextBuffer& m_out;
     bool m_text;
     base::NumberFormat m_number;
+    NumberCache m_cache;
 };
 
+// The text a part of an entry had the last time, copied while what it shows stays the same (the
+// state that ends an entry, an arc's normal): far cheaper than writing it again.
+template <class Key> class RepeatedPart {
+public:
+    template <class WriteIt> void write(EntryWriter& w, const Key& key, WriteIt&& writeIt)
+    {
+        if (m_key && *m_key == key) {
+            w.raw(m_text);
+            return;
+        }
+        const std::size_t start = w.size();
+        writeIt();
+        m_key = key;
+        m_text.assign(w.since(start));
+    }
+
+private:
+    std::optional<Key> m_key;
+    std::string m_text;
+};
+
+// Turns records into entries, keeping the state they carry (feed mode, spindle, tool). The one
+// formatter of the trace: motionTrace() feeds it a recorded toolpath, MotionTraceWriter the
+// interpreter's records as they come.
 class Tracer {
 public:
-    Tracer(const std::vector<std::string>& files, TraceFormat format, std::string& out) : m_w(out, format)
+    Tracer(const std::vector<std::string>& files, TraceFormat format, TextBuffer& out) : m_w(out, format)
     {
+        setFiles(files);
+    }
+
+    // The names entries of each SourceRef::file carry.
+    void setFiles(const std::vector<std::string>& files)
+    {
+        m_names.clear();
         for (const std::string& file : files)
             m_names.push_back(jsonName(std::filesystem::path(file).filename().string()));
         if (m_names.empty())
@@ -152,6 +205,11 @@ public:
     {
         m_source = source;
         std::visit([this](const auto& r) { visit(r); }, record);
+    }
+    template <class T> void record(const T& record, const SourceRef& source)
+    {
+        m_source = source;
+        visit(record);
     }
 
 private:
@@ -164,18 +222,38 @@ private:
                 out += c;
         return out;
     }
-    void begin(const char* kind)
+    void begin(std::string_view kind)
     {
         const bool called = m_source.file > 0 && m_source.file < static_cast<int>(m_names.size());
         // The text names only called programs' files; JSON names every entry's file.
         m_w.begin(m_names[called ? m_source.file : 0], called, m_source.line, kind);
     }
+    // What ends an entry: feed, spindle, tool. It repeats until the program changes one of them
+    // (writing it was a third of the trace's time).
+    struct StateKey {
+        std::uint64_t feed, rpm, surfaceSpeed;
+        int tool;
+        FeedMode feedMode;
+        bool withFeed, spindleCw;
+        bool operator==(const StateKey&) const = default;
+    };
     void state(double feed, bool withFeed)
     {
+        const StateKey key{withFeed ? std::bit_cast<std::uint64_t>(feed) : 0,
+                           std::bit_cast<std::uint64_t>(m_state.rpm),
+                           std::bit_cast<std::uint64_t>(m_state.surfaceSpeed),
+                           m_state.tool,
+                           m_state.feedMode,
+                           withFeed,
+                           m_state.spindleCw};
+        m_stateText.write(m_w, key, [&] { writeState(feed, withFeed); });
+    }
+    void writeState(double feed, bool withFeed)
+    {
         if (withFeed) {
-            const char* key = m_state.feedMode == FeedMode::PerMinute       ? "f"
-                              : m_state.feedMode == FeedMode::PerRevolution ? "fr"
-                                                                            : "fi";
+            const std::string_view key = m_state.feedMode == FeedMode::PerMinute       ? "f"
+                                         : m_state.feedMode == FeedMode::PerRevolution ? "fr"
+                                                                                       : "fi";
             m_w.number(key, "feed", feed);
             if (!m_w.isText())
                 m_w.text("", "feedMode", name(m_state.feedMode));
@@ -216,7 +294,7 @@ private:
         m_w.word(r.clockwise ? "cw" : "ccw");
         m_w.point("", "to", r.to);
         m_w.point("c", "center", r.center);
-        m_w.point("n", "normal", r.normal);
+        m_normalText.write(m_w, r.normal, [&] { m_w.point("n", "normal", r.normal); });
         m_w.boolean("cw", r.clockwise);
         m_w.integerField("turns", "turns", r.turns);
         state(r.feedMmPerMin, true);
@@ -270,6 +348,8 @@ private:
     EntryWriter m_w;
     std::vector<std::string> m_names;
     State m_state;
+    RepeatedPart<StateKey> m_stateText;
+    RepeatedPart<Vec3> m_normalText;
     SourceRef m_source;
 };
 
@@ -277,12 +357,95 @@ private:
 
 std::string motionTrace(const toolpath::Toolpath& program, const std::vector<std::string>& files, TraceFormat format)
 {
-    std::string out;
+    TextBuffer out;
     out.reserve(program.size() * (format == TraceFormat::Text ? 80 : 160));
     Tracer tracer(files, format, out);
     for (std::size_t i = 0; i < program.size(); ++i)
         tracer.record(program.record(i), program.source(i));
-    return out;
+    return std::string(out.view());
+}
+
+struct MotionTraceWriter::Impl {
+    Impl(const std::string& programPath, TraceFormat format, Write write, std::size_t chunkBytes) :
+        tracer({programPath}, format, text),
+        write(std::move(write)),
+        chunkBytes(chunkBytes)
+    {
+        text.reserve(chunkBytes + 65536);
+    }
+
+    template <class T> void record(const T& r)
+    {
+        // A called program's entries are named by its file, which the run names only at its end.
+        if (held || source.file != 0) {
+            if (!held)
+                held.emplace();
+            held->setSource(source);
+            toolpath::dispatch(r, *held);
+            return;
+        }
+        tracer.record(r, source);
+        if (text.size() >= chunkBytes)
+            flush();
+    }
+    void flush()
+    {
+        if (!writeFailed && text.size() > 0 && !write(text.view()))
+            writeFailed = true;
+        text.clear();
+    }
+
+    TextBuffer text;
+    Tracer tracer;
+    Write write;
+    std::size_t chunkBytes;
+    SourceRef source;
+    std::optional<ToolpathRecorder> held;
+    bool writeFailed = false;
+};
+
+MotionTraceWriter::MotionTraceWriter(const std::string& programPath, TraceFormat format, Write write,
+                                     std::size_t chunkBytes) :
+    m_impl(std::make_unique<Impl>(programPath, format, std::move(write), chunkBytes))
+{
+}
+
+MotionTraceWriter::~MotionTraceWriter() = default;
+
+void MotionTraceWriter::setSource(const SourceRef& source) { m_impl->source = source; }
+void MotionTraceWriter::rapid(const Rapid& r) { m_impl->record(r); }
+void MotionTraceWriter::linear(const Linear& r) { m_impl->record(r); }
+void MotionTraceWriter::arc(const Arc& r) { m_impl->record(r); }
+void MotionTraceWriter::toolChange(const ToolChange& r) { m_impl->record(r); }
+void MotionTraceWriter::spindle(const Spindle& r) { m_impl->record(r); }
+void MotionTraceWriter::coolant(const Coolant& r) { m_impl->record(r); }
+void MotionTraceWriter::feedMode(const FeedModeChange& r) { m_impl->record(r); }
+void MotionTraceWriter::workOffset(const WorkOffset& r) { m_impl->record(r); }
+void MotionTraceWriter::dwell(const Dwell& r) { m_impl->record(r); }
+void MotionTraceWriter::cycle(const Cycle& r) { m_impl->record(r); }
+void MotionTraceWriter::toolAxisMove(const ToolAxisMove& r) { m_impl->record(r); }
+void MotionTraceWriter::cutterComp(const CutterComp& r) { m_impl->record(r); }
+void MotionTraceWriter::comment(const Comment& r) { m_impl->record(r); }
+void MotionTraceWriter::sectionBegin(const SectionBegin& r) { m_impl->record(r); }
+void MotionTraceWriter::sectionEnd(const SectionEnd& r) { m_impl->record(r); }
+void MotionTraceWriter::programStop(const ProgramStop& r) { m_impl->record(r); }
+void MotionTraceWriter::passThrough(const PassThrough& r) { m_impl->record(r); }
+
+bool MotionTraceWriter::finish(const std::vector<std::string>& files)
+{
+    Impl& impl = *m_impl;
+    if (impl.held) {
+        impl.tracer.setFiles(files);
+        const Toolpath& held = impl.held->toolpath();
+        for (std::size_t i = 0; i < held.size(); ++i) {
+            impl.tracer.record(held.record(i), held.source(i));
+            if (impl.text.size() >= impl.chunkBytes)
+                impl.flush();
+        }
+        impl.held.reset();
+    }
+    impl.flush();
+    return !impl.writeFailed;
 }
 
 }  // namespace camwb::nc

@@ -1,12 +1,13 @@
-// Tracing speed of the plain ISO interpreter: blocks per second for a 1M-move program as
-// posts/linuxcnc.js writes it (bench::benchProgram: lines and quarter arcs, 3 decimals, modal
-// words), into a counting sink (the interpreter alone), into a ToolpathRecorder (what the GUI and
-// camwb-cli keep) and on to the text trace (what `camwb-cli nc trace` prints). Also writes the
-// program to a file for scripts/bench-nc.sh, which runs LinuxCNC's rs274 on the same text.
-// Usage: camwb_nc_bench [benchmark flags] | camwb_nc_bench --write-program <file> [moves]
-#include "BenchProgram.h"
+// Interpreter speed in all three dialects: blocks executed per CPU second for the programs of
+// NcBenchPrograms.h (about 1M blocks each), into a counting sink (the interpreter alone), into
+// a ToolpathRecorder (what the GUI and the round trips keep) and, for ISO, on to the text trace
+// as `camwb-cli nc trace` writes it (streamed, and from a recorded toolpath as before). Also writes
+// a program to a file for scripts/bench-nc.sh, which times `camwb-cli nc trace` and LinuxCNC's rs274
+// on the same text in separate processes.
+// Usage: camwb_nc_bench [benchmark flags]
+//        camwb_nc_bench --write-program <file> [blocks] [iso|sinumerik|sinumerik-loops|heidenhain|heidenhain-labels]
+#include "NcBenchPrograms.h"
 
-#include "base/NumberFormat.h"
 #include "nc/Interpreter.h"
 #include "nc/MotionTrace.h"
 #include "toolpath/ToolpathRecorder.h"
@@ -18,109 +19,22 @@
 #include <cstring>
 #include <fstream>
 #include <map>
+#include <optional>
 #include <string>
+#include <utility>
 
 namespace {
 
 using namespace camwb;
 using namespace camwb::toolpath;
+using bench::NcProgram;
 
-// Words the way the LinuxCNC post writes them: 3 decimals, axes and F only when they change, the
-// motion word when it changes, I and J always.
-class IsoWriter {
-public:
-    std::string take() { return std::move(m_out); }
-
-    void line(const std::string& text)
-    {
-        m_out += text;
-        m_out += '\n';
-        ++m_lines;
-    }
-    void move(const char* motion, const Vec3& to, double feed, const std::string& centre = {})
-    {
-        std::string block;
-        if (m_motion != motion) {
-            block += motion;
-            m_motion = motion;
-        }
-        axis(block, 'X', to.x, m_at.x);
-        axis(block, 'Y', to.y, m_at.y);
-        axis(block, 'Z', to.z, m_at.z);
-        block += centre;
-        if (feed > 0) {
-            const std::string f = base::NumberFormat{3, true}.format(feed);
-            if (f != m_feed) {
-                append(block, "F" + f);
-                m_feed = f;
-            }
-        }
-        m_at = to;
-        line(block);
-    }
-    std::size_t lines() const { return m_lines; }
-    const Vec3& at() const { return m_at; }
-
-private:
-    static void append(std::string& block, const std::string& word)
-    {
-        if (!block.empty())
-            block += ' ';
-        block += word;
-    }
-    void axis(std::string& block, char letter, double value, double before)
-    {
-        const std::string text = base::formatFixed(value, 3);
-        if (!m_started || text != base::formatFixed(before, 3))
-            append(block, letter + text);
-    }
-
-public:
-    bool m_started = false;
-
-private:
-    std::string m_out;
-    std::size_t m_lines = 0;
-    std::string m_motion;
-    std::string m_feed;
-    Vec3 m_at;
-};
-
-std::string isoProgram(std::size_t moves)
+const std::string& program(NcProgram kind, std::size_t blocks)
 {
-    IsoWriter w;
-    w.line("%");
-    w.line("(benchmark)");
-    w.line("G21 G90 G94 G17 G40 G49 G80 G91.1");
-    w.line("G54");
-    w.line("T1 M6");
-    w.line("G43 H1");
-    w.line("M3 S4000");
-    const Toolpath path = bench::benchProgram(moves);
-    for (const Record& record : path.records()) {
-        if (const auto* r = std::get_if<Rapid>(&record)) {
-            w.move("G0", r->to, 0);
-            w.m_started = true;
-        } else if (const auto* l = std::get_if<Linear>(&record)) {
-            w.move("G1", l->to, l->feedMmPerMin);
-        } else if (const auto* a = std::get_if<Arc>(&record)) {
-            const std::string centre = " I" + base::formatFixed(a->center.x - w.at().x, 3) + " J" +
-                                       base::formatFixed(a->center.y - w.at().y, 3);
-            w.move(a->clockwise ? "G2" : "G3", a->to, a->feedMmPerMin, centre);
-        }
-    }
-    w.line("M5 M9");
-    w.line("M2");
-    w.line("%");
-    return w.take();
-}
-
-const std::string& program(std::size_t moves)
-{
-    static std::map<std::size_t, std::string> programs;
-    auto found = programs.find(moves);
+    static std::map<std::pair<NcProgram, std::size_t>, std::string> programs;
+    auto found = programs.find({kind, blocks});
     if (found == programs.end())
-        found = programs.emplace(moves, isoProgram(moves)).first;
+        found = programs.emplace(std::pair{kind, blocks}, bench::ncProgram(kind, blocks)).first;
     return found->second;
 }
 
@@ -155,79 +69,146 @@ public:
     void passThrough(const PassThrough&) override { ++records; }
 };
 
-nc::InterpretOptions isoOptions()
+nc::InterpretOptions optionsFor(NcProgram kind)
 {
     nc::InterpretOptions options;
-    options.dialect = nc::Dialect::Iso;
+    options.dialect = bench::dialectOf(kind);
+    options.fileName = std::string("bench.") + (kind == NcProgram::Iso                       ? "ngc"
+                                                : options.dialect == nc::Dialect::Heidenhain ? "h"
+                                                                                             : "mpf");
     return options;
 }
 
-void report(benchmark::State& state, const std::string& text)
+// Interprets the program into `sink`; a benchmark whose program does not run cleanly is an error.
+nc::InterpretResult run(benchmark::State& state, const std::string& text, NcProgram kind, MachineSink& sink)
 {
-    const double blocks = static_cast<double>(lineCount(text));
-    state.counters["blocks/s"] = benchmark::Counter(blocks, benchmark::Counter::kIsIterationInvariantRate);
-    state.counters["lines"] = blocks;
+    nc::InterpretResult result = nc::interpret(text, optionsFor(kind), sink);
+    if (result.hasErrors() || !result.completed)
+        state.SkipWithError(("the benchmark program does not run: " +
+                             (result.diagnostics.empty() ? std::string("incomplete") : result.diagnostics[0].message))
+                                .c_str());
+    return result;
 }
 
-void BM_IsoTraceCountingSink(benchmark::State& state)
+void report(benchmark::State& state, const std::string& text, std::int64_t blocksExecuted)
 {
-    const std::string& text = program(static_cast<std::size_t>(state.range(0)));
+    const double blocks = static_cast<double>(blocksExecuted);
+    state.counters["blocks/s"] = benchmark::Counter(blocks, benchmark::Counter::kIsIterationInvariantRate);
+    state.counters["blocks"] = blocks;
+    state.counters["lines"] = static_cast<double>(lineCount(text));
+}
+
+void BM_CountingSink(benchmark::State& state, NcProgram kind)
+{
+    const std::string& text = program(kind, static_cast<std::size_t>(state.range(0)));
+    std::int64_t blocks = 0;
     for (auto _ : state) {
         CountingSink sink;
-        const nc::InterpretResult result = nc::interpret(text, isoOptions(), sink);
-        if (result.hasErrors())
-            state.SkipWithError("the benchmark program has errors");
+        blocks = run(state, text, kind, sink).blocksExecuted;
         benchmark::DoNotOptimize(sink.records);
     }
-    report(state, text);
+    report(state, text, blocks);
 }
 
-void BM_IsoTraceRecorder(benchmark::State& state)
+void BM_Recorder(benchmark::State& state, NcProgram kind)
 {
-    const std::string& text = program(static_cast<std::size_t>(state.range(0)));
+    const std::string& text = program(kind, static_cast<std::size_t>(state.range(0)));
+    std::int64_t blocks = 0;
     for (auto _ : state) {
         ToolpathRecorder recorder;
-        const nc::InterpretResult result = nc::interpret(text, isoOptions(), recorder);
-        if (result.hasErrors())
-            state.SkipWithError("the benchmark program has errors");
+        blocks = run(state, text, kind, recorder).blocksExecuted;
         benchmark::DoNotOptimize(recorder.toolpath().size());
     }
-    report(state, text);
+    report(state, text, blocks);
 }
 
-void BM_IsoTraceText(benchmark::State& state)
+// The text trace as `camwb-cli nc trace` makes it now: formatted while the interpreter runs, handed
+// on in 1 MiB chunks (here counted, not written).
+void BM_TraceStream(benchmark::State& state, NcProgram kind)
 {
-    const std::string& text = program(static_cast<std::size_t>(state.range(0)));
+    const std::string& text = program(kind, static_cast<std::size_t>(state.range(0)));
+    std::int64_t blocks = 0;
+    for (auto _ : state) {
+        std::size_t bytes = 0;
+        nc::MotionTraceWriter trace(optionsFor(kind).fileName, nc::TraceFormat::Text, [&bytes](std::string_view chunk) {
+            bytes += chunk.size();
+            return true;
+        });
+        const nc::InterpretResult result = run(state, text, kind, trace);
+        trace.finish(result.files);
+        blocks = result.blocksExecuted;
+        benchmark::DoNotOptimize(bytes);
+    }
+    report(state, text, blocks);
+}
+
+// The text trace made from a recorded toolpath, all of it in memory (how the trace was made before
+// it streamed; the unit tests still trace this way).
+void BM_TraceFromRecorder(benchmark::State& state, NcProgram kind)
+{
+    const std::string& text = program(kind, static_cast<std::size_t>(state.range(0)));
+    std::int64_t blocks = 0;
     for (auto _ : state) {
         ToolpathRecorder recorder;
-        const nc::InterpretResult result = nc::interpret(text, isoOptions(), recorder);
+        const nc::InterpretResult result = run(state, text, kind, recorder);
         const std::string trace = nc::motionTrace(recorder.toolpath(), result.files, nc::TraceFormat::Text);
+        blocks = result.blocksExecuted;
         benchmark::DoNotOptimize(trace.size());
     }
-    report(state, text);
+    report(state, text, blocks);
 }
 
-BENCHMARK(BM_IsoTraceCountingSink)->Arg(1000000)->Unit(benchmark::kMillisecond)->UseRealTime();
-BENCHMARK(BM_IsoTraceRecorder)->Arg(1000000)->Unit(benchmark::kMillisecond)->UseRealTime();
-BENCHMARK(BM_IsoTraceText)->Arg(1000000)->Unit(benchmark::kMillisecond)->UseRealTime();
+// Rates per CPU second of the benchmark's thread (not wall time): the machine the figures come
+// from is shared, and the load stretches wall time, not CPU time.
+#define CAMWB_NC_BENCH(function, name, kind)                                                                           \
+    BENCHMARK_CAPTURE(function, name, kind)->Arg(1000000)->Unit(benchmark::kMillisecond)
+
+CAMWB_NC_BENCH(BM_CountingSink, iso, NcProgram::Iso);
+CAMWB_NC_BENCH(BM_Recorder, iso, NcProgram::Iso);
+CAMWB_NC_BENCH(BM_TraceStream, iso, NcProgram::Iso);
+CAMWB_NC_BENCH(BM_TraceFromRecorder, iso, NcProgram::Iso);
+CAMWB_NC_BENCH(BM_CountingSink, sinumerik, NcProgram::Sinumerik);
+CAMWB_NC_BENCH(BM_Recorder, sinumerik, NcProgram::Sinumerik);
+CAMWB_NC_BENCH(BM_CountingSink, sinumerik_loops, NcProgram::SinumerikLoops);
+CAMWB_NC_BENCH(BM_Recorder, sinumerik_loops, NcProgram::SinumerikLoops);
+CAMWB_NC_BENCH(BM_CountingSink, heidenhain, NcProgram::Heidenhain);
+CAMWB_NC_BENCH(BM_Recorder, heidenhain, NcProgram::Heidenhain);
+CAMWB_NC_BENCH(BM_CountingSink, heidenhain_labels, NcProgram::HeidenhainLabels);
+CAMWB_NC_BENCH(BM_Recorder, heidenhain_labels, NcProgram::HeidenhainLabels);
+
+// --write-program <file> [blocks] [program]: the program as the benchmarks read it.
+int writeProgram(int argc, char** argv)
+{
+    const std::size_t blocks = argc >= 4 ? std::strtoull(argv[3], nullptr, 10) : 1000000;
+    const std::optional<NcProgram> kind = bench::ncProgramFromName(argc >= 5 ? argv[4] : "iso");
+    if (!kind || blocks == 0) {
+        std::fprintf(stderr, "camwb_nc_bench: --write-program <file> [blocks] "
+                             "[iso|sinumerik|sinumerik-loops|heidenhain|heidenhain-labels]\n");
+        return 2;
+    }
+    const std::string text = bench::ncProgram(*kind, blocks);
+    std::ofstream out(argv[2], std::ios::binary);
+    out << text;
+    out.close();
+    if (!out) {
+        std::fprintf(stderr, "camwb_nc_bench: cannot write %s\n", argv[2]);
+        return 1;
+    }
+    // The loop programs execute more blocks than they have lines: say how many, and whether the
+    // program runs cleanly, so that the figures of scripts/bench-nc.sh can be read per block.
+    CountingSink sink;
+    const nc::InterpretResult result = nc::interpret(text, optionsFor(*kind), sink);
+    std::printf("%zu lines, %lld blocks executed%s\n", lineCount(text), static_cast<long long>(result.blocksExecuted),
+                result.hasErrors() || !result.completed ? ", WITH ERRORS" : "");
+    return 0;
+}
 
 }  // namespace
 
 int main(int argc, char** argv)
 {
-    if (argc >= 3 && std::strcmp(argv[1], "--write-program") == 0) {
-        const std::size_t moves = argc >= 4 ? std::strtoull(argv[3], nullptr, 10) : 1000000;
-        const std::string& text = program(moves);
-        std::ofstream out(argv[2], std::ios::binary);
-        out << text;
-        out.close();
-        if (!out) {
-            std::fprintf(stderr, "camwb_nc_bench: cannot write %s\n", argv[2]);
-            return 1;
-        }
-        std::printf("%zu lines\n", lineCount(text));
-        return 0;
-    }
+    if (argc >= 3 && std::strcmp(argv[1], "--write-program") == 0)
+        return writeProgram(argc, argv);
     benchmark::Initialize(&argc, argv);
     if (benchmark::ReportUnrecognizedArguments(argc, argv))
         return 1;

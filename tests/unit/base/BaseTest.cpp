@@ -14,6 +14,18 @@
 using namespace camwb::base;
 namespace fs = std::filesystem;
 
+// Pseudo-random numbers for the randomised checks: the same values every run.
+struct Xorshift {
+    std::uint64_t state;
+    std::uint64_t operator()()
+    {
+        state ^= state << 13;
+        state ^= state >> 7;
+        state ^= state << 17;
+        return state;
+    }
+};
+
 TEST(Error, NamesFileLineAndColumnWhenKnown)
 {
     EXPECT_EQ(makeError("bad", "a.nc", 3, 7).toString(), "a.nc:3:7: bad");
@@ -34,13 +46,7 @@ TEST(NumberFormat, FastPathWritesWhatToCharsWrites)
 {
     // formatFixed takes a shortcut for most values; std::to_chars is the reference it must match,
     // ties and near-ties included (they go the slow way).
-    std::uint64_t state = 88172645463325252ull;  // xorshift: the same values every run
-    auto next = [&state] {
-        state ^= state << 13;
-        state ^= state >> 7;
-        state ^= state << 17;
-        return state;
-    };
+    Xorshift next{88172645463325252ull};
     char reference[400];
     for (int i = 0; i < 200000; ++i) {
         const int decimals = static_cast<int>(next() % 7);
@@ -81,6 +87,50 @@ TEST(NumberFormat, TrimSignAndLeadingZero)
     EXPECT_EQ((NumberFormat{3, false, false, false, false}.format(-0.5)), "-.500");
     EXPECT_EQ((NumberFormat{3, true, false, true, false}.format(0.5)), "+.5");
     EXPECT_EQ((NumberFormat{3, true, false, true}.format(-0.0004)), "+0");
+}
+
+// The text rules of NumberFormat applied to formatFixed's text with string operations: the
+// reference formatTo's in-place shortcuts must match for every option combination.
+std::string referenceText(const NumberFormat& f, double value)
+{
+    std::string text = formatFixed(value * f.scale, f.decimals);
+    if (f.trimTrailingZeros && text.find('.') != std::string::npos) {
+        text.erase(text.find_last_not_of('0') + 1);
+        if (text.back() == '.' && !f.keepDecimalPoint)
+            text.pop_back();
+        if (text.empty() || text == "-" || text == "-.")
+            text = "0";
+    }
+    if (!f.leadingZero && text.rfind("0.", 0) == 0 && text.size() > 2)
+        text.erase(0, 1);
+    else if (!f.leadingZero && text.rfind("-0.", 0) == 0 && text.size() > 3)
+        text.erase(1, 1);
+    if (f.forceSign && text[0] != '-')
+        text.insert(0, "+");
+    return text;
+}
+
+TEST(NumberFormat, EveryOptionCombinationFollowsTheTextRules)
+{
+    Xorshift next{0x9E3779B97F4A7C15ull};
+    for (int i = 0; i < 100000; ++i) {
+        NumberFormat f{static_cast<int>(next() % 13), next() % 2 == 0, next() % 2 == 0, next() % 2 == 0,
+                       next() % 2 == 0};
+        if (next() % 4 == 0)
+            f.scale = 1 / 25.4;
+        // Magnitudes from 1e-13 to 1e13: both sides of the shortcut's 2^40 limit at every precision.
+        const double value = static_cast<double>(static_cast<std::int64_t>(next() % 2000000001) - 1000000000) *
+                             std::pow(10.0, static_cast<double>(next() % 27) - 22);
+        char buffer[NumberFormat::kBufferSize];
+        const std::string text(buffer, f.formatTo(value, buffer));
+        ASSERT_EQ(text, referenceText(f, value))
+            << value << " at " << f.decimals << " decimals, trim " << f.trimTrailingZeros << f.keepDecimalPoint
+            << ", sign " << f.forceSign << ", leading zero " << f.leadingZero;
+    }
+    EXPECT_EQ((NumberFormat{4}.format(1099511.62777)), "1099511.6278");  // just past 2^40 at 4 decimals
+    EXPECT_EQ((NumberFormat{4}.format(-0.00004)), "0.0000");
+    EXPECT_EQ((NumberFormat{12}.format(0.5)), "0.500000000000");
+    EXPECT_EQ((NumberFormat{0}.format(9.5)), "10");
 }
 
 TEST(NumberFormat, ScaleAppliesBeforeRounding)
@@ -152,15 +202,25 @@ TEST_F(AtomicFileTest, MissingFolderIsAnErrorNamingTheFile)
     EXPECT_EQ(read.error().file, path);
 }
 
+TEST_F(AtomicFileTest, ReadsWholeFilesAndRefusesFolders)
+{
+    std::string large;
+    for (int i = 0; large.size() < 300000; ++i)
+        large += "N" + std::to_string(i) + " G1 X1.000 Y2.000\n";
+    const std::string path = (dir / "large.nc").string();
+    ASSERT_TRUE(writeFileAtomically(path, large));
+    EXPECT_EQ(readTextFile(path).value(), large);
+    ASSERT_TRUE(writeFileAtomically(path, ""));
+    EXPECT_EQ(readTextFile(path).value(), "");
+    auto folder = readTextFile(dir.string());
+    ASSERT_FALSE(folder);
+    EXPECT_EQ(folder.error().message, "cannot read: it is a folder, not a file");
+    EXPECT_EQ(readTextFile("/proc/self/status").value().rfind("Name:", 0), 0u);  // size 0 until read
+}
+
 TEST(NumberFormat, RoundedValueIsWhatTheTextReadsBackAs)
 {
-    std::uint64_t state = 0x2545F4914F6CDD1Dull;
-    auto next = [&state] {
-        state ^= state << 13;
-        state ^= state >> 7;
-        state ^= state << 17;
-        return state;
-    };
+    Xorshift next{0x2545F4914F6CDD1Dull};
     for (int i = 0; i < 100000; ++i) {
         NumberFormat format{static_cast<int>(next() % 6), next() % 2 == 0, false, next() % 3 == 0};
         if (i % 5 == 0)

@@ -4,6 +4,10 @@
 
 #include <gtest/gtest.h>
 
+#include <string>
+#include <string_view>
+#include <vector>
+
 namespace camwb::nc {
 namespace {
 
@@ -63,6 +67,67 @@ TEST(MotionTrace, JsonlCarriesTheSameFields)
 }
 
 TEST(MotionTrace, EmptyProgramTracesNothing) { EXPECT_EQ(motionTrace(Toolpath{}, {"a.nc"}, TraceFormat::Text), ""); }
+
+// What MotionTraceWriter hands over, piece by piece.
+struct Chunks {
+    std::vector<std::string> pieces;
+    bool accept = true;
+    MotionTraceWriter::Write write()
+    {
+        return [this](std::string_view text) {
+            pieces.emplace_back(text);
+            return accept;
+        };
+    }
+    std::string all() const
+    {
+        std::string out;
+        for (const std::string& piece : pieces)
+            out += piece;
+        return out;
+    }
+};
+
+TEST(MotionTraceWriter, StreamsTheSameTextAsTheRecordedTrace)
+{
+    const std::vector<std::string> files{"/x/main.mpf", "/x/SUB.SPF"};
+    for (const TraceFormat format : {TraceFormat::Text, TraceFormat::Jsonl}) {
+        Chunks chunks;
+        MotionTraceWriter writer(files[0], format, chunks.write(), 64);
+        play(sample(), writer);
+        EXPECT_TRUE(writer.finish(files));
+        EXPECT_EQ(chunks.all(), motionTrace(sample(), files, format));
+        EXPECT_GT(chunks.pieces.size(), 2u);  // in chunks of about 64 bytes, not at the end
+    }
+}
+
+TEST(MotionTraceWriter, WritesWhileTheProgramRunsAndHoldsBackCalledProgramsUntilTheirNamesAreKnown)
+{
+    Toolpath p = sample();
+    Chunks chunks;
+    MotionTraceWriter writer("main.mpf", TraceFormat::Text, chunks.write(), 1);
+    for (std::size_t i = 0; i < p.size(); ++i) {
+        writer.setSource(p.source(i));
+        dispatch(p.record(i), writer);
+        if (i == 4)  // the arc of line 6, before the first record of SUB.SPF
+            EXPECT_EQ(chunks.all(), motionTrace(p, {"main.mpf"}, TraceFormat::Text).substr(0, chunks.all().size()));
+    }
+    // Line 4, 5 and 6 went out as they came; SUB.SPF:7 and what follows wait for the file names.
+    EXPECT_EQ(chunks.pieces.size(), 3u);
+    EXPECT_TRUE(writer.finish({"main.mpf", "SUB.SPF"}));
+    EXPECT_EQ(chunks.all(), motionTrace(p, {"main.mpf", "SUB.SPF"}, TraceFormat::Text));
+    EXPECT_NE(chunks.all().find("\nSUB.SPF:7 helix"), std::string::npos);
+}
+
+TEST(MotionTraceWriter, AFailedWriteIsReported)
+{
+    Chunks chunks;
+    chunks.accept = false;
+    MotionTraceWriter writer("main.mpf", TraceFormat::Text, chunks.write(), 16);
+    play(sample(), writer);
+    EXPECT_FALSE(writer.finish({"main.mpf", "SUB.SPF"}));
+    EXPECT_EQ(chunks.pieces.size(), 1u);  // nothing more is offered after the failure
+}
 
 }  // namespace
 }  // namespace camwb::nc

@@ -146,6 +146,11 @@ std::int32_t Parser::parseUnary(int depth)
         error(here(), "an expression is missing");
         return -1;
     }
+    // Before any recursion: a run of signs ("----1") recurses once per sign.
+    if (depth > kMaxDepth) {
+        error(posOf(*t), "expression nested too deeply");
+        return -1;
+    }
     if (t->kind == Tok::Minus || t->kind == Tok::Plus) {
         const bool minus = t->kind == Tok::Minus;
         const Pos pos = posOf(*t);
@@ -166,10 +171,6 @@ std::int32_t Parser::parseUnary(int depth)
         ++m_pos;
         const std::int32_t operand = parseUnary(depth + 1);
         return operand < 0 ? -1 : node(Op::Not, pos, operand);
-    }
-    if (depth > kMaxDepth) {
-        error(posOf(*t), "expression nested too deeply");
-        return -1;
     }
     return parsePrimary(depth + 1);
 }

@@ -109,10 +109,10 @@ private:
     void report(Severity s, int line, int column, std::string message);
     void warnOnce(int key, const Block& b, const std::string& message);
     bool gather(const Block& b, BlockWords& w, bool quiet);
-    void applyEarlyM(const Block& b, const BlockWords& w);
-    void applyLateM(const Block& b, const BlockWords& w, bool moved);
-    void applyFeed(const BlockWords& w);
-    void applyComp(const BlockWords& w);
+    void applySpindleAndCoolant(const Block& b, const BlockWords& w);
+    void applyStop(const Block& b, const BlockWords& w, bool moved);
+    void applyFeedRate(const BlockWords& w);
+    void applyCompensation(const BlockWords& w);
     void endProgram(bool completed);
     void sortDiagnostics();
     void returnFromProgram();
@@ -132,6 +132,7 @@ private:
 
     // Contour.cpp: elements, corners, sending moves.
     void motionBlock(const Block& b);
+    bool applyMotion(const Block& b, const BlockWords& w);  // true: an element was sent
     void circleCenter(const Block& b);
     void corner(const Block& b);
     std::optional<Element> plan(const Block& b, const BlockWords& w, const Vec3& from, const Vec2& cc, bool ccSet,

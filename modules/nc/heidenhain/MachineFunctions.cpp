@@ -109,7 +109,7 @@ bool Machine::gather(const Block& b, BlockWords& w, bool quiet)
     return ok;
 }
 
-void Machine::applyFeed(const BlockWords& w)
+void Machine::applyFeedRate(const BlockWords& w)
 {
     using F = BlockWords::FeedWord;
     if (w.feed == F::Value || w.feed == F::Auto) {
@@ -127,7 +127,7 @@ void Machine::applyFeed(const BlockWords& w)
     }
 }
 
-void Machine::applyComp(const BlockWords& w)
+void Machine::applyCompensation(const BlockWords& w)
 {
     if (w.comp < 0)
         return;
@@ -165,7 +165,7 @@ void Machine::coolant(CoolantMode mode)
 }
 
 // M functions effective at the start of the block (before its motion).
-void Machine::applyEarlyM(const Block& b, const BlockWords& w)
+void Machine::applySpindleAndCoolant(const Block& b, const BlockWords& w)
 {
     for (int i = 0; i < w.mCount; ++i) {
         switch (w.m[static_cast<std::size_t>(i)]) {
@@ -202,7 +202,7 @@ void Machine::applyEarlyM(const Block& b, const BlockWords& w)
 }
 
 // M functions effective at the end of the block (after its motion).
-void Machine::applyLateM(const Block& b, const BlockWords& w, bool moved)
+void Machine::applyStop(const Block& b, const BlockWords& w, bool moved)
 {
     bool cycleCalled = false;
     for (int i = 0; i < w.mCount; ++i) {

@@ -68,6 +68,24 @@ private:
         int stopColumn = 0;
     };
     bool classify(const Block& block, Groups& groups);
+    // One step per modal group, in LinuxCNC's order of execution (execute() calls them); false:
+    // an error was reported and the rest of the block is left out.
+    void applyFeedMode(const Groups& groups);
+    void applyUnits(const Groups& groups);
+    bool applyFeedRate(const Block& block);
+    bool applySpindleSpeed(const Block& block, const Groups& groups);
+    bool applyToolSelection(const Block& block);
+    bool applyToolChange(const Block& block, const Groups& groups);
+    void applySpindle(const Groups& groups);
+    void applyCoolant(const Groups& groups);
+    bool applyDwell(const Block& block, const Groups& groups);
+    void applyPlane(const Groups& groups);
+    void applyCompensation(const Groups& groups);
+    void applyWorkOffset(const Groups& groups);
+    void applyDistanceModes(const Groups& groups);
+    void applyRetractMode(const Groups& groups);
+    bool applyMotion(const Block& block, const Groups& groups);
+    BlockOutcome applyStop(const Groups& groups);
     void source() { m_sink.setSource(toolpath::SourceRef{-1, -1, m_line, m_file}); }
     void setSpindle(double rpm, int direction);
     void setCoolant(bool mist, bool flood);

@@ -53,7 +53,18 @@ private:
     void applyAssignments();
 
     // IsoControlFlow.cpp
-    Flow oWord();
+    Flow oWord();  // dispatches to one of these by keyword
+    Flow oReturn();
+    Flow oCall();
+    Flow oWhile();
+    Flow oEndWhile();
+    Flow oRepeat();
+    Flow oEndRepeat();
+    Flow oIf();
+    Flow oElse();
+    Flow oBreakOrContinue();
+    int oCondition(const char* what);  // 1 true, 0 false, -1 missing (reported)
+    static Flow skipped(bool found);   // after skipTo: Stop when no end was found
     bool skipTo(const std::string& label, std::initializer_list<OKeyword> keywords, bool pastIt,
                 OKeyword* found = nullptr);
     bool findSubroutine(const std::string& label, Position& body);

@@ -1,6 +1,6 @@
 // The SINUMERIK interpreter's run time: modal state, R parameters and DEF variables, the call
 // stack over parsed programs, and what it sends to the MachineSink. Split over Machine.cpp (run
-// loop, control flow, calls), Evaluate.cpp, Execute.cpp (ordinary blocks), Arcs.cpp, Cycles.cpp.
+// loop, control flow, calls), Evaluate.cpp, Execute*.cpp (ordinary blocks), Arcs.cpp, Cycles.cpp.
 #pragma once
 
 #include "nc/Interpreter.h"
@@ -67,6 +67,9 @@ public:
     }
 
 private:
+    std::optional<double> evalOperand(const Program& p, const Expr& e);
+    std::optional<double> evalFailure(const Program& p, const Expr& e, const std::string& message);
+
     // Machine.cpp
     void runLoop();
     bool step();  // one block; false: the program ended or stopped
@@ -80,9 +83,47 @@ private:
     int jumpTarget(const Program& p, const std::string& label, int pc, GotoDir dir, bool& anyTarget) const;
     void addParseDiagnostics(const Program& p);
 
-    // Execute.cpp
+    // Execute.cpp, ExecuteWords.cpp: an ordinary block, its words read first, then applied group by
+    // group in the control's order.
+    struct ArcWords {
+        std::array<std::optional<double>, 3> centre;  // I J K in mm, with their mode
+        std::array<ValueMode, 3> centreMode{};
+        std::optional<double> cr, ar;
+        int turn = 0;
+        Pos pos;
+    };
+    struct BlockWords {
+        int line = 0;
+        int motion = -1, plane = 0, units = 0, absInc = 0, workOffset = -1, comp = -1, feedMode = -1, css = -1;
+        bool dwell = false, g53 = false, ret = false;
+        std::array<std::optional<double>, 6> axis{};
+        std::array<ValueMode, 6> axisMode{};
+        ArcWords arc;
+        std::optional<double> feed, speed, lims, tool;
+        int m[8];
+        int mCount = 0;
+        const Word* callWord = nullptr;  // the block's cycle or subprogram call
+    };
     bool executeNormal(const Program& p, const Block& block);
-    bool applyG(const Program& p, const Word& w, int& motion, bool& dwellBlock);
+    bool readWords(const Program& p, const Block& block, BlockWords& w);
+    void readG(const Program& p, const Word& word, BlockWords& w);
+    bool readKeyword(const Program& p, const Block& block, const Word& word, BlockWords& w);
+    bool readPosition(const Program& p, const Word& word, std::optional<double>& value, ValueMode& mode);
+    void applyUnits(const BlockWords& w);
+    void applyDistanceMode(const BlockWords& w);
+    void applyPlane(const BlockWords& w);
+    void applyWorkOffset(const Program& p, const BlockWords& w);
+    void applyFeedMode(const BlockWords& w);
+    void applyFeedRate(const BlockWords& w);
+    void applyToolChange(const BlockWords& w);
+    void applySpindle(const Program& p, const BlockWords& w);
+    void applyCoolant(const BlockWords& w);
+    void applyCompensation(const BlockWords& w);
+    void applyDwell(const Program& p, const BlockWords& w);
+    bool applyMotion(const Program& p, const BlockWords& w);  // true: the tool moved
+    void applyCalls(const Program& p, const Block& block, const BlockWords& w, bool moved);
+    bool applyStop(const Program& p, const Block& block, const BlockWords& w);
+    Vec3 blockTarget(const BlockWords& w) const;
     void emitComment(const Program& p, const Block& block);
     double toMm(double v) const { return m_modal.inch ? v * 25.4 : v; }
     double feedToInternal(double f) const;
@@ -93,13 +134,6 @@ private:
     void assign(const Program& p, const Word& w, double value);
 
     // Arcs.cpp: circle or helix from m_pos to `to`; false when the arc is inconsistent (reported).
-    struct ArcWords {
-        std::array<std::optional<double>, 3> centre;  // I J K in mm, with their mode
-        std::array<ValueMode, 3> centreMode{};
-        std::optional<double> cr, ar;
-        int turn = 0;
-        Pos pos;
-    };
     bool arc(const Program& p, const Vec3& to, bool clockwise, const ArcWords& words, int line);
 
     // Cycles.cpp: one hole of CYCLE8x at the current position (the tool is over the hole).

@@ -40,6 +40,7 @@ enum class Fn : std::uint8_t {
 };
 
 enum class Op : std::uint8_t {
+    // Operands first, up to SysVar (Machine::evalOperand), then operators.
     Const,
     RParam,     // R<index> with a constant index (in `index`)
     RIndirect,  // R[a]

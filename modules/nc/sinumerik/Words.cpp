@@ -200,8 +200,14 @@ bool Parser::badToken(const Token& t)
     const Pos pos = posOf(t);
     if (t.kind == Tok::RParen)
         return error(pos, "unbalanced parentheses: ')' without '('");
-    if (t.kind == Tok::Number)
+    if (t.kind == Tok::Number) {
+        // X1.2.3 lexes as X1.2 and .3: one malformed number, not a stray one.
+        const Token* before = m_pos > 0 ? &m_tokens[m_pos - 1] : nullptr;
+        if (before && !t.spaceBefore && before->line == t.line &&
+            (before->kind == Tok::Number || before->kind == Tok::Name))
+            return error(posOf(*before), "malformed number " + std::string(before->text) + std::string(t.text));
         return error(pos, "a number without an address letter");
+    }
     if (t.kind == Tok::Invalid)
         return error(pos, "unexpected character '" + std::string(t.text) + "'");
     return error(pos, "unexpected '" + std::string(t.text) + "'");
@@ -427,6 +433,9 @@ bool Parser::parseNameCall(Block& block, const Token& t, const std::string& u)
             return error(posOf(*peek()), "unexpected " + std::string(peek()->text) + " after the call");
         return true;
     }
+    if (isAddressLetter(u) && u != "L" && u != "P")
+        return error(pos, std::string(t.text) + " needs a value (" + std::string(t.text) + "10 or " +
+                              std::string(t.text) + "=expression)");
     std::string message = "unknown word " + std::string(t.text);
     if (u.size() >= 2 && u[0] == 'G' && u.find_first_not_of("O", 1) == std::string::npos)
         message += " (the letter O where G0 has a zero?)";

@@ -38,9 +38,10 @@ double CycleDefinition::get(int n, double fallback) const
     return has(n) ? q[static_cast<std::size_t>(n - 200)] : fallback;
 }
 
-Machine::Machine(const InterpretOptions& options, MachineSink& sink, InterpretResult& result) :
+Machine::Machine(const InterpretOptions& options, CutterCompensation& sink, InterpretResult& result) :
     m_options(options),
     m_sink(sink),
+    m_compensation(sink),
     m_result(result),
     m_rep(result.diagnostics, options.maxDiagnostics, result.diagnosticsDropped)
 {

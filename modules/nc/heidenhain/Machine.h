@@ -4,7 +4,9 @@
 // and M functions live in Machine.cpp, contour elements in Contour.cpp, cycles in Cycles.cpp.
 #pragma once
 
+#include "nc/CutterCompensation.h"
 #include "nc/Interpreter.h"
+#include "nc/ToolTable.h"
 #include "nc/heidenhain/Expression.h"
 #include "nc/heidenhain/Geometry.h"
 #include "nc/heidenhain/Lexer.h"
@@ -89,7 +91,8 @@ struct Corner {
 
 class Machine {
 public:
-    Machine(const InterpretOptions& options, toolpath::MachineSink& sink, InterpretResult& result);
+    // `sink` compensates the cutter radius (CutterCompensation.h) in front of the caller's sink.
+    Machine(const InterpretOptions& options, CutterCompensation& sink, InterpretResult& result);
     void run(std::string_view text);
 
 private:
@@ -113,6 +116,7 @@ private:
     void applyStop(const Block& b, const BlockWords& w, bool moved);
     void applyFeedRate(const BlockWords& w);
     void applyCompensation(const BlockWords& w);
+    void setCompensationRadius();
     void endProgram(bool completed);
     void sortDiagnostics();
     void returnFromProgram();
@@ -151,6 +155,7 @@ private:
 
     const InterpretOptions& m_options;
     toolpath::MachineSink& m_sink;
+    CutterCompensation& m_compensation;
     InterpretResult& m_result;
     Reporter m_rep;
 
@@ -183,7 +188,8 @@ private:
     bool m_spindleOn = false;
     bool m_spindleCw = true;
     toolpath::CoolantMode m_coolant = toolpath::CoolantMode::Off;
-    std::unordered_map<int, double> m_toolRadius;
+    std::unordered_map<int, double> m_toolRadius;  // TOOL DEF R, mm
+    double m_deltaRadius = 0;                      // DR of the last TOOL CALL, mm
     CycleDefinition m_cycle;
     bool m_modalCycleCall = false;
     Corner m_corner;

@@ -134,9 +134,24 @@ void Machine::applyCompensation(const BlockWords& w)
     const CutterCompSide side =
         w.comp == 0 ? CutterCompSide::Off : (w.comp == 1 ? CutterCompSide::Left : CutterCompSide::Right);
     if (side != m_comp) {
+        if (side != CutterCompSide::Off)
+            setCompensationRadius();
         m_comp = side;
         m_sink.cutterComp(CutterComp{side});
     }
+}
+
+// R of the tool's TOOL DEF, else of the tool table, plus DR of the TOOL CALL (the TNC's
+// compensation value R + DR(TOOL CALL); the table's DR column is not in LinuxCNC's format).
+void Machine::setCompensationRadius()
+{
+    const std::string what = "tool " + std::to_string(m_tool);
+    std::optional<double> radius;
+    if (const auto it = m_toolRadius.find(m_tool); it != m_toolRadius.end())
+        radius = it->second;
+    else if (m_options.toolTable)
+        radius = m_options.toolTable->radiusOf(m_tool);
+    m_compensation.setRadius(radius ? std::optional<double>(*radius + m_deltaRadius) : std::nullopt, what);
 }
 
 void Machine::spindleOn(bool clockwise, const Block& b, int column)
@@ -295,6 +310,13 @@ void Machine::toolCall(const Block& b)
             warnOnce(kWarnSurfaceSpeed, b, "S(VC=...): the spindle speed needs the tool diameter and is not traced");
         if (word.key == Key::Feed)
             m_autoFeed = w.feedValue * m_feedScale;
+    }
+    m_deltaRadius = 0;
+    for (int i = 0; i < b.wordCount; ++i) {
+        const Word& word = p.words[static_cast<std::size_t>(b.firstWord + i)];
+        if (word.key == Key::DeltaRadius && word.expr >= 0)
+            if (const auto dr = eval(word.expr))
+                m_deltaRadius = *dr * m_scale;
     }
     if (b.a != -2) {
         ToolChange change;

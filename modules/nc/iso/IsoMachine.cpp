@@ -25,7 +25,7 @@ constexpr GroupOf kGroups[] = {
     {540, 12}, {550, 12}, {560, 12}, {570, 12}, {580, 12}, {590, 12}, {591, 12}, {592, 12}, {593, 12},
     {610, 13}, {611, 13}, {640, 13}, {960, 14}, {970, 14}, {70, 15},  {80, 15},  {50, -2},  {51, -2},
     {330, -2}, {331, -2}, {381, -2}, {382, -2}, {383, -2}, {384, -2}, {385, -2}, {740, -2}, {760, -2},
-    {870, -2}, {880, -2}, {171, -2}, {181, -2}, {191, -2}, {411, -2}, {421, -2}, {700, -3}, {710, -3},
+    {870, -2}, {880, -2}, {171, -2}, {181, -2}, {191, -2}, {411, 7},  {421, 7},  {700, -3}, {710, -3},
 };
 
 constexpr auto kGroupTable = [] {
@@ -227,7 +227,7 @@ BlockOutcome Machine::execute(const Block& block, int line, int fileIndex)
     if (!applyDwell(block, groups))
         return BlockOutcome::Continue;
     applyPlane(groups);
-    applyCompensation(groups);
+    applyCompensation(block, groups);
     applyWorkOffset(groups);
     applyDistanceModes(groups);
     applyRetractMode(groups);
@@ -363,21 +363,50 @@ void Machine::applyPlane(const Groups& groups)
         m_state.plane = groups.g[2];
 }
 
-void Machine::applyCompensation(const Groups& groups)
+void Machine::applyCompensation(const Block& block, const Groups& groups)
 {
     const int code = groups.g[7];
     if (code == -1)
         return;
-    const CutterCompSide side = code == 410   ? CutterCompSide::Left
-                                : code == 420 ? CutterCompSide::Right
-                                              : CutterCompSide::Off;
+    const CutterCompSide side = code == 410 || code == 411   ? CutterCompSide::Left
+                                : code == 420 || code == 421 ? CutterCompSide::Right
+                                                             : CutterCompSide::Off;
     if (side != CutterCompSide::Off && m_state.comp != CutterCompSide::Off) {
         m_reporter.error(m_line, groups.gColumn[7], "cutter compensation is already on: G40 first");
     } else if (side != m_state.comp) {
+        if (side != CutterCompSide::Off)
+            setCompensationRadius(block, code);
         m_state.comp = side;
         source();
         m_sink.cutterComp(CutterComp{side});
     }
+}
+
+// LinuxCNC: G41.1/G42.1 D<diameter>; G41/G42 D<tool> take that tool's diameter from the tool
+// table, without D the diameter of the tool in the spindle.
+void Machine::setCompensationRadius(const Block& block, int code)
+{
+    if (code == 411 || code == 421) {
+        if (!block.has('D') || block.get('D') < 0) {
+            error(block, 'D', gName(code) + " needs D with the tool diameter (D >= 0)");
+            m_compensation.setRadius(std::nullopt, "the tool (no D)");
+            return;
+        }
+        m_compensation.setRadius(block.get('D') * m_state.unit / 2, gName(code) + " D");
+        return;
+    }
+    int tool = m_state.tool;
+    if (block.has('D')) {
+        const double d = block.get('D');
+        if (d < 0 || d != std::floor(d) || d > 1e9) {
+            error(block, 'D', gName(code) + " needs D to be a tool number (a whole number >= 0)");
+            m_compensation.setRadius(std::nullopt, "the tool");
+            return;
+        }
+        tool = static_cast<int>(d);
+    }
+    const std::string what = "tool " + std::to_string(tool);
+    m_compensation.setRadius(m_toolTable ? m_toolTable->radiusOf(tool) : std::nullopt, what);
 }
 
 void Machine::applyWorkOffset(const Groups& groups)

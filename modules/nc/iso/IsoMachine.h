@@ -5,6 +5,8 @@
 // offset's frame, each after setSource() with the block's line.
 #pragma once
 
+#include "nc/CutterCompensation.h"
+#include "nc/ToolTable.h"
 #include "nc/iso/IsoBlock.h"
 #include "nc/iso/IsoParameters.h"
 #include "nc/iso/IsoReporter.h"
@@ -43,8 +45,12 @@ enum class BlockOutcome { Continue, ProgramEnd };
 
 class Machine {
 public:
-    Machine(toolpath::MachineSink& sink, Reporter& reporter, const Parameters& parameters, double arcToleranceMm) :
+    // `sink` compensates the cutter radius (CutterCompensation.h); `toolTable` may be null.
+    Machine(CutterCompensation& sink, const ToolTable* toolTable, Reporter& reporter, const Parameters& parameters,
+            double arcToleranceMm) :
         m_sink(sink),
+        m_compensation(sink),
+        m_toolTable(toolTable),
         m_reporter(reporter),
         m_parameters(parameters),
         m_arcTolerance(arcToleranceMm)
@@ -80,7 +86,8 @@ private:
     void applyCoolant(const Groups& groups);
     bool applyDwell(const Block& block, const Groups& groups);
     void applyPlane(const Groups& groups);
-    void applyCompensation(const Groups& groups);
+    void applyCompensation(const Block& block, const Groups& groups);
+    void setCompensationRadius(const Block& block, int code);
     void applyWorkOffset(const Groups& groups);
     void applyDistanceModes(const Groups& groups);
     void applyRetractMode(const Groups& groups);
@@ -104,6 +111,8 @@ private:
     void error(const Block& block, char letter, std::string message);
 
     toolpath::MachineSink& m_sink;
+    CutterCompensation& m_compensation;
+    const ToolTable* m_toolTable;
     Reporter& m_reporter;
     const Parameters& m_parameters;
     double m_arcTolerance;

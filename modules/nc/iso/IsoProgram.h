@@ -5,6 +5,7 @@
 // limit (InterpretOptions::maxBlocks) counts executed and skipped lines, so no input runs forever.
 #pragma once
 
+#include "nc/CutterCompensation.h"
 #include "nc/Interpreter.h"
 #include "nc/iso/IsoBlock.h"
 #include "nc/iso/IsoMachine.h"
@@ -77,9 +78,10 @@ private:
     std::vector<std::string_view> m_texts;  // [0] the program, then subroutine files as first called
     std::deque<std::string> m_loaded;       // the texts of subroutine files (stable addresses)
     const InterpretOptions& m_options;
-    toolpath::MachineSink& m_sink;
+    toolpath::MachineSink& m_sink;  // m_compensation, in front of the caller's sink
     InterpretResult& m_result;
     Reporter m_reporter;
+    CutterCompensation m_compensation;
     Parameters m_parameters;
     LineScanner m_scanner;
     Machine m_machine;

@@ -135,9 +135,44 @@ bool Parser::parseRAssignment(Block& block, const Token& t, const std::string& u
     return true;
 }
 
-// R[i]=expr and array[i]=expr; nullopt when the name is neither R nor a DEF array.
+// $TC_DPn[t, d]=expr: parameter n of cutting edge d of tool t (n = 6: the radius, 15: its wear).
+bool Parser::parseToolDataAssignment(Block& block, const Token& t, const std::string& u)
+{
+    Word w;
+    w.kind = WordKind::Assign;
+    w.target = AssignTarget::ToolData;
+    w.pos = posOf(t);
+    std::from_chars(u.data() + 6, u.data() + u.size(), w.code);
+    if (w.code < 1 || w.code > 25)
+        return error(w.pos, u + ": tool offset parameters are $TC_DP1..$TC_DP25");
+    m_pos += 2;
+    w.expr2 = parseExpr();
+    if (w.expr2 < 0)
+        return false;
+    if (!peekIs(Tok::Comma))
+        return error(here(), "',' expected: " + u + "[tool, cutting edge]");
+    ++m_pos;
+    w.expr3 = parseExpr();
+    if (w.expr3 < 0)
+        return false;
+    if (!peekIs(Tok::RBracket))
+        return error(here(), "']' expected");
+    ++m_pos;
+    if (!peekIs(Tok::Assign))
+        return error(here(), "'=' expected");
+    ++m_pos;
+    w.expr = parseExpr();
+    if (w.expr < 0)
+        return false;
+    addWord(block, WordKind::Assign, w.pos) = w;
+    return true;
+}
+
+// R[i]=expr, array[i]=expr and $TC_DPn[t,d]=expr; nullopt when the name is none of them.
 std::optional<bool> Parser::parseIndexedAssignment(Block& block, const Token& t, const std::string& u)
 {
+    if (u.size() > 6 && u.compare(0, 6, "$TC_DP") == 0 && u.find_first_not_of("0123456789", 6) == std::string::npos)
+        return parseToolDataAssignment(block, t, u);
     const LocalVar* var = findLocal(u);
     if (u != "R" && !var)
         return std::nullopt;

@@ -88,6 +88,22 @@ void Machine::assign(const Program& p, const Word& w, double value)
         m_r[static_cast<std::size_t>(*i)] = value;
         return;
     }
+    case AssignTarget::ToolData: {
+        const auto tool = eval(p, w.expr2);
+        const auto edge = tool ? eval(p, w.expr3) : std::nullopt;
+        if (!tool || !edge)
+            return;
+        if (!(*tool >= 0 && *tool <= 32000 && *edge >= 1 && *edge <= 32000)) {
+            error(p, w.pos, "$TC_DP: tool 0..32000 and cutting edge 1..32000 expected");
+            return;
+        }
+        EdgeData& data = m_edges[{static_cast<int>(*tool), static_cast<int>(*edge)}];
+        if (w.code == 6)
+            data.radius = value;
+        else if (w.code == 15)
+            data.radiusWear = value;
+        return;
+    }
     case AssignTarget::Local: {
         std::size_t slot = static_cast<std::size_t>(w.code);
         if (w.expr2 >= 0) {
@@ -128,6 +144,7 @@ bool Machine::executeNormal(const Program& p, const Block& b)
     applyFeedMode(w);
     applyFeedRate(w);
     applyToolChange(w);
+    applyToolOffset(p, w);
     applySpindle(p, w);
     applyCoolant(w);
     applyCompensation(w);
@@ -203,6 +220,8 @@ void Machine::applyToolChange(const BlockWords& w)
             toolChange = true;
     if (!toolChange)
         return;
+    m_activeTool = m_tool;
+    m_edge = 1;  // the control's default cutting edge after a change ($MC_CUTTING_EDGE_DEFAULT)
     ToolChange tc;
     tc.tool.number = m_tool;
     tc.tool.name = m_toolName;
@@ -266,18 +285,51 @@ void Machine::applyCoolant(const BlockWords& w)
     }
 }
 
+// D<n>: the cutting edge whose offsets (the radius among them) apply from now on; D0: none.
+void Machine::applyToolOffset(const Program& p, const BlockWords& w)
+{
+    if (!w.edge)
+        return;
+    if (*w.edge < 0 || *w.edge > 32000 || *w.edge != std::trunc(*w.edge)) {
+        error(p, {w.line, 0}, "D (cutting edge) must be a whole number 0..32000");
+        return;
+    }
+    m_edge = static_cast<int>(*w.edge);
+}
+
 void Machine::applyCompensation(const BlockWords& w)
 {
+    if (w.corners)
+        m_compensation.setOutsideIntersection(w.corners == 451);
     if (w.comp < 0)
         return;
     const CutterCompSide side = w.comp == 41   ? CutterCompSide::Left
                                 : w.comp == 42 ? CutterCompSide::Right
                                                : CutterCompSide::Off;
     if (side != m_modal.comp) {
+        if (side != CutterCompSide::Off)
+            setCompensationRadius();
         m_modal.comp = side;
         setSource(w.line);
         m_sink.cutterComp(CutterComp{side});
     }
+}
+
+// The radius of the active tool's cutting edge: $TC_DP6 (+ $TC_DP15 wear) where the program set
+// it, else the tool table's; D0 compensates nothing.
+void Machine::setCompensationRadius()
+{
+    const int tool = m_toolChangeOnM6 ? m_activeTool : m_tool;
+    const std::string what = "T" + std::to_string(tool) + " D" + std::to_string(m_edge);
+    if (m_edge == 0) {
+        m_compensation.setRadius(0.0, what);
+        return;
+    }
+    if (const auto it = m_edges.find({tool, m_edge}); it != m_edges.end() && it->second.radius) {
+        m_compensation.setRadius(*it->second.radius + it->second.radiusWear, what);
+        return;
+    }
+    m_compensation.setRadius(m_options.toolTable ? m_options.toolTable->radiusOf(tool) : std::nullopt, what);
 }
 
 void Machine::applyDwell(const Program& p, const BlockWords& w)

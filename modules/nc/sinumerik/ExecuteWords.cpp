@@ -16,7 +16,7 @@ bool isPassiveG(int g)
 {
     return g == 9 || g == 60 || g == 64 || (g >= 641 && g <= 645) || g == 601 || g == 602 || g == 603 || g == 25 ||
            g == 26 || g == 110 || g == 111 || g == 112 || g == 140 || g == 141 || g == 142 || g == 143 || g == 340 ||
-           g == 341 || g == 450 || g == 451 || g == 62 || g == 621;
+           g == 341 || g == 62 || g == 621;
 }
 
 }  // namespace
@@ -49,6 +49,8 @@ void Machine::readG(const Program& p, const Word& word, BlockWords& w)
         w.css = g == 96 || g == 961 ? 1 : 0;
     else if (g == 53 || g == 153)
         w.g53 = true;
+    else if (g == 450 || g == 451)
+        w.corners = g;
     else if (!isPassiveG(g))
         warning(p, word.pos, "G" + std::to_string(g) + " is not interpreted: ignored");
 }
@@ -144,7 +146,7 @@ bool Machine::readWords(const Program& p, const Block& b, BlockWords& w)
             w.tool = 0;
             break;
         case WordKind::D:
-            (void)wordValue(p, word);
+            w.edge = wordValue(p, word);
             break;
         case WordKind::Cr:
             w.arc.cr = wordValue(p, word);

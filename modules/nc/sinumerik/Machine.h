@@ -3,12 +3,15 @@
 // loop, control flow, calls), Evaluate.cpp, Execute*.cpp (ordinary blocks), Arcs.cpp, Cycles.cpp.
 #pragma once
 
+#include "nc/CutterCompensation.h"
 #include "nc/Interpreter.h"
+#include "nc/ToolTable.h"
 #include "nc/sinumerik/Program.h"
 #include "toolpath/ClRecords.h"
 #include "toolpath/MachineSink.h"
 
 #include <array>
+#include <map>
 #include <memory>
 #include <optional>
 #include <unordered_map>
@@ -51,9 +54,11 @@ struct Frame {
 
 class Machine {
 public:
-    Machine(const InterpretOptions& options, toolpath::MachineSink& sink, InterpretResult& result) :
+    // `sink` compensates the cutter radius (CutterCompensation.h) in front of the caller's sink.
+    Machine(const InterpretOptions& options, CutterCompensation& sink, InterpretResult& result) :
         m_options(options),
         m_sink(sink),
+        m_compensation(sink),
         m_result(result)
     {
     }
@@ -95,11 +100,12 @@ private:
     struct BlockWords {
         int line = 0;
         int motion = -1, plane = 0, units = 0, absInc = 0, workOffset = -1, comp = -1, feedMode = -1, css = -1;
+        int corners = 0;  // G450 transition circle, G451 intersection
         bool dwell = false, g53 = false, ret = false;
         std::array<std::optional<double>, 6> axis{};
         std::array<ValueMode, 6> axisMode{};
         ArcWords arc;
-        std::optional<double> feed, speed, lims, tool;
+        std::optional<double> feed, speed, lims, tool, edge;
         int m[8];
         int mCount = 0;
         const Word* callWord = nullptr;  // the block's cycle or subprogram call
@@ -118,7 +124,9 @@ private:
     void applyToolChange(const BlockWords& w);
     void applySpindle(const Program& p, const BlockWords& w);
     void applyCoolant(const BlockWords& w);
+    void applyToolOffset(const Program& p, const BlockWords& w);
     void applyCompensation(const BlockWords& w);
+    void setCompensationRadius();
     void applyDwell(const Program& p, const BlockWords& w);
     bool applyMotion(const Program& p, const BlockWords& w);  // true: the tool moved
     void applyCalls(const Program& p, const Block& block, const BlockWords& w, bool moved);
@@ -149,6 +157,7 @@ public:
 private:
     const InterpretOptions& m_options;
     toolpath::MachineSink& m_sink;
+    CutterCompensation& m_compensation;
     InterpretResult& m_result;
 
     std::vector<std::unique_ptr<Program>> m_programs;  // index = file index
@@ -169,7 +178,15 @@ private:
     double m_lims = 0;
     int m_spindleDir = 0;  // 0 stopped, 3 cw, 4 ccw
     bool m_spindleEmitted = false;
-    int m_tool = 0;  // selected with T
+    int m_tool = 0;        // selected with T
+    int m_activeTool = 0;  // changed in (M6; T at once without M6)
+    int m_edge = 0;        // the cutting edge D (tool offsets): D1 after a tool change, D0 none
+    // $TC_DP6 (radius) and $TC_DP15 (its wear) per (tool, edge) as the program set them.
+    struct EdgeData {
+        std::optional<double> radius;
+        double radiusWear = 0;
+    };
+    std::map<std::pair<int, int>, EdgeData> m_edges;
     std::string m_toolName;
     std::optional<ModalCall> m_modalCall;
     bool m_fiveAxisWarned = false;

@@ -55,6 +55,7 @@ private:
     bool parseAssignment(Block& block, const Token& t, const std::string& upperName);
     bool parseRAssignment(Block& block, const Token& t, const std::string& upperName);
     std::optional<bool> parseIndexedAssignment(Block& block, const Token& t, const std::string& upperName);
+    bool parseToolDataAssignment(Block& block, const Token& t, const std::string& upperName);
     bool parseCallWord(Block& block, const Token& t, const std::string& upperName);
     bool parseMsg(Block& block, Pos pos);
     bool parseRepetitions(Block& block);

@@ -105,7 +105,8 @@ enum class ValueMode : std::uint8_t { Modal, Absolute, Incremental };  // X=AC(.
 
 enum class Keyword : std::uint8_t { DiamOn, DiamOf, TraOri, TraFoof, Cycle800, Frame, Ret, SetAl, Stopre };
 
-enum class AssignTarget : std::uint8_t { R, RIndirect, Local };
+// ToolData: $TC_DPn[t, d] (code = n, expr2 = t, expr3 = d), the tool offsets a program sets.
+enum class AssignTarget : std::uint8_t { R, RIndirect, Local, ToolData };
 
 struct Word {
     WordKind kind = WordKind::G;
@@ -114,7 +115,8 @@ struct Word {
     AssignTarget target = AssignTarget::R;
     std::int32_t code = 0;    // G/M code, R index, local slot, keyword, cycle number
     std::int32_t expr = -1;   // value
-    std::int32_t expr2 = -1;  // array element / indirect R index
+    std::int32_t expr2 = -1;  // array element / indirect R index / tool number of $TC_DP
+    std::int32_t expr3 = -1;  // cutting edge of $TC_DP
     std::int32_t arraySize = 0;
     Pos pos;
     double value = 0;

@@ -15,6 +15,7 @@
 // Spindle, Coolant, WorkOffset, Dwell, CutterComp, ProgramStop, Comment for comments.
 #pragma once
 
+#include "nc/BlockModal.h"
 #include "nc/Diagnostic.h"
 #include "nc/Dialect.h"
 
@@ -59,6 +60,7 @@ struct InterpretOptions {
     ProgramResolver resolveProgram;                // empty: calls to other programs are errors
     const kinematics::Machine* machine = nullptr;  // kinematics::LimitCheck on what the program does, when set
     const ToolTable* toolTable = nullptr;          // tool radii for cutter compensation (the program's own data first)
+    BlockObserver onBlock;                         // after each executed block: its modal state (BlockModal.h)
     std::int64_t maxBlocks = 10'000'000;           // executed blocks before a runaway-program error
     double arcRadiusToleranceMm = 0.01;            // start/end radius mismatch that is an error
     std::size_t maxDiagnostics = 1000;             // further ones are counted, not kept

@@ -107,6 +107,7 @@ private:
 
     // Machine.cpp: control flow, state, M functions, tools, parameters.
     void execute(const Block& b);
+    void reportModal(const Block& b);  // to options.onBlock
     void source(const Block& b);
     void source(int line);
     void report(Severity s, int line, int column, std::string message);
@@ -190,6 +191,7 @@ private:
     toolpath::CoolantMode m_coolant = toolpath::CoolantMode::Off;
     std::unordered_map<int, double> m_toolRadius;  // TOOL DEF R, mm
     double m_deltaRadius = 0;                      // DR of the last TOOL CALL, mm
+    char m_toolAxis = 'Z';                         // of the last TOOL CALL
     CycleDefinition m_cycle;
     bool m_modalCycleCall = false;
     Corner m_corner;

@@ -300,6 +300,8 @@ void Machine::toolCall(const Block& b)
     std::optional<double> speed;
     for (int i = 0; i < b.wordCount; ++i) {
         const Word& word = p.words[static_cast<std::size_t>(b.firstWord + i)];
+        if (word.key == Key::ToolAxis)
+            m_toolAxis = static_cast<char>(word.param);
         if (word.key == Key::ToolAxis && word.param != 'Z')
             warnOnce(kWarnToolAxis, b,
                      "tool axis " + std::string(1, static_cast<char>(word.param)) +

@@ -131,6 +131,8 @@ void Program::run()
         applyAssignments();
         if (m_machine.execute(m_block, m_lineNumber, m_current.file) == BlockOutcome::ProgramEnd)
             m_programEnd = true;
+        if (m_options.onBlock)
+            m_machine.reportModal(m_options.onBlock);
     }
     if (!m_fatal && !m_programEnd)
         m_reporter.warning(m_lineNumber, 0, "the program ends without M2, M30 or a closing '%'");

@@ -377,6 +377,7 @@ void Machine::applyCompensation(const Block& block, const Groups& groups)
         if (side != CutterCompSide::Off)
             setCompensationRadius(block, code);
         m_state.comp = side;
+        m_state.compCode = code;
         source();
         m_sink.cutterComp(CutterComp{side});
     }
@@ -509,6 +510,33 @@ BlockOutcome Machine::applyStop(const Groups& groups)
         return BlockOutcome::ProgramEnd;
     }
     return BlockOutcome::Continue;
+}
+
+void Machine::reportModal(const BlockObserver& observer) const
+{
+    static const char* const kOffsets[] = {"G54", "G55", "G56", "G57", "G58", "G59", "G59.1", "G59.2", "G59.3"};
+    BlockModal m;
+    m.file = m_file;
+    m.line = m_line;
+    m.distance = m_state.absolute ? BlockModal::Distance::Absolute : BlockModal::Distance::Incremental;
+    m.distanceWord = m_state.absolute ? "G90" : "G91";
+    m.inch = m_state.unit != 1.0;
+    m.unitsWord = m.inch ? "G20" : "G21";
+    m.plane = m_state.plane / 10;
+    m.planeWord = m_state.plane == 180 ? "G18" : m_state.plane == 190 ? "G19" : "G17";
+    m.compensation = m_state.comp;
+    m.compensationWord = m_state.comp == CutterCompSide::Off    ? "G40"
+                         : m_state.compCode == 411              ? "G41.1"
+                         : m_state.compCode == 421              ? "G42.1"
+                         : m_state.comp == CutterCompSide::Left ? "G41"
+                                                                : "G42";
+    m.feedMode = m_state.feedMode;
+    m.feedModeWord = m_state.feedMode == FeedMode::InverseTime     ? "G93"
+                     : m_state.feedMode == FeedMode::PerRevolution ? "G95"
+                                                                   : "G94";
+    if (m_state.workOffset >= 1 && m_state.workOffset <= 9)
+        m.workOffset = kOffsets[m_state.workOffset - 1];
+    observer(m);
 }
 
 void Machine::programEnd()

@@ -5,6 +5,7 @@
 // offset's frame, each after setSource() with the block's line.
 #pragma once
 
+#include "nc/BlockModal.h"
 #include "nc/CutterCompensation.h"
 #include "nc/ToolTable.h"
 #include "nc/iso/IsoBlock.h"
@@ -23,6 +24,7 @@ struct ModalState {
     toolpath::FeedMode feedMode = toolpath::FeedMode::PerMinute;
     double unit = 1.0;  // mm per program unit: 25.4 under G20
     toolpath::CutterCompSide comp = toolpath::CutterCompSide::Off;
+    int compCode = 400;  // as programmed: 400, 410, 411, 420, 421
     int workOffset = 1;
     bool retractToR = false;  // G99 (LinuxCNC starts in G98)
     double feed = 0;          // mm/min, mm/rev, or 1/min under G93
@@ -62,6 +64,8 @@ public:
     // M2/M30 resets (also at the end of a file without them, as LinuxCNC's end of program does not).
     void programEnd();
     const ModalState& state() const { return m_state; }
+    // The state after the last executed block in the program's words (BlockModal.h).
+    void reportModal(const BlockObserver& observer) const;
     // Tells the sink which block is running without a record: the call line before a subroutine's
     // records, so a viewer links them to the exact call (Interpreter.h).
     void announce(int line, int fileIndex) { m_sink.setSource(toolpath::SourceRef{-1, -1, line, fileIndex}); }

@@ -156,6 +156,8 @@ bool Machine::executeNormal(const Program& p, const Block& b)
 
 void Machine::applyUnits(const BlockWords& w)
 {
+    if (w.units)
+        m_modal.unitsCode = w.units;
     if (w.units == 70 || w.units == 700) {
         m_modal.inch = true;
         m_modal.inchFeed = w.units == 700;

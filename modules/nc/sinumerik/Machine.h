@@ -27,6 +27,7 @@ struct Modal {
     bool incremental = false;
     bool inch = false;      // G70/G700
     bool inchFeed = false;  // G700: feeds in inch too
+    int unitsCode = 71;     // as programmed: 70, 700, 71, 710 (G71 until one is)
     toolpath::FeedMode feedMode = toolpath::FeedMode::PerMinute;
     bool constantSurfaceSpeed = false;  // G96
     bool diameter = false;              // DIAMON: X is a diameter
@@ -77,7 +78,8 @@ private:
 
     // Machine.cpp
     void runLoop();
-    bool step();  // one block; false: the program ended or stopped
+    bool step();         // one block; false: the program ended or stopped
+    void reportModal();  // to options.onBlock
     void jumpBack(int target);
     bool callProgram(const std::string& name, const Block& block, const Program& caller, int repeats,
                      const std::vector<std::optional<double>>& args);

@@ -1095,18 +1095,6 @@ CAM and post-processor workbench.</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>%1 mm/min (G94)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>%1 mm/rev (G95)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>%1 1/min (G93)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
         <source>stopped (M5)</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1140,18 +1128,6 @@ CAM and post-processor workbench.</source>
     </message>
     <message>
         <source>through tool</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>off (G40)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>left (G41)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>right (G42)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
@@ -1257,6 +1233,58 @@ CAM and post-processor workbench.</source>
             <numerusform></numerusform>
             <numerusform></numerusform>
         </translation>
+    </message>
+    <message>
+        <source>%1 mm/min (%2)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 mm/rev (%2)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 1/min (%2)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>off</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>left of the contour</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>right of the contour</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 (absolute)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 (incremental)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 (absolute and incremental words)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 (absolute or incremental per coordinate)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 (inch; positions shown in mm)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 (mm)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>none programmed (control default)</source>
+        <translation type="unfinished"></translation>
     </message>
 </context>
 <context>

@@ -6,6 +6,7 @@
 #include "kinematics/Machine.h"
 #include "nc/Interpreter.h"
 #include "nc/MotionTrace.h"
+#include "nc/ToolTable.h"
 
 #include <charconv>
 #include <cstdio>
@@ -23,6 +24,7 @@ struct TraceOptions {
     nc::TraceFormat format = nc::TraceFormat::Text;
     std::string output;
     std::int64_t maxBlocks = 0;  // 0: the interpreter's default
+    std::string toolTable;
 };
 
 // Parses the options of `nc trace`; returns an error message, empty when they are fine.
@@ -31,7 +33,7 @@ std::string parseTraceOptions(const std::vector<std::string>& args, TraceOptions
     for (std::size_t i = 0; i < args.size(); ++i) {
         const std::string& arg = args[i];
         const bool takesValue = arg == "--dialect" || arg == "--machine" || arg == "--format" || arg == "-o" ||
-                                arg == "--output" || arg == "--max-blocks";
+                                arg == "--output" || arg == "--max-blocks" || arg == "--tool-table";
         if (!takesValue) {
             if (!arg.empty() && arg[0] == '-' && arg != "-")
                 return "unknown option '" + arg + "'";
@@ -49,6 +51,8 @@ std::string parseTraceOptions(const std::vector<std::string>& args, TraceOptions
                 return "unknown dialect '" + value + "' (sinumerik, heidenhain or iso)";
         } else if (arg == "--machine") {
             options.machineId = value;
+        } else if (arg == "--tool-table") {
+            options.toolTable = value;
         } else if (arg == "--format") {
             if (value == "text")
                 options.format = nc::TraceFormat::Text;
@@ -90,6 +94,14 @@ int ncCommand(const std::vector<std::string>& args)
     }
     if (options.maxBlocks > 0)
         interpretOptions.maxBlocks = options.maxBlocks;
+    std::optional<nc::ToolTable> toolTable;
+    if (!options.toolTable.empty()) {
+        auto read = nc::readToolTable(options.toolTable);
+        if (!read)
+            return fail(read.error().toString());
+        toolTable = std::move(read).value();
+        interpretOptions.toolTable = &*toolTable;
+    }
 
     // The trace is written while the interpreter runs, nothing recorded: to stdout, or to a
     // temporary file beside -o that replaces it only when complete.

@@ -1,1 +1,1 @@
-set(GEOM_PART_SOURCES ChainOffset.cpp detail/OffsetCore.cpp)
+set(GEOM_PART_SOURCES ChainOffset.cpp CarrierIntersection.cpp detail/OffsetCore.cpp)

@@ -15,6 +15,7 @@
 // Spindle, Coolant, WorkOffset, Dwell, CutterComp, ProgramStop, Comment for comments.
 #pragma once
 
+#include "nc/BlockModal.h"
 #include "nc/Diagnostic.h"
 #include "nc/Dialect.h"
 
@@ -34,6 +35,8 @@ class MachineSink;
 }
 
 namespace camwb::nc {
+
+class ToolTable;
 
 // A program found by name for a call (Sinumerik subprogram/PROC, Heidenhain CALL PGM).
 struct ProgramSource {
@@ -56,6 +59,8 @@ struct InterpretOptions {
     std::string fileName;                          // for diagnostics; empty = "<input>"
     ProgramResolver resolveProgram;                // empty: calls to other programs are errors
     const kinematics::Machine* machine = nullptr;  // kinematics::LimitCheck on what the program does, when set
+    const ToolTable* toolTable = nullptr;          // tool radii for cutter compensation (the program's own data first)
+    BlockObserver onBlock;                         // after each executed block: its modal state (BlockModal.h)
     std::int64_t maxBlocks = 10'000'000;           // executed blocks before a runaway-program error
     double arcRadiusToleranceMm = 0.01;            // start/end radius mismatch that is an error
     std::size_t maxDiagnostics = 1000;             // further ones are counted, not kept

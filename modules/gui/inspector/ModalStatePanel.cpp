@@ -6,6 +6,8 @@
 #include <QLabel>
 #include <QVBoxLayout>
 
+#include <functional>
+
 namespace camwb::gui {
 
 namespace {
@@ -19,15 +21,23 @@ QString position(const ModalState& state)
     return QStringLiteral("X%1 Y%2 Z%3").arg(mm(state.position.x), mm(state.position.y), mm(state.position.z));
 }
 
-QString feedText(const ModalState& state)
+// `word`: the program's own word for the feed mode (G94, F, FU ...), else the ISO one.
+QString feedText(const ModalState& state, const char* word)
 {
+    const bool own = word != nullptr && *word != 0;
     switch (state.feedMode) {
     case toolpath::FeedMode::PerMinute:
-        return ModalStatePanel::tr("%1 mm/min (G94)").arg(state.feed, 0, 'f', 1);
+        return ModalStatePanel::tr("%1 mm/min (%2)")
+            .arg(state.feed, 0, 'f', 1)
+            .arg(own ? QString::fromLatin1(word) : QStringLiteral("G94"));
     case toolpath::FeedMode::PerRevolution:
-        return ModalStatePanel::tr("%1 mm/rev (G95)").arg(state.feed, 0, 'f', 3);
+        return ModalStatePanel::tr("%1 mm/rev (%2)")
+            .arg(state.feed, 0, 'f', 3)
+            .arg(own ? QString::fromLatin1(word) : QStringLiteral("G95"));
     case toolpath::FeedMode::InverseTime:
-        return ModalStatePanel::tr("%1 1/min (G93)").arg(state.feed, 0, 'f', 3);
+        return ModalStatePanel::tr("%1 1/min (%2)")
+            .arg(state.feed, 0, 'f', 3)
+            .arg(own ? QString::fromLatin1(word) : QStringLiteral("G93"));
     }
     return {};
 }
@@ -57,17 +67,63 @@ QString coolantText(toolpath::CoolantMode mode)
     return {};
 }
 
-QString compensationText(toolpath::CutterCompSide side)
+// "RL (left of the contour)"; without the program's word the meaning alone.
+QString compensationText(toolpath::CutterCompSide side, const QString& word)
 {
+    QString meaning;
     switch (side) {
     case toolpath::CutterCompSide::Off:
-        return ModalStatePanel::tr("off (G40)");
+        meaning = ModalStatePanel::tr("off");
+        break;
     case toolpath::CutterCompSide::Left:
-        return ModalStatePanel::tr("left (G41)");
+        meaning = ModalStatePanel::tr("left of the contour");
+        break;
     case toolpath::CutterCompSide::Right:
-        return ModalStatePanel::tr("right (G42)");
+        meaning = ModalStatePanel::tr("right of the contour");
+        break;
+    }
+    return word.isEmpty() ? meaning : QStringLiteral("%1 (%2)").arg(word, meaning);
+}
+
+QString planeName(int plane)
+{
+    return plane == 18 ? QStringLiteral("ZX") : plane == 19 ? QStringLiteral("YZ") : QStringLiteral("XY");
+}
+
+QString distanceText(const nc::BlockModal& words)
+{
+    const QString word = QString::fromLatin1(words.distanceWord);
+    switch (words.distance) {
+    case nc::BlockModal::Distance::Absolute:
+        return ModalStatePanel::tr("%1 (absolute)").arg(word);
+    case nc::BlockModal::Distance::Incremental:
+        return ModalStatePanel::tr("%1 (incremental)").arg(word);
+    case nc::BlockModal::Distance::Mixed:
+        return ModalStatePanel::tr("%1 (absolute and incremental words)").arg(word);
+    case nc::BlockModal::Distance::PerWord:
+        return ModalStatePanel::tr("%1 (absolute or incremental per coordinate)").arg(word);
     }
     return {};
+}
+
+QString unitsText(const nc::BlockModal& words)
+{
+    return words.inch
+               ? ModalStatePanel::tr("%1 (inch; positions shown in mm)").arg(QString::fromLatin1(words.unitsWord))
+               : ModalStatePanel::tr("%1 (mm)").arg(QString::fromLatin1(words.unitsWord));
+}
+
+// The state the program set, in its own words (BlockModal); the rows the records cannot fill.
+void showWords(const std::function<void(const char*, const QString&)>& set, const nc::BlockModal& words,
+               const ModalState& s)
+{
+    set("feed", feedText(s, words.feedModeWord));
+    set("compensation", compensationText(words.compensation, QString::fromLatin1(words.compensationWord)));
+    set("plane", QStringLiteral("%1 (%2)").arg(QString::fromLatin1(words.planeWord), planeName(words.plane)));
+    set("units", unitsText(words));
+    set("distance", distanceText(words));
+    set("workOffset", words.workOffset.empty() ? ModalStatePanel::tr("none programmed (control default)")
+                                               : QString::fromStdString(words.workOffset));
 }
 
 }  // namespace
@@ -135,17 +191,22 @@ void ModalStatePanel::showState(const LineState& state, const NcTrace& trace)
     set("block", block);
     set("move", state.move.empty() ? tr("no motion") : QString::fromStdString(state.move));
     set("tool", s.tool > 0 ? QStringLiteral("T%1").arg(s.tool) : tr("none called yet"));
-    set("feed", feedText(s));
     set("spindle", spindleText(s));
     set("coolant", coolantText(s.coolant));
-    set("workOffset", s.workOffset > 0 ? tr("%1 (G%2)").arg(s.workOffset).arg(53 + s.workOffset)
-                                       : tr("none in the trace (control default)"));
-    set("compensation", compensationText(s.compensation));
-    // The records carry no plane, units or distance mode: say what they do carry.
-    set("plane", s.hasArcNormal ? tr("%1, from the last arc").arg(QString::fromStdString(planeOfNormal(s.arcNormal)))
-                                : tr("no arc yet (not in the trace)"));
-    set("units", tr("mm (inch programs converted)"));
-    set("distance", tr("not in the trace; positions absolute"));
+    if (state.words) {
+        showWords(set, *state.words, s);
+    } else {
+        // No block has run yet (or the trace was cut short): only what the records carry.
+        set("feed", feedText(s, nullptr));
+        set("workOffset", s.workOffset > 0 ? tr("%1 (G%2)").arg(s.workOffset).arg(53 + s.workOffset)
+                                           : tr("none in the trace (control default)"));
+        set("compensation", compensationText(s.compensation, QString()));
+        set("plane", s.hasArcNormal
+                         ? tr("%1, from the last arc").arg(QString::fromStdString(planeOfNormal(s.arcNormal)))
+                         : tr("no arc yet (not in the trace)"));
+        set("units", tr("mm (inch programs converted)"));
+        set("distance", tr("not in the trace; positions absolute"));
+    }
     set("before", position(state.before));
     set("after", position(state.after));
     showMessage(trace.result.completed || trace.result.diagnostics.empty()

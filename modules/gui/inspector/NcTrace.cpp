@@ -89,6 +89,21 @@ NcTrace traceNc(const NcTraceRequest& request)
     if (!request.path.empty())
         options.resolveProgram = nc::resolverBeside(request.path, trace.dialect);
 
+    // The first run of each main-program line keeps its modal words; equal states are stored once.
+    options.onBlock = [&trace](const nc::BlockModal& words) {
+        if (words.file != 0 || words.line < 1)
+            return;
+        auto& index = trace.wordsIndexOfLine;
+        const auto line = static_cast<std::size_t>(words.line);
+        if (line < index.size() && index[line] != NcTrace::kNoWords)
+            return;
+        if (trace.modalWords.empty() || !trace.modalWords.back().sameState(words))
+            trace.modalWords.push_back(words);
+        if (index.size() <= line)
+            index.resize(line + 1, NcTrace::kNoWords);
+        index[line] = static_cast<std::uint32_t>(trace.modalWords.size() - 1);
+    };
+
     const auto start = std::chrono::steady_clock::now();
     TraceRecorder recorder(trace, request.cancel);
     trace.result = nc::interpret(request.text, options, recorder);
@@ -122,10 +137,22 @@ std::vector<std::size_t> NcTrace::recordsOfLine(int line) const
     return records;
 }
 
+const nc::BlockModal* NcTrace::wordsOfLine(int line) const
+{
+    for (int l = std::min(line, static_cast<int>(wordsIndexOfLine.size()) - 1); l >= 1; --l) {
+        const std::uint32_t index = wordsIndexOfLine[static_cast<std::size_t>(l)];
+        if (index != kNoWords)
+            return &modalWords[index];
+    }
+    return nullptr;
+}
+
 LineState NcTrace::lineState(int line) const
 {
     LineState state;
     state.line = line;
+    if (const nc::BlockModal* words = wordsOfLine(line))
+        state.words = *words;
     const std::vector<std::size_t> records = recordsOfLine(line);
     if (records.empty()) {
         auto next =

@@ -29,6 +29,9 @@ struct LineState {
     std::string move;  // "linear", "arc CW", "cycle drill (3 holes)", "" = no motion
     ModalState before;
     ModalState after;
+    // The modal state the line ran with in the dialect's own words (G90, G710, RL, ...); for a
+    // line that did not run, the last one before it that did. Empty before the first block.
+    std::optional<nc::BlockModal> words;
 };
 
 struct NcTrace {
@@ -57,6 +60,16 @@ struct NcTrace {
     ModalState stateBefore(std::size_t record) const { return modal.before(program, record); }
     // A line without records gets the state in force where the next recorded line starts.
     LineState lineState(int line) const;
+
+    // The modal words a main-program line ran with first (or the nearest earlier line's).
+    const nc::BlockModal* wordsOfLine(int line) const;
+
+    // Distinct modal states in the order they appeared, and per main-program line the index of
+    // the one its first run had (kNoWords where the line did not run): a few states for a
+    // million lines.
+    static constexpr std::uint32_t kNoWords = 0xFFFFFFFFu;
+    std::vector<nc::BlockModal> modalWords;
+    std::vector<std::uint32_t> wordsIndexOfLine;
 
     // (line, record) of main-program records, sorted by line then record.
     std::vector<std::pair<int, std::uint32_t>> lineRecords;

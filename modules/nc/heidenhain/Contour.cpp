@@ -262,6 +262,8 @@ void Machine::circleCenter(const Block& b)
     }
 }
 
+// A contour or M-only block in the control's order: spindle and coolant, compensation, feed, the
+// element (with a planned corner after it), then stops, program end and cycle calls.
 void Machine::motionBlock(const Block& b)
 {
     BlockWords w;
@@ -278,37 +280,42 @@ void Machine::motionBlock(const Block& b)
     if (w.feed == BlockWords::FeedWord::Auto && m_autoFeed <= 0)
         warnOnce(kWarnAutoFeed, b, "F AUTO with no feed in the TOOL CALL: feed 0");
 
-    applyEarlyM(b, w);
-    applyComp(w);
-    applyFeed(w);
-    const bool rapid = w.feed == BlockWords::FeedWord::Max;
-
-    bool moved = false;
-    if (b.kind != BlockKind::MOnly && b.kind != BlockKind::Stop) {
-        std::optional<Element> e;
-        if (m_corner.nextPending && m_corner.program == m_prog && m_corner.nextBlock == m_pc) {
-            e = m_corner.next;  // planned from the corner before it (RND/CHF)
-            e->start = m_pos;
-        } else {
-            e = plan(b, w, m_pos, m_cc, m_ccSet, m_tangent, false);
-        }
-        m_corner.nextPending = false;
-        if (e && e->type != Element::Type::None) {
-            if (e->type == Element::Type::Arc)
-                m_lastDirection = e->clockwise ? -1 : 1;
-            planCorner(*e, m_pc + 1);
-            send(*e, rapid, m_feed);
-            moved = true;
-        }
-        // Absolute X/Y (or a polar end about a known pole) make the position known.
-        m_knownX = m_knownX || w.axes[0].has_value();
-        m_knownY = m_knownY || w.axes[1].has_value();
-        if (b.kind == BlockKind::LinePolar && w.pr && w.pa && m_ccSet)
-            m_knownX = m_knownY = true;
-    }
+    applySpindleAndCoolant(b, w);
+    applyCompensation(w);
+    applyFeedRate(w);
+    const bool moved = applyMotion(b, w);
     if (b.kind == BlockKind::Stop)
         m_sink.programStop(ProgramStop{false});
-    applyLateM(b, w, moved);
+    applyStop(b, w, moved);
+}
+
+bool Machine::applyMotion(const Block& b, const BlockWords& w)
+{
+    if (b.kind == BlockKind::MOnly || b.kind == BlockKind::Stop)
+        return false;
+    const bool rapid = w.feed == BlockWords::FeedWord::Max;
+    bool moved = false;
+    std::optional<Element> e;
+    if (m_corner.nextPending && m_corner.program == m_prog && m_corner.nextBlock == m_pc) {
+        e = m_corner.next;  // planned from the corner before it (RND/CHF)
+        e->start = m_pos;
+    } else {
+        e = plan(b, w, m_pos, m_cc, m_ccSet, m_tangent, false);
+    }
+    m_corner.nextPending = false;
+    if (e && e->type != Element::Type::None) {
+        if (e->type == Element::Type::Arc)
+            m_lastDirection = e->clockwise ? -1 : 1;
+        planCorner(*e, m_pc + 1);
+        send(*e, rapid, m_feed);
+        moved = true;
+    }
+    // Absolute X/Y (or a polar end about a known pole) make the position known.
+    m_knownX = m_knownX || w.axes[0].has_value();
+    m_knownY = m_knownY || w.axes[1].has_value();
+    if (b.kind == BlockKind::LinePolar && w.pr && w.pa && m_ccSet)
+        m_knownX = m_knownY = true;
+    return moved;
 }
 
 void Machine::send(const Element& e, bool rapid, double feed)

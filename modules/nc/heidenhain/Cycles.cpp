@@ -133,7 +133,7 @@ void Machine::cycleCall(const Block& b)
     BlockWords w;
     if (!gather(b, w, false))
         return;
-    applyEarlyM(b, w);
+    applySpindleAndCoolant(b, w);
     m_modalCycleCall = false;  // CYCL CALL ends M89, as M99 does
     Vec2 hole = m_pos.xy();
     if (b.kind == BlockKind::CycleCallPos) {
@@ -145,7 +145,7 @@ void Machine::cycleCall(const Block& b)
         hole = t->xy();
     }
     runCycle(b, hole);
-    applyLateM(b, w, false);
+    applyStop(b, w, false);
 }
 
 void Machine::runCycle(const Block& b, Vec2 hole)

@@ -303,10 +303,12 @@ int parseExpression(Cursor& cursor, ParseEnv& env)
     return parser.failed ? -1 : e;
 }
 
-int parseValue(Cursor& cursor, ParseEnv& env)
+int parseValue(Cursor& cursor, ParseEnv& env, bool* reported)
 {
     ExprParser parser(cursor, env);
     const int e = parser.value();
+    if (reported)
+        *reported = parser.failed;
     return parser.failed ? -1 : e;
 }
 

@@ -27,8 +27,9 @@ struct ParseEnv {
 // A full expression; -1 (after an error) when there is none.
 int parseExpression(Cursor& cursor, ParseEnv& env);
 // A word value: [+|-] (number | Q/QL/QR parameter | '(' expression ')'); -1 when none is there
-// (nothing reported: the caller decides whether a value was required).
-int parseValue(Cursor& cursor, ParseEnv& env);
+// (nothing reported: the caller decides whether a value was required) or after an error in it
+// (reported; `reported` is then set when given).
+int parseValue(Cursor& cursor, ParseEnv& env, bool* reported = nullptr);
 // A parameter reference "Q12", "QL3", "QR7" at the cursor: op and number; nullopt when none.
 struct ParamRef {
     ExprOp op = ExprOp::Q;

@@ -3,7 +3,13 @@
 // absurd input is reported as an error.
 //
 // Choices where the manuals leave room or the trace cannot follow the control:
-// - RL/RR are recorded (CutterComp) but not applied: the trace follows the programmed contour.
+// - Radius compensation RL/RR/R0 is applied (iTNC 530 User's Manual, 5.3 "Tool compensation"):
+//   the compensation value is R of the TOOL DEF (else of the tool table given with the options)
+//   plus DR of the TOOL CALL; the RL/RR block ends square to the contour's first element, the
+//   R0 block starts square to the last; RL/RR or R0 on a circle is an error (the TNC takes them
+//   in straight-line blocks only); outside corners get a transitional arc (MP7680's default, no
+//   spline), inside corners the intersection of the tool-centre paths. Turns under 0.001 rad are
+//   tangent, for the rounding of written coordinates.
 // - Cycles 200/201/202/203/205/206/207/209/240 and 1/2/17 are Cycle records (clearance =
 //   Q203+Q204, retract = Q203+Q200, top = Q203, bottom = Q203+Q201); 204 and 208 become moves.
 // - M89 stays on through a new CYCL DEF and ends with M99 or CYCL CALL (TNC 306 manual).
@@ -23,7 +29,8 @@ InterpretResult interpretHeidenhain(std::string_view text, const InterpretOption
 {
     InterpretResult result;
     try {
-        heidenhain::Machine machine(options, sink, result);
+        CutterCompensation compensation(sink, CompensationRules::heidenhain(), result, options.maxDiagnostics);
+        heidenhain::Machine machine(options, compensation, result);
         machine.run(text);
     } catch (const std::bad_alloc&) {
         result.completed = false;

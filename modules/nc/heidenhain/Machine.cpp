@@ -5,6 +5,8 @@
 
 #include "nc/heidenhain/Parser.h"
 
+#include "base/NumberFormat.h"
+
 #include <algorithm>
 #include <cmath>
 
@@ -38,9 +40,10 @@ double CycleDefinition::get(int n, double fallback) const
     return has(n) ? q[static_cast<std::size_t>(n - 200)] : fallback;
 }
 
-Machine::Machine(const InterpretOptions& options, MachineSink& sink, InterpretResult& result) :
+Machine::Machine(const InterpretOptions& options, CutterCompensation& sink, InterpretResult& result) :
     m_options(options),
     m_sink(sink),
+    m_compensation(sink),
     m_result(result),
     m_rep(result.diagnostics, options.maxDiagnostics, result.diagnosticsDropped)
 {
@@ -107,12 +110,51 @@ void Machine::run(std::string_view text)
             break;
         }
         m_jumped = false;
-        execute(blocks[m_pc]);
+        const Block& block = blocks[m_pc];
+        execute(block);
+        if (m_options.onBlock)
+            reportModal(block);
         if (!m_jumped)
             ++m_pc;
     }
     m_sink.end();
     sortDiagnostics();
+}
+
+// The state after a block in Klartext's words: absolute or incremental per coordinate word, MM or
+// INCH of BEGIN PGM, the working plane of the TOOL CALL's axis, R0/RL/RR, F or FU, a datum shift.
+void Machine::reportModal(const Block& b)
+{
+    BlockModal m;
+    m.file = program().fileIndex;
+    m.line = b.line;
+    bool absolute = false, incremental = false;
+    const Program& p = program();
+    for (int i = 0; i < b.wordCount; ++i) {
+        const Key key = p.words[static_cast<std::size_t>(b.firstWord + i)].key;
+        absolute = absolute || (key >= Key::X && key <= Key::W) || key == Key::PR || key == Key::PA;
+        incremental = incremental || (key >= Key::IX && key <= Key::IW) || key == Key::IPR || key == Key::IPA;
+    }
+    using D = BlockModal::Distance;
+    m.distance = absolute && incremental ? D::Mixed
+                 : absolute              ? D::Absolute
+                 : incremental           ? D::Incremental
+                                         : D::PerWord;
+    m.distanceWord = absolute && incremental ? "X and IX" : absolute ? "X Y Z" : incremental ? "IX IY IZ" : "X or IX";
+    m.inch = m_scale != 1.0;
+    m.unitsWord = m.inch ? "INCH" : "MM";
+    m.plane = m_toolAxis == 'X' ? 19 : m_toolAxis == 'Y' ? 18 : 17;
+    m.planeWord = m_toolAxis == 'X' ? "TOOL CALL X" : m_toolAxis == 'Y' ? "TOOL CALL Y" : "TOOL CALL Z";
+    m.compensation = m_comp;
+    m.compensationWord = m_comp == CutterCompSide::Left ? "RL" : m_comp == CutterCompSide::Right ? "RR" : "R0";
+    m.feedMode = m_feedMode;
+    m.feedModeWord = m_feedMode == FeedMode::PerRevolution ? "FU" : "F";
+    if (!(m_shift == Vec3{})) {
+        const base::NumberFormat f{4, true, false, true};
+        m.workOffset = "datum shift X" + f.format(m_shift.x / m_scale) + " Y" + f.format(m_shift.y / m_scale) + " Z" +
+                       f.format(m_shift.z / m_scale);
+    }
+    m_options.onBlock(m);
 }
 
 // Parse-time and run-time diagnostics in the order of the files and their lines, as an editor

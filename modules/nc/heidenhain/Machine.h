@@ -4,7 +4,9 @@
 // and M functions live in Machine.cpp, contour elements in Contour.cpp, cycles in Cycles.cpp.
 #pragma once
 
+#include "nc/CutterCompensation.h"
 #include "nc/Interpreter.h"
+#include "nc/ToolTable.h"
 #include "nc/heidenhain/Expression.h"
 #include "nc/heidenhain/Geometry.h"
 #include "nc/heidenhain/Lexer.h"
@@ -89,7 +91,8 @@ struct Corner {
 
 class Machine {
 public:
-    Machine(const InterpretOptions& options, toolpath::MachineSink& sink, InterpretResult& result);
+    // `sink` compensates the cutter radius (CutterCompensation.h) in front of the caller's sink.
+    Machine(const InterpretOptions& options, CutterCompensation& sink, InterpretResult& result);
     void run(std::string_view text);
 
 private:
@@ -104,15 +107,17 @@ private:
 
     // Machine.cpp: control flow, state, M functions, tools, parameters.
     void execute(const Block& b);
+    void reportModal(const Block& b);  // to options.onBlock
     void source(const Block& b);
     void source(int line);
     void report(Severity s, int line, int column, std::string message);
     void warnOnce(int key, const Block& b, const std::string& message);
     bool gather(const Block& b, BlockWords& w, bool quiet);
-    void applyEarlyM(const Block& b, const BlockWords& w);
-    void applyLateM(const Block& b, const BlockWords& w, bool moved);
-    void applyFeed(const BlockWords& w);
-    void applyComp(const BlockWords& w);
+    void applySpindleAndCoolant(const Block& b, const BlockWords& w);
+    void applyStop(const Block& b, const BlockWords& w, bool moved);
+    void applyFeedRate(const BlockWords& w);
+    void applyCompensation(const BlockWords& w);
+    void setCompensationRadius();
     void endProgram(bool completed);
     void sortDiagnostics();
     void returnFromProgram();
@@ -132,6 +137,7 @@ private:
 
     // Contour.cpp: elements, corners, sending moves.
     void motionBlock(const Block& b);
+    bool applyMotion(const Block& b, const BlockWords& w);  // true: an element was sent
     void circleCenter(const Block& b);
     void corner(const Block& b);
     std::optional<Element> plan(const Block& b, const BlockWords& w, const Vec3& from, const Vec2& cc, bool ccSet,
@@ -150,6 +156,7 @@ private:
 
     const InterpretOptions& m_options;
     toolpath::MachineSink& m_sink;
+    CutterCompensation& m_compensation;
     InterpretResult& m_result;
     Reporter m_rep;
 
@@ -182,7 +189,9 @@ private:
     bool m_spindleOn = false;
     bool m_spindleCw = true;
     toolpath::CoolantMode m_coolant = toolpath::CoolantMode::Off;
-    std::unordered_map<int, double> m_toolRadius;
+    std::unordered_map<int, double> m_toolRadius;  // TOOL DEF R, mm
+    double m_deltaRadius = 0;                      // DR of the last TOOL CALL, mm
+    char m_toolAxis = 'Z';                         // of the last TOOL CALL
     CycleDefinition m_cycle;
     bool m_modalCycleCall = false;
     Corner m_corner;

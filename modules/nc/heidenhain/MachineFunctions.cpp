@@ -109,7 +109,7 @@ bool Machine::gather(const Block& b, BlockWords& w, bool quiet)
     return ok;
 }
 
-void Machine::applyFeed(const BlockWords& w)
+void Machine::applyFeedRate(const BlockWords& w)
 {
     using F = BlockWords::FeedWord;
     if (w.feed == F::Value || w.feed == F::Auto) {
@@ -127,16 +127,31 @@ void Machine::applyFeed(const BlockWords& w)
     }
 }
 
-void Machine::applyComp(const BlockWords& w)
+void Machine::applyCompensation(const BlockWords& w)
 {
     if (w.comp < 0)
         return;
     const CutterCompSide side =
         w.comp == 0 ? CutterCompSide::Off : (w.comp == 1 ? CutterCompSide::Left : CutterCompSide::Right);
     if (side != m_comp) {
+        if (side != CutterCompSide::Off)
+            setCompensationRadius();
         m_comp = side;
         m_sink.cutterComp(CutterComp{side});
     }
+}
+
+// R of the tool's TOOL DEF, else of the tool table, plus DR of the TOOL CALL (the TNC's
+// compensation value R + DR(TOOL CALL); the table's DR column is not in LinuxCNC's format).
+void Machine::setCompensationRadius()
+{
+    const std::string what = "tool " + std::to_string(m_tool);
+    std::optional<double> radius;
+    if (const auto it = m_toolRadius.find(m_tool); it != m_toolRadius.end())
+        radius = it->second;
+    else if (m_options.toolTable)
+        radius = m_options.toolTable->radiusOf(m_tool);
+    m_compensation.setRadius(radius ? std::optional<double>(*radius + m_deltaRadius) : std::nullopt, what);
 }
 
 void Machine::spindleOn(bool clockwise, const Block& b, int column)
@@ -165,7 +180,7 @@ void Machine::coolant(CoolantMode mode)
 }
 
 // M functions effective at the start of the block (before its motion).
-void Machine::applyEarlyM(const Block& b, const BlockWords& w)
+void Machine::applySpindleAndCoolant(const Block& b, const BlockWords& w)
 {
     for (int i = 0; i < w.mCount; ++i) {
         switch (w.m[static_cast<std::size_t>(i)]) {
@@ -202,7 +217,7 @@ void Machine::applyEarlyM(const Block& b, const BlockWords& w)
 }
 
 // M functions effective at the end of the block (after its motion).
-void Machine::applyLateM(const Block& b, const BlockWords& w, bool moved)
+void Machine::applyStop(const Block& b, const BlockWords& w, bool moved)
 {
     bool cycleCalled = false;
     for (int i = 0; i < w.mCount; ++i) {
@@ -285,6 +300,8 @@ void Machine::toolCall(const Block& b)
     std::optional<double> speed;
     for (int i = 0; i < b.wordCount; ++i) {
         const Word& word = p.words[static_cast<std::size_t>(b.firstWord + i)];
+        if (word.key == Key::ToolAxis)
+            m_toolAxis = static_cast<char>(word.param);
         if (word.key == Key::ToolAxis && word.param != 'Z')
             warnOnce(kWarnToolAxis, b,
                      "tool axis " + std::string(1, static_cast<char>(word.param)) +
@@ -295,6 +312,13 @@ void Machine::toolCall(const Block& b)
             warnOnce(kWarnSurfaceSpeed, b, "S(VC=...): the spindle speed needs the tool diameter and is not traced");
         if (word.key == Key::Feed)
             m_autoFeed = w.feedValue * m_feedScale;
+    }
+    m_deltaRadius = 0;
+    for (int i = 0; i < b.wordCount; ++i) {
+        const Word& word = p.words[static_cast<std::size_t>(b.firstWord + i)];
+        if (word.key == Key::DeltaRadius && word.expr >= 0)
+            if (const auto dr = eval(word.expr))
+                m_deltaRadius = *dr * m_scale;
     }
     if (b.a != -2) {
         ToolChange change;

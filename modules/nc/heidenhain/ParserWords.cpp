@@ -39,33 +39,52 @@ public:
             if (name.empty() || !word(name, line, column)) {
                 m_c.reset(start);
                 const std::string_view bad = m_c.token();
-                m_env.reporter.report(Severity::Error, m_env.file, line, column,
-                                      "unknown word '" + std::string(bad) + "'");
+                error(line, column, "unknown word '" + std::string(bad) + "'");
             }
         }
         m_block.wordCount = static_cast<int>(m_env.program.words.size()) - m_block.firstWord;
+        // A block with a word the control cannot read is not run at all: no axis moves on a guess.
+        if (m_failed)
+            m_block.kind = BlockKind::Invalid;
     }
 
 private:
     bool has(unsigned group) const { return (m_groups & group) != 0; }
+
+    void error(int line, int column, std::string message)
+    {
+        m_failed = true;
+        m_env.reporter.report(Severity::Error, m_env.file, line, column, std::move(message));
+    }
 
     void add(Key key, int expr, int param, int line, int column)
     {
         m_env.program.words.push_back({key, expr, param, line, column});
     }
 
-    // A value right after the address; reports a missing one.
+    // A value right after the address; reports a missing or malformed one (X+ZZ, X1.2.3, X+-3).
     bool valued(Key key, std::string_view name, int line, int column, int param = 0)
     {
-        const int e = parseValue(m_c, m_env);
-        if (e < 0) {
-            if (!valueStarts(m_c.peek()))
-                m_env.reporter.report(Severity::Error, m_env.file, line, column,
-                                      "missing value after '" + std::string(name) + "'");
-            skipToken();
+        const Cursor::Mark start = m_c.mark();
+        const int valueColumn = m_c.column();
+        bool reported = false;
+        const int e = parseValue(m_c, m_env, &reported);
+        const char next = m_c.peek();
+        if (e >= 0 && !isDigit(next) && next != '.') {
+            add(key, e, param, line, column);
             return true;
         }
-        add(key, e, param, line, column);
+        m_failed = true;
+        if (!reported) {
+            m_c.reset(start);
+            const std::string_view text = m_c.token();
+            if (text.empty() || !valueStarts(text.front()))
+                error(line, column, "missing value after '" + std::string(name) + "'");
+            else
+                error(line, valueColumn,
+                      "malformed number '" + std::string(text) + "' after '" + std::string(name) + "'");
+        }
+        skipToken();
         return true;
     }
 
@@ -121,7 +140,7 @@ private:
                 return valued(Key::DeltaRadius, name, line, column);
             }
             if (has(kDir)) {
-                m_env.reporter.report(Severity::Error, m_env.file, line, column, "DR must be followed by + or -");
+                error(line, column, "DR must be followed by + or -");
                 skipToken();
                 return true;
             }
@@ -142,7 +161,7 @@ private:
                     return true;
                 }
                 m_c.reset(mark);
-                m_env.reporter.report(Severity::Error, m_env.file, line, column, "missing value after 'F'");
+                error(line, column, "missing value after 'F'");
                 return true;
             }
             if (equalsIgnoreCase(name, "FMAX")) {
@@ -168,7 +187,7 @@ private:
         if (has(kMisc) && equalsIgnoreCase(name, "M")) {
             const auto n = m_c.integer();
             if (!n || *n < 0 || *n > 9999) {
-                m_env.reporter.report(Severity::Error, m_env.file, line, column, "M must be followed by a number");
+                error(line, column, "M must be followed by a number");
                 skipToken();
                 return true;
             }
@@ -192,20 +211,21 @@ private:
                     // S(VC=200): cutting speed in m/min.
                     m_c.advance();
                     if (!m_c.keyword("VC")) {
-                        m_env.reporter.report(Severity::Error, m_env.file, line, column, "S( must hold VC=");
+                        error(line, column, "S( must hold VC=");
                         return true;
                     }
                     m_c.skipSpace();
                     if (m_c.peek() == '=')
                         m_c.advance();
                     m_c.skipSpace();
-                    const int e = parseValue(m_c, m_env);
+                    bool reported = false;
+                    const int e = parseValue(m_c, m_env, &reported);
+                    m_failed = m_failed || reported;
                     m_c.skipSpace();
                     if (m_c.peek() == ')')
                         m_c.advance();
                     else
-                        m_env.reporter.report(Severity::Error, m_env.file, line, column,
-                                              "unbalanced parentheses: '(' is not closed");
+                        error(line, column, "unbalanced parentheses: '(' is not closed");
                     if (e >= 0)
                         add(Key::SurfaceSpeed, e, 0, line, column);
                     return true;
@@ -228,6 +248,7 @@ private:
     ParseEnv& m_env;
     Block& m_block;
     unsigned m_groups;
+    bool m_failed = false;
 };
 
 }  // namespace

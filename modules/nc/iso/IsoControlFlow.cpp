@@ -122,192 +122,234 @@ void Program::returnFromCall()
     m_next = frame.returnTo;
 }
 
+int Program::oCondition(const char* what)
+{
+    if (m_block.oArguments.size() != 1) {
+        oError("o" + m_block.oLabel + " " + what + " needs one [condition]");
+        return -1;
+    }
+    return m_block.oArguments[0] != 0 ? 1 : 0;
+}
+
+Program::Flow Program::skipped(bool found) { return found ? Flow::Next : Flow::Stop; }
+
 Program::Flow Program::oWord()
 {
-    const std::string& label = m_block.oLabel;
-    const auto& args = m_block.oArguments;
-    const auto condition = [&](const char* what) -> int {
-        if (args.size() != 1) {
-            oError(std::string("o") + label + " " + what + " needs one [condition]");
-            return -1;
-        }
-        return args[0] != 0 ? 1 : 0;
-    };
-    const Position here = m_next;  // the line after this one
     if (m_control.size() >= kMaxControlDepth) {
         oError("control blocks nested too deeply");
         m_fatal = true;
         return Flow::Stop;
     }
     switch (m_block.oKeyword) {
-    case OKeyword::Sub: {
-        m_subroutines.insert_or_assign(label, here);
-        if (!skipTo(label, {OKeyword::EndSub}, true))
-            return Flow::Stop;
-        return Flow::Next;
-    }
+    case OKeyword::Sub:
+        m_subroutines.insert_or_assign(m_block.oLabel, m_next);
+        return skipped(skipTo(m_block.oLabel, {OKeyword::EndSub}, true));
     case OKeyword::EndSub:
     case OKeyword::Return:
-        if (m_calls.empty()) {
-            oError("o" + label + (m_block.oKeyword == OKeyword::Return ? " return" : " endsub") +
-                   " outside a subroutine call");
-            return Flow::Next;
-        }
-        if (!args.empty())
-            m_parameters.setNamed("_value", args[0]);
-        returnFromCall();
-        return Flow::Next;
-    case OKeyword::Call: {
-        Position body;
-        if (!findSubroutine(label, body)) {
-            oError("subroutine o" + label + " is not defined");
-            return Flow::Next;
-        }
-        if (m_calls.size() >= kMaxCallDepth) {
-            oError("subroutine calls nested more than 100 deep (endless recursion?)");
-            m_fatal = true;
-            return Flow::Stop;
-        }
-        m_machine.announce(m_lineNumber, m_current.file);
-        m_calls.push_back(CallFrame{here, static_cast<int>(m_control.size())});
-        m_parameters.pushFrame(args.data(), static_cast<int>(std::min<std::size_t>(args.size(), kCallArguments)));
-        m_next = body;
-        return Flow::Next;
-    }
+        return oReturn();
+    case OKeyword::Call:
+        return oCall();
     case OKeyword::Do:
-        m_control.push_back(ControlFrame{OKeyword::Do, label, here, 0, false});
+        m_control.push_back(ControlFrame{OKeyword::Do, m_block.oLabel, m_next, 0, false});
         return Flow::Next;
-    case OKeyword::While: {
-        const int c = condition("while");
-        if (c < 0)
-            return Flow::Next;
-        if (!m_control.empty() && m_control.back().kind == OKeyword::Do && m_control.back().label == label) {
-            if (c)
-                m_next = m_control.back().start;  // do ... while: back to the body
-            else
-                m_control.pop_back();
-            return Flow::Next;
-        }
-        // Coming back from endwhile, this line is the innermost loop's own start.
-        const bool again = !m_control.empty() && m_control.back().kind == OKeyword::While &&
-                           m_control.back().label == label && m_control.back().start.line == m_current.line &&
-                           m_control.back().start.file == m_current.file;
-        if (c) {
-            if (!again)
-                m_control.push_back(ControlFrame{OKeyword::While, label, m_current, 0, false});
-            return Flow::Next;
-        }
-        if (again)
-            m_control.pop_back();
-        return skipTo(label, {OKeyword::EndWhile}, true) ? Flow::Next : Flow::Stop;
-    }
-    case OKeyword::EndWhile: {
-        ControlFrame* f = innermost(label, {OKeyword::While});
-        if (!f) {
-            oError("o" + label + " endwhile without while");
-            return Flow::Next;
-        }
-        m_next = f->start;
-        return Flow::Next;
-    }
-    case OKeyword::Repeat: {
-        if (args.size() != 1 || !(args[0] < kArgumentLimit)) {
-            oError("o" + label + " repeat needs one [count]");
-            return Flow::Next;
-        }
-        const long long count = args[0] > 0 ? static_cast<long long>(args[0]) : 0;
-        if (count <= 0)
-            return skipTo(label, {OKeyword::EndRepeat}, true) ? Flow::Next : Flow::Stop;
-        m_control.push_back(ControlFrame{OKeyword::Repeat, label, here, count, false});
-        return Flow::Next;
-    }
-    case OKeyword::EndRepeat: {
-        ControlFrame* f = innermost(label, {OKeyword::Repeat});
-        if (!f) {
-            oError("o" + label + " endrepeat without repeat");
-            return Flow::Next;
-        }
-        if (--f->remaining > 0)
-            m_next = f->start;
-        else
-            m_control.pop_back();
-        return Flow::Next;
-    }
-    case OKeyword::If: {
-        const int c = condition("if");
-        if (c < 0)
-            return Flow::Next;
-        m_control.push_back(ControlFrame{OKeyword::If, label, here, 0, c == 1});
-        if (c)
-            return Flow::Next;
-        return skipTo(label, {OKeyword::ElseIf, OKeyword::Else, OKeyword::EndIf}, false) ? Flow::Next : Flow::Stop;
-    }
+    case OKeyword::While:
+        return oWhile();
+    case OKeyword::EndWhile:
+        return oEndWhile();
+    case OKeyword::Repeat:
+        return oRepeat();
+    case OKeyword::EndRepeat:
+        return oEndRepeat();
+    case OKeyword::If:
+        return oIf();
     case OKeyword::ElseIf:
-    case OKeyword::Else: {
-        ControlFrame* f = innermost(label, {OKeyword::If});
-        if (!f) {
-            oError("o" + label + (m_block.oKeyword == OKeyword::Else ? " else" : " elseif") + " without if");
-            return Flow::Next;
-        }
-        if (f->taken) {
-            m_control.pop_back();
-            return skipTo(label, {OKeyword::EndIf}, true) ? Flow::Next : Flow::Stop;
-        }
-        if (m_block.oKeyword == OKeyword::Else) {
-            f->taken = true;
-            return Flow::Next;
-        }
-        const int c = condition("elseif");
-        if (c < 0)
-            return Flow::Next;
-        if (c) {
-            f->taken = true;
-            return Flow::Next;
-        }
-        return skipTo(label, {OKeyword::ElseIf, OKeyword::Else, OKeyword::EndIf}, false) ? Flow::Next : Flow::Stop;
-    }
+    case OKeyword::Else:
+        return oElse();
     case OKeyword::EndIf:
-        if (!innermost(label, {OKeyword::If}))
-            oError("o" + label + " endif without if");
+        if (!innermost(m_block.oLabel, {OKeyword::If}))
+            oError("o" + m_block.oLabel + " endif without if");
         else
             m_control.pop_back();
         return Flow::Next;
     case OKeyword::Break:
-    case OKeyword::Continue: {
-        ControlFrame* f = innermost(label, {OKeyword::While, OKeyword::Do, OKeyword::Repeat});
-        if (!f) {
-            oError("o" + label + (m_block.oKeyword == OKeyword::Break ? " break" : " continue") + " outside a loop");
-            return Flow::Next;
-        }
-        const OKeyword kind = f->kind;
-        if (m_block.oKeyword == OKeyword::Continue) {
-            if (kind == OKeyword::While) {
-                m_next = f->start;
-                return Flow::Next;
-            }
-            if (kind == OKeyword::Repeat) {
-                if (--f->remaining > 0) {
-                    m_next = f->start;
-                    return Flow::Next;
-                }
-                m_control.pop_back();
-                return skipTo(label, {OKeyword::EndRepeat}, true) ? Flow::Next : Flow::Stop;
-            }
-            return skipTo(label, {OKeyword::While}, false) ? Flow::Next : Flow::Stop;  // do: test the condition
-        }
-        m_control.pop_back();
-        return skipTo(label,
-                      {kind == OKeyword::While    ? OKeyword::EndWhile
-                       : kind == OKeyword::Repeat ? OKeyword::EndRepeat
-                                                  : OKeyword::While},
-                      true)
-                   ? Flow::Next
-                   : Flow::Stop;
-    }
+    case OKeyword::Continue:
+        return oBreakOrContinue();
     case OKeyword::None:
         break;
     }
     return Flow::Next;
+}
+
+Program::Flow Program::oReturn()
+{
+    if (m_calls.empty()) {
+        oError("o" + m_block.oLabel + (m_block.oKeyword == OKeyword::Return ? " return" : " endsub") +
+               " outside a subroutine call");
+        return Flow::Next;
+    }
+    if (!m_block.oArguments.empty())
+        m_parameters.setNamed("_value", m_block.oArguments[0]);
+    returnFromCall();
+    return Flow::Next;
+}
+
+Program::Flow Program::oCall()
+{
+    const std::string& label = m_block.oLabel;
+    const auto& args = m_block.oArguments;
+    Position body;
+    if (!findSubroutine(label, body)) {
+        oError("subroutine o" + label + " is not defined");
+        return Flow::Next;
+    }
+    if (m_calls.size() >= kMaxCallDepth) {
+        oError("subroutine calls nested more than 100 deep (endless recursion?)");
+        m_fatal = true;
+        return Flow::Stop;
+    }
+    m_machine.announce(m_lineNumber, m_current.file);
+    m_calls.push_back(CallFrame{m_next, static_cast<int>(m_control.size())});
+    m_parameters.pushFrame(args.data(), static_cast<int>(std::min<std::size_t>(args.size(), kCallArguments)));
+    m_next = body;
+    return Flow::Next;
+}
+
+// `while` opens a loop, or closes a do ... while.
+Program::Flow Program::oWhile()
+{
+    const std::string& label = m_block.oLabel;
+    const int c = oCondition("while");
+    if (c < 0)
+        return Flow::Next;
+    if (!m_control.empty() && m_control.back().kind == OKeyword::Do && m_control.back().label == label) {
+        if (c)
+            m_next = m_control.back().start;  // do ... while: back to the body
+        else
+            m_control.pop_back();
+        return Flow::Next;
+    }
+    // Coming back from endwhile, this line is the innermost loop's own start.
+    const bool again = !m_control.empty() && m_control.back().kind == OKeyword::While &&
+                       m_control.back().label == label && m_control.back().start.line == m_current.line &&
+                       m_control.back().start.file == m_current.file;
+    if (c) {
+        if (!again)
+            m_control.push_back(ControlFrame{OKeyword::While, label, m_current, 0, false});
+        return Flow::Next;
+    }
+    if (again)
+        m_control.pop_back();
+    return skipped(skipTo(label, {OKeyword::EndWhile}, true));
+}
+
+Program::Flow Program::oEndWhile()
+{
+    ControlFrame* f = innermost(m_block.oLabel, {OKeyword::While});
+    if (!f) {
+        oError("o" + m_block.oLabel + " endwhile without while");
+        return Flow::Next;
+    }
+    m_next = f->start;
+    return Flow::Next;
+}
+
+Program::Flow Program::oRepeat()
+{
+    const std::string& label = m_block.oLabel;
+    const auto& args = m_block.oArguments;
+    if (args.size() != 1 || !(args[0] < kArgumentLimit)) {
+        oError("o" + label + " repeat needs one [count]");
+        return Flow::Next;
+    }
+    const long long count = args[0] > 0 ? static_cast<long long>(args[0]) : 0;
+    if (count <= 0)
+        return skipped(skipTo(label, {OKeyword::EndRepeat}, true));
+    m_control.push_back(ControlFrame{OKeyword::Repeat, label, m_next, count, false});
+    return Flow::Next;
+}
+
+Program::Flow Program::oEndRepeat()
+{
+    ControlFrame* f = innermost(m_block.oLabel, {OKeyword::Repeat});
+    if (!f) {
+        oError("o" + m_block.oLabel + " endrepeat without repeat");
+        return Flow::Next;
+    }
+    if (--f->remaining > 0)
+        m_next = f->start;
+    else
+        m_control.pop_back();
+    return Flow::Next;
+}
+
+Program::Flow Program::oIf()
+{
+    const std::string& label = m_block.oLabel;
+    const int c = oCondition("if");
+    if (c < 0)
+        return Flow::Next;
+    m_control.push_back(ControlFrame{OKeyword::If, label, m_next, 0, c == 1});
+    if (c)
+        return Flow::Next;
+    return skipped(skipTo(label, {OKeyword::ElseIf, OKeyword::Else, OKeyword::EndIf}, false));
+}
+
+// elseif and else: skip to endif after a branch was taken, else test (elseif) or take (else).
+Program::Flow Program::oElse()
+{
+    const std::string& label = m_block.oLabel;
+    ControlFrame* f = innermost(label, {OKeyword::If});
+    if (!f) {
+        oError("o" + label + (m_block.oKeyword == OKeyword::Else ? " else" : " elseif") + " without if");
+        return Flow::Next;
+    }
+    if (f->taken) {
+        m_control.pop_back();
+        return skipped(skipTo(label, {OKeyword::EndIf}, true));
+    }
+    if (m_block.oKeyword == OKeyword::Else) {
+        f->taken = true;
+        return Flow::Next;
+    }
+    const int c = oCondition("elseif");
+    if (c < 0)
+        return Flow::Next;
+    if (c) {
+        f->taken = true;
+        return Flow::Next;
+    }
+    return skipped(skipTo(label, {OKeyword::ElseIf, OKeyword::Else, OKeyword::EndIf}, false));
+}
+
+Program::Flow Program::oBreakOrContinue()
+{
+    const std::string& label = m_block.oLabel;
+    ControlFrame* f = innermost(label, {OKeyword::While, OKeyword::Do, OKeyword::Repeat});
+    if (!f) {
+        oError("o" + label + (m_block.oKeyword == OKeyword::Break ? " break" : " continue") + " outside a loop");
+        return Flow::Next;
+    }
+    const OKeyword kind = f->kind;
+    if (m_block.oKeyword == OKeyword::Continue) {
+        if (kind == OKeyword::While) {
+            m_next = f->start;
+            return Flow::Next;
+        }
+        if (kind == OKeyword::Repeat) {
+            if (--f->remaining > 0) {
+                m_next = f->start;
+                return Flow::Next;
+            }
+            m_control.pop_back();
+            return skipped(skipTo(label, {OKeyword::EndRepeat}, true));
+        }
+        return skipped(skipTo(label, {OKeyword::While}, false));  // do: test the condition
+    }
+    m_control.pop_back();
+    const OKeyword end = kind == OKeyword::While    ? OKeyword::EndWhile
+                         : kind == OKeyword::Repeat ? OKeyword::EndRepeat
+                                                    : OKeyword::While;
+    return skipped(skipTo(label, {end}, true));
 }
 
 }  // namespace camwb::nc::iso

@@ -10,6 +10,17 @@
 //   through G80 (Fanuc), O program numbers, "..." elisions, unknown G/M codes, A/B/C/U/V/W and
 //   M128 (five-axis: traced once the machine model exists).
 // - G53, G28/G30, G10/G92 and G96 are accepted with a warning and do not move the trace.
+// - Cutter compensation as LinuxCNC 2.9's interpreter makes it (interp_convert.cc,
+//   convert_straight_comp1/2 and convert_arc_comp1/2, checked against rs274 in tests/external):
+//   the radius of G41/G42 D<tool> from the tool table (without D: the tool in the spindle), of
+//   G41.1/G42.1 D<diameter>; the entry move ends r beside its end point square to itself, an
+//   entry arc is LinuxCNC's own; outside corners get an arc about the corner (a rapid goes
+//   straight), inside corners are trimmed to the offsets' intersection; turns under 0.05 rad
+//   (TOLERANCE_CONCAVE_CORNER) are tangent; at a reversal next to an arc the tool runs outside of,
+//   the tool stays on the arc's side ("h" and "m" shapes); after G40 the next move goes straight
+//   from the compensated point. An entry no longer than r, a move in Z alone as the entry and a
+//   gouge are errors, as rs274 refuses them; a tool missing from the table is a warning and the
+//   programmed path (rs274 stops).
 #include "nc/detail/Dialects.h"
 #include "nc/iso/IsoProgram.h"
 
@@ -21,12 +32,13 @@ Program::Program(std::string_view text, const InterpretOptions& options, toolpat
                  InterpretResult& result) :
     m_texts{text},
     m_options(options),
-    m_sink(sink),
+    m_sink(m_compensation),
     m_result(result),
     m_reporter(result.diagnostics, result.diagnosticsDropped,
                options.fileName.empty() ? std::string("<input>") : options.fileName, options.maxDiagnostics),
+    m_compensation(sink, CompensationRules::linuxCnc(), result, options.maxDiagnostics),
     m_scanner(m_parameters, m_reporter),
-    m_machine(sink, m_reporter, m_parameters, options.arcRadiusToleranceMm)
+    m_machine(m_compensation, options.toolTable, m_reporter, m_parameters, options.arcRadiusToleranceMm)
 {
 }
 
@@ -119,6 +131,8 @@ void Program::run()
         applyAssignments();
         if (m_machine.execute(m_block, m_lineNumber, m_current.file) == BlockOutcome::ProgramEnd)
             m_programEnd = true;
+        if (m_options.onBlock)
+            m_machine.reportModal(m_options.onBlock);
     }
     if (!m_fatal && !m_programEnd)
         m_reporter.warning(m_lineNumber, 0, "the program ends without M2, M30 or a closing '%'");

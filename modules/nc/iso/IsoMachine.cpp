@@ -25,7 +25,7 @@ constexpr GroupOf kGroups[] = {
     {540, 12}, {550, 12}, {560, 12}, {570, 12}, {580, 12}, {590, 12}, {591, 12}, {592, 12}, {593, 12},
     {610, 13}, {611, 13}, {640, 13}, {960, 14}, {970, 14}, {70, 15},  {80, 15},  {50, -2},  {51, -2},
     {330, -2}, {331, -2}, {381, -2}, {382, -2}, {383, -2}, {384, -2}, {385, -2}, {740, -2}, {760, -2},
-    {870, -2}, {880, -2}, {171, -2}, {181, -2}, {191, -2}, {411, -2}, {421, -2}, {700, -3}, {710, -3},
+    {870, -2}, {880, -2}, {171, -2}, {181, -2}, {191, -2}, {411, 7},  {421, 7},  {700, -3}, {710, -3},
 };
 
 constexpr auto kGroupTable = [] {
@@ -216,122 +216,235 @@ BlockOutcome Machine::execute(const Block& block, int line, int fileIndex)
     Groups groups;
     if (!classify(block, groups))
         return BlockOutcome::Continue;
-    const int* g = groups.g;
+    // LinuxCNC's order of execution; a step that finds an error reports it and ends the block.
+    applyFeedMode(groups);
+    applyUnits(groups);  // before F: the block's F is in the block's units
+    if (!applyFeedRate(block) || !applySpindleSpeed(block, groups) || !applyToolSelection(block) ||
+        !applyToolChange(block, groups))
+        return BlockOutcome::Continue;
+    applySpindle(groups);
+    applyCoolant(groups);
+    if (!applyDwell(block, groups))
+        return BlockOutcome::Continue;
+    applyPlane(groups);
+    applyCompensation(block, groups);
+    applyWorkOffset(groups);
+    applyDistanceModes(groups);
+    applyRetractMode(groups);
+    if (!applyMotion(block, groups))
+        return BlockOutcome::Continue;
+    return applyStop(groups);
+}
 
-    // Feed mode, then units (before F: the block's F is in the block's units).
-    if (g[5] != -1) {
-        const FeedMode mode = g[5] == 930   ? FeedMode::InverseTime
-                              : g[5] == 950 ? FeedMode::PerRevolution
-                                            : FeedMode::PerMinute;
-        if (mode != m_state.feedMode) {
-            m_state.feedMode = mode;
-            source();
-            m_sink.feedMode(FeedModeChange{mode});
-        }
-        m_state.feed = 0;  // LinuxCNC wants a new F after a feed mode change
-    }
-    if (g[6] != -1)
-        m_state.unit = g[6] == 200 ? 25.4 : 1.0;
-    if (block.has('F')) {
-        const double f = block.get('F');
-        if (f < 0) {
-            error(block, 'F', "negative feed rate");
-            return BlockOutcome::Continue;
-        }
-        m_state.feed = m_state.feedMode == FeedMode::InverseTime ? f : f * m_state.unit;
-    }
-    if (block.has('S')) {
-        const double s = block.get('S');
-        if (s < 0) {
-            error(block, 'S', "negative spindle speed");
-            return BlockOutcome::Continue;
-        }
-        if (m_state.spindle != 0 && groups.spindle == -1)
-            setSpindle(s, m_state.spindle);
-        m_state.rpm = s;
-    }
-    if (block.has('T')) {
-        const double t = block.get('T');
-        if (t < 0 || t != std::floor(t) || t > 1e9) {
-            error(block, 'T', "tool number must be a whole number >= 0");
-            return BlockOutcome::Continue;
-        }
-        m_state.selectedTool = static_cast<int>(t);
-    }
-    if (groups.toolChange == 6 || groups.toolChange == 61) {
-        if (groups.toolChange == 61) {
-            if (!block.has('Q')) {
-                m_reporter.error(m_line, 0, "M61 needs Q with the tool number");
-                return BlockOutcome::Continue;
-            }
-            m_state.selectedTool = static_cast<int>(std::max(0.0, block.get('Q')));
-        } else if (m_state.spindle != 0) {
-            setSpindle(0, 0);  // M6 stops the spindle (LinuxCNC's manual tool change)
-        }
-        m_state.tool = m_state.selectedTool;
-        Tool tool;
-        tool.number = m_state.tool;
+void Machine::applyFeedMode(const Groups& groups)
+{
+    const int mode5 = groups.g[5];
+    if (mode5 == -1)
+        return;
+    const FeedMode mode = mode5 == 930   ? FeedMode::InverseTime
+                          : mode5 == 950 ? FeedMode::PerRevolution
+                                         : FeedMode::PerMinute;
+    if (mode != m_state.feedMode) {
+        m_state.feedMode = mode;
         source();
-        m_sink.toolChange(ToolChange{tool});
+        m_sink.feedMode(FeedModeChange{mode});
     }
+    m_state.feed = 0;  // LinuxCNC wants a new F after a feed mode change
+}
+
+void Machine::applyUnits(const Groups& groups)
+{
+    if (groups.g[6] != -1)
+        m_state.unit = groups.g[6] == 200 ? 25.4 : 1.0;
+}
+
+bool Machine::applyFeedRate(const Block& block)
+{
+    if (!block.has('F'))
+        return true;
+    const double f = block.get('F');
+    if (f < 0) {
+        error(block, 'F', "negative feed rate");
+        return false;
+    }
+    m_state.feed = m_state.feedMode == FeedMode::InverseTime ? f : f * m_state.unit;
+    return true;
+}
+
+bool Machine::applySpindleSpeed(const Block& block, const Groups& groups)
+{
+    if (!block.has('S'))
+        return true;
+    const double s = block.get('S');
+    if (s < 0) {
+        error(block, 'S', "negative spindle speed");
+        return false;
+    }
+    if (m_state.spindle != 0 && groups.spindle == -1)
+        setSpindle(s, m_state.spindle);
+    m_state.rpm = s;
+    return true;
+}
+
+bool Machine::applyToolSelection(const Block& block)
+{
+    if (!block.has('T'))
+        return true;
+    const double t = block.get('T');
+    if (t < 0 || t != std::floor(t) || t > 1e9) {
+        error(block, 'T', "tool number must be a whole number >= 0");
+        return false;
+    }
+    m_state.selectedTool = static_cast<int>(t);
+    return true;
+}
+
+bool Machine::applyToolChange(const Block& block, const Groups& groups)
+{
+    if (groups.toolChange != 6 && groups.toolChange != 61)
+        return true;
+    if (groups.toolChange == 61) {
+        if (!block.has('Q')) {
+            m_reporter.error(m_line, 0, "M61 needs Q with the tool number");
+            return false;
+        }
+        m_state.selectedTool = static_cast<int>(std::max(0.0, block.get('Q')));
+    } else if (m_state.spindle != 0) {
+        setSpindle(0, 0);  // M6 stops the spindle (LinuxCNC's manual tool change)
+    }
+    m_state.tool = m_state.selectedTool;
+    Tool tool;
+    tool.number = m_state.tool;
+    source();
+    m_sink.toolChange(ToolChange{tool});
+    return true;
+}
+
+void Machine::applySpindle(const Groups& groups)
+{
     if (groups.spindle == 3 || groups.spindle == 4)
         setSpindle(m_state.rpm, groups.spindle == 3 ? 1 : -1);
     else if (groups.spindle == 5)
         setSpindle(0, 0);
-    if (groups.coolantCount > 0) {
-        bool mist = m_state.mist, flood = m_state.flood;
-        for (int k = 0; k < groups.coolantCount; ++k) {
-            if (groups.coolant[k] == 9)
-                mist = flood = false;
-            else if (groups.coolant[k] == 7)
-                mist = true;
-            else
-                flood = true;
-        }
-        setCoolant(mist, flood);
-    }
-    if (g[0] == 40) {
-        if (!block.has('P') || block.get('P') < 0) {
-            m_reporter.error(m_line, groups.gColumn[0], "G4 needs P with the dwell in seconds (P >= 0)");
-            return BlockOutcome::Continue;
-        }
-        source();
-        m_sink.dwell(Dwell{block.get('P')});
-    }
-    if (g[2] != -1)
-        m_state.plane = g[2];
-    if (g[7] != -1) {
-        const CutterCompSide side = g[7] == 410   ? CutterCompSide::Left
-                                    : g[7] == 420 ? CutterCompSide::Right
-                                                  : CutterCompSide::Off;
-        if (side != CutterCompSide::Off && m_state.comp != CutterCompSide::Off) {
-            m_reporter.error(m_line, groups.gColumn[7], "cutter compensation is already on: G40 first");
-        } else if (side != m_state.comp) {
-            m_state.comp = side;
-            source();
-            m_sink.cutterComp(CutterComp{side});
-        }
-    }
-    if (g[12] != -1) {
-        const int index = g[12] >= 591 ? 6 + (g[12] - 590) : (g[12] - 540) / 10 + 1;
-        if (m_state.comp != CutterCompSide::Off) {
-            m_reporter.error(m_line, groups.gColumn[12], "work offset change with cutter compensation on");
-        } else if (index != m_state.workOffset) {
-            m_state.workOffset = index;
-            source();
-            m_sink.workOffset(WorkOffset{index});
-        }
-    }
-    if (g[3] != -1)
-        m_state.absolute = g[3] == 900;
-    if (g[4] != -1)
-        m_state.arcAbsolute = g[4] == 901;
-    if (g[10] != -1)
-        m_state.retractToR = g[10] == 990;
-    if (g[14] == 960)
-        m_reporter.warning(m_line, groups.gColumn[14], "G96 constant surface speed is traced as a fixed speed");
+}
 
-    // Group 0 codes that take the axis words, then motion.
+void Machine::applyCoolant(const Groups& groups)
+{
+    if (groups.coolantCount == 0)
+        return;
+    bool mist = m_state.mist, flood = m_state.flood;
+    for (int k = 0; k < groups.coolantCount; ++k) {
+        if (groups.coolant[k] == 9)
+            mist = flood = false;
+        else if (groups.coolant[k] == 7)
+            mist = true;
+        else
+            flood = true;
+    }
+    setCoolant(mist, flood);
+}
+
+bool Machine::applyDwell(const Block& block, const Groups& groups)
+{
+    if (groups.g[0] != 40)
+        return true;
+    if (!block.has('P') || block.get('P') < 0) {
+        m_reporter.error(m_line, groups.gColumn[0], "G4 needs P with the dwell in seconds (P >= 0)");
+        return false;
+    }
+    source();
+    m_sink.dwell(Dwell{block.get('P')});
+    return true;
+}
+
+void Machine::applyPlane(const Groups& groups)
+{
+    if (groups.g[2] != -1)
+        m_state.plane = groups.g[2];
+}
+
+void Machine::applyCompensation(const Block& block, const Groups& groups)
+{
+    const int code = groups.g[7];
+    if (code == -1)
+        return;
+    const CutterCompSide side = code == 410 || code == 411   ? CutterCompSide::Left
+                                : code == 420 || code == 421 ? CutterCompSide::Right
+                                                             : CutterCompSide::Off;
+    if (side != CutterCompSide::Off && m_state.comp != CutterCompSide::Off) {
+        m_reporter.error(m_line, groups.gColumn[7], "cutter compensation is already on: G40 first");
+    } else if (side != m_state.comp) {
+        if (side != CutterCompSide::Off)
+            setCompensationRadius(block, code);
+        m_state.comp = side;
+        m_state.compCode = code;
+        source();
+        m_sink.cutterComp(CutterComp{side});
+    }
+}
+
+// LinuxCNC: G41.1/G42.1 D<diameter>; G41/G42 D<tool> take that tool's diameter from the tool
+// table, without D the diameter of the tool in the spindle.
+void Machine::setCompensationRadius(const Block& block, int code)
+{
+    if (code == 411 || code == 421) {
+        if (!block.has('D') || block.get('D') < 0) {
+            error(block, 'D', gName(code) + " needs D with the tool diameter (D >= 0)");
+            m_compensation.setRadius(std::nullopt, "the tool (no D)");
+            return;
+        }
+        m_compensation.setRadius(block.get('D') * m_state.unit / 2, gName(code) + " D");
+        return;
+    }
+    int tool = m_state.tool;
+    if (block.has('D')) {
+        const double d = block.get('D');
+        if (d < 0 || d != std::floor(d) || d > 1e9) {
+            error(block, 'D', gName(code) + " needs D to be a tool number (a whole number >= 0)");
+            m_compensation.setRadius(std::nullopt, "the tool");
+            return;
+        }
+        tool = static_cast<int>(d);
+    }
+    const std::string what = "tool " + std::to_string(tool);
+    m_compensation.setRadius(m_toolTable ? m_toolTable->radiusOf(tool) : std::nullopt, what);
+}
+
+void Machine::applyWorkOffset(const Groups& groups)
+{
+    const int code = groups.g[12];
+    if (code == -1)
+        return;
+    const int index = code >= 591 ? 6 + (code - 590) : (code - 540) / 10 + 1;
+    if (m_state.comp != CutterCompSide::Off) {
+        m_reporter.error(m_line, groups.gColumn[12], "work offset change with cutter compensation on");
+    } else if (index != m_state.workOffset) {
+        m_state.workOffset = index;
+        source();
+        m_sink.workOffset(WorkOffset{index});
+    }
+}
+
+void Machine::applyDistanceModes(const Groups& groups)
+{
+    if (groups.g[3] != -1)
+        m_state.absolute = groups.g[3] == 900;
+    if (groups.g[4] != -1)
+        m_state.arcAbsolute = groups.g[4] == 901;
+}
+
+void Machine::applyRetractMode(const Groups& groups)
+{
+    if (groups.g[10] != -1)
+        m_state.retractToR = groups.g[10] == 990;
+    if (groups.g[14] == 960)
+        m_reporter.warning(m_line, groups.gColumn[14], "G96 constant surface speed is traced as a fixed speed");
+}
+
+// Group 0 codes that take the axis words (G28/G30, G10/G92...), then the motion mode.
+bool Machine::applyMotion(const Block& block, const Groups& groups)
+{
+    const int* g = groups.g;
     const bool axisWords = (block.present & ((1u << ('X' - 'A')) | (1u << ('Y' - 'A')) | (1u << ('Z' - 'A')) |
                                              (1u << ('A' - 'A')) | (1u << ('B' - 'A')) | (1u << ('C' - 'A')) |
                                              (1u << ('U' - 'A')) | (1u << ('V' - 'A')) | (1u << ('W' - 'A')))) != 0;
@@ -347,7 +460,7 @@ BlockOutcome Machine::execute(const Block& block, int line, int fileIndex)
     }
     if (g[1] == 800 && axisWords && !axesTaken) {
         m_reporter.error(m_line, groups.gColumn[1], "axis words with G80 and no other motion");
-        return BlockOutcome::Continue;
+        return false;
     }
     if (g[1] != -1)
         m_state.motion = g[1];
@@ -360,7 +473,7 @@ BlockOutcome Machine::execute(const Block& block, int line, int fileIndex)
         if (mode == 800) {
             if (m_state.lastMotion < 0) {
                 m_reporter.error(m_line, 0, "axis words without a motion mode (G80 is active): add G0, G1, G2 or G3");
-                return BlockOutcome::Continue;
+                return false;
             }
             // Fanuc keeps G0/G1 through G80 (cycles are a group of their own there); LinuxCNC refuses.
             mode = m_state.lastMotion;
@@ -379,12 +492,16 @@ BlockOutcome Machine::execute(const Block& block, int line, int fileIndex)
         motion(block, mode, g[0] == 530);
     } else if (g[1] != -1 && g[1] != 0 && g[1] != 10 && g[1] != 20 && g[1] != 30 && g[1] != 800 && !axesTaken) {
         m_reporter.error(m_line, groups.gColumn[1], gName(g[1]) + " without X, Y or Z: no hole to drill");
-        return BlockOutcome::Continue;
+        return false;
     } else if ((m_state.motion == 20 || m_state.motion == 30) && !axesTaken &&
                (block.has('I') || block.has('J') || block.has('K') || block.has('R'))) {
         motion(block, m_state.motion, false);  // a full circle needs no axis word
     }
+    return true;
+}
 
+BlockOutcome Machine::applyStop(const Groups& groups)
+{
     if (groups.stop == 0 || groups.stop == 1 || groups.stop == 60) {
         source();
         m_sink.programStop(ProgramStop{groups.stop == 1});
@@ -393,6 +510,33 @@ BlockOutcome Machine::execute(const Block& block, int line, int fileIndex)
         return BlockOutcome::ProgramEnd;
     }
     return BlockOutcome::Continue;
+}
+
+void Machine::reportModal(const BlockObserver& observer) const
+{
+    static const char* const kOffsets[] = {"G54", "G55", "G56", "G57", "G58", "G59", "G59.1", "G59.2", "G59.3"};
+    BlockModal m;
+    m.file = m_file;
+    m.line = m_line;
+    m.distance = m_state.absolute ? BlockModal::Distance::Absolute : BlockModal::Distance::Incremental;
+    m.distanceWord = m_state.absolute ? "G90" : "G91";
+    m.inch = m_state.unit != 1.0;
+    m.unitsWord = m.inch ? "G20" : "G21";
+    m.plane = m_state.plane / 10;
+    m.planeWord = m_state.plane == 180 ? "G18" : m_state.plane == 190 ? "G19" : "G17";
+    m.compensation = m_state.comp;
+    m.compensationWord = m_state.comp == CutterCompSide::Off    ? "G40"
+                         : m_state.compCode == 411              ? "G41.1"
+                         : m_state.compCode == 421              ? "G42.1"
+                         : m_state.comp == CutterCompSide::Left ? "G41"
+                                                                : "G42";
+    m.feedMode = m_state.feedMode;
+    m.feedModeWord = m_state.feedMode == FeedMode::InverseTime     ? "G93"
+                     : m_state.feedMode == FeedMode::PerRevolution ? "G95"
+                                                                   : "G94";
+    if (m_state.workOffset >= 1 && m_state.workOffset <= 9)
+        m.workOffset = kOffsets[m_state.workOffset - 1];
+    observer(m);
 }
 
 void Machine::programEnd()

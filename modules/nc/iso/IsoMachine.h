@@ -5,6 +5,9 @@
 // offset's frame, each after setSource() with the block's line.
 #pragma once
 
+#include "nc/BlockModal.h"
+#include "nc/CutterCompensation.h"
+#include "nc/ToolTable.h"
 #include "nc/iso/IsoBlock.h"
 #include "nc/iso/IsoParameters.h"
 #include "nc/iso/IsoReporter.h"
@@ -21,6 +24,7 @@ struct ModalState {
     toolpath::FeedMode feedMode = toolpath::FeedMode::PerMinute;
     double unit = 1.0;  // mm per program unit: 25.4 under G20
     toolpath::CutterCompSide comp = toolpath::CutterCompSide::Off;
+    int compCode = 400;  // as programmed: 400, 410, 411, 420, 421
     int workOffset = 1;
     bool retractToR = false;  // G99 (LinuxCNC starts in G98)
     double feed = 0;          // mm/min, mm/rev, or 1/min under G93
@@ -43,8 +47,12 @@ enum class BlockOutcome { Continue, ProgramEnd };
 
 class Machine {
 public:
-    Machine(toolpath::MachineSink& sink, Reporter& reporter, const Parameters& parameters, double arcToleranceMm) :
+    // `sink` compensates the cutter radius (CutterCompensation.h); `toolTable` may be null.
+    Machine(CutterCompensation& sink, const ToolTable* toolTable, Reporter& reporter, const Parameters& parameters,
+            double arcToleranceMm) :
         m_sink(sink),
+        m_compensation(sink),
+        m_toolTable(toolTable),
         m_reporter(reporter),
         m_parameters(parameters),
         m_arcTolerance(arcToleranceMm)
@@ -56,6 +64,8 @@ public:
     // M2/M30 resets (also at the end of a file without them, as LinuxCNC's end of program does not).
     void programEnd();
     const ModalState& state() const { return m_state; }
+    // The state after the last executed block in the program's words (BlockModal.h).
+    void reportModal(const BlockObserver& observer) const;
     // Tells the sink which block is running without a record: the call line before a subroutine's
     // records, so a viewer links them to the exact call (Interpreter.h).
     void announce(int line, int fileIndex) { m_sink.setSource(toolpath::SourceRef{-1, -1, line, fileIndex}); }
@@ -68,6 +78,25 @@ private:
         int stopColumn = 0;
     };
     bool classify(const Block& block, Groups& groups);
+    // One step per modal group, in LinuxCNC's order of execution (execute() calls them); false:
+    // an error was reported and the rest of the block is left out.
+    void applyFeedMode(const Groups& groups);
+    void applyUnits(const Groups& groups);
+    bool applyFeedRate(const Block& block);
+    bool applySpindleSpeed(const Block& block, const Groups& groups);
+    bool applyToolSelection(const Block& block);
+    bool applyToolChange(const Block& block, const Groups& groups);
+    void applySpindle(const Groups& groups);
+    void applyCoolant(const Groups& groups);
+    bool applyDwell(const Block& block, const Groups& groups);
+    void applyPlane(const Groups& groups);
+    void applyCompensation(const Block& block, const Groups& groups);
+    void setCompensationRadius(const Block& block, int code);
+    void applyWorkOffset(const Groups& groups);
+    void applyDistanceModes(const Groups& groups);
+    void applyRetractMode(const Groups& groups);
+    bool applyMotion(const Block& block, const Groups& groups);
+    BlockOutcome applyStop(const Groups& groups);
     void source() { m_sink.setSource(toolpath::SourceRef{-1, -1, m_line, m_file}); }
     void setSpindle(double rpm, int direction);
     void setCoolant(bool mist, bool flood);
@@ -86,6 +115,8 @@ private:
     void error(const Block& block, char letter, std::string message);
 
     toolpath::MachineSink& m_sink;
+    CutterCompensation& m_compensation;
+    const ToolTable* m_toolTable;
     Reporter& m_reporter;
     const Parameters& m_parameters;
     double m_arcTolerance;

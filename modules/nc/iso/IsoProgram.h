@@ -5,6 +5,7 @@
 // limit (InterpretOptions::maxBlocks) counts executed and skipped lines, so no input runs forever.
 #pragma once
 
+#include "nc/CutterCompensation.h"
 #include "nc/Interpreter.h"
 #include "nc/iso/IsoBlock.h"
 #include "nc/iso/IsoMachine.h"
@@ -53,7 +54,18 @@ private:
     void applyAssignments();
 
     // IsoControlFlow.cpp
-    Flow oWord();
+    Flow oWord();  // dispatches to one of these by keyword
+    Flow oReturn();
+    Flow oCall();
+    Flow oWhile();
+    Flow oEndWhile();
+    Flow oRepeat();
+    Flow oEndRepeat();
+    Flow oIf();
+    Flow oElse();
+    Flow oBreakOrContinue();
+    int oCondition(const char* what);  // 1 true, 0 false, -1 missing (reported)
+    static Flow skipped(bool found);   // after skipTo: Stop when no end was found
     bool skipTo(const std::string& label, std::initializer_list<OKeyword> keywords, bool pastIt,
                 OKeyword* found = nullptr);
     bool findSubroutine(const std::string& label, Position& body);
@@ -66,9 +78,10 @@ private:
     std::vector<std::string_view> m_texts;  // [0] the program, then subroutine files as first called
     std::deque<std::string> m_loaded;       // the texts of subroutine files (stable addresses)
     const InterpretOptions& m_options;
-    toolpath::MachineSink& m_sink;
+    toolpath::MachineSink& m_sink;  // m_compensation, in front of the caller's sink
     InterpretResult& m_result;
     Reporter m_reporter;
+    CutterCompensation m_compensation;
     Parameters m_parameters;
     LineScanner m_scanner;
     Machine m_machine;

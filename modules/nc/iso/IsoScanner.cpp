@@ -189,6 +189,14 @@ bool LineScanner::readWord(char letter, Block& block)
                  status == NumberStatus::TooLong ? "number too long" : "missing value after " + std::string(1, letter));
             return false;
         }
+        if (m_p < m_end && *m_p == '.') {
+            // X1.2.3: LinuxCNC refuses the number ("bad number format"), so does the trace.
+            const char* stop = m_p;
+            while (stop < m_end && (isDigit(*stop) || *stop == '.'))
+                ++stop;
+            fail(start, "malformed number " + std::string(start, stop) + " after " + std::string(1, letter));
+            return false;
+        }
         if (negative)
             v = -v;
     } else {

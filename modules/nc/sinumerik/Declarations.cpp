@@ -6,15 +6,6 @@
 
 namespace camwb::nc::sinumerik {
 
-namespace {
-
-bool isAddressLetter(std::string_view u)
-{
-    return u.size() == 1 && std::string_view("XYZABCIJKFSTDGMNHLP").find(u[0]) != std::string_view::npos;
-}
-
-}  // namespace
-
 bool Parser::parseDef(Block& block)
 {
     ++m_pos;

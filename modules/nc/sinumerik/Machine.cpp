@@ -109,9 +109,44 @@ void Machine::runLoop()
             m_stopped = true;
             break;
         }
-        if (!step())
+        const bool goOn = step();
+        if (m_options.onBlock)
+            reportModal();
+        if (!goOn)
             break;
     }
+}
+
+void Machine::reportModal()
+{
+    BlockModal m;
+    m.file = m_currentFile;
+    m.line = m_currentLine;
+    m.distance = m_modal.incremental ? BlockModal::Distance::Incremental : BlockModal::Distance::Absolute;
+    m.distanceWord = m_modal.incremental ? "G91" : "G90";
+    m.inch = m_modal.inch;
+    m.unitsWord = m_modal.unitsCode == 70    ? "G70"
+                  : m_modal.unitsCode == 700 ? "G700"
+                  : m_modal.unitsCode == 710 ? "G710"
+                                             : "G71";
+    m.plane = m_modal.plane;
+    m.planeWord = m_modal.plane == 18 ? "G18" : m_modal.plane == 19 ? "G19" : "G17";
+    m.compensation = m_modal.comp;
+    m.compensationWord = m_modal.comp == toolpath::CutterCompSide::Left    ? "G41"
+                         : m_modal.comp == toolpath::CutterCompSide::Right ? "G42"
+                                                                           : "G40";
+    m.feedMode = m_modal.feedMode;
+    m.feedModeWord = m_modal.feedMode == toolpath::FeedMode::InverseTime     ? "G93"
+                     : m_modal.feedMode == toolpath::FeedMode::PerRevolution ? "G95"
+                                                                             : "G94";
+    const int offset = m_modal.workOffset;
+    if (offset == 0)
+        m.workOffset = "G500";
+    else if (offset >= 1 && offset <= 4)
+        m.workOffset = "G" + std::to_string(53 + offset);
+    else if (offset >= 5)
+        m.workOffset = "G" + std::to_string(500 + offset);
+    m_options.onBlock(m);
 }
 
 void Machine::setSource(int line) { m_sink.setSource(toolpath::SourceRef{-1, -1, line, m_currentFile}); }

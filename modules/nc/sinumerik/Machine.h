@@ -1,14 +1,17 @@
 // The SINUMERIK interpreter's run time: modal state, R parameters and DEF variables, the call
 // stack over parsed programs, and what it sends to the MachineSink. Split over Machine.cpp (run
-// loop, control flow, calls), Evaluate.cpp, Execute.cpp (ordinary blocks), Arcs.cpp, Cycles.cpp.
+// loop, control flow, calls), Evaluate.cpp, Execute*.cpp (ordinary blocks), Arcs.cpp, Cycles.cpp.
 #pragma once
 
+#include "nc/CutterCompensation.h"
 #include "nc/Interpreter.h"
+#include "nc/ToolTable.h"
 #include "nc/sinumerik/Program.h"
 #include "toolpath/ClRecords.h"
 #include "toolpath/MachineSink.h"
 
 #include <array>
+#include <map>
 #include <memory>
 #include <optional>
 #include <unordered_map>
@@ -24,6 +27,7 @@ struct Modal {
     bool incremental = false;
     bool inch = false;      // G70/G700
     bool inchFeed = false;  // G700: feeds in inch too
+    int unitsCode = 71;     // as programmed: 70, 700, 71, 710 (G71 until one is)
     toolpath::FeedMode feedMode = toolpath::FeedMode::PerMinute;
     bool constantSurfaceSpeed = false;  // G96
     bool diameter = false;              // DIAMON: X is a diameter
@@ -51,9 +55,11 @@ struct Frame {
 
 class Machine {
 public:
-    Machine(const InterpretOptions& options, toolpath::MachineSink& sink, InterpretResult& result) :
+    // `sink` compensates the cutter radius (CutterCompensation.h) in front of the caller's sink.
+    Machine(const InterpretOptions& options, CutterCompensation& sink, InterpretResult& result) :
         m_options(options),
         m_sink(sink),
+        m_compensation(sink),
         m_result(result)
     {
     }
@@ -67,9 +73,13 @@ public:
     }
 
 private:
+    std::optional<double> evalOperand(const Program& p, const Expr& e);
+    std::optional<double> evalFailure(const Program& p, const Expr& e, const std::string& message);
+
     // Machine.cpp
     void runLoop();
-    bool step();  // one block; false: the program ended or stopped
+    bool step();         // one block; false: the program ended or stopped
+    void reportModal();  // to options.onBlock
     void jumpBack(int target);
     bool callProgram(const std::string& name, const Block& block, const Program& caller, int repeats,
                      const std::vector<std::optional<double>>& args);
@@ -80,9 +90,50 @@ private:
     int jumpTarget(const Program& p, const std::string& label, int pc, GotoDir dir, bool& anyTarget) const;
     void addParseDiagnostics(const Program& p);
 
-    // Execute.cpp
+    // Execute.cpp, ExecuteWords.cpp: an ordinary block, its words read first, then applied group by
+    // group in the control's order.
+    struct ArcWords {
+        std::array<std::optional<double>, 3> centre;  // I J K in mm, with their mode
+        std::array<ValueMode, 3> centreMode{};
+        std::optional<double> cr, ar;
+        int turn = 0;
+        Pos pos;
+    };
+    struct BlockWords {
+        int line = 0;
+        int motion = -1, plane = 0, units = 0, absInc = 0, workOffset = -1, comp = -1, feedMode = -1, css = -1;
+        int corners = 0;  // G450 transition circle, G451 intersection
+        bool dwell = false, g53 = false, ret = false;
+        std::array<std::optional<double>, 6> axis{};
+        std::array<ValueMode, 6> axisMode{};
+        ArcWords arc;
+        std::optional<double> feed, speed, lims, tool, edge;
+        int m[8];
+        int mCount = 0;
+        const Word* callWord = nullptr;  // the block's cycle or subprogram call
+    };
     bool executeNormal(const Program& p, const Block& block);
-    bool applyG(const Program& p, const Word& w, int& motion, bool& dwellBlock);
+    bool readWords(const Program& p, const Block& block, BlockWords& w);
+    void readG(const Program& p, const Word& word, BlockWords& w);
+    bool readKeyword(const Program& p, const Block& block, const Word& word, BlockWords& w);
+    bool readPosition(const Program& p, const Word& word, std::optional<double>& value, ValueMode& mode);
+    void applyUnits(const BlockWords& w);
+    void applyDistanceMode(const BlockWords& w);
+    void applyPlane(const BlockWords& w);
+    void applyWorkOffset(const Program& p, const BlockWords& w);
+    void applyFeedMode(const BlockWords& w);
+    void applyFeedRate(const BlockWords& w);
+    void applyToolChange(const BlockWords& w);
+    void applySpindle(const Program& p, const BlockWords& w);
+    void applyCoolant(const BlockWords& w);
+    void applyToolOffset(const Program& p, const BlockWords& w);
+    void applyCompensation(const BlockWords& w);
+    void setCompensationRadius();
+    void applyDwell(const Program& p, const BlockWords& w);
+    bool applyMotion(const Program& p, const BlockWords& w);  // true: the tool moved
+    void applyCalls(const Program& p, const Block& block, const BlockWords& w, bool moved);
+    bool applyStop(const Program& p, const Block& block, const BlockWords& w);
+    Vec3 blockTarget(const BlockWords& w) const;
     void emitComment(const Program& p, const Block& block);
     double toMm(double v) const { return m_modal.inch ? v * 25.4 : v; }
     double feedToInternal(double f) const;
@@ -93,13 +144,6 @@ private:
     void assign(const Program& p, const Word& w, double value);
 
     // Arcs.cpp: circle or helix from m_pos to `to`; false when the arc is inconsistent (reported).
-    struct ArcWords {
-        std::array<std::optional<double>, 3> centre;  // I J K in mm, with their mode
-        std::array<ValueMode, 3> centreMode{};
-        std::optional<double> cr, ar;
-        int turn = 0;
-        Pos pos;
-    };
     bool arc(const Program& p, const Vec3& to, bool clockwise, const ArcWords& words, int line);
 
     // Cycles.cpp: one hole of CYCLE8x at the current position (the tool is over the hole).
@@ -115,6 +159,7 @@ public:
 private:
     const InterpretOptions& m_options;
     toolpath::MachineSink& m_sink;
+    CutterCompensation& m_compensation;
     InterpretResult& m_result;
 
     std::vector<std::unique_ptr<Program>> m_programs;  // index = file index
@@ -135,7 +180,15 @@ private:
     double m_lims = 0;
     int m_spindleDir = 0;  // 0 stopped, 3 cw, 4 ccw
     bool m_spindleEmitted = false;
-    int m_tool = 0;  // selected with T
+    int m_tool = 0;        // selected with T
+    int m_activeTool = 0;  // changed in (M6; T at once without M6)
+    int m_edge = 0;        // the cutting edge D (tool offsets): D1 after a tool change, D0 none
+    // $TC_DP6 (radius) and $TC_DP15 (its wear) per (tool, edge) as the program set them.
+    struct EdgeData {
+        std::optional<double> radius;
+        double radiusWear = 0;
+    };
+    std::map<std::pair<int, int>, EdgeData> m_edges;
     std::string m_toolName;
     std::optional<ModalCall> m_modalCall;
     bool m_fiveAxisWarned = false;

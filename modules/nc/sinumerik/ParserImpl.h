@@ -5,6 +5,7 @@
 #include "nc/sinumerik/Lexer.h"
 #include "nc/sinumerik/Program.h"
 
+#include <optional>
 #include <string>
 #include <string_view>
 #include <unordered_map>
@@ -49,6 +50,19 @@ private:
     bool parseStatement(Block& block, const std::string& keyword);
     bool parseWords(Block& block);
     bool parseWord(Block& block);
+    bool badToken(const Token& t);
+    std::optional<bool> parseNumberWord(Block& block, const Token& t);
+    bool parseAssignment(Block& block, const Token& t, const std::string& upperName);
+    bool parseRAssignment(Block& block, const Token& t, const std::string& upperName);
+    std::optional<bool> parseIndexedAssignment(Block& block, const Token& t, const std::string& upperName);
+    bool parseToolDataAssignment(Block& block, const Token& t, const std::string& upperName);
+    bool parseCallWord(Block& block, const Token& t, const std::string& upperName);
+    bool parseMsg(Block& block, Pos pos);
+    bool parseRepetitions(Block& block);
+    std::optional<bool> parseKeyword(Block& block, const Token& t, const std::string& upperName);
+    std::optional<bool> parseAddress(Block& block, const Token& t, const std::string& upperName,
+                                     std::string_view letters, std::string_view digits);
+    bool parseNameCall(Block& block, const Token& t, const std::string& upperName);
     bool parseSpacedAddress(Block& block, const Token& name);
     bool parseGlued(Block& block, const Token& name, const std::string& upperName);
     bool parseAddressValue(Block& block, WordKind kind, std::uint8_t index, const Token& name, bool allowMode);
@@ -83,6 +97,14 @@ private:
     bool m_sawProc = false;
     std::vector<std::pair<std::int32_t, std::string>> m_gotos;  // block index, label: checked at the end
 };
+
+// Word classes shared by the word parsers (Words.cpp, Assignments.cpp); names in upper case.
+int axisIndex(std::string_view upperName);    // X Y Z A B C: 0..5, else -1
+int centreIndex(std::string_view upperName);  // I J K: 0..2, else -1
+bool isAddressLetter(std::string_view upperName);
+bool isPassiveKeyword(std::string_view upperName);  // recognised, nothing to trace
+bool isFrameKeyword(std::string_view upperName);
+double numberOf(std::string_view digits);  // out of range: 1e300, which the range check reports
 
 // Splits "X10.5" into "X" and "10.5"; false when the name is not letters followed by a number.
 bool splitAddress(std::string_view upperName, std::string_view& letters, std::string_view& digits);

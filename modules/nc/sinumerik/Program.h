@@ -40,6 +40,7 @@ enum class Fn : std::uint8_t {
 };
 
 enum class Op : std::uint8_t {
+    // Operands first, up to SysVar (Machine::evalOperand), then operators.
     Const,
     RParam,     // R<index> with a constant index (in `index`)
     RIndirect,  // R[a]
@@ -104,7 +105,8 @@ enum class ValueMode : std::uint8_t { Modal, Absolute, Incremental };  // X=AC(.
 
 enum class Keyword : std::uint8_t { DiamOn, DiamOf, TraOri, TraFoof, Cycle800, Frame, Ret, SetAl, Stopre };
 
-enum class AssignTarget : std::uint8_t { R, RIndirect, Local };
+// ToolData: $TC_DPn[t, d] (code = n, expr2 = t, expr3 = d), the tool offsets a program sets.
+enum class AssignTarget : std::uint8_t { R, RIndirect, Local, ToolData };
 
 struct Word {
     WordKind kind = WordKind::G;
@@ -113,7 +115,8 @@ struct Word {
     AssignTarget target = AssignTarget::R;
     std::int32_t code = 0;    // G/M code, R index, local slot, keyword, cycle number
     std::int32_t expr = -1;   // value
-    std::int32_t expr2 = -1;  // array element / indirect R index
+    std::int32_t expr2 = -1;  // array element / indirect R index / tool number of $TC_DP
+    std::int32_t expr3 = -1;  // cutting edge of $TC_DP
     std::int32_t arraySize = 0;
     Pos pos;
     double value = 0;

@@ -18,6 +18,18 @@
 // - Operator priorities are the control's: comparisons bind loosest, so write (a>b) AND (c<d).
 // - Runtime errors leave the block out and are reported once per place; parse errors leave the
 //   block out; a runaway (more than options.maxBlocks blocks) names the loop and stops.
+// - Cutter compensation (828D Function Manual W1, 18.5 "Tool radius compensation 2D"; Programming
+//   Manual "Corner behavior G450/G451"): the radius of the active tool's cutting edge D is
+//   $TC_DP6 + $TC_DP15 (wear) where the program sets them, else the tool table's (any D >= 1);
+//   D1 is active after a tool change ($MC_CUTTING_EDGE_DEFAULT), D0 compensates nothing. NORM:
+//   the selection block ends square to the contour's first element, the deselection block
+//   starts square to the last; selection and deselection on an arc are errors (the control
+//   selects TRC only with G0/G1). G450 (default): a transition circle about outside corners,
+//   with the feed of the next block; G451: the offsets' intersection, and a transition circle
+//   past 100 degrees of turn (MD20210 $MC_CUTCOM_CORNER_LIMIT's default, as read here); inside
+//   corners always the intersection. KONT, DISC and a change of D while G41/G42 is on are not
+//   traced (the radius is taken when compensation is selected); turns under 0.001 rad are
+//   tangent, for the rounding of written coordinates.
 #include "nc/detail/Dialects.h"
 #include "nc/sinumerik/Machine.h"
 
@@ -26,7 +38,8 @@ namespace camwb::nc::detail {
 InterpretResult interpretSinumerik(std::string_view text, const InterpretOptions& options, toolpath::MachineSink& sink)
 {
     InterpretResult result;
-    sinumerik::Machine machine(options, sink, result);
+    CutterCompensation compensation(sink, CompensationRules::sinumerik(), result, options.maxDiagnostics);
+    sinumerik::Machine machine(options, compensation, result);
     machine.run(text);
     return result;
 }

@@ -5,9 +5,11 @@ set(NC_PART_SOURCES
     Parser.cpp
     ExprParser.cpp
     Words.cpp
+    Assignments.cpp
     Declarations.cpp
     Machine.cpp
     Evaluate.cpp
     Execute.cpp
+    ExecuteWords.cpp
     Arcs.cpp
     Cycles.cpp)

@@ -5,10 +5,9 @@
 
 #include <algorithm>
 #include <charconv>
+#include <optional>
 
 namespace camwb::nc::sinumerik {
-
-namespace {
 
 int axisIndex(std::string_view u)
 {
@@ -56,46 +55,12 @@ double numberOf(std::string_view digits)
     return v;
 }
 
-}  // namespace
-
 bool Parser::parseWords(Block& block)
 {
     while (!atEnd() && !block.bad)
         if (!parseWord(block))
             return false;
     return !block.bad;
-}
-
-bool Parser::parseAddressValue(Block& block, WordKind kind, std::uint8_t index, const Token& name, bool allowMode)
-{
-    Word w;
-    w.kind = kind;
-    w.index = index;
-    w.pos = posOf(name);
-    if (allowMode && peekIs(Tok::Name) && peekIs(Tok::LParen, 1)) {
-        const std::string fn = upper(peek()->text);
-        if (fn == "AC" || fn == "IC" || fn == "DC" || fn == "ACP" || fn == "ACN") {
-            w.mode = fn == "IC" ? ValueMode::Incremental : ValueMode::Absolute;
-            const Pos open = posOf(*peek(1));
-            m_pos += 2;
-            w.expr = parseExpr();
-            if (w.expr < 0)
-                return false;
-            if (!peekIs(Tok::RParen))
-                return error(atEnd() ? here() : posOf(*peek()),
-                             "unbalanced parentheses: '(' at column " + std::to_string(open.column) + " is not closed");
-            ++m_pos;
-            addWord(block, kind, w.pos) = w;
-            return true;
-        }
-    }
-    if (atEnd())
-        return error(here(), "a value is missing after " + std::string(name.text) + "=");
-    w.expr = parseExpr();
-    if (w.expr < 0)
-        return false;
-    addWord(block, kind, w.pos) = w;
-    return true;
 }
 
 bool Parser::parseCallArgs(Block& block)
@@ -230,238 +195,140 @@ bool Parser::parseSpacedAddress(Block& block, const Token& t)
     return true;
 }
 
-bool Parser::parseWord(Block& block)
+bool Parser::badToken(const Token& t)
 {
-    const Token& t = *peek();
     const Pos pos = posOf(t);
-    if (t.kind != Tok::Name) {
-        if (t.kind == Tok::RParen)
-            return error(pos, "unbalanced parentheses: ')' without '('");
-        if (t.kind == Tok::Number)
-            return error(pos, "a number without an address letter");
-        if (t.kind == Tok::Invalid)
-            return error(pos, "unexpected character '" + std::string(t.text) + "'");
-        return error(pos, "unexpected '" + std::string(t.text) + "'");
+    if (t.kind == Tok::RParen)
+        return error(pos, "unbalanced parentheses: ')' without '('");
+    if (t.kind == Tok::Number) {
+        // X1.2.3 lexes as X1.2 and .3: one malformed number, not a stray one.
+        const Token* before = m_pos > 0 ? &m_tokens[m_pos - 1] : nullptr;
+        if (before && !t.spaceBefore && before->line == t.line &&
+            (before->kind == Tok::Number || before->kind == Tok::Name))
+            return error(posOf(*before), "malformed number " + std::string(before->text) + std::string(t.text));
+        return error(pos, "a number without an address letter");
     }
-    // The common case first: one address letter and a number (X10.5, G1, M3), nothing after it
-    // that makes it an assignment, call or array.
-    if (t.text.size() >= 2 && (t.text[1] == '.' || (t.text[1] >= '0' && t.text[1] <= '9')) && !peekIs(Tok::Assign, 1) &&
-        !peekIs(Tok::LParen, 1) && !peekIs(Tok::LBracket, 1)) {
-        char letter = t.text[0];
-        if (letter >= 'a' && letter <= 'z')
-            letter = static_cast<char>(letter - 'a' + 'A');
-        const std::string_view digits = t.text.substr(1);
-        const bool number = digits.find_first_not_of("0123456789.") == std::string_view::npos &&
-                            std::count(digits.begin(), digits.end(), '.') <= 1 && digits != ".";
-        const int ax = axisIndex(std::string_view(&letter, 1));
-        const int ce = centreIndex(std::string_view(&letter, 1));
-        if (number && (ax >= 0 || ce >= 0 || letter == 'F' || letter == 'S')) {
-            ++m_pos;
-            Word& w = addWord(block,
-                              ax >= 0         ? WordKind::Axis
-                              : ce >= 0       ? WordKind::Centre
-                              : letter == 'F' ? WordKind::F
-                                              : WordKind::S,
-                              pos);
-            w.index = static_cast<std::uint8_t>(ax >= 0 ? ax : ce >= 0 ? ce : 0);
-            w.value = numberOf(digits);
-            return true;
-        }
-        if (number && (letter == 'G' || letter == 'M') && digits.size() <= 4 &&
-            digits.find('.') == std::string_view::npos) {
-            ++m_pos;
-            int code = 0;
-            std::from_chars(digits.data(), digits.data() + digits.size(), code);
-            addWord(block, letter == 'G' ? WordKind::G : WordKind::M, pos).code = code;
-            if (letter == 'M' && code == 6)
-                m_p.hasM6 = true;
-            return true;
-        }
-    }
-    if (t.text.size() == 1 &&
-        (peekIs(Tok::Number, 1) || ((peekIs(Tok::Minus, 1) || peekIs(Tok::Plus, 1)) && peekIs(Tok::Number, 2))))
-        return parseSpacedAddress(block, t);
-    const std::string u = upper(t.text);
-    const int axis = axisIndex(u);
-    const int centre = centreIndex(u);
+    if (t.kind == Tok::Invalid)
+        return error(pos, "unexpected character '" + std::string(t.text) + "'");
+    return error(pos, "unexpected '" + std::string(t.text) + "'");
+}
 
-    // NAME= : an address with an expression or an assignment.
-    if (peekIs(Tok::Assign, 1)) {
-        m_pos += 2;
-        if (axis >= 0)
-            return parseAddressValue(block, WordKind::Axis, static_cast<std::uint8_t>(axis), t, true);
-        if (centre >= 0)
-            return parseAddressValue(block, WordKind::Centre, static_cast<std::uint8_t>(centre), t, true);
-        if (u == "F")
-            return parseAddressValue(block, WordKind::F, 0, t, false);
-        if (u == "S" || (u.size() > 1 && u[0] == 'S' && u.find_first_not_of("0123456789", 1) == std::string::npos))
-            return parseAddressValue(block, WordKind::S, 0, t, false);
-        if (u == "D")
-            return parseAddressValue(block, WordKind::D, 0, t, false);
-        if (u == "T") {
-            if (peekIs(Tok::String)) {
-                Word& w = addWord(block, WordKind::TName, pos);
-                w.code = addText(peek()->text);
-                ++m_pos;
-                return true;
-            }
-            return parseAddressValue(block, WordKind::T, 0, t, false);
-        }
-        if (u == "CR")
-            return parseAddressValue(block, WordKind::Cr, 0, t, false);
-        if (u == "AR")
-            return parseAddressValue(block, WordKind::Ar, 0, t, false);
-        if (u == "TURN")
-            return parseAddressValue(block, WordKind::Turn, 0, t, false);
-        if (u == "LIMS")
-            return parseAddressValue(block, WordKind::Lims, 0, t, false);
-        if (u[0] == 'M' && (u.size() == 1 || u.find_first_not_of("0123456789", 1) == std::string::npos)) {
-            // M=3 or M1=3 (spindle 1): the code must be a constant.
-            const std::int32_t e = parseExpr();
-            if (e < 0)
-                return false;
-            if (m_p.exprs[e].op != Op::Const)
-                return error(pos, "the M code must be a number");
-            addWord(block, WordKind::M, pos).code = static_cast<std::int32_t>(m_p.exprs[e].value);
-            return true;
-        }
-        if (u.size() > 1 && u[0] == 'R' && u.find_first_not_of("0123456789", 1) == std::string::npos) {
-            int index = 0;
-            std::from_chars(u.data() + 1, u.data() + u.size(), index);
-            if (index > 999 || u.size() > 5)
-                return error(pos, "R parameter " + u + " out of range (R0..R999)");
-            if (atEnd())
-                return error(here(), "a value is missing after " + std::string(t.text) + "=");
-            Word w;
-            w.kind = WordKind::Assign;
-            w.target = AssignTarget::R;
-            w.code = index;
-            w.pos = pos;
-            w.expr = parseExpr();
-            if (w.expr < 0)
-                return false;
-            addWord(block, WordKind::Assign, pos) = w;
-            return true;
-        }
-        if (const LocalVar* var = findLocal(u)) {
-            if (var->size > 1)
-                return error(pos, std::string(t.text) + " is an array: an element [i] is expected");
-            Word w;
-            w.kind = WordKind::Assign;
-            w.target = AssignTarget::Local;
-            w.code = var->slot;
-            w.pos = pos;
-            if (atEnd())
-                return error(here(), "a value is missing after " + std::string(t.text) + "=");
-            w.expr = parseExpr();
-            if (w.expr < 0)
-                return false;
-            addWord(block, WordKind::Assign, pos) = w;
-            return true;
-        }
-        if (isPassiveKeyword(u) || u == "A3" || u == "B3" || u == "C3" || u == "A2" || u == "B2" || u == "C2" ||
-            u == "LEAD" || u == "TILT" || u == "THETA" || u == "SF" || u == "OVR") {
-            const std::int32_t e = parseExpr();
-            if (e < 0)
-                return false;
-            addWord(block, WordKind::Passive, pos);
-            return true;
-        }
-        return error(pos, "unknown address or variable " + std::string(t.text));
-    }
-
-    // R[i]=expr and array[i]=expr
-    if (peekIs(Tok::LBracket, 1)) {
-        const LocalVar* var = findLocal(u);
-        if (u == "R" || var) {
-            ++m_pos;
-            Word w;
-            w.kind = WordKind::Assign;
-            w.pos = pos;
-            if (var) {
-                w.target = AssignTarget::Local;
-                w.code = var->slot;
-                w.arraySize = var->size;
-                w.expr2 = parseElement(*var, 0);
-            } else {
-                w.target = AssignTarget::RIndirect;
-                ++m_pos;
-                w.expr2 = parseExpr();
-                if (w.expr2 >= 0 && !peekIs(Tok::RBracket))
-                    return error(here(), "']' expected");
-                ++m_pos;
-            }
-            if (w.expr2 < 0)
-                return false;
-            if (!peekIs(Tok::Assign))
-                return error(here(), "'=' expected");
-            ++m_pos;
-            w.expr = parseExpr();
-            if (w.expr < 0)
-                return false;
-            addWord(block, WordKind::Assign, pos) = w;
-            return true;
-        }
-    }
-
-    // NAME( : cycles, MSG, keywords with arguments, subprogram calls with arguments.
-    if (peekIs(Tok::LParen, 1)) {
+// The common case: one address letter and a number (X10.5, G1, M3), nothing after it that makes
+// it an assignment, call or array. nullopt: not such a word.
+std::optional<bool> Parser::parseNumberWord(Block& block, const Token& t)
+{
+    if (t.text.size() < 2 || !(t.text[1] == '.' || (t.text[1] >= '0' && t.text[1] <= '9')) || peekIs(Tok::Assign, 1) ||
+        peekIs(Tok::LParen, 1) || peekIs(Tok::LBracket, 1))
+        return std::nullopt;
+    const Pos pos = posOf(t);
+    char letter = t.text[0];
+    if (letter >= 'a' && letter <= 'z')
+        letter = static_cast<char>(letter - 'a' + 'A');
+    const std::string_view digits = t.text.substr(1);
+    const bool number = digits.find_first_not_of("0123456789.") == std::string_view::npos &&
+                        std::count(digits.begin(), digits.end(), '.') <= 1 && digits != ".";
+    const int ax = axisIndex(std::string_view(&letter, 1));
+    const int ce = centreIndex(std::string_view(&letter, 1));
+    if (number && (ax >= 0 || ce >= 0 || letter == 'F' || letter == 'S')) {
         ++m_pos;
-        if (axis >= 0 || centre >= 0 || isAddressLetter(u))
-            return error(posOf(*peek()), "'=' missing before the expression of " + std::string(t.text) + " (write " +
-                                             std::string(t.text) + "=(...))");
-        if (u == "MSG") {
-            const Pos open = here();
-            ++m_pos;
-            Word& w = addWord(block, WordKind::Msg, pos);
-            w.code = -1;
-            if (peekIs(Tok::String)) {
-                w.code = addText(peek()->text);
-                ++m_pos;
-            }
-            if (!peekIs(Tok::RParen))
-                return error(atEnd() ? here() : posOf(*peek()),
-                             "MSG takes one text: '(' at column " + std::to_string(open.column) + " is not closed");
-            ++m_pos;
-            return true;
-        }
-        const bool cycle =
-            u.size() > 5 && u.compare(0, 5, "CYCLE") == 0 && u.find_first_not_of("0123456789", 5) == std::string::npos;
-        if (block.callWord >= 0)
-            return error(pos, "one cycle or subprogram call per block");
-        block.callWord = static_cast<std::int32_t>(m_p.words.size());
-        Word& w = addWord(block, WordKind::Call, pos);
-        w.code = addText(u);
-        if (cycle) {
-            int number = 0;
-            std::from_chars(u.data() + 5, u.data() + u.size(), number);
-            w.kind = number == 800 ? WordKind::Keyword : WordKind::Cycle;
-            w.code = number == 800 ? static_cast<std::int32_t>(Keyword::Cycle800) : number;
-        } else if (u == "SETAL") {
-            w.kind = WordKind::Keyword;
-            w.code = static_cast<std::int32_t>(Keyword::SetAl);
-        } else if (u == "TRAORI" || u == "TRAFOOF" || isPassiveKeyword(u) || u == "ORIRESET" || u == "TRANSMIT" ||
-                   u == "TRACYL") {
-            w.kind = u == "TRAORI" ? WordKind::Keyword : WordKind::Passive;
-            w.code = static_cast<std::int32_t>(Keyword::TraOri);
-            block.callWord = -1;
-        } else {
-            block.text = w.code;
-        }
-        if (!parseCallArgs(block))
-            return false;
-        if (w.kind == WordKind::Call && peekIs(Tok::Name)) {  // NAME(args) P3: repetitions
-            const std::string p = upper(peek()->text);
-            std::string_view l, d;
-            if (splitAddress(p, l, d) && l == "P" && d.find('.') == std::string_view::npos) {
-                block.expr2 = constant(numberOf(d), posOf(*peek()));
-                ++m_pos;
-            }
-        }
+        Word& w = addWord(block,
+                          ax >= 0         ? WordKind::Axis
+                          : ce >= 0       ? WordKind::Centre
+                          : letter == 'F' ? WordKind::F
+                                          : WordKind::S,
+                          pos);
+        w.index = static_cast<std::uint8_t>(ax >= 0 ? ax : ce >= 0 ? ce : 0);
+        w.value = numberOf(digits);
         return true;
     }
+    if (number && (letter == 'G' || letter == 'M') && digits.size() <= 4 &&
+        digits.find('.') == std::string_view::npos) {
+        ++m_pos;
+        int code = 0;
+        std::from_chars(digits.data(), digits.data() + digits.size(), code);
+        addWord(block, letter == 'G' ? WordKind::G : WordKind::M, pos).code = code;
+        if (letter == 'M' && code == 6)
+            m_p.hasM6 = true;
+        return true;
+    }
+    return std::nullopt;
+}
 
-    // Keywords on their own.
+// NAME( : cycles, MSG, keywords with arguments, subprogram calls with arguments.
+bool Parser::parseCallWord(Block& block, const Token& t, const std::string& u)
+{
+    const Pos pos = posOf(t);
+    ++m_pos;
+    if (axisIndex(u) >= 0 || centreIndex(u) >= 0 || isAddressLetter(u))
+        return error(posOf(*peek()), "'=' missing before the expression of " + std::string(t.text) + " (write " +
+                                         std::string(t.text) + "=(...))");
+    if (u == "MSG")
+        return parseMsg(block, pos);
+    const bool cycle =
+        u.size() > 5 && u.compare(0, 5, "CYCLE") == 0 && u.find_first_not_of("0123456789", 5) == std::string::npos;
+    if (block.callWord >= 0)
+        return error(pos, "one cycle or subprogram call per block");
+    block.callWord = static_cast<std::int32_t>(m_p.words.size());
+    Word& w = addWord(block, WordKind::Call, pos);
+    w.code = addText(u);
+    if (cycle) {
+        int number = 0;
+        std::from_chars(u.data() + 5, u.data() + u.size(), number);
+        w.kind = number == 800 ? WordKind::Keyword : WordKind::Cycle;
+        w.code = number == 800 ? static_cast<std::int32_t>(Keyword::Cycle800) : number;
+    } else if (u == "SETAL") {
+        w.kind = WordKind::Keyword;
+        w.code = static_cast<std::int32_t>(Keyword::SetAl);
+    } else if (u == "TRAORI" || u == "TRAFOOF" || isPassiveKeyword(u) || u == "ORIRESET" || u == "TRANSMIT" ||
+               u == "TRACYL") {
+        w.kind = u == "TRAORI" ? WordKind::Keyword : WordKind::Passive;
+        w.code = static_cast<std::int32_t>(Keyword::TraOri);
+        block.callWord = -1;
+    } else {
+        block.text = w.code;
+    }
+    const WordKind kind = w.kind;
+    if (!parseCallArgs(block))
+        return false;
+    if (kind == WordKind::Call && peekIs(Tok::Name))  // NAME(args) P3: repetitions
+        parseRepetitions(block);
+    return true;
+}
+
+// MSG("text") / MSG(): at '('.
+bool Parser::parseMsg(Block& block, Pos pos)
+{
+    const Pos open = here();
+    ++m_pos;
+    Word& w = addWord(block, WordKind::Msg, pos);
+    w.code = -1;
+    if (peekIs(Tok::String)) {
+        w.code = addText(peek()->text);
+        ++m_pos;
+    }
+    if (!peekIs(Tok::RParen))
+        return error(atEnd() ? here() : posOf(*peek()),
+                     "MSG takes one text: '(' at column " + std::to_string(open.column) + " is not closed");
+    ++m_pos;
+    return true;
+}
+
+// P<n> after a call; false (nothing taken) when the next token is not one.
+bool Parser::parseRepetitions(Block& block)
+{
+    const std::string p = upper(peek()->text);
+    std::string_view l, d;
+    if (!splitAddress(p, l, d) || l != "P" || d.find('.') != std::string_view::npos)
+        return false;
+    block.expr2 = constant(numberOf(d), posOf(*peek()));
+    ++m_pos;
+    return true;
+}
+
+// Keywords on their own (DIAMON, RET, ...), frames and passive words; nullopt: not a keyword.
+std::optional<bool> Parser::parseKeyword(Block& block, const Token& t, const std::string& u)
+{
+    const Pos pos = posOf(t);
     if (u == "DIAMON" || u == "DIAMOF" || u == "TRAORI" || u == "TRAFOOF" || u == "RET" || u == "STOPRE") {
         const Keyword k = u == "DIAMON"    ? Keyword::DiamOn
                           : u == "DIAMOF"  ? Keyword::DiamOf
@@ -491,63 +358,69 @@ bool Parser::parseWord(Block& block)
         ++m_pos;
         return true;
     }
+    return std::nullopt;
+}
 
-    std::string_view letters, digits;
-    if (splitAddress(u, letters, digits)) {
+// Letters and a number in one name (T3, D1, H2, N20, L123 ...); nullopt: a name to be called.
+std::optional<bool> Parser::parseAddress(Block& block, const Token& t, const std::string& u, std::string_view letters,
+                                         std::string_view digits)
+{
+    const Pos pos = posOf(t);
+    const int ax = axisIndex(letters);
+    const int ce = centreIndex(letters);
+    const bool integral = digits.find('.') == std::string_view::npos;
+    if (letters == "G" || letters == "M") {
         ++m_pos;
-        const int ax = axisIndex(letters);
-        const int ce = centreIndex(letters);
-        const bool integral = digits.find('.') == std::string_view::npos;
-        if (letters == "G" || letters == "M") {
-            if (!integral || digits.size() > 4)
-                return error(pos, "invalid " + std::string(letters) + " code " + std::string(t.text));
-            int code = 0;
-            std::from_chars(digits.data(), digits.data() + digits.size(), code);
-            addWord(block, letters == "G" ? WordKind::G : WordKind::M, pos).code = code;
-            if (letters == "M" && code == 6)
-                m_p.hasM6 = true;
-            return true;
-        }
-        WordKind kind = WordKind::Passive;
-        std::uint8_t index = 0;
-        if (ax >= 0) {
-            kind = WordKind::Axis;
-            index = static_cast<std::uint8_t>(ax);
-        } else if (ce >= 0) {
-            kind = WordKind::Centre;
-            index = static_cast<std::uint8_t>(ce);
-        } else if (letters == "F") {
-            kind = WordKind::F;
-        } else if (letters == "S") {
-            kind = WordKind::S;
-        } else if (letters == "T") {
-            kind = WordKind::T;
-        } else if (letters == "D") {
-            kind = WordKind::D;
-        } else if (letters == "H") {
-            kind = WordKind::Passive;
-        } else if (letters == "N") {
-            return true;  // a block number inside the block: ignored
-        } else if (letters == "R") {
-            return error(pos, u + " needs '=' (" + u + "=value)");
-        } else if (letters == "L" && integral) {
-            --m_pos;  // L123: a subprogram call, handled below
-            goto call;
-        } else if (letters == "P" && integral) {
-            return error(pos, "P (repetitions) belongs after a subprogram name");
-        } else {
-            --m_pos;
-            goto call;
-        }
-        Word& w = addWord(block, kind, pos);
-        w.index = index;
-        w.value = numberOf(digits);
+        if (!integral || digits.size() > 4)
+            return error(pos, "invalid " + std::string(letters) + " code " + std::string(t.text));
+        int code = 0;
+        std::from_chars(digits.data(), digits.data() + digits.size(), code);
+        addWord(block, letters == "G" ? WordKind::G : WordKind::M, pos).code = code;
+        if (letters == "M" && code == 6)
+            m_p.hasM6 = true;
         return true;
     }
-    if (parseGlued(block, t, u))
-        return true;
-call:
-    // A name on its own (optionally with P repetitions) calls a subprogram.
+    WordKind kind = WordKind::Passive;
+    std::uint8_t index = 0;
+    if (ax >= 0) {
+        kind = WordKind::Axis;
+        index = static_cast<std::uint8_t>(ax);
+    } else if (ce >= 0) {
+        kind = WordKind::Centre;
+        index = static_cast<std::uint8_t>(ce);
+    } else if (letters == "F") {
+        kind = WordKind::F;
+    } else if (letters == "S") {
+        kind = WordKind::S;
+    } else if (letters == "T") {
+        kind = WordKind::T;
+    } else if (letters == "D") {
+        kind = WordKind::D;
+    } else if (letters == "H") {
+        kind = WordKind::Passive;
+    } else if (letters == "N") {
+        ++m_pos;
+        return true;  // a block number inside the block: ignored
+    } else if (letters == "R") {
+        ++m_pos;
+        return error(pos, u + " needs '=' (" + u + "=value)");
+    } else if (letters == "P" && integral) {
+        ++m_pos;
+        return error(pos, "P (repetitions) belongs after a subprogram name");
+    } else {
+        return std::nullopt;  // L123 or a name with digits: a subprogram call
+    }
+    ++m_pos;
+    Word& w = addWord(block, kind, pos);
+    w.index = index;
+    w.value = numberOf(digits);
+    return true;
+}
+
+// A name on its own (optionally with P repetitions) calls a subprogram.
+bool Parser::parseNameCall(Block& block, const Token& t, const std::string& u)
+{
+    const Pos pos = posOf(t);
     if (block.wordCount == 0 && block.callWord < 0 && u.size() <= 31 &&
         (m_pos + 1 == m_end || (m_pos + 2 <= m_end && peek(1)->kind == Tok::Name && peek(1)->text.size() > 1 &&
                                 (peek(1)->text[0] == 'P' || peek(1)->text[0] == 'p')))) {
@@ -556,20 +429,47 @@ call:
         w.code = addText(u);
         block.text = w.code;
         ++m_pos;
-        if (!atEnd()) {
-            const std::string p = upper(peek()->text);
-            std::string_view l, d;
-            if (!splitAddress(p, l, d) || l != "P" || d.find('.') != std::string_view::npos)
-                return error(posOf(*peek()), "unexpected " + std::string(peek()->text) + " after the call");
-            block.expr2 = constant(numberOf(d), posOf(*peek()));
-            ++m_pos;
-        }
+        if (!atEnd() && !parseRepetitions(block))
+            return error(posOf(*peek()), "unexpected " + std::string(peek()->text) + " after the call");
         return true;
     }
+    if (isAddressLetter(u) && u != "L" && u != "P")
+        return error(pos, std::string(t.text) + " needs a value (" + std::string(t.text) + "10 or " +
+                              std::string(t.text) + "=expression)");
     std::string message = "unknown word " + std::string(t.text);
     if (u.size() >= 2 && u[0] == 'G' && u.find_first_not_of("O", 1) == std::string::npos)
         message += " (the letter O where G0 has a zero?)";
     return error(pos, message);
+}
+
+bool Parser::parseWord(Block& block)
+{
+    const Token& t = *peek();
+    if (t.kind != Tok::Name)
+        return badToken(t);
+    if (const auto done = parseNumberWord(block, t))
+        return *done;
+    if (t.text.size() == 1 &&
+        (peekIs(Tok::Number, 1) || ((peekIs(Tok::Minus, 1) || peekIs(Tok::Plus, 1)) && peekIs(Tok::Number, 2))))
+        return parseSpacedAddress(block, t);
+    const std::string u = upper(t.text);
+    if (peekIs(Tok::Assign, 1))
+        return parseAssignment(block, t, u);
+    if (peekIs(Tok::LBracket, 1))
+        if (const auto done = parseIndexedAssignment(block, t, u))
+            return *done;
+    if (peekIs(Tok::LParen, 1))
+        return parseCallWord(block, t, u);
+    if (const auto done = parseKeyword(block, t, u))
+        return *done;
+    std::string_view letters, digits;
+    if (splitAddress(u, letters, digits)) {
+        if (const auto done = parseAddress(block, t, u, letters, digits))
+            return *done;
+    } else if (parseGlued(block, t, u)) {
+        return true;
+    }
+    return parseNameCall(block, t, u);
 }
 
 }  // namespace camwb::nc::sinumerik

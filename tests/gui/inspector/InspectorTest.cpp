@@ -351,6 +351,66 @@ private slots:
         QCOMPARE(rig.inspector.trace()->dialect, camwb::nc::Dialect::Iso);
     }
 
+    // The modal rows say what the program set, in its own dialect: SINUMERIK G90/G91, G710, G17,
+    // G54; Heidenhain MM, the TOOL CALL axis, R0/RL, absolute or incremental words, F.
+    void modalStateInTheProgramsOwnWords()
+    {
+        Rig rig;
+        rig.inspector.setFilePath(QStringLiteral("inspector-test.mpf"));
+        rig.inspector.setDialect(camwb::nc::Dialect::Sinumerik);
+        QString why;
+        QVERIFY2(rig.load(QStringLiteral("; modal words\n"           // 1
+                                         "G17 G90 G710 G54\n"        // 2
+                                         "T1 M6\n"                   // 3
+                                         "S1000 M3\n"                // 4
+                                         "G0 X0 Y0 Z5\n"             // 5
+                                         "G91 G1 Z-6 F100\n"         // 6
+                                         "G90 G500 G1 X10 Y0 Z-1\n"  // 7
+                                         "M30\n"),                   // 8
+                          &why),
+                 qPrintable(why));
+        rig.editor.gotoLine(5);
+        auto value = [&rig](const char* row) { return rig.panel.value(QLatin1String(row)); };
+        QVERIFY2(value("distance").startsWith(QLatin1String("G90")), qPrintable(value("distance")));
+        QVERIFY2(value("units").startsWith(QLatin1String("G710")), qPrintable(value("units")));
+        QVERIFY2(value("plane").startsWith(QLatin1String("G17")), qPrintable(value("plane")));
+        QVERIFY2(value("compensation").startsWith(QLatin1String("G40")), qPrintable(value("compensation")));
+        QCOMPARE(value("workOffset"), QStringLiteral("G54"));
+        rig.editor.gotoLine(6);
+        QVERIFY2(value("distance").startsWith(QLatin1String("G91")), qPrintable(value("distance")));
+        QVERIFY2(value("feed").contains(QLatin1String("G94")), qPrintable(value("feed")));
+        rig.editor.gotoLine(7);
+        QVERIFY2(value("distance").startsWith(QLatin1String("G90")), qPrintable(value("distance")));
+        QCOMPARE(value("workOffset"), QStringLiteral("G500"));
+
+        Rig klartext;
+        klartext.inspector.setFilePath(QStringLiteral("inspector-test.h"));
+        klartext.inspector.setDialect(camwb::nc::Dialect::Heidenhain);
+        QVERIFY2(klartext.load(QStringLiteral("0 BEGIN PGM MODAL MM\n"         // 1
+                                              "1 TOOL DEF 1 L+40 R+3\n"        // 2
+                                              "2 TOOL CALL 1 Z S1000\n"        // 3
+                                              "3 L X+0 Y-10 Z+5 R0 FMAX M3\n"  // 4
+                                              "4 L IZ-6 F100\n"                // 5
+                                              "5 L X+10 Y+0 RL\n"              // 6
+                                              "6 L X+20\n"                     // 7
+                                              "7 L X+30 Y-10 R0\n"             // 8
+                                              "8 END PGM MODAL MM\n"),         // 9
+                               &why),
+                 qPrintable(why));
+        auto words = [&klartext](const char* row) { return klartext.panel.value(QLatin1String(row)); };
+        klartext.editor.gotoLine(7);
+        QVERIFY2(words("compensation").startsWith(QLatin1String("RL")), qPrintable(words("compensation")));
+        QVERIFY2(words("units").startsWith(QLatin1String("MM")), qPrintable(words("units")));
+        QVERIFY2(words("plane").contains(QLatin1String("TOOL CALL Z")), qPrintable(words("plane")));
+        QVERIFY2(words("feed").contains(QLatin1String("(F)")), qPrintable(words("feed")));
+        QVERIFY2(words("distance").contains(QLatin1String("absolute")), qPrintable(words("distance")));
+        for (const char* row : {"compensation", "plane", "feed", "units", "distance", "workOffset"})
+            QVERIFY2(!words(row).contains(QLatin1Char('G')), qPrintable(words(row)));  // no ISO words
+        klartext.editor.gotoLine(5);
+        QVERIFY2(words("distance").contains(QLatin1String("incremental")), qPrintable(words("distance")));
+        QVERIFY2(words("compensation").startsWith(QLatin1String("R0")), qPrintable(words("compensation")));
+    }
+
     void toolsCanBeHidden()
     {
         Rig rig;

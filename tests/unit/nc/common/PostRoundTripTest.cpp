@@ -5,6 +5,7 @@
 #include "MotionMatch.h"
 
 #include "nc/Interpreter.h"
+#include "nc/ToolTable.h"
 #include "toolpath/ClImport.h"
 #include "toolpath/ToolpathRecorder.h"
 
@@ -109,8 +110,19 @@ TEST_P(PostRoundTrip, NcTracesBackToTheCl)
     auto cl = toolpath::readClFile(input.string(), *format);
     ASSERT_TRUE(cl) << cl.error().toString();
 
+    // Where the CL asks for cutter compensation its moves are the contour, not the tool centre:
+    // the control offsets them. This round trip checks that the post wrote the contour the CL
+    // holds, so the interpreter compensates by radius 0 (every tool of the CL in the table with
+    // diameter 0). The offset itself is checked against LinuxCNC's rs274 (tests/external) and by
+    // the compensation's own property tests, not against our own filter applied twice.
+    ToolTable zeroRadius;
+    for (const toolpath::Record& r : cl.value().toolpath.records())
+        if (const auto* change = std::get_if<toolpath::ToolChange>(&r))
+            zeroRadius.set({change->tool.number, 0, 0.0, 0.0, {}});
+    InterpretOptions options;
+    options.toolTable = &zeroRadius;
     toolpath::ToolpathRecorder recorder;
-    const InterpretResult result = interpretFile(nc.string(), std::nullopt, {}, recorder);
+    const InterpretResult result = interpretFile(nc.string(), std::nullopt, options, recorder);
     const std::vector<std::string> passThrough = passThroughLines(nc, cl.value().toolpath);
     for (const Diagnostic& d : result.diagnostics)
         if (d.line < 1 || d.line > static_cast<int>(passThrough.size()) || passThrough[d.line - 1].empty())

@@ -2,6 +2,7 @@
 // CC, CR with both radius signs and directions, CT, CP circles and helices, LP polar lines,
 // RND and CHF corners, inch programs and the datum shift of CYCL DEF 7.
 #include "TestSupport.h"
+#include "nc/ToolTable.h"
 
 #include <cmath>
 
@@ -364,6 +365,27 @@ TEST(HeidenhainContour, ContinuationLinesAndCrlf)
     ASSERT_EQ(r.all<Rapid>().size(), 1u);
     expectNear(r.all<Rapid>()[0].to, {10, 20, 0});
     EXPECT_EQ(r.lines<Rapid>(), std::vector<int>{2});
+}
+
+TEST(HeidenhainContour, CompensationRadiusIsToolDefRPlusToolCallDr)
+{
+    ToolTable table;
+    table.set({2, 2, 8.0, 0.0, {}});
+    InterpretOptions options;
+    options.toolTable = &table;
+    const Traced r = run("0 BEGIN PGM T MM\n1 TOOL DEF 1 L+40 R+3\n2 TOOL CALL 1 Z S1000 DR+0.5\n"
+                         "3 L X-10 Y+0 R0 F100\n4 L X+0 RL\n5 L X+10\n6 L X+20 Y-10 R0\n"
+                         "7 TOOL CALL 2 Z S1000\n8 L X+30 Y-10 RR\n9 L X+40\n10 L X+50 Y+0 R0\n"
+                         "11 TOOL CALL 5 Z\n12 L X+60 RL\n13 L X+70\n14 L X+80 Y+10 R0\n15 END PGM T MM\n",
+                         options);
+    const auto lines = r.all<Linear>();
+    ASSERT_EQ(lines.size(), 10u);
+    EXPECT_NEAR(lines[1].to.y, 3.5, 1e-12);  // TOOL DEF R3 + DR 0.5 (tool left of +X)
+    EXPECT_NEAR(lines[4].to.y, -14, 1e-12);  // the table's 8 mm tool, right of +X
+    EXPECT_NEAR(lines[7].to.y, 0, 1e-12);    // tool 5: no radius anywhere, the programmed path
+    ASSERT_EQ(r.result.diagnostics.size(), 1u) << r.diagnostics()[0];
+    EXPECT_EQ(r.result.diagnostics[0].line, 13);
+    EXPECT_NE(r.result.diagnostics[0].message.find("the radius of tool 5 is not known"), std::string::npos);
 }
 
 }  // namespace

@@ -31,8 +31,10 @@ TEST(HeidenhainDiagnostics, UnknownWordsWithTheirColumn)
     EXPECT_EQ(first.message, "unknown word 'QQ+5'");
     EXPECT_EQ(r.result.diagnostics[1].line, 3);
     EXPECT_EQ(r.result.diagnostics[1].column, 3);
-    // The rest of the block and the program still run.
-    EXPECT_EQ(r.all<Rapid>().size(), 2u);
+    // The block with the unknown word is left out (no axis moves on a guess); the program runs on.
+    ASSERT_EQ(r.all<Rapid>().size(), 1u);
+    EXPECT_EQ(r.all<Rapid>()[0].to.x, 1);
+    EXPECT_EQ(r.lines<Rapid>(), std::vector<int>{4});
     EXPECT_TRUE(r.result.completed);
 }
 
@@ -158,6 +160,28 @@ TEST(HeidenhainDiagnostics, HostileTextNeverCrashes)
         const Traced r = run(text, options);
         (void)r;
     }
+}
+
+TEST(HeidenhainDiagnostics, MalformedNumbersAreErrorsAndTheBlockDoesNotMove)
+{
+    // X+ZZ used to vanish silently, leaving a move in Y alone: every malformed value is an error
+    // with its column, and its block moves no axis.
+    const Traced r = run("0 BEGIN PGM T MM\n1 L X+0 Y+0 FMAX\n2 L X+ZZ Y+10\n3 L X+1.2.3 Y+20\n4 L X+-3 Y+30\n"
+                         "5 L X+7 Y\n6 L X+8 Y+8 FMAX\n7 END PGM T MM\n");
+    ASSERT_EQ(r.result.diagnostics.size(), 4u) << r.diagnostics()[0];
+    const char* expected[] = {"malformed number '+ZZ' after 'X'", "malformed number '+1.2.3' after 'X'",
+                              "malformed number '+-3' after 'X'", "missing value after 'Y'"};
+    const int columns[] = {6, 6, 6, 9};
+    for (std::size_t i = 0; i < 4; ++i) {
+        const Diagnostic& d = r.result.diagnostics[i];
+        EXPECT_EQ(d.severity, Severity::Error);
+        EXPECT_EQ(d.line, static_cast<int>(i) + 3);
+        EXPECT_EQ(d.column, columns[i]);
+        EXPECT_EQ(d.message, expected[i]);
+    }
+    ASSERT_EQ(r.all<Rapid>().size(), 2u);
+    EXPECT_EQ(r.lines<Rapid>(), (std::vector<int>{2, 7}));
+    EXPECT_TRUE(r.all<Linear>().empty());
 }
 
 }  // namespace

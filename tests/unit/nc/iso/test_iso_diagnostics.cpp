@@ -84,5 +84,17 @@ TEST(IsoDiagnostics, HostileInputsEndQuickly)
     EXPECT_TRUE(run("o1 while [1]\no1 endwhile\n", few).result.hasErrors());  // stops at maxBlocks
 }
 
+TEST(IsoDiagnostics, MalformedNumbersAreErrorsAndTheBlockDoesNotMove)
+{
+    // rs274: "bad number format (trailing characters) parsing '1.2.3'".
+    const IsoRun r = run("G0 X0 Y0\nG0 X1.2.3 Y20\nG0 X1..2 Y30\nG0 XX5 Y40\nG0 X8 Y8\nM2\n");
+    EXPECT_EQ(r.diagnostics(), "2:5: error: malformed number 1.2.3 after X\n"
+                               "3:5: error: malformed number 1..2 after X\n"
+                               "4:4: error: unknown word XX (a letter and a number expected)\n");
+    const auto rapids = r.all<Rapid>();
+    ASSERT_EQ(rapids.size(), 2u);
+    EXPECT_EQ(rapids[1].to.x, 8);
+}
+
 }  // namespace
 }  // namespace camwb::nc::iso::test

@@ -1,6 +1,7 @@
 // Modal state and straight moves: units, distance modes, feeds, spindle, tools, coolant, dwell,
 // work offsets, compensation, stops and the end of program.
 #include "IsoTestSupport.h"
+#include "nc/ToolTable.h"
 
 #include <gtest/gtest.h>
 
@@ -168,6 +169,26 @@ TEST(IsoMotion, NewSpeedWithTheSameDirection)
     EXPECT_EQ(spindles[0].rpm, 3200);
     EXPECT_EQ(spindles[1].rpm, 1800);
     EXPECT_EQ(spindles[2].rpm, 0);
+}
+
+TEST(IsoMotion, CompensationRadiusFromTheToolTableOrG41Point1)
+{
+    // G41 D<tool>, G42 with the tool in the spindle, G41.1 D<diameter> (LinuxCNC).
+    ToolTable table;
+    table.set({3, 3, 6.0, 0.0, {}});
+    table.set({4, 4, 10.0, 0.0, {}});
+    InterpretOptions options;
+    options.toolTable = &table;
+    const IsoRun r = run("G0 X-10 Y0\nG41 D3\nG1 X0 Y0 F100\nG1 X10 Y0\nG40\nG1 X20 Y-10\n"
+                         "T4 M6\nG42\nG1 X30 Y-10\nG1 X40 Y-10\nG40\nG1 X50 Y0\n"
+                         "G41.1 D2\nG1 X60 Y0\nG1 X70 Y0\nG40\nG1 X80 Y10\nM2\n",
+                         options);
+    EXPECT_EQ(r.diagnostics(), "");
+    const auto lines = r.all<Linear>();
+    ASSERT_EQ(lines.size(), 9u);
+    EXPECT_NEAR(lines[0].to.y, 3, 1e-12);    // square to the entry move, left of +X
+    EXPECT_NEAR(lines[3].to.y, -15, 1e-12);  // tool 4 in the spindle, right of +X
+    EXPECT_NEAR(lines[6].to.y, 1, 1e-12);    // G41.1 D2
 }
 
 }  // namespace

@@ -124,5 +124,19 @@ TEST(SinumerikDiagnostics, HostileInputNeverCrashesOrHangs)
     }
 }
 
+TEST(SinumerikDiagnostics, MalformedNumbersAreErrorsAndTheBlockDoesNotMove)
+{
+    const NcRun r = run("G0 X0 Y0\nG0 X+ZZ Y10\nG0 X1.2.3 Y20\nG0 X1..2 Y30\nG0 Y\nG0 X=1.2.3 Y40\nG0 X8 Y8\nM30\n");
+    EXPECT_EQ(r.diagnostics(), "MAIN.MPF:2:4: error: X needs a value (X10 or X=expression)\n"
+                               "MAIN.MPF:3:4: error: malformed number X1.2.3\n"
+                               "MAIN.MPF:4:4: error: malformed number X1..2\n"
+                               "MAIN.MPF:5:4: error: Y needs a value (Y10 or Y=expression)\n"
+                               "MAIN.MPF:6:6: error: malformed number 1.2.3\n");
+    const auto rapids = r.all<toolpath::Rapid>();
+    ASSERT_EQ(rapids.size(), 2u);
+    EXPECT_EQ(rapids[1].to.x, 8);
+    EXPECT_EQ(rapids[1].to.y, 8);
+}
+
 }  // namespace
 }  // namespace camwb::nc::sinumerik::test

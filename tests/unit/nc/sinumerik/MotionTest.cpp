@@ -1,6 +1,7 @@
 // Motion: rapids and feeds, absolute and incremental, AC/IC, units, DIAMON, arcs in all planes by
 // centre, CR and AR, helices with TURN, the radius check, records before and after the motion.
 #include "TestSupport.h"
+#include "nc/ToolTable.h"
 
 #include <cmath>
 
@@ -175,6 +176,26 @@ TEST(SinumerikMotion, SourceLinesAndFiles)
     EXPECT_EQ(r.path.source(1).line, 3);  // the comment
     EXPECT_EQ(r.path.source(2).line, 3);
     EXPECT_EQ(r.path.source(2).file, 0);
+}
+
+TEST(SinumerikMotion, CompensationRadiusFromToolDataTheTableOrNone)
+{
+    // $TC_DP6 + $TC_DP15 of the active cutting edge; D0 compensates nothing; an edge the program
+    // gave no data for takes the tool table's radius.
+    ToolTable table;
+    table.set({2, 2, 8.0, 0.0, {}});
+    InterpretOptions options;
+    options.toolTable = &table;
+    const NcRun r = run("$TC_DP6[1,1]=3\n$TC_DP15[1,1]=-0.5\nT1 M6\nG0 X-10 Y0\nG41 G1 X0 Y0 F100\nG1 X10 Y0\n"
+                        "G40 G1 X20 Y-10\nD0\nG41 G1 X30 Y-10\nG1 X40 Y-10\nG40 G1 X50 Y0\n"
+                        "T2 M6\nD1\nG42 G1 X60 Y0\nG1 X70 Y0\nG40 G1 X80 Y10\nM30\n",
+                        {}, options);
+    EXPECT_EQ(r.diagnostics(), "");
+    const auto lines = r.all<toolpath::Linear>();
+    ASSERT_EQ(lines.size(), 9u);
+    EXPECT_NEAR(lines[0].to.y, 2.5, 1e-12);  // T1 D1: 3 - 0.5
+    EXPECT_NEAR(lines[4].to.y, -10, 1e-12);  // D0
+    EXPECT_NEAR(lines[7].to.y, -4, 1e-12);   // T2 from the table: right of +X by 4
 }
 
 }  // namespace

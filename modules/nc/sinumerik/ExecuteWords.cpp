@@ -1,0 +1,193 @@
+// The words of an ordinary block read into BlockWords, in the order written: assignments take
+// effect at once (a later word of the block sees them), G codes are sorted into their modal
+// groups, values are evaluated and range-checked; Execute.cpp then applies the groups.
+#include "nc/sinumerik/Machine.h"
+
+#include <cmath>
+
+namespace camwb::nc::sinumerik {
+
+using namespace camwb::toolpath;
+
+namespace {
+
+// Path control, limits, approach: nothing the trace shows.
+bool isPassiveG(int g)
+{
+    return g == 9 || g == 60 || g == 64 || (g >= 641 && g <= 645) || g == 601 || g == 602 || g == 603 || g == 25 ||
+           g == 26 || g == 110 || g == 111 || g == 112 || g == 140 || g == 141 || g == 142 || g == 143 || g == 340 ||
+           g == 341 || g == 62 || g == 621;
+}
+
+}  // namespace
+
+void Machine::readG(const Program& p, const Word& word, BlockWords& w)
+{
+    const int g = word.code;
+    if (g <= 3) {
+        w.motion = g;
+        w.arc.pos = word.pos;
+    } else if (g == 4)
+        w.dwell = true;
+    else if (g >= 17 && g <= 19)
+        w.plane = g;
+    else if (g == 90 || g == 91)
+        w.absInc = g;
+    else if (g == 70 || g == 71 || g == 700 || g == 710)
+        w.units = g;
+    else if (g >= 54 && g <= 57)
+        w.workOffset = g - 53;
+    else if (g == 500)
+        w.workOffset = 0;
+    else if (g >= 505 && g <= 599)
+        w.workOffset = g - 500;
+    else if (g >= 40 && g <= 42)
+        w.comp = g;
+    else if (g == 93 || g == 94 || g == 95)
+        w.feedMode = g;
+    else if (g == 96 || g == 97 || g == 961 || g == 971)
+        w.css = g == 96 || g == 961 ? 1 : 0;
+    else if (g == 53 || g == 153)
+        w.g53 = true;
+    else if (g == 450 || g == 451)
+        w.corners = g;
+    else if (!isPassiveG(g))
+        warning(p, word.pos, "G" + std::to_string(g) + " is not interpreted: ignored");
+}
+
+// A value with its place: false (and the block left out) when it cannot be evaluated or lies
+// outside the control's range.
+bool Machine::readPosition(const Program& p, const Word& word, std::optional<double>& value, ValueMode& mode)
+{
+    const auto v = wordValue(p, word);
+    if (!v || !checkRange(p, word.pos, *v)) {
+        m_evalFailed = true;
+        return false;
+    }
+    value = v;
+    mode = word.mode;
+    return true;
+}
+
+// False: the block stops the program (SETAL).
+bool Machine::readKeyword(const Program& p, const Block& b, const Word& word, BlockWords& w)
+{
+    switch (static_cast<Keyword>(word.code)) {
+    case Keyword::DiamOn:
+        m_modal.diameter = true;
+        break;
+    case Keyword::DiamOf:
+        m_modal.diameter = false;
+        break;
+    case Keyword::TraOri:
+        warning(p, word.pos,
+                "TRAORI (five-axis transformation) is recognised; its motion is traced once the "
+                "five-axis machine model exists: positions are traced as programmed");
+        break;
+    case Keyword::Cycle800:
+        warning(p, word.pos,
+                "CYCLE800 (swivel plane) is recognised; five-axis motion is traced once the "
+                "five-axis machine model exists: positions are traced in the unswivelled frame");
+        break;
+    case Keyword::Frame:
+        warning(p, word.pos,
+                "programmable frame " + p.texts[static_cast<std::size_t>(b.text)] +
+                    " is not applied: positions are traced in the programmed frame");
+        setSource(b.line);
+        m_sink.passThrough(PassThrough{p.texts[static_cast<std::size_t>(b.text)]});
+        break;
+    case Keyword::Ret:
+        w.ret = true;
+        break;
+    case Keyword::SetAl: {
+        m_evalFailed = false;
+        const auto args = evalArgs(p, b);
+        const int alarm = !args.empty() && args[0] ? static_cast<int>(*args[0]) : 0;
+        error(p, word.pos, "the program sets alarm " + std::to_string(alarm) + " (SETAL): stopped");
+        m_stopped = true;
+        return false;
+    }
+    default:
+        break;
+    }
+    return true;
+}
+
+bool Machine::readWords(const Program& p, const Block& b, BlockWords& w)
+{
+    const Word* words = p.words.data() + b.firstWord;
+    for (std::int32_t i = 0; i < b.wordCount; ++i) {
+        const Word& word = words[i];
+        switch (word.kind) {
+        case WordKind::G:
+            readG(p, word, w);
+            break;
+        case WordKind::M:
+            if (w.mCount < static_cast<int>(std::size(w.m)))
+                w.m[w.mCount++] = word.code;
+            break;
+        case WordKind::Axis:
+            readPosition(p, word, w.axis[word.index], w.axisMode[word.index]);
+            break;
+        case WordKind::Centre:
+            readPosition(p, word, w.arc.centre[word.index], w.arc.centreMode[word.index]);
+            break;
+        case WordKind::F:
+            w.feed = wordValue(p, word);
+            break;
+        case WordKind::S:
+            w.speed = wordValue(p, word);
+            break;
+        case WordKind::T:
+            w.tool = wordValue(p, word);
+            break;
+        case WordKind::TName:
+            m_toolName = p.texts[static_cast<std::size_t>(word.code)];
+            w.tool = 0;
+            break;
+        case WordKind::D:
+            w.edge = wordValue(p, word);
+            break;
+        case WordKind::Cr:
+            w.arc.cr = wordValue(p, word);
+            break;
+        case WordKind::Ar:
+            w.arc.ar = wordValue(p, word);
+            break;
+        case WordKind::Turn: {
+            const auto v = wordValue(p, word);
+            if (v && (*v < 0 || *v > 999 || *v != std::trunc(*v))) {
+                error(p, word.pos, "TURN must be a whole number 0..999");
+                m_evalFailed = true;
+            } else if (v) {
+                w.arc.turn = static_cast<int>(*v);
+            }
+            break;
+        }
+        case WordKind::Lims:
+            w.lims = wordValue(p, word);
+            break;
+        case WordKind::Assign: {
+            const auto v = wordValue(p, word);
+            if (v)
+                assign(p, word, *v);
+            break;
+        }
+        case WordKind::Keyword:
+            if (!readKeyword(p, b, word, w))
+                return false;
+            break;
+        case WordKind::Msg:
+            if (word.code >= 0) {
+                setSource(b.line);
+                m_sink.comment(Comment{p.texts[static_cast<std::size_t>(word.code)]});
+            }
+            break;
+        default:
+            break;
+        }
+    }
+    return true;
+}
+
+}  // namespace camwb::nc::sinumerik

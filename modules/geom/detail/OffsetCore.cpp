@@ -74,9 +74,26 @@ std::vector<Vec2> circleCircle(Vec2 c1, double r1, Vec2 c2, double r2)
     return {foot + u.leftNormal() * h, foot - u.leftNormal() * h};
 }
 
-// Intersection of the carriers (infinite line / full circle) of two offset elements, the one
-// nearest to `near` (the offset corner).
-std::optional<Vec2> intersect(const Segment& a, const Segment& b, Vec2 near)
+// Offset of one element, before trimming.
+base::Result<Segment> offsetElement(const Segment& s, bool toLeft, double d)
+{
+    if (!s.isArc()) {
+        const Vec2 t = (s.end - s.start).normalized();
+        const Vec2 n = toLeft ? t.leftNormal() : t.rightNormal();
+        return Segment::line(s.start + n * d, s.end + n * d);
+    }
+    const double r = s.radius();
+    // An arc turning away from the offset side (its centre on the other side) grows.
+    const double newRadius = s.ccw != toLeft ? r + d : r - d;
+    if (newRadius <= kLengthTol)
+        return offsetError(d, "tool too large for the concave arc of radius " + fmt(r) + " at " + fmt(s.center));
+    const double k = newRadius / r;
+    return Segment::arc(s.center + (s.start - s.center) * k, s.center + (s.end - s.center) * k, s.center, s.ccw);
+}
+
+}  // namespace
+
+std::optional<Vec2> carrierIntersection(const Segment& a, const Segment& b, Vec2 near)
 {
     std::vector<Vec2> candidates;
     if (!a.isArc() && !b.isArc()) {
@@ -102,25 +119,6 @@ std::optional<Vec2> intersect(const Segment& a, const Segment& b, Vec2 near)
             best = c;
     return best;
 }
-
-// Offset of one element, before trimming.
-base::Result<Segment> offsetElement(const Segment& s, bool toLeft, double d)
-{
-    if (!s.isArc()) {
-        const Vec2 t = (s.end - s.start).normalized();
-        const Vec2 n = toLeft ? t.leftNormal() : t.rightNormal();
-        return Segment::line(s.start + n * d, s.end + n * d);
-    }
-    const double r = s.radius();
-    // An arc turning away from the offset side (its centre on the other side) grows.
-    const double newRadius = s.ccw != toLeft ? r + d : r - d;
-    if (newRadius <= kLengthTol)
-        return offsetError(d, "tool too large for the concave arc of radius " + fmt(r) + " at " + fmt(s.center));
-    const double k = newRadius / r;
-    return Segment::arc(s.center + (s.start - s.center) * k, s.center + (s.end - s.center) * k, s.center, s.ccw);
-}
-
-}  // namespace
 
 std::vector<Segment> withoutDegenerate(const std::vector<Segment>& segments)
 {
@@ -165,7 +163,7 @@ base::Result<Profile> offsetToSide(const std::vector<Segment>& segs, bool closed
             continue;
         }
         const Vec2 near = (untrimmed[i].end + untrimmed[j].start) * 0.5;
-        const auto p = intersect(untrimmed[i], untrimmed[j], near);
+        const auto p = carrierIntersection(untrimmed[i], untrimmed[j], near);
         if (!p)
             return offsetError(distance, "the offsets at the concave corner " + fmt(vertex) +
                                              " do not meet: tool too large for the feature");

@@ -6,6 +6,7 @@
 #include "base/Result.h"
 #include "geom/Profile.h"
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -19,6 +20,10 @@ base::Result<Profile> offsetToSide(const std::vector<Segment>& segments, bool cl
 // The segments longer than a nanometre: degenerate ones have no tangent and, on a continuous
 // profile, can be dropped without opening a gap.
 std::vector<Segment> withoutDegenerate(const std::vector<Segment>& segments);
+
+// The meeting point of the carriers (infinite line / full circle) of two segments nearest to
+// `near`; nullopt for parallel lines and circles that do not meet (within 1e-9 of r^2).
+std::optional<Vec2> carrierIntersection(const Segment& a, const Segment& b, Vec2 near);
 
 std::string formatMm(double v);
 std::string formatPoint(Vec2 p);

@@ -42,6 +42,6 @@ for pattern in $patterns; do
   grep '^freecad-pocket check' "$work/freecad.out" || true
   freecad=$(( $(collected "$work/freecad.log") / 2 ))
   awk -v p="$pattern" -v l="$levels" -v o="$ours" -v f="$freecad" 'BEGIN {
-    printf "FreeCAD %s, %d level(s): %d instructions in makePocket + toPath per run; ratio %.1fx\n", p, l, f, f / o
+    printf "FreeCAD %s, %d level(s): %.0f instructions in makePocket + toPath per run; ratio %.1fx\n", p, l, f, f / o
   }'
 done

@@ -101,6 +101,16 @@ bool Profile::isContinuous(double tolerance) const
     return true;
 }
 
+int chordCount(double radius, double sweepAbs, double tolerance)
+{
+    if (!(radius > 0))
+        return 1;
+    const double tol = std::min(tolerance >= 1e-6 ? tolerance : 1e-6, radius);  // NaN too
+    // Chord error r(1 - cos(step/2)) <= tol.
+    const double maxStep = 2 * std::acos(1 - tol / radius);
+    return std::max(1, static_cast<int>(std::ceil(sweepAbs / maxStep)));
+}
+
 std::vector<Vec2> discretize(const Profile& profile, double tolerance)
 {
     std::vector<Vec2> points;
@@ -108,11 +118,7 @@ std::vector<Vec2> discretize(const Profile& profile, double tolerance)
         points.push_back(s.start);
         if (!s.isArc())
             continue;
-        const double r = s.radius();
-        const double tol = std::clamp(tolerance, 1e-6, r);
-        // Chord error r(1 - cos(step/2)) <= tol.
-        const double maxStep = 2 * std::acos(1 - tol / r);
-        const int steps = std::max(1, static_cast<int>(std::ceil(std::abs(s.sweep()) / maxStep)));
+        const int steps = chordCount(s.radius(), std::abs(s.sweep()), tolerance);
         for (int i = 1; i < steps; ++i)
             points.push_back(s.pointAt(static_cast<double>(i) / steps));
     }

@@ -50,4 +50,8 @@ struct Profile {
 // `tolerance`. Closed profiles do not repeat the first point.
 std::vector<Vec2> discretize(const Profile& profile, double tolerance);
 
+// How many equal chords keep an arc of `radius` and |sweep| `sweepAbs` within `tolerance` of
+// its circle (at least 1): the split discretize uses.
+int chordCount(double radius, double sweepAbs, double tolerance);
+
 }  // namespace camwb::geom

@@ -2,6 +2,8 @@
 
 #include "geom/detail/ClipperRegions.h"
 #include "geom/detail/LoopQueries.h"
+#include "geom/detail/PieceSnap.h"
+#include "geom/detail/RawOffset.h"
 
 #include <algorithm>
 #include <cmath>
@@ -59,19 +61,27 @@ std::vector<Region> offsetRegions(const std::vector<Region>& regions, double del
         normalized.push_back(region.normalized());
     if (delta == 0)
         return normalized;
-    const double tol = usable(tolerance);
-    bool ok = true;
-    const ClipperLib::Paths paths = detail::regionPaths(normalized, tol / 2, ok);
-    if (!ok || std::abs(delta) >= detail::kMaxCoordinate)
+    if (std::abs(delta) >= detail::kMaxCoordinate)
         return {};
-    const double applied = delta < 0 ? delta - offsetSafetyMargin(tol) : delta;
+    const double tol = usable(tolerance);
+    // The raw offset in exact lines and arcs, discretised only for Clipper to decide where loops
+    // cross, merge, split or vanish; the union's loops are then put back onto the exact pieces.
+    const double distance = delta < 0 ? -delta + offsetSafetyMargin(tol) : delta;
+    const detail::RawLoops raw = detail::rawOffset(normalized, distance, delta < 0, tol / 2);
+    const detail::PieceSnap snap(raw, tol / 2);
+    if (!snap.inRange())
+        return {};
     try {
-        ClipperLib::ClipperOffset offsetter;
-        offsetter.ArcTolerance = std::max(offsetArcTolerance(tol) * kClipperScale, 0.25);
-        offsetter.AddPaths(paths, ClipperLib::jtRound, ClipperLib::etClosedPolygon);
+        ClipperLib::Clipper clipper;
+        clipper.AddPaths(snap.paths(), ClipperLib::ptSubject, true);
         ClipperLib::PolyTree tree;
-        offsetter.Execute(tree, applied * kClipperScale);
-        return detail::regionsFromTree(tree, tol / 2);
+        clipper.Execute(ClipperLib::ctUnion, tree, ClipperLib::pftPositive, ClipperLib::pftPositive);
+        // A contour that cannot be placed on the pieces (a crossing too shallow to find again) is
+        // fitted instead, as booleans are: within the margin the shrink adds.
+        return detail::regionsFromTree(tree, [&](const ClipperLib::Path& contour) {
+            std::optional<Profile> exact = snap.snap(contour);
+            return exact ? std::move(*exact) : detail::fitContour(contour, tol / 2);
+        });
     } catch (...) {
         return {};
     }

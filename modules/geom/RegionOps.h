@@ -1,8 +1,9 @@
-// Robust offsets and booleans of regions through Clipper (integer polygons, ClipperAdapter.h),
-// with lines and arcs restored afterwards (ArcFit.h). Loops are discretised so that the chord
-// error stays within tolerance/2 and fitted within tolerance/2. Results are conservative where it
-// matters for gouging: offsetRegions(..., -d, ...) never comes closer than d to the input
-// boundary (the discretisation and fit errors are added to d, not taken from it).
+// Robust offsets and booleans of regions. Offsets are exact lines and arcs: the raw offset of each
+// loop is built from its lines and arcs, Clipper (integer polygons, ClipperAdapter.h) only decides
+// where the offset loops cross, merge, split or vanish, and the result is put back onto the exact
+// pieces. Booleans discretise the loops (chord error within tolerance/2) and fit lines and arcs
+// back (ArcFit.h, within tolerance/2). Results are conservative where it matters for gouging:
+// offsetRegions(..., -d, ...) never comes closer than d to the input boundary.
 #pragma once
 
 #include "geom/Region.h"
@@ -13,15 +14,19 @@ namespace camwb::geom {
 
 // delta < 0 shrinks the regions (the tool-centre area of a pocket: -(tool radius + stock)),
 // delta > 0 grows them (round joins). May split a region into several or make it vanish.
-// Shrinking offsets by |delta| + offsetSafetyMargin(tolerance) so that the fitted result stays at
-// least |delta| from the exact input loops; growing offsets by delta itself (result within
-// tolerance of the exact offset). delta == 0 returns the regions normalised. Tolerances below
-// 1e-5 mm are raised to it. Coordinates beyond 1e9 mm give an empty result.
+// Shrinking offsets by |delta| + offsetSafetyMargin(tolerance); growing offsets by delta itself.
+// The loops lie at exactly that distance from the input loops (lines stay lines, arcs arcs, round
+// joins are arcs), except that an arc collapsing to nothing is taken as its polygon (chords within
+// tolerance/2, on the far side of it) and a loop whose crossings cannot be placed back on the
+// pieces is fitted within tolerance/2 of its polygon: both stay within the margin. delta == 0
+// returns the regions normalised. Tolerances below 1e-5 mm are raised to it. Coordinates beyond
+// 1e9 mm give an empty result.
 std::vector<Region> offsetRegions(const std::vector<Region>& regions, double delta, double tolerance);
 
-// What a shrink adds to |delta| (about 1.28 * tolerance): chords of the input arcs (tolerance/2)
-// + fit of the result (tolerance/2) + chords of Clipper's round joins (2.25 * offsetArcTolerance:
-// Clipper rounds the step count, so a join's last step may be 1.5 steps long) + 4 nm rounding.
+// What a shrink adds to |delta| (about 1.28 * tolerance): enough for a result discretised and
+// fitted back (chords of the input arcs tolerance/2 + fit tolerance/2 + chords of round joins
+// 2.25 * offsetArcTolerance, as Clipper rounds a join's step count, + 4 nm rounding), so that
+// shrinks keep their distance whichever way they were computed.
 double offsetSafetyMargin(double tolerance);
 // Nominal chord error of Clipper's round joins in offsets and swept areas: tolerance/8 (so that
 // even a join's long last step, 2.25 times that, stays below the fit tolerance/2).

@@ -133,17 +133,20 @@ base::Result<OpResult> computePocket(const std::vector<geom::Region>& regions, c
     entry.rampFeed = tc.rampFeed();
     entry.plungeFeed = tc.plungeFeedMmPerMin;
     entry.cuttingFeed = tc.cuttingFeedMmPerMin;
-    EntryPlanner planner(toolCentre, entry);
-    const Program rough = makeProgram(std::move(*cuts), toolCentre, planner);
+    const geom::RegionIndex centreIndex(toolCentre);
+    EntryPlanner planner(centreIndex, entry);
+    const Program rough = makeProgram(std::move(*cuts), centreIndex, planner);
 
     std::vector<geom::Region> finishRegion;
+    std::optional<geom::RegionIndex> finishIndex;
     std::optional<EntryPlanner> finishPlanner;
     Program finish;
     if (params.finishWalls) {
         finishRegion = params.wallStockMm > 0 ? geom::offsetRegions(regions, -radius, tol) : toolCentre;
-        finishPlanner.emplace(finishRegion, entry);
+        finishIndex.emplace(finishRegion);
+        finishPlanner.emplace(*finishIndex, entry);
         finish =
-            makeProgram(wallLoops(finishRegion, params.climb, rough.cuts.back().end()), finishRegion, *finishPlanner);
+            makeProgram(wallLoops(finishRegion, params.climb, rough.cuts.back().end()), *finishIndex, *finishPlanner);
     }
     const int fallbacks = planner.helixFallbacks() + (finishPlanner ? finishPlanner->helixFallbacks() : 0);
     if (fallbacks > 0)

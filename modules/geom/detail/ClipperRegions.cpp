@@ -45,25 +45,16 @@ void addLoop(const Profile& loop, bool counterClockwise, double chordTolerance, 
         path.push_back(toClipper(p));
 }
 
-Profile fitContour(const ClipperLib::Path& contour, double fitTolerance)
-{
-    std::vector<Vec2> points;
-    points.reserve(contour.size());
-    for (const ClipperLib::IntPoint& p : contour)
-        points.push_back(fromClipper(p));
-    return fitLinesAndArcs(points, true, fitTolerance);
-}
-
-void collectOuter(const ClipperLib::PolyNode& node, double fitTolerance, std::vector<Region>& out)
+void collectOuter(const ClipperLib::PolyNode& node, const ContourToLoop& toLoop, std::vector<Region>& out)
 {
     Region region;
-    region.outer = fitContour(node.Contour, fitTolerance);
+    region.outer = toLoop(node.Contour);
     for (const ClipperLib::PolyNode* hole : node.Childs) {
-        Profile loop = fitContour(hole->Contour, fitTolerance);
+        Profile loop = toLoop(hole->Contour);
         if (!loop.empty())
             region.holes.push_back(std::move(loop));
         for (const ClipperLib::PolyNode* island : hole->Childs)
-            collectOuter(*island, fitTolerance, out);
+            collectOuter(*island, toLoop, out);
     }
     if (!region.outer.empty())
         out.push_back(region.normalized());
@@ -84,10 +75,25 @@ ClipperLib::Paths regionPaths(const std::vector<Region>& regions, double chordTo
 
 std::vector<Region> regionsFromTree(const ClipperLib::PolyTree& tree, double fitTolerance)
 {
+    return regionsFromTree(
+        tree, [fitTolerance](const ClipperLib::Path& contour) { return fitContour(contour, fitTolerance); });
+}
+
+std::vector<Region> regionsFromTree(const ClipperLib::PolyTree& tree, const ContourToLoop& toLoop)
+{
     std::vector<Region> out;
     for (const ClipperLib::PolyNode* outer : tree.Childs)
-        collectOuter(*outer, fitTolerance, out);
+        collectOuter(*outer, toLoop, out);
     return out;
+}
+
+Profile fitContour(const ClipperLib::Path& contour, double fitTolerance)
+{
+    std::vector<Vec2> points;
+    points.reserve(contour.size());
+    for (const ClipperLib::IntPoint& p : contour)
+        points.push_back(fromClipper(p));
+    return fitLinesAndArcs(points, true, fitTolerance);
 }
 
 }  // namespace camwb::geom::detail

@@ -7,6 +7,7 @@
 
 #include <polyclipping/clipper.hpp>
 
+#include <functional>
 #include <vector>
 
 namespace camwb::geom::detail {
@@ -26,5 +27,10 @@ ClipperLib::Paths regionPaths(const std::vector<Region>& regions, double chordTo
 
 // Regions from the outer/hole nesting of a PolyTree, each loop fitted with `fitTolerance`.
 std::vector<Region> regionsFromTree(const ClipperLib::PolyTree& tree, double fitTolerance);
+// The same with each contour turned into a loop by `toLoop` (an empty loop is left out).
+using ContourToLoop = std::function<Profile(const ClipperLib::Path&)>;
+std::vector<Region> regionsFromTree(const ClipperLib::PolyTree& tree, const ContourToLoop& toLoop);
+// A contour as lines and arcs fitted within `fitTolerance` (ArcFit.h).
+Profile fitContour(const ClipperLib::Path& contour, double fitTolerance);
 
 }  // namespace camwb::geom::detail

@@ -24,7 +24,8 @@ void appendPoint(std::vector<Vec2>& piece, Vec2 p)
 
 bool segmentInside(Vec2 a, Vec2 b, const std::vector<Region>& regions)
 {
-    // One query: a plain scan over the loops beats building a RegionLocator.
+    // One query: a plain scan over the loops beats building a RegionLocator (RegionIndex does, for
+    // many).
     if (regions.empty())
         return false;
     std::vector<double> ts{0.0, 1.0};
@@ -42,10 +43,7 @@ bool segmentInside(Vec2 a, Vec2 b, const std::vector<Region>& regions)
             scan(hole);
     }
     std::sort(ts.begin(), ts.end());
-    for (std::size_t i = 0; i + 1 < ts.size(); ++i)
-        if (ts[i + 1] - ts[i] > 1e-12 && !anyContains(regions, lerp(a, b, 0.5 * (ts[i] + ts[i + 1]))))
-            return false;
-    return anyContains(regions, a) && anyContains(regions, b);
+    return detail::segmentWithin(a, b, ts, [&regions](Vec2 p) { return anyContains(regions, p); });
 }
 
 std::vector<std::vector<Vec2>> clipPolylines(const std::vector<std::vector<Vec2>>& polylines,

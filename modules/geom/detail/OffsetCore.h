@@ -6,6 +6,7 @@
 #include "base/Result.h"
 #include "geom/Profile.h"
 
+#include <optional>
 #include <string>
 #include <vector>
 

@@ -41,4 +41,15 @@ private:
     mutable unsigned m_query = 0;
 };
 
+// Whether the segment a-b lies within the regions, given the sorted parameters `ts` (0 and 1
+// included) where it meets their loops: the middle of every piece between them and both ends
+// inside (touching a loop counts as inside).
+template <class Contains> bool segmentWithin(Vec2 a, Vec2 b, const std::vector<double>& ts, Contains contains)
+{
+    for (std::size_t i = 0; i + 1 < ts.size(); ++i)
+        if (ts[i + 1] - ts[i] > 1e-12 && !contains(a + (b - a) * (0.5 * (ts[i] + ts[i + 1]))))
+            return false;
+    return contains(a) && contains(b);
+}
+
 }  // namespace camwb::geom::detail

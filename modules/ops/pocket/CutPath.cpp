@@ -121,12 +121,18 @@ std::vector<Segment> loopAtLongest(const std::vector<Segment>& loop)
 {
     std::size_t best = 0;
     double bestScore = -1;
+    Vec2 bestMiddle;
     for (std::size_t i = 0; i < loop.size(); ++i) {
         // Straight sides first: an entry or a link meets a line more predictably than an arc.
         const double score = loop[i].length() * (loop[i].isArc() ? 0.25 : 1.0);
-        if (score > bestScore) {
+        // Sides of the same length: the lowest (then leftmost), whichever the loop starts with.
+        const Vec2 middle = loop[i].pointAt(0.5);
+        const bool tie = std::abs(score - bestScore) <= 1e-9 * (1 + score);
+        if ((!tie && score > bestScore) ||
+            (tie && (middle.y < bestMiddle.y - 1e-9 || (middle.y <= bestMiddle.y + 1e-9 && middle.x < bestMiddle.x)))) {
             best = i;
             bestScore = score;
+            bestMiddle = middle;
         }
     }
     return loopFrom(loop, best, 0.5);

@@ -43,7 +43,7 @@ std::vector<Segment> loopFrom(const std::vector<Segment>& loop, std::size_t i, d
 // A closed loop started at its point nearest to p.
 std::vector<Segment> loopNearest(const std::vector<Segment>& loop, Vec2 p);
 // A closed loop started at the midpoint of its longest segment (a straight side where there is
-// one: entries and the first cut start there).
+// one: entries and the first cut start there; of equally long ones the lowest, then leftmost).
 std::vector<Segment> loopAtLongest(const std::vector<Segment>& loop);
 
 // Points along the path (arcs with chord error <= tolerance), first to last, no duplicates.

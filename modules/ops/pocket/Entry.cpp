@@ -107,13 +107,13 @@ void writeRamp(PathWriter& out, const Cut& cut, double top, double level, const 
 
 }  // namespace
 
-EntryPlanner::EntryPlanner(const std::vector<geom::Region>& region, const EntrySettings& settings) :
+EntryPlanner::EntryPlanner(const geom::RegionIndex& region, const EntrySettings& settings) :
     m_region(region),
     m_settings(settings)
 {
     if (settings.kind == EntryKind::Helix)
         m_helixCentres =
-            geom::offsetRegions(region, -(settings.helixRadius + settings.toleranceMm), settings.toleranceMm);
+            geom::offsetRegions(region.regions(), -(settings.helixRadius + settings.toleranceMm), settings.toleranceMm);
 }
 
 EntryPlan EntryPlanner::plan(const Cut& cut)
@@ -141,7 +141,7 @@ EntryPlan EntryPlanner::plan(const Cut& cut)
         const Vec2 toStart = p - c;
         const Vec2 dir = toStart.length() > 1e-9 ? toStart.normalized() : Vec2{1, 0};
         const Vec2 h = c + dir * m_settings.helixRadius;
-        if (distance(h, p) <= maxLink && geom::segmentInside(h, p, m_region))
+        if (distance(h, p) <= maxLink && m_region.segmentInside(h, p))
             return {EntryKind::Helix, h, c};
     }
     ++m_fallbacks;

@@ -3,6 +3,7 @@
 // itself, or a plunge. Planned once in 2D per cut, written at every level.
 #pragma once
 
+#include "geom/RegionIndex.h"
 #include "ops/ContourOp.h"  // EntryKind
 #include "ops/pocket/PathWriter.h"
 
@@ -28,14 +29,14 @@ struct EntryPlan {
 
 class EntryPlanner {
 public:
-    EntryPlanner(const std::vector<geom::Region>& region, const EntrySettings& settings);
+    EntryPlanner(const geom::RegionIndex& region, const EntrySettings& settings);
 
     // A helix falls back to a ramp where its circle fits nowhere near the cut start.
     EntryPlan plan(const Cut& cut);
     int helixFallbacks() const { return m_fallbacks; }
 
 private:
-    const std::vector<geom::Region>& m_region;
+    const geom::RegionIndex& m_region;
     EntrySettings m_settings;
     std::vector<geom::Region> m_helixCentres;  // where a helix centre may be
     int m_fallbacks = 0;

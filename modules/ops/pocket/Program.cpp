@@ -1,19 +1,17 @@
 #include "ops/pocket/Program.h"
 
-#include "geom/RegionOps.h"
-
 #include <cmath>
 
 namespace camwb::ops::pocket {
 
-Program makeProgram(std::vector<Cut> cuts, const std::vector<geom::Region>& region, EntryPlanner& planner)
+Program makeProgram(std::vector<Cut> cuts, const geom::RegionIndex& region, EntryPlanner& planner)
 {
     Program program;
     program.region = &region;
     program.cuts = std::move(cuts);
     for (std::size_t i = 0; i < program.cuts.size(); ++i) {
         const Cut& cut = program.cuts[i];
-        program.linked.push_back(i > 0 && geom::segmentInside(program.cuts[i - 1].end(), cut.start(), region));
+        program.linked.push_back(i > 0 && region.segmentInside(program.cuts[i - 1].end(), cut.start()));
         // Entries only where a cut may be entered (the first of each level, unlinked ones).
         program.entries.push_back(i == 0 || !program.linked.back() ? planner.plan(cut) : EntryPlan{});
     }
@@ -28,13 +26,12 @@ void writeProgram(PathWriter& out, const Program& program, double top, double le
         const Cut& cut = program.cuts[i];
         const Vec2 start = cut.start();
         const bool atLevel = out.hasPosition() && std::abs(out.position().z - level) < 1e-9;
-        if (atLevel &&
-            (program.linked[i] || (i == 0 && geom::segmentInside(out.position().xy(), start, *program.region)))) {
+        if (atLevel && (program.linked[i] || (i == 0 && program.region->segmentInside(out.position().xy(), start)))) {
             out.feed({start.x, start.y, level}, cutting);
         } else {
             const Vec2 s = program.entries[i].start;
             const bool atTop = out.hasPosition() && std::abs(out.position().z - top) < 1e-9;
-            if (atTop && geom::segmentInside(out.position().xy(), s, *program.region)) {
+            if (atTop && program.region->segmentInside(out.position().xy(), s)) {
                 out.feed({s.x, s.y, top}, cutting);  // across the level above, already cleared
             } else {
                 if (out.hasPosition())

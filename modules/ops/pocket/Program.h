@@ -3,6 +3,7 @@
 // height and enter again) and each entry's plan. Written once per level.
 #pragma once
 
+#include "geom/RegionIndex.h"
 #include "ops/pocket/Entry.h"
 
 #include <vector>
@@ -11,12 +12,12 @@ namespace camwb::ops::pocket {
 
 struct Program {
     std::vector<Cut> cuts;
-    std::vector<EntryPlan> entries;  // per cut
-    std::vector<bool> linked;        // cut i follows cut i-1 by a feed at the level
-    const std::vector<geom::Region>* region = nullptr;
+    std::vector<EntryPlan> entries;             // per cut
+    std::vector<bool> linked;                   // cut i follows cut i-1 by a feed at the level
+    const geom::RegionIndex* region = nullptr;  // where links may run
 };
 
-Program makeProgram(std::vector<Cut> cuts, const std::vector<geom::Region>& region, EntryPlanner& planner);
+Program makeProgram(std::vector<Cut> cuts, const geom::RegionIndex& region, EntryPlanner& planner);
 
 struct Clearances {
     double clearanceZ = 0, safeZ = 0;

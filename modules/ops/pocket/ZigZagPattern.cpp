@@ -1,6 +1,7 @@
 // Zig-zag pattern: parallel lines at the angle, stepover apart, clipped to the tool-centre region
 // and joined back and forth while the connector stays inside; then the wall pass round the
 // outer loops and the islands.
+#include "geom/RegionIndex.h"
 #include "geom/RegionOps.h"
 #include "ops/pocket/Patterns.h"
 
@@ -71,6 +72,7 @@ std::optional<std::vector<Cut>> zigZagPattern(const PatternInput& in, const Prog
         std::sort(pieces.begin(), pieces.end(),
                   [&](const Piece& x, const Piece& y) { return x.a.dot(along) < y.a.dot(along); });
 
+    const geom::RegionIndex links(region);
     std::vector<Cut> cuts;
     for (std::size_t j = 0; j < byLine.size(); ++j)
         for (Piece& first : byLine[j]) {
@@ -91,7 +93,7 @@ std::optional<std::vector<Cut>> zigZagPattern(const PatternInput& in, const Prog
                 std::sort(candidates.begin(), candidates.end(),
                           [](const auto& x, const auto& y) { return x.first < y.first; });
                 const auto linkable = std::find_if(candidates.begin(), candidates.end(), [&](const auto& c) {
-                    return geom::segmentInside(end, c.second.second ? c.second.first->a : c.second.first->b, region);
+                    return links.segmentInside(end, c.second.second ? c.second.first->a : c.second.first->b);
                 });
                 if (linkable == candidates.end())
                     break;

@@ -14,6 +14,10 @@
 #             makeSections at the step-down heights (OCC sections, then a pocket per section).
 # Building the face and the solid happen before the clock starts (our benchmark gets its region
 # ready too). FreeCAD's operation objects need a Job and GUI-side setup, so they are not used.
+# After the timed runs the script checks that FreeCAD did the work asked of it (makePocket takes
+# its pocket parameters from its own keywords, not from setParams): the passes nearest the face's
+# loops lie a tool radius from them, and the feed length per level times the stepover is about
+# the face's area. A figure for the wrong work stops the script with an error.
 import json
 import math
 import os
@@ -150,13 +154,32 @@ def pockets_by_levels():
     return shapes
 
 
+last_shapes = []
+
+
 def pocket_once():
     t0, c0 = time.perf_counter(), time.process_time()
     shapes = pockets_by_sections() if mode == 'sections' else pockets_by_levels()
     t1, c1 = time.perf_counter(), time.process_time()
     path, _ = Path.fromShapes(shapes=shapes, **path_params)
     t2, c2 = time.perf_counter(), time.process_time()
+    last_shapes[:] = shapes
     return path, len(shapes), (t1 - t0, t2 - t1, t2 - t0), (c1 - c0, c2 - c1, c2 - c0)
+
+
+def check_same_work(first_pocket, path, levels):
+    """The pocket has the tool radius and stepover asked for (see the top of this file)."""
+    z = first_pocket.BoundBox.ZMin
+    loops = Part.Compound(face.translated(V(0, 0, z - face.BoundBox.ZMin)).Wires)
+    nearest = Part.Compound(first_pocket.Wires).distToShape(loops)[0]
+    length, _ = feed_length_xy(path)
+    coverage = length / levels * spec['stepoverMm'] / face.Area
+    print('freecad-pocket check: nearest pass %.3f mm from the face (tool radius %.3f), feed per level x stepover '
+          '/ face area %.2f' % (nearest, radius, coverage))
+    if abs(nearest - radius) > 0.05 or not 0.6 < coverage < 1.4:
+        print('freecad-pocket error: FreeCAD did not pocket with tool radius %.3f and stepover %.3f'
+              % (radius, spec['stepoverMm']))
+        raise SystemExit(1)
 
 
 pocket_once()  # warm-up
@@ -170,5 +193,6 @@ for run in range(runs):
           'wall_s=%.3f commands=%d G0=%d G1=%d G2=%d G3=%d feed_xy_m=%.3f'
           % (pattern, mode, run + 1, levels, area_cpu, path_cpu, cpu, wall, len(path.Commands), counts['G0'],
              counts['G1'], counts['G2'], counts['G3'], length / 1000))
+check_same_work(last_shapes[0], path, levels)
 print('freecad-pocket pattern=%s mode=%s median_cpu_s=%.3f median_wall_s=%.3f runs=%d'
       % (pattern, mode, statistics.median(cpus), statistics.median(walls), runs))

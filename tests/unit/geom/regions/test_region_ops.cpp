@@ -1,5 +1,6 @@
-// RegionOps: offsets that give arcs back, nesting of loops, booleans, exact polyline clipping,
-// segment-inside tests and swept areas; empty and out-of-range inputs give empty results.
+// RegionOps: offsets in exact lines and arcs (fillets that collapse into sharp corners, loops
+// that merge where they cross), nesting of loops, booleans, exact polyline clipping, segment-inside
+// tests and swept areas; empty and out-of-range inputs give empty results.
 #include "RegionTestUtil.h"
 #include "geom/RegionOps.h"
 
@@ -23,17 +24,52 @@ TEST(OffsetRegions, ShrinkOfRoundedRectangleWithIslandGivesArcsBack)
     const double margin = offsetSafetyMargin(tol);
     for (const Segment& s : region.outer.segments)
         if (s.isArc()) {
-            EXPECT_NEAR(s.radius(), 10 - d - margin, tol);
+            EXPECT_NEAR(s.radius(), 10 - d - margin, 1e-9);  // exact: no discretisation left
         }
     ASSERT_EQ(region.holes.size(), 1u);
     EXPECT_EQ(t::countArcs(region.holes[0]), region.holes[0].segments.size());
     EXPECT_LE(region.holes[0].segments.size(), 3u);
     for (const Segment& s : region.holes[0].segments) {
-        EXPECT_NEAR(s.radius(), 5 + d + margin, tol);
-        EXPECT_NEAR(distance(s.center, {30, 20}), 0, tol);
+        EXPECT_NEAR(s.radius(), 5 + d + margin, 1e-9);
+        EXPECT_NEAR(distance(s.center, {30, 20}), 0, 1e-12);
     }
     EXPECT_LT(region.holes[0].signedArea(), 0);
     EXPECT_GT(region.outer.signedArea(), 0);
+}
+
+TEST(OffsetRegions, FilletsSmallerThanTheDistanceBecomeExactCorners)
+{
+    const double tol = 0.01, d = 3;
+    const std::vector<Region> result = offsetRegions({Region{t::roundedRectangle(0, 0, 40, 30, 1), {}}}, -d, tol);
+    ASSERT_EQ(result.size(), 1u);
+    const double at = d + offsetSafetyMargin(tol);
+    EXPECT_EQ(result[0].outer.segments.size(), 4u);
+    EXPECT_EQ(t::countArcs(result[0].outer), 0u);
+    for (const Segment& s : result[0].outer.segments) {
+        const bool onX = std::abs(s.start.x - at) < 1e-9 || std::abs(s.start.x - (40 - at)) < 1e-9;
+        const bool onY = std::abs(s.start.y - at) < 1e-9 || std::abs(s.start.y - (30 - at)) < 1e-9;
+        EXPECT_TRUE(onX && onY) << s.start.x << ", " << s.start.y;
+    }
+}
+
+TEST(OffsetRegions, IslandsThatGrowTogetherMeetExactlyOnBothCircles)
+{
+    const Vec2 a{40, 50}, b{52, 50};
+    const Region input{t::rectangle(0, 0, 100, 100), {t::circle(a, 3).reversed(), t::circle(b, 3).reversed()}};
+    const double tol = 0.01;
+    const std::vector<Region> result = offsetRegions({input}, -4, tol);
+    ASSERT_EQ(result.size(), 1u);
+    ASSERT_EQ(result[0].holes.size(), 1u);  // the two grown islands make one hole
+    const double r = 3 + 4 + offsetSafetyMargin(tol);
+    int crossings = 0;
+    for (const Segment& s : result[0].holes[0].segments) {
+        ASSERT_TRUE(s.isArc());
+        EXPECT_TRUE(distance(s.center, a) < 1e-12 || distance(s.center, b) < 1e-12);
+        EXPECT_NEAR(s.radius(), r, 1e-9);
+        if (std::abs(distance(s.start, a) - r) < 1e-9 && std::abs(distance(s.start, b) - r) < 1e-9)
+            ++crossings;
+    }
+    EXPECT_EQ(crossings, 2);
 }
 
 TEST(OffsetRegions, ShrinkSplitsAndVanishes)

@@ -1,7 +1,9 @@
 // Property tests over generated regions: booleans agree with point classification and with a fine
 // Clipper reference area; clipPolylines keeps exactly the inside parts, in order and direction;
-// segmentInside agrees with dense sampling wherever sampling is unambiguous.
+// segmentInside agrees with dense sampling wherever sampling is unambiguous, and RegionIndex gives
+// the answers of anyContains and segmentInside.
 #include "RegionTestUtil.h"
+#include "geom/RegionIndex.h"
 #include "geom/RegionOps.h"
 
 #include <gtest/gtest.h>
@@ -199,6 +201,32 @@ TEST(SegmentInsideProperty, AgreesWithDenseSampling)
     }
     EXPECT_GT(decided, 900);
     EXPECT_GT(insideCount, 150);
+}
+
+TEST(RegionIndexProperty, AnswersAsTheLoopScans)
+{
+    std::mt19937 rng(23);
+    std::uniform_real_distribution<double> unit(0, 1);
+    int inside = 0, links = 0;
+    for (int round = 0; round < 10; ++round) {
+        // Two regions, one with islands, and the points and links round them.
+        const std::vector<Region> regions{t::randomRegion(rng).normalized(),
+                                          shifted(t::randomRegion(rng).normalized(), {110, 0})};
+        const RegionIndex index(regions);
+        for (int i = 0; i < 300; ++i) {
+            const Vec2 a{210 * unit(rng), 100 * unit(rng)};
+            // Ends on loop vertices too: touching counts as inside, in both.
+            const Vec2 b =
+                i % 10 == 0 ? regions[0].outer.segments[0].start : a + Vec2{30 * unit(rng) - 15, 30 * unit(rng) - 15};
+            ASSERT_EQ(index.contains(a), anyContains(regions, a)) << a.x << "," << a.y;
+            const bool expected = segmentInside(a, b, regions);
+            ASSERT_EQ(index.segmentInside(a, b), expected) << a.x << "," << a.y << " " << b.x << "," << b.y;
+            inside += index.contains(a);
+            links += expected;
+        }
+    }
+    EXPECT_GT(inside, 500);
+    EXPECT_GT(links, 200);
 }
 
 TEST(RegionsFromLoopsProperty, NestedRingsAlternate)

@@ -119,6 +119,7 @@ void NcInspector::traceNow()
     const std::string path = m_path.toStdString();
     const std::optional<nc::Dialect> dialect = m_dialect;
     std::shared_ptr<const kinematics::Machine> machine = m_machine;
+    std::shared_ptr<const nc::ToolTable> tools = m_tools;
 
     if (m_running++ == 0)
         emit busyChanged(true);
@@ -131,12 +132,13 @@ void NcInspector::traceNow()
         watcher->deleteLater();
         finish(result);
     });
-    watcher->setFuture(QtConcurrent::run([result, text, path, dialect, machine, cancel] {
+    watcher->setFuture(QtConcurrent::run([result, text, path, dialect, machine, tools, cancel] {
         NcTraceRequest request;
         request.text = text.toStdString();
         request.path = path;
         request.dialect = dialect;
         request.machine = machine;
+        request.tools = tools;
         request.cancel = cancel.get();
         result->trace = traceNc(request);
         if (result->trace.cancelled || cancel->load())

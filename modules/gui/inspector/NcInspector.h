@@ -52,6 +52,9 @@ public:
     // next trace on: its limit warnings join the program's diagnostics. nullptr: no machine checks.
     void setMachine(std::shared_ptr<const kinematics::Machine> machine);
     const kinematics::Machine* machine() const { return m_machine.get(); }
+    // Tool sizes for cutter compensation where the program defines none (a posted program's D1
+    // means the job's tool), from the next trace on; nullptr: none.
+    void setToolTable(std::shared_ptr<const nc::ToolTable> tools) { m_tools = std::move(tools); }
 
     // A new program for the editor (opened or posted): the editor gets the dialect first (so a
     // huge text is highlighted once, not twice), then the text; the trace starts at once.
@@ -96,6 +99,7 @@ private:
     std::optional<nc::Dialect> m_dialect;
     QString m_path;
     std::shared_ptr<const kinematics::Machine> m_machine;
+    std::shared_ptr<const nc::ToolTable> m_tools;
     bool m_showInView = true;
     bool m_editorHasDiagnostics = false;
     int m_running = 0;

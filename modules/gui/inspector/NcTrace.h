@@ -8,6 +8,7 @@
 #include "kinematics/Machine.h"
 #include "nc/Dialect.h"
 #include "nc/Interpreter.h"
+#include "nc/ToolTable.h"
 #include "toolpath/Toolpath.h"
 
 #include <atomic>
@@ -84,6 +85,8 @@ struct NcTraceRequest {
     std::optional<nc::Dialect> dialect;  // nullopt: nc::guessDialect
     // Checked against its limits (kinematics::LimitCheck) as posting checks CL, when set.
     std::shared_ptr<const kinematics::Machine> machine;
+    // Tool sizes for cutter compensation where the program gives none (the job's tools).
+    std::shared_ptr<const nc::ToolTable> tools;
     const std::atomic<bool>* cancel = nullptr;
 };
 

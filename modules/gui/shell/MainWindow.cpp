@@ -320,6 +320,7 @@ void MainWindow::connectWorkbench()
         showProgramState();
         const auto machine = m_workbench->machine();
         m_inspector->setMachine(machine);
+        m_inspector->setToolTable(m_workbench->toolTable());
         m_inspectorPanel->setMachineName(
             machine ? QString::fromStdString(machine->name.empty() ? machine->id : machine->name) : QString());
         m_inspector->loadProgram(m_workbench->ncText(), base + '.' + m_workbench->ncExtension());

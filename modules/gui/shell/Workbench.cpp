@@ -41,6 +41,16 @@ occ::ProgressFn progressReporter(Workbench* workbench, const QString& what)
     };
 }
 
+// The job's tools as a tool table: what T and D mean in a program posted from the job, so the
+// inspector compensates the posted G41/G42 with the radius the CL was made for.
+nc::ToolTable toolTableOf(const document::Job& job)
+{
+    nc::ToolTable table;
+    for (const ops::ToolController& tc : job.tools)
+        table.set({tc.tool.number, tc.tool.number, tc.tool.diameterMm, tc.tool.lengthMm, tc.tool.name});
+    return table;
+}
+
 }  // namespace
 
 // What a background compute brings back; empty optionals mean "unchanged".
@@ -52,6 +62,7 @@ struct Workbench::ComputeOutcome {
     std::optional<post::PostOutput> nc;
     std::string ncExtension;
     std::shared_ptr<const kinematics::Machine> machine;  // what the post checked the program against
+    std::shared_ptr<const nc::ToolTable> tools;          // the job's tools, as the program was posted
     std::vector<base::Diagnostic> warnings;              // the operations' (left corners, helix fallbacks, ...)
     std::vector<std::string> errors;
     std::vector<document::OperationFailure> failures;  // every operation that cannot be made
@@ -372,6 +383,7 @@ void Workbench::startCompute()
         }
         if (options->machine)
             outcome->machine = std::make_shared<const kinematics::Machine>(*options->machine);
+        outcome->tools = std::make_shared<const nc::ToolTable>(toolTableOf(job));
         auto nc = post->run(program.value(), options.value());
         if (!nc) {
             outcome->errors.push_back(nc.error().toString());
@@ -423,6 +435,7 @@ void Workbench::finishCompute(const std::shared_ptr<ComputeOutcome>& outcome)
         m_nc = qs(outcome->nc->text);
         m_ncExtension = qs(outcome->ncExtension);
         m_machine = outcome->machine;
+        m_tools = outcome->tools;
         for (const base::Diagnostic& m : outcome->nc->messages)
             report(m.severity, qs(base::formatDiagnostic(m)));
         report(Severity::Note, tr("Posted %1 lines with %2").arg(m_nc.count('\n')).arg(qs(job().postId)));

@@ -5,6 +5,7 @@
 
 #include "base/Diagnostic.h"
 #include "document/JobDocument.h"
+#include "nc/ToolTable.h"
 #include "occ/DisplayMesh.h"
 #include "occ/Model.h"
 #include "post/PostProcessor.h"
@@ -50,6 +51,8 @@ public:
     // The machine the last posted program was checked against (the job's, else its post's
     // default); nullptr when there is none. The NC inspector checks the program against it too.
     std::shared_ptr<const kinematics::Machine> machine() const { return m_machine; }
+    // The job's tools as the last posted program was made with them: what its T and D words mean.
+    std::shared_ptr<const nc::ToolTable> toolTable() const { return m_tools; }
     // Why operation `index` cannot be made as the job stands (empty when it can or is untried).
     QString operationProblem(int index) const;
     // Why the job's model is not loaded (empty when it is, or the job has none).
@@ -121,6 +124,7 @@ private:
     QString m_ncExtension = QStringLiteral("nc");
     QString m_programProblem;
     std::shared_ptr<const kinematics::Machine> m_machine;
+    std::shared_ptr<const nc::ToolTable> m_tools;
     QString m_modelProblem;
     std::vector<QString> m_operationProblems;  // by operation index, from the last compute
     Prompter* m_prompter = nullptr;

@@ -333,6 +333,43 @@ private slots:
         QVERIFY(rig.inspector.trace()->result.diagnostics.empty());
     }
 
+    // G41 with the tool's size from the tool table the main window passes (the job's tools): the
+    // trace is the tool centre; without one, a warning and the programmed path.
+    void compensationTakesTheRadiusFromTheToolTable()
+    {
+        const QString program = QStringLiteral("G21 G90 G17 G54\n"  // 1
+                                               "T1 M6\n"            // 2
+                                               "S1000 M3\n"         // 3
+                                               "G0 X-10 Y-10 Z5\n"  // 4
+                                               "G1 Z-1 F100\n"      // 5
+                                               "G41 G1 X0 Y0\n"     // 6
+                                               "G1 X20\n"           // 7
+                                               "G1 Y20\n"           // 8
+                                               "G40 G1 X30 Y30\n"   // 9
+                                               "M30\n");            // 10
+        auto endYOfLine = [](const NcTrace& trace, int line) {
+            const std::vector<std::size_t> records = trace.recordsOfLine(line);
+            for (auto it = records.rbegin(); it != records.rend(); ++it)
+                if (const auto* l = std::get_if<tp::Linear>(&trace.program.record(*it)))
+                    return l->to.y;
+            return -1000.0;
+        };
+        auto table = std::make_shared<camwb::nc::ToolTable>();
+        table->set({1, 1, 6.0, 50.0, "D6"});
+        Rig rig;
+        rig.inspector.setToolTable(table);
+        LOAD_OR_FAIL(rig, program);
+        const auto& diagnostics = rig.inspector.trace()->result.diagnostics;
+        QVERIFY2(diagnostics.empty(), diagnostics.empty() ? "" : diagnostics.front().message.c_str());
+        QVERIFY(std::abs(std::abs(endYOfLine(*rig.inspector.trace(), 7)) - 3.0) < 1e-6);
+
+        rig.inspector.setToolTable(nullptr);
+        LOAD_OR_FAIL(rig, program);
+        QVERIFY(!rig.inspector.trace()->result.diagnostics.empty());
+        QCOMPARE(rig.inspector.trace()->result.diagnostics.front().severity, camwb::base::Severity::Warning);
+        QVERIFY(std::abs(endYOfLine(*rig.inspector.trace(), 7)) < 1e-9);
+    }
+
     void chosenDialectOverridesTheGuess()
     {
         Rig rig;

@@ -135,6 +135,19 @@ bool Parser::parseRAssignment(Block& block, const Token& t, const std::string& u
     return true;
 }
 
+// The "=expr" after an indexed target, and the word into the block.
+bool Parser::finishIndexedAssignment(Block& block, Word& w)
+{
+    if (!peekIs(Tok::Assign))
+        return error(here(), "'=' expected");
+    ++m_pos;
+    w.expr = parseExpr();
+    if (w.expr < 0)
+        return false;
+    addWord(block, WordKind::Assign, w.pos) = w;
+    return true;
+}
+
 // $TC_DPn[t, d]=expr: parameter n of cutting edge d of tool t (n = 6: the radius, 15: its wear).
 bool Parser::parseToolDataAssignment(Block& block, const Token& t, const std::string& u)
 {
@@ -158,14 +171,7 @@ bool Parser::parseToolDataAssignment(Block& block, const Token& t, const std::st
     if (!peekIs(Tok::RBracket))
         return error(here(), "']' expected");
     ++m_pos;
-    if (!peekIs(Tok::Assign))
-        return error(here(), "'=' expected");
-    ++m_pos;
-    w.expr = parseExpr();
-    if (w.expr < 0)
-        return false;
-    addWord(block, WordKind::Assign, w.pos) = w;
-    return true;
+    return finishIndexedAssignment(block, w);
 }
 
 // R[i]=expr, array[i]=expr and $TC_DPn[t,d]=expr; nullopt when the name is none of them.
@@ -195,14 +201,7 @@ std::optional<bool> Parser::parseIndexedAssignment(Block& block, const Token& t,
     }
     if (w.expr2 < 0)
         return false;
-    if (!peekIs(Tok::Assign))
-        return error(here(), "'=' expected");
-    ++m_pos;
-    w.expr = parseExpr();
-    if (w.expr < 0)
-        return false;
-    addWord(block, WordKind::Assign, w.pos) = w;
-    return true;
+    return finishIndexedAssignment(block, w);
 }
 
 }  // namespace camwb::nc::sinumerik

@@ -56,6 +56,7 @@ private:
     bool parseRAssignment(Block& block, const Token& t, const std::string& upperName);
     std::optional<bool> parseIndexedAssignment(Block& block, const Token& t, const std::string& upperName);
     bool parseToolDataAssignment(Block& block, const Token& t, const std::string& upperName);
+    bool finishIndexedAssignment(Block& block, Word& w);
     bool parseCallWord(Block& block, const Token& t, const std::string& upperName);
     bool parseMsg(Block& block, Pos pos);
     bool parseRepetitions(Block& block);

@@ -162,6 +162,10 @@ bool BlockTemplate::write(const MoveValues& given, OutputWriter& out, bool& miss
         m_skip[i] = 0;
         if (!word.variable)
             continue;
+        if (isAxis(word.value) && !move.known.has(static_cast<int>(word.value))) {
+            m_skip[i] = 1;
+            continue;
+        }
         if (word.value == MoveValue::Feed && !(move.feed > 0)) {
             m_skip[i] = 1;
             missingFeed = true;

@@ -67,6 +67,9 @@ double VariableObject::writtenValue(double value) const
 
 QString VariableObject::format(const QJSValue& value)
 {
+    // null: an axis the move does not give (onRapid/onLinear pass null for it): no word.
+    if (value.isNull())
+        return {};
     std::string text;
     if (value.isNumber() && std::isfinite(value.toNumber())) {
         char buffer[base::NumberFormat::kBufferSize];
@@ -226,9 +229,28 @@ void ScriptKernel::setBlockNumbering(const QJSValue& start, const QJSValue& step
 
 QJSValue ScriptKernel::getCurrentPosition()
 {
-    if (!m_position)
+    const std::optional<toolpath::Vec3> point = m_position.point();
+    if (!point)
         return QJSValue(QJSValue::NullValue);
-    return scriptPoint(*m_engine, *m_position);
+    return scriptPoint(*m_engine, *point);
+}
+
+QJSValue ScriptKernel::getCurrentAxis(const QJSValue& axis)
+{
+    const QString name = axis.toString().toLower();
+    const int index = name == QLatin1String("x")   ? 0
+                      : name == QLatin1String("y") ? 1
+                      : name == QLatin1String("z") ? 2
+                                                   : -1;
+    if (!axis.isString() || index < 0) {
+        m_engine->throwError(
+            QJSValue::TypeError,
+            QStringLiteral("getCurrentAxis() needs \"x\", \"y\" or \"z\", got '%1'").arg(axis.toString()));
+        return {};
+    }
+    if (!m_position.known(index))
+        return QJSValue(QJSValue::NullValue);
+    return QJSValue(m_position.value(index));
 }
 
 QJSValue ScriptKernel::getProperty(const QJSValue& name)

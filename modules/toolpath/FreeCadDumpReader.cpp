@@ -23,16 +23,6 @@ std::optional<std::pair<char, int>> splitName(const std::string& name)
     return std::pair<char, int>{letter, static_cast<int>(*number)};
 }
 
-// Commands whose X, Y and Z are positions of the tool (for completing the first move).
-bool isPositioning(const DumpEntry& e)
-{
-    const auto name = splitName(e.name);
-    if (!name || name->first != 'G')
-        return false;
-    const int code = name->second;
-    return code <= 3 || code == 73 || (code >= 81 && code <= 85);
-}
-
 bool sameParameters(const Cycle& a, const Cycle& b)
 {
     return a.kind == b.kind && a.clearanceZ == b.clearanceZ && a.retractZ == b.retractZ && a.topZ == b.topZ &&
@@ -278,36 +268,19 @@ std::optional<double> FreeCadDumpReader::feedOf(const DumpEntry& e)
     return m_feed;
 }
 
-Vec3 FreeCadDumpReader::target(std::size_t index)
+Vec3 FreeCadDumpReader::target(const DumpEntry& e, AxisMask& given) const
 {
-    const DumpEntry& e = m_entries[index];
-    double xyz[3] = {0, 0, 0};
+    Vec3 to;
+    given = AxisMask{0};
     for (int axis = 0; axis < 3; ++axis) {
-        const char key = static_cast<char>('X' + axis);
-        if (const DumpParameter* p = e.find(key)) {
-            xyz[axis] = p->value;
-        } else if (m_position[axis]) {
-            xyz[axis] = *m_position[axis];
-        } else {
-            const DumpParameter* later = nullptr;
-            int laterLine = 0;
-            for (std::size_t j = index + 1; j < m_entries.size() && !later; ++j) {
-                if (m_entries[j].kind == DumpEntry::Kind::Command && isPositioning(m_entries[j])) {
-                    later = m_entries[j].find(key);
-                    laterLine = m_entries[j].line;
-                }
-            }
-            if (later) {
-                xyz[axis] = later->value;
-                m_out.warn(std::string(1, key) + " is not known before this move: taken from line " +
-                               std::to_string(laterLine) + " (" + key + formatForMessage(later->value) + ")",
-                           e.namePos);
-            } else {
-                m_out.warn(std::string(1, key) + " is never given: 0 is assumed", e.namePos);
-            }
+        if (const DumpParameter* p = e.find(static_cast<char>('X' + axis))) {
+            setAxisValue(to, axis, p->value);
+            given.bits = static_cast<unsigned char>(given.bits | 1 << axis);
+        } else if (m_position.known(axis)) {
+            setAxisValue(to, axis, m_position.value(axis));
         }
     }
-    return {xyz[0], xyz[1], xyz[2]};
+    return to;
 }
 
 base::Status FreeCadDumpReader::move(std::size_t index, bool rapid)
@@ -318,19 +291,26 @@ base::Status FreeCadDumpReader::move(std::size_t index, bool rapid)
     if (!rapid)
         feedOf(e);
     m_cycleMode = false;
-    if (!e.find('X') && !e.find('Y') && !e.find('Z')) {
+    AxisMask given;
+    Vec3 to = target(e, given);
+    if (given.none()) {
         if (rapid)
             m_out.warn("G0 without X, Y or Z ignored", e.namePos);
         return {};
     }
-    const Vec3 to = target(index);
+    // Only the axes the command gives: the others stay where they are, which the dump may not
+    // have said yet ("G0 Z20" before the first X/Y), and the records never guess them.
+    for (int axis = 0; axis < 3; ++axis) {
+        if (!given.has(axis))
+            setAxisValue(to, axis, 0);
+    }
     if (rapid) {
-        emit(Rapid{to}, e.line);
+        emit(Rapid{to, given}, e.line);
     } else {
         warnNoFeed(e.line);
-        emit(Linear{to, m_feed}, e.line);
+        emit(Linear{to, m_feed, given}, e.line);
     }
-    m_position = {to.x, to.y, to.z};
+    m_position.moveTo(to, given);
     return {};
 }
 
@@ -341,13 +321,14 @@ base::Status FreeCadDumpReader::arc(std::size_t index, bool clockwise)
         return status;
     if (const DumpParameter* r = e.find('R'))
         return m_out.error("arcs with R are not supported (FreeCAD writes I, J, K)", r->pos);
-    if (!m_position[0] || !m_position[1] || !m_position[2])
+    if (!m_position.complete())
         return m_out.error("arc from an unknown position (no move with X, Y and Z before it)", e.namePos);
     m_cycleMode = false;
-    const Vec3 start{*m_position[0], *m_position[1], *m_position[2]};
+    const Vec3 start = m_position.value();
     feedOf(e);
     warnNoFeed(e.line);
-    const Vec3 to = target(index);
+    AxisMask given;
+    const Vec3 to = target(e, given);  // complete: the start is
     auto value = [&](char key) {
         const DumpParameter* p = e.find(key);
         return p ? p->value : 0.0;
@@ -369,7 +350,7 @@ base::Status FreeCadDumpReader::arc(std::size_t index, bool clockwise)
     for (const std::string& problem : arcRadiusProblems(start, a, std::nullopt, 0.01 + 1e-4 * magnitude))
         m_out.warn(problem, e.line);
     emit(a, e.line);
-    m_position = {to.x, to.y, to.z};
+    m_position.set(to);
     return {};
 }
 
@@ -383,11 +364,11 @@ base::Status FreeCadDumpReader::hole(std::size_t index, CycleKind kind)
     double xy[2] = {0, 0};
     for (int axis = 0; axis < 2; ++axis) {
         const DumpParameter* p = e.find(static_cast<char>('X' + axis));
-        if (!p && !m_position[axis])
+        if (!p && !m_position.known(axis))
             return m_out.error(e.name + std::string(" needs ") + static_cast<char>('X' + axis) +
                                    " (no position before it)",
                                e.namePos);
-        xy[axis] = p ? p->value : *m_position[axis];
+        xy[axis] = p ? p->value : m_position.value(axis);
     }
     // Z, R, Q and P are modal within the cycle mode, as on the controls FreeCAD writes for.
     auto modal = [&](char key, std::optional<double>& slot, bool required, const char* what) -> base::Status {
@@ -433,8 +414,8 @@ base::Status FreeCadDumpReader::hole(std::size_t index, CycleKind kind)
         m_run->cycle.holes.push_back(hole);
     } else {
         flushCycleRun();
-        if (m_position[2]) {
-            c.clearanceZ = *m_position[2];
+        if (m_position.known(2)) {
+            c.clearanceZ = m_position.value(2);
         } else {
             m_out.warn("no Z before the cycle: its clearance plane is taken as the R plane", e.namePos);
             c.clearanceZ = c.retractZ;
@@ -448,7 +429,7 @@ base::Status FreeCadDumpReader::hole(std::size_t index, CycleKind kind)
     }
     m_cycleMode = true;
     const Cycle& run = m_run->cycle;
-    m_position = {hole.x, hole.y, run.returnToClearance ? std::max(run.clearanceZ, run.retractZ) : run.retractZ};
+    m_position.set({hole.x, hole.y, run.returnToClearance ? std::max(run.clearanceZ, run.retractZ) : run.retractZ});
     return {};
 }
 

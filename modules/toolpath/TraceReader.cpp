@@ -1,6 +1,7 @@
 #include "toolpath/TraceReader.h"
 
 #include "toolpath/ClText.h"
+#include "toolpath/KnownPosition.h"
 #include "toolpath/RecordNames.h"
 
 #include <array>
@@ -96,6 +97,32 @@ public:
         return representable ? static_cast<int>(value) : 0;
     }
     Vec3 point() { return {number(), number(), number()}; }
+    // A straight move's target: "x y z", or the axes it gives by name in order ("z 20", "x 1 y 2").
+    Vec3 target(AxisMask& axes)
+    {
+        const Token* t = m_index < m_tokens.size() ? &m_tokens[m_index] : nullptr;
+        const bool named = t && !t->quoted && t->text.size() == 1 && t->text[0] >= 'x' && t->text[0] <= 'z';
+        if (!named) {
+            axes = AxisMask{};
+            return point();
+        }
+        Vec3 to;
+        axes = AxisMask{0};
+        while (!failed() && m_index < m_tokens.size()) {
+            const Token& axisToken = m_tokens[m_index];
+            if (axisToken.quoted || axisToken.text.size() != 1 || axisToken.text[0] < 'x' || axisToken.text[0] > 'z')
+                break;
+            const int axis = axisToken.text[0] - 'x';
+            if (axes.bits >> axis) {  // this axis or a later one already given
+                fail("axis '" + axisToken.text + "' out of order or given twice (x, y, z)", axisToken.column);
+                break;
+            }
+            ++m_index;
+            axes.bits = static_cast<unsigned char>(axes.bits | 1 << axis);
+            setAxisValue(to, axis, number());
+        }
+        return to;
+    }
     std::string text()
     {
         const Token* t = next("a quoted text");
@@ -174,9 +201,12 @@ base::Result<ClImport> readTrace(std::string_view text, const std::string& fileN
         const int kindColumn = static_cast<int>(line.find_first_not_of(" \t")) + 1;
         Record record;
         if (kind == "rapid") {
-            record = Rapid{in.point()};
+            Rapid r;
+            r.to = in.target(r.axes);
+            record = r;
         } else if (kind == "linear") {
-            Linear l{in.point()};
+            Linear l;
+            l.to = in.target(l.axes);
             in.keyword("f");
             l.feedMmPerMin = in.number();
             record = l;

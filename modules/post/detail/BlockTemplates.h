@@ -36,6 +36,7 @@ struct MoveValues {
     int plane = 17;  // 17 XY, 18 ZX, 19 YZ
     int comp = 40;   // 40 off, 41 left, 42 right
     bool helical = false;
+    toolpath::AxisMask known;  // end axes the kernel knows: the others get no word (never invented)
 
     double value(MoveValue which) const;
 };

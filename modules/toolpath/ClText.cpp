@@ -9,59 +9,63 @@
 
 namespace camwb::toolpath {
 
-std::vector<std::string_view> splitLines(std::string_view text)
+std::optional<ContentLine> nextContentLine(base::LineReader& lines)
 {
-    constexpr std::string_view bom = "\xEF\xBB\xBF";
-    if (text.substr(0, bom.size()) == bom)
-        text.remove_prefix(bom.size());
-    std::vector<std::string_view> lines;
-    while (!text.empty()) {
-        const std::size_t end = text.find('\n');
-        std::string_view line = text.substr(0, end);
-        if (!line.empty() && line.back() == '\r')
-            line.remove_suffix(1);
-        lines.push_back(line);
-        if (end == std::string_view::npos)
-            break;
-        text.remove_prefix(end + 1);
+    while (const std::optional<std::string_view> raw = lines.next()) {
+        const std::size_t indent = leadingSpaces(*raw);
+        const std::string_view text = trimRight(raw->substr(indent));
+        if (!text.empty())
+            return ContentLine{text, lines.lineNumber(), static_cast<int>(indent) + 1};
     }
-    return lines;
+    return std::nullopt;
 }
 
 void PositionedText::append(std::string_view piece, int line, int firstColumn)
 {
-    for (std::size_t i = 0; i < piece.size(); ++i) {
-        m_text.push_back(piece[i]);
-        m_positions.push_back({line, firstColumn + static_cast<int>(i)});
-    }
+    if (piece.empty())
+        return;
+    m_pieces.push_back({m_text.size(), {line, firstColumn}});
+    m_text.append(piece);
 }
 
 void PositionedText::appendBreak()
 {
     const TextPos after = position(m_text.size());
+    m_pieces.push_back({m_text.size(), after});
     m_text.push_back(' ');
-    m_positions.push_back(after);
+}
+
+void PositionedText::clear()
+{
+    m_text.clear();
+    m_pieces.clear();
 }
 
 TextPos PositionedText::position(std::size_t index) const
 {
-    if (index < m_positions.size())
-        return m_positions[index];
-    if (m_positions.empty())
+    if (m_text.empty())
         return {};
-    const TextPos last = m_positions.back();
-    return {last.line, last.column + 1};
+    const std::size_t at = std::min(index, m_text.size() - 1);
+    auto piece = m_pieces.rbegin();
+    while (piece->start > at)
+        ++piece;
+    // Past the end: the place just after the last character.
+    const int past = index >= m_text.size() ? 1 : 0;
+    return {piece->pos.line, piece->pos.column + static_cast<int>(at - piece->start) + past};
 }
 
-PositionedText PositionedText::slice(std::size_t begin, std::size_t end) const
+void PositionedText::slice(std::size_t begin, std::size_t end, PositionedText& out) const
 {
-    PositionedText out;
+    out.clear();
     end = std::min(end, m_text.size());
-    for (std::size_t i = begin; i < end; ++i) {
-        out.m_text.push_back(m_text[i]);
-        out.m_positions.push_back(m_positions[i]);
+    for (std::size_t i = 0; i < m_pieces.size(); ++i) {
+        const std::size_t pieceEnd = i + 1 < m_pieces.size() ? m_pieces[i + 1].start : m_text.size();
+        const std::size_t from = std::max(begin, m_pieces[i].start);
+        const std::size_t to = std::min(end, pieceEnd);
+        if (from < to)
+            out.append(std::string_view(m_text).substr(from, to - from), m_pieces[i].pos.line,
+                       m_pieces[i].pos.column + static_cast<int>(from - m_pieces[i].start));
     }
-    return out;
 }
 
 std::optional<double> parseNumber(std::string_view token)

@@ -12,12 +12,18 @@ namespace {
 constexpr double kSecondsPerMinute = 60;  // FreeCAD feeds are mm/s
 
 // "G81" -> {'G', 81}; nullopt for names that are not a letter and a whole number.
-std::optional<std::pair<char, int>> splitName(const std::string& name)
+std::optional<std::pair<char, int>> splitName(std::string_view name)
 {
     if (name.size() < 2)
         return std::nullopt;
-    const char letter = toUpper(name.substr(0, 1))[0];
-    const auto number = parseNumber(std::string_view(name).substr(1));
+    const char letter = name[0] >= 'a' && name[0] <= 'z' ? static_cast<char>(name[0] - 'a' + 'A') : name[0];
+    if (name.size() <= 4 && std::all_of(name.begin() + 1, name.end(), [](char c) { return c >= '0' && c <= '9'; })) {
+        int code = 0;  // the usual "G1", "G01", "M6": digits only
+        for (char c : name.substr(1))
+            code = code * 10 + (c - '0');
+        return std::pair<char, int>{letter, code};
+    }
+    const auto number = parseNumber(name.substr(1));
     if (!number || *number < 0 || *number > 999 || *number != std::floor(*number))
         return std::nullopt;
     return std::pair<char, int>{letter, static_cast<int>(*number)};
@@ -34,27 +40,35 @@ bool sameParameters(const Cycle& a, const Cycle& b)
 
 base::Result<ClImport> readFreeCadDump(std::string_view text, const std::string& fileName)
 {
-    return FreeCadDumpReader(text, fileName).read();
+    base::LineReader lines(text);
+    return readFreeCadDump(lines, fileName);
 }
 
-FreeCadDumpReader::FreeCadDumpReader(std::string_view text, std::string fileName) :
+base::Result<ClImport> readFreeCadDump(base::LineReader& lines, const std::string& fileName)
+{
+    return FreeCadDumpReader(lines, fileName).read();
+}
+
+FreeCadDumpReader::FreeCadDumpReader(base::LineReader& lines, std::string fileName) :
+    m_lines(lines),
     m_out(std::move(fileName)),
-    m_lines(splitLines(text))
+    m_scanner(lines, m_out)
 {
 }
 
 base::Result<ClImport> FreeCadDumpReader::read()
 {
-    auto entries = scanFreeCadDump(m_lines, m_out);
-    if (!entries)
-        return entries.error();
-    m_entries = std::move(entries).value();
-    for (std::size_t i = 0; i < m_entries.size(); ++i) {
-        if (auto status = entry(i); !status)
+    while (true) {
+        const base::Result<bool> more = m_scanner.next(m_entry);
+        if (!more)
+            return more.error();
+        if (!more.value())
+            break;
+        if (auto status = entry(m_entry); !status)
             return status.error();
     }
     flushCycleRun();
-    const int lastLine = static_cast<int>(m_lines.size());
+    const int lastLine = m_lines.lineNumber();
     if (m_cycleMode)
         m_out.warn("canned cycle still active at the end of the dump (no G80)", lastLine);
     return m_out.finish(lastLine);
@@ -82,9 +96,10 @@ void FreeCadDumpReader::warnNoFeed(int line)
     }
 }
 
-base::Status FreeCadDumpReader::entry(std::size_t index)
+base::Status FreeCadDumpReader::entry(const DumpEntry& e)
 {
-    const DumpEntry& e = m_entries[index];
+    const std::optional<std::string> justOpened = std::move(m_justOpened);
+    m_justOpened.reset();
     if (e.kind == DumpEntry::Kind::Note) {
         if (e.name.rfind("Path:", 0) == 0) {
             // Each path object of the job starts afresh: no cycle mode carries over.
@@ -93,6 +108,7 @@ base::Status FreeCadDumpReader::entry(std::size_t index)
             m_cycleZ = m_cycleR = m_cycleQ = m_cycleP = std::nullopt;
             SectionBegin section;
             section.operationName = std::string(trim(std::string_view(e.name).substr(5)));
+            m_justOpened = section.operationName;
             m_out.beginSection(std::move(section), e.line);
         } else {
             emit(Comment{e.name}, e.line);
@@ -107,32 +123,29 @@ base::Status FreeCadDumpReader::entry(std::size_t index)
         std::string text(trim(std::string_view(e.name).substr(1, e.name.size() - 2)));
         // FreeCAD starts every object's path with its label as a comment: right after the
         // "(Path: label)" note that opened the section, it names the section a second time.
-        const DumpEntry* before = index > 0 ? &m_entries[index - 1] : nullptr;
-        if (before && before->kind == DumpEntry::Kind::Note && before->name.rfind("Path:", 0) == 0 &&
-            trim(std::string_view(before->name).substr(5)) == text)
+        if (justOpened && *justOpened == text)
             return {};
         emit(Comment{std::move(text)}, e.line);
         return {};
     }
     const auto name = splitName(e.name);
     if (name && name->first == 'G')
-        return gCode(index, name->second);
+        return gCode(e, name->second);
     if (name && name->first == 'M')
-        return mCode(index, name->second);
+        return mCode(e, name->second);
     m_out.warn("unknown command " + e.name + " ignored", e.namePos);
     return {};
 }
 
-base::Status FreeCadDumpReader::gCode(std::size_t index, int code)
+base::Status FreeCadDumpReader::gCode(const DumpEntry& e, int code)
 {
-    const DumpEntry& e = m_entries[index];
     switch (code) {
     case 0:
     case 1:
-        return move(index, code == 0);
+        return move(e, code == 0);
     case 2:
     case 3:
-        return arc(index, code == 2);
+        return arc(e, code == 2);
     case 4: {
         const DumpParameter* p = e.find('P');
         if (!p || p->value < 0)
@@ -166,22 +179,22 @@ base::Status FreeCadDumpReader::gCode(std::size_t index, int code)
         emit(CutterComp{CutterCompSide::Right}, e.line);
         return {};
     case 73:
-        return hole(index, CycleKind::ChipBreak);
+        return hole(e, CycleKind::ChipBreak);
     case 80:
         flushCycleRun();
         m_cycleMode = false;
         m_cycleZ = m_cycleR = m_cycleQ = m_cycleP = std::nullopt;
         return {};
     case 81:
-        return hole(index, CycleKind::Drill);
+        return hole(e, CycleKind::Drill);
     case 82:
-        return hole(index, CycleKind::DrillDwell);
+        return hole(e, CycleKind::DrillDwell);
     case 83:
-        return hole(index, CycleKind::Peck);
+        return hole(e, CycleKind::Peck);
     case 84:
-        return hole(index, CycleKind::Tap);
+        return hole(e, CycleKind::Tap);
     case 85:
-        return hole(index, CycleKind::Bore);
+        return hole(e, CycleKind::Bore);
     case 98:
     case 99:
         m_returnToClearance = code == 98;
@@ -196,9 +209,8 @@ base::Status FreeCadDumpReader::gCode(std::size_t index, int code)
     }
 }
 
-base::Status FreeCadDumpReader::mCode(std::size_t index, int code)
+base::Status FreeCadDumpReader::mCode(const DumpEntry& e, int code)
 {
-    const DumpEntry& e = m_entries[index];
     switch (code) {
     case 0:
     case 1:
@@ -283,9 +295,8 @@ Vec3 FreeCadDumpReader::target(const DumpEntry& e, AxisMask& given) const
     return to;
 }
 
-base::Status FreeCadDumpReader::move(std::size_t index, bool rapid)
+base::Status FreeCadDumpReader::move(const DumpEntry& e, bool rapid)
 {
-    const DumpEntry& e = m_entries[index];
     if (auto status = noRotaryAxes(e); !status)
         return status;
     if (!rapid)
@@ -314,9 +325,8 @@ base::Status FreeCadDumpReader::move(std::size_t index, bool rapid)
     return {};
 }
 
-base::Status FreeCadDumpReader::arc(std::size_t index, bool clockwise)
+base::Status FreeCadDumpReader::arc(const DumpEntry& e, bool clockwise)
 {
-    const DumpEntry& e = m_entries[index];
     if (auto status = noRotaryAxes(e); !status)
         return status;
     if (const DumpParameter* r = e.find('R'))
@@ -354,9 +364,8 @@ base::Status FreeCadDumpReader::arc(std::size_t index, bool clockwise)
     return {};
 }
 
-base::Status FreeCadDumpReader::hole(std::size_t index, CycleKind kind)
+base::Status FreeCadDumpReader::hole(const DumpEntry& e, CycleKind kind)
 {
-    const DumpEntry& e = m_entries[index];
     if (auto status = noRotaryAxes(e); !status)
         return status;
     feedOf(e);

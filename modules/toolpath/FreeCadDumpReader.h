@@ -59,16 +59,16 @@ namespace camwb::toolpath {
 
 class FreeCadDumpReader {
 public:
-    FreeCadDumpReader(std::string_view text, std::string fileName);
+    FreeCadDumpReader(base::LineReader& lines, std::string fileName);
     base::Result<ClImport> read();
 
 private:
-    base::Status entry(std::size_t index);
-    base::Status gCode(std::size_t index, int code);
-    base::Status mCode(std::size_t index, int code);
-    base::Status move(std::size_t index, bool rapid);
-    base::Status arc(std::size_t index, bool clockwise);
-    base::Status hole(std::size_t index, CycleKind kind);
+    base::Status entry(const DumpEntry& e);
+    base::Status gCode(const DumpEntry& e, int code);
+    base::Status mCode(const DumpEntry& e, int code);
+    base::Status move(const DumpEntry& e, bool rapid);
+    base::Status arc(const DumpEntry& e, bool clockwise);
+    base::Status hole(const DumpEntry& e, CycleKind kind);
     base::Status noRotaryAxes(const DumpEntry& e) const;
     // The target of a motion: the axes it gives (`given`), the others from the current position
     // where known (0 where not: never read).
@@ -83,9 +83,13 @@ private:
         int line = 0;
     };
 
+    base::LineReader& m_lines;
     ClBuilder m_out;
-    std::vector<std::string_view> m_lines;
-    std::vector<DumpEntry> m_entries;
+    FreeCadDumpScanner m_scanner;
+    DumpEntry m_entry;  // the entry being read, its storage reused for the next
+    // The label of the section the previous entry opened ("(Path: label)"), while nothing else
+    // came after it: FreeCAD repeats it as a comment command, which is not a comment of its own.
+    std::optional<std::string> m_justOpened;
     KnownPosition m_position;
     Vec3 m_planeNormal{0, 0, 1};
     double m_feed = 0;

@@ -16,6 +16,8 @@ public:
     std::size_t size() const { return m_records.size(); }
     bool empty() const { return m_records.empty(); }
     const Record& record(std::size_t i) const { return m_records[i]; }
+    // For builders that complete a record after the fact (an importer's section header).
+    Record& record(std::size_t i) { return m_records[i]; }
     const SourceRef& source(std::size_t i) const { return m_sources[i]; }
     const std::vector<Record>& records() const { return m_records; }
 

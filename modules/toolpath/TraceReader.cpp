@@ -51,9 +51,9 @@ std::optional<std::vector<Token>> tokenize(std::string_view line, int& badColumn
     return tokens;
 }
 
-class LineReader {
+class LineParser {
 public:
-    LineReader(std::vector<Token> tokens, int line, std::size_t length, const std::string& file) :
+    LineParser(std::vector<Token> tokens, int line, std::size_t length, const std::string& file) :
         m_tokens(std::move(tokens)),
         m_line(line),
         m_endColumn(static_cast<int>(length) + 1),
@@ -184,19 +184,24 @@ constexpr std::array kSides{CutterCompSide::Off, CutterCompSide::Left, CutterCom
 
 base::Result<ClImport> readTrace(std::string_view text, const std::string& fileName)
 {
+    base::LineReader lines(text);
+    return readTrace(lines, fileName);
+}
+
+base::Result<ClImport> readTrace(base::LineReader& lines, const std::string& fileName)
+{
     ClImport out;
-    const std::vector<std::string_view> lines = splitLines(text);
     int section = -1, sections = 0;
-    for (std::size_t index = 0; index < lines.size(); ++index) {
-        const int lineNumber = static_cast<int>(index) + 1;
-        const std::string_view line = trimRight(lines[index]);
+    while (const std::optional<std::string_view> raw = lines.next()) {
+        const int lineNumber = lines.lineNumber();
+        const std::string_view line = trimRight(*raw);
         if (trim(line).empty() || trim(line).front() == '#')
             continue;
         int badColumn = 0;
         auto tokens = tokenize(line, badColumn);
         if (!tokens)
             return base::makeError("unterminated quoted text", fileName, lineNumber, badColumn);
-        LineReader in(std::move(*tokens), lineNumber, line.size(), fileName);
+        LineParser in(std::move(*tokens), lineNumber, line.size(), fileName);
         const std::string kind = in.word();
         const int kindColumn = static_cast<int>(line.find_first_not_of(" \t")) + 1;
         Record record;
@@ -282,13 +287,14 @@ base::Result<ClImport> readTrace(std::string_view text, const std::string& fileN
             if (in.failed())
                 return in.error();
             for (int h = 0; h < holes; ++h) {
-                if (++index >= lines.size())
+                const std::optional<std::string_view> next = lines.next();
+                if (!next)
                     return base::makeError("the cycle announces " + std::to_string(holes) + " holes but the file ends",
                                            fileName, lineNumber, kindColumn);
                 int column = 0;
-                const std::string_view holeLine = trimRight(lines[index]);
+                const std::string_view holeLine = trimRight(*next);
                 auto holeTokens = tokenize(holeLine, column);
-                LineReader hole(holeTokens.value_or(std::vector<Token>{}), static_cast<int>(index) + 1, holeLine.size(),
+                LineParser hole(holeTokens.value_or(std::vector<Token>{}), lines.lineNumber(), holeLine.size(),
                                 fileName);
                 hole.keyword("hole");
                 c.holes.push_back(hole.point());
@@ -341,6 +347,8 @@ base::Result<ClImport> readTrace(std::string_view text, const std::string& fileN
         if (kind == "endsection")
             section = -1;
     }
+    if (lines.readError())
+        return *lines.readError();
     return out;
 }
 

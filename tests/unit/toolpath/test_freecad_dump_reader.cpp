@@ -410,3 +410,23 @@ TEST(FreeCadDumpReader, MalformedDumpsGiveLineAndColumn)
         EXPECT_EQ(error.column, c.column) << c.text;
     }
 }
+
+TEST(FreeCadDumpReader, AFileIsReadInChunksAsTheTextIs)
+{
+    // More than two 1 MiB chunks, with wrapped commands and notes and CRLF lines, so that some of
+    // them fall on a chunk boundary.
+    std::string dump = "(Path: Long)\r\n" + kAt;
+    for (int i = 0; dump.size() < 2500000; ++i) {
+        const std::string x = std::to_string(i % 97), y = std::to_string(i % 89);
+        if (i % 50 == 0)
+            dump += "(a remark that wraps\n  onto the next line)\n";
+        if (i % 7 == 0)
+            dump += "Command G1 [ F:5 X:" + x + "\n   Y:" + y + "\r\n Z:-1 ]\n";
+        else
+            dump += "Command G1 [ X:" + x + " Y:" + y + " ]\r\n";
+        if (i % 1000 == 0)
+            dump += "Command G64 [ P:0.01 ]\n";  // a warning, repeated: one message listing lines
+    }
+    const std::string trace = test::sameFromFileAndText(ClFormat::FreeCadDump, dump);
+    EXPECT_GT(std::count(trace.begin(), trace.end(), '\n'), 50000);
+}

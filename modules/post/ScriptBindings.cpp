@@ -4,6 +4,7 @@
 
 #include <charconv>
 #include <cmath>
+#include <cstring>
 
 namespace camwb::post {
 
@@ -54,7 +55,24 @@ QString FormatObject::format(const QJSValue& value)
 
 std::size_t VariableObject::textOf(double value, char* out) const
 {
-    return m_format ? m_format->formatTo(value, out) : numberWordText(value, out);
+    if (m_cachedLength > 0 && value == m_cachedValue) {  // -0 and 0 have the same text: "-0" is never written
+        std::memcpy(out, m_cachedText, m_cachedLength);
+        return m_cachedLength;
+    }
+    const std::size_t length = m_format ? m_format->formatTo(value, out) : numberWordText(value, out);
+    if (length > 0 && length <= sizeof m_cachedText) {
+        std::memcpy(m_cachedText, out, length);
+        m_cachedValue = value;
+        m_cachedLength = length;
+    }
+    return length;
+}
+
+double VariableObject::resolution() const
+{
+    if (!m_format)
+        return 0.001;  // numberWordText: whole numbers or 3 decimals
+    return std::pow(10.0, -m_format->decimals) / std::abs(m_format->scale);
 }
 
 double VariableObject::writtenValue(double value) const
@@ -109,6 +127,7 @@ void VariableObject::setFormat(const QJSValue& format)
     }
     m_format = formatObject->numberFormat();
     m_value.reset();
+    m_cachedLength = 0;
 }
 
 QJSValue ScriptKernel::createFormat(const QJSValue& spec)

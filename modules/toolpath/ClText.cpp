@@ -68,8 +68,52 @@ void PositionedText::slice(std::size_t begin, std::size_t end, PositionedText& o
     }
 }
 
+namespace {
+
+constexpr double kExactPowersOfTen[] = {1e0,  1e1,  1e2,  1e3,  1e4,  1e5,  1e6,  1e7,  1e8,  1e9,  1e10, 1e11,
+                                        1e12, 1e13, 1e14, 1e15, 1e16, 1e17, 1e18, 1e19, 1e20, 1e21, 1e22};
+
+}  // namespace
+
+std::optional<double> parseDecimalPrefix(std::string_view text, std::size_t& length)
+{
+    // A mantissa below 2^53 and a power of ten up to 10^22 are exact doubles and IEEE division
+    // rounds correctly, so the quotient is the double nearest the decimal: exactly what
+    // std::from_chars gives (Clinger's fast path).
+    std::size_t i = 0;
+    const bool negative = !text.empty() && text[0] == '-';
+    if (!text.empty() && (text[0] == '-' || text[0] == '+'))
+        ++i;
+    unsigned long long mantissa = 0;
+    int digits = 0, decimals = 0;
+    bool point = false;
+    for (; i < text.size(); ++i) {
+        const char c = text[i];
+        if (c >= '0' && c <= '9') {
+            if (++digits > 18)
+                return std::nullopt;
+            mantissa = mantissa * 10 + static_cast<unsigned long long>(c - '0');
+            decimals += point ? 1 : 0;
+        } else if (c == '.' && !point) {
+            point = true;
+        } else if (c == 'e' || c == 'E' || c == '.') {  // an exponent, a second point: the long way
+            return std::nullopt;
+        } else {
+            break;
+        }
+    }
+    if (digits == 0 || mantissa > (1ull << 53) || decimals > 22)
+        return std::nullopt;
+    length = i;
+    const double value = static_cast<double>(mantissa) / kExactPowersOfTen[decimals];
+    return negative ? -value : value;
+}
+
 std::optional<double> parseNumber(std::string_view token)
 {
+    std::size_t length = 0;
+    if (const std::optional<double> simple = parseDecimalPrefix(token, length); simple && length == token.size())
+        return simple;
     // Checked by hand first: from_chars would also take "inf", "nan" and hex-like forms, and it
     // rejects the leading '+' that APT writers use.
     std::size_t i = 0;
@@ -112,30 +156,6 @@ std::optional<double> parseNumber(std::string_view token)
     if (error != std::errc() || end != body.data() + body.size() || !std::isfinite(value))
         return std::nullopt;
     return negative ? -value : value;
-}
-
-bool isSpace(char c) { return c == ' ' || c == '\t'; }
-
-std::size_t leadingSpaces(std::string_view text)
-{
-    std::size_t n = 0;
-    while (n < text.size() && isSpace(text[n]))
-        ++n;
-    return n;
-}
-
-std::string_view trim(std::string_view text)
-{
-    while (!text.empty() && (text.front() == ' ' || text.front() == '\t'))
-        text.remove_prefix(1);
-    return trimRight(text);
-}
-
-std::string_view trimRight(std::string_view text)
-{
-    while (!text.empty() && (text.back() == ' ' || text.back() == '\t'))
-        text.remove_suffix(1);
-    return text;
 }
 
 std::string toUpper(std::string_view text)

@@ -61,11 +61,28 @@ std::optional<ContentLine> nextContentLine(base::LineReader& lines);
 // A whole token as a finite number: [+|-]digits[.digits][(e|E)[+|-]digits], also "5." and ".5".
 // Anything else (two points, letters, inf, nan, overflow) gives nullopt.
 std::optional<double> parseNumber(std::string_view token);
+// The usual short decimal at the start of `text` ("[+|-]digits[.digits]", at most 18 digits) and
+// in `length` how many characters it takes: what parseNumber gives for them, bit for bit, without
+// finding the token's end first. nullopt when what starts there is not such a number (an
+// exponent, more digits): then read the whole token with parseNumber.
+std::optional<double> parseDecimalPrefix(std::string_view text, std::size_t& length);
 
-bool isSpace(char c);  // a blank or a tab
-std::size_t leadingSpaces(std::string_view text);
-std::string_view trim(std::string_view text);
-std::string_view trimRight(std::string_view text);
+// Inline: the importers call these for every character of a file.
+inline bool isSpace(char c) { return c == ' ' || c == '\t'; }  // a blank or a tab
+inline std::size_t leadingSpaces(std::string_view text)
+{
+    std::size_t n = 0;
+    while (n < text.size() && isSpace(text[n]))
+        ++n;
+    return n;
+}
+inline std::string_view trimRight(std::string_view text)
+{
+    while (!text.empty() && isSpace(text.back()))
+        text.remove_suffix(1);
+    return text;
+}
+inline std::string_view trim(std::string_view text) { return trimRight(text.substr(leadingSpaces(text))); }
 std::string toUpper(std::string_view text);
 bool equalsNoCase(std::string_view a, std::string_view b);
 bool startsWithNoCase(std::string_view text, std::string_view prefix);

@@ -24,13 +24,11 @@ char upper(char c) { return c >= 'a' && c <= 'z' ? static_cast<char>(c - 'a' + '
 
 }  // namespace
 
-const DumpParameter* DumpEntry::find(char key) const
+void DumpEntry::clearParameters()
 {
-    for (const DumpParameter& p : parameters) {
-        if (p.key == key)
-            return &p;
-    }
-    return nullptr;
+    for (const DumpParameter& p : parameters)
+        m_index[static_cast<std::size_t>(p.key - 'A')] = -1;
+    parameters.clear();
 }
 
 base::Result<bool> FreeCadDumpScanner::next(DumpEntry& entry)
@@ -57,7 +55,7 @@ base::Status FreeCadDumpScanner::note(std::string_view line, int lineNumber, int
     entry.line = lineNumber;
     entry.namePos = {lineNumber, column + 1};
     entry.name.clear();
-    entry.parameters.clear();
+    entry.clearParameters();
     std::string_view rest = line.substr(1);
     while (true) {
         const std::size_t close = rest.rfind(')');
@@ -78,7 +76,7 @@ base::Status FreeCadDumpScanner::command(std::string_view line, int lineNumber, 
 {
     entry.kind = DumpEntry::Kind::Command;
     entry.line = lineNumber;
-    entry.parameters.clear();
+    entry.clearParameters();
     std::size_t p = 7;
     while (p < line.size() && isSpace(line[p]))
         ++p;
@@ -111,10 +109,18 @@ base::Status FreeCadDumpScanner::command(std::string_view line, int lineNumber, 
         return m_out.error("expected '[' after the command name", at(p));
     const TextPos open = at(p);
 
-    m_parameters.clear();
     std::string_view rest = line.substr(p + 1);
     int restLine = lineNumber;
     int restColumn = column + static_cast<int>(p) + 1;
+    if (const std::size_t close = rest.find(']'); close != std::string_view::npos) {
+        // On one line, as nearly every command is: read the parameters where they stand.
+        const std::string_view after = rest.substr(close + 1);
+        if (!trim(after).empty())
+            return m_out.error("unexpected text after ']'", restLine,
+                               restColumn + static_cast<int>(close + 1 + leadingSpaces(after)));
+        return parameters(rest.substr(0, close), {nullptr, restLine, restColumn}, entry);
+    }
+    m_parameters.clear();
     while (true) {
         const std::size_t close = rest.find(']');
         if (close != std::string_view::npos) {
@@ -137,35 +143,46 @@ base::Status FreeCadDumpScanner::command(std::string_view line, int lineNumber, 
         restColumn = static_cast<int>(indent) + 1;
         rest = trimRight(raw.substr(indent));
     }
-    return parameters(entry);
+    return parameters(m_parameters.text(), {&m_parameters, 0, 0}, entry);
 }
 
-base::Status FreeCadDumpScanner::parameters(DumpEntry& entry)
+base::Status FreeCadDumpScanner::parameters(std::string_view t, Where where, DumpEntry& entry)
 {
-    const std::string& t = m_parameters.text();
+    const std::size_t n = t.size();
     std::size_t i = 0;
     while (true) {
-        while (i < t.size() && isSpace(t[i]))
+        while (i < n && isSpace(t[i]))
             ++i;
-        if (i >= t.size())
+        if (i >= n)
             return {};
         const std::size_t start = i;
-        while (i < t.size() && !isSpace(t[i]))
-            ++i;
-        const std::string_view token = std::string_view(t).substr(start, i - start);
-        const char key = token[0];
+        auto token = [&] {
+            std::size_t end = start;
+            while (end < n && !isSpace(t[end]))
+                ++end;
+            return t.substr(start, end - start);
+        };
+        const char key = t[start];
         const bool letter = (key >= 'A' && key <= 'Z') || (key >= 'a' && key <= 'z');
-        if (token.size() < 2 || token[1] != ':' || !letter)
-            return m_out.error("malformed parameter '" + std::string(token) + "' (expected a letter, ':' and a number)",
-                               m_parameters.position(start));
-        const auto value = parseNumber(token.substr(2));
-        if (!value)
-            return m_out.error("malformed number '" + std::string(token.substr(2)) + "'",
-                               m_parameters.position(start + 2));
-        const DumpParameter parameter{upper(key), *value, m_parameters.position(start)};
+        if (!letter || start + 1 >= n || t[start + 1] != ':')
+            return m_out.error("malformed parameter '" + std::string(token()) +
+                                   "' (expected a letter, ':' and a number)",
+                               where(start));
+        // The number as it is read, up to the blank after it; anything unusual the long way.
+        std::size_t length = 0;
+        std::optional<double> value = parseDecimalPrefix(t.substr(start + 2), length);
+        i = start + 2 + length;
+        if (!value || (i < n && !isSpace(t[i]))) {
+            const std::string_view whole = token();
+            i = start + whole.size();
+            value = parseNumber(whole.substr(2));
+            if (!value)
+                return m_out.error("malformed number '" + std::string(whole.substr(2)) + "'", where(start + 2));
+        }
+        const DumpParameter parameter{upper(key), *value, where(start)};
         if (entry.find(parameter.key))
             return m_out.error(std::string("parameter ") + parameter.key + " given twice", parameter.pos);
-        entry.parameters.push_back(parameter);
+        entry.add(parameter);
     }
 }
 

@@ -8,6 +8,7 @@
 #include "toolpath/ClBuilder.h"
 #include "toolpath/ClText.h"
 
+#include <array>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -28,7 +29,27 @@ struct DumpEntry {
     TextPos namePos;
     std::vector<DumpParameter> parameters;
 
-    const DumpParameter* find(char key) const;
+    const DumpParameter* find(char key) const
+    {
+        const int at = key >= 'A' && key <= 'Z' ? m_index[key - 'A'] : -1;
+        return at < 0 ? nullptr : &parameters[static_cast<std::size_t>(at)];
+    }
+    void add(const DumpParameter& parameter)
+    {
+        m_index[static_cast<std::size_t>(parameter.key - 'A')] = static_cast<signed char>(parameters.size());
+        parameters.push_back(parameter);
+    }
+    void clearParameters();
+
+private:
+    std::array<signed char, 26> m_index = filledIndex();  // by letter: position in parameters, -1: none
+
+    static constexpr std::array<signed char, 26> filledIndex()
+    {
+        std::array<signed char, 26> index{};
+        index.fill(-1);
+        return index;
+    }
 };
 
 // Reads the entries of a dump one after the other. Malformed lines ('[' without ']', a parameter
@@ -44,11 +65,22 @@ public:
 private:
     base::Status note(std::string_view line, int lineNumber, int column, DumpEntry& entry);
     base::Status command(std::string_view line, int lineNumber, int column, DumpEntry& entry);
-    base::Status parameters(DumpEntry& entry);
+    // Where character i of the parameter text sits: in `text` when the parameters were joined
+    // from several lines, else on `line` from `column` on.
+    struct Where {
+        const PositionedText* text;
+        int line;
+        int column;
+        TextPos operator()(std::size_t i) const
+        {
+            return text ? text->position(i) : TextPos{line, column + static_cast<int>(i)};
+        }
+    };
+    base::Status parameters(std::string_view text, Where where, DumpEntry& entry);
 
     base::LineReader& m_lines;
     const ClBuilder& m_out;
-    PositionedText m_parameters;  // the text between '[' and ']', reused
+    PositionedText m_parameters;  // the text between '[' and ']' joined from several lines, reused
 };
 
 }  // namespace camwb::toolpath

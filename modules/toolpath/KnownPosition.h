@@ -10,9 +10,9 @@
 
 namespace camwb::toolpath {
 
-double axisValue(const Vec3& p, int axis);  // 0 X, 1 Y, 2 Z
-void setAxisValue(Vec3& p, int axis, double value);
-const char* axisName(int axis);  // "X", "Y", "Z"
+// Inline: every move of a million-move program goes through these.
+inline double axisValue(const Vec3& p, int axis) { return axis == 0 ? p.x : axis == 1 ? p.y : p.z; }  // 0 X, 1 Y, 2 Z
+inline void setAxisValue(Vec3& p, int axis, double value) { (axis == 0 ? p.x : axis == 1 ? p.y : p.z) = value; }
 
 class KnownPosition {
 public:
@@ -20,7 +20,18 @@ public:
     explicit KnownPosition(const Vec3& point) : m_value(point), m_known{AxisMask::kAll} {}
 
     // The axes in `axes` take their values from `to`; the others stay as they are.
-    void moveTo(const Vec3& to, AxisMask axes);
+    void moveTo(const Vec3& to, AxisMask axes)
+    {
+        if (axes.all()) {
+            m_value = to;
+        } else {
+            for (int axis = 0; axis < 3; ++axis) {
+                if (axes.has(axis))
+                    setAxisValue(m_value, axis, axisValue(to, axis));
+            }
+        }
+        m_known.bits |= axes.bits;
+    }
     void moveTo(const Rapid& r) { moveTo(r.to, r.axes); }
     void moveTo(const Linear& l) { moveTo(l.to, l.axes); }
     void set(const Vec3& point) { *this = KnownPosition(point); }
@@ -31,7 +42,7 @@ public:
     bool complete() const { return m_known.all(); }
     bool any() const { return !m_known.none(); }
     // The point, when every axis is known.
-    std::optional<Vec3> point() const;
+    std::optional<Vec3> point() const { return complete() ? std::optional<Vec3>(m_value) : std::nullopt; }
     // The values; those of unknown axes mean nothing (0).
     const Vec3& value() const { return m_value; }
     double value(int axis) const { return axisValue(m_value, axis); }

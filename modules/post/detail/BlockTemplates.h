@@ -64,10 +64,12 @@ public:
     bool endsWhereItStarts(const MoveValues& move, int planeIndex) const;
 
 private:
-    // Scratch, sized once: one number buffer per word, so that the hot path does not allocate.
+    // Scratch, sized once: one number buffer per word and the block being assembled, so that the
+    // hot path neither allocates nor appends word by word to the output.
     std::vector<char> m_buffers;
     std::vector<std::string_view> m_texts;
     std::vector<char> m_skip;
+    std::vector<char> m_block;
 };
 
 struct BlockTemplates {

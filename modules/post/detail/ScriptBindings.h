@@ -57,6 +57,9 @@ public:
 
     // The C++ side of format(): the number's text (into a kBufferSize buffer), then modal().
     std::size_t textOf(double value, char* out) const;
+    // The smallest difference two values need to be written differently (one unit of the last
+    // decimal, scale undone); values further apart never have the same text.
+    double resolution() const;
     // The value as the control reads it back from that text (rounded, scale undone).
     double writtenValue(double value) const;
     ModalValue& modal() { return m_value; }
@@ -66,6 +69,11 @@ private:
     ModalValue m_value;
     std::optional<base::NumberFormat> m_format;
     bool m_acceptsText;
+    // The last number formatted and its text: a block template formats the same Z or F block after
+    // block, and copying the text is cheaper than formatting it again.
+    mutable double m_cachedValue = 0;
+    mutable std::size_t m_cachedLength = 0;  // 0: nothing cached
+    mutable char m_cachedText[32];
 };
 
 class ScriptKernel : public QObject {

@@ -23,6 +23,9 @@ struct Item {
     std::size_t index;  // in its toolpath
     Vec3 start;         // position before the record
     Vec3 end;           // and after it (a move that gives only some axes keeps the others)
+    // The move after a rapid left to the machine that does not move in the CL's coordinates:
+    // LinuxCNC moves there only when the new tool's length changed the height under the rapid.
+    bool stillUnlessLengthChanged = false;
 };
 
 bool sameWritten(const Vec3& a, const Vec3& b)
@@ -58,7 +61,8 @@ std::vector<Item> items(const Toolpath& path)
         } else if (const auto* arc = std::get_if<Arc>(&record)) {
             position = arc->to;
         }
-        result.push_back({&record, i, start, position});
+        const bool still = fromMachineHeight && !std::holds_alternative<Arc>(record) && sameWritten(start, position);
+        result.push_back({&record, i, start, position, still});
     }
     return result;
 }
@@ -124,8 +128,11 @@ std::optional<std::string> Comparison::run()
                 return difference;
             continue;
         }
-        if (auto difference = same(e, m_actual[m_j]))
+        if (auto difference = same(e, m_actual[m_j])) {
+            if (e.stillUnlessLengthChanged)
+                continue;
             return difference;
+        }
         if (const auto* mode = std::get_if<FeedModeChange>(e.record))
             m_inverseTime = mode->mode == FeedMode::InverseTime;
         ++m_j;

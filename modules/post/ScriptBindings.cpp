@@ -68,11 +68,11 @@ std::size_t VariableObject::textOf(double value, char* out) const
     return length;
 }
 
-double VariableObject::resolution() const
+double VariableObject::resolutionOf(const std::optional<base::NumberFormat>& format)
 {
-    if (!m_format)
+    if (!format)
         return 0.001;  // numberWordText: whole numbers or 3 decimals
-    return std::pow(10.0, -m_format->decimals) / std::abs(m_format->scale);
+    return std::pow(10.0, -format->decimals) / std::abs(format->scale);
 }
 
 double VariableObject::writtenValue(double value) const
@@ -126,6 +126,7 @@ void VariableObject::setFormat(const QJSValue& format)
         return;
     }
     m_format = formatObject->numberFormat();
+    m_resolution = resolutionOf(m_format);
     m_value.reset();
     m_cachedLength = 0;
 }

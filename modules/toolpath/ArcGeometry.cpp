@@ -20,6 +20,20 @@ Vec3 unit(const Vec3& v)
     return length > 0 ? v * (1.0 / length) : Vec3{0, 0, 1};
 }
 
+enum class Plane { XY, ZX, YZ, Other };
+
+// Which principal plane a unit normal is the axis of (either sign).
+Plane planeOf(const Vec3& n)
+{
+    if (std::abs(std::abs(n.z) - 1) < kAxisTolerance)
+        return Plane::XY;
+    if (std::abs(std::abs(n.y) - 1) < kAxisTolerance)
+        return Plane::ZX;
+    if (std::abs(std::abs(n.x) - 1) < kAxisTolerance)
+        return Plane::YZ;
+    return Plane::Other;
+}
+
 // Angle in (0, 2*pi] from the in-plane radius vector `from` to `to` about the unit normal `n`, in
 // the direction of travel; vectors within kPointTolerance of each other are a full turn.
 double sweepBetween(const Vec3& from, const Vec3& to, const Vec3& n, bool clockwise)
@@ -57,16 +71,16 @@ std::optional<ArcFrame> frameOf(const Vec3& start, const Arc& arc)
     f.clockwise = arc.clockwise;
     Vec3 n = unit(arc.normal);
     // Seen against -Z, clockwise is counter-clockwise seen against +Z: flip both to the positive axis.
-    const std::string plane = arcPlane(n);
-    if ((plane == "XY" && n.z < 0) || (plane == "ZX" && n.y < 0) || (plane == "YZ" && n.x < 0)) {
+    const Plane plane = planeOf(n);
+    if ((plane == Plane::XY && n.z < 0) || (plane == Plane::ZX && n.y < 0) || (plane == Plane::YZ && n.x < 0)) {
         n = n * -1.0;
         f.clockwise = !f.clockwise;
     }
-    if (plane == "XY")
+    if (plane == Plane::XY)
         n = {0, 0, 1};
-    else if (plane == "ZX")
+    else if (plane == Plane::ZX)
         n = {0, 1, 0};
-    else if (plane == "YZ")
+    else if (plane == Plane::YZ)
         n = {1, 0, 0};
     f.normal = n;
 
@@ -91,13 +105,16 @@ std::optional<ArcFrame> frameOf(const Vec3& start, const Arc& arc)
 
 std::string arcPlane(const Vec3& normal)
 {
-    const Vec3 n = unit(normal);
-    if (std::abs(std::abs(n.z) - 1) < kAxisTolerance)
+    switch (planeOf(unit(normal))) {
+    case Plane::XY:
         return "XY";
-    if (std::abs(std::abs(n.y) - 1) < kAxisTolerance)
+    case Plane::ZX:
         return "ZX";
-    if (std::abs(std::abs(n.x) - 1) < kAxisTolerance)
+    case Plane::YZ:
         return "YZ";
+    case Plane::Other:
+        break;
+    }
     return {};
 }
 

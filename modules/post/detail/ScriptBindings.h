@@ -43,6 +43,7 @@ public:
         m_engine(engine),
         m_value(std::move(prefix), force),
         m_format(format),
+        m_resolution(resolutionOf(format)),
         m_acceptsText(acceptsText)
     {
     }
@@ -59,15 +60,18 @@ public:
     std::size_t textOf(double value, char* out) const;
     // The smallest difference two values need to be written differently (one unit of the last
     // decimal, scale undone); values further apart never have the same text.
-    double resolution() const;
+    double resolution() const { return m_resolution; }
     // The value as the control reads it back from that text (rounded, scale undone).
     double writtenValue(double value) const;
     ModalValue& modal() { return m_value; }
 
 private:
+    static double resolutionOf(const std::optional<base::NumberFormat>& format);
+
     QJSEngine* m_engine;
     ModalValue m_value;
     std::optional<base::NumberFormat> m_format;
+    double m_resolution;  // of m_format, kept: block templates ask for it on every move
     bool m_acceptsText;
     // The last number formatted and its text: a block template formats the same Z or F block after
     // block, and copying the text is cheaper than formatting it again.

@@ -36,13 +36,17 @@ void LineReader::Closer::operator()(int* fd) const
     delete fd;
 }
 
-LineReader::LineReader(std::string_view text) : m_data(text.data()), m_size(text.size()) { skipByteOrderMark(); }
+LineReader::LineReader(std::string_view text) : m_data(text.data()), m_size(text.size()), m_sizeBytes(text.size())
+{
+    skipByteOrderMark();
+}
 
-LineReader::LineReader(std::unique_ptr<int, Closer> file, std::string path) :
+LineReader::LineReader(std::unique_ptr<int, Closer> file, std::string path, std::size_t sizeBytes) :
     m_file(std::move(file)),
     m_path(std::move(path)),
     m_buffer(kChunkBytes),
-    m_atEnd(false)
+    m_atEnd(false),
+    m_sizeBytes(sizeBytes)
 {
     m_data = m_buffer.data();
     while (m_size < kByteOrderMark.size() && fill(false)) {
@@ -55,7 +59,9 @@ Result<LineReader> LineReader::open(const std::string& path)
     auto fd = openForReading(path);
     if (!fd)
         return fd.error();
-    return LineReader(std::unique_ptr<int, Closer>(new int(fd.value())), path);
+    struct stat info {};
+    const std::size_t size = ::fstat(fd.value(), &info) == 0 ? static_cast<std::size_t>(info.st_size) : 0;
+    return LineReader(std::unique_ptr<int, Closer>(new int(fd.value())), path, size);
 }
 
 void LineReader::skipByteOrderMark()

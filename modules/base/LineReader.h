@@ -30,6 +30,8 @@ public:
     std::optional<std::string_view> peek();
     // 1-based number of the line next() gave last (0 before the first, the count at the end).
     int lineNumber() const { return m_lineNumber; }
+    // Bytes in the whole text (a file's size when it was opened): readers size what they build.
+    std::size_t sizeBytes() const { return m_sizeBytes; }
     // Set when the file could not be read to its end (the lines read so far are good).
     const std::optional<Error>& readError() const { return m_readError; }
 
@@ -41,7 +43,7 @@ private:
         std::size_t begin = 0, end = 0, next = 0;  // content [begin, end); the following line at next
     };
 
-    LineReader(std::unique_ptr<int, Closer> file, std::string path);
+    LineReader(std::unique_ptr<int, Closer> file, std::string path, std::size_t sizeBytes);
     // The line starting at `from`; false at the end. `peeking`: keep the last line's view valid.
     bool find(std::size_t from, Span& span, bool peeking);
     bool fill(bool peeking);  // reads more; false when nothing more came
@@ -58,6 +60,7 @@ private:
     std::size_t m_current = 0;    // start of the line next() gave last (kept valid by fill())
     std::size_t m_position = 0;   // where the line after it starts
     std::optional<Span> m_peeked;
+    std::size_t m_sizeBytes = 0;
     int m_lineNumber = 0;
     std::optional<Error> m_readError;
 };

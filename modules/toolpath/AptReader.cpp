@@ -52,6 +52,7 @@ AptReader::AptReader(base::LineReader& lines, std::string fileName) :
     m_out(std::move(fileName)),
     m_scanner(lines, m_out)
 {
+    m_out.expectText(lines.sizeBytes());
 }
 
 base::Result<ClImport> AptReader::read()

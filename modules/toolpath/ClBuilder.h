@@ -16,6 +16,9 @@ namespace camwb::toolpath {
 class ClBuilder {
 public:
     explicit ClBuilder(std::string fileName) : m_fileName(std::move(fileName)) {}
+    // Sizes the toolpath for a text of `bytes`: a CL statement is rarely under 32 bytes, and the
+    // room a shorter file does not fill is never touched, so it costs no memory.
+    void expectText(std::size_t bytes) { m_path.reserve(bytes / 32); }
 
     // Adds a record of the statement at `line` to the open section (or to none).
     void add(Record record, int line);

@@ -54,6 +54,7 @@ FreeCadDumpReader::FreeCadDumpReader(base::LineReader& lines, std::string fileNa
     m_out(std::move(fileName)),
     m_scanner(lines, m_out)
 {
+    m_out.expectText(lines.sizeBytes());
 }
 
 base::Result<ClImport> FreeCadDumpReader::read()

@@ -12,6 +12,8 @@ class Toolpath {
 public:
     void add(Record record, SourceRef source = {});
     void append(const Toolpath& other);
+    // Room for `records` in all, so that a reader of a large file does not regrow and copy them.
+    void reserve(std::size_t records);
 
     std::size_t size() const { return m_records.size(); }
     bool empty() const { return m_records.empty(); }

@@ -51,7 +51,8 @@ struct ArcFrame {
     Vec3 center, normal, u, v;  // u: unit radius vector at the start, v = normal x u
     double radiusStart = 0, radiusEnd = 0;
     double axialStart = 0, axialEnd = 0;
-    double sweep = 0;  // radians, > 0
+    double sweep = 0;        // radians, > 0
+    bool wholeTurn = false;  // the sweep is 2 pi or more
     bool clockwise = false;
 
     Vec3 at(double t) const
@@ -64,7 +65,9 @@ struct ArcFrame {
     bool helical() const { return std::abs(axialEnd - axialStart) > kAxisTolerance; }
 };
 
-std::optional<ArcFrame> frameOf(const Vec3& start, const Arc& arc)
+// `withSweep` false leaves sweep 0 (the one trigonometric call), for callers that need only the
+// frame and whether the arc is a whole turn.
+std::optional<ArcFrame> frameOf(const Vec3& start, const Arc& arc, bool withSweep = true)
 {
     ArcFrame f;
     f.center = arc.center;
@@ -95,7 +98,8 @@ std::optional<ArcFrame> frameOf(const Vec3& start, const Arc& arc)
     if (f.radiusStart < kPointTolerance || f.radiusEnd < kPointTolerance)
         return std::nullopt;
 
-    f.sweep = sweepBetween(radialStart, radialEnd, n, f.clockwise) + kTwoPi * std::max(0, arc.turns);
+    f.sweep = withSweep ? sweepBetween(radialStart, radialEnd, n, f.clockwise) + kTwoPi * std::max(0, arc.turns) : 0;
+    f.wholeTurn = arc.turns > 0 || (radialStart - radialEnd).length() < kPointTolerance;
     f.u = radialStart * (1.0 / f.radiusStart);
     f.v = n.cross(f.u);
     return f;
@@ -202,7 +206,7 @@ void extendByArc(Vec3& min, Vec3& max, const Vec3& start, const Arc& arc)
     };
     extend(start);
     extend(arc.to);
-    const std::optional<ArcFrame> frame = frameOf(start, arc);
+    const std::optional<ArcFrame> frame = frameOf(start, arc, false);
     if (!frame)
         return;
     const double normal[3] = {frame->normal.x, frame->normal.y, frame->normal.z};
@@ -212,9 +216,10 @@ void extendByArc(Vec3& min, Vec3& max, const Vec3& start, const Arc& arc)
     if (!principal || !constantRadius) {
         // Oblique planes (where a helix's rise shifts the extremes) and spirals: sampled every
         // half degree, which misses at most r (1 - cos 0.25 deg) = 1e-5 r.
-        const int steps = std::max(1, static_cast<int>(std::ceil(frame->sweep / (std::numbers::pi / 360))));
+        const ArcFrame swept = *frameOf(start, arc);
+        const int steps = std::max(1, static_cast<int>(std::ceil(swept.sweep / (std::numbers::pi / 360))));
         for (int i = 1; i < steps; ++i)
-            extend(frame->at(static_cast<double>(i) / steps));
+            extend(swept.at(static_cast<double>(i) / steps));
         return;
     }
     // Most arcs: a principal plane and one radius. An in-plane axis k is extreme where the arc
@@ -225,7 +230,7 @@ void extendByArc(Vec3& min, Vec3& max, const Vec3& start, const Arc& arc)
             return c >= 0 ? s / (c + s) : 1 - c / (s - c);
         return c < 0 ? 2 - s / (-c - s) : 3 + c / (c - s);
     };
-    const bool wholeTurn = frame->sweep >= kTwoPi - 1e-12;
+    const bool wholeTurn = frame->wholeTurn;
     const double turn = frame->clockwise ? -1 : 1;  // travel-oriented second axis: turn * v
     const Vec3 end = arc.to - frame->center;
     const double endAngle = pseudoAngle(end.dot(frame->u), turn * end.dot(frame->v));

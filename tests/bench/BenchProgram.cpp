@@ -2,6 +2,8 @@
 
 #include "base/NumberFormat.h"
 
+#include <fstream>
+#include <string>
 #include <variant>
 
 namespace camwb::bench {
@@ -107,6 +109,15 @@ std::string asAptSource(const Toolpath& program)
         }
     }
     return out + "FINI\n";
+}
+
+long currentRssKb()
+{
+    std::ifstream status("/proc/self/status");
+    for (std::string line; std::getline(status, line);)
+        if (line.rfind("VmRSS:", 0) == 0)
+            return std::stol(line.substr(6));
+    return 0;
 }
 
 }  // namespace camwb::bench

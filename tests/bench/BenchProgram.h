@@ -23,4 +23,7 @@ std::string asFreeCadDump(const toolpath::Toolpath& program);
 // GOTO for the arcs), which toolpath::readAptSource reads back to the same moves.
 std::string asAptSource(const toolpath::Toolpath& program);
 
+// The process's resident memory now (VmRSS), in KiB: what a benchmark holds, taken before and after.
+long currentRssKb();
+
 }  // namespace camwb::bench

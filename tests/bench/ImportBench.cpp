@@ -10,9 +10,9 @@
 #include <benchmark/benchmark.h>
 
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <filesystem>
-#include <fstream>
 #include <map>
 #include <string>
 
@@ -20,19 +20,18 @@ namespace {
 
 using namespace camwb;
 
-long currentRssKb()
-{
-    std::ifstream status("/proc/self/status");
-    for (std::string line; std::getline(status, line);)
-        if (line.rfind("VmRSS:", 0) == 0)
-            return std::stol(line.substr(6));
-    return 0;
-}
-
-// The benchmark program in `format`, written once per size into the temp folder.
-std::string inputFile(toolpath::ClFormat format, std::size_t moves)
+// The inputs written so far, by format and size; removed when the run ends.
+std::map<std::pair<int, std::size_t>, std::string>& inputFiles()
 {
     static std::map<std::pair<int, std::size_t>, std::string> files;
+    return files;
+}
+
+// The benchmark program in `format`, written once per size into the temp folder (repetitions of
+// a case read the same file).
+std::string inputFile(toolpath::ClFormat format, std::size_t moves)
+{
+    auto& files = inputFiles();
     const auto key = std::make_pair(static_cast<int>(format), moves);
     if (const auto found = files.find(key); found != files.end())
         return found->second;
@@ -56,13 +55,13 @@ void readFile(benchmark::State& state, toolpath::ClFormat format)
     std::size_t records = 0;
     long held = 0;  // what the imported toolpath occupies while it is held
     for (auto _ : state) {
-        const long before = currentRssKb();
+        const long before = bench::currentRssKb();
         auto imported = toolpath::readClFile(path, format);
         if (!imported) {
             state.SkipWithError(imported.error().toString().c_str());
             return;
         }
-        held = currentRssKb() - before;
+        held = bench::currentRssKb() - before;
         records = imported->toolpath.size();
         benchmark::DoNotOptimize(imported->toolpath.records().data());
     }
@@ -72,7 +71,6 @@ void readFile(benchmark::State& state, toolpath::ClFormat format)
     state.counters["records"] = static_cast<double>(records);
     state.counters["input_MB"] = bytes / 1e6;
     state.counters["held_MB"] = static_cast<double>(held) / 1024;
-    std::filesystem::remove(path);
 }
 
 void BM_ReadFreeCadDump(benchmark::State& state) { readFile(state, toolpath::ClFormat::FreeCadDump); }
@@ -99,5 +97,7 @@ int main(int argc, char** argv)
     benchmark::Initialize(&argc, argv);
     benchmark::RunSpecifiedBenchmarks();
     benchmark::Shutdown();
+    for (const auto& [key, path] : inputFiles())
+        std::filesystem::remove(path);
     return 0;
 }

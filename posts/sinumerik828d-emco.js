@@ -257,10 +257,12 @@ function onCycle(cycle) {
     cycleCall = cycleText(cycle);
     if (cycle.kind != "tap")
         writeBlock(feedOutput.format(cycle.feed));  // the cycles drill at the programmed F
-    // Move over the holes at the return plane: the cycle itself only moves along Z.
-    var at = getCurrentPosition();
-    if (!at || at.z < cycle.returnZ) {
+    // Move over the holes at the return plane: the cycle itself only moves along Z. Below it, or
+    // at a height nobody knows yet (right after a tool change), go there first.
+    var z = getCurrentAxis("z");
+    if (z === null || z < cycle.returnZ) {
         motionModal.reset();
+        zOutput.reset();
         writeBlock(motionModal.format(0), zOutput.format(cycle.returnZ));
     }
     if (getProperty("drillingCalls") == "mcall")

@@ -1,5 +1,7 @@
 #include "base/AtomicFile.h"
 
+#include "base/LineReader.h"
+
 #include <cerrno>
 #include <cstring>
 #include <vector>
@@ -92,14 +94,12 @@ Result<std::string> readTextFile(const std::string& path)
 {
     // One allocation of the file's size and one read into it: a stream copied into a string
     // touched three times the file's size in memory (a 1M-line program is 24 MB).
-    const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
-    if (fd < 0)
-        return makeError(std::string("cannot open: ") + systemError(), path);
+    auto opened = openForReading(path);
+    if (!opened)
+        return opened.error();
+    const int fd = opened.value();
     struct stat info {};
-    if (::fstat(fd, &info) == 0 && S_ISDIR(info.st_mode)) {
-        ::close(fd);
-        return makeError("cannot read: it is a folder, not a file", path);
-    }
+    ::fstat(fd, &info);
     // The size it has now; a file that grows meanwhile (or a pipe, size 0) is read on in chunks.
     std::string text(info.st_size > 0 ? static_cast<std::size_t>(info.st_size) : 0, '\0');
     std::size_t length = 0;

@@ -46,16 +46,19 @@ void LimitCheck::flag(const std::string& key, const std::string& message)
     ++m_findings[it->second].count;
 }
 
-void LimitCheck::reach(const Vec3& p)
+void LimitCheck::reach(const Vec3& p, AxisMask axes)
 {
     for (int axis = 0; axis < 3; ++axis) {
+        if (!axes.has(axis))  // a move that does not give this axis did not move it
+            continue;
         const double v = component(p, axis);
-        if (!m_reached || v < m_low[axis].value)
+        const bool first = !m_reached.has(axis);
+        if (first || v < m_low[axis].value)
             m_low[axis] = {v, m_source, m_records - 1};
-        if (!m_reached || v > m_high[axis].value)
+        if (first || v > m_high[axis].value)
             m_high[axis] = {v, m_source, m_records - 1};
     }
-    m_reached = true;
+    m_reached.bits |= axes.bits;
 }
 
 void LimitCheck::cutting(double feed)
@@ -70,16 +73,16 @@ void LimitCheck::cutting(double feed)
 void LimitCheck::rapid(const Rapid& r)
 {
     nextRecord();
-    reach(r.to);
-    m_position = r.to;
+    reach(r.to, r.axes);
+    m_position.moveTo(r);
     ForwardingSink::rapid(r);
 }
 
 void LimitCheck::linear(const Linear& r)
 {
     nextRecord();
-    reach(r.to);
-    m_position = r.to;
+    reach(r.to, r.axes);
+    m_position.moveTo(r);
     cutting(r.feedMmPerMin);
     ForwardingSink::linear(r);
 }
@@ -87,14 +90,14 @@ void LimitCheck::linear(const Linear& r)
 void LimitCheck::arc(const Arc& r)
 {
     nextRecord();
-    if (m_position) {
-        Vec3 min = *m_position, max = *m_position;
-        extendByArc(min, max, *m_position, r);
+    if (const std::optional<Vec3> start = m_position.point()) {
+        Vec3 min = *start, max = *start;
+        extendByArc(min, max, *start, r);
         reach(min);
         reach(max);
     }
     reach(r.to);
-    m_position = r.to;
+    m_position.set(r.to);
     cutting(r.feedMmPerMin);
     ForwardingSink::arc(r);
 }
@@ -103,7 +106,7 @@ void LimitCheck::toolAxisMove(const ToolAxisMove& r)
 {
     nextRecord();
     reach(r.tip);
-    m_position = r.tip;
+    m_position.set(r.tip);
     if (r.feedMmPerMin > 0)
         cutting(r.feedMmPerMin);
     ForwardingSink::toolAxisMove(r);
@@ -117,7 +120,7 @@ void LimitCheck::cycle(const Cycle& r)
         reach({hole.x, hole.y, std::max(cycleReturnZ(r), r.retractZ)});
     }
     if (!r.holes.empty()) {
-        m_position = Vec3{r.holes.back().x, r.holes.back().y, cycleReturnZ(r)};
+        m_position.set({r.holes.back().x, r.holes.back().y, cycleReturnZ(r)});
         cutting(r.feedMmPerMin);
     }
     ForwardingSink::cycle(r);
@@ -222,11 +225,9 @@ void LimitCheck::passThrough(const PassThrough& r)
 std::vector<LimitCheck::Finding> LimitCheck::spanFindings() const
 {
     std::vector<Finding> out;
-    if (!m_reached)
-        return out;
     for (int axis = 0; axis < 3; ++axis) {
         const Axis* travel = m_machine.axis(kAxisNames[axis]);
-        if (!travel || travel->rotary || travel->max <= travel->min)
+        if (!m_reached.has(axis) || !travel || travel->rotary || travel->max <= travel->min)
             continue;
         const Reach& low = m_low[axis];
         const Reach& high = m_high[axis];

@@ -9,6 +9,7 @@
 #include "base/Diagnostic.h"
 #include "kinematics/Machine.h"
 #include "toolpath/ForwardingSink.h"
+#include "toolpath/KnownPosition.h"
 
 #include <array>
 #include <cstddef>
@@ -66,7 +67,7 @@ private:
     };
     void nextRecord();
     void flag(const std::string& key, const std::string& message);
-    void reach(const toolpath::Vec3& p);
+    void reach(const toolpath::Vec3& p, toolpath::AxisMask axes = {});  // only the axes given
     void cutting(double feed);
     std::vector<Finding> spanFindings() const;
 
@@ -76,8 +77,8 @@ private:
     std::size_t m_records = 0;  // records seen, the current one included
     bool m_perMinute = true;
     bool m_noTool = false;  // after a change to T0
-    std::optional<toolpath::Vec3> m_position;
-    bool m_reached = false;
+    toolpath::KnownPosition m_position;
+    toolpath::AxisMask m_reached{0};  // the axes some move has given
     std::array<Reach, 3> m_low, m_high;
     std::vector<Finding> m_findings;
     std::map<std::string, std::size_t> m_findingOfKey;

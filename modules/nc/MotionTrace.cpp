@@ -2,6 +2,7 @@
 
 #include "base/NumberFormat.h"
 #include "nc/detail/TraceText.h"
+#include "toolpath/KnownPosition.h"
 #include "toolpath/RecordNames.h"
 #include "toolpath/ToolpathRecorder.h"
 
@@ -271,19 +272,28 @@ private:
         m_w.end();
     }
 
+    // The interpreters give every axis of a straight move (their programs start from a defined
+    // position); a move that gives fewer keeps the others, as the control does.
+    void moveStraight(const Vec3& to, AxisMask axes)
+    {
+        for (int axis = 0; axis < 3; ++axis) {
+            if (axes.has(axis))
+                setAxisValue(m_state.position, axis, axisValue(to, axis));
+        }
+    }
     void visit(const Rapid& r)
     {
         begin("rapid");
-        m_w.point("", "to", r.to);
+        moveStraight(r.to, r.axes);
+        m_w.point("", "to", m_state.position);
         state(0, false);
-        m_state.position = r.to;
     }
     void visit(const Linear& r)
     {
         begin("linear");
-        m_w.point("", "to", r.to);
+        moveStraight(r.to, r.axes);
+        m_w.point("", "to", m_state.position);
         state(r.feedMmPerMin, true);
-        m_state.position = r.to;
     }
     void visit(const Arc& r)
     {

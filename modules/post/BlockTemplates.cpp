@@ -2,6 +2,7 @@
 
 #include "post/detail/ScriptBindings.h"
 
+#include <cmath>
 #include <cstring>
 
 namespace camwb::post {
@@ -38,7 +39,14 @@ base::Result<BlockTemplate> parseWords(const QJSValue& list, const std::string& 
         const std::string at = where + "[" + std::to_string(i) + "]";
         BlockTemplate::Word word;
         if (item.isString()) {
+            // Cleaned once here as OutputWriter::addWord would clean it in every block: no line
+            // break inside a block, none at its end.
             word.literal = item.toString().toStdString();
+            while (!word.literal.empty() && (word.literal.back() == '\r' || word.literal.back() == '\n'))
+                word.literal.pop_back();
+            for (char& c : word.literal)
+                if (c == '\r' || c == '\n')
+                    c = ' ';
         } else {
             const QJSValue variable = item.property("__camwbVariable");
             auto* object = qobject_cast<VariableObject*>(variable.toQObject());
@@ -128,6 +136,8 @@ bool BlockTemplate::endsWhereItStarts(const MoveValues& move, int planeIndex) co
         const VariableObject* variable = axes[axis];
         if (!variable)
             return false;
+        if (std::abs(end[axis] - start[axis]) > 1.5 * variable->resolution())
+            return false;  // further apart than the last decimal: written differently for sure
         const std::size_t length = variable->textOf(start[axis], a);
         if (variable->textOf(end[axis], b) != length || std::memcmp(a, b, length) != 0)
             return false;
@@ -155,6 +165,10 @@ bool BlockTemplate::write(const MoveValues& given, OutputWriter& out, bool& miss
         m_buffers.resize(words.size() * kSize);
         m_texts.resize(words.size());
         m_skip.resize(words.size());
+        std::size_t blockBytes = 0;  // every word at its longest, with a blank before it
+        for (const Word& word : words)
+            blockBytes += 1 + (word.variable ? word.variable->modal().prefix().size() + kSize : word.literal.size());
+        m_block.resize(blockBytes);
     }
     bool axisChanges = false;
     for (std::size_t i = 0; i < words.size(); ++i) {
@@ -162,6 +176,10 @@ bool BlockTemplate::write(const MoveValues& given, OutputWriter& out, bool& miss
         m_skip[i] = 0;
         if (!word.variable)
             continue;
+        if (isAxis(word.value) && !move.known.has(static_cast<int>(word.value))) {
+            m_skip[i] = 1;
+            continue;
+        }
         if (word.value == MoveValue::Feed && !(move.feed > 0)) {
             m_skip[i] = 1;
             missingFeed = true;
@@ -174,15 +192,31 @@ bool BlockTemplate::write(const MoveValues& given, OutputWriter& out, bool& miss
     }
     if (straight && !axisChanges)
         return false;
-    out.beginBlock();
+    char* const block = m_block.data();
+    char* end = block;
+    auto put = [&end, block](std::string_view text) {
+        std::memcpy(end, text.data(), text.size());
+        end += text.size();
+    };
     for (std::size_t i = 0; i < words.size(); ++i) {
         const Word& word = words[i];
-        if (!word.variable)
-            out.addWord({}, word.literal);
-        else if (!m_skip[i] && word.variable->modal().update(m_texts[i]))
-            out.addCleanWord(word.variable->modal().prefix(), m_texts[i]);
+        const bool written =
+            word.variable ? !m_skip[i] && word.variable->modal().update(m_texts[i]) : !word.literal.empty();
+        if (!written)
+            continue;
+        if (end != block)
+            *end++ = ' ';
+        if (word.variable) {
+            put(word.variable->modal().prefix());
+            put(m_texts[i]);
+        } else {
+            put(word.literal);
+        }
     }
-    return out.endBlock();
+    if (end == block)
+        return false;
+    out.writeCleanBlock(std::string_view(block, static_cast<std::size_t>(end - block)));
+    return true;
 }
 
 int BlockTemplates::planeIndex(const std::string& plane)

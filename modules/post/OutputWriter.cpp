@@ -77,16 +77,6 @@ void OutputWriter::addWord(std::string_view prefix, std::string_view text)
     appendClean(text);
 }
 
-void OutputWriter::addCleanWord(std::string_view prefix, std::string_view text)
-{
-    if (m_blockWords++ == 0)
-        appendBlockNumber();
-    else
-        m_text += ' ';
-    m_text += prefix;
-    m_text += text;
-}
-
 bool OutputWriter::endBlock()
 {
     if (m_blockWords == 0)
@@ -94,6 +84,13 @@ bool OutputWriter::endBlock()
     m_blockWords = 0;
     endLine();
     return true;
+}
+
+void OutputWriter::writeCleanBlock(std::string_view words)
+{
+    appendBlockNumber();
+    m_text += words;
+    endLine();
 }
 
 void OutputWriter::writeComment(std::string_view text)

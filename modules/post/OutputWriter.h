@@ -30,13 +30,14 @@ public:
     // Raw text, no number; embedded newlines make several lines.
     void writeLine(std::string_view text);
 
-    // A block built word by word (C++ block templates), with writeBlock's rules: the block number
-    // is taken when the first word arrives, and a block without words writes nothing.
+    // A block built word by word, with writeBlock's rules: the block number is taken when the
+    // first word arrives, and a block without words writes nothing.
     void beginBlock() { m_blockWords = 0; }
     void addWord(std::string_view prefix, std::string_view text);
-    // The same for words that cannot hold a line break (numbers, checked prefixes): no scan.
-    void addCleanWord(std::string_view prefix, std::string_view text);
     bool endBlock();
+    // A whole block of words already joined by single blanks, none of which can hold a line break
+    // (block templates assemble their words in a buffer of their own): "N<n> " + words, a line.
+    void writeCleanBlock(std::string_view words);
 
     // Operation index recorded for the lines written from now on (-1 = none).
     void setOperation(int operationIndex) { m_operation = operationIndex; }

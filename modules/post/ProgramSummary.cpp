@@ -2,6 +2,7 @@
 
 #include "toolpath/ArcGeometry.h"
 #include "toolpath/CycleExpansion.h"
+#include "toolpath/KnownPosition.h"
 
 #include <algorithm>
 #include <optional>
@@ -10,41 +11,65 @@ namespace camwb::post {
 
 using namespace toolpath;
 
+namespace {
+
+// Grows a box over tool positions axis by axis: a move that gives only Z widens only Z, and an
+// axis no move gave has no extent (base::Box3 knows only all three or none).
+struct AxisExtents {
+    AxisMask seen{0};
+    Vec3 min, max;
+    bool any() const { return !seen.none(); }
+    void add(const Vec3& p, AxisMask axes = {})
+    {
+        for (int axis = 0; axis < 3; ++axis) {
+            if (!axes.has(axis))
+                continue;
+            const double v = axisValue(p, axis);
+            const bool first = !seen.has(axis);
+            setAxisValue(min, axis, first ? v : std::min(axisValue(min, axis), v));
+            setAxisValue(max, axis, first ? v : std::max(axisValue(max, axis), v));
+        }
+        seen.bits |= axes.bits;
+    }
+};
+
+}  // namespace
+
 ProgramSummary summarizeProgram(const Toolpath& toolpath)
 {
     ProgramSummary summary;
-    base::Box3 extents;
-    std::optional<Vec3> position;
+    AxisExtents extents;
+    KnownPosition position;
     bool offsetSeen = false;
     for (const Record& record : toolpath.records()) {
         if (const auto* r = std::get_if<Rapid>(&record)) {
-            extents.add(r->to);
-            position = r->to;
+            extents.add(r->to, r->axes);
+            position.moveTo(*r);
         } else if (const auto* l = std::get_if<Linear>(&record)) {
-            extents.add(l->to);
-            position = l->to;
+            extents.add(l->to, l->axes);
+            position.moveTo(*l);
         } else if (const auto* a = std::get_if<Arc>(&record)) {
-            if (position) {
-                Vec3 min = *position, max = *position;
-                extendByArc(min, max, *position, *a);
+            if (const std::optional<Vec3> start = position.point()) {
+                Vec3 min = *start, max = *start;
+                extendByArc(min, max, *start, *a);
                 extents.add(min);
                 extents.add(max);
             } else {
                 extents.add(a->to);
             }
-            position = a->to;
+            position.set(a->to);
         } else if (const auto* m = std::get_if<ToolAxisMove>(&record)) {
             extents.add(m->tip);
-            position = m->tip;
+            position.set(m->tip);
         } else if (const auto* c = std::get_if<Cycle>(&record)) {
             for (const Vec3& hole : c->holes) {
                 extents.add({hole.x, hole.y, std::max(cycleReturnZ(*c), c->retractZ)});
                 extents.add({hole.x, hole.y, c->bottomZ});
             }
             if (!c->holes.empty())
-                position = Vec3{c->holes.back().x, c->holes.back().y, cycleReturnZ(*c)};
+                position.set({c->holes.back().x, c->holes.back().y, cycleReturnZ(*c)});
         } else if (const auto* w = std::get_if<WorkOffset>(&record)) {
-            if (!offsetSeen && extents.empty)
+            if (!offsetSeen && !extents.any())
                 summary.firstWorkOffset = w->index;
             offsetSeen = true;
         } else if (const auto* t = std::get_if<ToolChange>(&record)) {
@@ -54,7 +79,8 @@ ProgramSummary summarizeProgram(const Toolpath& toolpath)
                 summary.tools.push_back(t->tool);
         }
     }
-    summary.hasMotion = !extents.empty;
+    summary.hasMotion = extents.any();
+    summary.extentAxes = extents.seen;
     summary.min = extents.min;
     summary.max = extents.max;
     return summary;

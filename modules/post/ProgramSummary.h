@@ -12,7 +12,8 @@ struct ProgramSummary {
     int firstWorkOffset = 1;            // the WorkOffset before the first motion, else 1
     std::vector<toolpath::Tool> tools;  // in order of first use, each number once
     bool hasMotion = false;
-    toolpath::Vec3 min, max;  // every tool tip position (arcs exactly, cycles included)
+    toolpath::Vec3 min, max;           // every tool tip position (arcs exactly, cycles included)
+    toolpath::AxisMask extentAxes{0};  // the axes min/max hold: an axis no move gave has none
 };
 
 ProgramSummary summarizeProgram(const toolpath::Toolpath& toolpath);

@@ -4,6 +4,7 @@
 
 #include <charconv>
 #include <cmath>
+#include <cstring>
 
 namespace camwb::post {
 
@@ -54,7 +55,24 @@ QString FormatObject::format(const QJSValue& value)
 
 std::size_t VariableObject::textOf(double value, char* out) const
 {
-    return m_format ? m_format->formatTo(value, out) : numberWordText(value, out);
+    if (m_cachedLength > 0 && value == m_cachedValue) {  // -0 and 0 have the same text: "-0" is never written
+        std::memcpy(out, m_cachedText, m_cachedLength);
+        return m_cachedLength;
+    }
+    const std::size_t length = m_format ? m_format->formatTo(value, out) : numberWordText(value, out);
+    if (length > 0 && length <= sizeof m_cachedText) {
+        std::memcpy(m_cachedText, out, length);
+        m_cachedValue = value;
+        m_cachedLength = length;
+    }
+    return length;
+}
+
+double VariableObject::resolutionOf(const std::optional<base::NumberFormat>& format)
+{
+    if (!format)
+        return 0.001;  // numberWordText: whole numbers or 3 decimals
+    return std::pow(10.0, -format->decimals) / std::abs(format->scale);
 }
 
 double VariableObject::writtenValue(double value) const
@@ -67,6 +85,9 @@ double VariableObject::writtenValue(double value) const
 
 QString VariableObject::format(const QJSValue& value)
 {
+    // null: an axis the move does not give (onRapid/onLinear pass null for it): no word.
+    if (value.isNull())
+        return {};
     std::string text;
     if (value.isNumber() && std::isfinite(value.toNumber())) {
         char buffer[base::NumberFormat::kBufferSize];
@@ -105,7 +126,9 @@ void VariableObject::setFormat(const QJSValue& format)
         return;
     }
     m_format = formatObject->numberFormat();
+    m_resolution = resolutionOf(m_format);
     m_value.reset();
+    m_cachedLength = 0;
 }
 
 QJSValue ScriptKernel::createFormat(const QJSValue& spec)
@@ -226,9 +249,28 @@ void ScriptKernel::setBlockNumbering(const QJSValue& start, const QJSValue& step
 
 QJSValue ScriptKernel::getCurrentPosition()
 {
-    if (!m_position)
+    const std::optional<toolpath::Vec3> point = m_position.point();
+    if (!point)
         return QJSValue(QJSValue::NullValue);
-    return scriptPoint(*m_engine, *m_position);
+    return scriptPoint(*m_engine, *point);
+}
+
+QJSValue ScriptKernel::getCurrentAxis(const QJSValue& axis)
+{
+    const QString name = axis.toString().toLower();
+    const int index = name == QLatin1String("x")   ? 0
+                      : name == QLatin1String("y") ? 1
+                      : name == QLatin1String("z") ? 2
+                                                   : -1;
+    if (!axis.isString() || index < 0) {
+        m_engine->throwError(
+            QJSValue::TypeError,
+            QStringLiteral("getCurrentAxis() needs \"x\", \"y\" or \"z\", got '%1'").arg(axis.toString()));
+        return {};
+    }
+    if (!m_position.known(index))
+        return QJSValue(QJSValue::NullValue);
+    return QJSValue(m_position.value(index));
 }
 
 QJSValue ScriptKernel::getProperty(const QJSValue& name)

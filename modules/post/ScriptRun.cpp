@@ -106,8 +106,9 @@ ScriptRun::ScriptRun(std::string postFile, const PostContext& context, std::chro
     QJSValue global = m_engine.globalObject();
     QJSValue kernel = m_engine.newQObject(m_kernel.get());
     global.setProperty("__camwbKernel", kernel);
-    for (const char* name : {"createFormat", "createVariable", "createModal", "writeComment", "writeln", "warning",
-                             "error", "setBlockNumbering", "getCurrentPosition", "getProperty", "expandCyclePoint"})
+    for (const char* name :
+         {"createFormat", "createVariable", "createModal", "writeComment", "writeln", "warning", "error",
+          "setBlockNumbering", "getCurrentPosition", "getCurrentAxis", "getProperty", "expandCyclePoint"})
         global.setProperty(name, kernel.property(name));  // QObject methods stay bound to the kernel
     global.setProperty("programName", qs(context.programName));
     global.setProperty("dateString", qs(formatDateUtc(context.dateEpochSeconds)));

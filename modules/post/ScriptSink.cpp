@@ -47,14 +47,18 @@ class ScriptSink : public MachineSink {
 public:
     explicit ScriptSink(ScriptRun& run) : m_run(run), m_caps(run.m_capabilities) {}
 
-    void rapid(const Rapid& r) override { straight(Handler::Rapid, r.to, 0); }
-    void linear(const Linear& r) override { straight(Handler::Linear, r.to, r.feedMmPerMin); }
+    void rapid(const Rapid& r) override;
+    void linear(const Linear& r) override { straight(Handler::Linear, r.to, r.axes, r.feedMmPerMin); }
     void arc(const Arc& r) override;
     void cycle(const Cycle& r) override;
     void toolChange(const ToolChange& r) override
     {
         m_toolRadius = r.tool.diameterMm / 2;
         handle(Handler::ToolChange, {toolObject(r.tool)});
+        // The tool changer moves the machine where the post cannot know: no axis is known until
+        // a move gives it, and the first rapid goes over in X/Y before it moves Z (rapid()).
+        m_run.m_kernel->forgetPosition();
+        m_afterToolChange = true;
     }
     void spindle(const Spindle& r) override
     {
@@ -74,7 +78,7 @@ public:
         const Vec3& a = r.axis;
         if (m_caps.maxAxes < 5) {
             if (std::abs(a.x) < 1e-9 && std::abs(a.y) < 1e-9 && a.z > 0) {  // along +Z: a three-axis move
-                straight(r.feedMmPerMin > 0 ? Handler::Linear : Handler::Rapid, r.tip, r.feedMmPerMin);
+                straight(r.feedMmPerMin > 0 ? Handler::Linear : Handler::Rapid, r.tip, {}, r.feedMmPerMin);
                 return;
             }
             m_run.fail("five-axis move (tool axis " + std::to_string(r.axis.x) + ", " + std::to_string(r.axis.y) +
@@ -82,6 +86,7 @@ public:
                        std::to_string(m_caps.maxAxes) + " axes");
             return;
         }
+        m_afterToolChange = false;
         handle(Handler::Linear5D, {r.tip.x, r.tip.y, r.tip.z, r.axis.x, r.axis.y, r.axis.z, r.feedMmPerMin});
         m_run.m_kernel->setPosition(r.tip);
     }
@@ -165,7 +170,8 @@ private:
         m_run.call(handler, args);
     }
 
-    void straight(Handler handler, const Vec3& to, double feed);
+    // A straight move to the axes `axes` gives; the others stay, and stay unwritten while unknown.
+    void straight(Handler handler, const Vec3& to, AxisMask axes, double feed);
     // An inverse-time feed says in how many minutes the whole move takes: each of n pieces is n times faster.
     double pieceFeed(double feed, std::size_t pieces) const
     {
@@ -184,29 +190,55 @@ private:
     double m_toolRadius = 0;
     Tally m_shortCompEntry;
     bool m_inverseTime = false;
-    bool m_compChanged = false;  // since the last straight move
+    bool m_compChanged = false;      // since the last straight move
+    bool m_afterToolChange = false;  // no motion since the last tool change
     int m_operation = -1;
 };
 
-void ScriptSink::straight(Handler handler, const Vec3& to, double feed)
+void ScriptSink::rapid(const Rapid& r)
+{
+    // After a tool change the machine stands where the changer left it, at a height the post does
+    // not know: a first rapid that gives X or Y and Z moves X/Y at that height and only then Z,
+    // never diagonally down from the tool change position. A CL whose first move gives Z alone
+    // (a retract to its clearance plane) or X/Y alone already says the order, and keeps it.
+    constexpr unsigned char kXY = AxisMask::kX | AxisMask::kY;
+    if (std::exchange(m_afterToolChange, false) && r.axes.has(2) && (r.axes.bits & kXY)) {
+        straight(Handler::Rapid, r.to, AxisMask{static_cast<unsigned char>(r.axes.bits & kXY)}, 0);
+        if (!m_run.m_failure)
+            straight(Handler::Rapid, r.to, AxisMask{AxisMask::kZ}, 0);
+        return;
+    }
+    straight(Handler::Rapid, r.to, r.axes, 0);
+}
+
+void ScriptSink::straight(Handler handler, const Vec3& to, AxisMask axes, double feed)
 {
     ScriptKernel& kernel = *m_run.m_kernel;
-    if (m_compChanged && m_comp != CutterCompSide::Off && kernel.position()) {
+    m_afterToolChange = false;
+    KnownPosition end = kernel.position();
+    end.moveTo(to, axes);
+    const std::optional<Vec3> start = kernel.position().point();
+    if (m_compChanged && m_comp != CutterCompSide::Off && start && end.complete()) {
         // The control offsets the tool along the entry move: one no longer than the radius fails.
-        const Vec3 entry = to - *kernel.position();
+        const Vec3 entry = end.value() - *start;
         if (std::hypot(entry.x, entry.y) <= m_toolRadius)
             m_shortCompEntry.add(m_run.m_recordIndex);
     }
     const bool isLinear = handler == Handler::Linear;
     if (m_run.has(handler)) {
+        // An axis nobody has given yet is null: VariableObject.format(null) writes no word.
+        auto axis = [&](int index) {
+            return end.known(index) ? QJSValue(end.value(index)) : QJSValue(QJSValue::NullValue);
+        };
         if (isLinear)
-            m_run.call(handler, {to.x, to.y, to.z, feed});
+            m_run.call(handler, {axis(0), axis(1), axis(2), feed});
         else
-            m_run.call(handler, {to.x, to.y, to.z});
+            m_run.call(handler, {axis(0), axis(1), axis(2)});
     } else if (std::optional<BlockTemplate>& block = isLinear ? m_run.m_templates.linear : m_run.m_templates.rapid) {
         MoveValues move;
-        move.start = kernel.position().value_or(to);
-        move.end = to;
+        move.start = start.value_or(end.value());
+        move.end = end.value();
+        move.known = end.known();
         move.feed = feed;
         move.motion = isLinear ? 1 : 0;
         move.comp = compCode(m_comp);
@@ -218,15 +250,17 @@ void ScriptSink::straight(Handler handler, const Vec3& to, double feed)
         ++m_unhandled[std::string(m_run.m_recordName) + " (" + handlerName(handler) + ")"];
     }
     m_compChanged = false;
-    kernel.setPosition(to);  // getCurrentPosition() is the start point inside a handler
+    kernel.setPosition(end);  // getCurrentPosition() is the start point inside a handler
 }
 
 void ScriptSink::arc(const Arc& r)
 {
     ScriptKernel& kernel = *m_run.m_kernel;
-    const std::optional<Vec3> start = kernel.position();
+    m_afterToolChange = false;
+    const std::optional<Vec3> start = kernel.position().point();
     if (!start) {
-        m_run.fail("arc with an unknown start point: no motion before it");
+        m_run.fail("arc with an unknown start point: no motion gave X, Y and Z before it (since the start or the "
+                   "last tool change)");
         return;
     }
     if (m_compChanged) {
@@ -258,7 +292,7 @@ void ScriptSink::arc(const Arc& r)
         m_linearised[reason].add(m_run.m_recordIndex);
         const std::vector<Vec3> points = linearizeArc(*start, r, m_caps.toleranceMm);
         for (const Vec3& point : points)
-            straight(Handler::Linear, point, pieceFeed(r.feedMmPerMin, points.size()));
+            straight(Handler::Linear, point, {}, pieceFeed(r.feedMmPerMin, points.size()));
         return;
     }
     for (std::size_t i = 0; i < pieces.size() && !m_run.m_failure; ++i)
@@ -292,7 +326,7 @@ void ScriptSink::arcPiece(const ArcPiece& p, const Arc& arc, int pieceIndex, int
         move.end = p.end;
         if (p.sweepDeg < 360 - 1e-6 && block->endsWhereItStarts(move, BlockTemplates::planeIndex(plane))) {
             // Written as an arc it would read back as start = end, a full circle: a short straight move.
-            straight(Handler::Linear, p.end, pieceFeed(arc.feedMmPerMin, static_cast<std::size_t>(pieces)));
+            straight(Handler::Linear, p.end, {}, pieceFeed(arc.feedMmPerMin, static_cast<std::size_t>(pieces)));
             return;
         }
         move.center = p.center;
@@ -315,7 +349,12 @@ void ScriptSink::arcPiece(const ArcPiece& p, const Arc& arc, int pieceIndex, int
 
 void ScriptSink::expandHole(const Cycle& cycle, const Vec3& hole)
 {
-    const Vec3 from = m_run.m_kernel->position().value_or(Vec3{hole.x, hole.y, cycleReturnZ(cycle)});
+    const KnownPosition& from = m_run.m_kernel->position();
+    if (!from.known(2)) {
+        m_run.fail("canned cycle from an unknown height: no motion gave Z before it (since the start or the last "
+                   "tool change)");
+        return;
+    }
     for (const Record& record : expandCycleHole(cycle, hole, from, m_spindle)) {
         if (m_run.m_failure)
             return;
@@ -325,6 +364,7 @@ void ScriptSink::expandHole(const Cycle& cycle, const Vec3& hole)
 
 void ScriptSink::cycle(const Cycle& c)
 {
+    m_afterToolChange = false;
     const std::string kind = toolpath::name(c.kind);
     const bool native =
         m_caps.cyclesDeclared ? m_caps.writesCycle(kind) : m_run.has(Handler::Cycle) || m_run.has(Handler::CyclePoint);
@@ -380,8 +420,17 @@ base::Status ScriptRun::play(const Toolpath& toolpath, const ProgramSummary& sum
     program.setProperty("tools", tools);
     if (summary.hasMotion) {
         QJSValue extents = m_engine.newObject();
-        extents.setProperty("min", scriptPoint(m_engine, summary.min));
-        extents.setProperty("max", scriptPoint(m_engine, summary.max));
+        QJSValue min = scriptPoint(m_engine, summary.min);
+        QJSValue max = scriptPoint(m_engine, summary.max);
+        for (int axis = 0; axis < 3; ++axis) {
+            if (!summary.extentAxes.has(axis)) {  // no move gave this axis: no extent, not 0
+                const QString name = QString(QChar('x' + axis));
+                min.setProperty(name, QJSValue(QJSValue::NullValue));
+                max.setProperty(name, QJSValue(QJSValue::NullValue));
+            }
+        }
+        extents.setProperty("min", min);
+        extents.setProperty("max", max);
         program.setProperty("extents", extents);
     } else {
         program.setProperty("extents", QJSValue(QJSValue::NullValue));

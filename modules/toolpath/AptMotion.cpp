@@ -81,10 +81,9 @@ base::Status AptReader::pointLine(const AptStatement& s)
 {
     if (!m_pointsFollow)
         return m_out.error("a line of values without a GOTO before it", s.wordPos);
-    auto parsed = tokenizeArguments(s.args, m_out);
-    if (!parsed)
-        return parsed.error();
-    const Items& items = parsed.value();
+    if (auto parsed = tokenizeArguments(s.args, m_out, m_items); !parsed)
+        return parsed;
+    const Items& items = m_items;
     for (const AptItem& item : items) {
         if (item.kind != AptItem::Kind::Number)
             return m_out.error("GOTO point expects numbers, found " + describeItem(item), item.pos);

@@ -39,30 +39,46 @@ std::string joinWords(const std::vector<std::string>& words)
 
 base::Result<ClImport> readAptSource(std::string_view text, const std::string& fileName)
 {
-    return AptReader(text, fileName).read();
+    base::LineReader lines(text);
+    return readAptSource(lines, fileName);
 }
 
-AptReader::AptReader(std::string_view text, std::string fileName) : m_out(std::move(fileName)), m_scanner(text, m_out)
+base::Result<ClImport> readAptSource(base::LineReader& lines, const std::string& fileName)
 {
+    return AptReader(lines, fileName).read();
+}
+
+AptReader::AptReader(base::LineReader& lines, std::string fileName) :
+    m_out(std::move(fileName)),
+    m_scanner(lines, m_out)
+{
+    m_out.expectText(lines.sizeBytes());
 }
 
 base::Result<ClImport> AptReader::read()
 {
     bool any = false;
     while (!m_finished) {
-        auto next = m_scanner.next();
+        auto next = m_scanner.next(m_unit);
         if (!next)
             return next.error();
         if (!next.value())
             break;
         any = true;
-        if (auto status = unit(*next.value()); !status)
+        if (auto status = unit(m_unit); !status)
             return status.error();
+    }
+    std::optional<TextPos> afterFini;
+    if (m_finished) {
+        auto rest = m_scanner.skipToEnd();
+        if (!rest)
+            return rest.error();
+        afterFini = rest.value();
     }
     const int lastLine = m_scanner.lineCount();
     if (m_finished) {
-        if (const auto after = m_scanner.nextText())
-            m_out.warn("text after FINI is ignored", *after);
+        if (afterFini)
+            m_out.warn("text after FINI is ignored", *afterFini);
     } else {
         if (auto status = endOfInput(lastLine); !status)
             return status.error();
@@ -109,17 +125,16 @@ base::Status AptReader::unit(const AptUnit& u)
     case AptUnit::Kind::Statement:
         break;
     }
-    auto s = splitStatement(u, m_out);
-    if (!s)
-        return s.error();
-    return statement(s.value());
+    if (auto split = splitStatement(u, m_out, m_statement); !split)
+        return split;
+    return statement(m_statement);
 }
 
-base::Result<AptReader::Items> AptReader::arguments(const AptStatement& s) const
+base::Status AptReader::arguments(const AptStatement& s)
 {
     if (!s.hasSlash)
         return m_out.error(s.words.front() + " needs '/' and its values", s.argsPos);
-    return tokenizeArguments(s.args, m_out);
+    return tokenizeArguments(s.args, m_out, m_items);
 }
 
 void AptReader::emit(Record record, int line)
@@ -154,8 +169,9 @@ base::Status AptReader::statement(const AptStatement& s)
                     return m_out.error(s.words[i] + " (tool offset from the drive circle) is not supported; only TLON",
                                        s.wordPos);
             }
-            auto items = arguments(s);
-            return items ? gofwd(s, items.value()) : base::Status(items.error());
+            if (auto parsed = arguments(s); !parsed)
+                return parsed;
+            return gofwd(s, m_items);
         }
         m_out.warn("unknown statement " + joinWords(s.words) + " ignored", s.wordPos);
         return {};
@@ -187,8 +203,9 @@ base::Status AptReader::statement(const AptStatement& s)
     if (kNothingToCarry.count(word))
         return {};
     if (word == "GOFWD") {
-        auto items = arguments(s);
-        return items ? gofwd(s, items.value()) : base::Status(items.error());
+        if (auto parsed = arguments(s); !parsed)
+            return parsed;
+        return gofwd(s, m_items);
     }
     if (kGeometryMotions.count(word))
         return m_out.error(word + " needs an APT geometry processor and is not supported", s.wordPos);
@@ -215,10 +232,9 @@ base::Status AptReader::statement(const AptStatement& s)
         return {};
     }
 
-    auto arguments = this->arguments(s);
-    if (!arguments)
-        return arguments.error();
-    const Items& items = arguments.value();
+    if (auto parsed = arguments(s); !parsed)
+        return parsed;
+    const Items& items = m_items;
     if (word == "UNITS")
         return units(s, items);
     if (word == "FEDRAT")

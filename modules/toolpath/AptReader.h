@@ -107,7 +107,7 @@ namespace camwb::toolpath {
 
 class AptReader {
 public:
-    AptReader(std::string_view text, std::string fileName);
+    AptReader(base::LineReader& lines, std::string fileName);
     base::Result<ClImport> read();
 
 private:
@@ -147,7 +147,8 @@ private:
 
     base::Status unit(const AptUnit& unit);
     base::Status statement(const AptStatement& s);
-    base::Result<Items> arguments(const AptStatement& s) const;
+    // The statement's arguments into m_items (reused: no allocation per statement).
+    base::Status arguments(const AptStatement& s);
     // Adds a record, ending a run of cycle holes first so that records stay in file order.
     void emit(Record record, int line);
     double length(double fileValue) const { return fileValue * m_mmPerUnit; }
@@ -188,6 +189,9 @@ private:
 
     ClBuilder m_out;
     AptScanner m_scanner;
+    AptUnit m_unit;            // the unit being read, its storage reused for the next
+    AptStatement m_statement;  // likewise
+    Items m_items;
     double m_mmPerUnit = 1;
     std::optional<Vec3> m_position;
     Vec3 m_toolAxis{0, 0, 1};

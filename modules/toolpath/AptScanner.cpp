@@ -10,14 +10,21 @@ constexpr std::string_view kTextKeywords[] = {"PPRINT", "PARTNO", "INSERT", "REM
 bool isLetter(char c) { return (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z'); }
 bool isDigit(char c) { return c >= '0' && c <= '9'; }
 bool isWordChar(char c) { return isLetter(c) || isDigit(c) || c == '_' || c == '-' || c == '.'; }
-AptUnit remark(std::string_view afterMarker, int line, int column)
+void fillRemark(AptUnit& unit, std::string_view afterMarker, int line, int column)
 {
-    AptUnit unit;
     unit.kind = AptUnit::Kind::Remark;
     unit.line = line;
     unit.start = {line, column - 2};
-    unit.body = std::string(trim(afterMarker));
+    unit.text.clear();
+    unit.keyword.clear();
+    unit.body.assign(trim(afterMarker));
     unit.bodyPos = {line, column + static_cast<int>(leadingSpaces(afterMarker))};
+}
+
+AptUnit remark(std::string_view afterMarker, int line, int column)
+{
+    AptUnit unit;
+    fillRemark(unit, afterMarker, line, column);
     return unit;
 }
 
@@ -26,24 +33,22 @@ class ArgumentParser {
 public:
     ArgumentParser(const PositionedText& args, const ClBuilder& out) : m_text(args.text()), m_args(args), m_out(out) {}
 
-    base::Result<std::vector<AptItem>> list(bool nested, TextPos openParen)
+    base::Status list(bool nested, TextPos openParen, std::vector<AptItem>& items)
     {
-        std::vector<AptItem> items;
+        items.clear();
         skipSpaces();
         if (atEnd() && !nested)
-            return items;
+            return {};
         if (nested && !atEnd() && m_text[m_i] == ')')
-            return items;
+            return {};
         while (true) {
-            auto item = this->item();
-            if (!item)
-                return item.error();
-            items.push_back(std::move(item).value());
+            if (auto status = item(items.emplace_back()); !status)
+                return status;
             skipSpaces();
             if (atEnd()) {
                 if (nested)
                     return m_out.error("'(' without ')'", openParen);
-                return items;
+                return {};
             }
             const char c = m_text[m_i];
             if (c == ',') {
@@ -52,7 +57,7 @@ public:
             }
             if (c == ')') {
                 if (nested)
-                    return items;
+                    return {};
                 return m_out.error("')' without '('", here());
             }
             return m_out.error("expected ',' between values, found '" + std::string(1, c) + "'", here());
@@ -60,13 +65,12 @@ public:
     }
 
 private:
-    base::Result<AptItem> item()
+    base::Status item(AptItem& out)
     {
         skipSpaces();
         if (atEnd() || m_text[m_i] == ',' || m_text[m_i] == ')')
             return m_out.error("missing value", here());
         const char c = m_text[m_i];
-        AptItem out;
         out.pos = here();
         if (c == '(') {
             const TextPos open = here();
@@ -81,12 +85,10 @@ private:
             if (atEnd() || m_text[m_i] != '/')
                 return m_out.error("expected '/' after " + out.word, here());
             ++m_i;
-            auto inner = list(true, open);
-            if (!inner)
-                return inner.error();
-            out.items = std::move(inner).value();
+            if (auto inner = list(true, open, out.items); !inner)
+                return inner;
             ++m_i;  // the ')' that list() stopped at
-            return out;
+            return {};
         }
         if (isDigit(c) || c == '.' || c == '+' || c == '-') {
             const std::size_t start = m_i;
@@ -98,12 +100,12 @@ private:
                 return m_out.error("malformed number '" + std::string(token) + "'", out.pos);
             out.kind = AptItem::Kind::Number;
             out.number = *number;
-            return out;
+            return {};
         }
         if (isLetter(c)) {
             out.kind = AptItem::Kind::Word;
             out.word = word();
-            return out;
+            return {};
         }
         return m_out.error("unexpected character '" + std::string(1, c) + "'", here());
     }
@@ -132,34 +134,34 @@ private:
 
 }  // namespace
 
-AptScanner::AptScanner(std::string_view text, ClBuilder& out) : m_lines(splitLines(text)), m_out(out) {}
-
-std::optional<TextPos> AptScanner::nextText() const
+base::Result<std::optional<TextPos>> AptScanner::skipToEnd()
 {
-    for (std::size_t i = m_next; i < m_lines.size(); ++i) {
-        if (!trim(m_lines[i]).empty())
-            return TextPos{static_cast<int>(i + 1), static_cast<int>(leadingSpaces(m_lines[i])) + 1};
+    std::optional<TextPos> first;
+    while (const std::optional<std::string_view> line = m_lines.next()) {
+        if (!first && !trim(*line).empty())
+            first = TextPos{m_lines.lineNumber(), static_cast<int>(leadingSpaces(*line)) + 1};
     }
-    return std::nullopt;
+    if (m_lines.readError())
+        return *m_lines.readError();
+    return first;
 }
 
-base::Result<std::optional<AptUnit>> AptScanner::next()
+base::Result<bool> AptScanner::next(AptUnit& unit)
 {
-    if (!m_queued.empty()) {
-        AptUnit unit = std::move(m_queued.front());
-        m_queued.erase(m_queued.begin());
-        return std::optional<AptUnit>(std::move(unit));
+    if (m_queuedNext < m_queued.size()) {
+        unit = std::move(m_queued[m_queuedNext++]);
+        if (m_queuedNext == m_queued.size()) {
+            m_queued.clear();
+            m_queuedNext = 0;
+        }
+        return true;
     }
-    while (m_next < m_lines.size()) {
-        const std::string_view raw = m_lines[m_next];
-        const int lineNumber = static_cast<int>(++m_next);
-        const std::size_t indent = leadingSpaces(raw);
-        const std::string_view line = trimRight(raw.substr(indent));
-        if (line.empty())
-            continue;
-        const int column = static_cast<int>(indent) + 1;
-        if (line.substr(0, 2) == "$$")
-            return std::optional<AptUnit>(remark(line.substr(2), lineNumber, column + 2));
+    if (const std::optional<ContentLine> content = nextContentLine(m_lines)) {
+        const auto [line, lineNumber, column] = *content;
+        if (line.substr(0, 2) == "$$") {
+            fillRemark(unit, line.substr(2), lineNumber, column + 2);
+            return true;
+        }
         for (const std::string_view keyword : kTextKeywords) {
             if (!startsWithNoCase(line, keyword))
                 continue;
@@ -173,25 +175,32 @@ base::Result<std::optional<AptUnit>> AptScanner::next()
                 rest.remove_prefix(blanks + 1);
                 bodyColumn += static_cast<int>(blanks) + 1;
             }
-            AptUnit unit;
             unit.kind = AptUnit::Kind::Text;
             unit.line = lineNumber;
             unit.start = {lineNumber, column};
-            unit.keyword = std::string(keyword);
-            unit.body = std::string(trim(rest));
+            unit.text.clear();
+            unit.keyword.assign(keyword);
+            unit.body.assign(trim(rest));
             unit.bodyPos = {lineNumber, bodyColumn + static_cast<int>(leadingSpaces(rest))};
-            return std::optional<AptUnit>(std::move(unit));
+            return true;
         }
-        return statement(line, lineNumber, column);
+        if (auto status = statement(line, lineNumber, column, unit); !status)
+            return status.error();
+        return true;
     }
-    return std::optional<AptUnit>();
+    if (m_lines.readError())
+        return *m_lines.readError();
+    return false;
 }
 
-base::Result<std::optional<AptUnit>> AptScanner::statement(std::string_view line, int lineNumber, int firstColumn)
+base::Status AptScanner::statement(std::string_view line, int lineNumber, int firstColumn, AptUnit& unit)
 {
-    AptUnit unit;
+    unit.kind = AptUnit::Kind::Statement;
     unit.line = lineNumber;
     unit.start = {lineNumber, firstColumn};
+    unit.text.clear();
+    unit.keyword.clear();
+    unit.body.clear();
     std::string_view segment = line;
     int segmentLine = lineNumber;
     int segmentColumn = firstColumn;
@@ -253,22 +262,16 @@ base::Result<std::optional<AptUnit>> AptScanner::statement(std::string_view line
         if (!continues)
             break;
         bool found = false;
-        while (m_next < m_lines.size()) {
-            const std::string_view raw = m_lines[m_next];
-            const int next = static_cast<int>(++m_next);
-            const std::size_t indent = leadingSpaces(raw);
-            const std::string_view content = trimRight(raw.substr(indent));
-            if (content.empty())
-                continue;
-            if (content.substr(0, 2) == "$$") {
-                AptUnit inner = remark(content.substr(2), next, static_cast<int>(indent) + 3);
+        while (const std::optional<ContentLine> content = nextContentLine(m_lines)) {
+            if (content->text.substr(0, 2) == "$$") {
+                AptUnit inner = remark(content->text.substr(2), content->number, content->column + 2);
                 if (!inner.body.empty())
                     m_queued.push_back(std::move(inner));
                 continue;
             }
-            segment = content;
-            segmentLine = next;
-            segmentColumn = static_cast<int>(indent) + 1;
+            segment = content->text;
+            segmentLine = content->number;
+            segmentColumn = content->column;
             found = true;
             break;
         }
@@ -278,16 +281,22 @@ base::Result<std::optional<AptUnit>> AptScanner::statement(std::string_view line
                                continuedAt);
         unit.text.appendBreak();
     }
-    return std::optional<AptUnit>(std::move(unit));
+    return {};
 }
 
-base::Result<AptStatement> splitStatement(const AptUnit& unit, const ClBuilder& out)
+base::Status splitStatement(const AptUnit& unit, const ClBuilder& out, AptStatement& s)
 {
     const std::string& t = unit.text.text();
     const std::size_t slash = t.find('/');
     const std::size_t majorEnd = slash == std::string::npos ? t.size() : slash;
-    AptStatement s;
     s.line = unit.line;
+    s.words.clear();
+    s.wordPos = {};
+    s.hasSlash = false;
+    s.argsPos = {};
+    s.args.clear();
+    s.pointLine = false;
+    s.junkPos.reset();
     std::size_t i = 0;
     auto skipSpaces = [&] {
         while (i < majorEnd && isSpace(t[i]))
@@ -300,14 +309,14 @@ base::Result<AptStatement> splitStatement(const AptUnit& unit, const ClBuilder& 
         s.wordPos = unit.text.position(i);
         s.argsPos = s.wordPos;
         s.args = unit.text;
-        return s;
+        return {};
     }
     while (true) {
         skipSpaces();
         if (i >= majorEnd || !isLetter(t[i])) {
             if (!s.words.empty() && slash == std::string::npos && i < majorEnd) {
                 s.junkPos = unit.text.position(i);
-                return s;
+                return {};
             }
             return out.error(s.words.empty() ? "expected a statement word" : "expected a word after ','",
                              unit.text.position(i));
@@ -341,18 +350,18 @@ base::Result<AptStatement> splitStatement(const AptUnit& unit, const ClBuilder& 
         }
         if (slash == std::string::npos) {
             s.junkPos = unit.text.position(i);
-            return s;
+            return {};
         }
         return out.error("unexpected '" + std::string(1, t[i]) + "' before '/'", unit.text.position(i));
     }
     s.hasSlash = slash != std::string::npos;
     if (s.hasSlash) {
         s.argsPos = unit.text.position(slash + 1);
-        s.args = unit.text.slice(slash + 1, t.size());
+        unit.text.slice(slash + 1, t.size(), s.args);
     } else {
         s.argsPos = unit.text.position(t.size());
     }
-    return s;
+    return {};
 }
 
 std::string describeItem(const AptItem& item)
@@ -360,10 +369,10 @@ std::string describeItem(const AptItem& item)
     return item.kind == AptItem::Kind::Group ? "(" + item.word + "/...)" : item.word;
 }
 
-base::Result<std::vector<AptItem>> tokenizeArguments(const PositionedText& args, const ClBuilder& out)
+base::Status tokenizeArguments(const PositionedText& args, const ClBuilder& out, std::vector<AptItem>& items)
 {
     ArgumentParser parser(args, out);
-    return parser.list(false, {});
+    return parser.list(false, {}, items);
 }
 
 }  // namespace camwb::toolpath

@@ -4,6 +4,7 @@
 // argument list of numbers, words and parenthesised (WORD/...) geometry groups.
 #pragma once
 
+#include "base/LineReader.h"
 #include "toolpath/ClBuilder.h"
 #include "toolpath/ClText.h"
 
@@ -25,26 +26,27 @@ struct AptUnit {
     TextPos bodyPos;
 };
 
-// Reads units one after the other. Remarks found inside a continued statement, or after it on its
-// line, come right after the statement.
+// Reads units one after the other, a line at a time. Remarks found inside a continued statement,
+// or after it on its line, come right after the statement.
 class AptScanner {
 public:
-    AptScanner(std::string_view text, ClBuilder& out);
+    AptScanner(base::LineReader& lines, ClBuilder& out) : m_lines(lines), m_out(out) {}
 
-    // The next unit; nullopt at the end of input; an Error for a continuation that never ends.
-    base::Result<std::optional<AptUnit>> next();
-    // Number of lines of the whole input.
-    int lineCount() const { return static_cast<int>(m_lines.size()); }
-    // Where the first non-blank text after the lines read so far starts (nullopt: none).
-    std::optional<TextPos> nextText() const;
+    // The next unit into `unit` (its storage reused); false at the end of input; an Error for a
+    // continuation that never ends.
+    base::Result<bool> next(AptUnit& unit);
+    // Number of the last line read (after skipToEnd() or at the end: of the whole input).
+    int lineCount() const { return m_lines.lineNumber(); }
+    // Reads the rest of the input; where its first non-blank text starts (nullopt: none).
+    base::Result<std::optional<TextPos>> skipToEnd();
 
 private:
-    base::Result<std::optional<AptUnit>> statement(std::string_view line, int lineNumber, int firstColumn);
+    base::Status statement(std::string_view line, int lineNumber, int firstColumn, AptUnit& unit);
 
-    std::vector<std::string_view> m_lines;
-    std::size_t m_next = 0;
+    base::LineReader& m_lines;
     ClBuilder& m_out;
     std::vector<AptUnit> m_queued;
+    std::size_t m_queuedNext = 0;
 };
 
 struct AptStatement {
@@ -60,10 +62,11 @@ struct AptStatement {
     bool is(std::string_view word) const { return words.size() == 1 && words[0] == word; }
 };
 
-// Splits a statement unit at its first '/'. A statement without '/' normally holds only words
-// ("RAPID", "END-OF-PATH"); for "GOTO 1,2,3" junkPos marks the "1", and the reader decides whether
-// that is an Error (a known statement missing its '/') or an unknown statement.
-base::Result<AptStatement> splitStatement(const AptUnit& unit, const ClBuilder& out);
+// Splits a statement unit at its first '/' into `s` (its storage reused). A statement without '/'
+// normally holds only words ("RAPID", "END-OF-PATH"); for "GOTO 1,2,3" junkPos marks the "1", and
+// the reader decides whether that is an Error (a known statement missing its '/') or an unknown
+// statement.
+base::Status splitStatement(const AptUnit& unit, const ClBuilder& out, AptStatement& s);
 
 struct AptItem {
     enum class Kind { Number, Word, Group };
@@ -79,8 +82,9 @@ struct AptItem {
 // An item as messages name it: the word, or "(CIRCLE/...)" for a group.
 std::string describeItem(const AptItem& item);
 
-// The comma-separated arguments: numbers, words and (WORD/arguments) groups. Malformed numbers,
-// empty values, unbalanced parentheses and stray characters are Errors with line and column.
-base::Result<std::vector<AptItem>> tokenizeArguments(const PositionedText& args, const ClBuilder& out);
+// The comma-separated arguments into `items` (its storage reused): numbers, words and
+// (WORD/arguments) groups. Malformed numbers, empty values, unbalanced parentheses and stray
+// characters are Errors with line and column.
+base::Status tokenizeArguments(const PositionedText& args, const ClBuilder& out, std::vector<AptItem>& items);
 
 }  // namespace camwb::toolpath

@@ -20,6 +20,20 @@ Vec3 unit(const Vec3& v)
     return length > 0 ? v * (1.0 / length) : Vec3{0, 0, 1};
 }
 
+enum class Plane { XY, ZX, YZ, Other };
+
+// Which principal plane a unit normal is the axis of (either sign).
+Plane planeOf(const Vec3& n)
+{
+    if (std::abs(std::abs(n.z) - 1) < kAxisTolerance)
+        return Plane::XY;
+    if (std::abs(std::abs(n.y) - 1) < kAxisTolerance)
+        return Plane::ZX;
+    if (std::abs(std::abs(n.x) - 1) < kAxisTolerance)
+        return Plane::YZ;
+    return Plane::Other;
+}
+
 // Angle in (0, 2*pi] from the in-plane radius vector `from` to `to` about the unit normal `n`, in
 // the direction of travel; vectors within kPointTolerance of each other are a full turn.
 double sweepBetween(const Vec3& from, const Vec3& to, const Vec3& n, bool clockwise)
@@ -37,7 +51,8 @@ struct ArcFrame {
     Vec3 center, normal, u, v;  // u: unit radius vector at the start, v = normal x u
     double radiusStart = 0, radiusEnd = 0;
     double axialStart = 0, axialEnd = 0;
-    double sweep = 0;  // radians, > 0
+    double sweep = 0;        // radians, > 0
+    bool wholeTurn = false;  // the sweep is 2 pi or more
     bool clockwise = false;
 
     Vec3 at(double t) const
@@ -50,23 +65,25 @@ struct ArcFrame {
     bool helical() const { return std::abs(axialEnd - axialStart) > kAxisTolerance; }
 };
 
-std::optional<ArcFrame> frameOf(const Vec3& start, const Arc& arc)
+// `withSweep` false leaves sweep 0 (the one trigonometric call), for callers that need only the
+// frame and whether the arc is a whole turn.
+std::optional<ArcFrame> frameOf(const Vec3& start, const Arc& arc, bool withSweep = true)
 {
     ArcFrame f;
     f.center = arc.center;
     f.clockwise = arc.clockwise;
     Vec3 n = unit(arc.normal);
     // Seen against -Z, clockwise is counter-clockwise seen against +Z: flip both to the positive axis.
-    const std::string plane = arcPlane(n);
-    if ((plane == "XY" && n.z < 0) || (plane == "ZX" && n.y < 0) || (plane == "YZ" && n.x < 0)) {
+    const Plane plane = planeOf(n);
+    if ((plane == Plane::XY && n.z < 0) || (plane == Plane::ZX && n.y < 0) || (plane == Plane::YZ && n.x < 0)) {
         n = n * -1.0;
         f.clockwise = !f.clockwise;
     }
-    if (plane == "XY")
+    if (plane == Plane::XY)
         n = {0, 0, 1};
-    else if (plane == "ZX")
+    else if (plane == Plane::ZX)
         n = {0, 1, 0};
-    else if (plane == "YZ")
+    else if (plane == Plane::YZ)
         n = {1, 0, 0};
     f.normal = n;
 
@@ -81,7 +98,8 @@ std::optional<ArcFrame> frameOf(const Vec3& start, const Arc& arc)
     if (f.radiusStart < kPointTolerance || f.radiusEnd < kPointTolerance)
         return std::nullopt;
 
-    f.sweep = sweepBetween(radialStart, radialEnd, n, f.clockwise) + kTwoPi * std::max(0, arc.turns);
+    f.sweep = withSweep ? sweepBetween(radialStart, radialEnd, n, f.clockwise) + kTwoPi * std::max(0, arc.turns) : 0;
+    f.wholeTurn = arc.turns > 0 || (radialStart - radialEnd).length() < kPointTolerance;
     f.u = radialStart * (1.0 / f.radiusStart);
     f.v = n.cross(f.u);
     return f;
@@ -91,13 +109,16 @@ std::optional<ArcFrame> frameOf(const Vec3& start, const Arc& arc)
 
 std::string arcPlane(const Vec3& normal)
 {
-    const Vec3 n = unit(normal);
-    if (std::abs(std::abs(n.z) - 1) < kAxisTolerance)
+    switch (planeOf(unit(normal))) {
+    case Plane::XY:
         return "XY";
-    if (std::abs(std::abs(n.y) - 1) < kAxisTolerance)
+    case Plane::ZX:
         return "ZX";
-    if (std::abs(std::abs(n.x) - 1) < kAxisTolerance)
+    case Plane::YZ:
         return "YZ";
+    case Plane::Other:
+        break;
+    }
     return {};
 }
 
@@ -185,7 +206,7 @@ void extendByArc(Vec3& min, Vec3& max, const Vec3& start, const Arc& arc)
     };
     extend(start);
     extend(arc.to);
-    const std::optional<ArcFrame> frame = frameOf(start, arc);
+    const std::optional<ArcFrame> frame = frameOf(start, arc, false);
     if (!frame)
         return;
     const double normal[3] = {frame->normal.x, frame->normal.y, frame->normal.z};
@@ -195,9 +216,10 @@ void extendByArc(Vec3& min, Vec3& max, const Vec3& start, const Arc& arc)
     if (!principal || !constantRadius) {
         // Oblique planes (where a helix's rise shifts the extremes) and spirals: sampled every
         // half degree, which misses at most r (1 - cos 0.25 deg) = 1e-5 r.
-        const int steps = std::max(1, static_cast<int>(std::ceil(frame->sweep / (std::numbers::pi / 360))));
+        const ArcFrame swept = *frameOf(start, arc);
+        const int steps = std::max(1, static_cast<int>(std::ceil(swept.sweep / (std::numbers::pi / 360))));
         for (int i = 1; i < steps; ++i)
-            extend(frame->at(static_cast<double>(i) / steps));
+            extend(swept.at(static_cast<double>(i) / steps));
         return;
     }
     // Most arcs: a principal plane and one radius. An in-plane axis k is extreme where the arc
@@ -208,7 +230,7 @@ void extendByArc(Vec3& min, Vec3& max, const Vec3& start, const Arc& arc)
             return c >= 0 ? s / (c + s) : 1 - c / (s - c);
         return c < 0 ? 2 - s / (-c - s) : 3 + c / (c - s);
     };
-    const bool wholeTurn = frame->sweep >= kTwoPi - 1e-12;
+    const bool wholeTurn = frame->wholeTurn;
     const double turn = frame->clockwise ? -1 : 1;  // travel-oriented second axis: turn * v
     const Vec3 end = arc.to - frame->center;
     const double endAngle = pseudoAngle(end.dot(frame->u), turn * end.dot(frame->v));

@@ -1,43 +1,6 @@
 #include "toolpath/ClBuilder.h"
 
-#include <algorithm>
-
 namespace camwb::toolpath {
-
-namespace {
-
-// The same message on many lines (NX writes a PAINT statement every few lines) is one warning
-// that lists the lines, so that the one that matters is not buried.
-std::vector<base::Diagnostic> mergeRepeatedWarnings(std::vector<base::Diagnostic> warnings)
-{
-    constexpr std::size_t kLinesListed = 8;
-    std::vector<base::Diagnostic> merged;
-    std::vector<std::vector<int>> repeats;  // further lines, per merged warning
-    for (base::Diagnostic& warning : warnings) {
-        auto same = std::find_if(merged.begin(), merged.end(),
-                                 [&](const base::Diagnostic& w) { return w.message == warning.message; });
-        if (same == merged.end()) {
-            merged.push_back(std::move(warning));
-            repeats.emplace_back();
-        } else {
-            repeats[static_cast<std::size_t>(same - merged.begin())].push_back(warning.line);
-        }
-    }
-    for (std::size_t i = 0; i < merged.size(); ++i) {
-        const std::vector<int>& lines = repeats[i];
-        if (lines.empty())
-            continue;
-        std::string list;
-        for (std::size_t k = 0; k < std::min(lines.size(), kLinesListed); ++k)
-            list += (k ? ", " : "") + std::to_string(lines[k]);
-        if (lines.size() > kLinesListed)
-            list += " and " + std::to_string(lines.size() - kLinesListed) + " more";
-        merged[i].message += " (also on line" + std::string(lines.size() > 1 ? "s " : " ") + list + ")";
-    }
-    return merged;
-}
-
-}  // namespace
 
 void ClBuilder::add(Record record, int line)
 {
@@ -45,12 +8,11 @@ void ClBuilder::add(Record record, int line)
         m_currentTool = change->tool.number;
         // The section header names the tool that cuts it, which the CL only states afterwards.
         if (inSection() && !m_sectionLoadedTool) {
-            std::get<SectionBegin>(m_records[m_openSectionRecord]).toolNumber = change->tool.number;
+            std::get<SectionBegin>(m_path.record(m_openSectionRecord)).toolNumber = change->tool.number;
             m_sectionLoadedTool = true;
         }
     }
-    m_records.push_back(std::move(record));
-    m_sources.push_back({m_openSection, line});
+    m_path.add(std::move(record), {m_openSection, line});
 }
 
 void ClBuilder::beginSection(SectionBegin section, int line)
@@ -58,25 +20,33 @@ void ClBuilder::beginSection(SectionBegin section, int line)
     endSection(line);
     section.toolNumber = m_currentTool;
     m_openSection = m_sectionCount++;
-    m_openSectionRecord = m_records.size();
+    m_openSectionRecord = m_path.size();
     m_sectionLoadedTool = false;
-    m_records.push_back(std::move(section));
-    m_sources.push_back({m_openSection, line});
+    m_path.add(std::move(section), {m_openSection, line});
 }
 
 bool ClBuilder::endSection(int line)
 {
     if (!inSection())
         return false;
-    m_records.push_back(SectionEnd{});
-    m_sources.push_back({m_openSection, line});
+    m_path.add(SectionEnd{}, {m_openSection, line});
     m_openSection = -1;
     return true;
 }
 
 void ClBuilder::warn(std::string message, int line, int column)
 {
-    m_warnings.push_back(base::warningDiagnostic(std::move(message), m_fileName, line, column));
+    // The same message on many lines (NX writes a PAINT statement every few lines) is one warning
+    // that lists the lines, so that the one that matters is not buried, and a file with a million
+    // of them holds one.
+    const auto [at, fresh] = m_warningIndex.try_emplace(message, m_warnings.size());
+    if (fresh) {
+        m_warnings.push_back({base::warningDiagnostic(std::move(message), m_fileName, line, column), {}, 0});
+        return;
+    }
+    Warning& repeated = m_warnings[at->second];
+    if (repeated.repeats++ < kLinesListed)
+        repeated.lines.push_back(line);
 }
 
 base::Error ClBuilder::error(std::string message, int line, int column) const
@@ -88,11 +58,21 @@ ClImport ClBuilder::finish(int lastLine)
 {
     endSection(lastLine);
     ClImport out;
-    for (std::size_t i = 0; i < m_records.size(); ++i)
-        out.toolpath.add(std::move(m_records[i]), m_sources[i]);
-    out.warnings = mergeRepeatedWarnings(std::move(m_warnings));
-    m_records.clear();
-    m_sources.clear();
+    out.toolpath = std::move(m_path);
+    for (Warning& warning : m_warnings) {
+        if (warning.repeats > 0) {
+            std::string list;
+            for (std::size_t k = 0; k < warning.lines.size(); ++k)
+                list += (k ? ", " : "") + std::to_string(warning.lines[k]);
+            if (warning.repeats > kLinesListed)
+                list += " and " + std::to_string(warning.repeats - kLinesListed) + " more";
+            warning.first.message += " (also on line" + std::string(warning.repeats > 1 ? "s " : " ") + list + ")";
+        }
+        out.warnings.push_back(std::move(warning.first));
+    }
+    m_warnings.clear();
+    m_warningIndex.clear();
+    m_path = Toolpath();
     return out;
 }
 

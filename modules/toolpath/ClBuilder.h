@@ -8,6 +8,7 @@
 
 #include <cstddef>
 #include <string>
+#include <unordered_map>
 #include <vector>
 
 namespace camwb::toolpath {
@@ -15,6 +16,9 @@ namespace camwb::toolpath {
 class ClBuilder {
 public:
     explicit ClBuilder(std::string fileName) : m_fileName(std::move(fileName)) {}
+    // Sizes the toolpath for a text of `bytes`: a CL statement is rarely under 32 bytes, and the
+    // room a shorter file does not fill is never touched, so it costs no memory.
+    void expectText(std::size_t bytes) { m_path.reserve(bytes / 32); }
 
     // Adds a record of the statement at `line` to the open section (or to none).
     void add(Record record, int line);
@@ -25,8 +29,8 @@ public:
     bool endSection(int line);
     bool inSection() const { return m_openSection >= 0; }
 
-    std::size_t size() const { return m_records.size(); }
-    Record& record(std::size_t index) { return m_records[index]; }
+    std::size_t size() const { return m_path.size(); }
+    Record& record(std::size_t index) { return m_path.record(index); }
 
     void warn(std::string message, int line, int column = 0);
     void warn(std::string message, TextPos pos) { warn(std::move(message), pos.line, pos.column); }
@@ -41,9 +45,15 @@ public:
 
 private:
     std::string m_fileName;
-    std::vector<Record> m_records;
-    std::vector<SourceRef> m_sources;
-    std::vector<base::Diagnostic> m_warnings;
+    Toolpath m_path;
+    struct Warning {
+        base::Diagnostic first;
+        std::vector<int> lines;   // of the first kLinesListed repeats
+        std::size_t repeats = 0;  // all of them
+    };
+    static constexpr std::size_t kLinesListed = 8;
+    std::vector<Warning> m_warnings;
+    std::unordered_map<std::string, std::size_t> m_warningIndex;  // message -> m_warnings index
     int m_sectionCount = 0;
     int m_openSection = -1;  // index of the open section, -1 outside sections
     std::size_t m_openSectionRecord = 0;

@@ -1,6 +1,5 @@
 #include "toolpath/ClImport.h"
 
-#include "base/AtomicFile.h"
 #include "toolpath/ClText.h"
 #include "toolpath/TraceReader.h"
 
@@ -33,19 +32,18 @@ std::optional<ClFormat> clFormatFromName(std::string_view name)
 
 base::Result<ClImport> readClFile(const std::string& path, ClFormat format)
 {
-    auto content = base::readTextFile(path);
-    if (!content)
-        return content.error();
-    const std::string& text = content.value();
+    auto lines = base::LineReader::open(path);
+    if (!lines)
+        return lines.error();
     switch (format) {
     case ClFormat::Apt:
-        return readAptSource(text, path);
+        return readAptSource(lines.value(), path);
     case ClFormat::FreeCadDump:
-        return readFreeCadDump(text, path);
+        return readFreeCadDump(lines.value(), path);
     case ClFormat::Trace:
         break;
     }
-    return readTrace(text, path);
+    return readTrace(lines.value(), path);
 }
 
 }  // namespace camwb::toolpath

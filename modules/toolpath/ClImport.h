@@ -4,6 +4,7 @@
 #pragma once
 
 #include "base/Diagnostic.h"
+#include "base/LineReader.h"
 #include "base/Result.h"
 #include "toolpath/Toolpath.h"
 
@@ -41,8 +42,12 @@ std::optional<ClFormat> clFormatFromName(std::string_view name);
 // FreeCadDumpReader.h.
 base::Result<ClImport> readAptSource(std::string_view text, const std::string& fileName);
 base::Result<ClImport> readFreeCadDump(std::string_view text, const std::string& fileName);
+// The same a line at a time: the readers hold one statement, never the whole file.
+base::Result<ClImport> readAptSource(base::LineReader& lines, const std::string& fileName);
+base::Result<ClImport> readFreeCadDump(base::LineReader& lines, const std::string& fileName);
 
-// Reads the file and imports it. A file that cannot be read gives an Error naming the path.
+// Reads the file in chunks as it imports it. A file that cannot be read gives an Error naming the
+// path.
 base::Result<ClImport> readClFile(const std::string& path, ClFormat format);
 
 }  // namespace camwb::toolpath

@@ -31,12 +31,34 @@ struct Tool {
     bool centreCutting = true;  // false: must not plunge straight down (pockets ramp or helix instead)
 };
 
+// The axes a straight move gives (bit 0 X, 1 Y, 2 Z). A move moves only these; the others stay
+// where they are, which may be unknown: a CL that retracts with "G0 Z20" before its first X/Y
+// says nothing about X and Y, and nobody may invent them. The coordinates of `to` on axes the
+// move does not give mean nothing (readers leave them 0).
+struct AxisMask {
+    static constexpr unsigned char kX = 1, kY = 2, kZ = 4, kAll = 7;
+    unsigned char bits = kAll;
+
+    bool has(int axis) const { return (bits >> axis) & 1; }
+    bool all() const { return bits == kAll; }
+    bool none() const { return bits == 0; }
+    bool operator==(const AxisMask&) const = default;
+};
+
+// Constructors rather than aggregates, so that the many Rapid{to} and Linear{to, feed} that give
+// every axis need not spell the mask out.
 struct Rapid {
+    Rapid() = default;
+    Rapid(Vec3 target, AxisMask given = {}) : to(target), axes(given) {}
     Vec3 to;
+    AxisMask axes;
 };
 struct Linear {
+    Linear() = default;
+    Linear(Vec3 target, double feed = 0, AxisMask given = {}) : to(target), feedMmPerMin(feed), axes(given) {}
     Vec3 to;
     double feedMmPerMin = 0;
+    AxisMask axes;
 };
 
 // Circular move from the current position. When `to` leaves the arc's plane the arc is a helix.

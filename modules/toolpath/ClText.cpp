@@ -9,63 +9,111 @@
 
 namespace camwb::toolpath {
 
-std::vector<std::string_view> splitLines(std::string_view text)
+std::optional<ContentLine> nextContentLine(base::LineReader& lines)
 {
-    constexpr std::string_view bom = "\xEF\xBB\xBF";
-    if (text.substr(0, bom.size()) == bom)
-        text.remove_prefix(bom.size());
-    std::vector<std::string_view> lines;
-    while (!text.empty()) {
-        const std::size_t end = text.find('\n');
-        std::string_view line = text.substr(0, end);
-        if (!line.empty() && line.back() == '\r')
-            line.remove_suffix(1);
-        lines.push_back(line);
-        if (end == std::string_view::npos)
-            break;
-        text.remove_prefix(end + 1);
+    while (const std::optional<std::string_view> raw = lines.next()) {
+        const std::size_t indent = leadingSpaces(*raw);
+        const std::string_view text = trimRight(raw->substr(indent));
+        if (!text.empty())
+            return ContentLine{text, lines.lineNumber(), static_cast<int>(indent) + 1};
     }
-    return lines;
+    return std::nullopt;
 }
 
 void PositionedText::append(std::string_view piece, int line, int firstColumn)
 {
-    for (std::size_t i = 0; i < piece.size(); ++i) {
-        m_text.push_back(piece[i]);
-        m_positions.push_back({line, firstColumn + static_cast<int>(i)});
-    }
+    if (piece.empty())
+        return;
+    m_pieces.push_back({m_text.size(), {line, firstColumn}});
+    m_text.append(piece);
 }
 
 void PositionedText::appendBreak()
 {
     const TextPos after = position(m_text.size());
+    m_pieces.push_back({m_text.size(), after});
     m_text.push_back(' ');
-    m_positions.push_back(after);
+}
+
+void PositionedText::clear()
+{
+    m_text.clear();
+    m_pieces.clear();
 }
 
 TextPos PositionedText::position(std::size_t index) const
 {
-    if (index < m_positions.size())
-        return m_positions[index];
-    if (m_positions.empty())
+    if (m_text.empty())
         return {};
-    const TextPos last = m_positions.back();
-    return {last.line, last.column + 1};
+    const std::size_t at = std::min(index, m_text.size() - 1);
+    auto piece = m_pieces.rbegin();
+    while (piece->start > at)
+        ++piece;
+    // Past the end: the place just after the last character.
+    const int past = index >= m_text.size() ? 1 : 0;
+    return {piece->pos.line, piece->pos.column + static_cast<int>(at - piece->start) + past};
 }
 
-PositionedText PositionedText::slice(std::size_t begin, std::size_t end) const
+void PositionedText::slice(std::size_t begin, std::size_t end, PositionedText& out) const
 {
-    PositionedText out;
+    out.clear();
     end = std::min(end, m_text.size());
-    for (std::size_t i = begin; i < end; ++i) {
-        out.m_text.push_back(m_text[i]);
-        out.m_positions.push_back(m_positions[i]);
+    for (std::size_t i = 0; i < m_pieces.size(); ++i) {
+        const std::size_t pieceEnd = i + 1 < m_pieces.size() ? m_pieces[i + 1].start : m_text.size();
+        const std::size_t from = std::max(begin, m_pieces[i].start);
+        const std::size_t to = std::min(end, pieceEnd);
+        if (from < to)
+            out.append(std::string_view(m_text).substr(from, to - from), m_pieces[i].pos.line,
+                       m_pieces[i].pos.column + static_cast<int>(from - m_pieces[i].start));
     }
-    return out;
+}
+
+namespace {
+
+constexpr double kExactPowersOfTen[] = {1e0,  1e1,  1e2,  1e3,  1e4,  1e5,  1e6,  1e7,  1e8,  1e9,  1e10, 1e11,
+                                        1e12, 1e13, 1e14, 1e15, 1e16, 1e17, 1e18, 1e19, 1e20, 1e21, 1e22};
+
+}  // namespace
+
+std::optional<double> parseDecimalPrefix(std::string_view text, std::size_t& length)
+{
+    // A mantissa below 2^53 and a power of ten up to 10^22 are exact doubles and IEEE division
+    // rounds correctly, so the quotient is the double nearest the decimal: exactly what
+    // std::from_chars gives (Clinger's fast path).
+    std::size_t i = 0;
+    const bool negative = !text.empty() && text[0] == '-';
+    if (!text.empty() && (text[0] == '-' || text[0] == '+'))
+        ++i;
+    unsigned long long mantissa = 0;
+    int digits = 0, decimals = 0;
+    bool point = false;
+    for (; i < text.size(); ++i) {
+        const char c = text[i];
+        if (c >= '0' && c <= '9') {
+            if (++digits > 18)
+                return std::nullopt;
+            mantissa = mantissa * 10 + static_cast<unsigned long long>(c - '0');
+            decimals += point ? 1 : 0;
+        } else if (c == '.' && !point) {
+            point = true;
+        } else if (c == 'e' || c == 'E' || c == '.') {  // an exponent, a second point: the long way
+            return std::nullopt;
+        } else {
+            break;
+        }
+    }
+    if (digits == 0 || mantissa > (1ull << 53) || decimals > 22)
+        return std::nullopt;
+    length = i;
+    const double value = static_cast<double>(mantissa) / kExactPowersOfTen[decimals];
+    return negative ? -value : value;
 }
 
 std::optional<double> parseNumber(std::string_view token)
 {
+    std::size_t length = 0;
+    if (const std::optional<double> simple = parseDecimalPrefix(token, length); simple && length == token.size())
+        return simple;
     // Checked by hand first: from_chars would also take "inf", "nan" and hex-like forms, and it
     // rejects the leading '+' that APT writers use.
     std::size_t i = 0;
@@ -108,30 +156,6 @@ std::optional<double> parseNumber(std::string_view token)
     if (error != std::errc() || end != body.data() + body.size() || !std::isfinite(value))
         return std::nullopt;
     return negative ? -value : value;
-}
-
-bool isSpace(char c) { return c == ' ' || c == '\t'; }
-
-std::size_t leadingSpaces(std::string_view text)
-{
-    std::size_t n = 0;
-    while (n < text.size() && isSpace(text[n]))
-        ++n;
-    return n;
-}
-
-std::string_view trim(std::string_view text)
-{
-    while (!text.empty() && (text.front() == ' ' || text.front() == '\t'))
-        text.remove_prefix(1);
-    return trimRight(text);
-}
-
-std::string_view trimRight(std::string_view text)
-{
-    while (!text.empty() && (text.back() == ' ' || text.back() == '\t'))
-        text.remove_suffix(1);
-    return text;
 }
 
 std::string toUpper(std::string_view text)

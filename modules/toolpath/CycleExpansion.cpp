@@ -11,8 +11,14 @@ double cycleReturnZ(const Cycle& cycle)
 
 std::vector<Record> expandCycleHole(const Cycle& cycle, const Vec3& hole, const Vec3& from, const SpindleState& spindle)
 {
+    return expandCycleHole(cycle, hole, KnownPosition(from), spindle);
+}
+
+std::vector<Record> expandCycleHole(const Cycle& cycle, const Vec3& hole, const KnownPosition& from,
+                                    const SpindleState& spindle)
+{
     std::vector<Record> out;
-    Vec3 at = from;
+    Vec3 at = from.value();
     auto rapid = [&](const Vec3& to) {
         if (!(to == at))
             out.push_back(Rapid{to});
@@ -29,9 +35,21 @@ std::vector<Record> expandCycleHole(const Cycle& cycle, const Vec3& hole, const 
 
     const double r = cycle.retractZ;
     const double bottom = cycle.bottomZ;
-    if (at.z < r)
-        rapid({at.x, at.y, r});
-    rapid({hole.x, hole.y, at.z});
+    if (at.z < r) {
+        if (from.complete()) {
+            rapid({at.x, at.y, r});
+        } else {
+            out.push_back(Rapid{{0, 0, r}, AxisMask{AxisMask::kZ}});
+            at.z = r;
+        }
+    }
+    const Vec3 over{hole.x, hole.y, at.z};
+    if (from.complete()) {
+        rapid(over);
+    } else {
+        out.push_back(Rapid{over});  // from an X/Y nobody knows: always written
+        at = over;
+    }
     rapid({hole.x, hole.y, r});
 
     switch (cycle.kind) {

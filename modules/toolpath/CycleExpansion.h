@@ -4,6 +4,7 @@
 #pragma once
 
 #include "toolpath/ClRecords.h"
+#include "toolpath/KnownPosition.h"
 
 #include <vector>
 
@@ -25,6 +26,11 @@ double cycleReturnZ(const Cycle& cycle);
 // rapid over the hole, rapid down to R, the drilling motion of the cycle's kind (pecks measured
 // from the hole top, dwell at the bottom), then back to cycleReturnZ(). Ends over the hole.
 std::vector<Record> expandCycleHole(const Cycle& cycle, const Vec3& hole, const Vec3& from,
+                                    const SpindleState& spindle);
+// The same from a position of which only Z need be known (a CL that retracted in Z before its
+// first X/Y): the climb to the R plane then moves Z alone. A caller with Z unknown must refuse
+// the cycle: nothing says how high the tool is before it travels over the hole.
+std::vector<Record> expandCycleHole(const Cycle& cycle, const Vec3& hole, const KnownPosition& from,
                                     const SpindleState& spindle);
 
 }  // namespace camwb::toolpath

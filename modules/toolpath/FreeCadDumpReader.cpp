@@ -12,25 +12,21 @@ namespace {
 constexpr double kSecondsPerMinute = 60;  // FreeCAD feeds are mm/s
 
 // "G81" -> {'G', 81}; nullopt for names that are not a letter and a whole number.
-std::optional<std::pair<char, int>> splitName(const std::string& name)
+std::optional<std::pair<char, int>> splitName(std::string_view name)
 {
     if (name.size() < 2)
         return std::nullopt;
-    const char letter = toUpper(name.substr(0, 1))[0];
-    const auto number = parseNumber(std::string_view(name).substr(1));
+    const char letter = name[0] >= 'a' && name[0] <= 'z' ? static_cast<char>(name[0] - 'a' + 'A') : name[0];
+    if (name.size() <= 4 && std::all_of(name.begin() + 1, name.end(), [](char c) { return c >= '0' && c <= '9'; })) {
+        int code = 0;  // the usual "G1", "G01", "M6": digits only
+        for (char c : name.substr(1))
+            code = code * 10 + (c - '0');
+        return std::pair<char, int>{letter, code};
+    }
+    const auto number = parseNumber(name.substr(1));
     if (!number || *number < 0 || *number > 999 || *number != std::floor(*number))
         return std::nullopt;
     return std::pair<char, int>{letter, static_cast<int>(*number)};
-}
-
-// Commands whose X, Y and Z are positions of the tool (for completing the first move).
-bool isPositioning(const DumpEntry& e)
-{
-    const auto name = splitName(e.name);
-    if (!name || name->first != 'G')
-        return false;
-    const int code = name->second;
-    return code <= 3 || code == 73 || (code >= 81 && code <= 85);
 }
 
 bool sameParameters(const Cycle& a, const Cycle& b)
@@ -44,27 +40,36 @@ bool sameParameters(const Cycle& a, const Cycle& b)
 
 base::Result<ClImport> readFreeCadDump(std::string_view text, const std::string& fileName)
 {
-    return FreeCadDumpReader(text, fileName).read();
+    base::LineReader lines(text);
+    return readFreeCadDump(lines, fileName);
 }
 
-FreeCadDumpReader::FreeCadDumpReader(std::string_view text, std::string fileName) :
-    m_out(std::move(fileName)),
-    m_lines(splitLines(text))
+base::Result<ClImport> readFreeCadDump(base::LineReader& lines, const std::string& fileName)
 {
+    return FreeCadDumpReader(lines, fileName).read();
+}
+
+FreeCadDumpReader::FreeCadDumpReader(base::LineReader& lines, std::string fileName) :
+    m_lines(lines),
+    m_out(std::move(fileName)),
+    m_scanner(lines, m_out)
+{
+    m_out.expectText(lines.sizeBytes());
 }
 
 base::Result<ClImport> FreeCadDumpReader::read()
 {
-    auto entries = scanFreeCadDump(m_lines, m_out);
-    if (!entries)
-        return entries.error();
-    m_entries = std::move(entries).value();
-    for (std::size_t i = 0; i < m_entries.size(); ++i) {
-        if (auto status = entry(i); !status)
+    while (true) {
+        const base::Result<bool> more = m_scanner.next(m_entry);
+        if (!more)
+            return more.error();
+        if (!more.value())
+            break;
+        if (auto status = entry(m_entry); !status)
             return status.error();
     }
     flushCycleRun();
-    const int lastLine = static_cast<int>(m_lines.size());
+    const int lastLine = m_lines.lineNumber();
     if (m_cycleMode)
         m_out.warn("canned cycle still active at the end of the dump (no G80)", lastLine);
     return m_out.finish(lastLine);
@@ -92,9 +97,10 @@ void FreeCadDumpReader::warnNoFeed(int line)
     }
 }
 
-base::Status FreeCadDumpReader::entry(std::size_t index)
+base::Status FreeCadDumpReader::entry(const DumpEntry& e)
 {
-    const DumpEntry& e = m_entries[index];
+    const std::optional<std::string> justOpened = std::move(m_justOpened);
+    m_justOpened.reset();
     if (e.kind == DumpEntry::Kind::Note) {
         if (e.name.rfind("Path:", 0) == 0) {
             // Each path object of the job starts afresh: no cycle mode carries over.
@@ -103,6 +109,7 @@ base::Status FreeCadDumpReader::entry(std::size_t index)
             m_cycleZ = m_cycleR = m_cycleQ = m_cycleP = std::nullopt;
             SectionBegin section;
             section.operationName = std::string(trim(std::string_view(e.name).substr(5)));
+            m_justOpened = section.operationName;
             m_out.beginSection(std::move(section), e.line);
         } else {
             emit(Comment{e.name}, e.line);
@@ -117,32 +124,29 @@ base::Status FreeCadDumpReader::entry(std::size_t index)
         std::string text(trim(std::string_view(e.name).substr(1, e.name.size() - 2)));
         // FreeCAD starts every object's path with its label as a comment: right after the
         // "(Path: label)" note that opened the section, it names the section a second time.
-        const DumpEntry* before = index > 0 ? &m_entries[index - 1] : nullptr;
-        if (before && before->kind == DumpEntry::Kind::Note && before->name.rfind("Path:", 0) == 0 &&
-            trim(std::string_view(before->name).substr(5)) == text)
+        if (justOpened && *justOpened == text)
             return {};
         emit(Comment{std::move(text)}, e.line);
         return {};
     }
     const auto name = splitName(e.name);
     if (name && name->first == 'G')
-        return gCode(index, name->second);
+        return gCode(e, name->second);
     if (name && name->first == 'M')
-        return mCode(index, name->second);
+        return mCode(e, name->second);
     m_out.warn("unknown command " + e.name + " ignored", e.namePos);
     return {};
 }
 
-base::Status FreeCadDumpReader::gCode(std::size_t index, int code)
+base::Status FreeCadDumpReader::gCode(const DumpEntry& e, int code)
 {
-    const DumpEntry& e = m_entries[index];
     switch (code) {
     case 0:
     case 1:
-        return move(index, code == 0);
+        return move(e, code == 0);
     case 2:
     case 3:
-        return arc(index, code == 2);
+        return arc(e, code == 2);
     case 4: {
         const DumpParameter* p = e.find('P');
         if (!p || p->value < 0)
@@ -176,22 +180,22 @@ base::Status FreeCadDumpReader::gCode(std::size_t index, int code)
         emit(CutterComp{CutterCompSide::Right}, e.line);
         return {};
     case 73:
-        return hole(index, CycleKind::ChipBreak);
+        return hole(e, CycleKind::ChipBreak);
     case 80:
         flushCycleRun();
         m_cycleMode = false;
         m_cycleZ = m_cycleR = m_cycleQ = m_cycleP = std::nullopt;
         return {};
     case 81:
-        return hole(index, CycleKind::Drill);
+        return hole(e, CycleKind::Drill);
     case 82:
-        return hole(index, CycleKind::DrillDwell);
+        return hole(e, CycleKind::DrillDwell);
     case 83:
-        return hole(index, CycleKind::Peck);
+        return hole(e, CycleKind::Peck);
     case 84:
-        return hole(index, CycleKind::Tap);
+        return hole(e, CycleKind::Tap);
     case 85:
-        return hole(index, CycleKind::Bore);
+        return hole(e, CycleKind::Bore);
     case 98:
     case 99:
         m_returnToClearance = code == 98;
@@ -206,9 +210,8 @@ base::Status FreeCadDumpReader::gCode(std::size_t index, int code)
     }
 }
 
-base::Status FreeCadDumpReader::mCode(std::size_t index, int code)
+base::Status FreeCadDumpReader::mCode(const DumpEntry& e, int code)
 {
-    const DumpEntry& e = m_entries[index];
     switch (code) {
     case 0:
     case 1:
@@ -278,76 +281,65 @@ std::optional<double> FreeCadDumpReader::feedOf(const DumpEntry& e)
     return m_feed;
 }
 
-Vec3 FreeCadDumpReader::target(std::size_t index)
+Vec3 FreeCadDumpReader::target(const DumpEntry& e, AxisMask& given) const
 {
-    const DumpEntry& e = m_entries[index];
-    double xyz[3] = {0, 0, 0};
+    Vec3 to;
+    given = AxisMask{0};
     for (int axis = 0; axis < 3; ++axis) {
-        const char key = static_cast<char>('X' + axis);
-        if (const DumpParameter* p = e.find(key)) {
-            xyz[axis] = p->value;
-        } else if (m_position[axis]) {
-            xyz[axis] = *m_position[axis];
-        } else {
-            const DumpParameter* later = nullptr;
-            int laterLine = 0;
-            for (std::size_t j = index + 1; j < m_entries.size() && !later; ++j) {
-                if (m_entries[j].kind == DumpEntry::Kind::Command && isPositioning(m_entries[j])) {
-                    later = m_entries[j].find(key);
-                    laterLine = m_entries[j].line;
-                }
-            }
-            if (later) {
-                xyz[axis] = later->value;
-                m_out.warn(std::string(1, key) + " is not known before this move: taken from line " +
-                               std::to_string(laterLine) + " (" + key + formatForMessage(later->value) + ")",
-                           e.namePos);
-            } else {
-                m_out.warn(std::string(1, key) + " is never given: 0 is assumed", e.namePos);
-            }
+        if (const DumpParameter* p = e.find(static_cast<char>('X' + axis))) {
+            setAxisValue(to, axis, p->value);
+            given.bits = static_cast<unsigned char>(given.bits | 1 << axis);
+        } else if (m_position.known(axis)) {
+            setAxisValue(to, axis, m_position.value(axis));
         }
     }
-    return {xyz[0], xyz[1], xyz[2]};
+    return to;
 }
 
-base::Status FreeCadDumpReader::move(std::size_t index, bool rapid)
+base::Status FreeCadDumpReader::move(const DumpEntry& e, bool rapid)
 {
-    const DumpEntry& e = m_entries[index];
     if (auto status = noRotaryAxes(e); !status)
         return status;
     if (!rapid)
         feedOf(e);
     m_cycleMode = false;
-    if (!e.find('X') && !e.find('Y') && !e.find('Z')) {
+    AxisMask given;
+    Vec3 to = target(e, given);
+    if (given.none()) {
         if (rapid)
             m_out.warn("G0 without X, Y or Z ignored", e.namePos);
         return {};
     }
-    const Vec3 to = target(index);
+    // Only the axes the command gives: the others stay where they are, which the dump may not
+    // have said yet ("G0 Z20" before the first X/Y), and the records never guess them.
+    for (int axis = 0; axis < 3; ++axis) {
+        if (!given.has(axis))
+            setAxisValue(to, axis, 0);
+    }
     if (rapid) {
-        emit(Rapid{to}, e.line);
+        emit(Rapid{to, given}, e.line);
     } else {
         warnNoFeed(e.line);
-        emit(Linear{to, m_feed}, e.line);
+        emit(Linear{to, m_feed, given}, e.line);
     }
-    m_position = {to.x, to.y, to.z};
+    m_position.moveTo(to, given);
     return {};
 }
 
-base::Status FreeCadDumpReader::arc(std::size_t index, bool clockwise)
+base::Status FreeCadDumpReader::arc(const DumpEntry& e, bool clockwise)
 {
-    const DumpEntry& e = m_entries[index];
     if (auto status = noRotaryAxes(e); !status)
         return status;
     if (const DumpParameter* r = e.find('R'))
         return m_out.error("arcs with R are not supported (FreeCAD writes I, J, K)", r->pos);
-    if (!m_position[0] || !m_position[1] || !m_position[2])
+    if (!m_position.complete())
         return m_out.error("arc from an unknown position (no move with X, Y and Z before it)", e.namePos);
     m_cycleMode = false;
-    const Vec3 start{*m_position[0], *m_position[1], *m_position[2]};
+    const Vec3 start = m_position.value();
     feedOf(e);
     warnNoFeed(e.line);
-    const Vec3 to = target(index);
+    AxisMask given;
+    const Vec3 to = target(e, given);  // complete: the start is
     auto value = [&](char key) {
         const DumpParameter* p = e.find(key);
         return p ? p->value : 0.0;
@@ -369,13 +361,12 @@ base::Status FreeCadDumpReader::arc(std::size_t index, bool clockwise)
     for (const std::string& problem : arcRadiusProblems(start, a, std::nullopt, 0.01 + 1e-4 * magnitude))
         m_out.warn(problem, e.line);
     emit(a, e.line);
-    m_position = {to.x, to.y, to.z};
+    m_position.set(to);
     return {};
 }
 
-base::Status FreeCadDumpReader::hole(std::size_t index, CycleKind kind)
+base::Status FreeCadDumpReader::hole(const DumpEntry& e, CycleKind kind)
 {
-    const DumpEntry& e = m_entries[index];
     if (auto status = noRotaryAxes(e); !status)
         return status;
     feedOf(e);
@@ -383,11 +374,11 @@ base::Status FreeCadDumpReader::hole(std::size_t index, CycleKind kind)
     double xy[2] = {0, 0};
     for (int axis = 0; axis < 2; ++axis) {
         const DumpParameter* p = e.find(static_cast<char>('X' + axis));
-        if (!p && !m_position[axis])
+        if (!p && !m_position.known(axis))
             return m_out.error(e.name + std::string(" needs ") + static_cast<char>('X' + axis) +
                                    " (no position before it)",
                                e.namePos);
-        xy[axis] = p ? p->value : *m_position[axis];
+        xy[axis] = p ? p->value : m_position.value(axis);
     }
     // Z, R, Q and P are modal within the cycle mode, as on the controls FreeCAD writes for.
     auto modal = [&](char key, std::optional<double>& slot, bool required, const char* what) -> base::Status {
@@ -433,8 +424,8 @@ base::Status FreeCadDumpReader::hole(std::size_t index, CycleKind kind)
         m_run->cycle.holes.push_back(hole);
     } else {
         flushCycleRun();
-        if (m_position[2]) {
-            c.clearanceZ = *m_position[2];
+        if (m_position.known(2)) {
+            c.clearanceZ = m_position.value(2);
         } else {
             m_out.warn("no Z before the cycle: its clearance plane is taken as the R plane", e.namePos);
             c.clearanceZ = c.retractZ;
@@ -448,7 +439,7 @@ base::Status FreeCadDumpReader::hole(std::size_t index, CycleKind kind)
     }
     m_cycleMode = true;
     const Cycle& run = m_run->cycle;
-    m_position = {hole.x, hole.y, run.returnToClearance ? std::max(run.clearanceZ, run.retractZ) : run.retractZ};
+    m_position.set({hole.x, hole.y, run.returnToClearance ? std::max(run.clearanceZ, run.retractZ) : run.retractZ});
     return {};
 }
 

@@ -8,7 +8,7 @@
 // each object, header remarks (which may wrap until their ')').
 //
 // Units: lengths are mm; feeds F are mm/s (FreeCAD's internal unit) and become mm/min (x60, so
-// F:3.3333 -> 199.998). X, Y, Z are absolute and modal (missing ones keep their last value).
+// F:3.3333 -> 199.998). X, Y, Z are absolute and modal (missing ones keep their value).
 //
 // Commands and the records they give:
 //  (Path: label)      closes the open section and opens SectionBegin{label}; other "(...)" lines
@@ -16,10 +16,9 @@
 //                     its "(Path: label)": FreeCAD repeats each object's label there, and the
 //                     section already carries it.
 //  G0/G00, G1/G01     -> Rapid, Linear. F on a G0 is not a feed (FreeCAD writes F:0 there) and is
-//                     ignored; a G1 without F keeps the last feed. A move before X, Y or Z was
-//                     ever given takes the missing axis from the next command that gives it (a
-//                     warning says so): FreeCAD's first move is typically "G0 Z<clearance>", and a
-//                     guessed 0 would drive to the origin.
+//                     ignored; a G1 without F keeps the last feed. A move gives only the axes the
+//                     command names (AxisMask); the others stay where they are, so FreeCAD's usual
+//                     first move "G0 Z<clearance>" is a retract in Z alone, whatever X and Y are.
 //  G2/G3              -> Arc (G2 clockwise) with the centre start + (I,J,K) (incremental; the part
 //                     along the plane normal is ignored; missing I/J/K are 0), in the plane of
 //                     G17 (XY, normal +Z, the default), G18 (ZX, normal +Y: seen from +Y, as ISO
@@ -48,6 +47,7 @@
 
 #include "toolpath/ClBuilder.h"
 #include "toolpath/FreeCadDumpScanner.h"
+#include "toolpath/KnownPosition.h"
 
 #include <array>
 #include <optional>
@@ -59,20 +59,20 @@ namespace camwb::toolpath {
 
 class FreeCadDumpReader {
 public:
-    FreeCadDumpReader(std::string_view text, std::string fileName);
+    FreeCadDumpReader(base::LineReader& lines, std::string fileName);
     base::Result<ClImport> read();
 
 private:
-    base::Status entry(std::size_t index);
-    base::Status gCode(std::size_t index, int code);
-    base::Status mCode(std::size_t index, int code);
-    base::Status move(std::size_t index, bool rapid);
-    base::Status arc(std::size_t index, bool clockwise);
-    base::Status hole(std::size_t index, CycleKind kind);
+    base::Status entry(const DumpEntry& e);
+    base::Status gCode(const DumpEntry& e, int code);
+    base::Status mCode(const DumpEntry& e, int code);
+    base::Status move(const DumpEntry& e, bool rapid);
+    base::Status arc(const DumpEntry& e, bool clockwise);
+    base::Status hole(const DumpEntry& e, CycleKind kind);
     base::Status noRotaryAxes(const DumpEntry& e) const;
-    // The target of a motion at entry `index`: given axes, else the current ones, else (never set
-    // yet) the next value the file gives them, with a warning.
-    Vec3 target(std::size_t index);
+    // The target of a motion: the axes it gives (`given`), the others from the current position
+    // where known (0 where not: never read).
+    Vec3 target(const DumpEntry& e, AxisMask& given) const;
     std::optional<double> feedOf(const DumpEntry& e);
     void emit(Record record, int line);
     void flushCycleRun();
@@ -83,10 +83,14 @@ private:
         int line = 0;
     };
 
+    base::LineReader& m_lines;
     ClBuilder m_out;
-    std::vector<std::string_view> m_lines;
-    std::vector<DumpEntry> m_entries;
-    std::array<std::optional<double>, 3> m_position;
+    FreeCadDumpScanner m_scanner;
+    DumpEntry m_entry;  // the entry being read, its storage reused for the next
+    // The label of the section the previous entry opened ("(Path: label)"), while nothing else
+    // came after it: FreeCAD repeats it as a comment command, which is not a comment of its own.
+    std::optional<std::string> m_justOpened;
+    KnownPosition m_position;
     Vec3 m_planeNormal{0, 0, 1};
     double m_feed = 0;
     bool m_feedSet = false;

@@ -12,6 +12,12 @@ void Toolpath::add(Record record, SourceRef source)
     m_sources.push_back(source);
 }
 
+void Toolpath::reserve(std::size_t records)
+{
+    m_records.reserve(records);
+    m_sources.reserve(records);
+}
+
 void Toolpath::append(const Toolpath& other)
 {
     m_records.insert(m_records.end(), other.m_records.begin(), other.m_records.end());

@@ -12,10 +12,14 @@ class Toolpath {
 public:
     void add(Record record, SourceRef source = {});
     void append(const Toolpath& other);
+    // Room for `records` in all, so that a reader of a large file does not regrow and copy them.
+    void reserve(std::size_t records);
 
     std::size_t size() const { return m_records.size(); }
     bool empty() const { return m_records.empty(); }
     const Record& record(std::size_t i) const { return m_records[i]; }
+    // For builders that complete a record after the fact (an importer's section header).
+    Record& record(std::size_t i) { return m_records[i]; }
     const SourceRef& source(std::size_t i) const { return m_sources[i]; }
     const std::vector<Record>& records() const { return m_records; }
 

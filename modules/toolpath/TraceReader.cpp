@@ -1,6 +1,7 @@
 #include "toolpath/TraceReader.h"
 
 #include "toolpath/ClText.h"
+#include "toolpath/KnownPosition.h"
 #include "toolpath/RecordNames.h"
 
 #include <array>
@@ -50,9 +51,9 @@ std::optional<std::vector<Token>> tokenize(std::string_view line, int& badColumn
     return tokens;
 }
 
-class LineReader {
+class LineParser {
 public:
-    LineReader(std::vector<Token> tokens, int line, std::size_t length, const std::string& file) :
+    LineParser(std::vector<Token> tokens, int line, std::size_t length, const std::string& file) :
         m_tokens(std::move(tokens)),
         m_line(line),
         m_endColumn(static_cast<int>(length) + 1),
@@ -96,6 +97,32 @@ public:
         return representable ? static_cast<int>(value) : 0;
     }
     Vec3 point() { return {number(), number(), number()}; }
+    // A straight move's target: "x y z", or the axes it gives by name in order ("z 20", "x 1 y 2").
+    Vec3 target(AxisMask& axes)
+    {
+        const Token* t = m_index < m_tokens.size() ? &m_tokens[m_index] : nullptr;
+        const bool named = t && !t->quoted && t->text.size() == 1 && t->text[0] >= 'x' && t->text[0] <= 'z';
+        if (!named) {
+            axes = AxisMask{};
+            return point();
+        }
+        Vec3 to;
+        axes = AxisMask{0};
+        while (!failed() && m_index < m_tokens.size()) {
+            const Token& axisToken = m_tokens[m_index];
+            if (axisToken.quoted || axisToken.text.size() != 1 || axisToken.text[0] < 'x' || axisToken.text[0] > 'z')
+                break;
+            const int axis = axisToken.text[0] - 'x';
+            if (axes.bits >> axis) {  // this axis or a later one already given
+                fail("axis '" + axisToken.text + "' out of order or given twice (x, y, z)", axisToken.column);
+                break;
+            }
+            ++m_index;
+            axes.bits = static_cast<unsigned char>(axes.bits | 1 << axis);
+            setAxisValue(to, axis, number());
+        }
+        return to;
+    }
     std::string text()
     {
         const Token* t = next("a quoted text");
@@ -157,26 +184,34 @@ constexpr std::array kSides{CutterCompSide::Off, CutterCompSide::Left, CutterCom
 
 base::Result<ClImport> readTrace(std::string_view text, const std::string& fileName)
 {
+    base::LineReader lines(text);
+    return readTrace(lines, fileName);
+}
+
+base::Result<ClImport> readTrace(base::LineReader& lines, const std::string& fileName)
+{
     ClImport out;
-    const std::vector<std::string_view> lines = splitLines(text);
     int section = -1, sections = 0;
-    for (std::size_t index = 0; index < lines.size(); ++index) {
-        const int lineNumber = static_cast<int>(index) + 1;
-        const std::string_view line = trimRight(lines[index]);
+    while (const std::optional<std::string_view> raw = lines.next()) {
+        const int lineNumber = lines.lineNumber();
+        const std::string_view line = trimRight(*raw);
         if (trim(line).empty() || trim(line).front() == '#')
             continue;
         int badColumn = 0;
         auto tokens = tokenize(line, badColumn);
         if (!tokens)
             return base::makeError("unterminated quoted text", fileName, lineNumber, badColumn);
-        LineReader in(std::move(*tokens), lineNumber, line.size(), fileName);
+        LineParser in(std::move(*tokens), lineNumber, line.size(), fileName);
         const std::string kind = in.word();
         const int kindColumn = static_cast<int>(line.find_first_not_of(" \t")) + 1;
         Record record;
         if (kind == "rapid") {
-            record = Rapid{in.point()};
+            Rapid r;
+            r.to = in.target(r.axes);
+            record = r;
         } else if (kind == "linear") {
-            Linear l{in.point()};
+            Linear l;
+            l.to = in.target(l.axes);
             in.keyword("f");
             l.feedMmPerMin = in.number();
             record = l;
@@ -252,13 +287,14 @@ base::Result<ClImport> readTrace(std::string_view text, const std::string& fileN
             if (in.failed())
                 return in.error();
             for (int h = 0; h < holes; ++h) {
-                if (++index >= lines.size())
+                const std::optional<std::string_view> next = lines.next();
+                if (!next)
                     return base::makeError("the cycle announces " + std::to_string(holes) + " holes but the file ends",
                                            fileName, lineNumber, kindColumn);
                 int column = 0;
-                const std::string_view holeLine = trimRight(lines[index]);
+                const std::string_view holeLine = trimRight(*next);
                 auto holeTokens = tokenize(holeLine, column);
-                LineReader hole(holeTokens.value_or(std::vector<Token>{}), static_cast<int>(index) + 1, holeLine.size(),
+                LineParser hole(holeTokens.value_or(std::vector<Token>{}), lines.lineNumber(), holeLine.size(),
                                 fileName);
                 hole.keyword("hole");
                 c.holes.push_back(hole.point());
@@ -311,6 +347,8 @@ base::Result<ClImport> readTrace(std::string_view text, const std::string& fileN
         if (kind == "endsection")
             section = -1;
     }
+    if (lines.readError())
+        return *lines.readError();
     return out;
 }
 

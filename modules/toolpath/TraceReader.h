@@ -4,6 +4,7 @@
 // allowed for notes in hand-written test inputs.
 #pragma once
 
+#include "base/LineReader.h"
 #include "toolpath/ClImport.h"
 
 #include <string>
@@ -14,5 +15,6 @@ namespace camwb::toolpath {
 // SourceRefs as the CL importers give them (ClImport.h): section index and 1-based line.
 // A malformed line gives an Error with its line and the column of the offending field.
 base::Result<ClImport> readTrace(std::string_view text, const std::string& fileName);
+base::Result<ClImport> readTrace(base::LineReader& lines, const std::string& fileName);
 
 }  // namespace camwb::toolpath

@@ -11,6 +11,21 @@ namespace {
 std::string num(double v) { return base::formatFixed(v, 4); }
 std::string point(const Vec3& p) { return num(p.x) + ' ' + num(p.y) + ' ' + num(p.z); }
 
+// The target of a straight move: three numbers when it gives every axis, else only the axes it
+// gives, each named ("z 20.0000"): the trace never shows a coordinate the move did not give.
+std::string target(const Vec3& p, AxisMask axes)
+{
+    if (axes.all())
+        return point(p);
+    std::string out;
+    const double values[3] = {p.x, p.y, p.z};
+    for (int axis = 0; axis < 3; ++axis) {
+        if (axes.has(axis))
+            out += (out.empty() ? "" : " ") + std::string(1, static_cast<char>('x' + axis)) + ' ' + num(values[axis]);
+    }
+    return out;
+}
+
 // A text in quotes, with '"' and '\\' escaped, so that any name or comment reads back unchanged.
 std::string quoted(const std::string& text)
 {
@@ -25,9 +40,12 @@ std::string quoted(const std::string& text)
 
 }  // namespace
 
-void TraceWriter::rapid(const Rapid& r) { m_out += "rapid " + point(r.to) + '\n'; }
+void TraceWriter::rapid(const Rapid& r) { m_out += "rapid " + target(r.to, r.axes) + '\n'; }
 
-void TraceWriter::linear(const Linear& r) { m_out += "linear " + point(r.to) + " f " + num(r.feedMmPerMin) + '\n'; }
+void TraceWriter::linear(const Linear& r)
+{
+    m_out += "linear " + target(r.to, r.axes) + " f " + num(r.feedMmPerMin) + '\n';
+}
 
 void TraceWriter::arc(const Arc& r)
 {

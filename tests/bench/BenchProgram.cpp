@@ -2,6 +2,8 @@
 
 #include "base/NumberFormat.h"
 
+#include <fstream>
+#include <string>
 #include <variant>
 
 namespace camwb::bench {
@@ -68,6 +70,54 @@ std::string asFreeCadDump(const Toolpath& program)
         }
     }
     return out;
+}
+
+std::string asAptSource(const Toolpath& program)
+{
+    const base::NumberFormat f{6, true};
+    std::string out = "PARTNO/BENCH\nUNITS/MM\n";
+    Vec3 at;
+    double feed = -1;
+    auto xyz = [&](const Vec3& p) { return f.format(p.x) + "," + f.format(p.y) + "," + f.format(p.z); };
+    auto fedrat = [&](double mmPerMin) {
+        if (mmPerMin != feed)
+            out += "FEDRAT/" + f.format(mmPerMin) + ",MMPM\n";
+        feed = mmPerMin;
+    };
+    for (const Record& record : program.records()) {
+        if (const auto* r = std::get_if<Rapid>(&record)) {
+            out += "RAPID\nGOTO/" + xyz(r->to) + "\n";
+            at = r->to;
+        } else if (const auto* l = std::get_if<Linear>(&record)) {
+            fedrat(l->feedMmPerMin);
+            out += "GOTO/" + xyz(l->to) + "\n";
+            at = l->to;
+        } else if (const auto* a = std::get_if<Arc>(&record)) {
+            fedrat(a->feedMmPerMin);
+            // NX: counter-clockwise about (i,j,k), so k = -1 for a clockwise arc seen from +Z.
+            out += "CIRCLE/" + xyz(a->center) + ",0,0," + (a->clockwise ? "-1" : "1") + "," +
+                   f.format((at - a->center).length()) + "\nGOTO/" + xyz(a->to) + "\n";
+            at = a->to;
+        } else if (const auto* t = std::get_if<ToolChange>(&record)) {
+            out += "CUTTER/" + f.format(t->tool.diameterMm) + "\nLOADTL/" + std::to_string(t->tool.number) + "\n";
+        } else if (const auto* s = std::get_if<Spindle>(&record)) {
+            out += "SPINDL/" + f.format(s->rpm) + ",RPM,CLW\n";
+        } else if (const auto* b = std::get_if<SectionBegin>(&record)) {
+            out += "TOOL PATH/" + b->operationName + ",TOOL,Flat D6\n";
+        } else if (std::holds_alternative<SectionEnd>(record)) {
+            out += "END-OF-PATH\n";
+        }
+    }
+    return out + "FINI\n";
+}
+
+long currentRssKb()
+{
+    std::ifstream status("/proc/self/status");
+    for (std::string line; std::getline(status, line);)
+        if (line.rfind("VmRSS:", 0) == 0)
+            return std::stol(line.substr(6));
+    return 0;
 }
 
 }  // namespace camwb::bench

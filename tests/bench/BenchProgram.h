@@ -19,4 +19,11 @@ toolpath::Toolpath benchProgram(std::size_t moves);
 // toolpath::readFreeCadDump reads back to the same moves.
 std::string asFreeCadDump(const toolpath::Toolpath& program);
 
+// The program as APT CL source in NX's style (TOOL PATH, LOADTL, SPINDL, FEDRAT, GOTO, CIRCLE +
+// GOTO for the arcs), which toolpath::readAptSource reads back to the same moves.
+std::string asAptSource(const toolpath::Toolpath& program);
+
+// The process's resident memory now (VmRSS), in KiB: what a benchmark holds, taken before and after.
+long currentRssKb();
+
 }  // namespace camwb::bench

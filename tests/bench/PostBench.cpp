@@ -23,15 +23,6 @@ namespace {
 
 using namespace camwb;
 
-long currentRssKb()
-{
-    std::ifstream status("/proc/self/status");
-    for (std::string line; std::getline(status, line);)
-        if (line.rfind("VmRSS:", 0) == 0)
-            return std::stol(line.substr(6));
-    return 0;
-}
-
 long peakRssKb()
 {
     rusage usage{};
@@ -78,7 +69,7 @@ void postToFile(benchmark::State& state, const std::string& postId)
     const toolpath::Toolpath& path = program(static_cast<std::size_t>(state.range(0)));
     const post::PostProcessor& post = loadPost(postId);
     const std::string out = (std::filesystem::temp_directory_path() / ("camwb-bench-" + postId + ".nc")).string();
-    const long before = currentRssKb();
+    const long before = bench::currentRssKb();
     std::size_t lines = 0, bytes = 0;
     for (auto _ : state) {
         auto summary = post.runToFile(path, options(), out);
@@ -94,7 +85,7 @@ void postToFile(benchmark::State& state, const std::string& postId)
     state.counters["blocks"] = static_cast<double>(lines);
     state.counters["output_MB"] = static_cast<double>(bytes) / 1e6;
     state.counters["peak_rss_MB"] = static_cast<double>(peakRssKb()) / 1024;
-    state.counters["rss_growth_MB"] = static_cast<double>(currentRssKb() - before) / 1024;
+    state.counters["rss_growth_MB"] = static_cast<double>(bench::currentRssKb() - before) / 1024;
     std::filesystem::remove(out);
 }
 
@@ -105,13 +96,13 @@ void postInMemory(benchmark::State& state, const std::string& postId)
     std::size_t lines = 0;
     long held = 0;  // what the finished output occupies while it is held
     for (auto _ : state) {
-        const long before = currentRssKb();
+        const long before = bench::currentRssKb();
         auto output = post.run(path, options());
         if (!output) {
             state.SkipWithError(output.error().toString().c_str());
             return;
         }
-        held = currentRssKb() - before;
+        held = bench::currentRssKb() - before;
         lines = output->lineOperation.size();
         benchmark::DoNotOptimize(output->text.data());
     }

@@ -67,7 +67,7 @@ TEST_P(IsoAgainstRs274, SameMotion)
     for (const nc::Diagnostic& d : ours.diagnostics)
         EXPECT_NE(d.severity, nc::Severity::Error) << nc::formatDiagnostic(d);
 
-    const auto difference = compareMotion(expectedMotion(recorder.toolpath()), theirs.value().motion);
+    const auto difference = compareMotion(expectedMotion(recorder.toolpath(), false), theirs.value().motion);
     EXPECT_FALSE(difference) << c.ngc << ": " << *difference;
     if (!HasFailure())
         fs::remove_all(dir);

@@ -1,11 +1,13 @@
 #include "LinuxCncModel.h"
 
 #include "base/NumberFormat.h"
+#include "toolpath/KnownPosition.h"
 
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <numbers>
+#include <utility>
 
 namespace camwb::external {
 
@@ -18,12 +20,15 @@ const double kPeckBackOffMm = 0.010 * 25.4;
 
 class Model {
 public:
+    explicit Model(bool fromPost) : m_fromPost(fromPost) {}
     Toolpath take();
     void add(const Record& record);
 
 private:
     void rapid(const Vec3& to);
+    void clRapid(const Rapid& r);
     void feedTo(const Vec3& to, double feed);
+    Vec3 endOf(const Vec3& to, AxisMask axes) const;
     void spindle(double rpm, bool clockwise);
     void coolant(CoolantMode mode);
     void toolChange(const ToolChange& change);
@@ -37,12 +42,42 @@ private:
     CoolantMode m_coolant = CoolantMode::Off;
     FeedMode m_feedMode = FeedMode::PerMinute;
     int m_workOffset = 1;
+    bool m_fromPost = true;
+    bool m_afterToolChange = false;
 };
 
 void Model::rapid(const Vec3& to)
 {
     m_out.add(Rapid{to});
     m_position = to;
+}
+
+// A CL move that gives only some axes leaves the others where they are (G0 Z20 moves Z alone).
+Vec3 Model::endOf(const Vec3& to, AxisMask axes) const
+{
+    KnownPosition at(m_position);
+    at.moveTo(to, axes);
+    return at.value();
+}
+
+// The post's first rapid after a tool change goes over in X/Y at the height the change left, then
+// moves Z (unless the CL gives only one of them): two traverses in LinuxCNC. A traverse in X/Y
+// alone right after a tool change leaves Z to the machine: G43 has just changed what the height
+// the change left is in program coordinates, which the CL does not know, so it gives X/Y only.
+void Model::clRapid(const Rapid& r)
+{
+    const Vec3 to = endOf(r.to, r.axes);
+    const bool first = std::exchange(m_afterToolChange, false);
+    const bool split = m_fromPost && r.axes.has(2) && (r.axes.has(0) || r.axes.has(1));
+    const bool onlyXY = to.z == m_position.z && (!m_fromPost || to.x != m_position.x || to.y != m_position.y);
+    if (first && (split || onlyXY)) {
+        m_out.add(Rapid{{to.x, to.y, 0}, AxisMask{AxisMask::kX | AxisMask::kY}});
+        m_position.x = to.x;
+        m_position.y = to.y;
+        if (!split)
+            return;
+    }
+    rapid(to);
 }
 
 void Model::feedTo(const Vec3& to, double feed)
@@ -83,6 +118,7 @@ void Model::toolChange(const ToolChange& change)
     spindle(0, true);
     m_out.add(ToolChange{Tool{change.tool.number}});
     spindle(running.rpm, running.clockwise);
+    m_afterToolChange = true;
 }
 
 void Model::arc(const Arc& cl)
@@ -176,10 +212,12 @@ void Model::add(const Record& record)
         [this](const auto& r) {
             using T = std::decay_t<decltype(r)>;
             if constexpr (std::is_same_v<T, Rapid>) {
-                rapid(r.to);
+                clRapid(r);
             } else if constexpr (std::is_same_v<T, Linear>) {
-                feedTo(r.to, r.feedMmPerMin);
+                m_afterToolChange = false;
+                feedTo(endOf(r.to, r.axes), r.feedMmPerMin);
             } else if constexpr (std::is_same_v<T, Arc>) {
+                m_afterToolChange = false;
                 arc(r);
             } else if constexpr (std::is_same_v<T, ToolChange>) {
                 toolChange(r);
@@ -198,6 +236,7 @@ void Model::add(const Record& record)
             } else if constexpr (std::is_same_v<T, Dwell> || std::is_same_v<T, ProgramStop>) {
                 m_out.add(r);
             } else if constexpr (std::is_same_v<T, Cycle>) {
+                m_afterToolChange = false;
                 cycle(r);
             }
             // Comments, sections, cutter compensation (tested with radius 0) and pass-through text
@@ -220,9 +259,9 @@ Toolpath Model::take()
 
 double written(double value) { return std::strtod(base::formatFixed(value, 3).c_str(), nullptr); }
 
-Toolpath expectedMotion(const Toolpath& cl)
+Toolpath expectedMotion(const Toolpath& cl, bool fromPost)
 {
-    Model model;
+    Model model(fromPost);
     for (const Record& record : cl.records())
         model.add(record);
     return model.take();

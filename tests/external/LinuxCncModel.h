@@ -15,7 +15,9 @@ double written(double value);
 // Spindle, Coolant, ToolChange, WorkOffset, FeedModeChange and ProgramStop records, state records
 // only on change. Feeds are in the readback's unit: mm/min, mm/rev, or for inverse time the mm/min
 // LinuxCNC derives from the move's length. Comments, sections and cutter compensation add nothing.
-toolpath::Toolpath expectedMotion(const toolpath::Toolpath& cl);
+// `fromPost`: the records are a CL that posts/linuxcnc.js writes (its first rapid after a tool
+// change goes over in X/Y, then Z); false: they are what an NC program commands, block by block.
+toolpath::Toolpath expectedMotion(const toolpath::Toolpath& cl, bool fromPost = true);
 
 // Sweep in degrees of an arc from `start` (extra turns included; start = end is a full turn).
 double arcSweepDeg(const toolpath::Vec3& start, const toolpath::Arc& arc);

@@ -2,12 +2,14 @@
 
 #include "LinuxCncModel.h"
 
+#include "toolpath/KnownPosition.h"
 #include "toolpath/MachineSink.h"
 #include "toolpath/TraceWriter.h"
 
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <utility>
 #include <vector>
 
 namespace camwb::external {
@@ -20,6 +22,10 @@ struct Item {
     const Record* record;
     std::size_t index;  // in its toolpath
     Vec3 start;         // position before the record
+    Vec3 end;           // and after it (a move that gives only some axes keeps the others)
+    // The move after a rapid left to the machine that does not move in the CL's coordinates:
+    // LinuxCNC moves there only when the new tool's length changed the height under the rapid.
+    bool stillUnlessLengthChanged = false;
 };
 
 bool sameWritten(const Vec3& a, const Vec3& b)
@@ -33,23 +39,30 @@ std::vector<Item> items(const Toolpath& path)
 {
     std::vector<Item> result;
     Vec3 position;  // rs274 starts at the origin
+    bool leftToMachine = false;
     for (std::size_t i = 0; i < path.size(); ++i) {
         const Record& record = path.record(i);
         if (std::holds_alternative<Comment>(record))
             continue;
         const Vec3 start = position;
+        // A rapid that leaves an axis to the machine (X/Y after a tool change, at the height G43
+        // left) always counts, and so does the move after it: LinuxCNC's Z moved under them in
+        // program coordinates.
+        const bool fromMachineHeight = std::exchange(leftToMachine, false);
         if (const auto* rapid = std::get_if<Rapid>(&record)) {
-            position = rapid->to;
-            if (sameWritten(start, position))
+            position = *endOf(KnownPosition(position), rapid->to, rapid->axes);
+            leftToMachine = !rapid->axes.all();
+            if (!leftToMachine && !fromMachineHeight && sameWritten(start, position))
                 continue;
         } else if (const auto* linear = std::get_if<Linear>(&record)) {
-            position = linear->to;
-            if (sameWritten(start, position))
+            position = *endOf(KnownPosition(position), linear->to, linear->axes);
+            if (!fromMachineHeight && sameWritten(start, position))
                 continue;
         } else if (const auto* arc = std::get_if<Arc>(&record)) {
             position = arc->to;
         }
-        result.push_back({&record, i, start});
+        const bool still = fromMachineHeight && !std::holds_alternative<Arc>(record) && sameWritten(start, position);
+        result.push_back({&record, i, start, position, still});
     }
     return result;
 }
@@ -115,8 +128,11 @@ std::optional<std::string> Comparison::run()
                 return difference;
             continue;
         }
-        if (auto difference = same(e, m_actual[m_j]))
+        if (auto difference = same(e, m_actual[m_j])) {
+            if (e.stillUnlessLengthChanged)
+                continue;
             return difference;
+        }
         if (const auto* mode = std::get_if<FeedModeChange>(e.record))
             m_inverseTime = mode->mode == FeedMode::InverseTime;
         ++m_j;
@@ -132,11 +148,13 @@ std::optional<std::string> Comparison::same(const Item& e, const Item& a) const
         return differ(e, a, "different kind");
     const double feedTolerance = m_inverseTime ? m_tol.inverseTimeRelative : m_tol.feedRelative;
     if (const auto* rapid = std::get_if<Rapid>(e.record)) {
-        if (axisDistance(rapid->to, std::get<Rapid>(*a.record).to) > m_tol.axisMm)
-            return differ(e, a, "rapid end point");
+        for (int axis = 0; axis < 3; ++axis) {  // the axes the expected move gives
+            if (rapid->axes.has(axis) && std::abs(axisValue(e.end, axis) - axisValue(a.end, axis)) > m_tol.axisMm)
+                return differ(e, a, "rapid end point");
+        }
     } else if (const auto* linear = std::get_if<Linear>(e.record)) {
         const auto& other = std::get<Linear>(*a.record);
-        if (axisDistance(linear->to, other.to) > m_tol.axisMm)
+        if (axisDistance(e.end, a.end) > m_tol.axisMm)
             return differ(e, a, "feed move end point");
         if (!closeFeed(linear->feedMmPerMin, other.feedMmPerMin, feedTolerance))
             return differ(e, a, "feed rate");

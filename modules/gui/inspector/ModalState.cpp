@@ -1,6 +1,7 @@
 #include "gui/inspector/ModalState.h"
 
 #include "toolpath/CycleExpansion.h"
+#include "toolpath/KnownPosition.h"
 #include "toolpath/Toolpath.h"
 
 #include <algorithm>
@@ -36,6 +37,19 @@ const char* cycleName(toolpath::CycleKind kind)
     return "cycle";
 }
 
+// A straight move sets only the axes it gives; without a position before it, one that gives only
+// some axes leaves the position unknown (the interpreters give all three).
+void moveStraight(ModalState& state, const base::Vec3& to, toolpath::AxisMask axes)
+{
+    toolpath::KnownPosition position =
+        state.hasPosition ? toolpath::KnownPosition(state.position) : toolpath::KnownPosition();
+    position.moveTo(to, axes);
+    if (const std::optional<base::Vec3> point = position.point()) {
+        state.position = *point;
+        state.hasPosition = true;
+    }
+}
+
 bool leavesPlane(const ModalState& before, const toolpath::Arc& arc)
 {
     if (!before.hasPosition)
@@ -52,13 +66,9 @@ bool leavesPlane(const ModalState& before, const toolpath::Arc& arc)
 void applyRecord(ModalState& state, const toolpath::Record& record)
 {
     std::visit(Overloaded{
-                   [&](const toolpath::Rapid& r) {
-                       state.position = r.to;
-                       state.hasPosition = true;
-                   },
+                   [&](const toolpath::Rapid& r) { moveStraight(state, r.to, r.axes); },
                    [&](const toolpath::Linear& l) {
-                       state.position = l.to;
-                       state.hasPosition = true;
+                       moveStraight(state, l.to, l.axes);
                        state.feed = l.feedMmPerMin;
                    },
                    [&](const toolpath::Arc& a) {

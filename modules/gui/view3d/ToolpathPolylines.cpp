@@ -62,6 +62,7 @@ void ToolpathPolylines::clear()
     m_inError = false;
     m_hasPosition = false;
     m_positionStored = false;
+    m_partial.forget();
 }
 
 void ToolpathPolylines::setStartPosition(const Vec3& position)
@@ -118,21 +119,25 @@ void ToolpathPolylines::errorTo(const Vec3& to)
     m_positionStored = true;
 }
 
-void ToolpathPolylines::rapid(const toolpath::Rapid& r)
+// A move that gives only some axes keeps the others; until all three are known (a CL that
+// retracts in Z before its first X/Y) nothing is drawn rather than a line from a guessed point.
+void ToolpathPolylines::straightTo(const Vec3& to, toolpath::AxisMask axes, PathSegmentKind kind)
 {
+    if (m_hasPosition)
+        m_partial.set(m_position);
+    m_partial.moveTo(to, axes);
+    const std::optional<Vec3> point = m_partial.point();
+    if (!point)
+        return;
     if (m_inError)
-        errorTo(r.to);
+        errorTo(*point);
     else
-        lineTo(r.to, PathSegmentKind::Rapid);
+        lineTo(*point, kind);
 }
 
-void ToolpathPolylines::linear(const toolpath::Linear& l)
-{
-    if (m_inError)
-        errorTo(l.to);
-    else
-        lineTo(l.to, PathSegmentKind::Feed);
-}
+void ToolpathPolylines::rapid(const toolpath::Rapid& r) { straightTo(r.to, r.axes, PathSegmentKind::Rapid); }
+
+void ToolpathPolylines::linear(const toolpath::Linear& l) { straightTo(l.to, l.axes, PathSegmentKind::Feed); }
 
 void ToolpathPolylines::toolAxisMove(const toolpath::ToolAxisMove& m)
 {
@@ -164,7 +169,11 @@ void ToolpathPolylines::cycle(const toolpath::Cycle& c)
     // A cycle block with an error: its holes' expansions are drawn dashed (the moves dispatched
     // below see m_inError).
     for (const Vec3& hole : c.holes) {
-        const Vec3 from = m_hasPosition ? m_position : Vec3{hole.x, hole.y, toolpath::cycleReturnZ(c)};
+        // Without a position the drawing starts over the hole (the first move only sets it).
+        const toolpath::KnownPosition from =
+            m_hasPosition        ? toolpath::KnownPosition(m_position)
+            : m_partial.known(2) ? m_partial
+                                 : toolpath::KnownPosition(Vec3{hole.x, hole.y, toolpath::cycleReturnZ(c)});
         for (const toolpath::Record& record : toolpath::expandCycleHole(c, hole, from, {}))
             toolpath::dispatch(record, *this);
     }

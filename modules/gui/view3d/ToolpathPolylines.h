@@ -4,6 +4,7 @@
 #pragma once
 
 #include "base/Vec.h"
+#include "toolpath/KnownPosition.h"
 #include "toolpath/MachineSink.h"
 
 #include <cstddef>
@@ -86,6 +87,7 @@ public:
 private:
     void lineTo(const base::Vec3& to, PathSegmentKind kind);
     void errorTo(const base::Vec3& to);
+    void straightTo(const base::Vec3& to, toolpath::AxisMask axes, PathSegmentKind kind);
     std::uint32_t currentIndex();
 
     double m_chordToleranceMm;
@@ -93,7 +95,8 @@ private:
     std::vector<PathSegment> m_segments;
     base::Vec3 m_position;
     bool m_hasPosition = false;
-    bool m_positionStored = false;  // m_points.back() == m_position
+    bool m_positionStored = false;      // m_points.back() == m_position
+    toolpath::KnownPosition m_partial;  // the axes known so far, while no whole position is
     std::uint32_t m_record = 0;
     std::int32_t m_tool = 0;
     bool m_inError = false;

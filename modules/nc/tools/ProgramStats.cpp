@@ -3,6 +3,7 @@
 #include "kinematics/Machine.h"
 #include "toolpath/ArcGeometry.h"
 #include "toolpath/CycleExpansion.h"
+#include "toolpath/KnownPosition.h"
 
 #include <algorithm>
 #include <type_traits>
@@ -29,11 +30,17 @@ public:
         std::visit(
             [this](const auto& rec) {
                 using T = std::decay_t<decltype(rec)>;
-                if constexpr (std::is_same_v<T, tp::Rapid>)
-                    rapid(rec.to);
-                else if constexpr (std::is_same_v<T, tp::Linear>)
-                    linear(rec.to, rec.feedMmPerMin);
-                else if constexpr (std::is_same_v<T, tp::Arc>)
+                if constexpr (std::is_same_v<T, tp::Rapid>) {
+                    if (const std::optional<Vec3> end = straightEnd(rec.to, rec.axes))
+                        rapid(*end);
+                    else
+                        ++m_stats.rapids;  // from or to a position not known yet: no length
+                } else if constexpr (std::is_same_v<T, tp::Linear>) {
+                    if (const std::optional<Vec3> end = straightEnd(rec.to, rec.axes))
+                        linear(*end, rec.feedMmPerMin);
+                    else
+                        addFeed(0, rec.feedMmPerMin);
+                } else if constexpr (std::is_same_v<T, tp::Arc>)
                     arc(rec);
                 else if constexpr (std::is_same_v<T, tp::ToolAxisMove>) {
                     if (rec.feedMmPerMin > 0)
@@ -90,6 +97,15 @@ private:
             m_tool = static_cast<int>(it - m_stats.tools.begin());
         }
         return m_stats.tools[static_cast<std::size_t>(m_tool)].totals;
+    }
+
+    // The end of a straight move that gives `axes`; nullopt while an axis it leaves out is unknown.
+    std::optional<Vec3> straightEnd(const Vec3& to, tp::AxisMask axes)
+    {
+        if (m_position)
+            m_partial.set(*m_position);
+        m_partial.moveTo(to, axes);
+        return m_partial.point();
     }
 
     void toolChange(int number)
@@ -205,6 +221,7 @@ private:
     ProgramStats& m_stats;
     double m_rapidMmPerMin;
     std::optional<Vec3> m_position;
+    tp::KnownPosition m_partial;  // the axes given so far, while m_position is unknown
     tp::SpindleState m_spindle;
     tp::FeedMode m_feedMode = tp::FeedMode::PerMinute;
     int m_toolNumber = 0;

@@ -36,6 +36,7 @@ struct MoveValues {
     int plane = 17;  // 17 XY, 18 ZX, 19 YZ
     int comp = 40;   // 40 off, 41 left, 42 right
     bool helical = false;
+    toolpath::AxisMask known;  // end axes the kernel knows: the others get no word (never invented)
 
     double value(MoveValue which) const;
 };
@@ -63,10 +64,12 @@ public:
     bool endsWhereItStarts(const MoveValues& move, int planeIndex) const;
 
 private:
-    // Scratch, sized once: one number buffer per word, so that the hot path does not allocate.
+    // Scratch, sized once: one number buffer per word and the block being assembled, so that the
+    // hot path neither allocates nor appends word by word to the output.
     std::vector<char> m_buffers;
     std::vector<std::string_view> m_texts;
     std::vector<char> m_skip;
+    std::vector<char> m_block;
 };
 
 struct BlockTemplates {

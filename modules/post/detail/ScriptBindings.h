@@ -7,6 +7,7 @@
 #include "post/ModalValue.h"
 #include "post/OutputWriter.h"
 #include "post/PostProcessor.h"
+#include "toolpath/KnownPosition.h"
 
 #include <QJSEngine>
 #include <QJSValue>
@@ -42,6 +43,7 @@ public:
         m_engine(engine),
         m_value(std::move(prefix), force),
         m_format(format),
+        m_resolution(resolutionOf(format)),
         m_acceptsText(acceptsText)
     {
     }
@@ -56,15 +58,26 @@ public:
 
     // The C++ side of format(): the number's text (into a kBufferSize buffer), then modal().
     std::size_t textOf(double value, char* out) const;
+    // The smallest difference two values need to be written differently (one unit of the last
+    // decimal, scale undone); values further apart never have the same text.
+    double resolution() const { return m_resolution; }
     // The value as the control reads it back from that text (rounded, scale undone).
     double writtenValue(double value) const;
     ModalValue& modal() { return m_value; }
 
 private:
+    static double resolutionOf(const std::optional<base::NumberFormat>& format);
+
     QJSEngine* m_engine;
     ModalValue m_value;
     std::optional<base::NumberFormat> m_format;
+    double m_resolution;  // of m_format, kept: block templates ask for it on every move
     bool m_acceptsText;
+    // The last number formatted and its text: a block template formats the same Z or F block after
+    // block, and copying the text is cheaper than formatting it again.
+    mutable double m_cachedValue = 0;
+    mutable std::size_t m_cachedLength = 0;  // 0: nothing cached
+    mutable char m_cachedText[32];
 };
 
 class ScriptKernel : public QObject {
@@ -74,8 +87,12 @@ public:
 
     OutputWriter& writer() { return m_writer; }
     std::vector<base::Diagnostic>& messages() { return m_messages; }
-    void setPosition(std::optional<toolpath::Vec3> position) { m_position = position; }
-    const std::optional<toolpath::Vec3>& position() const { return m_position; }
+    // Where the kernel believes the tool is, axis by axis (unknown at the start and after a tool
+    // change, until a move gives the axis).
+    void setPosition(const toolpath::Vec3& position) { m_position.set(position); }
+    void setPosition(const toolpath::KnownPosition& position) { m_position = position; }
+    void forgetPosition() { m_position.forget(); }
+    const toolpath::KnownPosition& position() const { return m_position; }
     // Text of the last error() call by the post; cleared by takePostError().
     std::optional<std::string> takePostError() { return std::exchange(m_postError, std::nullopt); }
     // Property values for getProperty(); before a run sets them, it answers the declared defaults.
@@ -103,7 +120,10 @@ public:
         setBlockNumbering(start, step, QJSValue());
     }
     Q_INVOKABLE void setBlockNumbering(const QJSValue& start, const QJSValue& step, const QJSValue& enabled);
+    // {x, y, z} when every axis is known, else null; getCurrentAxis("z") answers one axis (null
+    // while unknown), e.g. the height after a retract that gave only Z.
     Q_INVOKABLE QJSValue getCurrentPosition();
+    Q_INVOKABLE QJSValue getCurrentAxis(const QJSValue& axis);
     Q_INVOKABLE QJSValue getProperty(const QJSValue& name);
     Q_INVOKABLE void expandCyclePoint(const QJSValue& x, const QJSValue& y, const QJSValue& z);
 
@@ -114,7 +134,7 @@ private:
     std::string m_postFile;
     OutputWriter m_writer;
     std::vector<base::Diagnostic> m_messages;
-    std::optional<toolpath::Vec3> m_position;
+    toolpath::KnownPosition m_position;
     std::optional<std::string> m_postError;
     QJSValue m_properties;
     std::function<void(const toolpath::Vec3&)> m_expandCycle;

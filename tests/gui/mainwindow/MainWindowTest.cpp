@@ -388,7 +388,7 @@ private slots:
             const char* file;
         };
         for (const Shot& shot :
-             {Shot{"posts/sinumerik828d-emco/tests/arcs/expected.mpf", "N200 G2", "sinumerik-arcs.png"},
+             {Shot{"posts/sinumerik828d-emco/tests/arcs/expected.mpf", "N210 G2", "sinumerik-arcs.png"},
               Shot{"posts/sinumerik828d-emco/tests/cycles/expected.mpf", "N180", "sinumerik-cycles.png"},
               Shot{"posts/linuxcnc/tests/arcs/expected.ngc", "G2 Z-1", "iso-arcs.png"},
               Shot{"tests/golden/nc/heidenhain/arcs-c-cr-ct/input.h", "10 CR", "heidenhain-arcs.png"}}) {

@@ -76,22 +76,11 @@ Toolpath mixedMoves()
     path.add(CutterComp{CutterCompSide::Off});
     path.add(Rapid{{5, 15, 30}});
     path.add(ToolChange{Tool{2}});
-    path.add(Rapid{{5, 15, 30}});  // forced after the tool change, by the script's reset()
+    path.add(Rapid{{5, 15, 30}});  // after the tool change: X/Y, then Z, forced by the script's reset()
     path.add(Arc{{5, 25, 40}, {5, 20, 35}, {1, 0, 0}, true, 0, 100});     // YZ
     path.add(Arc{{10, 25, 45}, {10, 25, 40}, {0, 1, 0}, false, 0, 100});  // ZX, a quarter from -X towards +Z
     path.add(Linear{{0, 0, 0}, 0});                                       // feed missing: F left out
     return path;
-}
-
-PostOutput runSource(const std::string& name, const std::string& source, const Toolpath& path)
-{
-    auto post = PostProcessor::load(writeScript(name, source));
-    EXPECT_TRUE(post.ok()) << post.error().toString();
-    if (!post.ok())
-        return {};
-    auto output = post->run(path, fixedContext());
-    EXPECT_TRUE(output.ok()) << output.error().toString();
-    return output.ok() ? output.value() : PostOutput{};
 }
 
 TEST(BlockTemplates, WriteWhatTheSameRulesWriteAsHandlers)
@@ -108,8 +97,8 @@ TEST(BlockTemplates, WriteWhatTheSameRulesWriteAsHandlers)
             "N50 Y10.000 I0.000 J10.000", "N60 X0.000 Y-10.000 Z4.250 I0.000 J-10.000 F250",
             "N70 X0.000 Y10.000 Z3.500 I0.000 J10.000", "N80 X0.000 Y-10.000 Z2.750 I0.000 J-10.000",
             "N90 X0.000 Y10.000 Z2.000 I0.000 J10.000", "N100 G1 G41 X5.000 Y15.000", "N110 G0 G40 Z30.000", "N120 T2",
-            "N130 G0 X5.000 Y15.000 Z30.000", "N140 G19 G2 Y25.000 Z40.000 J5.000 K5.000 CR=7.071 F100",
-            "N150 G18 G3 X10.000 Z45.000 I5.000 K0.000 CR=5.000", "N160 G1 X0.000 Y0.000 Z0.000"}))
+            "N130 G0 X5.000 Y15.000", "N140 Z30.000", "N150 G19 G2 Y25.000 Z40.000 J5.000 K5.000 CR=7.071 F100",
+            "N160 G18 G3 X10.000 Z45.000 I5.000 K0.000 CR=5.000", "N170 G1 X0.000 Y0.000 Z0.000"}))
         << templates.text;
     ASSERT_EQ(templates.messages.size(), 1u);
     EXPECT_EQ(templates.messages[0].message, "1 feed move without a feed rate: F not written (first: CL record 15)");

@@ -263,12 +263,13 @@ TEST(OutputWriter, LinesStayLinesAndKnowTheirOperation)
     writer.setOperation(2);
     writer.writeLine("raw\r\nsecond");
     writer.beginBlock();
-    EXPECT_FALSE(writer.endBlock());  // no words: no line, no number
+    EXPECT_FALSE(writer.endBlock());       // no words: no line, no number
+    writer.writeCleanBlock("G1 X4 F100");  // a block template's words, joined already
     writer.setOperation(-1);
     writer.writeBlock({"M30"});
-    EXPECT_EQ(writer.text(), "N10 G0 X1 Y2 Z3\nN20 ;two lines\nraw\nsecond\nN30 M30\n");
-    EXPECT_EQ(writer.lineOperations(), (std::vector<int>{0, 0, 2, 2, -1}));
-    EXPECT_EQ(writer.lineCount(), 5u);
+    EXPECT_EQ(writer.text(), "N10 G0 X1 Y2 Z3\nN20 ;two lines\nraw\nsecond\nN30 G1 X4 F100\nN40 M30\n");
+    EXPECT_EQ(writer.lineOperations(), (std::vector<int>{0, 0, 2, 2, 2, -1}));
+    EXPECT_EQ(writer.lineCount(), 6u);
 }
 
 }  // namespace

@@ -68,4 +68,17 @@ inline std::string writeScript(const std::string& name, const std::string& sourc
     return path.string();
 }
 
+// Loads the post `source` (saved as `name`) and runs it on `path` with the fixed context; a failure
+// to load or run is a test failure and gives an empty output.
+inline PostOutput runSource(const std::string& name, const std::string& source, const toolpath::Toolpath& path)
+{
+    auto post = PostProcessor::load(writeScript(name, source));
+    EXPECT_TRUE(post.ok()) << post.error().toString();
+    if (!post.ok())
+        return {};
+    auto output = post->run(path, fixedContext());
+    EXPECT_TRUE(output.ok()) << output.error().toString();
+    return output.ok() ? output.value() : PostOutput{};
+}
+
 }  // namespace camwb::post::test

@@ -55,6 +55,9 @@ protected:
     }
     // The section's own first lines: comment, M5 M9, tool comment, M6, M3.
     static constexpr std::size_t kSectionLines = 5;
+    // The first rapid after the tool change, when it gives X, Y and Z: X/Y, then Z (the kernel
+    // never moves diagonally from where the tool changer left the machine).
+    static constexpr std::size_t kFirstRapidLines = 2;
 
     std::optional<PostProcessor> m_post;
 };
@@ -154,7 +157,7 @@ TEST_F(EmcoPost, ModalMotionWordIsOmittedWhenUnchanged)
     path.add(Rapid{{7, -20, 20}});
     const std::vector<std::string> b = body(path);
     EXPECT_EQ(std::vector<std::string>(b.begin() + kSectionLines, b.end()),
-              (std::vector<std::string>{"G0 X0.000 Y0.000 Z20.000", "X6.000 Y-20.000", "G1 Z10.000 F200", "X7.000",
+              (std::vector<std::string>{"G0 X0.000 Y0.000", "Z20.000", "X6.000 Y-20.000", "G1 Z10.000 F200", "X7.000",
                                         "G0 Z20.000", "M5"}));
 }
 
@@ -167,10 +170,12 @@ TEST_F(EmcoPost, AxesAreModalAndForcedAfterToolChangeAndSection)
     path.add(Rapid{{1, 2, 20}});
     path.add(SectionBegin{"Pocket", "pocket", 2, {}});
     path.add(Rapid{{1, 2, 20}});
+    // After a tool change the position is unknown: X/Y first, then Z. After a section start the
+    // machine is where the CL left it: every axis again in one block.
     EXPECT_EQ(body(path),
               (std::vector<std::string>{";Profile 1", "M5 M9", ";Tool change", "M6 T1 D1", "M3 S2000",
-                                        "G0 X1.000 Y2.000 Z20.000", "M5", ";Tool change", "M6 T2 D1",
-                                        "G0 X1.000 Y2.000 Z20.000", ";Pocket", "G0 X1.000 Y2.000 Z20.000"}));
+                                        "G0 X1.000 Y2.000", "Z20.000", "M5", ";Tool change", "M6 T2 D1",
+                                        "G0 X1.000 Y2.000", "Z20.000", ";Pocket", "G0 X1.000 Y2.000 Z20.000"}));
 }
 
 TEST_F(EmcoPost, FeedIsRoundedIntegerAndNeverOnRapids)
@@ -183,7 +188,7 @@ TEST_F(EmcoPost, FeedIsRoundedIntegerAndNeverOnRapids)
     path.add(Linear{{0, 0, 14}, 150.5});     // to_chars rounds the binary value: 150.5 -> F150 (half to even)
     const std::vector<std::string> b = body(path);
     EXPECT_EQ(std::vector<std::string>(b.begin() + kSectionLines, b.end()),
-              (std::vector<std::string>{"G0 X0.000 Y0.000 Z20.000", "G1 Z15.000 F200", "G0 Z20.000", "G1 Z15.000",
+              (std::vector<std::string>{"G0 X0.000 Y0.000", "Z20.000", "G1 Z15.000 F200", "G0 Z20.000", "G1 Z15.000",
                                         "Z14.000 F150", "M5"}));
 }
 
@@ -198,11 +203,11 @@ TEST_F(EmcoPost, ArcsAlwaysWriteIAndJAndNeverK)
     path.add(Arc{{43.789, -6.477, 12.5}, {45, 30, 12.5}, {0, 0, 1}, true, 0, 200});
     path.add(Arc{{18.851, 4.539, 12.5}, {45, 30, 12.5}, {0, 0, 1}, true, 0, 200});
     const std::vector<std::string> b = body(path);
-    ASSERT_EQ(b.size(), kSectionLines + 7);
-    EXPECT_EQ(b[7], "G2 X46.211 Y66.477 I26.149 J25.461");
-    EXPECT_EQ(b[8], "X81.477 Y28.789 I-1.211 J-36.477");
-    EXPECT_EQ(b[9], "X43.789 Y-6.477 I-36.477 J1.211");
-    EXPECT_EQ(b[10], "X18.851 Y4.539 I1.211 J36.477");
+    ASSERT_EQ(b.size(), kSectionLines + kFirstRapidLines + 6);
+    EXPECT_EQ(b[8], "G2 X46.211 Y66.477 I26.149 J25.461");
+    EXPECT_EQ(b[9], "X81.477 Y28.789 I-1.211 J-36.477");
+    EXPECT_EQ(b[10], "X43.789 Y-6.477 I-36.477 J1.211");
+    EXPECT_EQ(b[11], "X18.851 Y4.539 I1.211 J36.477");
     for (const std::string& line : b)
         EXPECT_EQ(line.find('K'), std::string::npos) << line;
 }
@@ -219,7 +224,7 @@ TEST_F(EmcoPost, HelicalArcsForceXYZ_Tab12)
     path.add(Arc{{41, 30, 13.333}, {45, 30, 13.333}, {0, 0, 1}, true, 0, 3.3333 * 60});  // planar again
     const std::vector<std::string> b = body(path);
     EXPECT_EQ(
-        std::vector<std::string>(b.begin() + kSectionLines + 1, b.end()),
+        std::vector<std::string>(b.begin() + kSectionLines + kFirstRapidLines, b.end()),
         (std::vector<std::string>{"G1 Z15.000 F200", "G2 X41.000 Y30.000 Z14.583 I-4.000 J0.000",
                                   "X49.000 Y30.000 Z14.167 I4.000 J0.000", "X41.000 Y30.000 Z13.750 I-4.000 J0.000",
                                   "X49.000 Y30.000 Z13.333 I4.000 J0.000", "X41.000 I-4.000 J0.000", "M5"}));
@@ -234,7 +239,7 @@ TEST_F(EmcoPost, ArcsInG18AndG19WriteTheirPlaneAndCentreWords)
     path.add(Arc{{-10, 0, 0}, {0, 0, 0}, {0, 0, 1}, false, 0, 300});  // back in G17
     const std::vector<std::string> b = body(path);
     EXPECT_EQ(
-        std::vector<std::string>(b.begin() + kSectionLines + 1, b.end()),
+        std::vector<std::string>(b.begin() + kSectionLines + kFirstRapidLines, b.end()),
         (std::vector<std::string>{"G18 G2 X0.000 Z10.000 I-10.000 K0.000 F300", "G19 Y10.000 Z0.000 J0.000 K-10.000",
                                   "G17 G3 X-10.000 Y0.000 I0.000 J-10.000", "M5"}));
 }
@@ -245,7 +250,7 @@ TEST_F(EmcoPost, FullCirclesAreWrittenAsTwoHalves)
     path.add(Rapid{{10, 0, 5}});
     path.add(Arc{{10, 0, 5}, {0, 0, 5}, {0, 0, 1}, false, 0, 300});
     const std::vector<std::string> b = body(path);
-    EXPECT_EQ(std::vector<std::string>(b.begin() + kSectionLines + 1, b.end()),
+    EXPECT_EQ(std::vector<std::string>(b.begin() + kSectionLines + kFirstRapidLines, b.end()),
               (std::vector<std::string>{"G3 X-10.000 I-10.000 J0.000 F300", "X10.000 I10.000 J0.000", "M5"}));
 }
 
@@ -297,7 +302,7 @@ TEST_F(EmcoPost, DrillingCyclesAsMcallWithTheFull828dParameterLists)
     EXPECT_EQ(
         std::vector<std::string>(b.begin() + kSectionLines, b.end()),
         (std::vector<std::string>{
-            "G0 X0.000 Y0.000 Z50.000", "F120", "MCALL CYCLE81(25.000,0.000,2.000,-10.000)", "X10.000 Y10.000",
+            "G0 X0.000 Y0.000", "Z50.000", "F120", "MCALL CYCLE81(25.000,0.000,2.000,-10.000)", "X10.000 Y10.000",
             "X20.000", "MCALL",
             // G99 style: the return plane is R, and the tool stands at RTP 25 from the last cycle
             "MCALL CYCLE82(2.000,0.000,2.000,-10.000,,0.5)",
@@ -318,7 +323,7 @@ TEST_F(EmcoPost, DrillingCyclesPerHole)
     path.add(Rapid{{0, 0, 50}});
     path.add(Cycle{CycleKind::Drill, 25, 2, 0, -10, 0, 0, 120, {{10, 10, 0}, {20, 10, 0}}});
     const std::vector<std::string> b = body(path, {{"drillingCalls", "perHole"}});
-    EXPECT_EQ(std::vector<std::string>(b.begin() + kSectionLines + 1, b.end()),
+    EXPECT_EQ(std::vector<std::string>(b.begin() + kSectionLines + kFirstRapidLines, b.end()),
               (std::vector<std::string>{"F120", "X10.000 Y10.000", "CYCLE81(25.000,0.000,2.000,-10.000)", "X20.000",
                                         "CYCLE81(25.000,0.000,2.000,-10.000)", "M5"}));
 }
@@ -333,7 +338,7 @@ TEST_F(EmcoPost, CutterCompensationStartsAndEndsOnStraightMoves)
     path.add(CutterComp{CutterCompSide::Off});
     path.add(Linear{{20, 20, 5}, 300});
     const std::vector<std::string> b = body(path);
-    EXPECT_EQ(std::vector<std::string>(b.begin() + kSectionLines + 1, b.end()),
+    EXPECT_EQ(std::vector<std::string>(b.begin() + kSectionLines + kFirstRapidLines, b.end()),
               (std::vector<std::string>{"G1 G41 X0.000 Y0.000 F300", "G2 X10.000 Y10.000 I10.000 J0.000",
                                         "G1 G40 X20.000 Y20.000", "M5"}));
 
@@ -374,7 +379,7 @@ TEST_F(EmcoPost, FeedPerRevolutionChangesTheFeedWord)
     path.add(FeedModeChange{FeedMode::PerMinute});
     path.add(Linear{{0, 0, -1}, 150});
     const std::vector<std::string> b = body(path);
-    EXPECT_EQ(std::vector<std::string>(b.begin() + kSectionLines + 1, b.end()),
+    EXPECT_EQ(std::vector<std::string>(b.begin() + kSectionLines + kFirstRapidLines, b.end()),
               (std::vector<std::string>{"G95", "G1 Z0.000 F0.150", "G94", "Z-1.000 F150", "M5"}));
 }
 
@@ -385,7 +390,8 @@ TEST_F(EmcoPost, InchOutputScalesGeometryAndFeeds)
     path.add(Linear{{25.4, 12.7, 50.8}, 254});
     const std::vector<std::string> all = wordLines(run(path, {{"units", "G700"}}).text);
     EXPECT_EQ(all[5], "G700");
-    EXPECT_EQ(all[all.size() - 4], "G0 X1.0000 Y0.0000 Z2.0000");
+    EXPECT_EQ(all[all.size() - 5], "G0 X1.0000 Y0.0000");
+    EXPECT_EQ(all[all.size() - 4], "Z2.0000");
     EXPECT_EQ(all[all.size() - 3], "G1 Y0.5000 F10.0");
 }
 
@@ -398,8 +404,9 @@ TEST_F(EmcoPost, NegativeZeroIsNeverWritten)
     const std::string text = run(path).text;
     EXPECT_EQ(text.find("-0.000"), std::string::npos) << text;
     const std::vector<std::string> b = body(path);
-    EXPECT_EQ(b[kSectionLines], "G0 X0.000 Y0.000 Z0.000");
-    EXPECT_EQ(b[kSectionLines + 1], "G1 X1.000 F100");
+    EXPECT_EQ(b[kSectionLines], "G0 X0.000 Y0.000");
+    EXPECT_EQ(b[kSectionLines + 1], "Z0.000");
+    EXPECT_EQ(b[kSectionLines + 2], "G1 X1.000 F100");
 }
 
 TEST_F(EmcoPost, EndsWithM30AndANewline)

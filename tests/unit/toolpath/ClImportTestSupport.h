@@ -7,8 +7,12 @@
 
 #include <gtest/gtest.h>
 
+#include <cstdio>
+#include <fstream>
 #include <string>
 #include <string_view>
+
+#include <unistd.h>
 
 namespace camwb::toolpath::test {
 
@@ -55,6 +59,33 @@ inline std::string sourcesText(const Toolpath& toolpath)
         out += std::to_string(toolpath.source(i).operationIndex) + ':' +
                std::to_string(toolpath.source(i).recordIndex) + ' ';
     return out;
+}
+
+// Imports `text` from a file, read in chunks as readClFile does, and from memory: both must give
+// the same records, sources and warnings, whatever falls on a chunk boundary. Returns the trace.
+inline std::string sameFromFileAndText(ClFormat format, const std::string& text)
+{
+    const std::string path = testing::TempDir() + "camwb-cl-stream-" + std::to_string(::getpid()) +
+                             (format == ClFormat::Apt ? ".apt" : ".dump");
+    {
+        std::ofstream(path, std::ios::binary) << text;
+    }
+    auto fromFile = readClFile(path, format);
+    auto fromText = readAs(format, text);
+    std::remove(path.c_str());
+    EXPECT_TRUE(fromFile.ok()) << fromFile.error().toString();
+    EXPECT_TRUE(fromText.ok()) << fromText.error().toString();
+    if (!fromFile.ok() || !fromText.ok())
+        return {};
+    const std::string trace = traceOf(fromFile->toolpath);
+    EXPECT_EQ(trace, traceOf(fromText->toolpath));
+    EXPECT_EQ(sourcesText(fromFile->toolpath), sourcesText(fromText->toolpath));
+    // The file's warnings name its path: compare what follows it.
+    std::string fileWarnings = warningsText(fromFile.value());
+    for (std::size_t at; (at = fileWarnings.find(path)) != std::string::npos;)
+        fileWarnings.replace(at, path.size(), format == ClFormat::Apt ? "t.apt" : "t.dump");
+    EXPECT_EQ(fileWarnings, warningsText(fromText.value()));
+    return trace;
 }
 
 }  // namespace camwb::toolpath::test

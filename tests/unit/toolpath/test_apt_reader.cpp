@@ -617,3 +617,22 @@ TEST(ClImport, UnreadableFileNamesThePath)
     ASSERT_FALSE(directory.ok());
     EXPECT_EQ(directory.error().message, "cannot read: it is a folder, not a file");
 }
+
+TEST(AptReader, AFileIsReadInChunksAsTheTextIs)
+{
+    // More than two 1 MiB chunks, with continued statements, remarks inside them and CRLF lines,
+    // so that some of them fall on a chunk boundary.
+    std::string apt = "TOOL PATH/LONG,TOOL,D6\r\nLOADTL/1\nFEDRAT/300,MMPM\nGOTO/0,0,10\n";
+    for (int i = 0; apt.size() < 2500000; ++i) {
+        const std::string x = std::to_string(i % 97), y = std::to_string(i % 89);
+        if (i % 7 == 0)
+            apt += "GOTO/" + x + ",$\n$$ between the lines\n   " + y + ",-1\r\n";
+        else
+            apt += "GOTO/" + x + "," + y + ",-1\r\n";
+        if (i % 1000 == 0)
+            apt += "PAINT/COLOR,3\n";  // a warning, repeated: one message listing lines
+    }
+    apt += "END-OF-PATH\nFINI\n";
+    const std::string trace = test::sameFromFileAndText(ClFormat::Apt, apt);
+    EXPECT_GT(std::count(trace.begin(), trace.end(), '\n'), 50000);
+}

@@ -104,3 +104,19 @@ TEST(CycleExpansion, ReturnPlaneIsNeverBelowR)
     c.clearanceZ = 1;  // a clearance plane below R: the tool still comes up to R
     EXPECT_EQ(cycleReturnZ(c), 2);
 }
+
+TEST(CycleExpansion, FromAPositionWhoseXYIsUnknown)
+{
+    // A CL that retracted in Z alone before the cycle: the climb to R moves Z alone and the
+    // rapid over the hole is always written, since nothing says the tool is there already.
+    const Cycle drill = cycleOf(CycleKind::Drill);
+    KnownPosition low;
+    low.moveTo(Rapid{{0, 0, -3}, AxisMask{AxisMask::kZ}});
+    Toolpath t;
+    for (const Record& r : expandCycleHole(drill, {10, 10, 0}, low, {}))
+        t.add(r);
+    EXPECT_EQ(traceOf(t), "rapid z 2.0000\n"
+                          "rapid 10.0000 10.0000 2.0000\n"
+                          "linear 10.0000 10.0000 -10.0000 f 120.0000\n"
+                          "rapid 10.0000 10.0000 25.0000\n");
+}

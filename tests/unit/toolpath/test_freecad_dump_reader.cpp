@@ -38,20 +38,18 @@ TEST(FreeCadDumpReader, Seed004Obr30Imports)
               "spindle 2000.0000 cw\n"
               "endsection\n"
               "section \"Pocket_Shape\" - tool 1 cut 0.0000 plunge 0.0000\n"
-              // The first move names Z only: X and Y come from the next move that names them.
-              "rapid 83.0000 67.0000 20.0000\n"
-              "rapid 83.0000 67.0000 20.0000\n"
-              "rapid 83.0000 67.0000 18.0000\n"
+              // The first move names Z only: a retract in Z alone, X and Y unknown until line 14.
+              "rapid z 20.0000\n"
+              "rapid x 83.0000 y 67.0000\n"
+              "rapid z 18.0000\n"
               "linear 83.0000 67.0000 12.5000 f 199.9980\n"
               "linear 7.0000 67.0000 12.5000 f 199.9980\n"
               "arc cw 8.5073 29.2680 12.5000 c 6.2655 103.4900 12.5000 n 0.0000 0.0000 1.0000 turns 0 f 199.9980\n"
               "endsection\n");
     const std::string file = dataPath("seed004_obr30.dump");
     EXPECT_EQ(warnings(result.value()),
-              file + ":13:9: X is not known before this move: taken from line 14 (X83)\n" + file +
-                  ":13:9: Y is not known before this move: taken from line 14 (Y67)\n" +
-                  // The "..." line held the moves that bring the tool onto this arc's circle.
-                  file + ":18: the arc's start and end radii differ by 37.7585 mm (36.4974 and 74.2558)\n");
+              // The "..." line held the moves that bring the tool onto this arc's circle.
+              file + ":18: the arc's start and end radii differ by 37.7585 mm (36.4974 and 74.2558)\n");
     EXPECT_EQ(sources(result->toolpath),
               "-1:1 -1:2 -1:3 -1:4 -1:5 0:7 0:9 0:10 0:11 1:11 1:13 1:14 1:15 1:16 1:17 1:18 1:19 ");
     // 3.3333 mm/s is 199.998 mm/min, from the file's own digits.
@@ -77,7 +75,7 @@ TEST(FreeCadDumpReader, DrillingAndHelixFile)
               "endsection\n"
               "section \"Drilling\" - tool 4 cut 0.0000 plunge 0.0000\n"
               "comment \"Begin Drilling\"\n"
-              "rapid 10.0000 10.0000 15.0000\n"
+              "rapid z 15.0000\n"
               // G98: back to the Z before the cycle; the hole top is taken as R.
               "cycle peck clear 15.0000 retract 3.0000 top 3.0000 bottom -12.0000 peck 3.0000 dwell 0.0000 f "
               "120.0000 return clear holes 2\n"
@@ -86,10 +84,10 @@ TEST(FreeCadDumpReader, DrillingAndHelixFile)
               "cycle peck clear 15.0000 retract 3.0000 top 3.0000 bottom -15.0000 peck 3.0000 dwell 0.0000 f "
               "120.0000 return clear holes 1\n"
               "  hole 30.0000 30.0000 3.0000\n"
-              "rapid 30.0000 30.0000 15.0000\n"
+              "rapid z 15.0000\n"
               "endsection\n"
               "section \"Spot\" - tool 4 cut 0.0000 plunge 0.0000\n"
-              "rapid 30.0000 30.0000 15.0000\n"
+              "rapid z 15.0000\n"
               // The second G82 names only X and Y: R, Z, P and F are modal.
               "cycle drillDwell clear 15.0000 retract 2.0000 top 2.0000 bottom -1.0000 peck 0.0000 dwell 0.5000 f "
               "90.0000 return retract holes 2\n"
@@ -99,26 +97,26 @@ TEST(FreeCadDumpReader, DrillingAndHelixFile)
               "cycle drill clear 2.0000 retract 2.0000 top 2.0000 bottom -4.0000 peck 0.0000 dwell 0.0000 f 90.0000 "
               "return retract holes 1\n"
               "  hole 30.0000 30.0000 2.0000\n"
-              "rapid 30.0000 30.0000 15.0000\n"
+              "rapid z 15.0000\n"
               "endsection\n"
               "section \"TC: 8mm Endmill\" - tool 2 cut 0.0000 plunge 0.0000\n"
               "tool 2 flat d 0.0000 r 0.0000 flute 0.0000 len 0.0000 \"\"\n"
               "spindle 5000.0000 cw\n"
               "endsection\n"
               "section \"Helix\" - tool 2 cut 0.0000 plunge 0.0000\n"
-              "rapid 30.0000 30.0000 20.0000\n"
-              "rapid 49.0000 30.0000 20.0000\n"
-              "rapid 49.0000 30.0000 15.0000\n"
-              "linear 49.0000 30.0000 15.0000 f 199.9980\n"
+              "rapid z 20.0000\n"
+              "rapid x 49.0000 y 30.0000\n"
+              "rapid z 15.0000\n"
+              "linear z 15.0000 f 199.9980\n"
               "arc cw 41.0000 30.0000 14.5830 c 45.0000 30.0000 15.0000 n 0.0000 0.0000 1.0000 turns 0 f 199.9980\n"
               "arc cw 49.0000 30.0000 14.1670 c 45.0000 30.0000 14.5830 n 0.0000 0.0000 1.0000 turns 0 f 199.9980\n"
               "arc cw 49.0000 30.0000 14.1670 c 45.0000 30.0000 14.1670 n 0.0000 0.0000 1.0000 turns 0 f 199.9980\n"
               "arc ccw 39.0000 30.0000 14.1670 c 44.0000 30.0000 14.1670 n 0.0000 1.0000 0.0000 turns 0 f 120.0000\n"
-              "rapid 39.0000 30.0000 20.0000\n"
+              "rapid z 20.0000\n"
               "spindle 0.0000 cw\n"
               "coolant off\n"
               "endsection\n");
-    EXPECT_EQ(result->warnings.size(), 2u) << warnings(result.value());
+    EXPECT_EQ(result->warnings.size(), 0u) << warnings(result.value());
 }
 
 TEST(FreeCadDumpReader, EmptyDump)
@@ -147,9 +145,9 @@ TEST(FreeCadDumpReader, MovesKeepMissingAxesAndFeeds)
                           "Command G1 [ X:6 Y:8 Z:-1.5 ]\n"  // still 600 mm/min
                           "Command G1 [ F:25 ]\n"            // a feed alone
                           "Command G1 [ X:7 ]\n"),
-              kAtTrace + "rapid 0.0000 0.0000 2.0000\nlinear 0.0000 0.0000 -1.0000 f 600.0000\n"
-                         "linear 5.0000 0.0000 -1.0000 f 600.0000\nrapid 5.0000 7.0000 -1.0000\n"
-                         "linear 6.0000 8.0000 -1.5000 f 600.0000\nlinear 7.0000 8.0000 -1.5000 f 1500.0000\n");
+              kAtTrace + "rapid z 2.0000\nlinear z -1.0000 f 600.0000\n"
+                         "linear x 5.0000 f 600.0000\nrapid y 7.0000\n"
+                         "linear 6.0000 8.0000 -1.5000 f 600.0000\nlinear x 7.0000 f 1500.0000\n");
 }
 
 TEST(FreeCadDumpReader, FeedsAreMillimetresPerSecond)
@@ -157,16 +155,16 @@ TEST(FreeCadDumpReader, FeedsAreMillimetresPerSecond)
     const ClImport imported = import(kAt + "Command G1 [ F:3.3333 X:1 ]\nCommand G1 [ F:0.016667 X:2 ]\n");
     EXPECT_EQ(std::get<Linear>(imported.toolpath.record(1)).feedMmPerMin, 3.3333 * 60);
     EXPECT_EQ(std::get<Linear>(imported.toolpath.record(2)).feedMmPerMin, 0.016667 * 60);
-    EXPECT_EQ(traceOf(imported.toolpath), kAtTrace + "linear 1.0000 0.0000 10.0000 f 199.9980\n"
-                                                     "linear 2.0000 0.0000 10.0000 f 1.0000\n");
+    EXPECT_EQ(traceOf(imported.toolpath), kAtTrace + "linear x 1.0000 f 199.9980\n"
+                                                     "linear x 2.0000 f 1.0000\n");
 }
 
 TEST(FreeCadDumpReader, UnknownStartAxes)
 {
+    // A move gives the axes it names and no others: nothing is taken from later lines or guessed.
     const ClImport imported = import("Command G0 [ Z:20 ]\nCommand G1 [ F:1 X:5 Z:3 ]\n");
-    EXPECT_EQ(traceOf(imported.toolpath), "rapid 5.0000 0.0000 20.0000\nlinear 5.0000 0.0000 3.0000 f 60.0000\n");
-    EXPECT_EQ(warnings(imported), "t.dump:1:9: X is not known before this move: taken from line 2 (X5)\n"
-                                  "t.dump:1:9: Y is never given: 0 is assumed\n");
+    EXPECT_EQ(traceOf(imported.toolpath), "rapid z 20.0000\nlinear x 5.0000 z 3.0000 f 60.0000\n");
+    EXPECT_EQ(warnings(imported), "");
     EXPECT_EQ(failure("Command G2 [ I:1 X:2 Y:0 Z:0 ]\n").message,
               "arc from an unknown position (no move with X, Y and Z before it)");
 }
@@ -221,7 +219,7 @@ TEST(FreeCadDumpReader, WrappedCommandKeepsItsFirstLine)
 {
     const ClImport imported = import(kAt + "Command G1 [ F:1\n  X:4 Y:5\n Z:6 ]\nCommand G0 [ Z:20 ]\n");
     EXPECT_EQ(traceOf(imported.toolpath), kAtTrace + "linear 4.0000 5.0000 6.0000 f 60.0000\n"
-                                                     "rapid 4.0000 5.0000 20.0000\n");
+                                                     "rapid z 20.0000\n");
     EXPECT_EQ(sources(imported.toolpath), "-1:1 -1:2 -1:5 ");
     const base::Error bad = failure(kAt + "Command G1 [ F:1\n  X:4 Y:five ]\n");
     EXPECT_EQ(bad.message, "malformed number 'five'");
@@ -261,7 +259,7 @@ TEST(FreeCadDumpReader, ParametersWithoutBlanksInsideTheBrackets)
 {
     // seed-004 Obr. 29 writes "Command G0 [X:-55 Y:-30]"; Python prints floats as 1e-05.
     EXPECT_EQ(trace("Command G0 [X:-55 Y:-30 Z:5]\nCommand G1[F:1 Z:1e-05]\n"),
-              "rapid -55.0000 -30.0000 5.0000\nlinear -55.0000 -30.0000 0.0000 f 60.0000\n");
+              "rapid -55.0000 -30.0000 5.0000\nlinear z 0.0000 f 60.0000\n");
 }
 
 TEST(FreeCadDumpReader, CommentsAndSections)
@@ -411,4 +409,24 @@ TEST(FreeCadDumpReader, MalformedDumpsGiveLineAndColumn)
         EXPECT_EQ(error.line, c.line) << c.text;
         EXPECT_EQ(error.column, c.column) << c.text;
     }
+}
+
+TEST(FreeCadDumpReader, AFileIsReadInChunksAsTheTextIs)
+{
+    // More than two 1 MiB chunks, with wrapped commands and notes and CRLF lines, so that some of
+    // them fall on a chunk boundary.
+    std::string dump = "(Path: Long)\r\n" + kAt;
+    for (int i = 0; dump.size() < 2500000; ++i) {
+        const std::string x = std::to_string(i % 97), y = std::to_string(i % 89);
+        if (i % 50 == 0)
+            dump += "(a remark that wraps\n  onto the next line)\n";
+        if (i % 7 == 0)
+            dump += "Command G1 [ F:5 X:" + x + "\n   Y:" + y + "\r\n Z:-1 ]\n";
+        else
+            dump += "Command G1 [ X:" + x + " Y:" + y + " ]\r\n";
+        if (i % 1000 == 0)
+            dump += "Command G64 [ P:0.01 ]\n";  // a warning, repeated: one message listing lines
+    }
+    const std::string trace = test::sameFromFileAndText(ClFormat::FreeCadDump, dump);
+    EXPECT_GT(std::count(trace.begin(), trace.end(), '\n'), 50000);
 }

@@ -1,3 +1,4 @@
+#include "toolpath/KnownPosition.h"
 #include "toolpath/MachineSink.h"
 #include "toolpath/Toolpath.h"
 
@@ -146,4 +147,25 @@ TEST(Toolpath, PlayOfEmptyToolpathOnlyBeginsAndEnds)
     RecordingSink sink;
     play(Toolpath{}, sink);
     EXPECT_EQ(sink.calls, (std::vector<std::string>{"begin", "end"}));
+}
+
+TEST(KnownPosition, AMoveSetsOnlyTheAxesItGives)
+{
+    KnownPosition at;
+    EXPECT_FALSE(at.any());
+    EXPECT_FALSE(at.point());
+    at.moveTo(Rapid{{0, 0, 20}, AxisMask{AxisMask::kZ}});
+    EXPECT_TRUE(at.known(2));
+    EXPECT_FALSE(at.known(0));
+    EXPECT_FALSE(at.point());  // X and Y are still unknown: no point to hand out
+    EXPECT_EQ(endOf(at, {6, -20, 0}, AxisMask{AxisMask::kX | AxisMask::kY}), (Vec3{6, -20, 20}));
+    EXPECT_FALSE(endOf(at, {6, 0, 0}, AxisMask{AxisMask::kX}));
+    at.moveTo(Linear{{6, -20, 99}, 100, AxisMask{AxisMask::kX | AxisMask::kY}});
+    ASSERT_TRUE(at.point());
+    EXPECT_EQ(*at.point(), (Vec3{6, -20, 20}));
+    at.forget();
+    EXPECT_TRUE(at.known().none());
+    // Records made without a mask give every axis.
+    EXPECT_TRUE(Rapid{}.axes.all());
+    EXPECT_TRUE((Linear{{1, 2, 3}, 100}.axes.all()));
 }

@@ -36,6 +36,8 @@ Toolpath everyRecord()
         PassThrough{"G64 P0.01"},
         SectionEnd{},
         Rapid{{0, 0, 50}},
+        Rapid{{0, 0, 20}, AxisMask{AxisMask::kZ}},  // moves that give only some axes
+        Linear{{4, -2, 0}, 300, AxisMask{AxisMask::kX | AxisMask::kY}},
     };
     for (const Record& record : records)
         t.add(record);
@@ -97,4 +99,22 @@ TEST(TraceReader, ErrorsNameLineAndColumn)
                       "  hole 1 1\n")
                   .toString(),
               "in.trace:2:11: expected a number at the end of the line");
+}
+
+TEST(TraceReader, MovesThatGiveOnlySomeAxesNameThem)
+{
+    // A move that gives every axis keeps the plain form; one that gives fewer names its axes, and
+    // the axes it leaves out are not written at all (nothing to read back as a coordinate).
+    auto read = readTrace("rapid z 20\nrapid x 6 y -20\nlinear y 5 z -1 f 60\nrapid x 1 y 2 z 3\n", "t");
+    ASSERT_TRUE(read.ok()) << read.error().toString();
+    EXPECT_EQ(traceOf(read->toolpath), "rapid z 20.0000\nrapid x 6.0000 y -20.0000\nlinear y 5.0000 z -1.0000 f "
+                                       "60.0000\nrapid 1.0000 2.0000 3.0000\n");
+    EXPECT_EQ(std::get<Rapid>(read->toolpath.record(0)).axes, AxisMask{AxisMask::kZ});
+    EXPECT_EQ(std::get<Linear>(read->toolpath.record(2)).axes, (AxisMask{AxisMask::kY | AxisMask::kZ}));
+    EXPECT_TRUE(std::get<Rapid>(read->toolpath.record(3)).axes.all());
+
+    EXPECT_EQ(failure("rapid z 1 x 2\n").toString(), "in.trace:1:11: axis 'x' out of order or given twice (x, y, z)");
+    EXPECT_EQ(failure("rapid x 1 x 2\n").toString(), "in.trace:1:11: axis 'x' out of order or given twice (x, y, z)");
+    EXPECT_EQ(failure("rapid x\n").toString(), "in.trace:1:8: expected a number at the end of the line");
+    EXPECT_EQ(failure("linear x 1 q 2 f 10\n").toString(), "in.trace:1:12: expected 'f', found 'q'");
 }

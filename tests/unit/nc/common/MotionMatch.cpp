@@ -2,6 +2,7 @@
 
 #include "toolpath/ArcGeometry.h"
 #include "toolpath/CycleExpansion.h"
+#include "toolpath/KnownPosition.h"
 #include "toolpath/TraceWriter.h"
 
 #include <algorithm>
@@ -76,8 +77,15 @@ private:
         s.midpoint = false;
         m_samples.push_back(s);
     }
-    void visit(const Rapid& r) { segment(r.to, true, 0); }
-    void visit(const Linear& r) { segment(r.to, false, r.feedMmPerMin); }
+    // A move that gives only some axes keeps the others (both sides start at the origin here).
+    Vec3 endOf(const Vec3& to, AxisMask axes) const
+    {
+        KnownPosition at(m_at);
+        at.moveTo(to, axes);
+        return at.value();
+    }
+    void visit(const Rapid& r) { segment(endOf(r.to, r.axes), true, 0); }
+    void visit(const Linear& r) { segment(endOf(r.to, r.axes), false, r.feedMmPerMin); }
     void visit(const Arc& r)
     {
         for (const Vec3& p : toolpath::linearizeArc(m_at, r, m_chord))
@@ -89,8 +97,8 @@ private:
             for (const Record& moved : expandCycleHole(c, hole, m_at, {m_rpm, true}))
                 std::visit([this](const auto& v) { cycleMove(v); }, moved);
     }
-    void cycleMove(const Rapid& r) { segment(r.to, true, 0); }
-    void cycleMove(const Linear& r) { segment(r.to, false, r.feedMmPerMin); }
+    void cycleMove(const Rapid& r) { segment(endOf(r.to, r.axes), true, 0); }
+    void cycleMove(const Linear& r) { segment(endOf(r.to, r.axes), false, r.feedMmPerMin); }
     template <class T> void cycleMove(const T&) {}  // tapping's spindle reversals: the rpm stays
     // Along the spindle axis only: enough for the 3-axis posts (tilted axes are the five-axis posts' business).
     void visit(const ToolAxisMove& r) { segment(r.tip, r.feedMmPerMin <= 0, r.feedMmPerMin); }

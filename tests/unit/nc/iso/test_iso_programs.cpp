@@ -51,7 +51,7 @@ TEST(IsoPrograms, LinuxCncPostGoldensReadWithoutDiagnostics)
         // The every-record CL passes SINUMERIK text through ("TRANS X10"): LinuxCNC refuses it too.
         const bool passThrough = dir.path().filename() == "every-record";
         EXPECT_EQ(r.diagnostics(),
-                  passThrough ? "30:1: error: unknown word TRANSX (a letter and a number expected)\n" : "")
+                  passThrough ? "31:1: error: unknown word TRANSX (a letter and a number expected)\n" : "")
             << ngc;
         EXPECT_TRUE(r.result.completed) << ngc;
     }

@@ -371,7 +371,7 @@ TEST(HeidenhainContour, CompensationRadiusIsToolDefRPlusToolCallDr)
 {
     ToolTable table;
     table.set({2, 2, 8.0, 0.0, {}});
-    InterpretOptions options;
+    InterpretOptions options = fromOrigin();
     options.toolTable = &table;
     const Traced r = run("0 BEGIN PGM T MM\n1 TOOL DEF 1 L+40 R+3\n2 TOOL CALL 1 Z S1000 DR+0.5\n"
                          "3 L X-10 Y+0 R0 F100\n4 L X+0 RL\n5 L X+10\n6 L X+20 Y-10 R0\n"

@@ -65,7 +65,15 @@ struct Traced {
     }
 };
 
-inline Traced run(std::string_view text, InterpretOptions options = {})
+// Most tests are about arcs, cycles or compensation, not the start: they start at the origin, as
+// rs274 does. A test of the program start passes InterpretOptions{} (no axis known).
+inline InterpretOptions fromOrigin(InterpretOptions options = {})
+{
+    options.start = toolpath::Vec3{};
+    return options;
+}
+
+inline Traced run(std::string_view text, InterpretOptions options = fromOrigin())
 {
     options.dialect = Dialect::Heidenhain;
     if (options.fileName.empty())

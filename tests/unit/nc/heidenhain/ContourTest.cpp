@@ -11,11 +11,6 @@ namespace {
 
 using namespace camwb::toolpath;
 
-std::string program(std::string_view body)
-{
-    return "0 BEGIN PGM T MM\n1 TOOL CALL 1 Z S3000\n" + std::string(body) + "99 END PGM T MM\n";
-}
-
 TEST(HeidenhainContour, LinesFeedsAndIncrementalWords)
 {
     const Traced r = run(program("2 L X+10 Y+5 Z+20 R0 FMAX M3\n"

@@ -85,6 +85,12 @@ inline Traced run(std::string_view text, InterpretOptions options = fromOrigin()
     return r;
 }
 
+// A program of `body` after BEGIN PGM and a TOOL CALL: block "n" of the body is on line n + 1.
+inline std::string program(std::string_view body)
+{
+    return "0 BEGIN PGM T MM\n1 TOOL CALL 1 Z S3000\n" + std::string(body) + "99 END PGM T MM\n";
+}
+
 inline void expectNear(const base::Vec3& a, const base::Vec3& b, double tolerance = 1e-9)
 {
     EXPECT_NEAR(a.x, b.x, tolerance);

@@ -23,6 +23,12 @@ inline constexpr toolpath::AxisMask operator|(toolpath::AxisMask a, toolpath::Ax
     return toolpath::AxisMask{static_cast<unsigned char>(a.bits | b.bits)};
 }
 
+// The axes of the working plane G17, G18 or G19 (17, 18, 19): those an arc's start needs.
+inline constexpr toolpath::AxisMask planeMask(int plane)
+{
+    return plane == 18 ? axisBit(0) | axisBit(2) : plane == 19 ? axisBit(1) | axisBit(2) : kXyAxes;
+}
+
 class KnownAxes {
 public:
     // The axes a move carries: all of them once every axis is known.

@@ -12,11 +12,6 @@ namespace {
 
 constexpr double kTravelLimitMm = 1e6;  // a kilometre of travel is a typing error, not a program
 
-AxisMask planeAxes(int plane)
-{
-    return plane == 180 ? axisBit(0) | axisBit(2) : plane == 190 ? axisBit(1) | axisBit(2) : kXyAxes;
-}
-
 }  // namespace
 
 AxisMask axisWords(const Block& block)
@@ -74,7 +69,7 @@ bool Machine::checkKnown(const Block& block, int mode, bool machineCoordinates, 
     if (!absolute && !needKnown(block, words, kNoAxes, kNoAxes, "an incremental move"))
         return false;
     if (mode == 20 || mode == 30)
-        return needKnown(block, planeAxes(m_state.plane), AxisMask{}, given, "the arc");
+        return needKnown(block, planeMask(m_state.plane / 10), AxisMask{}, given, "the arc");
     if (mode != 0 && mode != 10)
         return needKnown(block, axisBit(2), kXyAxes, given, "the canned cycle");
     return m_state.comp == CutterCompSide::Off || needKnown(block, kXyAxes, AxisMask{}, given, "cutter compensation");

@@ -404,12 +404,8 @@ bool Machine::checkKnown(const Program& p, const BlockWords& w, AxisMask& given)
     const Pos at{w.line, 0};
     if (!needKnown(p, w, incremental, kNoAxes, kNoAxes, "an incremental move", at))
         return false;
-    if (m_modal.motion >= 2) {
-        const AxisMask plane = m_modal.plane == 18   ? axisBit(0) | axisBit(2)
-                               : m_modal.plane == 19 ? axisBit(1) | axisBit(2)
-                                                     : kXyAxes;
-        return needKnown(p, w, plane, AxisMask{}, given, "the arc", w.arc.pos);
-    }
+    if (m_modal.motion >= 2)
+        return needKnown(p, w, planeMask(m_modal.plane), AxisMask{}, given, "the arc", w.arc.pos);
     return m_modal.comp == CutterCompSide::Off ||
            needKnown(p, w, kXyAxes, AxisMask{}, given, "cutter compensation", at);
 }

@@ -18,6 +18,7 @@
 #include "nc/BlockModal.h"
 #include "nc/Diagnostic.h"
 #include "nc/Dialect.h"
+#include "toolpath/ClRecords.h"
 
 #include <atomic>
 #include <cstdint>
@@ -60,10 +61,14 @@ struct InterpretOptions {
     ProgramResolver resolveProgram;                // empty: calls to other programs are errors
     const kinematics::Machine* machine = nullptr;  // kinematics::LimitCheck on what the program does, when set
     const ToolTable* toolTable = nullptr;          // tool radii for cutter compensation (the program's own data first)
-    BlockObserver onBlock;                         // after each executed block: its modal state (BlockModal.h)
-    std::int64_t maxBlocks = 10'000'000;           // executed blocks before a runaway-program error
-    double arcRadiusToleranceMm = 0.01;            // start/end radius mismatch that is an error
-    std::size_t maxDiagnostics = 1000;             // further ones are counted, not kept
+    // Where the tool is when the program starts, when the caller knows it (rs274 starts at the
+    // origin). None (the default): every axis is unknown until the program gives it in absolute
+    // terms, as on the control; moves carry the known axes only until then (nc/KnownAxes.h).
+    std::optional<toolpath::Vec3> start;
+    BlockObserver onBlock;                // after each executed block: its modal state (BlockModal.h)
+    std::int64_t maxBlocks = 10'000'000;  // executed blocks before a runaway-program error
+    double arcRadiusToleranceMm = 0.01;   // start/end radius mismatch that is an error
+    std::size_t maxDiagnostics = 1000;    // further ones are counted, not kept
     // Set from another thread to stop the run (a newer trace supersedes this one): checked every
     // kCancelCheckBlocks executed blocks; the result is then marked cancelled, without a diagnostic.
     const std::atomic<bool>* cancel = nullptr;

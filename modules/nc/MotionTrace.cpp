@@ -24,7 +24,7 @@ using detail::NumberCache;
 using detail::TextBuffer;
 
 struct State {
-    Vec3 position;
+    KnownPosition position;  // nothing known at the start, as on the control
     double rpm = 0;
     bool spindleCw = true;
     double surfaceSpeed = 0;
@@ -123,6 +123,32 @@ public:
         number(p.y);
         m_out += separator;
         number(p.z);
+        if (!m_text)
+            m_out += ']';
+    }
+    // The target of a straight move while some axis is unknown: text names the known axes
+    // ("z 5.0000"), JSON gives null for the others; never a coordinate the program did not give.
+    void knownPoint(std::string_view jsonKey, const KnownPosition& p)
+    {
+        key("", jsonKey);
+        if (!m_text)
+            m_out += '[';
+        bool first = true;
+        for (int axis = 0; axis < 3; ++axis) {
+            if (m_text && !p.known(axis))
+                continue;
+            if (!first)
+                m_out += m_text ? ' ' : ',';
+            first = false;
+            if (m_text) {
+                m_out += static_cast<char>('x' + axis);
+                m_out += ' ';
+            }
+            if (p.known(axis))
+                number(p.value(axis));
+            else
+                m_out += std::string_view("null");
+        }
         if (!m_text)
             m_out += ']';
     }
@@ -272,33 +298,32 @@ private:
         m_w.end();
     }
 
-    // The interpreters give every axis of a straight move (their programs start from a defined
-    // position); a move that gives fewer keeps the others, as the control does.
+    // A move that gives fewer axes keeps the others, as the control does; until every axis is
+    // known (a program's first moves) the entry shows the known ones only.
     void moveStraight(const Vec3& to, AxisMask axes)
     {
-        for (int axis = 0; axis < 3; ++axis) {
-            if (axes.has(axis))
-                setAxisValue(m_state.position, axis, axisValue(to, axis));
-        }
+        m_state.position.moveTo(to, axes);
+        if (m_state.position.complete())
+            m_w.point("", "to", m_state.position.value());
+        else
+            m_w.knownPoint("to", m_state.position);
     }
     void visit(const Rapid& r)
     {
         begin("rapid");
         moveStraight(r.to, r.axes);
-        m_w.point("", "to", m_state.position);
         state(0, false);
     }
     void visit(const Linear& r)
     {
         begin("linear");
         moveStraight(r.to, r.axes);
-        m_w.point("", "to", m_state.position);
         state(r.feedMmPerMin, true);
     }
     void visit(const Arc& r)
     {
         // A helix leaves the arc's plane: its end is not at the start's height along the normal.
-        const Vec3 d = r.to - m_state.position;
+        const Vec3 d = r.to - m_state.position.value();
         const bool helix = std::abs(d.x * r.normal.x + d.y * r.normal.y + d.z * r.normal.z) > 1e-9;
         begin(helix ? "helix" : "arc");
         m_w.word(r.clockwise ? "cw" : "ccw");
@@ -308,7 +333,7 @@ private:
         m_w.boolean("cw", r.clockwise);
         m_w.integerField("turns", "turns", r.turns);
         state(r.feedMmPerMin, true);
-        m_state.position = r.to;
+        m_state.position.set(r.to);
     }
     void visit(const Cycle& r)
     {
@@ -328,7 +353,8 @@ private:
                 m_w.number("dwell", "dwell", r.dwellSeconds);
             m_w.text("return", "return", r.returnToClearance ? "clear" : "retract");
             state(r.feedMmPerMin, true);
-            m_state.position = {hole.x, hole.y, r.returnToClearance ? std::max(r.clearanceZ, r.retractZ) : r.retractZ};
+            m_state.position.set(
+                {hole.x, hole.y, r.returnToClearance ? std::max(r.clearanceZ, r.retractZ) : r.retractZ});
         }
     }
     void visit(const Dwell& r)
@@ -343,7 +369,7 @@ private:
         m_w.point("", "to", r.tip);
         m_w.point("axis", "axis", r.axis);
         state(r.feedMmPerMin, r.feedMmPerMin > 0);
-        m_state.position = r.tip;
+        m_state.position.set(r.tip);
     }
     void visit(const ToolChange& r) { m_state.tool = r.tool.number; }
     void visit(const Spindle& r)

@@ -32,7 +32,8 @@ std::vector<Case> cases()
     std::vector<Case> out;
     // Left out: canned-cycles (G86 spindle stop and rapid out, which CL cycles cannot say) and
     // units-and-feed-modes (rs274 prints inch programs in inches; Rs274Trace reads program units).
-    for (const char* name : {"milling-program", "arcs-planes", "parameters-expressions", "subroutines-loops"})
+    for (const char* name :
+         {"milling-program", "arcs-planes", "parameters-expressions", "subroutines-loops", "masked-first-moves"})
         out.push_back({std::string("iso_") + name, root / "tests/golden/nc/iso" / name / "input.ngc"});
     for (const char* name : {"arcs", "cycles", "nx-cls", "freecad-dump"})
         out.push_back({std::string("post_") + name, root / "posts/linuxcnc/tests" / name / "expected.ngc"});

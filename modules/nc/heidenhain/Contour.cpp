@@ -242,10 +242,67 @@ std::optional<Element> Machine::plan(const Block& b, const BlockWords& w, const 
     }
 }
 
+bool Machine::needKnown(const Block& b, AxisMask before, AxisMask after, AxisMask given, const char* need)
+{
+    const int axis = m_known.missing(before, after, given);
+    if (axis < 0)
+        return true;
+    report(Severity::Error, b.line, b.column, unknownAxisMessage(axis, need));
+    return false;
+}
+
+// An incremental word on an unknown axis, a circle, a polar move or compensation from an unknown
+// start are errors; `given`: the axes the block puts at a known place.
+bool Machine::checkKnown(const Block& b, const BlockWords& w, AxisMask& given)
+{
+    AxisMask incremental = kNoAxes;
+    given = kNoAxes;
+    for (int i = 0; i < 3; ++i) {
+        if (w.axes[static_cast<std::size_t>(i)])
+            given.bits |= axisBit(i).bits;
+        if (w.axes[static_cast<std::size_t>(9 + i)])
+            incremental.bits |= axisBit(i).bits;
+    }
+    if (!needKnown(b, incremental, kNoAxes, kNoAxes, "an incremental move"))
+        return false;
+    switch (b.kind) {
+    case BlockKind::LinePolar:
+        if (w.pr && w.pa && !w.ipr && !w.ipa)
+            given = given | kXyAxes;  // about the pole, which is known (circleCenter)
+        else if (!needKnown(b, kXyAxes, kNoAxes, kNoAxes, "the polar move from the current position"))
+            return false;
+        break;
+    case BlockKind::Circle:
+    case BlockKind::CircleRadius:
+    case BlockKind::CircleTangent:
+    case BlockKind::CirclePolar:
+        if (!needKnown(b, kXyAxes, AxisMask{}, given, "the circle"))
+            return false;
+        break;
+    case BlockKind::Approach:
+        if (!w.hasXyz() && b.flag && w.len && !needKnown(b, kXyAxes, kNoAxes, kNoAxes, "DEP LT"))
+            return false;
+        break;
+    default:
+        break;
+    }
+    return m_comp == CutterCompSide::Off || !w.hasXyz() ||
+           needKnown(b, kXyAxes, AxisMask{}, given, "cutter compensation");
+}
+
 void Machine::circleCenter(const Block& b)
 {
     BlockWords w;
     if (!gather(b, w, false))
+        return;
+    AxisMask incremental = kNoAxes, given = kNoAxes;
+    for (int i = 0; i < 2; ++i) {
+        if (w.axes[static_cast<std::size_t>(i)])
+            given.bits |= axisBit(i).bits;
+        if (w.axes[static_cast<std::size_t>(9 + i)])
+            incremental.bits |= axisBit(i).bits;
+    }
+    if (!needKnown(b, incremental, kXyAxes, given, "the circle centre CC"))
         return;
     if (!w.hasXyz()) {
         m_cc = m_pos.xy();  // CC alone: the last programmed position
@@ -295,6 +352,11 @@ bool Machine::applyMotion(const Block& b, const BlockWords& w)
         return false;
     const bool rapid = w.feed == BlockWords::FeedWord::Max;
     bool moved = false;
+    AxisMask given;
+    if (!checkKnown(b, w, given)) {
+        m_corner.nextPending = false;
+        return false;
+    }
     std::optional<Element> e;
     if (m_corner.nextPending && m_corner.program == m_prog && m_corner.nextBlock == m_pc) {
         e = m_corner.next;  // planned from the corner before it (RND/CHF)
@@ -306,7 +368,9 @@ bool Machine::applyMotion(const Block& b, const BlockWords& w)
     if (e && e->type != Element::Type::None) {
         if (e->type == Element::Type::Arc)
             m_lastDirection = e->clockwise ? -1 : 1;
-        planCorner(*e, m_pc + 1);
+        m_known.give(given);
+        if (m_known.complete())  // a corner is planned from known points only
+            planCorner(*e, m_pc + 1);
         send(*e, rapid, m_feed);
         moved = true;
     }
@@ -326,9 +390,9 @@ void Machine::send(const Element& e, bool rapid, double feed)
     }
     if (e.type == Element::Type::Line) {
         if (rapid)
-            m_sink.rapid(Rapid{e.end});
+            m_sink.rapid(Rapid{e.end, m_known.mask()});
         else
-            m_sink.linear(Linear{e.end, feed});
+            m_sink.linear(Linear{e.end, feed, m_known.mask()});
     } else if (e.type == Element::Type::Arc) {
         if (rapid && !m_warned.test(kWarnRapidArc)) {
             m_warned.set(kWarnRapidArc);

@@ -137,11 +137,15 @@ void Machine::cycleCall(const Block& b)
     m_modalCycleCall = false;  // CYCL CALL ends M89, as M99 does
     Vec2 hole = m_pos.xy();
     if (b.kind == BlockKind::CycleCallPos) {
+        AxisMask given;
+        if (!checkKnown(b, w, given))
+            return;
         const auto t = target(b, w, m_pos, false);
         if (!t)
             return;
         m_pos = *t;
-        m_sink.rapid(Rapid{m_pos});
+        m_known.give(given);
+        m_sink.rapid(Rapid{m_pos, m_known.mask()});
         hole = t->xy();
     }
     runCycle(b, hole);
@@ -155,6 +159,10 @@ void Machine::runCycle(const Block& b, Vec2 hole)
         return;
     }
     if (!traced(m_cycle.number))
+        return;
+    // The hole is where the tool is; the old cycles and 204/208 start from its Z, too.
+    const bool fromZ = m_cycle.number < 200 || m_cycle.number == 204 || m_cycle.number == 208;
+    if (!needKnown(b, fromZ ? AxisMask{} : kXyAxes, kNoAxes, kNoAxes, "the cycle call"))
         return;
     if (m_cycle.number == 208)
         return boreMilling(b, hole);
@@ -252,6 +260,7 @@ void Machine::cycleRecord(const Block& b, Vec2 hole)
     c.holes.push_back({hole.x, hole.y, top});
     m_sink.cycle(c);
     m_pos = {hole.x, hole.y, std::max(c.clearanceZ, c.retractZ)};
+    m_known.give(AxisMask{});  // X and Y were known, the cycle ends at a programmed height
 }
 
 // Cycle 208: a helix on the bore's diameter down to depth, a full circle at the bottom, back to

@@ -47,6 +47,10 @@ Machine::Machine(const InterpretOptions& options, CutterCompensation& sink, Inte
     m_result(result),
     m_rep(result.diagnostics, options.maxDiagnostics, result.diagnosticsDropped)
 {
+    if (options.start) {
+        m_pos = *options.start;
+        m_known.give(AxisMask{});
+    }
 }
 
 void Machine::report(Severity s, int line, int column, std::string message)

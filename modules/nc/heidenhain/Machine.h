@@ -6,6 +6,7 @@
 
 #include "nc/CutterCompensation.h"
 #include "nc/Interpreter.h"
+#include "nc/KnownAxes.h"
 #include "nc/ToolTable.h"
 #include "nc/heidenhain/Expression.h"
 #include "nc/heidenhain/Geometry.h"
@@ -145,6 +146,9 @@ private:
     std::optional<Vec3> target(const Block& b, const BlockWords& w, const Vec3& from, bool quiet);
     void planCorner(Element& element, std::size_t cornerIndex);
     void send(const Element& e, bool rapid, double feed);
+    bool checkKnown(const Block& b, const BlockWords& w, toolpath::AxisMask& given);
+    bool needKnown(const Block& b, toolpath::AxisMask before, toolpath::AxisMask after, toolpath::AxisMask given,
+                   const char* need);
 
     // Cycles.cpp: CYCL DEF, CYCL CALL, M99/M89.
     void cycleDef(const Block& b);
@@ -170,7 +174,8 @@ private:
     int m_programDepth = 0;
 
     Parameters m_params;
-    Vec3 m_pos;
+    Vec3 m_pos;         // 0 on axes not yet known
+    KnownAxes m_known;  // axes given in absolute terms so far (none at the start)
     Vec3 m_shift;
     double m_scale = 1;      // mm per program unit
     double m_feedScale = 1;  // mm/min per programmed feed unit

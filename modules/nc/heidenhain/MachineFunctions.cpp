@@ -261,8 +261,10 @@ void Machine::applyStop(const Block& b, const BlockWords& w, bool moved)
             break;
         case 140:
             if (w.mb) {
-                m_pos.z += *w.mb * m_scale;
-                m_sink.rapid(Rapid{m_pos});
+                if (needKnown(b, axisBit(2), kNoAxes, kNoAxes, "M140 MB (a retract from the current Z)")) {
+                    m_pos.z += *w.mb * m_scale;
+                    m_sink.rapid(Rapid{m_pos, m_known.mask()});
+                }
             } else {
                 warnOnce(kWarnM140, b,
                          "M140 MB MAX: the retract to the travel limit is not traced (no machine limits)");

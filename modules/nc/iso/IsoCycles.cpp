@@ -128,8 +128,10 @@ void Machine::cycle(const Block& block, int mode)
         source();
         m_sink.cycle(record);
     }
-    if (repeats > 0)
+    if (repeats > 0) {
         m_state.position = Vec3{x, y, clear};
+        m_state.known.give(AxisMask{});  // Z was known, X and Y known or given (checkKnown)
+    }
     m_state.cycleSequence = true;
 }
 
@@ -137,10 +139,14 @@ void Machine::referenceReturn(const Block& block, int code)
 {
     checkAxes(block);
     const bool any = block.has('X') || block.has('Y') || block.has('Z');
+    AxisMask given;
+    if (!checkKnown(block, 0, false, given))
+        return;
     if (any) {
         const Vec3 via = target(block, false);
+        m_state.known.give(given);
         source();
-        m_sink.rapid(Rapid{via});
+        m_sink.rapid(Rapid{via, m_state.known.mask()});
         m_state.position = via;
     }
     const int base = code == 280 ? 5161 : 5181;
@@ -154,8 +160,10 @@ void Machine::referenceReturn(const Block& block, int code)
     m_reporter.warning(m_line, 0,
                        std::string(code == 280 ? "G28" : "G30") + " goes to the stored position #" +
                            std::to_string(base) + ".. taken as work coordinates");
+    // The stored position is modelled (as work coordinates): the axes it sets are known.
+    m_state.known.give(any ? axisWords(block) : AxisMask{});
     source();
-    m_sink.rapid(Rapid{home});
+    m_sink.rapid(Rapid{home, m_state.known.mask()});
     m_state.position = home;
     m_state.cycleSequence = false;
 }

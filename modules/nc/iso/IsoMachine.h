@@ -7,6 +7,7 @@
 
 #include "nc/BlockModal.h"
 #include "nc/CutterCompensation.h"
+#include "nc/KnownAxes.h"
 #include "nc/ToolTable.h"
 #include "nc/iso/IsoBlock.h"
 #include "nc/iso/IsoParameters.h"
@@ -35,13 +36,17 @@ struct ModalState {
     int tool = 0;
     bool mist = false;
     bool flood = false;
-    toolpath::Vec3 position;  // mm, work frame; rs274 starts at the origin
+    toolpath::Vec3 position;  // mm, work frame; 0 on axes not yet known (rs274 starts at the origin)
+    KnownAxes known;          // axes given in absolute terms so far (none at the start)
     // Canned-cycle words kept between cycle blocks (LinuxCNC 2.9 keeps R, Z, P and Q).
     double cycleR = 0, cycleZ = 0, cycleP = 0, cycleQ = 0;
     bool haveCycleR = false, haveCycleZ = false;
     bool cycleSequence = false;  // the last motion was a hole of a cycle still in force
     double cycleStartZ = 0;      // Z before the first hole of that cycle: the Cycle records' clearance
 };
+
+// The X, Y and Z words a block has.
+toolpath::AxisMask axisWords(const Block& block);
 
 enum class BlockOutcome { Continue, ProgramEnd };
 
@@ -59,6 +64,12 @@ public:
     {
     }
 
+    // The tool is at `position` (work frame, mm) with every axis known: InterpretOptions::start.
+    void startAt(const toolpath::Vec3& position)
+    {
+        m_state.position = position;
+        m_state.known.give(toolpath::AxisMask{});
+    }
     // Runs a block read without errors. `fileIndex` is the SourceRef::file of its line.
     BlockOutcome execute(const Block& block, int line, int fileIndex);
     // M2/M30 resets (also at the end of a file without them, as LinuxCNC's end of program does not).
@@ -104,6 +115,9 @@ private:
     bool executeMotionOnly(const Block& block);
     toolpath::Vec3 target(const Block& block, bool machineCoordinates) const;
     void checkAxes(const Block& block);
+    bool needKnown(const Block& block, toolpath::AxisMask before, toolpath::AxisMask after, toolpath::AxisMask given,
+                   const char* need);
+    bool checkKnown(const Block& block, int mode, bool machineCoordinates, toolpath::AxisMask& given);
 
     // IsoArcs.cpp
     void arc(const Block& block, bool clockwise, const toolpath::Vec3& to);

@@ -14,6 +14,13 @@ constexpr double kTravelLimitMm = 1e6;  // a kilometre of travel is a typing err
 
 }  // namespace
 
+AxisMask axisWords(const Block& block)
+{
+    return AxisMask{static_cast<unsigned char>((block.has('X') ? AxisMask::kX : 0) |
+                                               (block.has('Y') ? AxisMask::kY : 0) |
+                                               (block.has('Z') ? AxisMask::kZ : 0))};
+}
+
 Vec3 Machine::target(const Block& block, bool machineCoordinates) const
 {
     Vec3 to = m_state.position;
@@ -41,6 +48,31 @@ void Machine::checkAxes(const Block& block)
         m_reporter.warning(m_line, column,
                            "A, B, C, U, V and W words are not traced: a three-axis trace of a five-axis program");
     }
+}
+
+bool Machine::needKnown(const Block& block, AxisMask before, AxisMask after, AxisMask given, const char* need)
+{
+    const int axis = m_state.known.missing(before, after, given);
+    if (axis < 0)
+        return true;
+    error(block, static_cast<char>('X' + axis), unknownAxisMessage(axis, need));
+    return false;
+}
+
+// The axes of a block that may move: an incremental word on an unknown axis, an arc, a cycle or
+// compensation from an unknown start are errors; a move gives the axes written in absolute terms.
+bool Machine::checkKnown(const Block& block, int mode, bool machineCoordinates, AxisMask& given)
+{
+    const AxisMask words = axisWords(block);
+    const bool absolute = m_state.absolute || machineCoordinates;
+    given = absolute ? words : kNoAxes;
+    if (!absolute && !needKnown(block, words, kNoAxes, kNoAxes, "an incremental move"))
+        return false;
+    if (mode == 20 || mode == 30)
+        return needKnown(block, planeMask(m_state.plane / 10), AxisMask{}, given, "the arc");
+    if (mode != 0 && mode != 10)
+        return needKnown(block, axisBit(2), kXyAxes, given, "the canned cycle");
+    return m_state.comp == CutterCompSide::Off || needKnown(block, kXyAxes, AxisMask{}, given, "cutter compensation");
 }
 
 double Machine::feedFor(const Block& block, const char* what)
@@ -85,6 +117,9 @@ void Machine::motion(const Block& block, int mode, bool machineCoordinates)
     constexpr std::uint32_t kXyz = (1u << ('X' - 'A')) | (1u << ('Y' - 'A')) | (1u << ('Z' - 'A'));
     if ((mode == 0 || mode == 10) && !(block.present & kXyz))
         return;  // rotary or UVW words only: nothing moves in the three-axis trace
+    AxisMask given;
+    if (!checkKnown(block, mode, machineCoordinates, given))
+        return;
     const Vec3 to = target(block, machineCoordinates);
     if (!(std::abs(to.x) < kTravelLimitMm && std::abs(to.y) < kTravelLimitMm && std::abs(to.z) < kTravelLimitMm)) {
         m_reporter.error(m_line, 0, "target out of range (more than 1000 m from the origin)");
@@ -94,14 +129,16 @@ void Machine::motion(const Block& block, int mode, bool machineCoordinates)
         m_state.cycleSequence = false;
     switch (mode) {
     case 0:
+        m_state.known.give(given);
         source();
-        m_sink.rapid(Rapid{to});
+        m_sink.rapid(Rapid{to, m_state.known.mask()});
         m_state.position = to;
         return;
     case 10: {
         const double feed = feedFor(block, "G1");
+        m_state.known.give(given);
         source();
-        m_sink.linear(Linear{to, feed});
+        m_sink.linear(Linear{to, feed, m_state.known.mask()});
         m_state.position = to;
         return;
     }

@@ -23,6 +23,10 @@ bool Machine::runCycle(const Program& p, int number, const std::vector<std::opti
         warning(p, pos, name + " is not interpreted: its motion is missing from the trace");
         return false;
     }
+    if (const int axis = m_known.missing(kXyAxes); axis >= 0) {
+        error(p, pos, unknownAxisMessage(axis, "the drilling cycle (the tool is over the hole)"));
+        return false;
+    }
     if (m_modal.plane != 17)
         warning(p, pos, name + " in G18/G19 is traced along Z as in G17");
     const auto rtp = arg(0), rfp = arg(1), sdis = arg(2), dp = arg(3), dpr = arg(4);
@@ -126,6 +130,7 @@ bool Machine::runCycle(const Program& p, int number, const std::vector<std::opti
     setSource(line);
     m_sink.cycle(c);
     m_pos = Vec3{m_pos.x, m_pos.y, cycleReturnZ(c)};
+    m_known.give(AxisMask{});  // X and Y were known, the cycle returns to a programmed Z
     return true;
 }
 

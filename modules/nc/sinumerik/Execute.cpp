@@ -376,6 +376,40 @@ Vec3 Machine::blockTarget(const BlockWords& w) const
     return target;
 }
 
+bool Machine::needKnown(const Program& p, const BlockWords& w, AxisMask before, AxisMask after, AxisMask given,
+                        const char* need, Pos fallback)
+{
+    const int axis = m_known.missing(before, after, given);
+    if (axis < 0)
+        return true;
+    const std::size_t i = static_cast<std::size_t>(axis);
+    error(p, w.axis[i] ? w.axisPos[i] : fallback, unknownAxisMessage(axis, need));
+    return false;
+}
+
+// An incremental word on an unknown axis, an arc or compensation from an unknown start are
+// errors; `given`: the axes the block writes in absolute terms.
+bool Machine::checkKnown(const Program& p, const BlockWords& w, AxisMask& given)
+{
+    AxisMask incremental = kNoAxes;
+    given = kNoAxes;
+    for (int i = 0; i < 3; ++i) {
+        const auto k = static_cast<std::size_t>(i);
+        if (!w.axis[k])
+            continue;
+        const bool inc =
+            w.axisMode[k] == ValueMode::Incremental || (w.axisMode[k] == ValueMode::Modal && m_modal.incremental);
+        (inc ? incremental : given).bits |= axisBit(i).bits;
+    }
+    const Pos at{w.line, 0};
+    if (!needKnown(p, w, incremental, kNoAxes, kNoAxes, "an incremental move", at))
+        return false;
+    if (m_modal.motion >= 2)
+        return needKnown(p, w, planeMask(m_modal.plane), AxisMask{}, given, "the arc", w.arc.pos);
+    return m_modal.comp == CutterCompSide::Off ||
+           needKnown(p, w, kXyAxes, AxisMask{}, given, "cutter compensation", at);
+}
+
 bool Machine::applyMotion(const Program& p, const BlockWords& w)
 {
     const int line = w.line;
@@ -392,15 +426,20 @@ bool Machine::applyMotion(const Program& p, const BlockWords& w)
             warning(p, {line, 0}, "arc words without G2/G3: ignored");
         return false;
     }
+    AxisMask given;
+    if (!checkKnown(p, w, given))
+        return false;
     const Vec3 target = blockTarget(w);
     const int m = m_modal.motion;
+    if (m < 2)
+        m_known.give(given);
     if (m == 0) {
         const bool mcallPositioning = m_modalCall && m_modalCall->cycle > 0 && !w.callWord &&
                                       m_modalCall->level == m_stack.size() && target.z == m_pos.z &&
                                       m_modal.plane == 17;
         if (!mcallPositioning) {
             setSource(line);
-            m_sink.rapid(Rapid{target});
+            m_sink.rapid(Rapid{target, m_known.mask()});
         }
         m_pos = target;
         return true;
@@ -409,7 +448,7 @@ bool Machine::applyMotion(const Program& p, const BlockWords& w)
         if (m_feed <= 0)
             error(p, {line, 0}, "G1 without a feed (F)");
         setSource(line);
-        m_sink.linear(Linear{target, m_feed});
+        m_sink.linear(Linear{target, m_feed, m_known.mask()});
         m_pos = target;
         return true;
     }

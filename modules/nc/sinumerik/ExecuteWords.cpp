@@ -128,6 +128,7 @@ bool Machine::readWords(const Program& p, const Block& b, BlockWords& w)
             break;
         case WordKind::Axis:
             readPosition(p, word, w.axis[word.index], w.axisMode[word.index]);
+            w.axisPos[word.index] = word.pos;
             break;
         case WordKind::Centre:
             readPosition(p, word, w.arc.centre[word.index], w.arc.centreMode[word.index]);

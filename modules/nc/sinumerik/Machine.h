@@ -5,6 +5,7 @@
 
 #include "nc/CutterCompensation.h"
 #include "nc/Interpreter.h"
+#include "nc/KnownAxes.h"
 #include "nc/ToolTable.h"
 #include "nc/sinumerik/Program.h"
 #include "toolpath/ClRecords.h"
@@ -62,6 +63,10 @@ public:
         m_compensation(sink),
         m_result(result)
     {
+        if (options.start) {
+            m_pos = *options.start;
+            m_known.give(toolpath::AxisMask{});
+        }
     }
     void run(std::string_view mainText);
 
@@ -106,6 +111,7 @@ private:
         bool dwell = false, g53 = false, ret = false;
         std::array<std::optional<double>, 6> axis{};
         std::array<ValueMode, 6> axisMode{};
+        std::array<Pos, 6> axisPos{};
         ArcWords arc;
         std::optional<double> feed, speed, lims, tool, edge;
         int m[8];
@@ -134,6 +140,9 @@ private:
     void applyCalls(const Program& p, const Block& block, const BlockWords& w, bool moved);
     bool applyStop(const Program& p, const Block& block, const BlockWords& w);
     Vec3 blockTarget(const BlockWords& w) const;
+    bool checkKnown(const Program& p, const BlockWords& w, toolpath::AxisMask& given);
+    bool needKnown(const Program& p, const BlockWords& w, toolpath::AxisMask before, toolpath::AxisMask after,
+                   toolpath::AxisMask given, const char* need, Pos fallback);
     void emitComment(const Program& p, const Block& block);
     double toMm(double v) const { return m_modal.inch ? v * 25.4 : v; }
     double feedToInternal(double f) const;
@@ -174,7 +183,8 @@ private:
     bool m_toolChangeOnM6 = true;
 
     Modal m_modal;
-    Vec3 m_pos;
+    Vec3 m_pos;          // 0 on axes not yet known
+    KnownAxes m_known;   // axes given in absolute terms so far (none at the start)
     double m_feed = 0;   // mm/min, mm/rev or 1/min by the feed mode
     double m_speed = 0;  // S: rpm, or m/min under G96
     double m_lims = 0;

@@ -66,6 +66,20 @@ TEST(MotionTrace, JsonlCarriesTheSameFields)
     EXPECT_EQ(std::count(json.begin(), json.end(), '\n'), 7);
 }
 
+TEST(MotionTrace, MovesWhileAnAxisIsUnknownNameTheKnownAxes)
+{
+    Toolpath p;
+    p.add(Rapid{{0, 0, 20}, AxisMask{AxisMask::kZ}}, at(2));
+    p.add(Linear{{5, 0, 20}, 100, AxisMask{AxisMask::kX | AxisMask::kZ}}, at(3));
+    p.add(Rapid{{5, 7, 20}, AxisMask{AxisMask::kY}}, at(4));  // the last unknown axis: a full entry
+    EXPECT_EQ(motionTrace(p, {"a.nc"}, TraceFormat::Text), "2 rapid z 20.0000 s 0.0000 t 0\n"
+                                                           "3 linear x 5.0000 z 20.0000 f 100.0000 s 0.0000 t 0\n"
+                                                           "4 rapid 5.0000 7.0000 20.0000 s 0.0000 t 0\n");
+    const std::string json = motionTrace(p, {"a.nc"}, TraceFormat::Jsonl);
+    EXPECT_EQ(json.substr(0, json.find('\n')), "{\"file\":\"a.nc\",\"line\":2,\"kind\":\"rapid\",\"to\":[null,null,"
+                                               "20.0000],\"spindle\":0.0000,\"spindleCw\":true,\"tool\":0}");
+}
+
 TEST(MotionTrace, EmptyProgramTracesNothing) { EXPECT_EQ(motionTrace(Toolpath{}, {"a.nc"}, TraceFormat::Text), ""); }
 
 // What MotionTraceWriter hands over, piece by piece.

@@ -11,11 +11,6 @@ namespace {
 
 using namespace camwb::toolpath;
 
-std::string program(std::string_view body)
-{
-    return "0 BEGIN PGM T MM\n1 TOOL CALL 1 Z S3000\n" + std::string(body) + "99 END PGM T MM\n";
-}
-
 TEST(HeidenhainContour, LinesFeedsAndIncrementalWords)
 {
     const Traced r = run(program("2 L X+10 Y+5 Z+20 R0 FMAX M3\n"
@@ -371,7 +366,7 @@ TEST(HeidenhainContour, CompensationRadiusIsToolDefRPlusToolCallDr)
 {
     ToolTable table;
     table.set({2, 2, 8.0, 0.0, {}});
-    InterpretOptions options;
+    InterpretOptions options = fromOrigin();
     options.toolTable = &table;
     const Traced r = run("0 BEGIN PGM T MM\n1 TOOL DEF 1 L+40 R+3\n2 TOOL CALL 1 Z S1000 DR+0.5\n"
                          "3 L X-10 Y+0 R0 F100\n4 L X+0 RL\n5 L X+10\n6 L X+20 Y-10 R0\n"

@@ -187,7 +187,7 @@ TEST(HeidenhainParameters, CallProgramThroughTheResolverSharesQParameters)
 
 TEST(HeidenhainParameters, RecursiveCallProgramStopsAtTheNestingLimit)
 {
-    InterpretOptions options;
+    InterpretOptions options = fromOrigin();
     options.resolveProgram = [](std::string_view) -> std::optional<ProgramSource> {
         return ProgramSource{"SELF.h", "0 BEGIN PGM SELF MM\n1 L IX+1 FMAX\n2 CALL PGM SELF\n3 END PGM SELF MM\n"};
     };
@@ -198,7 +198,7 @@ TEST(HeidenhainParameters, RecursiveCallProgramStopsAtTheNestingLimit)
 
 TEST(HeidenhainParameters, RunawayLoopStopsWithOneError)
 {
-    InterpretOptions options;
+    InterpretOptions options = fromOrigin();
     options.maxBlocks = 1000;
     const Traced r = run("0 BEGIN PGM T MM\n1 LBL 1\n2 L IX+1 F100\n3 FN 9: IF +0 EQU +0 GOTO LBL 1\n"
                          "4 END PGM T MM\n",

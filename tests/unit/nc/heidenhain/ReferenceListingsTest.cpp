@@ -21,9 +21,11 @@ std::string listing(const std::string& name)
     return text ? text.value() : std::string();
 }
 
+// The listings are figures cut out of programs, most without the moves before them: they start
+// at the origin.
 Traced runListing(const std::string& name)
 {
-    InterpretOptions options;
+    InterpretOptions options = fromOrigin();
     options.fileName = name;
     options.arcRadiusToleranceMm = 0.001;
     return run(listing(name), options);
@@ -95,7 +97,7 @@ TEST(HeidenhainReferenceListings, ThesisArcWithTheFeedsOfFig57)
     // Figs. 5.7 and 3.3 are one program: with Q602 = 1500 the arc runs at the finishing feed.
     const std::string text = "0 BEGIN PGM F MM\n33 Q602=1500 ;dokoncovaci\n" +
                              listing("seed-000-fig3-3-linear-circular.h") + "47 END PGM F MM\n";
-    InterpretOptions options;
+    InterpretOptions options = fromOrigin();
     options.arcRadiusToleranceMm = 0.001;
     const Traced r = run(text, options);
     EXPECT_TRUE(r.result.diagnostics.empty()) << r.diagnostics()[0];

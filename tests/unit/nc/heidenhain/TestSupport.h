@@ -65,7 +65,15 @@ struct Traced {
     }
 };
 
-inline Traced run(std::string_view text, InterpretOptions options = {})
+// Most tests are about arcs, cycles or compensation, not the start: they start at the origin, as
+// rs274 does. A test of the program start passes InterpretOptions{} (no axis known).
+inline InterpretOptions fromOrigin(InterpretOptions options = {})
+{
+    options.start = toolpath::Vec3{};
+    return options;
+}
+
+inline Traced run(std::string_view text, InterpretOptions options = fromOrigin())
 {
     options.dialect = Dialect::Heidenhain;
     if (options.fileName.empty())
@@ -75,6 +83,12 @@ inline Traced run(std::string_view text, InterpretOptions options = {})
     r.result = interpret(text, options, recorder);
     r.path = recorder.take();
     return r;
+}
+
+// A program of `body` after BEGIN PGM and a TOOL CALL: block "n" of the body is on line n + 1.
+inline std::string program(std::string_view body)
+{
+    return "0 BEGIN PGM T MM\n1 TOOL CALL 1 Z S3000\n" + std::string(body) + "99 END PGM T MM\n";
 }
 
 inline void expectNear(const base::Vec3& a, const base::Vec3& b, double tolerance = 1e-9)

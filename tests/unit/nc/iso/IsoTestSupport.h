@@ -29,6 +29,14 @@ struct IsoRun {
     }
 };
 
-IsoRun run(std::string_view program, InterpretOptions options = {});
+// Most tests are about arcs, cycles or compensation, not the start: they start at the origin, as
+// rs274 does. A test of the program start passes InterpretOptions{} (no axis known).
+inline InterpretOptions fromOrigin(InterpretOptions options = {})
+{
+    options.start = toolpath::Vec3{};
+    return options;
+}
+
+IsoRun run(std::string_view program, InterpretOptions options = fromOrigin());
 
 }  // namespace camwb::nc::iso::test

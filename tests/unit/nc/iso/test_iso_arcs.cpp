@@ -101,7 +101,7 @@ TEST(IsoArcs, RadiusMismatchIsAnErrorAtTheCentreWord)
 
 TEST(IsoArcs, ToleranceFromTheOptions)
 {
-    InterpretOptions options;
+    InterpretOptions options = fromOrigin();
     options.arcRadiusToleranceMm = 0.2;
     EXPECT_EQ(run("G0 X10\nG2 X0 Y10.1 I-10 J0 F100\nM2\n", options).diagnostics(), "");
 }

@@ -177,7 +177,7 @@ TEST(IsoMotion, CompensationRadiusFromTheToolTableOrG41Point1)
     ToolTable table;
     table.set({3, 3, 6.0, 0.0, {}});
     table.set({4, 4, 10.0, 0.0, {}});
-    InterpretOptions options;
+    InterpretOptions options = fromOrigin();
     options.toolTable = &table;
     const IsoRun r = run("G0 X-10 Y0\nG41 D3\nG1 X0 Y0 F100\nG1 X10 Y0\nG40\nG1 X20 Y-10\n"
                          "T4 M6\nG42\nG1 X30 Y-10\nG1 X40 Y-10\nG40\nG1 X50 Y0\n"

@@ -82,7 +82,7 @@ TEST(SinumerikMotion, RadiusAndOpeningAngle)
 
 TEST(SinumerikMotion, RadiusMismatchIsAnError)
 {
-    InterpretOptions options;
+    InterpretOptions options = fromOrigin();
     options.arcRadiusToleranceMm = 0.01;
     const NcRun r =
         run("G0 X10 Y0\nG1 F100\nG3 X0 Y10.02 I-10 J0\nG3 X-10 Y0 I0 J-10.005\nG2 X0 Y0 CR=2\n", {}, options);
@@ -184,7 +184,7 @@ TEST(SinumerikMotion, CompensationRadiusFromToolDataTheTableOrNone)
     // gave no data for takes the tool table's radius.
     ToolTable table;
     table.set({2, 2, 8.0, 0.0, {}});
-    InterpretOptions options;
+    InterpretOptions options = fromOrigin();
     options.toolTable = &table;
     const NcRun r = run("$TC_DP6[1,1]=3\n$TC_DP15[1,1]=-0.5\nT1 M6\nG0 X-10 Y0\nG41 G1 X0 Y0 F100\nG1 X10 Y0\n"
                         "G40 G1 X20 Y-10\nD0\nG41 G1 X30 Y-10\nG1 X40 Y-10\nG40 G1 X50 Y0\n"

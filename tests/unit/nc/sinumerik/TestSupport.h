@@ -59,8 +59,16 @@ struct NcRun {
     }
 };
 
+// Most tests are about arcs, cycles or compensation, not the start: they start at the origin, as
+// rs274 does. A test of the program start passes InterpretOptions{} (no axis known).
+inline InterpretOptions fromOrigin(InterpretOptions options = {})
+{
+    options.start = toolpath::Vec3{};
+    return options;
+}
+
 inline NcRun run(const std::string& text, const std::map<std::string, std::string>& subprograms = {},
-                 InterpretOptions options = {})
+                 InterpretOptions options = fromOrigin())
 {
     options.dialect = Dialect::Sinumerik;
     if (options.fileName.empty())

@@ -12,6 +12,8 @@
 
 namespace camwb::nc {
 
+struct InterpretOptions;
+
 inline constexpr toolpath::AxisMask axisBit(int axis)
 {
     return toolpath::AxisMask{static_cast<unsigned char>(1u << axis)};
@@ -51,6 +53,11 @@ public:
 private:
     toolpath::AxisMask m_known = kNoAxes;
 };
+
+// The axes known before the first block: all of them when the caller gives the start position;
+// Y when the machine has no Y axis (a lathe: the tool works in the XZ plane through the spindle
+// axis, so Y is 0 there and nothing is invented by saying so).
+KnownAxes knownAtStart(const InterpretOptions& options);
 
 // "X is unknown here: no absolute X has been programmed yet (<need> needs it)": the one wording
 // of this error in every dialect. `need` says what wanted the value ("an incremental X", "the arc").

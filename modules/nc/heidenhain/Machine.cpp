@@ -47,10 +47,9 @@ Machine::Machine(const InterpretOptions& options, CutterCompensation& sink, Inte
     m_result(result),
     m_rep(result.diagnostics, options.maxDiagnostics, result.diagnosticsDropped)
 {
-    if (options.start) {
+    if (options.start)
         m_pos = *options.start;
-        m_known.give(AxisMask{});
-    }
+    m_known = knownAtStart(options);
 }
 
 void Machine::report(Severity s, int line, int column, std::string message)

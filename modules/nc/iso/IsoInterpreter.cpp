@@ -40,8 +40,7 @@ Program::Program(std::string_view text, const InterpretOptions& options, toolpat
     m_scanner(m_parameters, m_reporter),
     m_machine(m_compensation, options.toolTable, m_reporter, m_parameters, options.arcRadiusToleranceMm)
 {
-    if (options.start)
-        m_machine.startAt(*options.start);
+    m_machine.startAt(options.start, knownAtStart(options));
 }
 
 bool Program::readLine(std::string_view& line)

@@ -14,6 +14,8 @@
 #include "nc/iso/IsoReporter.h"
 #include "toolpath/MachineSink.h"
 
+#include <optional>
+
 namespace camwb::nc::iso {
 
 struct ModalState {
@@ -65,10 +67,12 @@ public:
     }
 
     // The tool is at `position` (work frame, mm) with every axis known: InterpretOptions::start.
-    void startAt(const toolpath::Vec3& position)
+    // Where the program starts, when known, and which axes are (nc::knownAtStart).
+    void startAt(const std::optional<toolpath::Vec3>& position, const KnownAxes& known)
     {
-        m_state.position = position;
-        m_state.known.give(toolpath::AxisMask{});
+        if (position)
+            m_state.position = *position;
+        m_state.known = known;
     }
     // Runs a block read without errors. `fileIndex` is the SourceRef::file of its line.
     BlockOutcome execute(const Block& block, int line, int fileIndex);

@@ -74,10 +74,11 @@ bool Machine::readKeyword(const Program& p, const Block& b, const Word& word, Bl
 {
     switch (static_cast<Keyword>(word.code)) {
     case Keyword::DiamOn:
-        m_modal.diameter = true;
-        break;
     case Keyword::DiamOf:
-        m_modal.diameter = false;
+        // Diameter or radius programming is a turning function: the program is for a lathe,
+        // whose tool works in the XZ plane through the spindle axis, where Y is 0.
+        m_modal.diameter = static_cast<Keyword>(word.code) == Keyword::DiamOn;
+        m_known.give(axisBit(1));
         break;
     case Keyword::TraOri:
         warning(p, word.pos,

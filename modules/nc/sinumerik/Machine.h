@@ -63,10 +63,9 @@ public:
         m_compensation(sink),
         m_result(result)
     {
-        if (options.start) {
+        if (options.start)
             m_pos = *options.start;
-            m_known.give(toolpath::AxisMask{});
-        }
+        m_known = knownAtStart(options);
     }
     void run(std::string_view mainText);
 

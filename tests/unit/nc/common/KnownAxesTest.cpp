@@ -2,6 +2,9 @@
 // and the one wording of the error.
 #include "nc/KnownAxes.h"
 
+#include "kinematics/Machine.h"
+#include "nc/Interpreter.h"
+
 #include <gtest/gtest.h>
 
 namespace camwb::nc {
@@ -16,6 +19,25 @@ TEST(KnownAxes, NothingIsKnownAtTheStart)
     EXPECT_FALSE(known.complete());
     EXPECT_EQ(known.missing(axisBit(2)), 2);
     EXPECT_EQ(known.missing(kNoAxes), -1);
+}
+
+TEST(KnownAxes, AtTheStartTheCallersPositionOrALathesMissingY)
+{
+    InterpretOptions options;
+    EXPECT_TRUE(knownAtStart(options).mask().none());
+    kinematics::Machine mill;
+    mill.axes = {{"X"}, {"Y"}, {"Z"}};
+    options.machine = &mill;
+    EXPECT_TRUE(knownAtStart(options).mask().none());
+    kinematics::Machine lathe;
+    lathe.axes = {{"X"}, {"Z"}};
+    options.machine = &lathe;
+    EXPECT_EQ(knownAtStart(options).mask(), AxisMask{AxisMask::kY});  // no Y axis: Y is 0
+    kinematics::Machine unknown;                                      // no axes listed: nothing can be said
+    options.machine = &unknown;
+    EXPECT_TRUE(knownAtStart(options).mask().none());
+    options.start = toolpath::Vec3{1, 2, 3};
+    EXPECT_TRUE(knownAtStart(options).complete());
 }
 
 TEST(KnownAxes, BeforeMustBeKnownAfterMayBeGiven)

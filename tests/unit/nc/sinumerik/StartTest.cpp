@@ -33,6 +33,19 @@ TEST(SinumerikStart, FirstMoveGivingEveryAxisIsAFullMove)
     EXPECT_EQ(r.trace(), "1 rapid 1.0000 2.0000 3.0000 s 0.0000 t 0\n");
 }
 
+// DIAMON/DIAMOF say the program is for a lathe: its tool works in the XZ plane through the
+// spindle axis, so Y is 0 and a G18 arc needs nothing unknown.
+TEST(SinumerikStart, TurningProgramHasItsToolAtYZero)
+{
+    const NcRun r = run("G18 G90 DIAMON\nG0 X62 Z2\nG1 X50 Z0 F100\nG2 X60 Z-5 CR=5\nM30\n", {}, InterpretOptions{});
+    EXPECT_EQ(r.errors(), 0) << r.diagnostics();
+    ASSERT_EQ(r.all<toolpath::Arc>().size(), 1u);
+    EXPECT_EQ(r.all<toolpath::Arc>()[0].to, (Vec3{30, 0, -5}));
+    ASSERT_EQ(r.all<Rapid>().size(), 1u);
+    EXPECT_TRUE(r.all<Rapid>()[0].axes.all());  // X and Z given, Y on the spindle axis
+    EXPECT_EQ(r.all<Rapid>()[0].to, (Vec3{31, 0, 2}));
+}
+
 TEST(SinumerikStart, IncrementalMoveOnAnUnknownAxisIsAnError)
 {
     const NcRun r = run("G0 Z5\nG0 Z=IC(1) X=IC(2)\nG91 Y3\nG90 X0 Y0\nM30\n", {}, InterpretOptions{});

@@ -31,6 +31,7 @@
 #include <QListWidget>
 #include <QMenuBar>
 #include <QSignalSpy>
+#include <QRegularExpression>
 #include <QTemporaryDir>
 #include <QTest>
 #include <QTimer>
@@ -281,6 +282,24 @@ private slots:
             QTest::mouseClick(gl, Qt::LeftButton, {}, gl->mapFrom(window.view(), at->toPoint()));
             QCOMPARE(window.ncEditor()->currentLine(), 12);
         }
+    }
+
+    // A program's diagnostics reach the report in the form editors read, file:line:column:
+    // severity: message, and once: no second "error: " in front.
+    void reportShowsDiagnosticsOnce()
+    {
+        QTemporaryDir dir;
+        const QString path =
+            writeFile(dir, QStringLiteral("broken.ngc"), "G21 G90 G17\nG0 X0 Y0 Z5\nG1 X1..2 F100\nM30\n");
+        MainWindow window;
+        window.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&window));
+        QVERIFY(window.openJob(path));
+        QVERIFY(waitForTrace(window));
+        const QString report = window.reportView()->toPlainText();
+        QVERIFY2(report.contains(QLatin1String("broken.ngc:3:")), qPrintable(report));
+        QVERIFY2(report.contains(QLatin1String(": error: ")), qPrintable(report));
+        QVERIFY2(!report.contains(QRegularExpression(QStringLiteral("error: \\S*broken\\.ngc"))), qPrintable(report));
     }
 
     void postedProgramIsTraced()

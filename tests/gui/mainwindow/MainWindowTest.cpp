@@ -30,8 +30,8 @@
 #include <QLabel>
 #include <QListWidget>
 #include <QMenuBar>
-#include <QSignalSpy>
 #include <QRegularExpression>
+#include <QSignalSpy>
 #include <QTemporaryDir>
 #include <QTest>
 #include <QTimer>

@@ -198,34 +198,22 @@ bool CutterCompensation::active()
     return m_radius > 0;
 }
 
-// Without compensation (most of every program) moves go straight through.
 void CutterCompensation::rapid(const Rapid& r)
 {
-    if (m_state == State::Off && !m_leaving) {
-        m_out.rapid(r);
-        m_programmed = r.to;  // the tool is there too: m_tool is set when compensation starts
-        return;
-    }
-    move(Record(r), r.to, nullptr);
+    if (!passedThrough<&MachineSink::rapid>(r))
+        move(Record(r), r.to, nullptr);
 }
 
 void CutterCompensation::linear(const Linear& r)
 {
-    if (m_state == State::Off && !m_leaving) {
-        m_out.linear(r);
-        m_programmed = r.to;  // the tool is there too: m_tool is set when compensation starts
-        return;
-    }
-    move(Record(r), r.to, nullptr);
+    if (!passedThrough<&MachineSink::linear>(r))
+        move(Record(r), r.to, nullptr);
 }
 
 void CutterCompensation::arc(const Arc& r)
 {
-    if (m_state == State::Off && !m_leaving) {
-        m_out.arc(r);
-        m_programmed = r.to;  // the tool is there too: m_tool is set when compensation starts
+    if (passedThrough<&MachineSink::arc>(r))
         return;
-    }
     CompElement e;
     e.arc = true;
     e.start = m_programmed.xy();
@@ -457,7 +445,7 @@ void CutterCompensation::cutterComp(const CutterComp& r)
     flush();
     m_entryOpen = false;
     pass(r);
-    if (m_state == State::Off && !m_leaving)
+    if (uncompensated())
         m_tool = m_programmed;  // moves without compensation track only the programmed position
     m_side = r.side;
     m_state = State::Starting;

@@ -101,6 +101,18 @@ private:
         else
             (m_out.*Method)(record);
     }
+    // No compensation on and none ending: the programmed path is the tool's.
+    bool uncompensated() const { return m_state == State::Off && !m_leaving; }
+    // Without compensation (most of every program) a move goes straight through, and the tool is
+    // where the program says (m_tool is set when compensation starts); false: it did not.
+    template <auto Method, class R> bool passedThrough(const R& record)
+    {
+        if (!uncompensated())
+            return false;
+        (m_out.*Method)(record);
+        m_programmed = record.to;
+        return true;
+    }
     void emit(const toolpath::Record& record, const toolpath::SourceRef& source);
     void move(const toolpath::Record& record, base::Vec3 to, const detail::CompElement* arcElement);
     void moveInZ(const toolpath::Record& record, double z);

@@ -62,11 +62,11 @@ int showPost(const post::PostEntry& entry, const post::PostInfo& info)
     std::cout << "  extension:  " << info.extension << "\n";
     std::cout << "  machines:   " << (info.machines.empty() ? "any" : joined(info.machines))
               << (info.defaultMachine.empty() ? "" : " (default " + info.defaultMachine + ")") << "\n";
-    std::cout << "  arcs:       planes " << joined(caps.arcPlanes) << ", helical " << (caps.helicalArcs ? "yes" : "no")
-              << ", at most " << number(caps.maxArcSweepDeg) << " deg per block, "
-              << (caps.arcRadiusWords ? "radius" : "centre") << " words, radius " << number(caps.minArcRadiusMm) << ".."
-              << number(caps.maxArcRadiusMm) << " mm; other arcs become lines within " << number(caps.toleranceMm)
-              << " mm\n";
+    std::cout << "  arcs:       planes " << joined(caps.arcPlanes) << ", helical "
+              << (caps.helicalPlanes.empty() ? "none" : joined(caps.helicalPlanes)) << ", at most "
+              << number(caps.maxArcSweepDeg) << " deg per block, " << (caps.arcRadiusWords ? "radius" : "centre")
+              << " words, radius " << number(caps.minArcRadiusMm) << ".." << number(caps.maxArcRadiusMm)
+              << " mm; other arcs become lines within " << number(caps.toleranceMm) << " mm\n";
     std::cout << "  cycles:     "
               << (caps.cyclesDeclared ? (caps.cycles.empty() ? "none" : joined(caps.cycles)) + " native, others"
                                       : std::string("native when the post has onCycle, else all"))

@@ -2,6 +2,9 @@
 
 #include "post/detail/ScriptBindings.h"
 
+#include <QJSValueIterator>
+
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 
@@ -9,9 +12,9 @@ namespace camwb::post {
 
 namespace {
 
-constexpr const char* kValueNames[] = {"x",  "y",      "z",    "i",      "j",     "k",    "cx",   "cy",
-                                       "cz", "radius", "feed", "motion", "plane", "comp", "sweep"};
-static_assert(std::size(kValueNames) == static_cast<std::size_t>(MoveValue::Sweep) + 1);
+constexpr const char* kValueNames[] = {"x",      "y",    "z",      "i",     "j",    "k",     "cx",    "cy",   "cz",
+                                       "radius", "feed", "motion", "plane", "comp", "sweep", "angle", "axial"};
+static_assert(std::size(kValueNames) == static_cast<std::size_t>(MoveValue::Axial) + 1);
 
 bool isAxis(MoveValue v) { return v == MoveValue::X || v == MoveValue::Y || v == MoveValue::Z; }
 
@@ -20,6 +23,8 @@ bool allowed(MoveValue v, const std::string& kind)
 {
     if (kind == "circular")
         return v != MoveValue::Comp;
+    if (v == MoveValue::Angle || v == MoveValue::Axial)
+        return false;
     if (isAxis(v) || v == MoveValue::Motion || v == MoveValue::Comp)
         return true;
     return kind == "linear" && v == MoveValue::Feed;
@@ -47,6 +52,9 @@ base::Result<BlockTemplate> parseWords(const QJSValue& list, const std::string& 
             for (char& c : word.literal)
                 if (c == '\r' || c == '\n')
                     c = ' ';
+        } else if (auto* pending = qobject_cast<PendingObject*>(item.toQObject())) {
+            word.pending = pending;
+            block.keepAlive.push_back(item);
         } else {
             const QJSValue variable = item.property("__camwbVariable");
             auto* object = qobject_cast<VariableObject*>(variable.toQObject());
@@ -59,6 +67,21 @@ base::Result<BlockTemplate> parseWords(const QJSValue& list, const std::string& 
                                        postFile, line);
             word.variable = object;
             word.value = *value;
+            word.force = item.property("force").toBool();
+            const QJSValue texts = item.property("texts");
+            if (texts.isObject()) {
+                QJSValueIterator it(texts);
+                while (it.hasNext()) {
+                    it.next();
+                    bool isCode = false;
+                    const int code = it.name().toInt(&isCode);
+                    if (!isCode)
+                        return base::makeError(at + ": texts keys must be whole numbers (codes of '" +
+                                                   item.property("value").toString().toStdString() + "')",
+                                               postFile, line);
+                    word.texts.emplace_back(code, it.value().toString().toStdString());
+                }
+            }
             hasAxis = hasAxis || isAxis(*value);
             if (isAxis(*value) && !block.axes[static_cast<int>(*value)])
                 block.axes[static_cast<int>(*value)] = object;
@@ -66,7 +89,7 @@ base::Result<BlockTemplate> parseWords(const QJSValue& list, const std::string& 
         }
         block.words.push_back(std::move(word));
     }
-    if (!hasAxis)
+    if (!hasAxis && block.straight)
         return base::makeError(where + " writes no axis (bind x, y or z)", postFile, line);
     return block;
 }
@@ -122,6 +145,10 @@ double MoveValues::value(MoveValue which) const
         return comp;
     case MoveValue::Sweep:
         return sweepDeg;
+    case MoveValue::Angle:
+        return motion == 2 ? -sweepDeg : sweepDeg;
+    case MoveValue::Axial:
+        return axialRise;
     }
     return 0;
 }
@@ -133,7 +160,7 @@ bool BlockTemplate::endsWhereItStarts(const MoveValues& move, int planeIndex) co
     const double end[3] = {move.end.x, move.end.y, move.end.z};
     char a[base::NumberFormat::kBufferSize], b[base::NumberFormat::kBufferSize];
     for (int axis : kPlaneAxes[planeIndex]) {
-        const VariableObject* variable = axes[axis];
+        const VariableObject* variable = writtenAxes[axis];
         if (!variable)
             return false;
         if (std::abs(end[axis] - start[axis]) > 1.5 * variable->resolution())
@@ -149,13 +176,18 @@ bool BlockTemplate::write(const MoveValues& given, OutputWriter& out, bool& miss
 {
     MoveValues move = given;
     move.writtenStart = move.start;
-    if (!straight) {  // centre words of arcs: from the start as written
-        if (axes[0])
-            move.writtenStart.x = axes[0]->writtenValue(move.start.x);
-        if (axes[1])
-            move.writtenStart.y = axes[1]->writtenValue(move.start.y);
-        if (axes[2])
-            move.writtenStart.z = axes[2]->writtenValue(move.start.z);
+    if (!straight) {
+        // The control measures centre words and helix rises from the start as it was written.
+        const double start[3] = {move.start.x, move.start.y, move.start.z};
+        const double end[3] = {move.end.x, move.end.y, move.end.z};
+        double written[3], writtenEnd[3];
+        for (int a = 0; a < 3; ++a) {
+            written[a] = writtenAxes[a] ? writtenAxes[a]->writtenValue(start[a]) : start[a];
+            writtenEnd[a] = writtenAxes[a] ? writtenAxes[a]->writtenValue(end[a]) : end[a];
+        }
+        move.writtenStart = {written[0], written[1], written[2]};
+        const int normalAxis = move.plane == 17 ? 2 : move.plane == 18 ? 1 : 0;
+        move.axialRise = writtenEnd[normalAxis] - written[normalAxis];
     }
     if (move.helical)
         for (VariableObject* variable : forceOnHelical)
@@ -185,38 +217,83 @@ bool BlockTemplate::write(const MoveValues& given, OutputWriter& out, bool& miss
             missingFeed = true;
             continue;
         }
+        const double value = move.value(word.value);
+        if (!word.texts.empty()) {
+            const int code = static_cast<int>(std::lround(value));
+            const auto text = std::find_if(word.texts.begin(), word.texts.end(),
+                                           [code](const auto& entry) { return entry.first == code; });
+            m_skip[i] = text == word.texts.end();
+            if (!m_skip[i])
+                m_texts[i] = text->second;
+            continue;
+        }
+        if (word.value == MoveValue::Feed)
+            if (const std::string* parameter = word.variable->feedParameter(move.feedKind, move.feed)) {
+                m_texts[i] = *parameter;
+                continue;
+            }
         char* buffer = m_buffers.data() + i * kSize;
-        m_texts[i] = std::string_view(buffer, word.variable->textOf(move.value(word.value), buffer));
+        m_texts[i] = std::string_view(buffer, word.variable->textOf(value, buffer));
         if (isAxis(word.value) && word.variable->modal().wouldWrite(m_texts[i]))
             axisChanges = true;
     }
     if (straight && !axisChanges)
         return false;
-    char* const block = m_block.data();
-    char* end = block;
-    auto put = [&end, block](std::string_view text) {
-        std::memcpy(end, text.data(), text.size());
-        end += text.size();
-    };
+    m_block.clear();
+    auto put = [this](std::string_view text) { m_block.insert(m_block.end(), text.begin(), text.end()); };
     for (std::size_t i = 0; i < words.size(); ++i) {
         const Word& word = words[i];
-        const bool written =
-            word.variable ? !m_skip[i] && word.variable->modal().update(m_texts[i]) : !word.literal.empty();
+        bool written = false;
+        if (word.variable)
+            written = !m_skip[i] && (word.variable->modal().update(m_texts[i]) || word.force);
+        else if (word.pending)
+            written = !word.pending->text().empty();
+        else
+            written = !word.literal.empty();
         if (!written)
             continue;
-        if (end != block)
-            *end++ = ' ';
+        if (!m_block.empty())
+            m_block.push_back(' ');
         if (word.variable) {
             put(word.variable->modal().prefix());
             put(m_texts[i]);
+        } else if (word.pending) {
+            put(word.pending->text());
+            word.pending->text().clear();
         } else {
             put(word.literal);
         }
     }
-    if (end == block)
+    if (m_block.empty())
         return false;
-    out.writeCleanBlock(std::string_view(block, static_cast<std::size_t>(end - block)));
+    out.writeCleanBlock(std::string_view(m_block.data(), m_block.size()));
     return true;
+}
+
+ArcBlocks* BlockTemplates::arcBlocks(int planeIndex, bool helical)
+{
+    if (planeIndex < 0)
+        return nullptr;
+    ArcBlocks& blocks = helical && !helix[planeIndex].empty() ? helix[planeIndex] : circular[planeIndex];
+    return blocks.empty() ? nullptr : &blocks;
+}
+
+void BlockTemplates::finishMove(const std::vector<const BlockTemplate*>& blocks, const toolpath::Vec3& start,
+                                const toolpath::Vec3& end, OutputWriter& out)
+{
+    const double moved[3] = {end.x - start.x, end.y - start.y, end.z - start.z};
+    for (int axis = 0; axis < 3; ++axis) {
+        if (moved[axis] == 0)
+            continue;
+        if (std::none_of(blocks.begin(), blocks.end(), [axis](const BlockTemplate* b) { return b->bindsAxis(axis); }))
+            for (VariableObject* variable : axisVariables[axis])
+                variable->modal().reset();
+    }
+    for (PendingObject* pending : after)
+        if (!pending->text().empty()) {
+            out.writeBlock({pending->text()});
+            pending->text().clear();
+        }
 }
 
 int BlockTemplates::planeIndex(const std::string& plane)
@@ -230,13 +307,56 @@ int BlockTemplates::planeIndex(const std::string& plane)
     return -1;
 }
 
+namespace {
+
+// One plane's arc: a word list (one block) or a list of word lists (CC X Y, then C X Y DR+).
+base::Result<ArcBlocks> parseArcBlocks(const QJSValue& list, const std::string& where, const std::string& postFile,
+                                       int line)
+{
+    ArcBlocks blocks;
+    const bool nested = list.isArray() && list.property("length").toInt() > 0 && list.property(0).isArray();
+    const int count = nested ? list.property("length").toInt() : 1;
+    for (int i = 0; i < count; ++i) {
+        const std::string at = nested ? where + "[" + std::to_string(i) + "]" : where;
+        auto block = parseWords(nested ? list.property(static_cast<quint32>(i)) : list, "circular", at, postFile, line);
+        if (!block)
+            return block.error();
+        blocks.push_back(std::move(block).value());
+    }
+    return blocks;
+}
+
+base::Result<std::vector<VariableObject*>> parseVariables(const QJSValue& list, const std::string& where,
+                                                          const std::string& postFile, int line,
+                                                          std::vector<QJSValue>& keepAlive)
+{
+    std::vector<VariableObject*> variables;
+    if (list.isUndefined())
+        return variables;
+    const int length = list.isArray() ? list.property("length").toInt() : -1;
+    if (length < 0)
+        return base::makeError(where + " must be an array of variables", postFile, line);
+    for (int i = 0; i < length; ++i) {
+        const QJSValue item = list.property(static_cast<quint32>(i));
+        auto* object = qobject_cast<VariableObject*>(item.toQObject());
+        if (!object)
+            return base::makeError(where + "[" + std::to_string(i) + "]: expected a variable from createVariable()",
+                                   postFile, line);
+        variables.push_back(object);
+        keepAlive.push_back(item);
+    }
+    return variables;
+}
+
+}  // namespace
+
 base::Result<BlockTemplates> parseBlockTemplates(const QJSValue& blocks, const std::string& postFile, int line)
 {
     BlockTemplates templates;
     if (blocks.isUndefined() || blocks.isNull())
         return templates;
     if (!blocks.isObject())
-        return base::makeError("post.blocks must be an object {rapid, linear, circular}", postFile, line);
+        return base::makeError("post.blocks must be an object {rapid, linear, circular, after}", postFile, line);
     for (const char* kind : {"rapid", "linear"}) {
         const QJSValue list = blocks.property(kind);
         if (list.isUndefined())
@@ -246,40 +366,76 @@ base::Result<BlockTemplates> parseBlockTemplates(const QJSValue& blocks, const s
             return block.error();
         (std::string(kind) == "rapid" ? templates.rapid : templates.linear) = std::move(block).value();
     }
-    const QJSValue circular = blocks.property("circular");
-    if (circular.isUndefined())
-        return templates;
-    if (!circular.isObject())
-        return base::makeError("post.blocks.circular must be an object {XY, ZX, YZ, forceOnHelical}", postFile, line);
-    std::vector<VariableObject*> force;
-    std::vector<QJSValue> forceAlive;
-    const QJSValue forceList = circular.property("forceOnHelical");
-    if (!forceList.isUndefined()) {
-        const int length = forceList.isArray() ? forceList.property("length").toInt() : -1;
+    const QJSValue after = blocks.property("after");
+    if (!after.isUndefined()) {
+        const int length = after.isArray() ? after.property("length").toInt() : -1;
         for (int i = 0; i < length; ++i) {
-            const QJSValue item = forceList.property(static_cast<quint32>(i));
-            auto* object = qobject_cast<VariableObject*>(item.toQObject());
-            if (!object)
-                return base::makeError("post.blocks.circular.forceOnHelical[" + std::to_string(i) +
-                                           "]: expected a variable from createVariable()",
+            const QJSValue item = after.property(static_cast<quint32>(i));
+            auto* pending = qobject_cast<PendingObject*>(item.toQObject());
+            if (!pending)
+                return base::makeError("post.blocks.after[" + std::to_string(i) + "]: expected createPending()",
                                        postFile, line);
-            force.push_back(object);
-            forceAlive.push_back(item);
+            templates.after.push_back(pending);
+            templates.keepAlive.push_back(item);
         }
         if (length < 0)
-            return base::makeError("post.blocks.circular.forceOnHelical must be an array of variables", postFile, line);
+            return base::makeError("post.blocks.after must be an array of createPending() objects", postFile, line);
     }
-    for (const char* plane : {"XY", "ZX", "YZ"}) {
-        const QJSValue list = circular.property(plane);
-        if (list.isUndefined())
-            continue;
-        auto block = parseWords(list, "circular", std::string("post.blocks.circular.") + plane, postFile, line);
-        if (!block)
-            return block.error();
-        block->forceOnHelical = force;
-        block->keepAlive.insert(block->keepAlive.end(), forceAlive.begin(), forceAlive.end());
-        templates.circular[BlockTemplates::planeIndex(plane)] = std::move(block).value();
+    const QJSValue circular = blocks.property("circular");
+    if (!circular.isUndefined()) {
+        if (!circular.isObject())
+            return base::makeError("post.blocks.circular must be an object {XY, ZX, YZ, helix, forceOnHelical}",
+                                   postFile, line);
+        auto force = parseVariables(circular.property("forceOnHelical"), "post.blocks.circular.forceOnHelical",
+                                    postFile, line, templates.keepAlive);
+        if (!force)
+            return force.error();
+        const QJSValue helix = circular.property("helix");
+        if (!helix.isUndefined() && !helix.isObject())
+            return base::makeError("post.blocks.circular.helix must be an object {XY, ZX, YZ}", postFile, line);
+        for (const char* plane : {"XY", "ZX", "YZ"}) {
+            const int index = BlockTemplates::planeIndex(plane);
+            for (const bool helical : {false, true}) {
+                const QJSValue list = helical ? helix.property(plane) : circular.property(plane);
+                if (list.isUndefined())
+                    continue;
+                const std::string where = std::string("post.blocks.circular.") + (helical ? "helix." : "") + plane;
+                auto parsed = parseArcBlocks(list, where, postFile, line);
+                if (!parsed)
+                    return parsed.error();
+                for (BlockTemplate& block : parsed.value())
+                    block.forceOnHelical = force.value();
+                (helical ? templates.helix : templates.circular)[index] = std::move(parsed).value();
+            }
+        }
     }
+    // Every variable bound to an axis anywhere; the first of each axis tells how it was written.
+    auto collect = [&templates](BlockTemplate& block) {
+        for (int axis = 0; axis < 3; ++axis) {
+            std::vector<VariableObject*>& list = templates.axisVariables[axis];
+            if (VariableObject* v = block.axes[axis]; v && std::find(list.begin(), list.end(), v) == list.end())
+                list.push_back(v);
+        }
+    };
+    for (std::optional<BlockTemplate>* block : {&templates.rapid, &templates.linear})
+        if (*block)
+            collect(**block);
+    for (auto* planes : {&templates.circular, &templates.helix})
+        for (ArcBlocks& arcBlocks : *planes)
+            for (BlockTemplate& block : arcBlocks)
+                collect(block);
+    auto assign = [&templates](BlockTemplate& block) {
+        for (int axis = 0; axis < 3; ++axis)
+            block.writtenAxes[axis] =
+                templates.axisVariables[axis].empty() ? nullptr : templates.axisVariables[axis][0];
+    };
+    for (std::optional<BlockTemplate>* block : {&templates.rapid, &templates.linear})
+        if (*block)
+            assign(**block);
+    for (auto* planes : {&templates.circular, &templates.helix})
+        for (ArcBlocks& arcBlocks : *planes)
+            for (BlockTemplate& block : arcBlocks)
+                assign(block);
     return templates;
 }
 

@@ -11,11 +11,12 @@ void OutputWriter::streamTo(Sink sink, std::size_t chunkBytes)
     m_text.reserve(chunkBytes + 4096);
 }
 
-void OutputWriter::setBlockNumbering(long long start, long long step, bool enabled)
+void OutputWriter::setBlockNumbering(long long start, long long step, bool enabled, std::string prefix)
 {
     m_next = start;
     m_step = step;
     m_numbering = enabled;
+    m_prefix = std::move(prefix);
 }
 
 void OutputWriter::appendBlockNumber()
@@ -24,7 +25,7 @@ void OutputWriter::appendBlockNumber()
         return;
     char digits[24];
     const auto result = std::to_chars(digits, digits + sizeof digits, m_next);
-    m_text += 'N';
+    m_text += m_prefix;
     m_text.append(digits, result.ptr);
     m_text += ' ';
     m_next += m_step;

@@ -20,7 +20,7 @@ public:
     void streamTo(Sink sink, std::size_t chunkBytes = std::size_t(1) << 20);
 
     // Next block gets `start`; each numbered block adds `step`. Default: N10, N20, ...
-    void setBlockNumbering(long long start, long long step, bool enabled);
+    void setBlockNumbering(long long start, long long step, bool enabled, std::string prefix = "N");
 
     // Joins the non-empty words with single spaces, prefixed by "N<n> " when numbering is on.
     // All words empty: writes nothing and uses no block number. Returns whether a line was written.
@@ -74,6 +74,7 @@ private:
     long long m_next = 10;
     long long m_step = 10;
     bool m_numbering = true;
+    std::string m_prefix = "N";
 };
 
 }  // namespace camwb::post

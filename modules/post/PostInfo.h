@@ -15,9 +15,10 @@ namespace camwb::post {
 // What the kernel may hand to the post; everything else it converts first (arcs into lines,
 // cycles into moves) or refuses with an error.
 struct PostCapabilities {
-    std::vector<std::string> arcPlanes{"XY", "ZX", "YZ"};  // other planes' arcs are linearised
-    bool helicalArcs = true;
+    std::vector<std::string> arcPlanes{"XY", "ZX", "YZ"};      // other planes' arcs are linearised
+    std::vector<std::string> helicalPlanes{"XY", "ZX", "YZ"};  // helices in other planes are linearised
     double maxArcSweepDeg = 180;    // longer arcs and full circles are split into equal pieces
+    double maxHelixSweepDeg = 0;    // helices: the same, at most this per piece (0: maxArcSweepDeg)
     double minArcRadiusMm = 0.001;  // arcs outside [min, max] are linearised
     double maxArcRadiusMm = 100000;
     bool arcRadiusWords = false;      // the post writes R/CR (no full circles, signed radius) instead of centres
@@ -27,6 +28,7 @@ struct PostCapabilities {
     int maxAxes = 3;                  // 3: five-axis moves are refused
 
     bool writesCycle(const std::string& kind) const;
+    bool writesHelix(const std::string& plane) const;
 };
 
 enum class PropertyType { Bool, Integer, Number, Enum, String };

@@ -45,6 +45,11 @@ bool PostCapabilities::writesCycle(const std::string& kind) const
     return std::find(cycles.begin(), cycles.end(), kind) != cycles.end();
 }
 
+bool PostCapabilities::writesHelix(const std::string& plane) const
+{
+    return std::find(helicalPlanes.begin(), helicalPlanes.end(), plane) != helicalPlanes.end();
+}
+
 const PropertyDef* PostInfo::property(const std::string& name) const
 {
     for (const PropertyDef& def : properties)

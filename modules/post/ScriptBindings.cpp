@@ -2,6 +2,8 @@
 
 #include "post/detail/BlockTemplates.h"
 
+#include <QJSValueIterator>
+
 #include <charconv>
 #include <cmath>
 #include <cstring>
@@ -9,6 +11,16 @@
 namespace camwb::post {
 
 namespace {
+
+// TODO(merge): toolpath::FeedKind from the CL model.
+int feedKindCode(const std::string& name)
+{
+    const char* names[] = {"", "cutting", "plunge", "entry", "exit", "finishing"};
+    for (int i = 1; i < 6; ++i)
+        if (name == names[i])
+            return i;
+    return 0;
+}
 
 bool isIntegral(double value) { return std::isfinite(value) && value == std::floor(value) && std::abs(value) < 1e15; }
 
@@ -103,7 +115,7 @@ QString VariableObject::format(const QJSValue& value)
     return QString::fromStdString(m_value.output(text));
 }
 
-QJSValue VariableObject::bind(const QJSValue& valueName)
+QJSValue VariableObject::bind(const QJSValue& valueName, const QJSValue& options)
 {
     const std::string name = valueName.toString().toStdString();
     if (!valueName.isString() || !moveValueFromName(name)) {
@@ -112,11 +124,61 @@ QJSValue VariableObject::bind(const QJSValue& valueName)
                                  .arg(valueName.toString(), QString::fromStdString(moveValueNames())));
         return {};
     }
+    if (!options.isUndefined() && !options.isObject()) {
+        m_engine->throwError(QJSValue::TypeError, QStringLiteral("bind(name, options): options must be an object"));
+        return {};
+    }
     QJSValue bound = m_engine->newObject();
     bound.setProperty(QStringLiteral("__camwbVariable"), m_engine->newQObject(this));
     bound.setProperty(QStringLiteral("value"), valueName);
+    if (options.isObject()) {
+        bound.setProperty(QStringLiteral("force"), options.property(QStringLiteral("force")).toBool());
+        const QJSValue texts = options.property(QStringLiteral("texts"));
+        if (!texts.isUndefined() && !texts.isObject()) {
+            m_engine->throwError(QJSValue::TypeError, QStringLiteral("bind(): texts must be an object {code: text}"));
+            return {};
+        }
+        bound.setProperty(QStringLiteral("texts"), texts);
+    }
     return bound;
 }
+
+void VariableObject::setFeedParameters(const QJSValue& parameters)
+{
+    if (!parameters.isObject()) {
+        m_engine->throwError(QJSValue::TypeError,
+                             QStringLiteral("setFeedParameters() needs an object {kind: {text, feed}}"));
+        return;
+    }
+    std::vector<FeedParameter> list;
+    QJSValueIterator it(parameters);
+    while (it.hasNext()) {
+        it.next();
+        const int kind = feedKindCode(it.name().toStdString());
+        const QJSValue text = it.value().property(QStringLiteral("text"));
+        const QJSValue feed = it.value().property(QStringLiteral("feed"));
+        if (kind <= 0 || !text.isString() || !feed.isNumber() || !(feed.toNumber() > 0)) {
+            m_engine->throwError(QJSValue::TypeError,
+                                 QStringLiteral("setFeedParameters(): '%1' needs a feed kind (cutting, plunge, entry, "
+                                                "exit, finishing) with {text: string, feed: number > 0}")
+                                     .arg(it.name()));
+            return;
+        }
+        list.push_back({kind, text.toString().toStdString(), feed.toNumber()});
+    }
+    m_feedParameters = std::move(list);
+    m_value.reset();
+}
+
+const std::string* VariableObject::feedParameter(int feedKind, double feed) const
+{
+    for (const FeedParameter& p : m_feedParameters)
+        if (p.kind == feedKind && std::abs(p.feed - feed) <= 1e-9 * std::max(1.0, p.feed))
+            return &p.text;
+    return nullptr;
+}
+
+void PendingObject::set(const QJSValue& text) { m_text = wordText(text); }
 
 void VariableObject::setFormat(const QJSValue& format)
 {
@@ -190,6 +252,8 @@ QJSValue ScriptKernel::makeVariable(const QJSValue& spec, const QJSValue& format
     return m_engine->newQObject(new VariableObject(m_engine, prefix, force, numberFormat, acceptsText));
 }
 
+QJSValue ScriptKernel::createPending() { return m_engine->newQObject(new PendingObject); }
+
 QJSValue ScriptKernel::createVariable(const QJSValue& spec, const QJSValue& format)
 {
     return makeVariable(spec, format, false);
@@ -233,7 +297,8 @@ void ScriptKernel::error(const QJSValue& text)
     m_engine->throwError(QJSValue::GenericError, QString::fromStdString(*m_postError));
 }
 
-void ScriptKernel::setBlockNumbering(const QJSValue& start, const QJSValue& step, const QJSValue& enabled)
+void ScriptKernel::setBlockNumbering(const QJSValue& start, const QJSValue& step, const QJSValue& enabled,
+                                     const QJSValue& prefix)
 {
     const double first = start.isUndefined() ? 10 : start.toNumber();
     const double increment = step.isUndefined() ? 10 : step.toNumber();
@@ -243,8 +308,13 @@ void ScriptKernel::setBlockNumbering(const QJSValue& start, const QJSValue& step
             QStringLiteral("setBlockNumbering(start, step, enabled): start >= 0 and step > 0, integers"));
         return;
     }
+    const std::string prefixText = prefix.isUndefined() ? "N" : prefix.toString().toStdString();
+    if (prefixText.find_first_of("\r\n") != std::string::npos) {
+        m_engine->throwError(QJSValue::TypeError, QStringLiteral("a block number prefix cannot hold a line break"));
+        return;
+    }
     m_writer.setBlockNumbering(static_cast<long long>(first), static_cast<long long>(increment),
-                               enabled.isUndefined() ? true : enabled.toBool());
+                               enabled.isUndefined() ? true : enabled.toBool(), prefixText);
 }
 
 QJSValue ScriptKernel::getCurrentPosition()

@@ -54,8 +54,9 @@ constexpr const char* kHandlerNames[] = {
     "onComment", "onCutterComp", "onDwell",      "onSectionEnd", "onStop",    "onPassThrough", "onClose"};
 static_assert(std::size(kHandlerNames) == static_cast<std::size_t>(Handler::Count), "a name for every handler");
 
-constexpr const char* kCapabilityKeys[] = {"arcPlanes", "helicalArcs", "maxArcSweep", "minArcRadius", "maxArcRadius",
-                                           "arcWords",  "tolerance",   "cycles",      "maxAxes"};
+constexpr const char* kCapabilityKeys[] = {"arcPlanes",    "helicalArcs",  "maxArcSweep", "maxHelixSweep",
+                                           "minArcRadius", "maxArcRadius", "arcWords",    "tolerance",
+                                           "cycles",       "maxAxes"};
 
 QString qs(const std::string& text) { return QString::fromStdString(text); }
 std::string str(const QJSValue& value) { return value.toString().toStdString(); }
@@ -325,9 +326,10 @@ base::Status ScriptRun::readDeclarations(const std::string& source, PostInfo& in
         };
         double maxAxes = caps.maxAxes;
         for (base::Status s :
-             {number("maxArcSweep", caps.maxArcSweepDeg, 1, 360), number("minArcRadius", caps.minArcRadiusMm, 0, 1e9),
-              number("maxArcRadius", caps.maxArcRadiusMm, 0, 1e9), number("tolerance", caps.toleranceMm, 1e-6, 10),
-              number("maxAxes", maxAxes, 3, 5),
+             {number("maxArcSweep", caps.maxArcSweepDeg, 1, 360),
+              number("maxHelixSweep", caps.maxHelixSweepDeg, 1, 36000),
+              number("minArcRadius", caps.minArcRadiusMm, 0, 1e9), number("maxArcRadius", caps.maxArcRadiusMm, 0, 1e9),
+              number("tolerance", caps.toleranceMm, 1e-6, 10), number("maxAxes", maxAxes, 3, 5),
               strings("arcPlanes", caps.arcPlanes,
                       [](const std::string& p) { return BlockTemplates::planeIndex(p) >= 0; }),
               strings("cycles", caps.cycles, isCycleKind)})
@@ -335,10 +337,17 @@ base::Status ScriptRun::readDeclarations(const std::string& source, PostInfo& in
                 return s;
         caps.maxAxes = static_cast<int>(maxAxes);
         caps.cyclesDeclared = !declared.property("cycles").isUndefined();
-        if (const QJSValue helical = declared.property("helicalArcs"); !helical.isUndefined()) {
-            if (!helical.isBool())
-                return declError("post.capabilities.helicalArcs must be true or false", "helicalArcs");
-            caps.helicalArcs = helical.toBool();
+        if (const QJSValue helical = declared.property("helicalArcs"); helical.isBool()) {
+            if (!helical.toBool())
+                caps.helicalPlanes.clear();
+        } else if (!helical.isUndefined()) {  // the planes it writes helices in
+            if (!helical.isArray())
+                return declError("post.capabilities.helicalArcs must be true, false or an array of planes",
+                                 "helicalArcs");
+            if (base::Status s = strings("helicalArcs", caps.helicalPlanes,
+                                         [](const std::string& p) { return BlockTemplates::planeIndex(p) >= 0; });
+                !s)
+                return s;
         }
         if (const QJSValue words = declared.property("arcWords"); !words.isUndefined()) {
             if (str(words) != "center" && str(words) != "radius")

@@ -25,6 +25,9 @@ int compCode(CutterCompSide side)
     return side == CutterCompSide::Left ? 41 : side == CutterCompSide::Right ? 42 : 40;
 }
 
+// TODO(merge): the move's toolpath::FeedKind.
+template <typename Move> int feedKindOf(const Move&) { return 0; }
+
 std::string counted(int count, const char* one, const char* many)
 {
     return std::to_string(count) + " " + (count == 1 ? one : many);
@@ -171,7 +174,7 @@ private:
     }
 
     // A straight move to the axes `axes` gives; the others stay, and stay unwritten while unknown.
-    void straight(Handler handler, const Vec3& to, AxisMask axes, double feed);
+    void straight(Handler handler, const Vec3& to, AxisMask axes, double feed, int feedKind = 0);
     // An inverse-time feed says in how many minutes the whole move takes: each of n pieces is n times faster.
     double pieceFeed(double feed, std::size_t pieces) const
     {
@@ -211,7 +214,7 @@ void ScriptSink::rapid(const Rapid& r)
     straight(Handler::Rapid, r.to, r.axes, 0);
 }
 
-void ScriptSink::straight(Handler handler, const Vec3& to, AxisMask axes, double feed)
+void ScriptSink::straight(Handler handler, const Vec3& to, AxisMask axes, double feed, int feedKind)
 {
     ScriptKernel& kernel = *m_run.m_kernel;
     m_afterToolChange = false;
@@ -242,8 +245,10 @@ void ScriptSink::straight(Handler handler, const Vec3& to, AxisMask axes, double
         move.feed = feed;
         move.motion = isLinear ? 1 : 0;
         move.comp = compCode(m_comp);
+        move.feedKind = feedKind;
         bool missingFeed = false;
-        block->write(move, kernel.writer(), missingFeed);
+        if (block->write(move, kernel.writer(), missingFeed))
+            m_run.m_templates.finishMove({&*block}, move.start, move.end, kernel.writer());
         if (missingFeed)
             m_missingFeed.add(m_run.m_recordIndex);
     } else {
@@ -274,25 +279,27 @@ void ScriptSink::arc(const Arc& r)
     }
     // Splitting first also rejects degenerate arcs and gives the radius and helix test.
     const double maxSweep = m_caps.arcRadiusWords ? std::min(m_caps.maxArcSweepDeg, 359.9) : m_caps.maxArcSweepDeg;
-    const std::vector<ArcPiece> pieces = splitArc(*start, r, maxSweep);
+    std::vector<ArcPiece> pieces = splitArc(*start, r, maxSweep);
     if (pieces.empty()) {
         m_run.fail("degenerate arc: zero radius");
         return;
     }
+    if (pieces.front().helical && m_caps.maxHelixSweepDeg > maxSweep)  // helices in fewer, longer pieces
+        pieces = splitArc(*start, r, m_caps.maxHelixSweepDeg);
     std::string reason;
     if (plane.empty())
         reason = "in an oblique plane";
     else if (std::find(m_caps.arcPlanes.begin(), m_caps.arcPlanes.end(), plane) == m_caps.arcPlanes.end())
         reason = "in the " + plane + " plane, which the post does not write";
-    else if (pieces.front().helical && !m_caps.helicalArcs)
-        reason = "helical, which the post does not write";
+    else if (pieces.front().helical && !m_caps.writesHelix(plane))
+        reason = "helical in the " + plane + " plane, which the post does not write";
     else if (pieces.front().radius < m_caps.minArcRadiusMm || pieces.front().radius > m_caps.maxArcRadiusMm)
         reason = "outside the post's arc radius range";
     if (!reason.empty()) {
         m_linearised[reason].add(m_run.m_recordIndex);
         const std::vector<Vec3> points = linearizeArc(*start, r, m_caps.toleranceMm);
         for (const Vec3& point : points)
-            straight(Handler::Linear, point, {}, pieceFeed(r.feedMmPerMin, points.size()));
+            straight(Handler::Linear, point, {}, pieceFeed(r.feedMmPerMin, points.size()), feedKindOf(r));
         return;
     }
     for (std::size_t i = 0; i < pieces.size() && !m_run.m_failure; ++i)
@@ -320,25 +327,31 @@ void ScriptSink::arcPiece(const ArcPiece& p, const Arc& arc, int pieceIndex, int
         info.setProperty("pieces", pieces);
         m_run.call(Handler::Circular, {p.clockwise, p.center.x, p.center.y, p.center.z, p.end.x, p.end.y, p.end.z,
                                        pieceFeed(arc.feedMmPerMin, static_cast<std::size_t>(pieces)), info});
-    } else if (std::optional<BlockTemplate>& block = m_run.m_templates.circular[BlockTemplates::planeIndex(plane)]) {
+    } else if (ArcBlocks* blocks = m_run.m_templates.arcBlocks(BlockTemplates::planeIndex(plane), p.helical)) {
         MoveValues move;
         move.start = p.start;
         move.end = p.end;
-        if (p.sweepDeg < 360 - 1e-6 && block->endsWhereItStarts(move, BlockTemplates::planeIndex(plane))) {
+        if (p.sweepDeg < 360 - 1e-6 && blocks->back().endsWhereItStarts(move, BlockTemplates::planeIndex(plane))) {
             // Written as an arc it would read back as start = end, a full circle: a short straight move.
-            straight(Handler::Linear, p.end, {}, pieceFeed(arc.feedMmPerMin, static_cast<std::size_t>(pieces)));
+            straight(Handler::Linear, p.end, {}, pieceFeed(arc.feedMmPerMin, static_cast<std::size_t>(pieces)),
+                     feedKindOf(arc));
             return;
         }
         move.center = p.center;
         move.radius = radius;
         move.feed = pieceFeed(arc.feedMmPerMin, static_cast<std::size_t>(pieces));
+        move.feedKind = feedKindOf(arc);
         move.sweepDeg = p.sweepDeg;
         move.motion = p.clockwise ? 2 : 3;
         move.plane = 17 + BlockTemplates::planeIndex(plane);
         move.comp = compCode(m_comp);
         move.helical = p.helical;
         bool missingFeed = false;
-        block->write(move, kernel.writer(), missingFeed);
+        std::vector<const BlockTemplate*> written;
+        for (BlockTemplate& block : *blocks)
+            if (block.write(move, kernel.writer(), missingFeed))
+                written.push_back(&block);
+        m_run.m_templates.finishMove(written, p.start, p.end, kernel.writer());
         if (missingFeed)
             m_missingFeed.add(m_run.m_recordIndex);
     } else if (pieceIndex == 0) {  // one count per arc, not per piece

@@ -159,7 +159,7 @@ std::vector<ArcPiece> splitArc(const Vec3& start, const Arc& arc, double maxSwee
     const std::optional<ArcFrame> frame = frameOf(start, arc);
     if (!frame)
         return {};
-    const double maxSweep = std::clamp(maxSweepDeg, 1.0, 360.0) * std::numbers::pi / 180;
+    const double maxSweep = std::clamp(maxSweepDeg, 1.0, 36000.0) * std::numbers::pi / 180;  // helices: many turns
     const int count = std::max(1, static_cast<int>(std::ceil((frame->sweep - kSweepTolerance) / maxSweep)));
     const bool helical = frame->helical();
 

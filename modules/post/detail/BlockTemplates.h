@@ -18,8 +18,29 @@
 namespace camwb::post {
 
 class VariableObject;
+class PendingObject;
 
-enum class MoveValue { X, Y, Z, I, J, K, CenterX, CenterY, CenterZ, Radius, Feed, Motion, Plane, Comp, Sweep };
+// Angle: the sweep signed by the direction (+ counter-clockwise about the plane's normal);
+// Axial: the helix's rise along the normal, from the start as written to the end as written.
+enum class MoveValue {
+    X,
+    Y,
+    Z,
+    I,
+    J,
+    K,
+    CenterX,
+    CenterY,
+    CenterZ,
+    Radius,
+    Feed,
+    Motion,
+    Plane,
+    Comp,
+    Sweep,
+    Angle,
+    Axial
+};
 
 std::optional<MoveValue> moveValueFromName(const std::string& name);
 std::string moveValueNames();  // "x, y, z, ..." for messages
@@ -32,9 +53,11 @@ struct MoveValues {
     double radius = 0;            // signed: negative above 180 degrees when the post writes radius words
     double feed = 0;
     double sweepDeg = 0;
-    int motion = 0;  // 0 rapid, 1 linear, 2 clockwise, 3 counter-clockwise (G0..G3)
-    int plane = 17;  // 17 XY, 18 ZX, 19 YZ
-    int comp = 40;   // 40 off, 41 left, 42 right
+    double axialRise = 0;  // set by BlockTemplate::write
+    int motion = 0;        // 0 rapid, 1 linear, 2 clockwise, 3 counter-clockwise (G0..G3)
+    int plane = 17;        // 17 XY, 18 ZX, 19 YZ
+    int comp = 40;         // 40 off, 41 left, 42 right
+    int feedKind = 0;      // toolpath::FeedKind: which of the operation's feeds the move uses
     bool helical = false;
     toolpath::AxisMask known;  // end axes the kernel knows: the others get no word (never invented)
 
@@ -44,20 +67,29 @@ struct MoveValues {
 class BlockTemplate {
 public:
     struct Word {
-        std::string literal;  // written as is when variable is null
+        std::string literal;  // written as is when neither variable nor pending is set
         VariableObject* variable = nullptr;
         MoveValue value = MoveValue::X;
+        bool force = false;  // bind(name, {force: true}): written in every such block
+        // bind(name, {texts: {code: text}}): the text for the value's code; a code without one
+        // writes no word (DR+/DR- for the motion, R0/RL/RR for the compensation).
+        std::vector<std::pair<int, std::string>> texts;
+        PendingObject* pending = nullptr;  // a one-shot word the script set (M3 with the first move)
     };
 
     std::vector<Word> words;
     std::vector<VariableObject*> forceOnHelical;  // reset before a helical block: always written
-    std::array<VariableObject*, 3> axes{};        // the variables that write x, y and z
-    bool straight = false;                        // rapid/linear: no block when no axis word changes
-    std::vector<QJSValue> keepAlive;              // the script objects behind the raw pointers
+    std::array<VariableObject*, 3> axes{};        // the variables this block writes x, y and z with
+    // The post's x, y and z variables from every template: the start as the control has it is
+    // what they wrote (centre words and helix rises are measured from there).
+    std::array<VariableObject*, 3> writtenAxes{};
+    bool straight = false;            // rapid/linear: no block when no axis word changes
+    std::vector<QJSValue> keepAlive;  // the script objects behind the raw pointers
 
     // Writes the block for `move`. False when nothing was written (a straight move that changes no
     // axis). missingFeed is set when a feed word was left out because the feed is not positive.
     bool write(const MoveValues& move, OutputWriter& out, bool& missingFeed);
+    bool bindsAxis(int axis) const { return axes[static_cast<std::size_t>(axis)] != nullptr; }
 
     // Whether the arc's end, as written, is its start in both axes of the plane (0 XY, 1 ZX,
     // 2 YZ): written so, a short arc would read back as a full circle.
@@ -72,10 +104,26 @@ private:
     std::vector<char> m_block;
 };
 
+// The blocks one arc piece is written with: one (G2 X Y I J) or several (CC X Y, then C X Y DR+).
+using ArcBlocks = std::vector<BlockTemplate>;
+
 struct BlockTemplates {
     std::optional<BlockTemplate> rapid;
     std::optional<BlockTemplate> linear;
-    std::array<std::optional<BlockTemplate>, 3> circular;  // XY, ZX, YZ
+    std::array<ArcBlocks, 3> circular;  // XY, ZX, YZ; empty: none
+    std::array<ArcBlocks, 3> helix;     // helical pieces, when they take other words (CP IPA IZ)
+    std::vector<PendingObject*> after;  // one-shot blocks written after the next move's block
+    std::vector<QJSValue> keepAlive;
+    // Every variable any template writes x, y or z with: a move whose blocks leave an axis
+    // unwritten though it moved resets them, so the next block writes that axis again.
+    std::array<std::vector<VariableObject*>, 3> axisVariables;
+
+    // The arc blocks for a piece in `planeIndex`: the helix ones for a helical piece if declared.
+    ArcBlocks* arcBlocks(int planeIndex, bool helical);
+    // After a move from `start` to `end` written with `blocks`: resets the variables of the axes
+    // that moved but were not written; then writes the pending `after` blocks.
+    void finishMove(const std::vector<const BlockTemplate*>& blocks, const toolpath::Vec3& start,
+                    const toolpath::Vec3& end, OutputWriter& out);
 
     static int planeIndex(const std::string& plane);  // "XY" 0, "ZX" 1, "YZ" 2, else -1
 };

@@ -50,7 +50,14 @@ public:
 
     Q_INVOKABLE QString format(const QJSValue& value);
     Q_INVOKABLE void reset() { m_value.reset(); }
-    Q_INVOKABLE QJSValue bind(const QJSValue& valueName);
+    Q_INVOKABLE QJSValue bind(const QJSValue& valueName) { return bind(valueName, QJSValue()); }
+    // bind(name, {force: true, texts: {code: text}}): see BlockTemplate::Word.
+    Q_INVOKABLE QJSValue bind(const QJSValue& valueName, const QJSValue& options);
+    // Parametric feeds: {cutting: {text: "+Q601", feed: 900}, ...} by CL feed kind. A move of a
+    // listed kind at exactly that feed writes the text instead of the number; {} ends them. The
+    // last value is forgotten, so the next feed word is written: a control keeps the feed it read,
+    // not the parameter, and a parameter defined again must be read again.
+    Q_INVOKABLE void setFeedParameters(const QJSValue& parameters);
     // A new number format from now on (feeds per minute vs per revolution); forgets the last value.
     Q_INVOKABLE void setFormat(const QJSValue& format);
     // Written in every block from now on (true), or only when it changes (false).
@@ -64,6 +71,8 @@ public:
     // The value as the control reads it back from that text (rounded, scale undone).
     double writtenValue(double value) const;
     ModalValue& modal() { return m_value; }
+    // The parameter text for a move of `feedKind` at `feed` (setFeedParameters), else null.
+    const std::string* feedParameter(int feedKind, double feed) const;
 
 private:
     static double resolutionOf(const std::optional<base::NumberFormat>& format);
@@ -78,6 +87,27 @@ private:
     mutable double m_cachedValue = 0;
     mutable std::size_t m_cachedLength = 0;  // 0: nothing cached
     mutable char m_cachedText[32];
+    struct FeedParameter {
+        int kind;
+        std::string text;
+        double feed;
+    };
+    std::vector<FeedParameter> m_feedParameters;
+};
+
+// A one-shot word or block (createPending()): the script sets it (M3 when the spindle starts),
+// the next block template that lists it writes it and clears it; take() hands it to the script
+// instead, for blocks the script writes itself.
+class PendingObject : public QObject {
+    Q_OBJECT
+public:
+    Q_INVOKABLE void set(const QJSValue& text);
+    Q_INVOKABLE QString take() { return QString::fromStdString(std::exchange(m_text, std::string())); }
+    Q_INVOKABLE bool isSet() const { return !m_text.empty(); }
+    std::string& text() { return m_text; }
+
+private:
+    std::string m_text;
 };
 
 class ScriptKernel : public QObject {
@@ -109,6 +139,7 @@ public:
     Q_INVOKABLE QJSValue createVariable(const QJSValue& spec, const QJSValue& format);
     Q_INVOKABLE QJSValue createModal(const QJSValue& spec) { return createModal(spec, QJSValue()); }
     Q_INVOKABLE QJSValue createModal(const QJSValue& spec, const QJSValue& format);
+    Q_INVOKABLE QJSValue createPending();
     Q_INVOKABLE void writeBlockWords(const QJSValue& words);
     Q_INVOKABLE void writeComment(const QJSValue& text);
     Q_INVOKABLE void writeln(const QJSValue& text);
@@ -119,7 +150,13 @@ public:
     {
         setBlockNumbering(start, step, QJSValue());
     }
-    Q_INVOKABLE void setBlockNumbering(const QJSValue& start, const QJSValue& step, const QJSValue& enabled);
+    Q_INVOKABLE void setBlockNumbering(const QJSValue& start, const QJSValue& step, const QJSValue& enabled)
+    {
+        setBlockNumbering(start, step, enabled, QJSValue());
+    }
+    // prefix: what comes before the number ("N" by default; "" for Klartext's "0 BEGIN PGM").
+    Q_INVOKABLE void setBlockNumbering(const QJSValue& start, const QJSValue& step, const QJSValue& enabled,
+                                       const QJSValue& prefix);
     // {x, y, z} when every axis is known, else null; getCurrentAxis("z") answers one axis (null
     // while unknown), e.g. the height after a retract that gave only Z.
     Q_INVOKABLE QJSValue getCurrentPosition();

@@ -57,7 +57,7 @@ TEST(PostProperties, DeclarationsAreReadWithoutRunningHandlers)
 
     const PostCapabilities& caps = info.capabilities;
     EXPECT_EQ(caps.arcPlanes, std::vector<std::string>{"XY"});
-    EXPECT_FALSE(caps.helicalArcs);
+    EXPECT_TRUE(caps.helicalPlanes.empty());
     EXPECT_EQ(caps.maxArcSweepDeg, 90);
     EXPECT_TRUE(caps.arcRadiusWords);
     EXPECT_EQ(caps.toleranceMm, 0.002);

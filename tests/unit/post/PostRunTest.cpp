@@ -300,7 +300,7 @@ function onCircular(cw, cx, cy, cz, x, y, z, feed, arc) { writeln("arc " + arc.r
     EXPECT_NE(std::find(all.begin(), all.end(), "line 10.000 0.000 -2.000"), all.end());  // the helix ends exactly
     ASSERT_EQ(output->messages.size(), 2u);
     EXPECT_EQ(output->messages[0].message,
-              "1 arc helical, which the post does not write: written as lines within 0.01 mm (first: CL record 3)");
+              "1 arc helical in the XY plane, which the post does not write: written as lines within 0.01 mm (first: CL record 3)");
     EXPECT_EQ(output->messages[1].message,
               "1 arc outside the post's arc radius range: written as lines within 0.01 mm (first: CL record 1)");
 }

@@ -185,6 +185,7 @@ int postCommand(const std::vector<std::string>& args)
     toolpath::Toolpath program;
     std::string postId = options.postId, machineId = options.machineId;
     std::map<std::string, std::string> properties;
+    post::JobFacts jobFacts;
     if (format->job) {
         std::optional<ComputedJob> computed = computeJobFile(input);
         if (!computed)
@@ -195,6 +196,7 @@ int postCommand(const std::vector<std::string>& args)
         postId = postId.empty() ? job.postId : postId;
         machineId = machineId.empty() ? job.machineId : machineId;
         properties = job.postProperties;
+        jobFacts = document::jobFacts(job);
     } else {
         auto imported = toolpath::readClFile(input, format->cl);
         if (!imported)
@@ -225,6 +227,8 @@ int postCommand(const std::vector<std::string>& args)
 
     post::RunOptions runOptions;
     runOptions.context = post::PostContext::fromEnvironment(fs::path(input).stem().string());
+    runOptions.context.outputName = fs::path(output).stem().string();
+    runOptions.job = jobFacts;
     runOptions.properties = properties;
     runOptions.machine = std::move(machine).value();
     return postToFile(post.value(), program, runOptions, output);

@@ -72,12 +72,23 @@ base::Result<post::PostProcessor> loadJobPost(const Job& job, const std::vector<
     return post::PostProcessor::load(path.value());
 }
 
+post::JobFacts jobFacts(const Job& job)
+{
+    post::JobFacts facts;
+    facts.name = job.name;
+    const base::Vec3 &lo = job.stock.min, &hi = job.stock.max;
+    if (hi.x > lo.x && hi.y > lo.y && hi.z > lo.z)
+        facts.stock = base::Box3{lo, hi, false};
+    return facts;
+}
+
 base::Result<post::RunOptions> jobRunOptions(const Job& job, const post::PostProcessor& post, post::PostContext context,
                                              const std::vector<std::string>& machineDirs)
 {
     post::RunOptions options;
     options.context = std::move(context);
     options.properties = job.postProperties;
+    options.job = jobFacts(job);
     auto machine = post::machineForPost(post.info(), job.machineId, machineDirs);
     if (!machine)
         return machine.error();

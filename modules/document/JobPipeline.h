@@ -38,6 +38,9 @@ base::Result<toolpath::Toolpath> computeProgram(const Job& job, const occ::Model
 
 base::Result<post::PostProcessor> loadJobPost(const Job& job, const std::vector<base::DataDir>& postDirs);
 
+// The job's name and stock for the post's header (no stock when the box is empty).
+post::JobFacts jobFacts(const Job& job);
+
 // How the job asks to be posted: its post property values and its machine (or the post's
 // default machine, found in machineDirs), with the given context.
 base::Result<post::RunOptions> jobRunOptions(const Job& job, const post::PostProcessor& post, post::PostContext context,

@@ -172,7 +172,7 @@ bool BlockTemplate::endsWhereItStarts(const MoveValues& move, int planeIndex) co
     return true;
 }
 
-bool BlockTemplate::write(const MoveValues& given, OutputWriter& out, bool& missingFeed)
+bool BlockTemplate::write(const MoveValues& given, OutputWriter& out, Issues& issues)
 {
     MoveValues move = given;
     move.writtenStart = move.start;
@@ -214,10 +214,16 @@ bool BlockTemplate::write(const MoveValues& given, OutputWriter& out, bool& miss
         }
         if (word.value == MoveValue::Feed && !(move.feed > 0)) {
             m_skip[i] = 1;
-            missingFeed = true;
+            issues.missingFeed = true;
             continue;
         }
         const double value = move.value(word.value);
+        if (word.variable->beyondMax(value)) {
+            issues.beyondMax = word.variable->modal().prefix() + base::NumberFormat{4, true}.format(value) +
+                               " is beyond the largest value the control reads (" +
+                               base::NumberFormat{4, true}.format(word.variable->max()) + ")";
+            return false;
+        }
         if (!word.texts.empty()) {
             const int code = static_cast<int>(std::lround(value));
             const auto text = std::find_if(word.texts.begin(), word.texts.end(),
@@ -278,6 +284,21 @@ ArcBlocks* BlockTemplates::arcBlocks(int planeIndex, bool helical)
     return blocks.empty() ? nullptr : &blocks;
 }
 
+namespace {
+
+void writePending(const std::vector<PendingObject*>& list, OutputWriter& out)
+{
+    for (PendingObject* pending : list)
+        if (!pending->text().empty()) {
+            out.writeBlock({pending->text()});
+            pending->text().clear();
+        }
+}
+
+}  // namespace
+
+void BlockTemplates::writeBefore(OutputWriter& out) { writePending(before, out); }
+
 void BlockTemplates::finishMove(const std::vector<const BlockTemplate*>& blocks, const toolpath::Vec3& start,
                                 const toolpath::Vec3& end, OutputWriter& out)
 {
@@ -289,11 +310,7 @@ void BlockTemplates::finishMove(const std::vector<const BlockTemplate*>& blocks,
             for (VariableObject* variable : axisVariables[axis])
                 variable->modal().reset();
     }
-    for (PendingObject* pending : after)
-        if (!pending->text().empty()) {
-            out.writeBlock({pending->text()});
-            pending->text().clear();
-        }
+    writePending(after, out);
 }
 
 int BlockTemplates::planeIndex(const std::string& plane)
@@ -366,20 +383,22 @@ base::Result<BlockTemplates> parseBlockTemplates(const QJSValue& blocks, const s
             return block.error();
         (std::string(kind) == "rapid" ? templates.rapid : templates.linear) = std::move(block).value();
     }
-    const QJSValue after = blocks.property("after");
-    if (!after.isUndefined()) {
-        const int length = after.isArray() ? after.property("length").toInt() : -1;
+    for (const char* key : {"before", "after"}) {
+        const QJSValue list = blocks.property(key);
+        if (list.isUndefined())
+            continue;
+        const std::string where = std::string("post.blocks.") + key;
+        const int length = list.isArray() ? list.property("length").toInt() : -1;
         for (int i = 0; i < length; ++i) {
-            const QJSValue item = after.property(static_cast<quint32>(i));
+            const QJSValue item = list.property(static_cast<quint32>(i));
             auto* pending = qobject_cast<PendingObject*>(item.toQObject());
             if (!pending)
-                return base::makeError("post.blocks.after[" + std::to_string(i) + "]: expected createPending()",
-                                       postFile, line);
-            templates.after.push_back(pending);
+                return base::makeError(where + "[" + std::to_string(i) + "]: expected createPending()", postFile, line);
+            (std::string(key) == "before" ? templates.before : templates.after).push_back(pending);
             templates.keepAlive.push_back(item);
         }
         if (length < 0)
-            return base::makeError("post.blocks.after must be an array of createPending() objects", postFile, line);
+            return base::makeError(where + " must be an array of createPending() objects", postFile, line);
     }
     const QJSValue circular = blocks.property("circular");
     if (!circular.isUndefined()) {

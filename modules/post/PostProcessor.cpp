@@ -42,6 +42,7 @@ base::Status prepare(ScriptRun& run, const PostInfo& info, const std::string& so
         }
         run.setMachine(machine);
     }
+    run.setJob(options.job);
     PostInfo evaluated;
     return run.evaluate(source, evaluated);
 }

@@ -6,6 +6,7 @@
 
 #include "base/Diagnostic.h"
 #include "base/Result.h"
+#include "base/Vec.h"
 #include "kinematics/Machine.h"
 #include "post/PostInfo.h"
 #include "toolpath/Toolpath.h"
@@ -24,13 +25,23 @@ struct PostContext {
     std::int64_t dateEpochSeconds = 0;  // shown as UTC
     std::string user;
     std::string version;  // CAMWB_VERSION
+    // The output file's name without folder and extension ("" when posting into memory): the
+    // name some controls want inside the program (Klartext's BEGIN PGM <name>).
+    std::string outputName;
 
     // SOURCE_DATE_EPOCH if set (else now), CAMWB_USER else USER else "unknown", CAMWB_VERSION.
     static PostContext fromEnvironment(std::string programName);
 };
 
+// What the job says beyond its CL: its name (the project in headers) and the stock box.
+struct JobFacts {
+    std::string name;
+    std::optional<base::Box3> stock;
+};
+
 struct RunOptions {
     PostContext context;
+    JobFacts job;                                   // empty when posting a CL file
     std::map<std::string, std::string> properties;  // user values as text, by property name
     std::optional<kinematics::Machine> machine;     // given to the script; its limits are checked
     // Longest time one call into the script (loading it, or one handler) may take before it is

@@ -101,6 +101,14 @@ QString VariableObject::format(const QJSValue& value)
     if (value.isNull())
         return {};
     std::string text;
+    if (value.isNumber() && beyondMax(value.toNumber())) {
+        m_engine->throwError(QJSValue::RangeError,
+                             QStringLiteral("%1%2 is beyond the largest value the control reads (%3)")
+                                 .arg(QString::fromStdString(m_value.prefix()))
+                                 .arg(value.toNumber())
+                                 .arg(m_max));
+        return {};
+    }
     if (value.isNumber() && std::isfinite(value.toNumber())) {
         char buffer[base::NumberFormat::kBufferSize];
         text.assign(buffer, textOf(value.toNumber(), buffer));
@@ -188,6 +196,7 @@ void VariableObject::setFormat(const QJSValue& format)
         return;
     }
     m_format = formatObject->numberFormat();
+    m_max = formatObject->max();
     m_resolution = resolutionOf(m_format);
     m_value.reset();
     m_cachedLength = 0;
@@ -222,7 +231,15 @@ QJSValue ScriptKernel::createFormat(const QJSValue& spec)
     format.forceSign = spec.property("forceSign").toBool();
     if (spec.hasProperty("leadingZero"))
         format.leadingZero = spec.property("leadingZero").toBool();
-    return m_engine->newQObject(new FormatObject(m_engine, format));  // owned by the script engine
+    double max = 0;
+    if (spec.hasProperty("max")) {
+        max = spec.property("max").toNumber();
+        if (!std::isfinite(max) || max <= 0) {
+            m_engine->throwError(QJSValue::RangeError, QStringLiteral("createFormat(): max must be a positive number"));
+            return {};
+        }
+    }
+    return m_engine->newQObject(new FormatObject(m_engine, format, max));  // owned by the script engine
 }
 
 QJSValue ScriptKernel::makeVariable(const QJSValue& spec, const QJSValue& format, bool acceptsText)
@@ -232,6 +249,7 @@ QJSValue ScriptKernel::makeVariable(const QJSValue& spec, const QJSValue& format
         return {};
     }
     std::optional<base::NumberFormat> numberFormat;
+    double max = 0;
     if (!format.isUndefined() && !format.isNull()) {
         auto* formatObject = qobject_cast<FormatObject*>(format.toQObject());
         if (!formatObject) {
@@ -239,6 +257,7 @@ QJSValue ScriptKernel::makeVariable(const QJSValue& spec, const QJSValue& format
             return {};
         }
         numberFormat = formatObject->numberFormat();
+        max = formatObject->max();
     } else if (!acceptsText) {
         numberFormat = base::NumberFormat{};
     }
@@ -249,7 +268,7 @@ QJSValue ScriptKernel::makeVariable(const QJSValue& spec, const QJSValue& format
         return {};
     }
     const bool force = spec.property("force").toBool();
-    return m_engine->newQObject(new VariableObject(m_engine, prefix, force, numberFormat, acceptsText));
+    return m_engine->newQObject(new VariableObject(m_engine, prefix, force, numberFormat, acceptsText, max));
 }
 
 QJSValue ScriptKernel::createPending() { return m_engine->newQObject(new PendingObject); }

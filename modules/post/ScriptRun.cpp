@@ -108,14 +108,16 @@ ScriptRun::ScriptRun(std::string postFile, const PostContext& context, std::chro
     QJSValue kernel = m_engine.newQObject(m_kernel.get());
     global.setProperty("__camwbKernel", kernel);
     for (const char* name :
-         {"createFormat", "createVariable", "createModal", "writeComment", "writeln", "warning", "error",
-          "setBlockNumbering", "getCurrentPosition", "getCurrentAxis", "getProperty", "expandCyclePoint"})
+         {"createFormat", "createVariable", "createModal", "createPending", "writeComment", "writeln", "warning",
+          "error", "setBlockNumbering", "getCurrentPosition", "getCurrentAxis", "getProperty", "expandCyclePoint"})
         global.setProperty(name, kernel.property(name));  // QObject methods stay bound to the kernel
     global.setProperty("programName", qs(context.programName));
     global.setProperty("dateString", qs(formatDateUtc(context.dateEpochSeconds)));
+    global.setProperty("outputName", qs(context.outputName));
     global.setProperty("user", qs(context.user));
     global.setProperty("version", qs(context.version));
     global.setProperty("machine", QJSValue(QJSValue::NullValue));
+    setJob({});
     global.setProperty("__camwbEpochMs", static_cast<double>(context.dateEpochSeconds) * 1000.0);
     m_trampoline = m_engine.evaluate(QString::fromUtf8(kPrelude), QStringLiteral("<camwb-kernel>"));
 }
@@ -169,6 +171,21 @@ void ScriptRun::setMachine(const kinematics::Machine& machine)
         coolants.setProperty(static_cast<quint32>(i), qs(machine.coolants[i]));
     m.setProperty("coolants", coolants);
     m_engine.globalObject().setProperty("machine", m);
+}
+
+void ScriptRun::setJob(const JobFacts& facts)
+{
+    QJSValue job = m_engine.newObject();
+    job.setProperty("name", qs(facts.name));
+    if (facts.stock) {
+        QJSValue stock = m_engine.newObject();
+        stock.setProperty("min", scriptPoint(m_engine, facts.stock->min));
+        stock.setProperty("max", scriptPoint(m_engine, facts.stock->max));
+        job.setProperty("stock", stock);
+    } else {
+        job.setProperty("stock", QJSValue(QJSValue::NullValue));
+    }
+    m_engine.globalObject().setProperty("job", job);
 }
 
 std::string ScriptRun::where() const

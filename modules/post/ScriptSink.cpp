@@ -136,6 +136,7 @@ public:
         tool.setProperty("fluteLength", t.fluteLengthMm);
         tool.setProperty("length", t.lengthMm);
         tool.setProperty("flutes", t.flutes);
+        tool.setProperty("pointAngle", t.pointAngleDeg);
         return tool;
     }
 
@@ -246,10 +247,13 @@ void ScriptSink::straight(Handler handler, const Vec3& to, AxisMask axes, double
         move.motion = isLinear ? 1 : 0;
         move.comp = compCode(m_comp);
         move.feedKind = feedKind;
-        bool missingFeed = false;
-        if (block->write(move, kernel.writer(), missingFeed))
+        m_run.m_templates.writeBefore(kernel.writer());
+        BlockTemplate::Issues issues;
+        if (block->write(move, kernel.writer(), issues))
             m_run.m_templates.finishMove({&*block}, move.start, move.end, kernel.writer());
-        if (missingFeed)
+        if (!issues.beyondMax.empty())
+            m_run.fail(issues.beyondMax);
+        if (issues.missingFeed)
             m_missingFeed.add(m_run.m_recordIndex);
     } else {
         ++m_unhandled[std::string(m_run.m_recordName) + " (" + handlerName(handler) + ")"];
@@ -346,13 +350,20 @@ void ScriptSink::arcPiece(const ArcPiece& p, const Arc& arc, int pieceIndex, int
         move.plane = 17 + BlockTemplates::planeIndex(plane);
         move.comp = compCode(m_comp);
         move.helical = p.helical;
-        bool missingFeed = false;
+        m_run.m_templates.writeBefore(kernel.writer());
+        BlockTemplate::Issues issues;
         std::vector<const BlockTemplate*> written;
         for (BlockTemplate& block : *blocks)
-            if (block.write(move, kernel.writer(), missingFeed))
+            if (block.write(move, kernel.writer(), issues))
                 written.push_back(&block);
+            else if (!issues.beyondMax.empty())
+                break;
+        if (!issues.beyondMax.empty()) {
+            m_run.fail(issues.beyondMax);
+            return;
+        }
         m_run.m_templates.finishMove(written, p.start, p.end, kernel.writer());
-        if (missingFeed)
+        if (issues.missingFeed)
             m_missingFeed.add(m_run.m_recordIndex);
     } else if (pieceIndex == 0) {  // one count per arc, not per piece
         ++m_unhandled[std::string(m_run.m_recordName) + " (onCircular)"];

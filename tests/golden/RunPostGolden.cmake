@@ -1,6 +1,7 @@
 # One golden case of a post (posts/<id>/tests/<case>/): posts input.* with camwb-cli and the
 # case's properties (one name=value per line, optional) and machine (optional), twice, and checks
-# that both runs are byte-identical and equal expected.<ext>, and that the warnings equal
+# that both runs are byte-identical (into <run>/<name>.<ext>, name from the case's output-name file,
+# else "input": Klartext writes it into BEGIN PGM) and equal expected.<ext>, and that the warnings equal
 # expected.warnings (paths made relative; a post script's line numbers left out so that editing
 # the script does not churn every case). CAMWB_UPDATE_GOLDEN=1 rewrites the expected files.
 file(GLOB inputs ${CASE}/input.*)
@@ -23,15 +24,19 @@ if(EXISTS ${CASE}/machine)
   list(APPEND args --machine ${machine})
 endif()
 
-file(MAKE_DIRECTORY ${OUT})
+set(name input)
+if(EXISTS ${CASE}/output-name)
+  file(STRINGS ${CASE}/output-name name LIMIT_COUNT 1)
+endif()
 foreach(run IN ITEMS first second)
-  execute_process(COMMAND ${CLI} ${args} -o ${OUT}/${run}.${EXT}
+  file(MAKE_DIRECTORY ${OUT}/${run})
+  execute_process(COMMAND ${CLI} ${args} -o ${OUT}/${run}/${name}.${EXT}
                   RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err_${run})
   if(NOT rc EQUAL 0)
     message(FATAL_ERROR "camwb-cli ${args} failed (${rc}):\n${out}${err_${run}}")
   endif()
 endforeach()
-execute_process(COMMAND ${CMAKE_COMMAND} -E compare_files ${OUT}/first.${EXT} ${OUT}/second.${EXT}
+execute_process(COMMAND ${CMAKE_COMMAND} -E compare_files ${OUT}/first/${name}.${EXT} ${OUT}/second/${name}.${EXT}
                 RESULT_VARIABLE different)
 if(different OR NOT err_first STREQUAL err_second)
   message(FATAL_ERROR "two runs on the same input differ: posting is not deterministic")
@@ -42,14 +47,14 @@ string(REGEX REPLACE "[^ \n]*\\.js:[0-9]+: " "<post>: " warnings "${warnings}")
 
 set(expected_nc ${CASE}/expected.${EXT})
 if("$ENV{CAMWB_UPDATE_GOLDEN}" STREQUAL "1")
-  file(COPY_FILE ${OUT}/first.${EXT} ${expected_nc})
+  file(COPY_FILE ${OUT}/first/${name}.${EXT} ${expected_nc})
   file(WRITE ${CASE}/expected.warnings "${warnings}")
   message(STATUS "updated ${expected_nc} and expected.warnings: review the diff before committing")
   return()
 endif()
-execute_process(COMMAND ${CMAKE_COMMAND} -E compare_files ${OUT}/first.${EXT} ${expected_nc} RESULT_VARIABLE different)
+execute_process(COMMAND ${CMAKE_COMMAND} -E compare_files ${OUT}/first/${name}.${EXT} ${expected_nc} RESULT_VARIABLE different)
 if(different)
-  execute_process(COMMAND diff -u ${expected_nc} ${OUT}/first.${EXT} OUTPUT_VARIABLE diff)
+  execute_process(COMMAND diff -u ${expected_nc} ${OUT}/first/${name}.${EXT} OUTPUT_VARIABLE diff)
   message(FATAL_ERROR "NC differs from ${expected_nc}:\n${diff}")
 endif()
 file(READ ${CASE}/expected.warnings expected_warnings)

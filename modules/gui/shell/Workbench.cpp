@@ -375,8 +375,9 @@ void Workbench::startCompute()
             return outcome;
         }
         outcome->ncExtension = post->info().extension;
-        auto options = document::jobRunOptions(job, post.value(), post::PostContext::fromEnvironment(programName),
-                                               kinematics::defaultMachineDirs());
+        post::PostContext context = post::PostContext::fromEnvironment(programName);
+        context.outputName = programName;  // Save NC File proposes the job's name
+        auto options = document::jobRunOptions(job, post.value(), context, kinematics::defaultMachineDirs());
         if (!options) {
             outcome->errors.push_back(options.error().toString());
             return outcome;

@@ -86,9 +86,14 @@ public:
     bool straight = false;            // rapid/linear: no block when no axis word changes
     std::vector<QJSValue> keepAlive;  // the script objects behind the raw pointers
 
+    // What write() could not write as the move says.
+    struct Issues {
+        bool missingFeed = false;  // a feed word was left out because the feed is not positive
+        std::string beyondMax;     // a value beyond its format's max ("X123456.789 beyond 99999.9999")
+    };
     // Writes the block for `move`. False when nothing was written (a straight move that changes no
-    // axis). missingFeed is set when a feed word was left out because the feed is not positive.
-    bool write(const MoveValues& move, OutputWriter& out, bool& missingFeed);
+    // axis, or a value beyond its format's max: nothing of the block is written then).
+    bool write(const MoveValues& move, OutputWriter& out, Issues& issues);
     bool bindsAxis(int axis) const { return axes[static_cast<std::size_t>(axis)] != nullptr; }
 
     // Whether the arc's end, as written, is its start in both axes of the plane (0 XY, 1 ZX,
@@ -110,9 +115,10 @@ using ArcBlocks = std::vector<BlockTemplate>;
 struct BlockTemplates {
     std::optional<BlockTemplate> rapid;
     std::optional<BlockTemplate> linear;
-    std::array<ArcBlocks, 3> circular;  // XY, ZX, YZ; empty: none
-    std::array<ArcBlocks, 3> helix;     // helical pieces, when they take other words (CP IPA IZ)
-    std::vector<PendingObject*> after;  // one-shot blocks written after the next move's block
+    std::array<ArcBlocks, 3> circular;   // XY, ZX, YZ; empty: none
+    std::array<ArcBlocks, 3> helix;      // helical pieces, when they take other words (CP IPA IZ)
+    std::vector<PendingObject*> before;  // one-shot blocks written before the next move's blocks
+    std::vector<PendingObject*> after;   // one-shot blocks written after the next move's blocks
     std::vector<QJSValue> keepAlive;
     // Every variable any template writes x, y or z with: a move whose blocks leave an axis
     // unwritten though it moved resets them, so the next block writes that axis again.
@@ -120,6 +126,8 @@ struct BlockTemplates {
 
     // The arc blocks for a piece in `planeIndex`: the helix ones for a helical piece if declared.
     ArcBlocks* arcBlocks(int planeIndex, bool helical);
+    // Writes the pending `before` blocks (the TOOL CALL still waiting for its speed).
+    void writeBefore(OutputWriter& out);
     // After a move from `start` to `end` written with `blocks`: resets the variables of the axes
     // that moved but were not written; then writes the pending `after` blocks.
     void finishMove(const std::vector<const BlockTemplate*>& blocks, const toolpath::Vec3& start,

@@ -14,6 +14,7 @@
 #include <QObject>
 #include <QString>
 
+#include <cmath>
 #include <functional>
 #include <optional>
 #include <vector>
@@ -23,14 +24,22 @@ namespace camwb::post {
 class FormatObject : public QObject {
     Q_OBJECT
 public:
-    FormatObject(QJSEngine* engine, base::NumberFormat format) : m_engine(engine), m_format(format) {}
+    FormatObject(QJSEngine* engine, base::NumberFormat format, double max) :
+        m_engine(engine),
+        m_format(format),
+        m_max(max)
+    {
+    }
     const base::NumberFormat& numberFormat() const { return m_format; }
+    // createFormat({max}): the largest magnitude the control reads in this format (0: any).
+    double max() const { return m_max; }
 
     Q_INVOKABLE QString format(const QJSValue& value);
 
 private:
     QJSEngine* m_engine;
     base::NumberFormat m_format;
+    double m_max = 0;
 };
 
 // A modal word: createVariable (numbers through a format) and createModal (G/M codes: strings or
@@ -39,10 +48,11 @@ class VariableObject : public QObject {
     Q_OBJECT
 public:
     VariableObject(QJSEngine* engine, std::string prefix, bool force, std::optional<base::NumberFormat> format,
-                   bool acceptsText) :
+                   bool acceptsText, double max) :
         m_engine(engine),
         m_value(std::move(prefix), force),
         m_format(format),
+        m_max(max),
         m_resolution(resolutionOf(format)),
         m_acceptsText(acceptsText)
     {
@@ -65,6 +75,12 @@ public:
 
     // The C++ side of format(): the number's text (into a kBufferSize buffer), then modal().
     std::size_t textOf(double value, char* out) const;
+    // Whether `value` is beyond the format's max (as written, scale applied).
+    bool beyondMax(double value) const
+    {
+        return m_max > 0 && !(std::abs(value * (m_format ? m_format->scale : 1.0)) <= m_max);
+    }
+    double max() const { return m_max; }
     // The smallest difference two values need to be written differently (one unit of the last
     // decimal, scale undone); values further apart never have the same text.
     double resolution() const { return m_resolution; }
@@ -80,6 +96,7 @@ private:
     QJSEngine* m_engine;
     ModalValue m_value;
     std::optional<base::NumberFormat> m_format;
+    double m_max = 0;
     double m_resolution;  // of m_format, kept: block templates ask for it on every move
     bool m_acceptsText;
     // The last number formatted and its text: a block template formats the same Z or F block after

@@ -54,6 +54,8 @@ public:
     // What getProperty() answers and what `machine` is while the script runs; set before evaluate().
     void setProperties(const std::map<std::string, PropertyValue>& values);
     void setMachine(const kinematics::Machine& machine);
+    // `job` in the script: {name, stock: {min, max} or null}.
+    void setJob(const JobFacts& job);
 
     // Evaluates the post source and reads its declarations into `info` and the block templates.
     base::Status evaluate(const std::string& source, PostInfo& info);

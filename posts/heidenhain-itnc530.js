@@ -1,0 +1,525 @@
+// MAS MCVL 1000 (NIKKEN 5AX-220 B/C table) with the HEIDENHAIN iTNC 530, Klartext (.h).
+// The output rules of seed-000 (Machala 2017, §2.5, §3.6-3.9, §7): every line numbered from 0
+// step 1 except cycle Q lines; `BEGIN PGM <file name> MM` ... `END PGM`; header comments, BLK
+// FORM from the stock, `M135 M126`; machining time and tool list; operation banners; a tool box
+// before each `TOOL CALL n Z S`; no M6 (the operator changes tools); `L` with the changed,
+// signed coordinates; FMAX rapids with R0; R0/RL/RR from the CL; M3 on the first move and the
+// coolant block after it; CC + C DR+- in the three planes (or CR), CC + CP IPA IZ for helices;
+// parametric feeds Q601/Q602/Q603; cycles 200/201/203/205/207 with their Q lists; the min/max
+// travel report before END PGM. The words of the comments in English or in the thesis' Czech.
+//
+// Five-axis (the next issue) adds the rotary words here: B and C after X/Y/Z in the `L` blocks
+// (C before B, seed-000 §2.5), M128 / FUNCTION TCPM or post-side machine coordinates per
+// operation, and B/C in the min/max report (travelReport()).
+var post = {
+    id: "heidenhain-itnc530",
+    description: "MAS MCVL 1000, HEIDENHAIN iTNC 530 Klartext (3-axis)",
+    vendor: "MAS / HEIDENHAIN",
+    extension: "h",
+    machine: "mas-mcvl1000",
+    machines: ["mas-mcvl1000"],
+    capabilities: {
+        arcPlanes: ["XY", "ZX", "YZ"],
+        helicalArcs: ["XY"],  // CP IPA IZ about a pole in the working plane
+        maxArcSweep: 180,     // full circles as two halves: every C block's end differs from its start
+        maxHelixSweep: 5400,  // IPA's range on the control: multi-turn helices in one CP block
+        cycles: ["drill", "drillDwell", "peck", "chipBreak", "tap", "bore"],
+        maxAxes: 3
+    },
+    properties: {
+        language: {
+            title: "Comment language", type: "enum", values: ["english", "czech"], default: "english",
+            description: "Words of the comments and cycle texts: English as the iTNC writes them, or the thesis' Czech"
+        },
+        units: {
+            title: "Units", type: "enum", values: ["mm", "inch"], default: "mm",
+            description: "BEGIN PGM ... MM (coordinates mm, feeds mm/min) or INCH (inch, inch/min)"
+        },
+        parametricFeeds: {
+            title: "Parametric feeds (Posuv F)", type: "bool", default: false,
+            description: "Q601 cutting, Q602 finishing, Q603 plunge defined once per operation and F+Q60x in the " +
+                         "blocks that use them, so the operator changes a feed in one place"
+        },
+        arcOutput: {
+            title: "Arc words", type: "enum", values: ["CC", "CR"], default: "CC",
+            description: "CC centre + C end point, or CR end point with the signed radius (R- above 180 degrees)"
+        },
+        machiningTime: {
+            title: "Machining time", type: "bool", default: true,
+            description: "The estimated machining time near the top (STROJNI CAS), from the CL with the machine's rapid"
+        },
+        rotaryModes: {
+            title: "M135 M126 in the header", type: "bool", default: true,
+            description: "M135: no exact stop at rotary transitions; M126: rotary axes take the shorter way"
+        },
+        stopBeforeToolCall: {
+            title: "Stop before each tool call (Stop_M0)", type: "bool", default: false,
+            description: "M0 before every TOOL CALL, for the operator who changes the tool by hand"
+        }
+    }
+};
+post.capabilities.arcWords = getProperty("arcOutput") == "CR" ? "radius" : "center";
+
+var czech = getProperty("language") == "czech";
+var inch = getProperty("units") == "inch";
+var unitWord = inch ? "INCH" : "MM";
+var words = czech ? {
+    machine: "STROJ", control: "SYSTEM", post: "POSTPROCESSOR", version: "GPP_VER.", programmer: "PROGRAMATOR",
+    project: "Projekt", date: "Datum", time: "Cas", tool: "NASTROJ", type: "TYP", holder: "UPINAC",
+    operation: "OPERACE", toolList: "SEZNAM NASTROJU", machiningTime: "STROJNI CAS", cutting: "hrubovaci",
+    finishing: "dokoncovaci", plunge: "posuv v Z", stockWarning: "Polotovar mimo +-2000: BLK FORM nelze spravne nastavit",
+    flood: "Kapalina", mist: "Mlha"
+} : {
+    machine: "MACHINE", control: "CONTROL", post: "POST", version: "POST VERSION", programmer: "PROGRAMMER",
+    project: "PROJECT", date: "DATE", time: "TIME", tool: "TOOL", type: "TYPE", holder: "HOLDER",
+    operation: "OPERATION", toolList: "TOOL LIST", machiningTime: "MACHINING TIME", cutting: "CUTTING FEED",
+    finishing: "FINISHING FEED", plunge: "PLUNGE FEED", stockWarning: "Stock beyond +-2000: BLK FORM cannot be set",
+    flood: "Flood coolant", mist: "Mist coolant"
+};
+// The tool box names the type in the comment language; the tool list keeps the CAM's English
+// tool type in both, as the thesis' program does (5.3 KULOVA FREZA, 5.10 BALL NOSE MILL).
+var toolTypes = {flat: "FLAT END MILL", ball: "BALL NOSE MILL", bull: "BULL NOSE MILL", drill: "DRILL",
+                 chamfer: "CHAMFER MILL"};
+var toolTypesCzech = {flat: "VALCOVA FREZA", ball: "KULOVA FREZA", bull: "TORICKA FREZA", drill: "VRTAK",
+                      chamfer: "SRAZECI FREZA"};
+
+var limit = inch ? 9999.99999 : 99999.9999;  // the largest coordinate the iTNC reads
+var xyzFormat = createFormat({decimals: inch ? 4 : 3, trim: true, forceSign: true, scale: inch ? 1 / 25.4 : 1,
+                              max: limit});
+var angleFormat = createFormat({decimals: 4, trim: true, forceSign: true});
+var feedFormat = inch ? createFormat({decimals: 1, trim: true, scale: 1 / 25.4}) : createFormat({decimals: 0});
+var numberFormat = createFormat({decimals: 4, trim: true});  // Q values, tool data, the travel report
+var qFormat = createFormat({decimals: 4, trim: true, scale: inch ? 1 / 25.4 : 1});
+var qCoordinateFormat = createFormat({decimals: 4, trim: true, forceSign: true, scale: inch ? 1 / 25.4 : 1});
+
+var xOutput = createVariable({prefix: "X"}, xyzFormat);
+var yOutput = createVariable({prefix: "Y"}, xyzFormat);
+var zOutput = createVariable({prefix: "Z"}, xyzFormat);
+var ccX = createVariable({prefix: "X", force: true}, xyzFormat);
+var ccY = createVariable({prefix: "Y", force: true}, xyzFormat);
+var ccZ = createVariable({prefix: "Z", force: true}, xyzFormat);
+var radiusOutput = createVariable({prefix: "R", force: true}, xyzFormat);
+var ipaOutput = createVariable({prefix: "IPA", force: true}, angleFormat);
+var izOutput = createVariable({prefix: "IZ", force: true}, xyzFormat);
+var feedOutput = createVariable({prefix: "F"}, feedFormat);
+var compOutput = createModal({prefix: ""});
+var directionOutput = createModal({prefix: "DR", force: true});
+var compTexts = {texts: {40: "R0", 41: "RL", 42: "RR"}};
+var spindleStart = createPending();  // M3/M4 ride on the first move after TOOL CALL (seed-000 5.4)
+var coolantBlock = createPending();  // then the coolant in a block of its own
+var toolCallBlock = createPending(); // TOOL CALL waiting for its speed, written before a move at the latest
+
+function direction() {
+    return directionOutput.bind("motion", {texts: {2: "-", 3: "+"}});
+}
+function arcBlocks(centre, end) {
+    if (getProperty("arcOutput") == "CR")
+        return [["CR"].concat(end, [radiusOutput.bind("radius"), direction(), feedOutput.bind("feed")])];
+    return [["CC"].concat(centre), ["C"].concat(end, [direction(), feedOutput.bind("feed")])];
+}
+var always = {force: true};  // both end coordinates in every C block, as the iTNC writes them
+
+post.blocks = {
+    rapid: ["L", xOutput.bind("x"), yOutput.bind("y"), zOutput.bind("z"), compOutput.bind("comp", {force: true,
+            texts: compTexts.texts}), "FMAX", spindleStart],
+    linear: ["L", xOutput.bind("x"), yOutput.bind("y"), zOutput.bind("z"), compOutput.bind("comp", compTexts),
+             feedOutput.bind("feed"), spindleStart],
+    circular: {
+        XY: arcBlocks([ccX.bind("cx"), ccY.bind("cy")], [xOutput.bind("x", always), yOutput.bind("y", always)]),
+        ZX: arcBlocks([ccX.bind("cx"), ccZ.bind("cz")], [xOutput.bind("x", always), zOutput.bind("z", always)]),
+        YZ: arcBlocks([ccY.bind("cy"), ccZ.bind("cz")], [yOutput.bind("y", always), zOutput.bind("z", always)]),
+        helix: {
+            XY: [["CC", ccX.bind("cx"), ccY.bind("cy")],
+                 ["CP", ipaOutput.bind("angle"), izOutput.bind("axial"), direction(), feedOutput.bind("feed")]]
+        }
+    },
+    before: [toolCallBlock],
+    after: [coolantBlock]
+};
+
+var currentTool = null;    // the tool in the spindle (TOOL CALL written or waiting)
+var sectionFeeds = null;   // the operation's feeds, for the Q60x parameters
+var feedsDefined = false;  // the Q60x of this operation are written
+
+function comment(text) {
+    writeComment(String(text).replace(/[\r\n]+/g, " "));
+}
+
+function pad(number, digits) {
+    var text = String(number);
+    while (text.length < digits)
+        text = "0" + text;
+    return text;
+}
+
+// R in the tool data: the corner radius of a mill (half the diameter for a ball), the point
+// angle of a drill or chamfer mill (seed-000 5.10: "DRILL D3 R118").
+function toolR(tool) {
+    if (tool.kind == "drill" || tool.kind == "chamfer")
+        return tool.pointAngle;
+    return tool.kind == "ball" && !(tool.cornerRadius > 0) ? tool.diameter / 2 : tool.cornerRadius;
+}
+
+function n(value) {
+    return numberFormat.format(value);
+}
+
+function programFileName() {
+    var name = outputName || programName;
+    // The iTNC's file names (User's Manual 3.3): up to 25 characters of A-Z a-z 0-9 . _ -
+    if (!/^[A-Za-z0-9._-]{1,25}$/.test(name))
+        error("program name '" + name + "' is not accepted by the iTNC 530: use up to 25 characters of " +
+              "A-Z a-z 0-9 . _ - (the program name is the output file's name)");
+    return name;
+}
+var pgmName = null;
+
+function header(program) {
+    var now = new Date();
+    var date = now.getUTCDate() + "." + (now.getUTCMonth() + 1) + "." + now.getUTCFullYear();
+    var time = pad(now.getUTCHours(), 2) + ":" + pad(now.getUTCMinutes(), 2) + ":" + pad(now.getUTCSeconds(), 2);
+    comment(words.machine + ": " + (machine ? machine.name : "-"));
+    comment(words.control + ": HEIDENHAIN iTNC530 Dialog");
+    comment(words.post + ": " + post.id);
+    comment(words.version + ": " + version);
+    comment(words.programmer + ": " + user.toUpperCase());
+    comment(words.project + ": " + (job.name || programName));
+    comment(words.date + ": " + date);
+    comment(words.time + ": " + time);
+    comment("");
+}
+
+// BLK FORM from the job's stock, else from the program's extents (the control draws it only).
+function blankForm(program) {
+    var box = job.stock || program.extents;
+    if (!box || box.min.x === null || box.min.y === null || box.min.z === null)
+        return;
+    var values = [box.min.x, box.min.y, box.min.z, box.max.x, box.max.y, box.max.z];
+    var outside = values.some(function (v) { return Math.abs(v) > 2000; });
+    if (outside) {  // seed-000 §3.2: a model error puts the stock out of reach; zeros then
+        warning("the stock reaches beyond +-2000 mm: BLK FORM written with zeros");
+        comment(words.stockWarning);
+        values = [0, 0, 0, 0, 0, 0];
+    }
+    writeBlock("BLK FORM 0.1 Z", "X" + xyzFormat.format(values[0]), "Y" + xyzFormat.format(values[1]),
+               "Z" + xyzFormat.format(values[2]));
+    writeBlock("BLK FORM 0.2", "X" + xyzFormat.format(values[3]), "Y" + xyzFormat.format(values[4]),
+               "Z" + xyzFormat.format(values[5]));
+}
+
+function duration(seconds) {
+    var total = Math.round(seconds);
+    return pad(Math.floor(total / 3600), 3) + ":" + pad(Math.floor(total / 60) % 60, 2) + ":" + pad(total % 60, 2);
+}
+
+function toolList(tools) {
+    comment("=====");
+    comment("..... " + words.toolList + " .....");
+    for (var i = 0; i < tools.length; ++i) {
+        var t = tools[i];
+        comment("T" + pad(Math.trunc(t.number), 2) + " - " + (toolTypes[t.kind] || t.kind.toUpperCase()) + " D" +
+                n(t.diameter) + " R" + n(toolR(t)));
+    }
+    comment("=====");
+}
+
+var travel = null;  // the program's extents, for the report at the end
+
+function onOpen(program) {
+    pgmName = programFileName();
+    setBlockNumbering(0, 1, true, "");
+    writeBlock("BEGIN PGM", pgmName, unitWord);
+    header(program);
+    blankForm(program);
+    if (getProperty("rotaryModes"))
+        writeBlock("M135 M126");
+    if (getProperty("machiningTime"))
+        comment(" " + words.machiningTime + ": " + duration(program.machiningSeconds));
+    if (program.tools.length > 0)
+        toolList(program.tools);
+    travel = program.extents;
+}
+
+function onWorkOffset(index) {
+    // The program runs in the datum the operator set (the preset of seed-000 §5.3: MRZP).
+    if (index != 1)
+        error("work offset " + index + ": this post writes programs for the active preset only (work offset 1); " +
+              "select another preset on the control");
+}
+
+function defineFeedParameters() {
+    feedsDefined = true;
+    if (!getProperty("parametricFeeds") || !sectionFeeds)
+        return;
+    var parameters = {};
+    var list = [["cutting", 601, words.cutting], ["finishing", 602, words.finishing], ["plunge", 603, words.plunge]];
+    for (var i = 0; i < list.length; ++i) {
+        var feed = sectionFeeds[list[i][0]];
+        if (!(feed > 0))
+            continue;
+        writeBlock("Q" + list[i][1] + "=" + feedFormat.format(feed), ";" + list[i][2]);
+        parameters[list[i][0]] = {text: "+Q" + list[i][1], feed: feed};
+    }
+    feedOutput.setFeedParameters(parameters);
+}
+
+function onSection(section) {
+    comment("=====");
+    comment(" " + words.operation + ": " + section.operationName);
+    comment("=====");
+    sectionFeeds = section.feeds;
+    feedsDefined = false;
+    feedOutput.setFeedParameters({});
+    // With the tool already in the spindle the parameters come now, else after its TOOL CALL.
+    if (currentTool && section.toolNumber == currentTool.number)
+        defineFeedParameters();
+}
+
+function onSectionEnd() {
+    flushPending();
+}
+
+// A TOOL CALL, spindle start or coolant still waiting for a move, written before anything else
+// that must come after them (a dwell for the spindle to run up, a stop, the operation's end).
+function flushPending() {
+    flushToolCall();
+    var start = spindleStart.take();
+    if (start)
+        writeBlock("L", start);
+    var coolant = coolantBlock.take();
+    if (coolant)
+        writeBlock(coolant);
+}
+
+function onToolChange(tool) {
+    flushToolCall();
+    spindleStart.take();  // the spindle of the tool going out: it never started
+    coolantBlock.take();
+    if (getProperty("stopBeforeToolCall"))
+        writeBlock("L", "M0");
+    currentTool = tool;
+    comment(" *****");
+    comment(" " + words.tool + ": T" + Math.trunc(tool.number) + " D" + n(tool.diameter) + " R" + n(toolR(tool)) +
+            " L" + n(tool.length) + " DB" + n(tool.fluteLength) + " Z" + Math.trunc(tool.flutes));
+    comment(" " + words.type + ": " + ((czech ? toolTypesCzech : toolTypes)[tool.kind] || tool.kind.toUpperCase()));
+    if (tool.holder)
+        comment(" " + words.holder + ": " + tool.holder);
+    comment(" *****");
+    // TOOL CALL carries the speed: it waits for the spindle record (or the next move).
+    toolCallBlock.set("TOOL CALL " + Math.trunc(tool.number) + " Z");
+    forceMotion();
+}
+
+// The TOOL CALL still waiting for its speed, written now; then this operation's feed parameters.
+function flushToolCall(speed) {
+    if (!toolCallBlock.isSet())
+        return false;
+    writeBlock(toolCallBlock.take(), speed || "");
+    if (!feedsDefined)
+        defineFeedParameters();
+    return true;
+}
+
+function onSpindle(rpm, clockwise) {
+    if (rpm <= 0) {
+        flushToolCall();
+        spindleStart.take();
+        writeBlock("L", "M5");
+        return;
+    }
+    var speed = "S" + Math.trunc(rpm);
+    if (!flushToolCall(speed))
+        writeBlock("TOOL CALL", "Z", speed);  // a new speed for the tool in the spindle
+    spindleStart.set(clockwise ? "M3" : "M4");
+}
+
+function onCoolant(mode) {
+    var block = null;
+    if (mode == "off")
+        block = "L M9";
+    else if (mode == "flood")
+        block = "L M8 ;" + words.flood;
+    else if (mode == "mist" && machine && machine.coolants.indexOf("mist") >= 0)
+        block = "L M7 ;" + words.mist;
+    else if (!machine || machine.coolants.indexOf(mode) >= 0)
+        warning("coolant " + mode + " is not written by this post: not output");
+    if (!block)
+        return;
+    // Coolant comes on after the move that starts the spindle (seed-000 5.4), else at once.
+    if (mode != "off" && spindleStart.isSet())
+        coolantBlock.set(block);
+    else
+        writeBlock(block);
+}
+
+function onFeedMode(mode) {
+    if (mode != "perMinute")
+        error("feed mode " + mode + " is not written by this post (the iTNC 530 post writes F in " +
+              (inch ? "inch" : "mm") + "/min)");
+}
+
+function onCutterComp(side) {
+    // R0/RL/RR go out with the next L block (post.blocks binds "comp").
+}
+
+function onComment(text) {
+    comment(text);
+}
+
+function onDwell(seconds) {
+    flushPending();
+    writeBlock("CYCL DEF 9.0", czech ? "CASOVA PRODLEVA" : "DWELL TIME");
+    writeBlock("CYCL DEF 9.1", "DWELL " + numberFormat.format(seconds));
+}
+
+function onStop(optional) {
+    flushPending();
+    writeBlock("L", optional ? "M1" : "M0");
+}
+
+function onPassThrough(text) {
+    flushPending();
+    writeBlock(text);
+}
+
+// The first move after a tool call writes all its axes and its feed again.
+function forceMotion() {
+    xOutput.reset();
+    yOutput.reset();
+    zOutput.reset();
+    feedOutput.reset();
+    compOutput.reset();
+}
+
+// --- Cycles: 200/201/203/205/207 with the Q lists in the control's order ----------------------
+
+var qTexts = czech ? {
+    200: "BEZPEČNÁ VZDÁLENOST", 201: "HLOUBKA", 206: "POSUV PŘÍSUVU DO HLOUBKY", 202: "HLOUBKA PŘÍSUVU",
+    210: "ČASOVÁ PRODLEVA NAHOŘE", 203: "SOUŘADNICE POVRCHU", 204: "2. BEZPEČNÁ VZDÁLENOST",
+    211: "ČASOVÁ PRODLEVA DOLE", 208: "POSUV PŘI VYJÍŽDĚNÍ", 212: "HODNOTA ÚBĚRU", 213: "POČET ZLOMENÍ TŘÍSKY",
+    205: "MIN. HLOUBKA PŘÍSUVU", 256: "ODSKOK PŘI LOMU TŘÍSKY", 258: "HORNÍ PŘEDSTAVNÁ VZDÁLENOST",
+    259: "DOLNÍ PŘEDSTAVNÁ VZDÁLENOST", 257: "HLOUBKA VRTÁNÍ DO LOMU TŘÍSKY", 239: "STOUPÁNÍ ZÁVITU"
+} : {
+    200: "SET-UP CLEARANCE", 201: "DEPTH", 206: "FEED RATE FOR PLNGNG", 202: "PLUNGING DEPTH",
+    210: "DWELL TIME AT TOP", 203: "SURFACE COORDINATE", 204: "2ND SET-UP CLEARANCE", 211: "DWELL TIME AT DEPTH",
+    208: "RETRACTION FEED RATE", 212: "DECREMENT", 213: "NR OF BREAKS", 205: "MIN. PLUNGING DEPTH",
+    256: "DIST. FOR CHIP BRKNG", 258: "UPPER ADV. STOP DIST.", 259: "LOWER ADV. STOP DIST.",
+    257: "DEPTH FOR CHIP BRKNG", 239: "PITCH"
+};
+var cycleNames = czech ? {200: "VRTÁNÍ", 201: "VYSTRUŽOVÁNÍ", 203: "UNIVERZÁLNÍ VRTÁNÍ",
+                          205: "UNIVERZÁLNÍ HLUBOKÉ VRTÁNÍ", 207: "ŘEZÁNÍ ZÁVITU GS NOVÉ"}
+                       : {200: "DRILLING", 201: "REAMING", 203: "UNIVERSAL DRILLING", 205: "UNIVERSAL PECKING",
+                          207: "RIGID TAPPING NEW"};
+
+// The cycle number and its Q values, in the control's order, for a CL cycle.
+function cycleDefinition(cycle) {
+    var setup = cycle.retractZ - cycle.topZ;
+    if (setup < 0)
+        error("the R plane (" + cycle.retractZ + ") is below the hole top (" + cycle.topZ + "): no set-up clearance");
+    var depth = cycle.bottomZ - cycle.topZ;  // negative: the iTNC drills in the direction of its sign
+    if (!(depth < 0))
+        error("the hole bottom (" + cycle.bottomZ + ") is not below its top (" + cycle.topZ + ")");
+    // After the hole the tool rises to Q200, then to Q204 above the surface if that is higher.
+    var second = cycle.returnToClearance ? Math.max(cycle.clearanceZ - cycle.topZ, 0) : 0;
+    var q = function (number, value) { return [number, qFormat.format(value)]; };
+    var surface = [203, qCoordinateFormat.format(cycle.topZ)];
+    switch (cycle.kind) {
+    case "drill":
+    case "drillDwell":
+        return [200, [q(200, setup), q(201, depth), [206, feedFormat.format(cycle.feed)], q(202, -depth),
+                      [210, "0"], surface, q(204, second), [211, n(cycle.dwell)]]];
+    case "peck":
+        return [205, [q(200, setup), q(201, depth), [206, feedFormat.format(cycle.feed)], q(202, cycle.peck), surface,
+                      q(204, second), [212, "0"], [205, "0"], q(258, cycle.peckClearance),
+                      q(259, cycle.peckClearance), [257, "0"], q(256, cycle.peckClearance), [211, n(cycle.dwell)]]];
+    case "chipBreak":
+        // Breaks the chip after every infeed and leaves the hole only at the bottom, as G73 does.
+        var breaks = Math.min(99, Math.max(1, Math.ceil(-depth / cycle.peck - 1e-9) - 1));
+        return [203, [q(200, setup), q(201, depth), [206, feedFormat.format(cycle.feed)], q(202, cycle.peck),
+                      [210, "0"], surface, q(204, second), [212, "0"], [213, String(breaks)], [205, "0"],
+                      [211, n(cycle.dwell)], [208, "0"], q(256, cycle.peckClearance)]];
+    case "bore":
+        // Feed in and feed out, as the kernel's expansion of a bore cycle does.
+        return [201, [q(200, setup), q(201, depth), [206, feedFormat.format(cycle.feed)], [211, n(cycle.dwell)],
+                      [208, feedFormat.format(cycle.feed)], surface, q(204, second)]];
+    case "tap":
+        if (!(cycle.spindleRpm > 0))
+            error("tapping needs the spindle running: no spindle speed before the cycle");
+        var pitch = cycle.feed / cycle.spindleRpm * (cycle.spindleClockwise ? 1 : -1);  // + right-hand thread
+        return [207, [q(200, setup), q(201, depth), [239, qCoordinateFormat.format(pitch)], surface, q(204, second)]];
+    }
+    error("cycle " + cycle.kind + " is not supported by this post");
+}
+
+var holeCount = 0;
+
+function onCycle(cycle) {
+    flushToolCall();
+    var definition = cycleDefinition(cycle);
+    writeBlock("CYCL DEF " + definition[0], cycleNames[definition[0]]);
+    for (var i = 0; i < definition[1].length; ++i) {
+        var entry = definition[1][i];
+        writeln("  Q" + entry[0] + "=" + entry[1] + " ;" + qTexts[entry[0]]);
+    }
+    // The cycle moves only along Z from where it is called: over the holes at the return plane.
+    var z = getCurrentAxis("z");
+    if (z === null || z < cycle.returnZ) {
+        zOutput.reset();
+        writeBlock("L", zOutput.format(cycle.returnZ), compOutput.format("R0"), "FMAX");
+    }
+    holeCount = 0;
+}
+
+function onCyclePoint(x, y, z) {
+    var block = ["L", xOutput.format(x), yOutput.format(y)];
+    if (!block[1] && !block[2]) {  // the same position again: a block still needs a word to call the cycle
+        xOutput.reset();
+        block[1] = xOutput.format(x);
+    }
+    block.push(compOutput.format("R0"), "FMAX", spindleStart.take());
+    if (holeCount++ == 0) {
+        writeBlock.apply(null, block);
+        writeBlock("CYCL CALL");
+    } else {
+        block.push("M99");
+        writeBlock.apply(null, block);
+    }
+    var pendingCoolant = coolantBlock.take();
+    if (pendingCoolant)
+        writeBlock(pendingCoolant);
+}
+
+function onCycleEnd(cycle) {
+    zOutput.reset();  // the cycle left Z at its return plane
+}
+
+// --- The end: retract, M30, the min/max travel report, END PGM ---------------------------------
+
+function travelReport() {
+    if (!travel)
+        return;
+    var axes = ["x", "y", "z"];  // B and C join here with the five-axis output
+    for (var i = 0; i < axes.length; ++i) {
+        var a = axes[i];
+        if (travel.min[a] === null)
+            continue;
+        var scale = inch ? 1 / 25.4 : 1;
+        comment(" " + a.toUpperCase() + "min = " + n(travel.min[a] * scale));
+        comment(" " + a.toUpperCase() + "max = " + n(travel.max[a] * scale));
+    }
+}
+
+function onClose() {
+    flushToolCall();
+    // The final retract: straight up to the highest Z of the program, unless the tool is there
+    // (or nobody knows where it is: then no Z is written).
+    var z = getCurrentAxis("z");
+    if (travel && travel.max.z !== null && z !== null && z < travel.max.z) {
+        var retract = zOutput.format(travel.max.z);
+        if (retract)
+            writeBlock("L", retract, compOutput.format("R0"), "FMAX");
+    }
+    writeBlock("L", "M30");
+    travelReport();
+    writeBlock("END PGM", pgmName, unitWord);
+}

@@ -7,6 +7,8 @@
 #include "document/JobPipeline.h"
 #include "post/PostProcessor.h"
 
+#include "base/Vec.h"
+
 #include <map>
 #include <optional>
 #include <ostream>
@@ -38,6 +40,8 @@ struct PostOptions {
     std::map<std::string, std::string> properties;  // --property name=value (repeatable)
     std::vector<std::string> postPaths;             // --post-path DIR (repeatable)
     std::string output;                             // -o / --output
+    std::string project;                            // --project NAME: the job name a post's header shows
+    std::optional<base::Box3> stock;                // --stock x0,y0,z0,x1,y1,z1 (a CL file has none)
 };
 
 // Consumes args[i] (and its value) when it is one of the PostOptions; false when it is not one.

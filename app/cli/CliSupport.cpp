@@ -5,6 +5,8 @@
 #include "document/JobFile.h"
 #include "post/PostInfo.h"
 
+#include <cmath>
+#include <cstdlib>
 #include <iostream>
 
 namespace camwb::cli {
@@ -16,6 +18,7 @@ void printUsage(std::ostream& out)
            "       camwb-cli posts [<post id>] [--post-path DIR]...\n"
            "       camwb-cli post <input> [--post <id>] [--machine <id>] [--property name=value]...\n"
            "                      [-o <output file>] [--input-format job|apt|freecad-dump|trace] [--post-path DIR]...\n"
+           "                      [--project NAME] [--stock x0,y0,z0,x1,y1,z1]\n"
            "       camwb-cli cl <job.camwb> [-o <output file>]\n"
            "       camwb-cli nc trace <NC file> [--dialect sinumerik|heidenhain|iso] [--machine <id>]\n"
            "                      [--format text|jsonl] [-o <output file>] [--max-blocks N] [--tool-table FILE]\n"
@@ -29,6 +32,8 @@ void printUsage(std::ostream& out)
            "       --input-format names it.\n"
            "       A job brings its own post, machine and properties; the options override them.\n"
            "       Without -o the NC goes beside the input, named after it with the post's extension.\n"
+           "       --project and --stock give what a CL file lacks (the job name and stock box some posts\n"
+           "       write in their header, e.g. Klartext's BLK FORM); for a job they override its own.\n"
            "cl:    recomputes the job's operations and writes their CL records as a trace (one line per\n"
            "       record, the format in docs/architecture.md) instead of NC; each operation's counts of\n"
            "       lines, arcs, helices and cycles and its warnings go to stderr.\n"
@@ -71,11 +76,38 @@ int printDiagnostics(const std::vector<base::Diagnostic>& diagnostics)
     return static_cast<int>(base::countOf(diagnostics, base::Severity::Warning));
 }
 
+namespace {
+
+// "x0,y0,z0,x1,y1,z1": the stock box's corners, each minimum below its maximum.
+std::optional<base::Box3> parseStock(const std::string& text, std::string& error)
+{
+    double v[6];
+    std::size_t at = 0;
+    for (int i = 0; i < 6; ++i) {
+        const std::size_t comma = i < 5 ? text.find(',', at) : text.size();
+        const std::string field = comma == std::string::npos ? std::string() : text.substr(at, comma - at);
+        char* end = nullptr;
+        v[i] = std::strtod(field.c_str(), &end);
+        if (field.empty() || *end != '\0' || !std::isfinite(v[i])) {
+            error = "--stock needs six numbers x0,y0,z0,x1,y1,z1, got '" + text + "'";
+            return std::nullopt;
+        }
+        at = comma + 1;
+    }
+    if (!(v[0] < v[3] && v[1] < v[4] && v[2] < v[5])) {
+        error = "--stock " + text + ": each minimum must be below its maximum";
+        return std::nullopt;
+    }
+    return base::Box3{{v[0], v[1], v[2]}, {v[3], v[4], v[5]}, false};
+}
+
+}  // namespace
+
 bool takePostOption(const std::vector<std::string>& args, std::size_t& i, PostOptions& options, std::string& error)
 {
     const std::string& arg = args[i];
     const bool known = arg == "--post" || arg == "--machine" || arg == "--property" || arg == "--post-path" ||
-                       arg == "-o" || arg == "--output";
+                       arg == "-o" || arg == "--output" || arg == "--project" || arg == "--stock";
     if (!known)
         return false;
     if (i + 1 >= args.size()) {
@@ -95,6 +127,10 @@ bool takePostOption(const std::vector<std::string>& args, std::size_t& i, PostOp
             error = assignment.error().message;
         else
             options.properties[assignment->first] = assignment->second;
+    } else if (arg == "--project") {
+        options.project = value;
+    } else if (arg == "--stock") {
+        options.stock = parseStock(value, error);
     } else {
         options.output = value;
     }

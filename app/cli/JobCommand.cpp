@@ -21,7 +21,8 @@ int runCommand(const std::vector<std::string>& args)
     }
     if (jobPath.empty() || options.output.empty())
         return usageError("run needs a job file and -o <output file>");
-    if (!options.postId.empty() || !options.machineId.empty() || !options.properties.empty())
+    if (!options.postId.empty() || !options.machineId.empty() || !options.properties.empty() ||
+        !options.project.empty() || options.stock)
         return usageError("run posts with the job's own settings; use `camwb-cli post` to override them");
     std::vector<std::string> postArgs = args;
     postArgs.insert(postArgs.end(), {"--input-format", "job"});  // a job whatever its extension

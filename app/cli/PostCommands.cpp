@@ -228,6 +228,10 @@ int postCommand(const std::vector<std::string>& args)
     post::RunOptions runOptions;
     runOptions.context = post::PostContext::fromEnvironment(fs::path(input).stem().string());
     runOptions.context.outputName = fs::path(output).stem().string();
+    if (!options.project.empty())
+        jobFacts.name = options.project;
+    if (options.stock)
+        jobFacts.stock = options.stock;
     runOptions.job = jobFacts;
     runOptions.properties = properties;
     runOptions.machine = std::move(machine).value();

@@ -17,7 +17,7 @@ var post = {
     vendor: "MAS / HEIDENHAIN",
     extension: "h",
     machine: "mas-mcvl1000",
-    machines: ["mas-mcvl1000"],
+    machines: ["mas-mcvl1000", "mas-mcvl1000-nikken-guaranteed"],
     capabilities: {
         arcPlanes: ["XY", "ZX", "YZ"],
         helicalArcs: ["XY"],  // CP IPA IZ about a pole in the working plane
@@ -88,6 +88,7 @@ var xyzFormat = createFormat({decimals: inch ? 4 : 3, trim: true, forceSign: tru
                               max: limit});
 var angleFormat = createFormat({decimals: 4, trim: true, forceSign: true});
 var feedFormat = inch ? createFormat({decimals: 1, trim: true, scale: 1 / 25.4}) : createFormat({decimals: 0});
+var feedPerRevolutionFormat = createFormat({decimals: inch ? 4 : 3, trim: true, scale: inch ? 1 / 25.4 : 1});
 var numberFormat = createFormat({decimals: 4, trim: true});  // Q values, tool data, the travel report
 var qFormat = createFormat({decimals: 4, trim: true, scale: inch ? 1 / 25.4 : 1});
 var qCoordinateFormat = createFormat({decimals: 4, trim: true, forceSign: true, scale: inch ? 1 / 25.4 : 1});
@@ -240,11 +241,17 @@ function onOpen(program) {
     travel = program.extents;
 }
 
+var presetChanged = false;  // a work offset other than the first was activated
+
+// Work offset n is preset n of the preset table (CYCL DEF 247). The first work offset of a
+// program is the preset the operator set (seed-000 §5.3: at MRZP) and writes nothing.
 function onWorkOffset(index) {
-    // The program runs in the datum the operator set (the preset of seed-000 §5.3: MRZP).
-    if (index != 1)
-        error("work offset " + index + ": this post writes programs for the active preset only (work offset 1); " +
-              "select another preset on the control");
+    if (index == 1 && !presetChanged)
+        return;
+    presetChanged = true;
+    flushPending();
+    writeBlock("CYCL DEF 247", czech ? "NASTAVENI VZTAZNEHO BODU" : "DATUM SETTING");
+    writeln("  Q339=+" + Math.trunc(index) + " ;" + (czech ? "CISLO VZTAZNEHO BODU" : "DATUM NUMBER"));
 }
 
 function defineFeedParameters() {
@@ -352,10 +359,14 @@ function onCoolant(mode) {
         writeBlock(block);
 }
 
+// M136: F in mm (inch) per spindle revolution until M137; the iTNC has no inverse-time feed.
 function onFeedMode(mode) {
-    if (mode != "perMinute")
-        error("feed mode " + mode + " is not written by this post (the iTNC 530 post writes F in " +
-              (inch ? "inch" : "mm") + "/min)");
+    if (mode == "inverseTime")
+        error("inverse-time feed is not available on the iTNC 530 (F is per minute, or per revolution with M136)");
+    flushPending();
+    var perRevolution = mode == "perRevolution";
+    feedOutput.setFormat(perRevolution ? feedPerRevolutionFormat : feedFormat);
+    writeBlock("L", perRevolution ? "M136" : "M137");
 }
 
 function onCutterComp(side) {
@@ -461,9 +472,11 @@ function onCycle(cycle) {
         var entry = definition[1][i];
         writeln("  Q" + entry[0] + "=" + entry[1] + " ;" + qTexts[entry[0]]);
     }
-    // The cycle moves only along Z from where it is called: over the holes at the return plane.
+    // The cycle goes down to Q200 at FMAX itself, from where it is called: the holes are reached
+    // at the return plane, or right after a tool call at the height the change left (seed-000
+    // 5.8: L X Y FMAX M3, CYCL CALL), as the kernel moves X/Y before Z after a change.
     var z = getCurrentAxis("z");
-    if (z === null || z < cycle.returnZ) {
+    if (z !== null && z < cycle.returnZ) {
         zOutput.reset();
         writeBlock("L", zOutput.format(cycle.returnZ), compOutput.format("R0"), "FMAX");
     }

@@ -22,7 +22,7 @@ struct ProgramInfoDialog::Result {
     toolpath::Toolpath program;
     nc::InterpretResult interpretation;
     std::vector<bool> recordsInError;  // left out of the figures
-    nc::ProgramStats stats;
+    toolpath::ProgramStats stats;
 };
 
 namespace {
@@ -42,7 +42,7 @@ QString duration(double seconds)
 
 QString mm(double value) { return QString::number(value, 'f', 3); }
 
-QString extentsRows(const QString& what, const nc::Extents& e)
+QString extentsRows(const QString& what, const toolpath::Extents& e)
 {
     if (e.empty)
         return QStringLiteral("<tr><td>%1</td><td colspan=6>—</td></tr>").arg(what);
@@ -66,7 +66,7 @@ ProgramInfoDialog::ProgramInfoDialog(QWidget* parent) : QDialog(parent)
     m_rapid->setDecimals(0);
     m_rapid->setSingleStep(1000);
     m_rapid->setSuffix(tr(" mm/min"));
-    m_rapid->setValue(5000);
+    m_rapid->setValue(toolpath::kDefaultRapidMmPerMin);
     m_rapid->setToolTip(tr("Rapid rate the time estimate assumes (the machine's, when it says)"));
     form->addRow(tr("Rapid rate:"), m_rapid);
     layout->addLayout(form);
@@ -81,10 +81,10 @@ ProgramInfoDialog::ProgramInfoDialog(QWidget* parent) : QDialog(parent)
     // Statistics are cheap once the program is interpreted: recompute them for another rate.
     connect(m_rapid, &QDoubleSpinBox::valueChanged, this, [this] {
         if (m_result && !isBusy()) {
-            nc::StatsOptions options;
+            toolpath::StatsOptions options;
             options.rapidMmPerMin = m_rapid->value();
             options.recordsInError = &m_result->recordsInError;
-            m_result->stats = nc::programStats(m_result->program, options);
+            m_result->stats = toolpath::programStats(m_result->program, options);
             render();
         }
     });
@@ -115,10 +115,10 @@ void ProgramInfoDialog::analyze(const QString& text, nc::Dialect dialect, const 
         result->interpretation = nc::interpret(source, options, recorder);
         result->program = recorder.take();
         result->recordsInError = nc::recordsInError(result->program, result->interpretation);
-        nc::StatsOptions statsOptions;
+        toolpath::StatsOptions statsOptions;
         statsOptions.rapidMmPerMin = rapid;
         statsOptions.recordsInError = &result->recordsInError;
-        result->stats = nc::programStats(result->program, statsOptions);
+        result->stats = toolpath::programStats(result->program, statsOptions);
     });
     QThread* thread = m_thread;
     connect(thread, &QThread::finished, this, [this, thread, result] {
@@ -134,7 +134,7 @@ bool ProgramInfoDialog::isBusy() const { return m_thread != nullptr; }
 
 bool ProgramInfoDialog::hasStats() const { return m_result != nullptr; }
 
-const nc::ProgramStats& ProgramInfoDialog::stats() const { return m_result->stats; }
+const toolpath::ProgramStats& ProgramInfoDialog::stats() const { return m_result->stats; }
 
 int ProgramInfoDialog::errorCount() const
 {
@@ -157,7 +157,7 @@ void ProgramInfoDialog::finish(std::shared_ptr<Result> result)
 
 void ProgramInfoDialog::render()
 {
-    const nc::ProgramStats& s = m_result->stats;
+    const toolpath::ProgramStats& s = m_result->stats;
     const nc::InterpretResult& ir = m_result->interpretation;
     const int errors = errorCount();
     const int others = static_cast<int>(ir.diagnostics.size()) - errors;
@@ -199,7 +199,7 @@ void ProgramInfoDialog::render()
     html += QStringLiteral("<table cellspacing=0 cellpadding=3 border=1><tr><th>%1</th><th>%2</th><th>%3</th>"
                            "<th>%4</th><th>%5</th></tr>")
                 .arg(tr("Tool"), tr("Feed length (mm)"), tr("Rapid length (mm)"), tr("Time"), tr("Z min (cutting)"));
-    for (const nc::ToolStats& t : s.tools) {
+    for (const toolpath::ToolStats& t : s.tools) {
         html += QStringLiteral("<tr><td>%1</td><td align=right>%2</td><td align=right>%3</td><td align=right>%4</td>"
                                "<td align=right>%5</td></tr>")
                     .arg(t.toolNumber == 0 ? tr("(none)") : QStringLiteral("T%1").arg(t.toolNumber),

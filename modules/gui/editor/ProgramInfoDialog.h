@@ -4,7 +4,7 @@
 #pragma once
 
 #include "nc/Dialect.h"
-#include "nc/tools/ProgramStats.h"
+#include "toolpath/ProgramStats.h"
 
 #include <QDialog>
 
@@ -29,7 +29,7 @@ public:
     void analyze(const QString& text, nc::Dialect dialect, const QString& fileName = {});
     bool isBusy() const;
     bool hasStats() const;
-    const nc::ProgramStats& stats() const;  // valid when hasStats()
+    const toolpath::ProgramStats& stats() const;  // valid when hasStats()
     int errorCount() const;
     QString reportText() const;  // what the dialog shows, as plain text
 

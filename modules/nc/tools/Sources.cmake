@@ -1,3 +1,2 @@
 # Sources of the NC text tools, relative to this folder.
-set(NC_PART_SOURCES BlockNumbers.h BlockNumbers.cpp LineDiff.h LineDiff.cpp ProgramStats.h ProgramStats.cpp ErrorRecords.h
-    ErrorRecords.cpp)
+set(NC_PART_SOURCES BlockNumbers.h BlockNumbers.cpp LineDiff.h LineDiff.cpp ErrorRecords.h ErrorRecords.cpp)

@@ -40,6 +40,7 @@ using camwb::gui::NcStyle;
 using camwb::gui::ProgramInfoDialog;
 using camwb::gui::RenumberDialog;
 namespace nc = camwb::nc;
+namespace toolpath = camwb::toolpath;
 
 namespace {
 
@@ -509,7 +510,7 @@ private slots:
         auto* dialog = m_window->findChild<ProgramInfoDialog*>();
         QVERIFY(dialog != nullptr);
         QTRY_VERIFY_WITH_TIMEOUT(dialog->hasStats() && !dialog->isBusy(), 20000);
-        const nc::ProgramStats& s = dialog->stats();
+        const toolpath::ProgramStats& s = dialog->stats();
         QCOMPARE(dialog->errorCount(), 0);
         QVERIFY(std::abs(s.totals.feedLengthMm - 111.0) < 1e-6);
         QVERIFY(std::abs(s.totals.cuttingExtents.max.x - 100.0) < 1e-6);
@@ -533,7 +534,7 @@ private slots:
                        nc::Dialect::Iso, QStringLiteral("bad-arc.ngc"));
         QTRY_VERIFY_WITH_TIMEOUT(dialog.hasStats() && !dialog.isBusy(), 20000);
         QCOMPARE(dialog.errorCount(), 1);
-        const nc::ProgramStats& s = dialog.stats();
+        const toolpath::ProgramStats& s = dialog.stats();
         QCOMPARE(s.movesLeftOut, 1);
         QVERIFY2(std::abs(s.totals.cuttingExtents.max.y) < 1e-9 && std::abs(s.totals.cuttingExtents.min.y) < 1e-9,
                  qPrintable(QStringLiteral("Y extents %1 .. %2")

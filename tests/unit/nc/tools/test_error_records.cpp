@@ -1,7 +1,7 @@
 // Records of blocks with an error: flagged by file and line (main program and called programs),
 // and left out of the program statistics (an arc whose radii disagree adds no bulge, no length).
 #include "nc/tools/ErrorRecords.h"
-#include "nc/tools/ProgramStats.h"
+#include "toolpath/ProgramStats.h"
 #include "toolpath/ToolpathRecorder.h"
 
 #include <gtest/gtest.h>
@@ -74,12 +74,12 @@ TEST(ErrorRecords, CalledProgramsByFileIndex)
 TEST(ErrorRecords, StatisticsLeaveThemOut)
 {
     const Traced t = traceIso(kBadArc);
-    const ProgramStats all = programStats(t.program);
+    const tp::ProgramStats all = tp::programStats(t.program);
     EXPECT_GT(all.totals.cuttingExtents.max.y - all.totals.cuttingExtents.min.y, 100);  // the wrong circle
     const std::vector<bool> flags = recordsInError(t.program, t.result);
-    StatsOptions options;
+    tp::StatsOptions options;
     options.recordsInError = &flags;
-    const ProgramStats s = programStats(t.program, options);
+    const tp::ProgramStats s = tp::programStats(t.program, options);
     EXPECT_EQ(s.movesLeftOut, 1);
     EXPECT_EQ(s.arcs, 0);
     EXPECT_EQ(s.totals.cuttingExtents.min, (Vec3{0, 0, 0}));

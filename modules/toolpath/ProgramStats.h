@@ -1,7 +1,8 @@
-// Statistics of an interpreted NC program (the editor's Program info): extents per axis for
-// rapids, cutting moves and both; rapid and feed path lengths; a machining time estimate from
-// the programmed feeds (per minute, per revolution with the spindle speed, inverse time), rapids
-// at one rate, dwells, canned cycles expanded hole by hole; and the same per tool.
+// Statistics of a toolpath, CL or interpreted NC (the editor's Program Information, the machining
+// time a post writes): extents per axis for rapids, cutting moves and both; rapid and feed path
+// lengths; a machining time estimate from the programmed feeds (per minute, per revolution with
+// the spindle speed, inverse time), rapids at one rate, dwells, canned cycles expanded hole by
+// hole; and the same per tool. The one time estimate: what shows it must not compute its own.
 #pragma once
 
 #include "base/Vec.h"
@@ -10,11 +11,7 @@
 #include <optional>
 #include <vector>
 
-namespace camwb::kinematics {
-struct Machine;
-}
-
-namespace camwb::nc {
+namespace camwb::toolpath {
 
 // Axis-aligned box of what was visited; empty until a point is added.
 using Extents = base::Box3;
@@ -49,9 +46,12 @@ struct ProgramStats {
     double rapidMmPerMin = 0;  // the rate the estimate used
 };
 
+// The rapid rate an estimate assumes when the machine gives none.
+inline constexpr double kDefaultRapidMmPerMin = 5000;
+
 struct StatsOptions {
-    double rapidMmPerMin = 5000;                   // used when the machine gives none
-    const kinematics::Machine* machine = nullptr;  // its rapidMmPerMin wins when > 0
+    // The machine's (kinematics::estimateRapidMmPerMin); <= 0: kDefaultRapidMmPerMin.
+    double rapidMmPerMin = kDefaultRapidMmPerMin;
     // Where the tool is before the first move; unknown: the first move only sets the position.
     std::optional<base::Vec3> startPosition;
     // Per record, true for a block with an error (nc::recordsInError): its motion is not what the
@@ -59,6 +59,6 @@ struct StatsOptions {
     const std::vector<bool>* recordsInError = nullptr;
 };
 
-ProgramStats programStats(const toolpath::Toolpath& program, const StatsOptions& options = {});
+ProgramStats programStats(const Toolpath& program, const StatsOptions& options = {});
 
-}  // namespace camwb::nc
+}  // namespace camwb::toolpath

@@ -1,15 +1,13 @@
 // Program statistics: extents, lengths and the time estimate for each feed mode, arcs with their
-// bulges, cycles expanded, dwells, per-tool totals and the machine's rapid rate.
-#include "nc/tools/ProgramStats.h"
-
-#include "kinematics/Machine.h"
+// bulges, cycles expanded, dwells, per-tool totals and the rapid rate the caller gives.
+#include "toolpath/ProgramStats.h"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <numbers>
 
-using namespace camwb::nc;
+using namespace camwb::toolpath;
 namespace tp = camwb::toolpath;
 using camwb::base::Vec3;
 
@@ -40,11 +38,11 @@ TEST(ProgramStats, LinesAndRapids)
     EXPECT_EQ(s.feedMoves, 2);
     EXPECT_EQ(s.toolChanges, 1);
 
-    camwb::kinematics::Machine machine;
-    machine.rapidMmPerMin = 30000;
     StatsOptions o;
-    o.machine = &machine;
+    o.rapidMmPerMin = 30000;  // a machine's (kinematics::estimateRapidMmPerMin)
     EXPECT_NEAR(programStats(p, o).totals.rapidSeconds, 90.0 / 30000 * 60, 1e-9);
+    o.rapidMmPerMin = 0;  // none given: the default
+    EXPECT_EQ(programStats(p, o).rapidMmPerMin, kDefaultRapidMmPerMin);
 }
 
 TEST(ProgramStats, ArcBulgesAndHelixLength)

@@ -1,6 +1,5 @@
-#include "nc/tools/ProgramStats.h"
+#include "toolpath/ProgramStats.h"
 
-#include "kinematics/Machine.h"
 #include "toolpath/ArcGeometry.h"
 #include "toolpath/CycleExpansion.h"
 #include "toolpath/KnownPosition.h"
@@ -8,10 +7,7 @@
 #include <algorithm>
 #include <type_traits>
 
-namespace camwb::nc {
-
-using base::Vec3;
-namespace tp = toolpath;
+namespace camwb::toolpath {
 
 namespace {
 
@@ -25,56 +21,55 @@ public:
     {
     }
 
-    void record(const tp::Record& r)
+    void record(const Record& r)
     {
         std::visit(
             [this](const auto& rec) {
                 using T = std::decay_t<decltype(rec)>;
-                if constexpr (std::is_same_v<T, tp::Rapid>) {
+                if constexpr (std::is_same_v<T, Rapid>) {
                     if (const std::optional<Vec3> end = straightEnd(rec.to, rec.axes))
                         rapid(*end);
                     else
                         ++m_stats.rapids;  // from or to a position not known yet: no length
-                } else if constexpr (std::is_same_v<T, tp::Linear>) {
+                } else if constexpr (std::is_same_v<T, Linear>) {
                     if (const std::optional<Vec3> end = straightEnd(rec.to, rec.axes))
                         linear(*end, rec.feedMmPerMin);
                     else
                         addFeed(0, rec.feedMmPerMin);
-                } else if constexpr (std::is_same_v<T, tp::Arc>)
+                } else if constexpr (std::is_same_v<T, Arc>)
                     arc(rec);
-                else if constexpr (std::is_same_v<T, tp::ToolAxisMove>) {
+                else if constexpr (std::is_same_v<T, ToolAxisMove>) {
                     if (rec.feedMmPerMin > 0)
                         linear(rec.tip, rec.feedMmPerMin);
                     else
                         rapid(rec.tip);
-                } else if constexpr (std::is_same_v<T, tp::Cycle>)
+                } else if constexpr (std::is_same_v<T, Cycle>)
                     cycle(rec);
-                else if constexpr (std::is_same_v<T, tp::Dwell>)
+                else if constexpr (std::is_same_v<T, Dwell>)
                     addDwell(rec.seconds);
-                else if constexpr (std::is_same_v<T, tp::Spindle>)
+                else if constexpr (std::is_same_v<T, Spindle>)
                     m_spindle = {rec.rpm, rec.clockwise};
-                else if constexpr (std::is_same_v<T, tp::FeedModeChange>)
+                else if constexpr (std::is_same_v<T, FeedModeChange>)
                     m_feedMode = rec.mode;
-                else if constexpr (std::is_same_v<T, tp::ToolChange>)
+                else if constexpr (std::is_same_v<T, ToolChange>)
                     toolChange(rec.tool.number);
             },
             r);
     }
 
     // A motion of a block with an error: the next move starts where it ends, nothing else counts.
-    void leaveOut(const tp::Record& r)
+    void leaveOut(const Record& r)
     {
         std::visit(
             [this, &r](const auto& rec) {
                 using T = std::decay_t<decltype(rec)>;
-                if constexpr (std::is_same_v<T, tp::Rapid> || std::is_same_v<T, tp::Linear> ||
-                              std::is_same_v<T, tp::Arc>)
+                if constexpr (std::is_same_v<T, Rapid> || std::is_same_v<T, Linear> || std::is_same_v<T, Arc>)
                     m_position = rec.to;
-                else if constexpr (std::is_same_v<T, tp::ToolAxisMove>)
+                else if constexpr (std::is_same_v<T, ToolAxisMove>)
                     m_position = rec.tip;
-                else if constexpr (std::is_same_v<T, tp::Cycle>) {
+                else if constexpr (std::is_same_v<T, Cycle>) {
                     if (!rec.holes.empty())
-                        m_position = Vec3{rec.holes.back().x, rec.holes.back().y, tp::cycleReturnZ(rec)};
+                        m_position = Vec3{rec.holes.back().x, rec.holes.back().y, cycleReturnZ(rec)};
                 } else {
                     record(r);  // not a motion: tools, spindle and feed modes still apply
                     return;
@@ -100,7 +95,7 @@ private:
     }
 
     // The end of a straight move that gives `axes`; nullopt while an axis it leaves out is unknown.
-    std::optional<Vec3> straightEnd(const Vec3& to, tp::AxisMask axes)
+    std::optional<Vec3> straightEnd(const Vec3& to, AxisMask axes)
     {
         if (m_position)
             m_partial.set(*m_position);
@@ -144,13 +139,13 @@ private:
         if (feed <= 0)
             return std::nullopt;
         switch (m_feedMode) {
-        case tp::FeedMode::PerMinute:
+        case FeedMode::PerMinute:
             return length / feed * 60.0;
-        case tp::FeedMode::PerRevolution:
+        case FeedMode::PerRevolution:
             if (m_spindle.rpm <= 0)
                 return std::nullopt;
             return length / (feed * m_spindle.rpm) * 60.0;
-        case tp::FeedMode::InverseTime:
+        case FeedMode::InverseTime:
             return 60.0 / feed;
         }
         return std::nullopt;
@@ -180,7 +175,7 @@ private:
         m_position = to;
     }
 
-    void arc(const tp::Arc& a)
+    void arc(const Arc& a)
     {
         ++m_stats.arcs;
         if (!m_position) {
@@ -191,23 +186,23 @@ private:
         }
         const Vec3 start = *m_position;
         Vec3 min = start, max = start;
-        tp::extendByArc(min, max, start, a);
+        extendByArc(min, max, start, a);
         addPoint(min, true);
         addPoint(max, true);
-        const double length = tp::arcLength(start, a);
+        const double length = arcLength(start, a);
         addFeed(length, a.feedMmPerMin);
         m_position = a.to;
     }
 
-    void cycle(const tp::Cycle& c)
+    void cycle(const Cycle& c)
     {
         for (const Vec3& hole : c.holes) {
             ++m_stats.cycleHoles;
-            const Vec3 from = m_position.value_or(Vec3{hole.x, hole.y, tp::cycleReturnZ(c)});
+            const Vec3 from = m_position.value_or(Vec3{hole.x, hole.y, cycleReturnZ(c)});
             if (!m_position)
                 m_position = from;
-            const tp::SpindleState spindle{m_spindle.rpm, m_spindle.clockwise};
-            for (const tp::Record& r : tp::expandCycleHole(c, hole, from, spindle))
+            const SpindleState spindle{m_spindle.rpm, m_spindle.clockwise};
+            for (const Record& r : expandCycleHole(c, hole, from, spindle))
                 record(r);
         }
     }
@@ -221,21 +216,19 @@ private:
     ProgramStats& m_stats;
     double m_rapidMmPerMin;
     std::optional<Vec3> m_position;
-    tp::KnownPosition m_partial;  // the axes given so far, while m_position is unknown
-    tp::SpindleState m_spindle;
-    tp::FeedMode m_feedMode = tp::FeedMode::PerMinute;
+    KnownPosition m_partial;  // the axes given so far, while m_position is unknown
+    SpindleState m_spindle;
+    FeedMode m_feedMode = FeedMode::PerMinute;
     int m_toolNumber = 0;
     int m_tool = -1;  // index into m_stats.tools, -1: look up on first use
 };
 
 }  // namespace
 
-ProgramStats programStats(const toolpath::Toolpath& program, const StatsOptions& options)
+ProgramStats programStats(const Toolpath& program, const StatsOptions& options)
 {
     ProgramStats stats;
-    stats.rapidMmPerMin = options.rapidMmPerMin > 0 ? options.rapidMmPerMin : 5000.0;
-    if (options.machine != nullptr && options.machine->rapidMmPerMin > 0)
-        stats.rapidMmPerMin = options.machine->rapidMmPerMin;
+    stats.rapidMmPerMin = options.rapidMmPerMin > 0 ? options.rapidMmPerMin : kDefaultRapidMmPerMin;
     StatsWalker walker(stats, stats.rapidMmPerMin, options.startPosition);
     const std::vector<bool>* inError = options.recordsInError;
     for (std::size_t i = 0; i < program.size(); ++i) {
@@ -247,4 +240,4 @@ ProgramStats programStats(const toolpath::Toolpath& program, const StatsOptions&
     return stats;
 }
 
-}  // namespace camwb::nc
+}  // namespace camwb::toolpath

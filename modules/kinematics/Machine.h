@@ -1,6 +1,7 @@
 // A machine definition (resources/machines/<id>.json): what posts and the simulator need to know
-// about a machine tool: its control, axes with travel, spindle range, tool changer, feed limits
-// and coolants. Jobs and `camwb-cli post --machine` pick one by id.
+// about a machine tool: its control, axes with travel (rotary axes possibly endless), spindle
+// range, tool changer (or a manual change), feed limits and coolants. Jobs and `camwb-cli post
+// --machine` pick one by id.
 #pragma once
 
 #include "base/Result.h"
@@ -13,8 +14,10 @@ namespace camwb::kinematics {
 struct Axis {
     std::string name;  // "X", "Y", "Z", "A", "B", "C"
     bool rotary = false;
-    double min = 0;  // mm or degrees
-    double max = 0;
+    double min = 0;        // mm or degrees; an endless axis: -infinity ...
+    double max = 0;        // ... and +infinity, so that a range check that ignores `endless` passes
+    bool endless = false;  // a rotary axis that turns without limit (a rotary table's C)
+    double maxRpm = 0;     // a rotary axis' top speed, 0: unknown
 };
 
 struct Machine {
@@ -25,8 +28,10 @@ struct Machine {
     double spindleMinRpm = 0;
     double spindleMaxRpm = 0;           // 0: not limited
     int toolStations = 0;               // 0: not limited
+    bool manualToolChange = false;      // the operator changes tools: no changer, no M6
     double maxToolDiameterMm = 0;       // 0: not limited
     double maxToolLengthMm = 0;         // 0: not limited
+    double minCuttingFeedMmPerMin = 0;  // 0: not limited
     double maxCuttingFeedMmPerMin = 0;  // 0: not limited
     double rapidMmPerMin = 0;           // 0: unknown
     std::vector<std::string> coolants;  // "flood", "mist", "throughTool": what the machine has
@@ -36,7 +41,14 @@ struct Machine {
     bool hasCoolant(const std::string& mode) const;
 };
 
+// Version 1 grows by optional fields (feed.minCutting, toolChanger.manual, an axis' endless and
+// maxRpm): every file written before them still loads and means what it meant. A version 1
+// reader that predates them rejects an endless axis (it has no min) and ignores the rest.
 inline constexpr int kMachineFormatVersion = 1;
+
+// The rapid rate a machining time estimate assumes for `machine` (toolpath::StatsOptions): its
+// own when the file gives one, else toolpath::kDefaultRapidMmPerMin. nullptr: no machine.
+double estimateRapidMmPerMin(const Machine* machine);
 
 base::Result<Machine> parseMachine(const std::string& json, const std::string& pathForMessages);
 base::Result<Machine> loadMachine(const std::string& path);

@@ -2,8 +2,10 @@
 #include "base/DataDirs.h"
 #include "base/JsonRead.h"
 #include "kinematics/Machine.h"
+#include "toolpath/ProgramStats.h"
 
 #include <algorithm>
+#include <limits>
 
 namespace camwb::kinematics {
 
@@ -24,11 +26,48 @@ Axis readAxis(const Json& a, const std::string& where)
     if (type != "linear" && type != "rotary")
         throw JsonFieldError{where + ".type: expected \"linear\" or \"rotary\""};
     axis.rotary = type == "rotary";
-    axis.min = number(a, "min", where);
-    axis.max = number(a, "max", where);
-    if (axis.min > axis.max)
-        throw JsonFieldError{where + ": min is above max"};
+    axis.endless = optionalMember(a, "endless", where) && boolean(a, "endless", where);
+    if (axis.endless) {
+        if (!axis.rotary)
+            throw JsonFieldError{where + ": a linear axis cannot be endless"};
+        // Both would be a contradiction: which one does the file mean?
+        if (optionalMember(a, "min", where) || optionalMember(a, "max", where))
+            throw JsonFieldError{where + ": an endless axis has no min or max (drop them, or \"endless\")"};
+        axis.min = -std::numeric_limits<double>::infinity();
+        axis.max = std::numeric_limits<double>::infinity();
+    } else {
+        axis.min = number(a, "min", where);
+        axis.max = number(a, "max", where);
+        if (axis.min > axis.max)
+            throw JsonFieldError{where + ": min is above max"};
+    }
+    if (optionalMember(a, "maxRpm", where)) {
+        if (!axis.rotary)
+            throw JsonFieldError{where + ".maxRpm: only a rotary axis has one (a linear axis' speed is feed.rapid)"};
+        axis.maxRpm = number(a, "maxRpm", where);
+        if (axis.maxRpm <= 0)
+            throw JsonFieldError{where + ".maxRpm: expected a speed above 0"};
+    }
     return axis;
+}
+
+void readToolChanger(const Json& changer, const std::string& at, Machine& m)
+{
+    m.manualToolChange = optionalMember(changer, "manual", at) && boolean(changer, "manual", at);
+    m.toolStations = optionalMember(changer, "stations", at) ? integer(changer, "stations", at) : 0;
+    if (m.manualToolChange && m.toolStations > 0)
+        throw JsonFieldError{at + ": a manual tool change has no stations"};
+    m.maxToolDiameterMm = optionalNumber(changer, "maxToolDiameter", at, 0);
+    m.maxToolLengthMm = optionalNumber(changer, "maxToolLength", at, 0);
+}
+
+void readFeed(const Json& feed, const std::string& at, Machine& m)
+{
+    m.minCuttingFeedMmPerMin = optionalNumber(feed, "minCutting", at, 0);
+    m.maxCuttingFeedMmPerMin = optionalNumber(feed, "maxCutting", at, 0);
+    m.rapidMmPerMin = optionalNumber(feed, "rapid", at, 0);
+    if (m.maxCuttingFeedMmPerMin > 0 && m.minCuttingFeedMmPerMin > m.maxCuttingFeedMmPerMin)
+        throw JsonFieldError{at + ": minCutting is above maxCutting"};
 }
 
 Machine readMachine(const Json& root)
@@ -57,16 +96,10 @@ Machine readMachine(const Json& root)
         m.spindleMinRpm = optionalNumber(*spindle, "minRpm", where + ".spindle", 0);
         m.spindleMaxRpm = optionalNumber(*spindle, "maxRpm", where + ".spindle", 0);
     }
-    if (const Json* changer = optionalMember(root, "toolChanger", where)) {
-        const std::string at = where + ".toolChanger";
-        m.toolStations = optionalMember(*changer, "stations", at) ? integer(*changer, "stations", at) : 0;
-        m.maxToolDiameterMm = optionalNumber(*changer, "maxToolDiameter", at, 0);
-        m.maxToolLengthMm = optionalNumber(*changer, "maxToolLength", at, 0);
-    }
-    if (const Json* feed = optionalMember(root, "feed", where)) {
-        m.maxCuttingFeedMmPerMin = optionalNumber(*feed, "maxCutting", where + ".feed", 0);
-        m.rapidMmPerMin = optionalNumber(*feed, "rapid", where + ".feed", 0);
-    }
+    if (const Json* changer = optionalMember(root, "toolChanger", where))
+        readToolChanger(*changer, where + ".toolChanger", m);
+    if (const Json* feed = optionalMember(root, "feed", where))
+        readFeed(*feed, where + ".feed", m);
     if (const Json* coolants = optionalMember(root, "coolants", where)) {
         for (const Json& c : *coolants) {
             if (!c.is_string())
@@ -93,6 +126,11 @@ const Axis* Machine::axis(const std::string& axisName) const
 bool Machine::hasCoolant(const std::string& mode) const
 {
     return std::find(coolants.begin(), coolants.end(), mode) != coolants.end();
+}
+
+double estimateRapidMmPerMin(const Machine* machine)
+{
+    return machine != nullptr && machine->rapidMmPerMin > 0 ? machine->rapidMmPerMin : toolpath::kDefaultRapidMmPerMin;
 }
 
 base::Result<Machine> parseMachine(const std::string& json, const std::string& path)

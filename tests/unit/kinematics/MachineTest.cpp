@@ -1,8 +1,10 @@
-// Machine definitions: the shipped EMCO file, lookup by id and clear errors for bad files.
+// Machine definitions: the shipped EMCO and MAS files, lookup by id and clear errors for bad files.
 #include "kinematics/Machine.h"
+#include "toolpath/ProgramStats.h"
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 
@@ -14,6 +16,14 @@ namespace {
 
 const char* kMinimal = R"({"format": "camwb-machine", "version": 1, "id": "m", "name": "M", "control": "linuxcnc",
 "axes": [{"name": "X", "type": "linear", "min": -10, "max": 10}]})";
+
+// kMinimal with `axis` (a JSON object) as a second axis.
+std::string withAxis(const std::string& axis)
+{
+    std::string json = kMinimal;
+    json.insert(json.find("}]}") + 1, ", " + axis);
+    return json;
+}
 
 std::string messageOf(const std::string& json)
 {
@@ -45,12 +55,105 @@ TEST(Machine, EmcoConceptMill105FromTheThesis)
     EXPECT_FALSE(emco->hasCoolant("mist"));
 }
 
+TEST(Machine, MasMcvl1000FromTheThesis)
+{
+    auto mas = kinematics::findMachine("mas-mcvl1000", kinematics::defaultMachineDirs());
+    ASSERT_TRUE(mas.ok()) << mas.error().toString();
+    EXPECT_EQ(mas->control, "heidenhain-itnc530");
+    const double travel[] = {1016, 610, 660};  // seed-000 §2.1
+    for (int i = 0; i < 3; ++i) {
+        ASSERT_NE(mas->axis(std::string(1, static_cast<char>('X' + i))), nullptr);
+        EXPECT_FALSE(mas->axes[i].rotary);
+        EXPECT_EQ(mas->axes[i].max - mas->axes[i].min, travel[i]) << mas->axes[i].name;
+    }
+    EXPECT_EQ(mas->spindleMinRpm, 20);
+    EXPECT_EQ(mas->spindleMaxRpm, 7500);
+    EXPECT_EQ(mas->minCuttingFeedMmPerMin, 2);
+    EXPECT_EQ(mas->maxCuttingFeedMmPerMin, 12000);
+    EXPECT_EQ(mas->rapidMmPerMin, 22000);  // 22 m/min: the thesis' "mm/min" is a typo
+    EXPECT_TRUE(mas->manualToolChange);
+    EXPECT_EQ(mas->toolStations, 0);
+    EXPECT_TRUE(mas->hasCoolant("flood"));
+    const kinematics::Axis* b = mas->axis("B");
+    ASSERT_NE(b, nullptr);
+    EXPECT_TRUE(b->rotary);
+    EXPECT_FALSE(b->endless);
+    EXPECT_EQ(b->min, -120);  // Sec. 3.2
+    EXPECT_EQ(b->max, 30);
+    EXPECT_DOUBLE_EQ(b->maxRpm, 11.1);
+    const kinematics::Axis* c = mas->axis("C");
+    ASSERT_NE(c, nullptr);
+    EXPECT_TRUE(c->rotary && c->endless);
+    EXPECT_TRUE(std::isinf(c->min) && c->min < 0 && std::isinf(c->max) && c->max > 0);
+    EXPECT_DOUBLE_EQ(c->maxRpm, 22.2);
+}
+
+// The datasheet's guaranteed B stroke is the same machine with B -105..+15: nothing else may
+// drift apart between the two files.
+TEST(Machine, MasMcvl1000NikkenGuaranteedDiffersOnlyInB)
+{
+    auto thesis = kinematics::findMachine("mas-mcvl1000", kinematics::defaultMachineDirs());
+    auto nikken = kinematics::findMachine("mas-mcvl1000-nikken-guaranteed", kinematics::defaultMachineDirs());
+    ASSERT_TRUE(thesis.ok() && nikken.ok());
+    const kinematics::Axis* b = nikken->axis("B");
+    ASSERT_NE(b, nullptr);
+    EXPECT_EQ(b->min, -105);
+    EXPECT_EQ(b->max, 15);
+    kinematics::Machine same = nikken.value();
+    same.id = thesis->id;
+    same.name = thesis->name;
+    same.filePath = thesis->filePath;
+    ASSERT_EQ(same.axes.size(), thesis->axes.size());
+    for (std::size_t i = 0; i < same.axes.size(); ++i) {
+        const kinematics::Axis& x = same.axes[i];
+        const kinematics::Axis& y = thesis->axes[i];
+        EXPECT_TRUE(x.name == y.name && x.rotary == y.rotary && x.endless == y.endless && x.maxRpm == y.maxRpm &&
+                    (x.name == "B" || (x.min == y.min && x.max == y.max)))
+            << x.name;
+    }
+    EXPECT_TRUE(same.control == thesis->control && same.spindleMinRpm == thesis->spindleMinRpm &&
+                same.spindleMaxRpm == thesis->spindleMaxRpm && same.manualToolChange == thesis->manualToolChange &&
+                same.toolStations == thesis->toolStations && same.maxToolDiameterMm == thesis->maxToolDiameterMm &&
+                same.maxToolLengthMm == thesis->maxToolLengthMm &&
+                same.minCuttingFeedMmPerMin == thesis->minCuttingFeedMmPerMin &&
+                same.maxCuttingFeedMmPerMin == thesis->maxCuttingFeedMmPerMin &&
+                same.rapidMmPerMin == thesis->rapidMmPerMin && same.coolants == thesis->coolants);
+}
+
+TEST(Machine, EndlessRotaryAxis)
+{
+    auto m = kinematics::parseMachine(withAxis(R"({"name": "C", "type": "rotary", "endless": true})"), "m.json");
+    ASSERT_TRUE(m.ok()) << m.error().toString();
+    const kinematics::Axis* c = m->axis("C");
+    ASSERT_NE(c, nullptr);
+    EXPECT_TRUE(c->endless);
+    EXPECT_LT(c->min, -1e300);  // any angle is inside
+    EXPECT_GT(c->max, 1e300);
+    EXPECT_FALSE(m->axis("X")->endless);
+    auto limited = kinematics::parseMachine(
+        withAxis(R"({"name": "B", "type": "rotary", "endless": false, "min": -5, "max": 5})"), "m.json");
+    ASSERT_TRUE(limited.ok()) << limited.error().toString();
+    EXPECT_FALSE(limited->axis("B")->endless);
+    EXPECT_EQ(limited->axis("B")->max, 5);
+}
+
+TEST(Machine, RapidRateOfTheTimeEstimate)
+{
+    EXPECT_EQ(kinematics::estimateRapidMmPerMin(nullptr), toolpath::kDefaultRapidMmPerMin);
+    kinematics::Machine m;
+    EXPECT_EQ(kinematics::estimateRapidMmPerMin(&m), toolpath::kDefaultRapidMmPerMin);  // the file gives none
+    m.rapidMmPerMin = 22000;
+    EXPECT_EQ(kinematics::estimateRapidMmPerMin(&m), 22000);
+}
+
 TEST(Machine, OptionalSectionsDefaultToUnlimited)
 {
     auto m = kinematics::parseMachine(kMinimal, "m.json");
     ASSERT_TRUE(m.ok()) << m.error().toString();
     EXPECT_EQ(m->spindleMaxRpm, 0);
     EXPECT_EQ(m->toolStations, 0);
+    EXPECT_FALSE(m->manualToolChange);
+    EXPECT_EQ(m->minCuttingFeedMmPerMin, 0);
     EXPECT_TRUE(m->coolants.empty());
     ASSERT_NE(m->axis("X"), nullptr);
     EXPECT_EQ(m->axis("Y"), nullptr);
@@ -75,6 +178,25 @@ TEST(Machine, BadFilesGiveClearErrors)
     std::string coolant = kMinimal;
     coolant.insert(coolant.size() - 1, ", \"coolants\": [\"air\"]");
     EXPECT_EQ(messageOf(coolant), "m.json: machine.coolants: unknown coolant \"air\" (flood, mist, throughTool)");
+
+    EXPECT_EQ(messageOf(withAxis(R"({"name": "C", "type": "rotary", "endless": true, "min": 0, "max": 360})")),
+              "m.json: machine.axes[1]: an endless axis has no min or max (drop them, or \"endless\")");
+    EXPECT_EQ(messageOf(withAxis(R"({"name": "C", "type": "rotary", "endless": true, "max": 360})")),
+              "m.json: machine.axes[1]: an endless axis has no min or max (drop them, or \"endless\")");
+    EXPECT_EQ(messageOf(withAxis(R"({"name": "W", "type": "linear", "endless": true})")),
+              "m.json: machine.axes[1]: a linear axis cannot be endless");
+    EXPECT_EQ(messageOf(withAxis(R"({"name": "C", "type": "rotary", "endless": "yes"})")),
+              "m.json: machine.axes[1].endless: expected true or false");
+    EXPECT_EQ(messageOf(withAxis(R"({"name": "W", "type": "linear", "min": 0, "max": 9, "maxRpm": 5})")),
+              "m.json: machine.axes[1].maxRpm: only a rotary axis has one (a linear axis' speed is feed.rapid)");
+    EXPECT_EQ(messageOf(withAxis(R"({"name": "B", "type": "rotary", "min": 0, "max": 9, "maxRpm": 0})")),
+              "m.json: machine.axes[1].maxRpm: expected a speed above 0");
+    std::string manual = kMinimal;
+    manual.insert(manual.size() - 1, ", \"toolChanger\": {\"manual\": true, \"stations\": 8}");
+    EXPECT_EQ(messageOf(manual), "m.json: machine.toolChanger: a manual tool change has no stations");
+    std::string feeds = kMinimal;
+    feeds.insert(feeds.size() - 1, ", \"feed\": {\"minCutting\": 50, \"maxCutting\": 20}");
+    EXPECT_EQ(messageOf(feeds), "m.json: machine.feed: minCutting is above maxCutting");
 }
 
 TEST(Machine, LookupByIdWhereTheFileNameIsTheId)

@@ -65,9 +65,15 @@ void LimitCheck::cutting(double feed)
 {
     if (m_noTool)
         flag("no tool", "a cutting move with no tool in the spindle (after T0)");
-    if (m_perMinute && m_machine.maxCuttingFeedMmPerMin > 0 && feed > m_machine.maxCuttingFeedMmPerMin)
+    if (!m_perMinute)  // per revolution or inverse time: the feed in mm/min is not known here
+        return;
+    if (m_machine.maxCuttingFeedMmPerMin > 0 && feed > m_machine.maxCuttingFeedMmPerMin)
         flag("feed", "feed " + num(feed) + " mm/min is above the " + m_name + "'s maximum cutting feed of " +
                          num(m_machine.maxCuttingFeedMmPerMin) + " mm/min");
+    // A feed of 0 is no feed at all, which the interpreters and the post kernel report themselves.
+    if (feed > 0 && feed < m_machine.minCuttingFeedMmPerMin)
+        flag("feed min", "feed " + num(feed) + " mm/min is below the " + m_name + "'s minimum cutting feed of " +
+                             num(m_machine.minCuttingFeedMmPerMin) + " mm/min");
 }
 
 void LimitCheck::rapid(const Rapid& r)
@@ -227,7 +233,7 @@ std::vector<LimitCheck::Finding> LimitCheck::spanFindings() const
     std::vector<Finding> out;
     for (int axis = 0; axis < 3; ++axis) {
         const Axis* travel = m_machine.axis(kAxisNames[axis]);
-        if (!m_reached.has(axis) || !travel || travel->rotary || travel->max <= travel->min)
+        if (!m_reached.has(axis) || !travel || travel->rotary || travel->endless || travel->max <= travel->min)
             continue;
         const Reach& low = m_low[axis];
         const Reach& high = m_high[axis];

@@ -2,8 +2,10 @@
 // records), `nc trace --machine` and the NC inspector (interpreted NC). Travel: the program's span
 // on each linear axis (arcs by their exact extremes, cycles down to the hole bottom; the work
 // offset is not known, so only a span longer than the travel is certain to fail); spindle speed
-// range; cutting feed maximum; tool stations (T0 empties the spindle: cutting after it is flagged);
-// tool diameter and length; coolants. A filter: every record passes on unchanged.
+// range; cutting feed range (per minute); tool stations (T0 empties the spindle: cutting after it
+// is flagged); tool diameter and length; coolants. A filter: every record passes on unchanged.
+// Rotary axes are not checked yet: no record gives a rotary position (the five-axis machine model
+// will), and an endless axis has no travel to check.
 #pragma once
 
 #include "base/Diagnostic.h"

@@ -6,6 +6,8 @@
 
 #include <gtest/gtest.h>
 
+#include <limits>
+
 namespace camwb::kinematics {
 namespace {
 
@@ -135,6 +137,90 @@ TEST(LimitCheck, ProgramWithinLimitsIsQuiet)
     check.linear(Linear{{0, 0, -20}, 3000});  // mm/rev: not compared with the mm/min limit
     EXPECT_TRUE(check.ncDiagnostics({"p.mpf"}).empty());
     EXPECT_TRUE(check.findings().empty());
+}
+
+// The minimum cutting feed is checked as the maximum is: per minute only, once at the first
+// record with the count. A feed of 0 is no feed (the interpreters report that), not a slow one.
+TEST(LimitCheck, FeedBelowTheMinimumIsFlaggedLikeTheMaximum)
+{
+    Machine machine = smallMill();
+    machine.minCuttingFeedMmPerMin = 2;
+    NullSink nowhere;
+    LimitCheck check(machine, nowhere);
+    auto line = [&](int n) { check.setSource(SourceRef{-1, -1, n, 0}); };
+    line(1), check.rapid(Rapid{{0, 10, 0}});
+    line(2), check.linear(Linear{{0, 20, 0}, 2});  // at the minimum: fine
+    line(3), check.linear(Linear{{0, 30, 0}, 1.5});
+    Arc arc;
+    arc.to = {0, 50, 0};
+    arc.center = {0, 40, 0};
+    arc.feedMmPerMin = 1;
+    line(4), check.arc(arc);
+    line(5), check.linear(Linear{{0, 60, 0}, 0});
+    line(6), check.feedMode(FeedModeChange{FeedMode::PerRevolution});
+    line(7), check.linear(Linear{{0, 70, 0}, 0.1});  // mm/rev: not compared with the mm/min limit
+    EXPECT_EQ(texts(check.ncDiagnostics({"p.h"})),
+              std::vector<std::string>{"p.h:3: warning: feed 1.5 mm/min is below the Mill's minimum cutting feed of 2 "
+                                       "mm/min (2 times in all)"});
+}
+
+Machine mcvl1000()
+{
+    auto machine = findMachine("mas-mcvl1000", defaultMachineDirs());
+    EXPECT_TRUE(machine.ok()) << machine.error().toString();
+    return machine.ok() ? machine.value() : Machine{};
+}
+
+// The MAS MCVL 1000 has rotary axes B (limited) and C (endless) besides X/Y/Z: they change
+// nothing in the checks of X, Y and Z, and a program within its limits is quiet.
+TEST(LimitCheck, RotaryAxesLeaveTheLinearChecksAsTheyWere)
+{
+    const Machine machine = mcvl1000();
+    ASSERT_EQ(machine.axes.size(), 5u);
+    NullSink nowhere;
+    LimitCheck quiet(machine, nowhere);
+    quiet.toolChange(ToolChange{Tool{1, "", "flat", 10, 0, 30, 80}});
+    quiet.coolant(Coolant{CoolantMode::Flood});
+    quiet.spindle(Spindle{7500, true});
+    quiet.rapid(Rapid{{0, 0, 100}});
+    quiet.linear(Linear{{1016, 610, -560}, 12000});
+    quiet.toolAxisMove(ToolAxisMove{{0, 0, 100}, {0, 0, 1}, 2});
+    EXPECT_EQ(texts(quiet.clDiagnostics()), std::vector<std::string>{});
+
+    LimitCheck check(machine, nowhere);
+    check.toolChange(ToolChange{Tool{99}});  // a manual change: no stations to check
+    check.spindle(Spindle{10, true});
+    check.rapid(Rapid{{0, 0, 0}});
+    check.linear(Linear{{1100, 0, 0}, 1.5});
+    check.linear(Linear{{1100, 700, 0}, 13000});
+    check.rapid(Rapid{{1100, 700, 700}});
+    EXPECT_EQ(
+        texts(check.clDiagnostics()),
+        (std::vector<std::string>{
+            "warning: spindle speed 10 rpm is below the MAS MCVL 1000's minimum of 20 rpm (CL record 1)",
+            "warning: feed 1.5 mm/min is below the MAS MCVL 1000's minimum cutting feed of 2 mm/min (CL record 3)",
+            "warning: feed 13000 mm/min is above the MAS MCVL 1000's maximum cutting feed of 12000 mm/min (CL record "
+            "4)",
+            "warning: the program spans 1100 mm in X (0 to 1100); the MAS MCVL 1000 travels 1016 mm (CL record 3)",
+            "warning: the program spans 700 mm in Y (0 to 700); the MAS MCVL 1000 travels 610 mm (CL record 4)",
+            "warning: the program spans 700 mm in Z (0 to 700); the MAS MCVL 1000 travels 660 mm (CL record 5)"}));
+}
+
+// Axes are found by name, whatever their order among the rotary ones; a rotary axis, endless or
+// limited, is no linear travel.
+TEST(LimitCheck, LinearAxesAreFoundAmongRotaryOnes)
+{
+    Machine machine = smallMill();
+    const double inf = std::numeric_limits<double>::infinity();
+    machine.axes = {{"C", true, -inf, inf, true}, {"Y", false, 0, 80}, {"B", true, -120, 30}, {"X", false, -50, 50}};
+    NullSink nowhere;
+    LimitCheck check(machine, nowhere);
+    check.rapid(Rapid{{-40, 0, -500}});
+    check.rapid(Rapid{{70, 100, 500}});  // Z has no axis here: not checked
+    EXPECT_EQ(texts(check.clDiagnostics()),
+              (std::vector<std::string>{
+                  "warning: the program spans 110 mm in X (-40 to 70); the Mill travels 100 mm (CL record 1)",
+                  "warning: the program spans 100 mm in Y (0 to 100); the Mill travels 80 mm (CL record 1)"}));
 }
 
 }  // namespace

@@ -50,7 +50,8 @@ base::Status prepare(ScriptRun& run, const PostInfo& info, const std::string& so
 std::vector<base::Diagnostic> playAndCollect(ScriptRun& run, const toolpath::Toolpath& toolpath,
                                              const RunOptions& options, base::Status& status)
 {
-    const ProgramSummary summary = summarizeProgram(toolpath);
+    const ProgramSummary summary =
+        summarizeProgram(toolpath, kinematics::estimateRapidMmPerMin(options.machine ? &*options.machine : nullptr));
     std::vector<base::Diagnostic> messages;
     if (options.machine) {
         toolpath::NullSink nowhere;

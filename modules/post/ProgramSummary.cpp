@@ -1,5 +1,7 @@
 #include "post/ProgramSummary.h"
 
+#include "toolpath/ProgramStats.h"
+
 #include "toolpath/ArcGeometry.h"
 #include "toolpath/CycleExpansion.h"
 #include "toolpath/KnownPosition.h"
@@ -35,7 +37,7 @@ struct AxisExtents {
 
 }  // namespace
 
-ProgramSummary summarizeProgram(const Toolpath& toolpath)
+ProgramSummary summarizeProgram(const Toolpath& toolpath, double rapidMmPerMin)
 {
     ProgramSummary summary;
     AxisExtents extents;
@@ -83,6 +85,9 @@ ProgramSummary summarizeProgram(const Toolpath& toolpath)
     summary.extentAxes = extents.seen;
     summary.min = extents.min;
     summary.max = extents.max;
+    toolpath::StatsOptions stats;
+    stats.rapidMmPerMin = rapidMmPerMin;
+    summary.machiningSeconds = toolpath::programStats(toolpath, stats).totals.totalSeconds();
     return summary;
 }
 

@@ -156,8 +156,11 @@ void ScriptRun::setMachine(const kinematics::Machine& machine)
         QJSValue axis = m_engine.newObject();
         axis.setProperty("name", qs(machine.axes[i].name));
         axis.setProperty("rotary", machine.axes[i].rotary);
-        axis.setProperty("min", machine.axes[i].min);
-        axis.setProperty("max", machine.axes[i].max);
+        axis.setProperty("endless", machine.axes[i].endless);
+        axis.setProperty("min",
+                         machine.axes[i].endless ? QJSValue(QJSValue::NullValue) : QJSValue(machine.axes[i].min));
+        axis.setProperty("max",
+                         machine.axes[i].endless ? QJSValue(QJSValue::NullValue) : QJSValue(machine.axes[i].max));
         axes.setProperty(static_cast<quint32>(i), axis);
     }
     m.setProperty("axes", axes);
@@ -166,6 +169,10 @@ void ScriptRun::setMachine(const kinematics::Machine& machine)
     m.setProperty("toolStations", machine.toolStations);
     m.setProperty("maxToolDiameter", machine.maxToolDiameterMm);
     m.setProperty("maxToolLength", machine.maxToolLengthMm);
+    m.setProperty("manualToolChange", machine.manualToolChange);
+    m.setProperty("minCuttingFeed", machine.minCuttingFeedMmPerMin);
+    m.setProperty("maxCuttingFeed", machine.maxCuttingFeedMmPerMin);
+    m.setProperty("rapid", machine.rapidMmPerMin);
     QJSValue coolants = m_engine.newArray(static_cast<uint>(machine.coolants.size()));
     for (std::size_t i = 0; i < machine.coolants.size(); ++i)
         coolants.setProperty(static_cast<quint32>(i), qs(machine.coolants[i]));

@@ -442,6 +442,7 @@ base::Status ScriptRun::play(const Toolpath& toolpath, const ProgramSummary& sum
     for (std::size_t i = 0; i < summary.tools.size(); ++i)
         tools.setProperty(static_cast<quint32>(i), sink.toolObject(summary.tools[i]));
     program.setProperty("tools", tools);
+    program.setProperty("machiningSeconds", summary.machiningSeconds);
     if (summary.hasMotion) {
         QJSValue extents = m_engine.newObject();
         QJSValue min = scriptPoint(m_engine, summary.min);

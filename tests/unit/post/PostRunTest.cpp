@@ -173,16 +173,18 @@ TEST(PostRegistry, UserFoldersOverrideBuiltInOnesAndTheListingSaysSo)
     std::ofstream(user / "notes.txt") << "not a post\n";
     const std::vector<base::DataDir> dirs{{user.string(), false}, {kPostsDir, true}, {kPostsDir, true}};
     const std::vector<PostEntry> posts = listPosts(dirs);
-    ASSERT_EQ(posts.size(), 3u);  // sorted by id; the built-in folder twice is still one folder
-    EXPECT_EQ(posts[0].id, "linuxcnc");
+    ASSERT_EQ(posts.size(), 4u);  // sorted by id; the built-in folder twice is still one folder
+    EXPECT_EQ(posts[0].id, "heidenhain-itnc530");
     EXPECT_TRUE(posts[0].builtIn);
-    EXPECT_TRUE(posts[0].shadows.empty());
-    EXPECT_EQ(posts[1].id, "mine");
-    EXPECT_FALSE(posts[1].builtIn);
-    EXPECT_EQ(posts[2].id, "sinumerik828d-emco");
-    EXPECT_EQ(posts[2].path, (user / "sinumerik828d-emco.js").string());
+    EXPECT_EQ(posts[1].id, "linuxcnc");
+    EXPECT_TRUE(posts[1].builtIn);
+    EXPECT_TRUE(posts[1].shadows.empty());
+    EXPECT_EQ(posts[2].id, "mine");
     EXPECT_FALSE(posts[2].builtIn);
-    EXPECT_EQ(posts[2].shadows, std::vector<std::string>{kEmcoPost});
+    EXPECT_EQ(posts[3].id, "sinumerik828d-emco");
+    EXPECT_EQ(posts[3].path, (user / "sinumerik828d-emco.js").string());
+    EXPECT_FALSE(posts[3].builtIn);
+    EXPECT_EQ(posts[3].shadows, std::vector<std::string>{kEmcoPost});
     EXPECT_EQ(findPost("sinumerik828d-emco", dirs).value(), (user / "sinumerik828d-emco.js").string());
 }
 
@@ -299,8 +301,8 @@ function onCircular(cw, cx, cy, cz, x, y, z, feed, arc) { writeln("arc " + arc.r
     EXPECT_EQ(std::count(all.begin(), all.end(), "arc 10"), 1);
     EXPECT_NE(std::find(all.begin(), all.end(), "line 10.000 0.000 -2.000"), all.end());  // the helix ends exactly
     ASSERT_EQ(output->messages.size(), 2u);
-    EXPECT_EQ(output->messages[0].message,
-              "1 arc helical in the XY plane, which the post does not write: written as lines within 0.01 mm (first: CL record 3)");
+    EXPECT_EQ(output->messages[0].message, "1 arc helical in the XY plane, which the post does not write: written as "
+                                           "lines within 0.01 mm (first: CL record 3)");
     EXPECT_EQ(output->messages[1].message,
               "1 arc outside the post's arc radius range: written as lines within 0.01 mm (first: CL record 1)");
 }

@@ -250,8 +250,8 @@ function onWorkOffset(index) {
         return;
     presetChanged = true;
     flushPending();
-    writeBlock("CYCL DEF 247", czech ? "NASTAVENI VZTAZNEHO BODU" : "DATUM SETTING");
-    writeln("  Q339=+" + Math.trunc(index) + " ;" + (czech ? "CISLO VZTAZNEHO BODU" : "DATUM NUMBER"));
+    writeBlock("CYCL DEF 247", czech ? "NASTAVENÍ VZTAŽNÉHO BODU" : "DATUM SETTING");
+    writeln("  Q339=+" + Math.trunc(index) + " ;" + (czech ? "ČÍSLO VZTAŽNÉHO BODU" : "DATUM NUMBER"));
 }
 
 function defineFeedParameters() {
@@ -379,8 +379,8 @@ function onComment(text) {
 
 function onDwell(seconds) {
     flushPending();
-    writeBlock("CYCL DEF 9.0", czech ? "CASOVA PRODLEVA" : "DWELL TIME");
-    writeBlock("CYCL DEF 9.1", "DWELL " + numberFormat.format(seconds));
+    writeBlock("CYCL DEF 9.0", czech ? "ČASOVÁ PRODLEVA" : "DWELL TIME");
+    writeBlock("CYCL DEF 9.1", (czech ? "PRODLEVA " : "DWELL ") + numberFormat.format(seconds));
 }
 
 function onStop(optional) {

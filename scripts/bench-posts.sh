@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # Posting as a user runs it, side by side with FreeCAD 0.20: `camwb-cli post bench.dump --post
 # <id> -o out` (read the dump, post, write the NC) against freecadcmd reading the same dump into
-# Path.Commands, exporting them with its linuxcnc_post and writing the NC
-# (tests/bench/peers/freecad_linuxcnc_post.py): separate processes, the same input, each timed
+# Path.Commands, exporting them with its linuxcnc_post (or heidenhain_post, beside our
+# heidenhain-itnc530) and writing the NC (tests/bench/peers/freecad_post.py): separate processes, the same input, each timed
 # whole from outside by /usr/bin/time (CPU = user + sys, so that other work on a shared machine
 # counts less), peak RSS beside it. The commands take turns, run after run, so that a machine
 # whose speed drifts (a shared VM) slows both sides alike; each run's ratio is FreeCAD's CPU over
@@ -42,12 +42,13 @@ report() {
        "wall $(cut -d' ' -f2 "$work/$1" | median) s, peak $(( $(cut -d' ' -f3 "$work/$1" | median | cut -d. -f1) / 1024 )) MB"
 }
 
-# ratio <key>: FreeCAD's CPU over <key>'s, run by run, and their median.
+# ratio <key> [<peer key>]: the peer's CPU (FreeCAD's linuxcnc_post unless named) over <key>'s,
+# run by run, and their median.
 ratio() {
-  local each
-  each=$(paste -d' ' <(cut -d' ' -f1 "$work/freecad") <(cut -d' ' -f1 "$work/$1") |
+  local each peer=${2:-freecad}
+  each=$(paste -d' ' <(cut -d' ' -f1 "$work/$peer") <(cut -d' ' -f1 "$work/$1") |
     awk '{ printf "%.1f\n", $1 / $2 }')
-  echo "  FreeCAD / $1, CPU: $(echo "$each" | median)x (runs: $(echo "$each" | tr '\n' ' '))"
+  echo "  $peer / $1, CPU: $(echo "$each" | median)x (runs: $(echo "$each" | tr '\n' ' '))"
 }
 
 freecad=0
@@ -57,25 +58,32 @@ command -v freecadcmd > /dev/null && freecad=1
 for moves in "${sizes[@]}"; do
   build/tests/bench/camwb-bench-dump "$moves" "$work/bench.dump"
   echo "== $moves moves: $(wc -l < "$work/bench.dump") dump lines, $(( $(stat -c %s "$work/bench.dump") / 1000000 )) MB"
-  rm -f "$work/sinumerik828d-emco" "$work/linuxcnc" "$work/import" "$work/freecad"
+  rm -f "$work/sinumerik828d-emco" "$work/linuxcnc" "$work/heidenhain-itnc530" "$work/import" \
+        "$work/freecad" "$work/freecad-heidenhain"
   for _ in $(seq "$runs"); do
-    for post in sinumerik828d-emco linuxcnc; do
+    for post in sinumerik828d-emco linuxcnc heidenhain-itnc530; do
       once "$post" build/app/cli/camwb-cli post "$work/bench.dump" --post "$post" -o "$work/out.nc"
     done
     once import "$bin/camwb_import_bench" --read "$work/bench.dump"
     if [ $freecad = 1 ]; then
       once freecad env CAMWB_BENCH_DUMP="$work/bench.dump" CAMWB_BENCH_OUT="$work/freecad.ngc" \
-        freecadcmd tests/bench/peers/freecad_linuxcnc_post.py
+        freecadcmd tests/bench/peers/freecad_post.py
+      grep '^freecad-' "$work/out" || true
+      once freecad-heidenhain env CAMWB_BENCH_POST=heidenhain_post CAMWB_BENCH_DUMP="$work/bench.dump" \
+        CAMWB_BENCH_OUT="$work/freecad.h" freecadcmd tests/bench/peers/freecad_post.py
       grep '^freecad-' "$work/out" || true
     fi
   done
   report sinumerik828d-emco "camwb-cli post --post sinumerik828d-emco (read, post, write)"
   report linuxcnc "camwb-cli post --post linuxcnc (read, post, write)"
+  report heidenhain-itnc530 "camwb-cli post --post heidenhain-itnc530 (read, post, write)"
   report import "camwb_import_bench --read (the dump import alone)"
   if [ $freecad = 1 ]; then
     report freecad "freecadcmd: read the dump, linuxcnc_post export, write"
     ratio linuxcnc
     ratio sinumerik828d-emco
+    report freecad-heidenhain "freecadcmd: read the dump, heidenhain_post export, write"
+    ratio heidenhain-itnc530 freecad-heidenhain
   fi
 done
 

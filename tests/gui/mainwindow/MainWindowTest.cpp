@@ -2,6 +2,7 @@
 // checks the editor dock, the 3D view and undo; unsaved NC edits are never replaced without
 // asking (answered by a ScriptedPrompter). Runs twice: under Xvfb (GL) and offscreen (no GL).
 #include "gui/shell/MainWindow.h"
+#include "MotionMatch.h"
 #include "QtTestRun.h"
 #include "ScriptedPrompter.h"
 #include "Shots.h"
@@ -394,6 +395,49 @@ private slots:
         QVERIFY(window.view()->toolpathSegmentCount() >= lines - 10);
         window.ncEditor()->gotoLine(lines / 2);
         QVERIFY(!window.view()->highlightedSegments().empty());
+    }
+
+    // The example job posted with the iTNC 530 post: the editor holds Klartext and highlights it as
+    // Klartext, the inspector traces it on the post's machine without a diagnostic, and what the
+    // trace moves is what the job's CL moves (the round trip of the post goldens, here in the window).
+    void heidenhainPostedJobIsKlartextAndMovesAsItsCl()
+    {
+        QTemporaryDir dir;
+        QByteArray job = readFile(QStringLiteral(CAMWB_EXAMPLE_JOB));
+        job.replace("\"post\": \"sinumerik828d-emco\"", "\"post\": \"heidenhain-itnc530\"");
+        const QByteArray model = QFileInfo(QStringLiteral(CAMWB_EXAMPLE_JOB)).absolutePath().toUtf8() + "/";
+        job.replace("\"model\": \"", "\"model\": \"" + model);
+        QVERIFY(job.contains("heidenhain-itnc530"));
+        const QString path = writeFile(dir, QStringLiteral("example-block.camwb"), job);
+        MainWindow window;
+        window.resize(1600, 1000);
+        window.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&window));
+        QSignalSpy posted(&window.workbench(), &Workbench::postFinished);
+        QVERIFY(window.openJob(path));
+        QVERIFY(posted.wait(120000));
+        QCOMPARE(posted.first().first().toBool(), true);
+        QVERIFY(waitForTrace(window));
+        QCOMPARE(window.workbench().ncExtension(), QStringLiteral("h"));
+        QVERIFY(window.ncEditor()->text().startsWith(QLatin1String("0 BEGIN PGM example-block MM\n")));
+        QCOMPARE(window.ncEditor()->dialect(), camwb::nc::Dialect::Heidenhain);
+        const auto trace = window.inspector()->trace();
+        QCOMPARE(trace->dialect, camwb::nc::Dialect::Heidenhain);
+        QVERIFY2(trace->result.diagnostics.empty(), qPrintable(firstError(*trace)));
+        QCOMPARE(QString::fromStdString(window.inspector()->machine()->id), QStringLiteral("mas-mcvl1000"));
+        const auto difference = camwb::nc::test::matchMotion(trace->program, window.workbench().toolpath());
+        QVERIFY2(!difference, difference ? difference->c_str() : "");
+        // The cursor on a circle block: its segment lights up in the view.
+        const QStringList lines = window.ncEditor()->text().split(QLatin1Char('\n'));
+        int circle = 0;
+        for (int i = 0; i < lines.size() && !circle; ++i)
+            if (lines[i].contains(QLatin1String(" C X")))
+                circle = i + 1;
+        QVERIFY(circle > 0);
+        window.ncEditor()->gotoLine(circle);
+        QTest::qWait(300);
+        QVERIFY(!window.view()->highlightedSegments().empty() || !window.view()->hasOpenGl());
+        saveShot(&window, QStringLiteral("heidenhain-posted-job.png"));
     }
 
     // Pictures of the inspector (kept in CAMWB_SHOTS_DIR when set): posted SINUMERIK, ISO and

@@ -16,8 +16,16 @@ enum class CutterCompSide { Off, Left, Right };
 enum class CoolantMode { Off, Flood, Mist, ThroughTool };
 enum class FeedMode { PerMinute, PerRevolution, InverseTime };
 enum class CycleKind { Drill, DrillDwell, Peck, ChipBreak, Tap, Bore };
+// Which of its section's feeds (SectionBegin::feeds) a feed move uses, so that a post can write a
+// parametric feed (Q601 cutting, Q603 plunge, ...) without guessing from values. An operation
+// sets a kind only where the move's feed is exactly its section's feed of that kind. Unspecified:
+// nobody said (NC read back, APT, FreeCAD dumps, hand-written traces). One byte: it sits in the
+// records' padding.
+enum class FeedKind : unsigned char { Unspecified, Cutting, Plunge, Entry, Exit, Finishing };
 
 // Full tool geometry, so a post or the simulator never has to look the tool up elsewhere.
+// Many callers give the first eight fields in this order; after them the order packs the record
+// (a ToolChange is the largest record, so its padding is every record's).
 struct Tool {
     int number = 1;
     std::string name;
@@ -27,8 +35,9 @@ struct Tool {
     double fluteLengthMm = 0;
     double lengthMm = 0;
     int flutes = 2;
-    double pointAngleDeg = 0;   // drills (118, 135, ...) and chamfer mills: included tip angle; 0 = flat
     bool centreCutting = true;  // false: must not plunge straight down (pockets ramp or helix instead)
+    double pointAngleDeg = 0;   // drills (118, 135, ...) and chamfer mills: included tip angle; 0 = flat
+    std::string holder{};       // the tool holder's name ("SK40 ER32"); empty = none given
 };
 
 // The axes a straight move gives (bit 0 X, 1 Y, 2 Z). A move moves only these; the others stay
@@ -55,19 +64,41 @@ struct Rapid {
 };
 struct Linear {
     Linear() = default;
-    Linear(Vec3 target, double feed = 0, AxisMask given = {}) : to(target), feedMmPerMin(feed), axes(given) {}
+    Linear(Vec3 target, double feed = 0, AxisMask given = {}, FeedKind kind = FeedKind::Unspecified) :
+        to(target),
+        feedMmPerMin(feed),
+        axes(given),
+        feedKind(kind)
+    {
+    }
     Vec3 to;
     double feedMmPerMin = 0;
     AxisMask axes;
+    FeedKind feedKind = FeedKind::Unspecified;
 };
 
 // Circular move from the current position. When `to` leaves the arc's plane the arc is a helix.
-// `turns` counts extra full revolutions (0 = less than one turn).
+// `turns` counts extra full revolutions (0 = less than one turn). A constructor keeps the
+// positional Arc{to, center, normal, clockwise, turns, feed} while the kind sits in the padding
+// after `clockwise`.
 struct Arc {
+    Arc() = default;
+    Arc(Vec3 end, Vec3 centre, Vec3 planeNormal, bool cw, int extraTurns, double feed,
+        FeedKind kind = FeedKind::Unspecified) :
+        to(end),
+        center(centre),
+        normal(planeNormal),
+        clockwise(cw),
+        feedKind(kind),
+        turns(extraTurns),
+        feedMmPerMin(feed)
+    {
+    }
     Vec3 to;
     Vec3 center;
     Vec3 normal{0, 0, 1};
     bool clockwise = false;  // seen looking against the normal (from +Z down for G17)
+    FeedKind feedKind = FeedKind::Unspecified;
     int turns = 0;
     double feedMmPerMin = 0;
 };
@@ -131,12 +162,33 @@ struct PassThrough {
     std::string text;
 };
 
+// The feeds an operation uses, by kind (0: a kind it does not use).
 struct SectionFeeds {
     double cuttingMmPerMin = 0;
     double plungeMmPerMin = 0;
     double entryMmPerMin = 0;
     double exitMmPerMin = 0;
     double finishingMmPerMin = 0;
+
+    // The feed of `kind`; 0 for Unspecified.
+    double of(FeedKind kind) const
+    {
+        switch (kind) {
+        case FeedKind::Cutting:
+            return cuttingMmPerMin;
+        case FeedKind::Plunge:
+            return plungeMmPerMin;
+        case FeedKind::Entry:
+            return entryMmPerMin;
+        case FeedKind::Exit:
+            return exitMmPerMin;
+        case FeedKind::Finishing:
+            return finishingMmPerMin;
+        case FeedKind::Unspecified:
+            break;
+        }
+        return 0;
+    }
 };
 
 struct SectionBegin {
@@ -149,6 +201,16 @@ struct SectionEnd {};
 
 using Record = std::variant<Rapid, Linear, Arc, ToolChange, Spindle, Coolant, FeedModeChange, WorkOffset, Dwell, Cycle,
                             ToolAxisMove, CutterComp, Comment, SectionBegin, SectionEnd, ProgramStop, PassThrough>;
+
+// The feed kind of a Linear or Arc; Unspecified for any other record.
+inline FeedKind feedKindOf(const Record& record)
+{
+    if (const auto* l = std::get_if<Linear>(&record))
+        return l->feedKind;
+    if (const auto* a = std::get_if<Arc>(&record))
+        return a->feedKind;
+    return FeedKind::Unspecified;
+}
 
 // Where a record came from, so the GUI can link it back to its operation. -1 = unknown.
 // NC interpreters set `line` (1-based) and `file` (index into their list of program files).

@@ -1,5 +1,6 @@
 #include "toolpath/RecordNames.h"
 
+#include <array>
 #include <iterator>
 
 namespace camwb::toolpath {
@@ -62,6 +63,35 @@ const char* name(CycleKind kind)
         break;
     }
     return "drill";
+}
+
+const char* name(FeedKind kind)
+{
+    switch (kind) {
+    case FeedKind::Cutting:
+        return "cutting";
+    case FeedKind::Plunge:
+        return "plunge";
+    case FeedKind::Entry:
+        return "entry";
+    case FeedKind::Exit:
+        return "exit";
+    case FeedKind::Finishing:
+        return "finishing";
+    case FeedKind::Unspecified:
+        break;
+    }
+    return "";
+}
+
+std::optional<FeedKind> feedKindNamed(std::string_view word)
+{
+    static constexpr std::array kinds{FeedKind::Cutting, FeedKind::Plunge, FeedKind::Entry, FeedKind::Exit,
+                                      FeedKind::Finishing};
+    for (FeedKind kind : kinds)
+        if (word == name(kind))
+            return kind;
+    return std::nullopt;
 }
 
 const char* recordName(const Record& record)

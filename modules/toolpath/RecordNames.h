@@ -4,12 +4,18 @@
 
 #include "toolpath/ClRecords.h"
 
+#include <optional>
+#include <string_view>
+
 namespace camwb::toolpath {
 
-const char* name(CutterCompSide side);         // "off", "left", "right"
-const char* name(CoolantMode mode);            // "off", "flood", "mist", "throughTool"
-const char* name(FeedMode mode);               // "perMinute", "perRevolution", "inverseTime"
-const char* name(CycleKind kind);              // "drill", "drillDwell", "peck", "chipBreak", "tap", "bore"
+const char* name(CutterCompSide side);  // "off", "left", "right"
+const char* name(CoolantMode mode);     // "off", "flood", "mist", "throughTool"
+const char* name(FeedMode mode);        // "perMinute", "perRevolution", "inverseTime"
+const char* name(CycleKind kind);       // "drill", "drillDwell", "peck", "chipBreak", "tap", "bore"
+const char* name(FeedKind kind);        // "cutting", "plunge", "entry", "exit", "finishing"; "" unspecified
+// The kind a name spells (one of name(FeedKind)'s, not the empty one); nullopt for any other word.
+std::optional<FeedKind> feedKindNamed(std::string_view word);
 const char* recordName(const Record& record);  // the record's type name: "Rapid", "Arc", ...
 
 }  // namespace camwb::toolpath

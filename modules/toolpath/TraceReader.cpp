@@ -141,6 +141,17 @@ public:
         fail("unknown name '" + std::string(t->text) + "'", t->column);
         return values[0];
     }
+    // The feed kind a move may name after its feed ("f 150 plunge"); none: unspecified.
+    FeedKind optionalFeedKind()
+    {
+        if (failed() || atEnd())
+            return FeedKind::Unspecified;
+        const Token& t = m_tokens[m_index++];
+        const std::optional<FeedKind> kind = t.quoted ? std::nullopt : feedKindNamed(t.text);
+        if (!kind)
+            fail("unknown feed kind '" + t.text + "' (cutting, plunge, entry, exit or finishing)", t.column);
+        return kind.value_or(FeedKind::Unspecified);
+    }
     bool atEnd() const { return m_index >= m_tokens.size(); }
     void end()
     {
@@ -214,6 +225,7 @@ base::Result<ClImport> readTrace(base::LineReader& lines, const std::string& fil
             l.to = in.target(l.axes);
             in.keyword("f");
             l.feedMmPerMin = in.number();
+            l.feedKind = in.optionalFeedKind();
             record = l;
         } else if (kind == "arc") {
             Arc a;
@@ -227,6 +239,7 @@ base::Result<ClImport> readTrace(base::LineReader& lines, const std::string& fil
             a.turns = in.integer();
             in.keyword("f");
             a.feedMmPerMin = in.number();
+            a.feedKind = in.optionalFeedKind();
             record = a;
         } else if (kind == "tool") {
             Tool t;
@@ -241,6 +254,10 @@ base::Result<ClImport> readTrace(base::LineReader& lines, const std::string& fil
             in.keyword("len");
             t.lengthMm = in.number();
             t.name = in.text();
+            if (!in.atEnd()) {
+                in.keyword("holder");
+                t.holder = in.text();
+            }
             record = ToolChange{t};
         } else if (kind == "spindle") {
             Spindle s{in.number()};

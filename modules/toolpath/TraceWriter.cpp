@@ -38,19 +38,27 @@ std::string quoted(const std::string& text)
     return out + '"';
 }
 
+// " plunge" after a move's feed when it has a kind; nothing when unspecified, so that traces
+// written before kinds existed read and write unchanged.
+std::string kindSuffix(FeedKind kind)
+{
+    return kind == FeedKind::Unspecified ? std::string() : ' ' + std::string(name(kind));
+}
+
 }  // namespace
 
 void TraceWriter::rapid(const Rapid& r) { m_out += "rapid " + target(r.to, r.axes) + '\n'; }
 
 void TraceWriter::linear(const Linear& r)
 {
-    m_out += "linear " + target(r.to, r.axes) + " f " + num(r.feedMmPerMin) + '\n';
+    m_out += "linear " + target(r.to, r.axes) + " f " + num(r.feedMmPerMin) + kindSuffix(r.feedKind) + '\n';
 }
 
 void TraceWriter::arc(const Arc& r)
 {
     m_out += std::string("arc ") + (r.clockwise ? "cw " : "ccw ") + point(r.to) + " c " + point(r.center) + " n " +
-             point(r.normal) + " turns " + std::to_string(r.turns) + " f " + num(r.feedMmPerMin) + '\n';
+             point(r.normal) + " turns " + std::to_string(r.turns) + " f " + num(r.feedMmPerMin) +
+             kindSuffix(r.feedKind) + '\n';
 }
 
 void TraceWriter::toolChange(const ToolChange& r)
@@ -58,7 +66,7 @@ void TraceWriter::toolChange(const ToolChange& r)
     const Tool& t = r.tool;
     m_out += "tool " + std::to_string(t.number) + " " + t.kind + " d " + num(t.diameterMm) + " r " +
              num(t.cornerRadiusMm) + " flute " + num(t.fluteLengthMm) + " len " + num(t.lengthMm) + " " +
-             quoted(t.name) + "\n";
+             quoted(t.name) + (t.holder.empty() ? "" : " holder " + quoted(t.holder)) + "\n";
 }
 
 void TraceWriter::spindle(const Spindle& r)

@@ -1,5 +1,6 @@
 #include "toolpath/KnownPosition.h"
 #include "toolpath/MachineSink.h"
+#include "toolpath/RecordNames.h"
 #include "toolpath/Toolpath.h"
 
 #include <gtest/gtest.h>
@@ -168,4 +169,59 @@ TEST(KnownPosition, AMoveSetsOnlyTheAxesItGives)
     // Records made without a mask give every axis.
     EXPECT_TRUE(Rapid{}.axes.all());
     EXPECT_TRUE((Linear{{1, 2, 3}, 100}.axes.all()));
+}
+
+TEST(FeedKind, EveryKindHasANameThatReadsBackAndUnspecifiedHasNone)
+{
+    EXPECT_STREQ(name(FeedKind::Unspecified), "");
+    EXPECT_FALSE(feedKindNamed(""));
+    EXPECT_FALSE(feedKindNamed("rapid"));
+    EXPECT_FALSE(feedKindNamed("Plunge"));  // names are exact
+    const std::vector<std::pair<FeedKind, std::string>> names{{FeedKind::Cutting, "cutting"},
+                                                              {FeedKind::Plunge, "plunge"},
+                                                              {FeedKind::Entry, "entry"},
+                                                              {FeedKind::Exit, "exit"},
+                                                              {FeedKind::Finishing, "finishing"}};
+    for (const auto& [kind, text] : names) {
+        EXPECT_EQ(name(kind), text);
+        EXPECT_EQ(feedKindNamed(text), kind) << text;
+    }
+}
+
+TEST(FeedKind, SectionFeedsAnswerEachKind)
+{
+    const SectionFeeds feeds{600, 150, 250, 500, 400};
+    EXPECT_EQ(feeds.of(FeedKind::Cutting), 600);
+    EXPECT_EQ(feeds.of(FeedKind::Plunge), 150);
+    EXPECT_EQ(feeds.of(FeedKind::Entry), 250);
+    EXPECT_EQ(feeds.of(FeedKind::Exit), 500);
+    EXPECT_EQ(feeds.of(FeedKind::Finishing), 400);
+    EXPECT_EQ(feeds.of(FeedKind::Unspecified), 0);
+}
+
+// The kind sits in padding: a million-move toolpath is no larger for it.
+TEST(FeedKind, MovesAreNoLargerForTheirKind)
+{
+    struct LinearWithoutKind {
+        Vec3 to;
+        double feed;
+        AxisMask axes;
+    };
+    struct ArcWithoutKind {
+        Vec3 to, center, normal;
+        bool clockwise;
+        int turns;
+        double feed;
+    };
+    EXPECT_EQ(sizeof(Linear), sizeof(LinearWithoutKind));
+    EXPECT_EQ(sizeof(Arc), sizeof(ArcWithoutKind));
+    const Linear line{{1, 2, 3}, 100, AxisMask{AxisMask::kZ}, FeedKind::Exit};
+    EXPECT_EQ(line.feedKind, FeedKind::Exit);
+    EXPECT_EQ(line.axes, AxisMask{AxisMask::kZ});
+    const Arc arc{{1, 0, 0}, {0, 0, 0}, {0, 0, 1}, true, 2, 300, FeedKind::Entry};
+    EXPECT_TRUE(arc.clockwise);
+    EXPECT_EQ(arc.turns, 2);
+    EXPECT_EQ(arc.feedMmPerMin, 300);
+    EXPECT_EQ(arc.feedKind, FeedKind::Entry);
+    EXPECT_EQ(Arc{}.feedKind, FeedKind::Unspecified);
 }

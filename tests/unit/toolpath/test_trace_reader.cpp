@@ -18,7 +18,7 @@ Toolpath everyRecord()
     const Record records[] = {
         WorkOffset{2},
         SectionBegin{"Contour \"A\" 1", "profile", 3, {600, 150, 0, 0, 0}},
-        ToolChange{Tool{3, "Flat D6, 3 flutes", "flat", 6, 0.5, 20, 45, 3}},
+        ToolChange{Tool{3, "Flat D6, 3 flutes", "flat", 6, 0.5, 20, 45, 3, true, 0, "SK40 \"ER32\""}},
         Spindle{4000, true},
         Spindle{0, false},
         Coolant{CoolantMode::Mist},
@@ -27,6 +27,12 @@ Toolpath everyRecord()
         Rapid{{1, 2, 3}},
         Linear{{-1.25, 0, 3}, 0.15},
         Arc{{5, 5, -1}, {0, 5, 0}, {0, 0, -1}, true, 2, 300},
+        Linear{{0, 0, -2}, 80, {}, FeedKind::Plunge},  // moves that say which feed they use
+        Arc{{2, 0, -2}, {1, 0, -2}, {0, 0, 1}, false, 0, 90, FeedKind::Entry},
+        Linear{{9, 0, -2}, 600, {}, FeedKind::Cutting},
+        Arc{{9, 2, -2}, {9, 1, -2}, {0, 0, 1}, false, 0, 600, FeedKind::Finishing},
+        Linear{{9, 5, -2}, 600, {}, FeedKind::Exit},
+        ToolChange{Tool{4}},
         Dwell{1.5},
         cycle,
         ToolAxisMove{{1, 2, 3}, {0, 0.6, 0.8}, 250},
@@ -65,9 +71,47 @@ TEST(TraceReader, ReadsBackEveryRecordTheWriterWrites)
     EXPECT_EQ(read->toolpath.source(0).operationIndex, -1);
     EXPECT_EQ(read->toolpath.source(1).operationIndex, 0);
     EXPECT_EQ(read->toolpath.source(1).recordIndex, 2);
-    EXPECT_EQ(read->toolpath.source(18).operationIndex, 0);  // the SectionEnd closes section 0
-    EXPECT_EQ(read->toolpath.source(19).operationIndex, -1);
-    EXPECT_EQ(read->toolpath.source(19).recordIndex, 22);  // after the cycle's two hole lines
+    EXPECT_EQ(read->toolpath.source(24).operationIndex, 0);  // the SectionEnd closes section 0
+    EXPECT_EQ(read->toolpath.source(25).operationIndex, -1);
+    EXPECT_EQ(read->toolpath.source(25).recordIndex, 28);  // after the cycle's two hole lines
+}
+
+TEST(TraceReader, FeedKindsAndHoldersReadBackIntoTheRecords)
+{
+    auto read = readTrace("tool 2 flat d 6 r 0 flute 20 len 45 \"D6\" holder \"SK40 ER32\"\n"
+                          "tool 3 drill d 5 r 0 flute 30 len 45 \"D5\"\n"
+                          "linear 1 2 3 f 500 plunge\n"
+                          "linear 1 2 3 f 500\n"
+                          "arc cw 2 0 0 c 1 0 0 n 0 0 1 turns 0 f 100 exit\n"
+                          "linear x 4 f 500 finishing\n",
+                          "t");
+    ASSERT_TRUE(read.ok()) << read.error().toString();
+    const Toolpath& t = read->toolpath;
+    EXPECT_EQ(std::get<ToolChange>(t.record(0)).tool.holder, "SK40 ER32");
+    EXPECT_EQ(std::get<ToolChange>(t.record(1)).tool.holder, "");
+    EXPECT_EQ(std::get<Linear>(t.record(2)).feedKind, FeedKind::Plunge);
+    EXPECT_EQ(std::get<Linear>(t.record(3)).feedKind, FeedKind::Unspecified);
+    EXPECT_EQ(std::get<Arc>(t.record(4)).feedKind, FeedKind::Exit);
+    EXPECT_EQ(std::get<Linear>(t.record(5)).feedKind, FeedKind::Finishing);
+    EXPECT_EQ(std::get<Linear>(t.record(5)).axes, AxisMask{AxisMask::kX});
+    EXPECT_EQ(traceOf(t), "tool 2 flat d 6.0000 r 0.0000 flute 20.0000 len 45.0000 \"D6\" holder \"SK40 ER32\"\n"
+                          "tool 3 drill d 5.0000 r 0.0000 flute 30.0000 len 45.0000 \"D5\"\n"
+                          "linear 1.0000 2.0000 3.0000 f 500.0000 plunge\n"
+                          "linear 1.0000 2.0000 3.0000 f 500.0000\n"
+                          "arc cw 2.0000 0.0000 0.0000 c 1.0000 0.0000 0.0000 n 0.0000 0.0000 1.0000 turns 0 f "
+                          "100.0000 exit\n"
+                          "linear x 4.0000 f 500.0000 finishing\n");
+
+    EXPECT_EQ(failure("linear 1 2 3 f 500 rapid\n").toString(),
+              "in.trace:1:20: unknown feed kind 'rapid' (cutting, plunge, entry, exit or finishing)");
+    EXPECT_EQ(failure("rapid 0 0 0\narc cw 2 0 0 c 1 0 0 n 0 0 1 turns 0 f 100 \"entry\"\n").toString(),
+              "in.trace:2:44: unknown feed kind 'entry' (cutting, plunge, entry, exit or finishing)");
+    EXPECT_EQ(failure("linear 1 2 3 f 500 plunge plunge\n").toString(),
+              "in.trace:1:27: unexpected 'plunge' at the end of the line");
+    EXPECT_EQ(failure("tool 1 flat d 6 r 0 flute 20 len 45 \"D6\" holds \"x\"\n").toString(),
+              "in.trace:1:42: expected 'holder', found 'holds'");
+    EXPECT_EQ(failure("tool 1 flat d 6 r 0 flute 20 len 45 \"D6\" holder\n").toString(),
+              "in.trace:1:48: expected a quoted text at the end of the line");
 }
 
 TEST(TraceReader, NotesAndBlankLinesAreSkipped)

@@ -36,6 +36,21 @@ TEST(TraceWriter, Moves)
               "move5 1.0000 2.0000 3.0000 axis 0.0000 0.6000 0.8000 f 0.0000\n");
 }
 
+TEST(TraceWriter, AMoveNamesItsFeedKindAfterTheFeedOnlyWhenItHasOne)
+{
+    EXPECT_EQ(traceOne(Linear{{1, 2, 3}, 500, {}, FeedKind::Plunge}),
+              "linear 1.0000 2.0000 3.0000 f 500.0000 plunge\n");
+    EXPECT_EQ(traceOne(Linear{{1, 2, 3}, 500, AxisMask{AxisMask::kZ}, FeedKind::Entry}),
+              "linear z 3.0000 f 500.0000 entry\n");
+    EXPECT_EQ(traceOne(Linear{{1, 2, 3}, 500}), "linear 1.0000 2.0000 3.0000 f 500.0000\n");  // as before kinds
+    EXPECT_EQ(traceOne(Arc{{10, 0, -1}, {5, 0, -1}, {0, 0, 1}, true, 0, 800, FeedKind::Finishing}),
+              "arc cw 10.0000 0.0000 -1.0000 c 5.0000 0.0000 -1.0000 n 0.0000 0.0000 1.0000 turns 0 f 800.0000 "
+              "finishing\n");
+    for (FeedKind kind : {FeedKind::Cutting, FeedKind::Exit})
+        EXPECT_EQ(traceOne(Linear{{0, 0, 0}, 1, {}, kind}), std::string("linear 0.0000 0.0000 0.0000 f 1.0000 ") +
+                                                                (kind == FeedKind::Cutting ? "cutting\n" : "exit\n"));
+}
+
 TEST(TraceWriter, NegativeZeroIsNormalised)
 {
     EXPECT_EQ(traceOne(Rapid{{-0.0, -0.00001, -0.00005}}), "rapid 0.0000 0.0000 -0.0001\n");
@@ -54,6 +69,9 @@ TEST(TraceWriter, MachineStateRecords)
     tool.fluteLengthMm = 22;
     tool.lengthMm = 75;
     EXPECT_EQ(traceOne(ToolChange{tool}), "tool 3 flat d 10.0000 r 0.5000 flute 22.0000 len 75.0000 \"Flat 10\"\n");
+    tool.holder = "SK40 \"ER32\"";  // after the name, only when there is one
+    EXPECT_EQ(traceOne(ToolChange{tool}),
+              "tool 3 flat d 10.0000 r 0.5000 flute 22.0000 len 75.0000 \"Flat 10\" holder \"SK40 \\\"ER32\\\"\"\n");
     EXPECT_EQ(traceOne(Spindle{12000, true}), "spindle 12000.0000 cw\n");
     EXPECT_EQ(traceOne(Spindle{0, false}), "spindle 0.0000 ccw\n");
     EXPECT_EQ(traceOne(Coolant{CoolantMode::Off}), "coolant off\n");

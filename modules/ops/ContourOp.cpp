@@ -21,7 +21,9 @@ public:
         m_out(out),
         m_params(params),
         m_tc(tc),
-        m_feeds{tc.cuttingFeedMmPerMin, tc.plungeFeedMmPerMin, tc.rampFeed()}
+        m_feeds{feedOf(tc, toolpath::FeedKind::Cutting), feedOf(tc, toolpath::FeedKind::Plunge),
+                feedOf(tc, toolpath::FeedKind::Entry)},
+        m_exit(feedOf(tc, toolpath::FeedKind::Exit))
     {
     }
 
@@ -57,6 +59,8 @@ public:
         if (m_out.position().z > z && !ramp)  // a 90 degree ramp goes straight down
             m_out.vertical(z, m_feeds.ramp);
 
+        // Approach and lead-in run at the cutting feed, so they are Cutting moves: Entry is the
+        // ramp feed's kind (the helix and ramps above), and a kind never disagrees with its feed.
         const double levelZ = m_out.position().z;
         if (cut.approach) {
             m_out.add(toolpath::CutterComp{plan.compSide});
@@ -69,10 +73,10 @@ public:
             rampDown(pass, zTop, z);
         cutAlong(m_out, cut.path, 0, cut.path.length(), z, z, &pass.tabs, m_feeds);
         for (const Segment& s : cut.leadOut)
-            m_out.piece(s, z, m_feeds.cut);
+            m_out.piece(s, z, m_exit);
         if (cut.departure) {
             m_out.add(toolpath::CutterComp{toolpath::CutterCompSide::Off});
-            m_out.linear({cut.departure->x, cut.departure->y, z}, m_feeds.cut);
+            m_out.linear({cut.departure->x, cut.departure->y, z}, m_exit);
         }
     }
 
@@ -105,6 +109,7 @@ private:
     const ContourParams& m_params;
     const ToolController& m_tc;
     Feeds m_feeds;
+    Feed m_exit;  // lead-out and departure
     bool m_closed = true;
 };
 
@@ -158,10 +163,7 @@ base::Result<OpResult> computeContour(const std::vector<geom::Profile>& contours
     }
 
     Emitter out(result.toolpath, operationIndex);
-    toolpath::SectionBegin begin = sectionBegin(params.name, "contour", tc);
-    begin.feeds.entryMmPerMin = tc.rampFeed();
-    begin.feeds.exitMmPerMin = tc.cuttingFeedMmPerMin;
-    out.add(begin);
+    out.add(sectionBegin(params.name, "contour", tc, {toolpath::FeedKind::Entry, toolpath::FeedKind::Exit}));
 
     LoopWriter writer(out, params, tc);
     const double steps = static_cast<double>(plans.size() * levels.size());

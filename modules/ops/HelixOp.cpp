@@ -11,6 +11,7 @@ namespace camwb::ops {
 
 namespace {
 
+using toolpath::FeedKind;
 using toolpath::Vec3;
 
 // One hole as the helix mills it.
@@ -94,7 +95,7 @@ public:
         const double startZ = m_plan.heights.startZ;
         const double finalZ = m_plan.heights.finalZ;
         const double halfDrop = m_params.pitchMm / 2;
-        const double ramp = m_tc.rampFeed();
+        const Feed ramp = feedOf(m_tc, FeedKind::Entry);  // the helix is the way in
         m_at = startPoint();
         m_z = startZ;
         const double depth = startZ - finalZ;
@@ -112,11 +113,11 @@ public:
         else if (wholeHalfTurns > 0)
             arcTo(pointAt(angleOf(m_at) + m_direction * (std::numbers::pi + restSweep)), finalZ, ramp);
         else if (m_z != finalZ)  // a cut too shallow for any helix
-            m_add(toolpath::Linear{{m_at.x, m_at.y, finalZ}, m_tc.plungeFeedMmPerMin});
+            m_add(feedMove({m_at.x, m_at.y, finalZ}, feedOf(m_tc, FeedKind::Plunge)));
         m_z = finalZ;
-        fullCircle();
+        fullCircle(feedOf(m_tc, FeedKind::Cutting));
         if (m_params.finishingCircle)
-            fullCircle();
+            fullCircle(feedOf(m_tc, FeedKind::Finishing));
     }
 
     base::Vec2 at() const { return m_at; }
@@ -133,25 +134,26 @@ private:
         return {m_center.x - (p.x - m_center.x), m_center.y - (p.y - m_center.y)};
     }
 
-    void halfTurn(double toZ, double feed) { arcTo(opposite(m_at), toZ, feed); }
+    void halfTurn(double toZ, Feed feed) { arcTo(opposite(m_at), toZ, feed); }
 
-    void fullCircle()
+    void fullCircle(Feed feed)
     {
         const base::Vec2 from = m_at;
-        halfTurn(m_z, m_tc.cuttingFeedMmPerMin);
-        arcTo(from, m_z, m_tc.cuttingFeedMmPerMin);
+        halfTurn(m_z, feed);
+        arcTo(from, m_z, feed);
     }
 
     // The CL convention (toolpath/ClArcs.h): the centre lies in the start's plane, so the Z change
     // shows in `to` alone.
-    void arcTo(base::Vec2 to, double toZ, double feed)
+    void arcTo(base::Vec2 to, double toZ, Feed feed)
     {
         toolpath::Arc arc;
         arc.to = {to.x, to.y, toZ};
         arc.center = {m_center.x, m_center.y, m_z};
         arc.normal = {0, 0, 1};
         arc.clockwise = m_direction < 0;
-        arc.feedMmPerMin = feed;
+        arc.feedMmPerMin = feed.mmPerMin;
+        arc.feedKind = feed.kind;
         m_add(arc);
         m_at = to;
         m_z = toZ;
@@ -187,9 +189,9 @@ base::Result<OpResult> computeHelix(const std::vector<geom::Hole>& holes, const 
     const std::function<void(toolpath::Record)> add = [&](toolpath::Record r) {
         result.toolpath.add(std::move(r), {operationIndex, index++});
     };
-    toolpath::SectionBegin begin = sectionBegin(params.name, "helix", tc);
-    begin.feeds.entryMmPerMin = tc.rampFeed();  // the helix is the way in
-    add(begin);
+    add(params.finishingCircle
+            ? sectionBegin(params.name, "helix", tc, {FeedKind::Entry, FeedKind::Exit, FeedKind::Finishing})
+            : sectionBegin(params.name, "helix", tc, {FeedKind::Entry, FeedKind::Exit}));
 
     const double clearance = params.heights.clearanceZ;
     const double safe = params.heights.safeZ;
@@ -202,13 +204,13 @@ base::Result<OpResult> computeHelix(const std::vector<geom::Hole>& holes, const 
         if (i == 0)
             add(toolpath::Rapid{{start.x, start.y, clearance}});
         add(toolpath::Rapid{{start.x, start.y, safe}});
-        add(toolpath::Linear{{start.x, start.y, plan.heights.startZ}, tc.plungeFeedMmPerMin});
+        add(feedMove({start.x, start.y, plan.heights.startZ}, feedOf(tc, FeedKind::Plunge)));
         writer.cut();
         // Off the wall along the radius, unless a core stands there: then straight up.
         base::Vec2 exit = writer.at();
         if (!plan.coreStands) {
             exit = plan.hole.center;
-            add(toolpath::Linear{{exit.x, exit.y, plan.heights.finalZ}, tc.cuttingFeedMmPerMin});
+            add(feedMove({exit.x, exit.y, plan.heights.finalZ}, feedOf(tc, FeedKind::Exit)));
         }
         add(toolpath::Rapid{{exit.x, exit.y, i + 1 == plans.size() ? clearance : safe}});
     }

@@ -29,10 +29,11 @@ struct HelixParams {
 // Records (each with SourceRef{operationIndex, i}): SectionBegin{name, "helix", tool, feeds}; per
 // hole, in shortRapidOrder from the first hole given: Rapid to the helix start (circle point in +X
 // of the hole) at clearance (first hole) or safe, Rapid down to safe, Linear to start Z at plunge
-// feed, helical Arcs (one per half turn, ramp feed, the centre on the hole axis at the arc's start
-// Z, lead exactly the pitch, the last one shortened to end at final Z), one full flat circle at final
-// Z (two half Arcs, cutting feed; two circles with finishingCircle), Linear to the hole centre and
-// Rapid up to safe (clearance after the last hole); SectionEnd. Climb = counter-clockwise.
+// feed (Plunge), helical Arcs (one per half turn, ramp feed: Entry, the centre on the hole axis at
+// the arc's start Z, lead exactly the pitch, the last one shortened to end at final Z), one full
+// flat circle at final Z (two half Arcs, cutting feed: Cutting; the second circle of
+// finishingCircle: Finishing), Linear to the hole centre (Exit) and Rapid up to safe (clearance
+// after the last hole); SectionEnd. Climb = counter-clockwise.
 // A tool narrower than half the hole leaves a core: where it stands (blind hole, or above the
 // bottom of a through hole) the result warns and the tool leaves straight up from the circle.
 // Errors (nothing produced): no holes, tool controller and height checks, pitch <= 0 or above the

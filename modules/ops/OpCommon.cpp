@@ -28,14 +28,43 @@ MotionCounts countMotions(const toolpath::Toolpath& toolpath)
     return counts;
 }
 
-toolpath::SectionBegin sectionBegin(const std::string& name, const std::string& strategy, const ToolController& tc)
+Feed feedOf(const ToolController& tc, toolpath::FeedKind kind)
 {
+    using toolpath::FeedKind;
+    switch (kind) {
+    case FeedKind::Plunge:
+        return {tc.plungeFeedMmPerMin, kind};
+    case FeedKind::Entry:
+        return {tc.rampFeed(), kind};
+    case FeedKind::Cutting:
+    case FeedKind::Exit:
+    case FeedKind::Finishing:
+        return {tc.cuttingFeedMmPerMin, kind};
+    case FeedKind::Unspecified:
+        break;
+    }
+    return {};  // no kind, no feed: a move that asks for none is warned about when posted
+}
+
+toolpath::SectionBegin sectionBegin(const std::string& name, const std::string& strategy, const ToolController& tc,
+                                    std::initializer_list<toolpath::FeedKind> alsoUses)
+{
+    using toolpath::FeedKind;
     toolpath::SectionBegin begin;
     begin.operationName = name;
     begin.strategy = strategy;
     begin.toolNumber = tc.tool.number;
-    begin.feeds.cuttingMmPerMin = tc.cuttingFeedMmPerMin;
-    begin.feeds.plungeMmPerMin = tc.plungeFeedMmPerMin;
+    begin.feeds.cuttingMmPerMin = feedOf(tc, FeedKind::Cutting).mmPerMin;
+    begin.feeds.plungeMmPerMin = feedOf(tc, FeedKind::Plunge).mmPerMin;
+    for (FeedKind kind : alsoUses) {
+        const double feed = feedOf(tc, kind).mmPerMin;
+        if (kind == FeedKind::Entry)
+            begin.feeds.entryMmPerMin = feed;
+        else if (kind == FeedKind::Exit)
+            begin.feeds.exitMmPerMin = feed;
+        else if (kind == FeedKind::Finishing)
+            begin.feeds.finishingMmPerMin = feed;
+    }
     return begin;
 }
 

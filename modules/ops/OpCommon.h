@@ -10,6 +10,7 @@
 
 #include <atomic>
 #include <functional>
+#include <initializer_list>
 #include <string>
 #include <vector>
 
@@ -23,6 +24,23 @@ struct ToolController {
     double rampFeedMmPerMin = 0;  // 0 = the cutting feed
     double rampFeed() const { return rampFeedMmPerMin > 0 ? rampFeedMmPerMin : cuttingFeedMmPerMin; }
 };
+
+// A feed as an operation chooses it for a move: the value and which of its section's feeds it is,
+// taken together from feedOf() so that the kind a move carries always agrees with its value.
+struct Feed {
+    double mmPerMin = 0;
+    toolpath::FeedKind kind = toolpath::FeedKind::Unspecified;
+};
+
+// The tool controller's feed of each kind: Cutting and Plunge its own; Entry the ramp feed (ramps
+// and helices down into the material); Exit and Finishing the cutting feed (leaving the cut and
+// finishing passes have no feeds of their own).
+Feed feedOf(const ToolController& tc, toolpath::FeedKind kind);
+// A straight feed move to `to` (every axis) with the feed's value and kind.
+inline toolpath::Linear feedMove(const toolpath::Vec3& to, Feed feed)
+{
+    return toolpath::Linear{to, feed.mmPerMin, {}, feed.kind};
+}
 
 // Resolved heights in workpiece Z (mm). clearance >= safe > start >= final.
 // clearance: rapids between features/operations; safe: rapid down to here before feeding;
@@ -64,9 +82,10 @@ struct OpResult {
 };
 
 // The SectionBegin an operation opens its toolpath with: name, strategy ("contour", "pocket",
-// "helix", "drilling"), tool number and the cutting and plunge feeds; the operation adds the
-// other feeds it uses (entry, exit, finishing).
-toolpath::SectionBegin sectionBegin(const std::string& name, const std::string& strategy, const ToolController& tc);
+// "helix", "drilling"), tool number and the cutting and plunge feeds, and the feeds of the other
+// kinds it uses (`alsoUses`: entry, exit, finishing), each as feedOf() gives it to the moves.
+toolpath::SectionBegin sectionBegin(const std::string& name, const std::string& strategy, const ToolController& tc,
+                                    std::initializer_list<toolpath::FeedKind> alsoUses = {});
 
 // Z levels from start down to final in equal steps no deeper than stepDown (the last one at
 // final). stepDown <= 0 or >= the whole depth: one level at final.

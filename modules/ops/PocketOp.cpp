@@ -130,9 +130,9 @@ base::Result<OpResult> computePocket(const std::vector<geom::Region>& regions, c
     entry.rampAngleDeg = params.rampAngleDeg;
     entry.ccw = params.climb;
     entry.toleranceMm = tol;
-    entry.rampFeed = tc.rampFeed();
-    entry.plungeFeed = tc.plungeFeedMmPerMin;
-    entry.cuttingFeed = tc.cuttingFeedMmPerMin;
+    entry.rampFeed = feedOf(tc, toolpath::FeedKind::Entry);
+    entry.plungeFeed = feedOf(tc, toolpath::FeedKind::Plunge);
+    entry.cuttingFeed = feedOf(tc, toolpath::FeedKind::Cutting);
     const geom::RegionIndex centreIndex(toolCentre);
     EntryPlanner planner(centreIndex, entry);
     const Program rough = makeProgram(std::move(*cuts), centreIndex, planner);
@@ -154,17 +154,17 @@ base::Result<OpResult> computePocket(const std::vector<geom::Region>& regions, c
                     std::to_string(fallbacks) + " cut start(s); ramped there instead");
 
     PathWriter out(result.toolpath, operationIndex);
-    toolpath::SectionBegin begin = sectionBegin(params.name, "pocket", tc);
-    begin.feeds.entryMmPerMin = tc.rampFeed();
-    begin.feeds.finishingMmPerMin = tc.cuttingFeedMmPerMin;
-    out.add(begin);
+    out.add(sectionBegin(params.name, "pocket", tc, {toolpath::FeedKind::Entry, toolpath::FeedKind::Finishing}));
+    // The walls' last pass and the floor's own level (finishFloor: the last one) are finishing.
+    const Feed finishing = feedOf(tc, toolpath::FeedKind::Finishing);
     const Clearances clearances{params.heights.clearanceZ, params.heights.safeZ};
     const std::vector<double> levels = levelsOf(params);
     double top = params.heights.startZ;
     for (std::size_t i = 0; i < levels.size(); ++i) {
-        writeProgram(out, rough, top, levels[i], clearances, entry);
+        const bool floorPass = params.finishFloor && i + 1 == levels.size();
+        writeProgram(out, rough, top, levels[i], clearances, entry, floorPass ? finishing : entry.cuttingFeed);
         if (params.finishWalls)
-            writeProgram(out, finish, top, levels[i], clearances, entry);
+            writeProgram(out, finish, top, levels[i], clearances, entry, finishing);
         top = levels[i];
         if (!progress.step(0.6 + 0.4 * static_cast<double>(i + 1) / static_cast<double>(levels.size())))
             return cancelledError(what);

@@ -29,15 +29,15 @@ void Emitter::rapid(Vec3 to)
     m_position = to;
 }
 
-void Emitter::linear(Vec3 to, double feed)
+void Emitter::linear(Vec3 to, Feed feed)
 {
     if (distance(to, m_position) < 1e-12)
         return;
-    add(toolpath::Linear{to, feed});
+    add(feedMove(to, feed));
     m_position = to;
 }
 
-void Emitter::piece(const Segment& s, double z1, double feed)
+void Emitter::piece(const Segment& s, double z1, Feed feed)
 {
     if (!s.isArc()) {
         linear({s.end.x, s.end.y, z1}, feed);
@@ -55,14 +55,15 @@ void Emitter::piece(const Segment& s, double z1, double feed)
     arc(s, z1, feed);
 }
 
-void Emitter::arc(const Segment& s, double z1, double feed)
+void Emitter::arc(const Segment& s, double z1, Feed feed)
 {
     toolpath::Arc a;
     a.to = {s.end.x, s.end.y, z1};
     a.center = {s.center.x, s.center.y, m_position.z};  // in the start's plane
     a.normal = {0, 0, 1};
     a.clockwise = !s.ccw;
-    a.feedMmPerMin = feed;
+    a.feedMmPerMin = feed.mmPerMin;
+    a.feedKind = feed.kind;
     add(a);
     m_position = a.to;
 }

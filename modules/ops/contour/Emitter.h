@@ -3,6 +3,7 @@
 // linearly (ramps) and raised over holding tabs.
 #pragma once
 
+#include "ops/OpCommon.h"
 #include "ops/contour/Path.h"
 #include "toolpath/Toolpath.h"
 
@@ -20,8 +21,9 @@ struct Tabs {
     bool contains(double s) const;
 };
 
+// The feeds a cut along a path uses: cutting, plunging straight down, ramping (an entry).
 struct Feeds {
-    double cut = 0, plunge = 0, ramp = 0;
+    Feed cut, plunge, ramp;
 };
 
 class Emitter {
@@ -32,14 +34,14 @@ public:
 
     void add(toolpath::Record record);
     void rapid(Vec3 to);
-    void linear(Vec3 to, double feed);
+    void linear(Vec3 to, Feed feed);
     // The XY piece from the current position, Z going linearly to z1 (a helix when it changes).
-    void piece(const Segment& s, double z1, double feed);
-    void vertical(double z, double feed) { linear({m_position.x, m_position.y, z}, feed); }
+    void piece(const Segment& s, double z1, Feed feed);
+    void vertical(double z, Feed feed) { linear({m_position.x, m_position.y, z}, feed); }
     Vec3 position() const { return m_position; }
 
 private:
-    void arc(const Segment& s, double z1, double feed);
+    void arc(const Segment& s, double z1, Feed feed);
 
     toolpath::Toolpath& m_toolpath;
     int m_operationIndex;

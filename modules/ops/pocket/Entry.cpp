@@ -19,7 +19,7 @@ Vec2 onCircle(Vec2 centre, double radius, double angle)
 
 // Arcs round `centre` from angle a0 turning by `sweep` (signed), z from z0 to z1, at most half a
 // turn per record.
-void writeTurns(PathWriter& out, Vec2 centre, double radius, double a0, double sweep, double z0, double z1, double feed)
+void writeTurns(PathWriter& out, Vec2 centre, double radius, double a0, double sweep, double z0, double z1, Feed feed)
 {
     const int pieces = std::max(1, static_cast<int>(std::ceil(std::abs(sweep) / kPi - 1e-9)));
     for (int i = 0; i < pieces; ++i) {

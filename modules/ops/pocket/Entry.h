@@ -18,7 +18,7 @@ struct EntrySettings {
     double rampAngleDeg = 3;
     bool ccw = true;  // helix direction (climb: counter-clockwise, like the outer walls)
     double toleranceMm = 0.01;
-    double rampFeed = 0, plungeFeed = 0, cuttingFeed = 0;
+    Feed rampFeed, plungeFeed, cuttingFeed;  // Entry, Plunge and Cutting moves
 };
 
 struct EntryPlan {

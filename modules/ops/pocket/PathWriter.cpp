@@ -17,15 +17,15 @@ void PathWriter::rapid(Vec3 to)
     m_position = to;
 }
 
-void PathWriter::feed(Vec3 to, double feed)
+void PathWriter::feed(Vec3 to, Feed feed)
 {
     if (m_position && distance(*m_position, to) < 1e-12)
         return;
-    add(toolpath::Linear{to, feed});
+    add(feedMove(to, feed));
     m_position = to;
 }
 
-void PathWriter::segment(const Segment& s, double z0, double z1, double feed)
+void PathWriter::segment(const Segment& s, double z0, double z1, Feed feed)
 {
     if (!s.isArc()) {
         this->feed({s.end.x, s.end.y, z1}, feed);
@@ -41,18 +41,19 @@ void PathWriter::segment(const Segment& s, double z0, double z1, double feed)
     arc(s, z0, z1, feed);
 }
 
-void PathWriter::arc(const Segment& s, double z0, double z1, double feed)
+void PathWriter::arc(const Segment& s, double z0, double z1, Feed feed)
 {
     toolpath::Arc a;
     a.to = {s.end.x, s.end.y, z1};
     a.center = {s.center.x, s.center.y, z0};  // in the start's plane: a helix shows in its end
     a.clockwise = !s.ccw;
-    a.feedMmPerMin = feed;
+    a.feedMmPerMin = feed.mmPerMin;
+    a.feedKind = feed.kind;
     add(a);
     m_position = a.to;
 }
 
-void PathWriter::path(const std::vector<Segment>& path, double z, double feed)
+void PathWriter::path(const std::vector<Segment>& path, double z, Feed feed)
 {
     for (const Segment& s : path)
         segment(s, z, z, feed);

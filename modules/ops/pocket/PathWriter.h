@@ -3,6 +3,7 @@
 // operation's SourceRef, while tracking where the tool is.
 #pragma once
 
+#include "ops/OpCommon.h"
 #include "ops/pocket/CutPath.h"
 #include "toolpath/Toolpath.h"
 
@@ -16,16 +17,16 @@ public:
 
     void add(toolpath::Record record);
     void rapid(toolpath::Vec3 to);
-    void feed(toolpath::Vec3 to, double feed);
+    void feed(toolpath::Vec3 to, Feed feed);
     // The segment from z0 at its start to z1 at its end (z0 == z1: flat), z linear in length.
-    void segment(const Segment& s, double z0, double z1, double feed);
-    void path(const std::vector<Segment>& path, double z, double feed);
+    void segment(const Segment& s, double z0, double z1, Feed feed);
+    void path(const std::vector<Segment>& path, double z, Feed feed);
 
     bool hasPosition() const { return m_position.has_value(); }
     toolpath::Vec3 position() const { return *m_position; }
 
 private:
-    void arc(const Segment& s, double z0, double z1, double feed);
+    void arc(const Segment& s, double z0, double z1, Feed feed);
 
     toolpath::Toolpath& m_out;
     int m_operationIndex;

@@ -19,9 +19,9 @@ Program makeProgram(std::vector<Cut> cuts, const geom::RegionIndex& region, Entr
 }
 
 void writeProgram(PathWriter& out, const Program& program, double top, double level, const Clearances& heights,
-                  const EntrySettings& entry)
+                  const EntrySettings& entry, Feed cutFeed)
 {
-    const double cutting = entry.cuttingFeed;
+    const Feed cutting = entry.cuttingFeed;
     for (std::size_t i = 0; i < program.cuts.size(); ++i) {
         const Cut& cut = program.cuts[i];
         const Vec2 start = cut.start();
@@ -43,7 +43,7 @@ void writeProgram(PathWriter& out, const Program& program, double top, double le
             }
             writeEntry(out, program.entries[i], cut, top, level, entry);
         }
-        out.path(cut.path, level, cutting);
+        out.path(cut.path, level, cutFeed);
     }
 }
 

@@ -23,8 +23,10 @@ struct Clearances {
     double clearanceZ = 0, safeZ = 0;
 };
 
-// The program at `level`, material already removed down to `top` (the previous level).
+// The program at `level`, material already removed down to `top` (the previous level); its cuts
+// at `cutFeed` (the cutting feed, or the finishing feed for a finishing pass), links at the cutting
+// feed.
 void writeProgram(PathWriter& out, const Program& program, double top, double level, const Clearances& heights,
-                  const EntrySettings& entry);
+                  const EntrySettings& entry, Feed cutFeed);
 
 }  // namespace camwb::ops::pocket

@@ -1,6 +1,7 @@
 // CL trace goldens of representative contours, compared with the files under golden/.
 // Regenerate with CAMWB_UPDATE_GOLDEN=1 (the test then writes the files and passes); review
 // each changed file before committing it.
+#include "../support/FeedKinds.h"
 #include "../support/OpsGolden.h"
 #include "ContourTestUtil.h"
 #include "toolpath/TraceWriter.h"
@@ -13,6 +14,7 @@ namespace {
 void compareWithGolden(const std::string& name, const toolpath::Toolpath& tp)
 {
     expectGolden("contour", name + ".trace", toolpath::traceOf(tp));
+    expectFeedKindsAgreeWithSections(tp);  // the trace shows each move's kind, not its section's feeds
 }
 
 toolpath::Toolpath compute(const std::vector<Profile>& loops, const ops::ContourParams& p)

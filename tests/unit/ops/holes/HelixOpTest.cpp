@@ -1,6 +1,7 @@
 // Helix (hole milling): properties over generated hole sets (circle, pitch, depths, no gouge,
 // rapids), every error, and one golden CL trace.
 #include "ops/HelixOp.h"
+#include "../support/FeedKinds.h"
 #include "HoleTestSupport.h"
 #include "toolpath/ClArcs.h"
 #include "toolpath/TraceWriter.h"
@@ -311,4 +312,5 @@ TEST(HelixOp, GoldenTrace)
     auto result = ops::computeHelix(holes, p, ops::test::toolController(6), 2);
     ASSERT_TRUE(result) << result.error().message;
     ops::test::expectGolden("holes", "helix.trace", toolpath::traceOf(result->toolpath));
+    ops::test::expectFeedKindsAgreeWithSections(result->toolpath);
 }

@@ -4,6 +4,7 @@
 #include "PocketTestSupport.h"
 
 #include "../../geom/GeomTestUtil.h"
+#include "../support/FeedKinds.h"
 #include "../support/OpsGolden.h"
 #include "toolpath/TraceWriter.h"
 
@@ -292,6 +293,7 @@ TEST(PocketOp, GoldenOffsetWithIslandAndHelix)
     auto result = ops::computePocket(shape, p, toolOf(6), 2);
     ASSERT_TRUE(result.ok()) << result.error().message;
     ops::test::expectGolden("pocket", "offset_island_helix.trace", toolpath::traceOf(result->toolpath));
+    ops::test::expectFeedKindsAgreeWithSections(result->toolpath);
 }
 
 TEST(PocketOp, GoldenZigZagRamp)
@@ -308,4 +310,5 @@ TEST(PocketOp, GoldenZigZagRamp)
     auto result = ops::computePocket({rectRegion(0, 0, 30, 20)}, p, toolOf(5), 3);
     ASSERT_TRUE(result.ok()) << result.error().message;
     ops::test::expectGolden("pocket", "zigzag_ramp.trace", toolpath::traceOf(result->toolpath));
+    ops::test::expectFeedKindsAgreeWithSections(result->toolpath);
 }

@@ -388,7 +388,8 @@ void CutterCompensation::turnCorner(const Record& record, const CompElement& nex
         around.center = withXy(m_tool, vertex);
         around.normal = {0, 0, 1};
         around.clockwise = left();
-        around.feedMmPerMin = feedOf(record);
+        around.feedMmPerMin = feedOf(record);  // the corner is the next move's: its feed and kind
+        around.feedKind = feedKindOf(record);
         emit(around, m_source);
     }
     m_tool = withXy(m_tool, nextStart);

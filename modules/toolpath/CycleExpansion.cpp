@@ -24,9 +24,10 @@ std::vector<Record> expandCycleHole(const Cycle& cycle, const Vec3& hole, const 
             out.push_back(Rapid{to});
         at = to;
     };
-    auto feed = [&](double z) {
+    // Into the hole: Plunge; back out at feed (tapping, boring): Exit. Both at the cycle's feed.
+    auto feed = [&](double z, FeedKind kind) {
         at = {hole.x, hole.y, z};
-        out.push_back(Linear{at, cycle.feedMmPerMin});
+        out.push_back(Linear{at, cycle.feedMmPerMin, {}, kind});
     };
     auto dwellAtBottom = [&] {
         if (cycle.dwellSeconds > 0)
@@ -55,7 +56,7 @@ std::vector<Record> expandCycleHole(const Cycle& cycle, const Vec3& hole, const 
     switch (cycle.kind) {
     case CycleKind::Drill:
     case CycleKind::DrillDwell:
-        feed(bottom);
+        feed(bottom, FeedKind::Plunge);
         dwellAtBottom();
         break;
     case CycleKind::Peck:
@@ -66,7 +67,7 @@ std::vector<Record> expandCycleHole(const Cycle& cycle, const Vec3& hole, const 
         double depth = std::min(cycle.topZ, r);
         while (true) {
             depth = std::max(depth - step, bottom);
-            feed(depth);
+            feed(depth, FeedKind::Plunge);
             if (depth <= bottom)
                 break;
             if (fullRetract) {
@@ -80,16 +81,16 @@ std::vector<Record> expandCycleHole(const Cycle& cycle, const Vec3& hole, const 
         break;
     }
     case CycleKind::Tap:
-        feed(bottom);
+        feed(bottom, FeedKind::Plunge);
         dwellAtBottom();
         out.push_back(Spindle{spindle.rpm, !spindle.clockwise});
-        feed(r);
+        feed(r, FeedKind::Exit);
         out.push_back(Spindle{spindle.rpm, spindle.clockwise});
         break;
     case CycleKind::Bore:
-        feed(bottom);
+        feed(bottom, FeedKind::Plunge);
         dwellAtBottom();
-        feed(r);
+        feed(r, FeedKind::Exit);
         break;
     }
     rapid({hole.x, hole.y, cycleReturnZ(cycle)});

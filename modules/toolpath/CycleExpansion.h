@@ -25,6 +25,9 @@ double cycleReturnZ(const Cycle& cycle);
 // The records for one hole, starting with the tool at `from`: up to the R plane if below it,
 // rapid over the hole, rapid down to R, the drilling motion of the cycle's kind (pecks measured
 // from the hole top, dwell at the bottom), then back to cycleReturnZ(). Ends over the hole.
+// Feed moves into the hole are Plunge, those back out (tapping, boring) Exit, all at the cycle's
+// own feed: in a drilling section that is its cutting feed, not its plunge feed, so a post that
+// writes feeds as parameters compares the value before it names one.
 std::vector<Record> expandCycleHole(const Cycle& cycle, const Vec3& hole, const Vec3& from,
                                     const SpindleState& spindle);
 // The same from a position of which only Z need be known (a CL that retracted in Z before its

@@ -38,7 +38,7 @@ TEST(CycleExpansion, DrillRapidsOverTheHoleFeedsDownAndReturnsToClearance)
 {
     EXPECT_EQ(expanded(cycleOf(CycleKind::Drill), {0, 0, 50}), "rapid 10.0000 10.0000 50.0000\n"
                                                                "rapid 10.0000 10.0000 2.0000\n"
-                                                               "linear 10.0000 10.0000 -10.0000 f 120.0000\n"
+                                                               "linear 10.0000 10.0000 -10.0000 f 120.0000 plunge\n"
                                                                "rapid 10.0000 10.0000 25.0000\n");
 }
 
@@ -49,7 +49,7 @@ TEST(CycleExpansion, BelowTheRPlaneTheToolGoesUpFirst)
     c.returnToClearance = false;
     EXPECT_EQ(expanded(c, {0, 0, -5}), "rapid 0.0000 0.0000 2.0000\n"
                                        "rapid 10.0000 10.0000 2.0000\n"
-                                       "linear 10.0000 10.0000 -10.0000 f 120.0000\n"
+                                       "linear 10.0000 10.0000 -10.0000 f 120.0000 plunge\n"
                                        "dwell 0.5000\n"
                                        "rapid 10.0000 10.0000 2.0000\n");
 }
@@ -57,24 +57,25 @@ TEST(CycleExpansion, BelowTheRPlaneTheToolGoesUpFirst)
 TEST(CycleExpansion, PeckRetractsFullyChipBreakLiftsALittle)
 {
     EXPECT_EQ(expanded(cycleOf(CycleKind::Peck), {10, 10, 25}), "rapid 10.0000 10.0000 2.0000\n"
-                                                                "linear 10.0000 10.0000 -4.0000 f 120.0000\n"
+                                                                "linear 10.0000 10.0000 -4.0000 f 120.0000 plunge\n"
                                                                 "rapid 10.0000 10.0000 2.0000\n"
                                                                 "rapid 10.0000 10.0000 -3.5000\n"
-                                                                "linear 10.0000 10.0000 -8.0000 f 120.0000\n"
+                                                                "linear 10.0000 10.0000 -8.0000 f 120.0000 plunge\n"
                                                                 "rapid 10.0000 10.0000 2.0000\n"
                                                                 "rapid 10.0000 10.0000 -7.5000\n"
-                                                                "linear 10.0000 10.0000 -10.0000 f 120.0000\n"
+                                                                "linear 10.0000 10.0000 -10.0000 f 120.0000 plunge\n"
                                                                 "rapid 10.0000 10.0000 25.0000\n");
-    EXPECT_EQ(expanded(cycleOf(CycleKind::ChipBreak), {10, 10, 25}), "rapid 10.0000 10.0000 2.0000\n"
-                                                                     "linear 10.0000 10.0000 -4.0000 f 120.0000\n"
-                                                                     "rapid 10.0000 10.0000 -3.5000\n"
-                                                                     "linear 10.0000 10.0000 -8.0000 f 120.0000\n"
-                                                                     "rapid 10.0000 10.0000 -7.5000\n"
-                                                                     "linear 10.0000 10.0000 -10.0000 f 120.0000\n"
-                                                                     "rapid 10.0000 10.0000 25.0000\n");
+    EXPECT_EQ(expanded(cycleOf(CycleKind::ChipBreak), {10, 10, 25}),
+              "rapid 10.0000 10.0000 2.0000\n"
+              "linear 10.0000 10.0000 -4.0000 f 120.0000 plunge\n"
+              "rapid 10.0000 10.0000 -3.5000\n"
+              "linear 10.0000 10.0000 -8.0000 f 120.0000 plunge\n"
+              "rapid 10.0000 10.0000 -7.5000\n"
+              "linear 10.0000 10.0000 -10.0000 f 120.0000 plunge\n"
+              "rapid 10.0000 10.0000 25.0000\n");
     Cycle noPeck = cycleOf(CycleKind::Peck);
     noPeck.peckMm = 0;  // would never reach the bottom: drilled in one go
-    EXPECT_EQ(expanded(noPeck, {10, 10, 2}), "linear 10.0000 10.0000 -10.0000 f 120.0000\n"
+    EXPECT_EQ(expanded(noPeck, {10, 10, 2}), "linear 10.0000 10.0000 -10.0000 f 120.0000 plunge\n"
                                              "rapid 10.0000 10.0000 25.0000\n");
 }
 
@@ -82,16 +83,16 @@ TEST(CycleExpansion, TapReversesTheSpindleBoreFeedsOut)
 {
     EXPECT_EQ(expanded(cycleOf(CycleKind::Tap), {10, 10, 25}, {800, true}),
               "rapid 10.0000 10.0000 2.0000\n"
-              "linear 10.0000 10.0000 -10.0000 f 120.0000\n"
+              "linear 10.0000 10.0000 -10.0000 f 120.0000 plunge\n"
               "spindle 800.0000 ccw\n"
-              "linear 10.0000 10.0000 2.0000 f 120.0000\n"
+              "linear 10.0000 10.0000 2.0000 f 120.0000 exit\n"
               "spindle 800.0000 cw\n"
               "rapid 10.0000 10.0000 25.0000\n");
     Cycle bore = cycleOf(CycleKind::Bore);
     bore.returnToClearance = false;
     EXPECT_EQ(expanded(bore, {10, 10, 25}), "rapid 10.0000 10.0000 2.0000\n"
-                                            "linear 10.0000 10.0000 -10.0000 f 120.0000\n"
-                                            "linear 10.0000 10.0000 2.0000 f 120.0000\n");
+                                            "linear 10.0000 10.0000 -10.0000 f 120.0000 plunge\n"
+                                            "linear 10.0000 10.0000 2.0000 f 120.0000 exit\n");
 }
 
 TEST(CycleExpansion, ReturnPlaneIsNeverBelowR)
@@ -117,6 +118,6 @@ TEST(CycleExpansion, FromAPositionWhoseXYIsUnknown)
         t.add(r);
     EXPECT_EQ(traceOf(t), "rapid z 2.0000\n"
                           "rapid 10.0000 10.0000 2.0000\n"
-                          "linear 10.0000 10.0000 -10.0000 f 120.0000\n"
+                          "linear 10.0000 10.0000 -10.0000 f 120.0000 plunge\n"
                           "rapid 10.0000 10.0000 25.0000\n");
 }

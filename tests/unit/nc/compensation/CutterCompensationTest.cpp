@@ -44,6 +44,33 @@ TEST(CutterCompensation, OutsideCornerGoesAroundOnAnArcAboutTheCorner)
             EXPECT_EQ(p.source(i).line, 4);
 }
 
+TEST(CutterCompensation, MovesKeepTheirFeedKindAndACornerArcTakesTheNextMovesKind)
+{
+    Compensated c(CompensationRules::linuxCnc());
+    c.comp.setRadius(2.0, "tool 1");
+    c.block(1, Rapid{{-20, 0, 0}});
+    c.block(2, CutterComp{CutterCompSide::Left});
+    c.block(3, Linear{{0, 0, 0}, 100, {}, FeedKind::Cutting});
+    c.block(4, Linear{{0, -20, 0}, 200, {}, FeedKind::Finishing});  // outside corner before it
+    c.block(5, Arc{{10, -30, 0}, {10, -20, 0}, {0, 0, 1}, false, 0, 200, FeedKind::Finishing});
+    c.block(6, Linear{{10, -30, -2}, 50, {}, FeedKind::Plunge});  // in Z: waits behind the arc
+    c.block(7, CutterComp{CutterCompSide::Off});
+    c.block(8, Linear{{20, -40, -2}, 100, {}, FeedKind::Exit});
+    c.finish();
+    EXPECT_EQ(c.diagnostics(), "");
+    const auto lines = c.all<Linear>();
+    ASSERT_EQ(lines.size(), 4u);
+    EXPECT_EQ(lines[0].feedKind, FeedKind::Cutting);
+    EXPECT_EQ(lines[1].feedKind, FeedKind::Finishing);
+    EXPECT_EQ(lines[2].feedKind, FeedKind::Plunge);
+    EXPECT_EQ(lines[3].feedKind, FeedKind::Exit);
+    const auto arcs = c.all<Arc>();
+    ASSERT_EQ(arcs.size(), 2u);
+    EXPECT_EQ(arcs[0].feedMmPerMin, 200);  // round the corner: the next block's feed and kind
+    EXPECT_EQ(arcs[0].feedKind, FeedKind::Finishing);
+    EXPECT_EQ(arcs[1].feedKind, FeedKind::Finishing);  // the programmed arc, its radius changed
+}
+
 TEST(CutterCompensation, InsideCornerTrimsBothMovesToWhereTheirOffsetsMeet)
 {
     Compensated c(CompensationRules::linuxCnc());

@@ -35,6 +35,8 @@ ops::ToolController readTool(const json& t, const std::string& where)
         tc.tool.pointAngleDeg = number(t, "pointAngle", where);
     if (optionalMember(t, "centreCutting", where))
         tc.tool.centreCutting = boolean(t, "centreCutting", where);
+    if (optionalMember(t, "holder", where))
+        tc.tool.holder = text(t, "holder", where);
     return tc;
 }
 
@@ -158,6 +160,8 @@ std::string serializeJob(const Job& job)
             tool["pointAngle"] = tc.tool.pointAngleDeg;
         if (!tc.tool.centreCutting)
             tool["centreCutting"] = false;
+        if (!tc.tool.holder.empty())
+            tool["holder"] = tc.tool.holder;
         root["tools"].push_back(tool);
     }
     root["operations"] = ojson::array();

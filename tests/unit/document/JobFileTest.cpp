@@ -169,13 +169,24 @@ TEST(JobFile, ToolExtrasAreOptional)
     job.tools[0].rampFeedMmPerMin = 200;
     job.tools[0].tool.pointAngleDeg = 118;
     job.tools[0].tool.centreCutting = false;
+    job.tools[0].tool.holder = "SK40 ER32";
     const std::string text = document::serializeJob(job);
+    EXPECT_NE(text.find("\"holder\": \"SK40 ER32\""), std::string::npos) << text;
     auto read = document::parseJob(text, "job.camwb");
     ASSERT_TRUE(read.ok()) << read.error().toString();
     EXPECT_EQ(read->tools[0].rampFeedMmPerMin, 200);
     EXPECT_EQ(read->tools[0].tool.pointAngleDeg, 118);
     EXPECT_FALSE(read->tools[0].tool.centreCutting);
+    EXPECT_EQ(read->tools[0].tool.holder, "SK40 ER32");
+    // Left out when there is none, and a file without one reads as none.
     EXPECT_EQ(validText().find("rampFeed"), std::string::npos);
+    EXPECT_EQ(validText().find("holder"), std::string::npos);
+    auto plain = document::parseJob(validText(), "job.camwb");
+    ASSERT_TRUE(plain.ok()) << plain.error().toString();
+    EXPECT_EQ(plain->tools[0].tool.holder, "");
+    const auto notText = document::parseJob(replaced(text, "\"SK40 ER32\"", "40"), "job.camwb");
+    ASSERT_FALSE(notText.ok());
+    EXPECT_NE(notText.error().message.find("holder"), std::string::npos) << notText.error().message;
 }
 
 TEST(JobFile, MalformedJsonNamesLineAndColumn)

@@ -1,6 +1,7 @@
 #include "post/detail/ScriptBindings.h"
 
 #include "post/detail/BlockTemplates.h"
+#include "toolpath/RecordNames.h"
 
 #include <QJSValueIterator>
 
@@ -11,16 +12,6 @@
 namespace camwb::post {
 
 namespace {
-
-// TODO(merge): toolpath::FeedKind from the CL model.
-int feedKindCode(const std::string& name)
-{
-    const char* names[] = {"", "cutting", "plunge", "entry", "exit", "finishing"};
-    for (int i = 1; i < 6; ++i)
-        if (name == names[i])
-            return i;
-    return 0;
-}
 
 bool isIntegral(double value) { return std::isfinite(value) && value == std::floor(value) && std::abs(value) < 1e15; }
 
@@ -162,17 +153,17 @@ void VariableObject::setFeedParameters(const QJSValue& parameters)
     QJSValueIterator it(parameters);
     while (it.hasNext()) {
         it.next();
-        const int kind = feedKindCode(it.name().toStdString());
+        const std::optional<toolpath::FeedKind> kind = toolpath::feedKindNamed(it.name().toStdString());
         const QJSValue text = it.value().property(QStringLiteral("text"));
         const QJSValue feed = it.value().property(QStringLiteral("feed"));
-        if (kind <= 0 || !text.isString() || !feed.isNumber() || !(feed.toNumber() > 0)) {
+        if (!kind || !text.isString() || !feed.isNumber() || !(feed.toNumber() > 0)) {
             m_engine->throwError(QJSValue::TypeError,
                                  QStringLiteral("setFeedParameters(): '%1' needs a feed kind (cutting, plunge, entry, "
                                                 "exit, finishing) with {text: string, feed: number > 0}")
                                      .arg(it.name()));
             return;
         }
-        list.push_back({kind, text.toString().toStdString(), feed.toNumber()});
+        list.push_back({static_cast<int>(*kind), text.toString().toStdString(), feed.toNumber()});
     }
     m_feedParameters = std::move(list);
     m_value.reset();

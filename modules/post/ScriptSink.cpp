@@ -25,8 +25,8 @@ int compCode(CutterCompSide side)
     return side == CutterCompSide::Left ? 41 : side == CutterCompSide::Right ? 42 : 40;
 }
 
-// TODO(merge): the move's toolpath::FeedKind.
-template <typename Move> int feedKindOf(const Move&) { return 0; }
+// The feed kind as block templates take it (toolpath::FeedKind's value).
+template <typename Move> int feedKindOf(const Move& move) { return static_cast<int>(move.feedKind); }
 
 std::string counted(int count, const char* one, const char* many)
 {
@@ -51,7 +51,7 @@ public:
     explicit ScriptSink(ScriptRun& run) : m_run(run), m_caps(run.m_capabilities) {}
 
     void rapid(const Rapid& r) override;
-    void linear(const Linear& r) override { straight(Handler::Linear, r.to, r.axes, r.feedMmPerMin); }
+    void linear(const Linear& r) override { straight(Handler::Linear, r.to, r.axes, r.feedMmPerMin, feedKindOf(r)); }
     void arc(const Arc& r) override;
     void cycle(const Cycle& r) override;
     void toolChange(const ToolChange& r) override
@@ -137,6 +137,7 @@ public:
         tool.setProperty("length", t.lengthMm);
         tool.setProperty("flutes", t.flutes);
         tool.setProperty("pointAngle", t.pointAngleDeg);
+        tool.setProperty("holder", qs(t.holder));
         return tool;
     }
 

@@ -5,6 +5,7 @@
 #include "toolpath/RecordNames.h"
 
 #include <array>
+#include <initializer_list>
 #include <limits>
 #include <optional>
 
@@ -153,6 +154,24 @@ public:
         return kind.value_or(FeedKind::Unspecified);
     }
     bool atEnd() const { return m_index >= m_tokens.size(); }
+    // The next word when it is one of `names` (an optional field's key), consumed; else "".
+    std::string optionalKey(std::initializer_list<const char*> names)
+    {
+        if (failed() || atEnd() || m_tokens[m_index].quoted)
+            return {};
+        for (const char* name : names)
+            if (m_tokens[m_index].text == name) {
+                ++m_index;
+                return name;
+            }
+        return {};
+    }
+    // Fails on a word left over where only the optional fields `what` may follow.
+    void expectEnd(const std::string& what)
+    {
+        if (!failed() && !atEnd())
+            fail("unexpected '" + std::string(m_tokens[m_index].text) + "' (" + what + ")", m_tokens[m_index].column);
+    }
     void end()
     {
         if (!failed() && !atEnd())
@@ -254,10 +273,16 @@ base::Result<ClImport> readTrace(base::LineReader& lines, const std::string& fil
             in.keyword("len");
             t.lengthMm = in.number();
             t.name = in.text();
-            if (!in.atEnd()) {
-                in.keyword("holder");
-                t.holder = in.text();
+            // Optional fields, each written only when it is not its default.
+            for (std::string key; !(key = in.optionalKey({"flutes", "angle", "holder"})).empty();) {
+                if (key == "flutes")
+                    t.flutes = in.integer();
+                else if (key == "angle")
+                    t.pointAngleDeg = in.number();
+                else
+                    t.holder = in.text();
             }
+            in.expectEnd("after a tool's name: flutes N, angle A, holder \"...\"");
             record = ToolChange{t};
         } else if (kind == "spindle") {
             Spindle s{in.number()};
@@ -343,6 +368,11 @@ base::Result<ClImport> readTrace(base::LineReader& lines, const std::string& fil
             s.feeds.cuttingMmPerMin = in.number();
             in.keyword("plunge");
             s.feeds.plungeMmPerMin = in.number();
+            for (std::string key; !(key = in.optionalKey({"entry", "exit", "finish"})).empty();)
+                (key == "entry"  ? s.feeds.entryMmPerMin
+                 : key == "exit" ? s.feeds.exitMmPerMin
+                                 : s.feeds.finishingMmPerMin) = in.number();
+            in.expectEnd("after a section's plunge feed: entry F, exit F, finish F");
             record = s;
             section = sections++;
         } else if (kind == "endsection") {

@@ -66,7 +66,9 @@ void TraceWriter::toolChange(const ToolChange& r)
     const Tool& t = r.tool;
     m_out += "tool " + std::to_string(t.number) + " " + t.kind + " d " + num(t.diameterMm) + " r " +
              num(t.cornerRadiusMm) + " flute " + num(t.fluteLengthMm) + " len " + num(t.lengthMm) + " " +
-             quoted(t.name) + (t.holder.empty() ? "" : " holder " + quoted(t.holder)) + "\n";
+             quoted(t.name) + (t.flutes != Tool{}.flutes ? " flutes " + std::to_string(t.flutes) : "") +
+             (t.pointAngleDeg > 0 ? " angle " + num(t.pointAngleDeg) : "") +
+             (t.holder.empty() ? "" : " holder " + quoted(t.holder)) + "\n";
 }
 
 void TraceWriter::spindle(const Spindle& r)
@@ -106,7 +108,15 @@ void TraceWriter::sectionBegin(const SectionBegin& r)
     // An empty strategy is "-", so that the line keeps its fields.
     m_out += "section " + quoted(r.operationName) + " " + (r.strategy.empty() ? "-" : r.strategy) + " tool " +
              std::to_string(r.toolNumber) + " cut " + num(r.feeds.cuttingMmPerMin) + " plunge " +
-             num(r.feeds.plungeMmPerMin) + '\n';
+             num(r.feeds.plungeMmPerMin);
+    // The other feeds only when the section has them, so that older traces stay as they were.
+    if (r.feeds.entryMmPerMin > 0)
+        m_out += " entry " + num(r.feeds.entryMmPerMin);
+    if (r.feeds.exitMmPerMin > 0)
+        m_out += " exit " + num(r.feeds.exitMmPerMin);
+    if (r.feeds.finishingMmPerMin > 0)
+        m_out += " finish " + num(r.feeds.finishingMmPerMin);
+    m_out += '\n';
 }
 
 void TraceWriter::sectionEnd(const SectionEnd&) { m_out += "endsection\n"; }

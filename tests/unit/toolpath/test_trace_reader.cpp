@@ -109,7 +109,7 @@ TEST(TraceReader, FeedKindsAndHoldersReadBackIntoTheRecords)
     EXPECT_EQ(failure("linear 1 2 3 f 500 plunge plunge\n").toString(),
               "in.trace:1:27: unexpected 'plunge' at the end of the line");
     EXPECT_EQ(failure("tool 1 flat d 6 r 0 flute 20 len 45 \"D6\" holds \"x\"\n").toString(),
-              "in.trace:1:42: expected 'holder', found 'holds'");
+              "in.trace:1:42: unexpected 'holds' (after a tool's name: flutes N, angle A, holder \"...\")");
     EXPECT_EQ(failure("tool 1 flat d 6 r 0 flute 20 len 45 \"D6\" holder\n").toString(),
               "in.trace:1:48: expected a quoted text at the end of the line");
 }
@@ -161,4 +161,25 @@ TEST(TraceReader, MovesThatGiveOnlySomeAxesNameThem)
     EXPECT_EQ(failure("rapid x 1 x 2\n").toString(), "in.trace:1:11: axis 'x' out of order or given twice (x, y, z)");
     EXPECT_EQ(failure("rapid x\n").toString(), "in.trace:1:8: expected a number at the end of the line");
     EXPECT_EQ(failure("linear x 1 q 2 f 10\n").toString(), "in.trace:1:12: expected 'f', found 'q'");
+}
+
+// A tool's flutes and point angle and a section's other feeds are fields a trace must keep: a
+// post writes them (Klartext's tool box and list, its parametric feeds); only non-defaults appear.
+TEST(TraceReader, ToolDataAndSectionFeedsRoundTrip)
+{
+    const std::string text = "section \"Holes\" drilling tool 2 cut 900.0000 plunge 300.0000 entry 450.0000 exit "
+                             "600.0000 finish 1500.0000\n"
+                             "tool 2 drill d 3.0000 r 0.0000 flute 20.0000 len 40.0000 \"D3\" flutes 3 angle 118.0000 "
+                             "holder \"BT40\"\n"
+                             "endsection\n";
+    auto read = camwb::toolpath::readTrace(text, "in.trace");
+    ASSERT_TRUE(read.ok()) << read.error().toString();
+    const auto& tool = std::get<camwb::toolpath::ToolChange>(read->toolpath.record(1)).tool;
+    EXPECT_EQ(tool.flutes, 3);
+    EXPECT_EQ(tool.pointAngleDeg, 118);
+    const auto& section = std::get<camwb::toolpath::SectionBegin>(read->toolpath.record(0));
+    EXPECT_EQ(section.feeds.finishingMmPerMin, 1500);
+    EXPECT_EQ(section.feeds.entryMmPerMin, 450);
+    EXPECT_EQ(section.feeds.exitMmPerMin, 600);
+    EXPECT_EQ(camwb::toolpath::traceOf(read->toolpath), text);
 }

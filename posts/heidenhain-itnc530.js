@@ -52,6 +52,10 @@ var post = {
             title: "M135 M126 in the header", type: "bool", default: true,
             description: "M135: no exact stop at rotary transitions; M126: rotary axes take the shorter way"
         },
+        travelReport: {
+            title: "Travel report", type: "bool", default: true,
+            description: "The smallest and largest position of each axis as comments before END PGM (seed-000 5.9)"
+        },
         stopBeforeToolCall: {
             title: "Stop before each tool call (Stop_M0)", type: "bool", default: false,
             description: "M0 before every TOOL CALL, for the operator who changes the tool by hand"
@@ -393,13 +397,13 @@ function onPassThrough(text) {
     writeBlock(text);
 }
 
-// The first move after a tool call writes all its axes and its feed again.
+// The first move after a tool call writes all its axes and its feed again. R0/RL/RR stay what
+// was last written (rapids always write theirs; a cycle's positioning writes R0 only if needed).
 function forceMotion() {
     xOutput.reset();
     yOutput.reset();
     zOutput.reset();
     feedOutput.reset();
-    compOutput.reset();
 }
 
 // --- Cycles: 200/201/203/205/207 with the Q lists in the control's order ----------------------
@@ -533,6 +537,7 @@ function onClose() {
             writeBlock("L", retract, compOutput.format("R0"), "FMAX");
     }
     writeBlock("L", "M30");
-    travelReport();
+    if (getProperty("travelReport"))
+        travelReport();
     writeBlock("END PGM", pgmName, unitWord);
 }

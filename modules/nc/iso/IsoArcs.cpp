@@ -4,12 +4,16 @@
 // normal to the plane, as LinuxCNC draws it.
 #include "nc/iso/IsoMachine.h"
 
+#include "nc/detail/PlaneAxes.h"
+
 #include <cmath>
 #include <string>
 
 namespace camwb::nc::iso {
 
 using namespace camwb::toolpath;
+using detail::component;
+using detail::setComponent;
 
 namespace {
 
@@ -31,9 +35,6 @@ PlaneAxes axesOf(int plane)
         return {0, 1, 'I', 'J', 'K', {0, 0, 1}};
     }
 }
-
-double component(const Vec3& v, int axis) { return axis == 0 ? v.x : axis == 1 ? v.y : v.z; }
-void setComponent(Vec3& v, int axis, double value) { (axis == 0 ? v.x : axis == 1 ? v.y : v.z) = value; }
 
 std::string mm(double v)
 {

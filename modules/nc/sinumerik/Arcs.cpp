@@ -4,6 +4,8 @@
 // a helix. Start and end radii that differ by more than the tolerance are an error.
 #include "nc/sinumerik/Machine.h"
 
+#include "nc/detail/PlaneAxes.h"
+
 #include <cmath>
 #include <numbers>
 
@@ -12,23 +14,10 @@ namespace camwb::nc::sinumerik {
 namespace {
 
 using namespace camwb::toolpath;
-
-struct PlaneAxes {
-    int u, v, w;  // u x v = w: counter-clockwise seen from +w
-    Vec3 normal;
-};
-
-PlaneAxes planeAxes(int plane)
-{
-    if (plane == 18)
-        return {2, 0, 1, {0, 1, 0}};
-    if (plane == 19)
-        return {1, 2, 0, {1, 0, 0}};
-    return {0, 1, 2, {0, 0, 1}};
-}
-
-double get(const Vec3& p, int i) { return i == 0 ? p.x : i == 1 ? p.y : p.z; }
-void set(Vec3& p, int i, double value) { (i == 0 ? p.x : i == 1 ? p.y : p.z) = value; }
+using detail::component;
+using detail::PlaneAxes;
+using detail::planeAxes;
+using detail::setComponent;
 
 std::string mm(double v)
 {
@@ -44,8 +33,8 @@ bool Machine::arc(const Program& p, const Vec3& to, bool clockwise, const ArcWor
     const PlaneAxes axes = planeAxes(m_modal.plane);
     const Vec3 start = m_pos;
     Vec3 end = to;
-    const double su = get(start, axes.u), sv = get(start, axes.v);
-    double eu = get(end, axes.u), ev = get(end, axes.v);
+    const double su = component(start, axes.u), sv = component(start, axes.v);
+    double eu = component(end, axes.u), ev = component(end, axes.v);
     const double tol = m_options.arcRadiusToleranceMm;
     constexpr double kDeg = std::numbers::pi / 180.0;
     auto fail = [&](const std::string& message) {
@@ -68,7 +57,7 @@ bool Machine::arc(const Program& p, const Vec3& to, bool clockwise, const ArcWor
     };
     const bool hasCentre =
         words.centre[static_cast<std::size_t>(axes.u)] || words.centre[static_cast<std::size_t>(axes.v)];
-    const bool endGiven = eu != su || ev != sv || get(end, axes.w) != get(start, axes.w);
+    const bool endGiven = eu != su || ev != sv || component(end, axes.w) != component(start, axes.w);
     double cu = 0, cv = 0;
     if (hasCentre) {
         cu = centreOf(axes.u, su);
@@ -79,8 +68,8 @@ bool Machine::arc(const Program& p, const Vec3& to, bool clockwise, const ArcWor
             const double du = su - cu, dv = sv - cv;
             eu = cu + du * std::cos(a) - dv * std::sin(a);
             ev = cv + du * std::sin(a) + dv * std::cos(a);
-            set(end, axes.u, eu);
-            set(end, axes.v, ev);
+            setComponent(end, axes.u, eu);
+            setComponent(end, axes.v, ev);
         }
     } else if (words.cr || words.ar) {
         const double du = eu - su, dv = ev - sv;
@@ -126,9 +115,9 @@ bool Machine::arc(const Program& p, const Vec3& to, bool clockwise, const ArcWor
                     mm(std::abs(rs - re)) + " mm (more than " + mm(tol) + ")");
     Arc a;
     a.to = end;
-    set(a.center, axes.u, cu);
-    set(a.center, axes.v, cv);
-    set(a.center, axes.w, get(start, axes.w));
+    setComponent(a.center, axes.u, cu);
+    setComponent(a.center, axes.v, cv);
+    setComponent(a.center, axes.w, component(start, axes.w));
     a.normal = axes.normal;
     a.clockwise = clockwise;
     a.turns = words.turn;

@@ -36,7 +36,7 @@ public:
             const int line = m_c.line(), column = m_c.column();
             const Cursor::Mark start = m_c.mark();
             const std::string_view name = m_c.letters();
-            if (name.empty() || !word(name, line, column)) {
+            if (name.empty() || !(word(name, line, column) || parameterValued(name, start, line, column))) {
                 m_c.reset(start);
                 const std::string_view bad = m_c.token();
                 error(line, column, "unknown word '" + std::string(bad) + "'");
@@ -86,6 +86,22 @@ private:
         }
         skipToken();
         return true;
+    }
+
+    // An address run into its parameter without a sign, as the control writes FQ601 (= F+Q601):
+    // the letters before Q, QL or QR are the address and the parameter is its value.
+    bool parameterValued(std::string_view name, Cursor::Mark start, int line, int column)
+    {
+        for (std::string_view kind : {"QL", "QR", "Q"}) {
+            if (name.size() <= kind.size() || !equalsIgnoreCase(name.substr(name.size() - kind.size()), kind))
+                continue;
+            const std::string_view address = name.substr(0, name.size() - kind.size());
+            m_c.reset(start);
+            m_c.advance(static_cast<int>(address.size()));
+            if (word(address, line, column))
+                return true;
+        }
+        return false;
     }
 
     void skipToken()

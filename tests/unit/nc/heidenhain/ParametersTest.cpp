@@ -84,6 +84,20 @@ TEST(HeidenhainParameters, ParametricFeedOfTheThesis)
     EXPECT_EQ(comments[0].text, "hrubovaci");
 }
 
+TEST(HeidenhainParameters, ParametricFeedWithoutSign)
+{
+    // FQ601 is F+Q601 as the control writes it; QL and QR parameters likewise.
+    const Traced r = run("0 BEGIN PGM T MM\n1 Q601=900\n2 QL3=450\n3 L X+1 FQ601\n4 L X+2 F+Q601\n"
+                         "5 L X+3 FQL3\n6 L X+4 F\n7 END PGM T MM\n");
+    const auto lines = r.all<Linear>();
+    ASSERT_EQ(lines.size(), 3u) << r.trace();
+    EXPECT_EQ(lines[0].feedMmPerMin, 900);
+    EXPECT_EQ(lines[1].feedMmPerMin, 900);
+    EXPECT_EQ(lines[2].feedMmPerMin, 450);
+    ASSERT_EQ(r.result.diagnostics.size(), 1u);
+    EXPECT_TRUE(r.has(Severity::Error, 7, "missing value after 'F'")) << r.diagnostics()[0];
+}
+
 TEST(HeidenhainParameters, ConditionalJumpsMakeALoop)
 {
     // Five holes along X with FN 12 (less than) and FN 9 (equal) exits.

@@ -78,6 +78,7 @@ CompensationRules CompensationRules::heidenhain()
     CompensationRules rules = sinumerik();
     rules.selectWords = "RL/RR";
     rules.cancelWord = "R0";
+    rules.arcOutsideXyIsError = true;
     return rules;
 }
 
@@ -220,10 +221,15 @@ void CutterCompensation::arc(const Arc& r)
     e.end = r.to.xy();
     e.center = r.center.xy();
     e.clockwise = r.normal.z < 0 ? !r.clockwise : r.clockwise;
-    if (m_state != State::Off && std::abs(std::abs(r.normal.z) - 1) > 1e-9 && active()) {
-        report(Severity::Warning, std::string("cutter compensation (") + m_rules.selectWords +
-                                      ") is traced in the XY plane only: this arc in another plane is traced as "
-                                      "programmed");
+    const bool outsideXy = m_state != State::Off && std::abs(std::abs(r.normal.z) - 1) > 1e-9;
+    if (outsideXy && (m_rules.arcOutsideXyIsError || active())) {
+        const std::string words = std::string("cutter compensation (") + m_rules.selectWords + ")";
+        if (m_rules.arcOutsideXyIsError)
+            report(Severity::Error, words + " works in the XY working plane: an arc in another plane is not allowed "
+                                            "with it (traced as programmed)");
+        else
+            report(Severity::Warning, words + " is traced in the XY plane only: this arc in another plane is traced "
+                                              "as programmed");
         flush();
         passProgrammed(Record(r), r.to);
         m_state = State::Starting;

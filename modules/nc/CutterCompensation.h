@@ -38,6 +38,9 @@ struct CompensationRules {
     bool rapidCornersStraight = false;
     // Entry move not longer than the radius: LinuxCNC refuses it (error); others warn.
     bool shortEntryIsError = false;
+    // An arc outside the XY plane while compensation is on: Heidenhain compensates in the working
+    // plane only (error, whether the radius is known or not); others warn, as it is traced in XY only.
+    bool arcOutsideXyIsError = false;
     const char* selectWords = "G41/G42";  // in messages
     const char* cancelWord = "G40";
 

@@ -1,12 +1,11 @@
-// Contour elements of Klartext: L, LP (polar about CC), C (about CC), CR (radius), CT (tangential),
-// CP (polar circle and helix), APPR/DEP (straight approximations), and the RND/CHF corners between
-// two lines, which shorten the element before them (planned here with a look-ahead).
+// Contour elements of Klartext: L and APPR/DEP (straight approximations) here, the circles and
+// polar moves in Circles.cpp; sending them, and the RND/CHF corners between two elements in the XY
+// plane, which shorten the element before them (planned here with a look-ahead).
 #include "nc/heidenhain/Machine.h"
 
-#include "base/NumberFormat.h"
+#include "nc/detail/PlaneAxes.h"
 
 #include <cmath>
-#include <numbers>
 
 namespace camwb::nc::heidenhain {
 
@@ -14,10 +13,7 @@ using namespace camwb::toolpath;
 
 namespace {
 
-constexpr double kDeg = std::numbers::pi / 180.0;
 constexpr double kEps = 1e-9;
-
-double& axis(Vec3& v, int i) { return i == 0 ? v.x : (i == 1 ? v.y : v.z); }
 
 bool isContour(BlockKind k)
 {
@@ -26,9 +22,6 @@ bool isContour(BlockKind k)
 }
 
 bool isFiller(BlockKind k) { return k == BlockKind::Empty || k == BlockKind::Comment; }
-
-// Four decimals, independent of the C locale (the GUI sets the user's).
-std::string mm(double v) { return base::formatFixed(v, 4); }
 
 }  // namespace
 
@@ -44,44 +37,16 @@ std::optional<Vec3> Machine::target(const Block& b, const BlockWords& w, const V
             return std::nullopt;
         }
         if (absolute)
-            axis(t, i) = axis(m_shift, i) + *absolute * m_scale;
+            detail::setComponent(t, i, detail::component(m_shift, i) + *absolute * m_scale);
         if (incremental)
-            axis(t, i) += *incremental * m_scale;
+            detail::setComponent(t, i, detail::component(t, i) + *incremental * m_scale);
     }
     return t;
 }
 
-std::optional<Element> Machine::plan(const Block& b, const BlockWords& w, const Vec3& from, const Vec2& cc, bool ccSet,
-                                     std::optional<Vec2> tangent, bool quiet)
+std::optional<Element> Machine::plan(const Block& b, const BlockWords& w, const Vec3& from, const Pole& pole,
+                                     const Tangents& tangents, bool quiet)
 {
-    auto fail = [&](const std::string& message) -> std::optional<Element> {
-        if (!quiet)
-            report(Severity::Error, b.line, b.column, message);
-        return std::nullopt;
-    };
-    auto needPole = [&]() {
-        if (ccSet)
-            return true;
-        if (!quiet)
-            report(Severity::Error, b.line, b.column, "no circle centre CC programmed before this block");
-        return false;
-    };
-    auto direction = [&](bool& clockwise) {
-        if (w.direction != 0) {
-            clockwise = w.direction < 0;
-            return true;
-        }
-        if (m_lastDirection != 0) {
-            clockwise = m_lastDirection < 0;
-            if (!quiet)
-                report(Severity::Warning, b.line, b.column, "no DR+ or DR-: the previous direction is used");
-            return true;
-        }
-        if (!quiet)
-            report(Severity::Error, b.line, b.column, "the direction of rotation DR+ or DR- is missing");
-        return false;
-    };
-
     Element e;
     e.start = from;
     const auto to = target(b, w, from, quiet);
@@ -93,6 +58,7 @@ std::optional<Element> Machine::plan(const Block& b, const BlockWords& w, const 
     case BlockKind::Line:
     case BlockKind::Approach:
         if (!w.hasXyz()) {
+            const auto& tangent = tangents[0];
             if (b.kind == BlockKind::Approach && b.flag && w.len && tangent) {
                 // DEP LT LEN: straight on along the contour's tangent.
                 const Vec2 d = *tangent * (*w.len * m_scale);
@@ -103,140 +69,12 @@ std::optional<Element> Machine::plan(const Block& b, const BlockWords& w, const 
         }
         e.type = Element::Type::Line;
         return e;
-    case BlockKind::LinePolar: {
-        if (!needPole())
-            return std::nullopt;
-        const Vec2 rel = from.xy() - cc;
-        double r = rel.length();
-        double a = std::atan2(rel.y, rel.x) / kDeg;
-        if (w.pr)
-            r = *w.pr * m_scale;
-        if (w.ipr)
-            r += *w.ipr * m_scale;
-        if (w.pa)
-            a = *w.pa;
-        if (w.ipa)
-            a += *w.ipa;
-        if (r < 0)
-            return fail("negative polar radius PR");
-        e.end.x = cc.x + r * std::cos(a * kDeg);
-        e.end.y = cc.y + r * std::sin(a * kDeg);
-        e.type = Element::Type::Line;
-        return e;
-    }
-    case BlockKind::Circle: {
-        if (!needPole() || !direction(e.clockwise))
-            return std::nullopt;
-        e.type = Element::Type::Arc;
-        e.center = cc;
-        const double rs = distance(from.xy(), cc);
-        const double re = distance(e.end.xy(), cc);
-        if (rs < kEps)
-            return fail("circle start lies on its centre CC");
-        if (!(m_knownX && m_knownY)) {
-            if (!quiet)
-                report(Severity::Warning, b.line, b.column,
-                       "the circle's start point is unknown (no X and Y programmed before it): radius not checked");
-        } else if (std::abs(rs - re) > m_options.arcRadiusToleranceMm && !quiet)
-            report(Severity::Error, b.line, b.column,
-                   "arc start radius " + mm(rs) + " and end radius " + mm(re) + " about CC differ by " +
-                       mm(std::abs(rs - re)) + " mm (tolerance " + mm(m_options.arcRadiusToleranceMm) + ")");
-        if (distance(from.xy(), e.end.xy()) < kEps)
-            e.end = {from.x, from.y, e.end.z};  // full circle
-        return e;
-    }
-    case BlockKind::CircleRadius: {
-        if (!w.radius)
-            return fail("CR needs the radius R");
-        if (!direction(e.clockwise))
-            return std::nullopt;
-        const double radius = *w.radius * m_scale;
-        const Vec2 chord = e.end.xy() - from.xy();
-        const double d = chord.length();
-        if (std::abs(radius) < kEps)
-            return fail("CR radius is zero");
-        if (d < kEps)
-            return fail("CR end point equals its start point (a full circle needs C)");
-        const double half = d / 2;
-        if (half > std::abs(radius) + m_options.arcRadiusToleranceMm)
-            return fail("CR radius " + mm(std::abs(radius)) + " is smaller than half the chord " + mm(half));
-        const double h = std::sqrt(std::max(0.0, radius * radius - half * half));
-        const Vec2 mid = (from.xy() + e.end.xy()) * 0.5;
-        const Vec2 left = (chord * (1.0 / d)).leftNormal();
-        // Counter-clockwise arcs of up to 180 degrees (R+) turn about a centre on the chord's left.
-        const bool centreLeft = (!e.clockwise) == (radius > 0);
-        e.center = mid + left * (centreLeft ? h : -h);
-        e.type = Element::Type::Arc;
-        return e;
-    }
-    case BlockKind::CircleTangent: {
-        if (!tangent) {
-            if (!quiet)
-                report(Severity::Error, b.line, b.column, "CT needs a preceding contour element to be tangent to");
-            return std::nullopt;
-        }
-        const Vec2 v = e.end.xy() - from.xy();
-        if (v.length() < kEps)
-            return fail("CT end point equals its start point");
-        const double cross = tangent->cross(v);
-        if (std::abs(cross) < 1e-12 * v.length()) {
-            e.type = Element::Type::Line;  // the end lies on the tangent: a straight line
-            return e;
-        }
-        const double r = v.dot(v) / (2 * cross);  // signed: > 0 centre on the left (counter-clockwise)
-        e.center = from.xy() + tangent->leftNormal() * r;
-        e.clockwise = r < 0;
-        e.type = Element::Type::Arc;
-        return e;
-    }
-    case BlockKind::CirclePolar: {
-        if (!needPole())
-            return std::nullopt;
-        const Vec2 rel = from.xy() - cc;
-        const double r = rel.length();
-        if (r < kEps)
-            return fail("CP start lies on the pole CC");
-        const double a0 = std::atan2(rel.y, rel.x) / kDeg;
-        double sweep = 0;
-        if (w.ipa) {
-            sweep = *w.ipa;
-            if (std::abs(sweep) > 5400)
-                return fail("IPA out of the control's range (+-5400 degrees)");
-            if (std::abs(sweep) < kEps)
-                return fail("CP with IPA 0");
-            if (w.direction != 0 && (w.direction > 0) != (sweep > 0) && !quiet)
-                report(Severity::Warning, b.line, b.column,
-                       "DR and IPA have different signs: the sign of IPA decides the direction");
-            e.clockwise = sweep < 0;
-        } else if (w.pa) {
-            if (!direction(e.clockwise))
-                return std::nullopt;
-            double s = std::fmod(*w.pa - a0, 360.0);
-            if (e.clockwise)
-                s = -std::fmod(a0 - *w.pa, 360.0);
-            if (!e.clockwise && s <= kEps)
-                s += 360;
-            if (e.clockwise && s >= -kEps)
-                s -= 360;
-            sweep = s;
-        } else {
-            return fail("CP needs PA or IPA");
-        }
-        const double total = std::abs(sweep);
-        e.turns = std::max(0, static_cast<int>(std::ceil(total / 360.0 - 1e-9)) - 1);
-        const double a1 = (a0 + sweep) * kDeg;
-        const double laps = total / 360.0;
-        if (std::abs(laps - std::round(laps)) < 1e-12) {
-            e.end.x = from.x;  // whole laps end exactly where they began
-            e.end.y = from.y;
-        } else {
-            e.end.x = cc.x + r * std::cos(a1);
-            e.end.y = cc.y + r * std::sin(a1);
-        }
-        e.center = cc;
-        e.type = Element::Type::Arc;
-        return e;
-    }
+    case BlockKind::LinePolar:
+    case BlockKind::Circle:
+    case BlockKind::CircleRadius:
+    case BlockKind::CircleTangent:
+    case BlockKind::CirclePolar:
+        return planCircle(b, w, e, pole, tangents, quiet);
     default:
         return e;
     }
@@ -268,15 +106,15 @@ bool Machine::checkKnown(const Block& b, const BlockWords& w, AxisMask& given)
     switch (b.kind) {
     case BlockKind::LinePolar:
         if (w.pr && w.pa && !w.ipr && !w.ipa)
-            given = given | kXyAxes;  // about the pole, which is known (circleCenter)
-        else if (!needKnown(b, kXyAxes, kNoAxes, kNoAxes, "the polar move from the current position"))
+            given = given | planeMask(m_pole.plane);  // about the pole, which is known (centreOf)
+        else if (!needKnown(b, planeMask(m_pole.plane), kNoAxes, kNoAxes, "the polar move from the current position"))
             return false;
         break;
     case BlockKind::Circle:
     case BlockKind::CircleRadius:
     case BlockKind::CircleTangent:
     case BlockKind::CirclePolar:
-        if (!needKnown(b, kXyAxes, AxisMask{}, given, "the circle"))
+        if (!needKnown(b, planeMask(circlePlane(b.kind, w, m_pole)), AxisMask{}, given, "the circle"))
             return false;
         break;
     case BlockKind::Approach:
@@ -288,35 +126,6 @@ bool Machine::checkKnown(const Block& b, const BlockWords& w, AxisMask& given)
     }
     return m_comp == CutterCompSide::Off || !w.hasXyz() ||
            needKnown(b, kXyAxes, AxisMask{}, given, "cutter compensation");
-}
-
-void Machine::circleCenter(const Block& b)
-{
-    BlockWords w;
-    if (!gather(b, w, false))
-        return;
-    AxisMask incremental = kNoAxes, given = kNoAxes;
-    for (int i = 0; i < 2; ++i) {
-        if (w.axes[static_cast<std::size_t>(i)])
-            given.bits |= axisBit(i).bits;
-        if (w.axes[static_cast<std::size_t>(9 + i)])
-            incremental.bits |= axisBit(i).bits;
-    }
-    if (!needKnown(b, incremental, kXyAxes, given, "the circle centre CC"))
-        return;
-    if (!w.hasXyz()) {
-        m_cc = m_pos.xy();  // CC alone: the last programmed position
-        m_ccSet = true;
-        return;
-    }
-    if (w.pr || w.pa || w.ipr || w.ipa) {
-        report(Severity::Error, b.line, b.column, "a polar CC is not supported");
-        return;
-    }
-    if (const auto t = target(b, w, m_pos, false)) {
-        m_cc = t->xy();
-        m_ccSet = true;
-    }
 }
 
 // A contour or M-only block in the control's order: spindle and coolant, compensation, feed, the
@@ -362,7 +171,7 @@ bool Machine::applyMotion(const Block& b, const BlockWords& w)
         e = m_corner.next;  // planned from the corner before it (RND/CHF)
         e->start = m_pos;
     } else {
-        e = plan(b, w, m_pos, m_cc, m_ccSet, m_tangent, false);
+        e = plan(b, w, m_pos, m_pole, m_tangents, false);
     }
     m_corner.nextPending = false;
     if (e && e->type != Element::Type::None) {
@@ -374,11 +183,13 @@ bool Machine::applyMotion(const Block& b, const BlockWords& w)
         send(*e, rapid, m_feed);
         moved = true;
     }
-    // Absolute X/Y (or a polar end about a known pole) make the position known.
-    m_knownX = m_knownX || w.axes[0].has_value();
-    m_knownY = m_knownY || w.axes[1].has_value();
-    if (b.kind == BlockKind::LinePolar && w.pr && w.pa && m_ccSet)
-        m_knownX = m_knownY = true;
+    // Absolute coordinates (or a polar end about a known pole) make the position known.
+    for (int i = 0; i < 3; ++i) {
+        if (w.axes[static_cast<std::size_t>(i)])
+            m_programmed.bits |= axisBit(i).bits;
+    }
+    if (b.kind == BlockKind::LinePolar && w.pr && w.pa && m_pole.set)
+        m_programmed = m_programmed | planeMask(m_pole.plane);
     return moved;
 }
 
@@ -398,18 +209,21 @@ void Machine::send(const Element& e, bool rapid, double feed)
             m_warned.set(kWarnRapidArc);
             report(Severity::Warning, program().blocks[m_pc].line, 0, "FMAX on a circle: traced at the modal feed");
         }
+        const detail::PlaneAxes plane = detail::planeAxes(e.plane);
         Arc arc;
         arc.to = e.end;
-        arc.center = {e.center.x, e.center.y, e.start.z};
-        arc.normal = {0, 0, 1};
+        arc.center = detail::withInPlane(e.start, plane, e.center);  // at the start's height along the normal
+        arc.normal = plane.normal;
         arc.clockwise = e.clockwise;
         arc.turns = e.turns;
         arc.feedMmPerMin = feed;
         m_sink.arc(arc);
     }
     m_pos = e.end;
-    if (const auto t = endTangent(e))
-        m_tangent = t;
+    for (int plane = 17; plane <= 19; ++plane) {
+        if (const auto t = endTangent(e, plane))
+            m_tangents[static_cast<std::size_t>(plane - 17)] = t;
+    }
 }
 
 // Looks past the current element for RND/CHF and the element after it; when both neighbours
@@ -430,8 +244,7 @@ void Machine::planCorner(Element& element, std::size_t index)
         m_cornerWarnedBlock = index;
     };
 
-    Vec2 cc = m_cc;
-    bool ccSet = m_ccSet;
+    Pole pole = m_pole;
     std::size_t next = index + 1;
     for (; next < blocks.size(); ++next) {
         const Block& nb = blocks[next];
@@ -441,12 +254,8 @@ void Machine::planCorner(Element& element, std::size_t index)
             break;
         BlockWords cw;
         if (gather(nb, cw, true)) {
-            if (!cw.hasXyz()) {
-                cc = element.end.xy();
-            } else if (const auto t = target(nb, cw, element.end, true)) {
-                cc = t->xy();
-            }
-            ccSet = true;
+            if (const auto p = centreOf(nb, cw, element.end, pole, true))
+                pole = *p;
         }
     }
     if (next >= blocks.size() || !isContour(blocks[next].kind))
@@ -455,9 +264,18 @@ void Machine::planCorner(Element& element, std::size_t index)
     BlockWords nw;
     if (!gather(blocks[next], nw, true))
         return;
-    const auto following = plan(blocks[next], nw, element.end, cc, ccSet, endTangent(element), true);
+    Tangents tangents = m_tangents;
+    for (int plane = 17; plane <= 19; ++plane) {
+        if (const auto t = endTangent(element, plane))
+            tangents[static_cast<std::size_t>(plane - 17)] = t;
+    }
+    const auto following = plan(blocks[next], nw, element.end, pole, tangents, true);
     if (!following || following->type == Element::Type::None)
         return;
+    auto outsideXy = [](const Element& e) { return e.type == Element::Type::Arc && e.plane != 17; };
+    if (outsideXy(element) || outsideXy(*following))
+        return warn(Severity::Warning, std::string(round ? "RND" : "CHF") +
+                                           " next to a circle outside the XY working plane is not traced: ignored");
     if (!round && (element.type != Element::Type::Line || following->type != Element::Type::Line))
         return warn(Severity::Warning, "CHF is a chamfer between two straight lines: next to a circle it is ignored");
 

@@ -2,6 +2,8 @@
 // intersection of both elements offset by the radius towards the inside of the turn.
 #include "nc/heidenhain/Geometry.h"
 
+#include "nc/detail/PlaneAxes.h"
+
 #include <cmath>
 #include <numbers>
 #include <vector>
@@ -11,6 +13,30 @@ namespace camwb::nc::heidenhain {
 namespace {
 
 constexpr double kEps = 1e-9;
+
+using detail::inPlane;
+using detail::planeAxes;
+
+// The unit direction of travel at `at` (on an arc; a line's own direction) in `plane`.
+std::optional<Vec2> tangentAt(const Element& e, const Vec3& at, int plane)
+{
+    const detail::PlaneAxes in = planeAxes(plane);
+    Vec2 d;
+    if (e.type == Element::Type::Line) {
+        d = inPlane(e.end - e.start, in);
+    } else if (e.type == Element::Type::Arc) {
+        const detail::PlaneAxes own = planeAxes(e.plane);
+        const Vec2 radial = inPlane(at, own) - e.center;
+        if (radial.length() < kEps)
+            return std::nullopt;
+        d = e.clockwise ? radial.rightNormal() : radial.leftNormal();
+        if (e.plane != plane)
+            d = inPlane(detail::withInPlane(Vec3{}, own, d), in);  // the 3D tangent seen in `plane`
+    } else {
+        return std::nullopt;
+    }
+    return d.length() < kEps ? std::nullopt : std::optional<Vec2>(d.normalized());
+}
 
 // A line (point and unit direction) or a circle (centre and radius) in the plane.
 struct Curve {
@@ -103,32 +129,11 @@ bool within(const Element& e, const Vec2& p)
 
 }  // namespace
 
-std::optional<Vec2> startTangent(const Element& e)
-{
-    if (e.type == Element::Type::Line) {
-        const Vec2 d = (e.end - e.start).xy();
-        return d.length() < kEps ? std::nullopt : std::optional<Vec2>(d.normalized());
-    }
-    if (e.type == Element::Type::Arc) {
-        const Vec2 radial = e.start.xy() - e.center;
-        if (radial.length() < kEps)
-            return std::nullopt;
-        return (e.clockwise ? radial.rightNormal() : radial.leftNormal()).normalized();
-    }
-    return std::nullopt;
-}
+std::optional<Vec2> startTangent(const Element& e, int plane) { return tangentAt(e, e.start, plane); }
 
-std::optional<Vec2> endTangent(const Element& e)
+std::optional<Vec2> endTangent(const Element& e, int plane)
 {
-    if (e.type == Element::Type::Line)
-        return startTangent(e);
-    if (e.type == Element::Type::Arc) {
-        const Vec2 radial = e.end.xy() - e.center;
-        if (radial.length() < kEps)
-            return std::nullopt;
-        return (e.clockwise ? radial.rightNormal() : radial.leftNormal()).normalized();
-    }
-    return std::nullopt;
+    return tangentAt(e, e.type == Element::Type::Line ? e.start : e.end, plane);
 }
 
 double travelledDegrees(const Element& arc, const Vec2& from, const Vec2& to)

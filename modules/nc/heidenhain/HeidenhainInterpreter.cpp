@@ -10,6 +10,14 @@
 //   in straight-line blocks only); outside corners get a transitional arc (MP7680's default, no
 //   spline), inside corners the intersection of the tool-centre paths. Turns under 0.001 rad are
 //   tangent, for the rounding of written coordinates.
+// - Circles lie in the plane the axes of CC name (CC X Y: XY, CC X Z: ZX, CC Y Z: YZ); CR and CT
+//   in the plane of their two axes, else the last CC's. DR+ is counter-clockwise by the right-hand
+//   rule about +Z, +Y, +X (the mathematically positive turn from Z to X in ZX, from Y to Z in YZ)
+//   and PA counts from X, Z, Y; CP makes a helix along the plane's normal (IY in ZX, IX in YZ).
+//   Outside XY a C, CR or CT that moves along the normal, and RL/RR, are errors; RND/CHF next to
+//   such a circle warn and are left out. A CC with one axis keeps the last CC's plane when it
+//   lies in it (else XY) and takes the other coordinate from the current position. Circles.cpp
+//   cites the manual pages.
 // - Cycles 200/201/202/203/205/206/207/209/240 and 1/2/17 are Cycle records (clearance =
 //   Q203+Q204, retract = Q203+Q200, top = Q203, bottom = Q203+Q201); 204 and 208 become moves.
 // - M89 stays on through a new CYCL DEF and ends with M99 or CYCL CALL (TNC 306 manual).

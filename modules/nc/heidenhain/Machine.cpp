@@ -214,8 +214,8 @@ void Machine::execute(const Block& b)
     case BlockKind::LineVector:
         return;
     case BlockKind::Elision:
-        m_knownX = m_knownY = false;
-        m_tangent.reset();
+        m_programmed = kNoAxes;
+        m_tangents = {};
         return;
     case BlockKind::BeginPgm:
         if (m_pc != 0)

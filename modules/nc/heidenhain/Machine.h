@@ -4,6 +4,7 @@
 // and M functions live in Machine.cpp, contour elements in Contour.cpp, cycles in Cycles.cpp.
 #pragma once
 
+#include "base/NumberFormat.h"
 #include "nc/CutterCompensation.h"
 #include "nc/Interpreter.h"
 #include "nc/KnownAxes.h"
@@ -29,6 +30,9 @@ inline constexpr double kMaxCoordinate = 99999.9999;  // the control's input ran
 inline constexpr int kMaxLabelNesting = 64;
 inline constexpr int kMaxProgramNesting = 16;
 inline constexpr std::size_t kMaxPrograms = 64;  // different programs one run may load (memory bound)
+
+// Millimetres in messages: four decimals, independent of the C locale (the GUI sets the user's).
+inline std::string mm(double v) { return base::formatFixed(v, 4); }
 
 // Keys of the warnings given once per run.
 enum WarnKey : int {
@@ -74,6 +78,21 @@ struct CycleDefinition {
     double get(int n, double fallback = 0) const;
     bool has(int n) const { return n >= 200 && n < 600 && set.test(static_cast<std::size_t>(n - 200)); }
 };
+
+// The circle centre and pole of the last CC, in the coordinates (u, v) of its plane: the plane its
+// two axes name (17 XY, 18 ZX, 19 YZ; nc/detail/PlaneAxes.h), which C, CP and LP work in.
+struct Pole {
+    Vec2 at;
+    int plane = 17;
+    bool set = false;
+};
+
+// The last direction of travel in each main plane (index plane - 17), for CT and DEP LT: a move
+// that does not move in a plane leaves that plane's tangent as it was.
+using Tangents = std::array<std::optional<Vec2>, 3>;
+
+// The plane a circle block works in (17, 18, 19): CR and CT name it with two axes, else the pole's.
+int circlePlane(BlockKind kind, const BlockWords& w, const Pole& pole);
 
 // A corner rounding or chamfer planned when the element before it was sent, with the element
 // after it as planned from the corner (so that incremental words and CR/CP keep their geometry).
@@ -136,13 +155,21 @@ private:
     const Program& program() const { return *m_programs[static_cast<std::size_t>(m_prog)]; }
     std::optional<double> eval(int expr, bool quiet = false);
 
-    // Contour.cpp: elements, corners, sending moves.
+    // Contour.cpp: elements, corners, sending moves; Circles.cpp: CC, circles and polar moves.
     void motionBlock(const Block& b);
     bool applyMotion(const Block& b, const BlockWords& w);  // true: an element was sent
     void circleCenter(const Block& b);
     void corner(const Block& b);
-    std::optional<Element> plan(const Block& b, const BlockWords& w, const Vec3& from, const Vec2& cc, bool ccSet,
-                                std::optional<Vec2> tangent, bool quiet);
+    std::optional<Element> plan(const Block& b, const BlockWords& w, const Vec3& from, const Pole& pole,
+                                const Tangents& tangents, bool quiet);
+    std::optional<Element> planCircle(const Block& b, const BlockWords& w, Element e, const Pole& pole,
+                                      const Tangents& tangents, bool quiet);
+    std::optional<Element> planPolarCircle(const Block& b, const BlockWords& w, Element e, const Pole& pole,
+                                           bool quiet);
+    bool needPole(const Block& b, const Pole& pole, bool quiet);
+    bool direction(const Block& b, const BlockWords& w, bool quiet, bool& clockwise);
+    std::optional<Pole> centreOf(const Block& b, const BlockWords& w, const Vec3& from, const Pole& previous,
+                                 bool quiet);
     std::optional<Vec3> target(const Block& b, const BlockWords& w, const Vec3& from, bool quiet);
     void planCorner(Element& element, std::size_t cornerIndex);
     void send(const Element& e, bool rapid, double feed);
@@ -179,11 +206,9 @@ private:
     Vec3 m_shift;
     double m_scale = 1;      // mm per program unit
     double m_feedScale = 1;  // mm/min per programmed feed unit
-    Vec2 m_cc;
-    bool m_ccSet = false;
-    std::optional<Vec2> m_tangent;
-    bool m_knownX = false;  // X/Y programmed since the start or the last "..." of a fragment
-    bool m_knownY = false;
+    Pole m_pole;
+    Tangents m_tangents;
+    toolpath::AxisMask m_programmed = kNoAxes;  // absolute X/Y/Z since the start or the last "..." of a fragment
     int m_lastDirection = 0;
     double m_feed = 0;
     double m_autoFeed = 0;

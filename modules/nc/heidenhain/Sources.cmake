@@ -15,4 +15,5 @@ set(NC_PART_SOURCES
     Machine.h
     MachineFunctions.cpp
     Contour.cpp
+    Circles.cpp
     Cycles.cpp)

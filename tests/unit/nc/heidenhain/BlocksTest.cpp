@@ -1,6 +1,6 @@
 // Program structure of Klartext: comments and structure items as Comment records, BLK FORM,
-// TOOL CALL variants (number, name, Q parameter, speed only, F AUTO), STOP and M0/M1, source
-// lines through continuations, lone CR line ends.
+// TOOL CALL variants (number, name, Q parameter, speed only, F AUTO), STOP and M0/M1, the header
+// forms of the iTNC 530 post, source lines through continuations, lone CR line ends.
 #include "TestSupport.h"
 
 namespace camwb::nc::heidenhain::test {
@@ -58,6 +58,21 @@ TEST(HeidenhainBlocks, StopsAndOptionalStops)
     // M0 also stops the spindle and the coolant, after the move.
     EXPECT_EQ(r.all<Spindle>().back().rpm, 0);
     EXPECT_EQ(r.all<Coolant>().back().mode, CoolantMode::Off);
+}
+
+TEST(HeidenhainBlocks, HeaderFormsOfThePost)
+{
+    // BLK FORM, M135 M126 (M functions the trace has no record for), coolant in a block of its own.
+    const Traced r = run("0 BEGIN PGM NAME MM\n1 BLK FORM 0.1 Z X-75 Y-75 Z+85\n2 BLK FORM 0.2 X+75 Y+75 Z+105\n"
+                         "3 M135 M126\n4 TOOL CALL 1 Z S3500\n5 L Z+150 R0 FMAX\n6 L X+1.5 Y-2 R0 FMAX M3\n"
+                         "7 L M8\n8 L M30\n9 END PGM NAME MM\n");
+    EXPECT_TRUE(r.result.diagnostics.empty()) << r.diagnostics()[0];
+    ASSERT_EQ(r.all<Rapid>().size(), 2u);
+    expectNear(r.all<Rapid>()[1].to, {1.5, -2, 150});
+    ASSERT_FALSE(r.all<Coolant>().empty());
+    EXPECT_EQ(r.all<Coolant>().front().mode, CoolantMode::Flood);
+    EXPECT_EQ(r.lines<Coolant>().front(), 8);
+    EXPECT_TRUE(r.result.completed);
 }
 
 TEST(HeidenhainBlocks, LoneCarriageReturnsAndUnnumberedBlocks)

@@ -74,6 +74,8 @@ void Machine::cycleDef(const Block& b)
                    "positions are traced untilted");
         return;
     }
+    if (b.a == 247)
+        return datumSetting(b);
     const Program& p = program();
     if (b.a < 200 && b.b > 0) {
         // One line of an old multi-block cycle (9.1 DWELL 1.5, 1.2 DEPTH -20 ...): its last value.
@@ -126,6 +128,36 @@ void Machine::cycleDef(const Block& b)
     if (!traced(b.a))
         report(Severity::Warning, b.line, b.column,
                "cycle " + std::to_string(b.a) + " is not traced: its calls move nothing");
+}
+
+// Cycle 247 DATUM SETTING is active as soon as it is defined: preset Q339 of the preset table
+// becomes the datum (a WorkOffset record), and the machining cycle defined before it stays the
+// one CYCL CALL and M99 run.
+void Machine::datumSetting(const Block& b)
+{
+    const Program& p = program();
+    std::optional<double> preset;
+    for (int i = 0; i < b.wordCount; ++i) {
+        const Word& word = p.words[static_cast<std::size_t>(b.firstWord + i)];
+        if (word.key != Key::QSet || word.expr < 0)
+            continue;
+        const auto v = eval(word.expr);
+        if (!v)
+            return;
+        m_params.q[static_cast<std::size_t>(word.param)] = *v;  // cycle parameters are global Q parameters
+        if (word.param == 339)
+            preset = *v;
+    }
+    if (!preset) {
+        report(Severity::Error, b.line, b.column, "cycle 247 needs the datum number Q339");
+        return;
+    }
+    if (*preset < 0 || *preset > 65535 || *preset != std::floor(*preset)) {
+        report(Severity::Error, b.line, b.column,
+               "cycle 247: datum number Q339 " + mm(*preset) + " is not a preset table line (0..65535)");
+        return;
+    }
+    m_sink.workOffset(WorkOffset{static_cast<int>(*preset)});
 }
 
 void Machine::cycleCall(const Block& b)

@@ -20,6 +20,8 @@
 //   cites the manual pages.
 // - Cycles 200/201/202/203/205/206/207/209/240 and 1/2/17 are Cycle records (clearance =
 //   Q203+Q204, retract = Q203+Q200, top = Q203, bottom = Q203+Q201); 204 and 208 become moves.
+// - CYCL DEF 247 DATUM SETTING is a WorkOffset record with the preset number Q339 at once; the
+//   machining cycle defined before stays the one that is called.
 // - M89 stays on through a new CYCL DEF and ends with M99 or CYCL CALL (TNC 306 manual).
 // - A positive depth Q201 warns and is traced below the surface; a decimal comma warns.
 // - Inch programs read F in 1/10 inch/min, as the TNC does.

@@ -179,6 +179,7 @@ private:
 
     // Cycles.cpp: CYCL DEF, CYCL CALL, M99/M89.
     void cycleDef(const Block& b);
+    void datumSetting(const Block& b);
     void cycleCall(const Block& b);
     void runCycle(const Block& b, Vec2 hole);
     void cycleRecord(const Block& b, Vec2 hole);

@@ -1,6 +1,6 @@
 // Cycles of the Klartext interpreter: 200/203/205 as Cycle records (iTNC 530 indented and
 // TNC 640 `~` parameter lines), CYCL CALL, CYCL CALL POS, M99, M89, 208 expanded into a helix,
-// 9 dwell, and the five-axis functions that are recognised with a warning.
+// 9 dwell, 247 datum setting, and the five-axis functions that are recognised with a warning.
 #include "TestSupport.h"
 
 namespace camwb::nc::heidenhain::test {
@@ -169,6 +169,34 @@ TEST(HeidenhainCycles, FiveAxisFunctionsWarnAndTraceThreeAxes)
     EXPECT_EQ(r.count(Severity::Warning), 5u);
     ASSERT_EQ(r.all<Rapid>().size(), 2u);
     expectNear(r.all<Rapid>()[0].to, {1, 2, 3});
+}
+
+TEST(HeidenhainCycles, DatumSettingSelectsAPresetAndKeepsTheCycle)
+{
+    const Traced r = run("0 BEGIN PGM T MM\n"
+                         "1 TOOL CALL 2 Z S2000\n"
+                         "2 CYCL DEF 200 DRILLING ~\n"
+                         "  Q200=2 ;SET-UP CLEARANCE ~\n"
+                         "  Q201=-3 ;DEPTH ~\n"
+                         "  Q206=150 ;FEED RATE FOR PLNGNG ~\n"
+                         "  Q202=5 ;PLUNGING DEPTH ~\n"
+                         "  Q203=+0 ;SURFACE COORDINATE ~\n"
+                         "  Q204=50 ;2ND SET-UP CLEARANCE\n"
+                         "3 CYCL DEF 247 DATUM SETTING\n"
+                         "  Q339=+2 ;DATUM NUMBER\n"
+                         "4 L X+20 Y+30 Z+50 FMAX M3 M99\n"
+                         "5 CYCL DEF 247 DATUM SETTING\n"
+                         "  Q339=-1 ;DATUM NUMBER\n"
+                         "6 END PGM T MM\n");
+    const auto offsets = r.all<WorkOffset>();
+    ASSERT_EQ(offsets.size(), 1u);
+    EXPECT_EQ(offsets[0].index, 2);
+    EXPECT_EQ(r.lines<WorkOffset>(), (std::vector<int>{10}));
+    ASSERT_EQ(r.all<Cycle>().size(), 1u);  // 200 is still the cycle M99 calls
+    EXPECT_EQ(r.all<Cycle>()[0].bottomZ, -3);
+    EXPECT_TRUE(r.has(Severity::Error, 13, "datum number Q339 -1.0000 is not a preset table line"))
+        << r.diagnostics()[0];
+    EXPECT_EQ(r.result.diagnostics.size(), 1u);
 }
 
 }  // namespace

@@ -91,8 +91,9 @@ var limit = inch ? 9999.99999 : 99999.9999;  // the largest coordinate the iTNC 
 var xyzFormat = createFormat({decimals: inch ? 4 : 3, trim: true, forceSign: true, scale: inch ? 1 / 25.4 : 1,
                               max: limit});
 var angleFormat = createFormat({decimals: 4, trim: true, forceSign: true});
-var feedFormat = inch ? createFormat({decimals: 1, trim: true, scale: 1 / 25.4}) : createFormat({decimals: 0});
-var feedPerRevolutionFormat = createFormat({decimals: inch ? 4 : 3, trim: true, scale: inch ? 1 / 25.4 : 1});
+// Inch programs take F in 0.1 inch/min (the iTNC's unit): 150 mm/min is F59.1.
+var feedFormat = inch ? createFormat({decimals: 1, trim: true, scale: 1 / 2.54}) : createFormat({decimals: 0});
+var feedPerRevolutionFormat = createFormat({decimals: 4, trim: true, scale: inch ? 1 / 2.54 : 1});  // same unit rule
 var numberFormat = createFormat({decimals: 4, trim: true});  // Q values, tool data, the travel report
 var qFormat = createFormat({decimals: 4, trim: true, scale: inch ? 1 / 25.4 : 1});
 var qCoordinateFormat = createFormat({decimals: 4, trim: true, forceSign: true, scale: inch ? 1 / 25.4 : 1});

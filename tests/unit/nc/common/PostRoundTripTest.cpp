@@ -14,6 +14,7 @@
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
+#include <optional>
 
 namespace camwb::nc::test {
 namespace {
@@ -41,7 +42,15 @@ std::vector<PostCase> postCases()
             std::string name = post.path().filename().string() + "_" + dir.path().filename().string();
             std::replace_if(
                 name.begin(), name.end(), [](char c) { return !std::isalnum(static_cast<unsigned char>(c)); }, '_');
-            cases.push_back({name, dir.path()});
+            // A case posting a job names the CL golden of its operations in `cl` (the round trip
+            // reads CL files, it does not compute jobs).
+            fs::path cl;
+            if (std::ifstream named(dir.path() / "cl"); named) {
+                std::string relative;
+                std::getline(named, relative);
+                cl = fs::path(CAMWB_TEST_DATA_DIR) / relative;
+            }
+            cases.push_back({name, dir.path(), cl});
         }
     }
     std::sort(cases.begin(), cases.end(), [](const PostCase& a, const PostCase& b) { return a.name < b.name; });
@@ -143,6 +152,39 @@ TEST_P(PostRoundTrip, NcTracesBackToTheCl)
         tolerance.pointMm = tolerance.backPointMm = 0.0125;
     const auto difference = matchMotion(recorder.toolpath(), expected, tolerance);
     EXPECT_FALSE(difference) << nc << ": " << *difference;
+}
+
+// The round trip must be able to fail: the example job's Klartext with one coordinate moved by
+// 0.1 mm, and the thesis case with its plunge feed parameter changed, no longer move as their CL.
+std::optional<std::string> klartextDifference(const std::string& caseName, const std::string& from,
+                                              const std::string& to, const fs::path& clFile)
+{
+    const fs::path dir = fs::path(CAMWB_TEST_DATA_DIR) / "posts/heidenhain-itnc530/tests" / caseName;
+    std::ifstream in(dir / "expected.h");
+    std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    const std::size_t at = text.find(from);
+    EXPECT_NE(at, std::string::npos) << from;
+    if (at == std::string::npos)
+        return std::nullopt;
+    text.replace(at, from.size(), to);
+    const fs::path mutated = fs::path(testing::TempDir()) / ("mutated-" + caseName + ".h");
+    std::ofstream(mutated) << text;
+    auto cl = toolpath::readClFile(clFile.string(), *toolpath::clFormatFromExtension(clFile.string()));
+    EXPECT_TRUE(cl.ok());
+    toolpath::ToolpathRecorder recorder;
+    interpretFile(mutated.string(), std::nullopt, {}, recorder);
+    MatchTolerance tolerance;
+    tolerance.pointMm = tolerance.backPointMm = 0.0025;
+    return matchMotion(recorder.toolpath(), cl.value().toolpath, tolerance);
+}
+
+TEST(PostRoundTripCanFail, AMovedKlartextCoordinateOrAChangedFeedParameter)
+{
+    const fs::path root = CAMWB_TEST_DATA_DIR;
+    EXPECT_TRUE(klartextDifference("example-job", "L Z+13 F150", "L Z+13.1 F150",
+                                   root / "tests/golden/jobs/example-block/expected.trace"));
+    EXPECT_TRUE(klartextDifference("thesis", "Q603=300 ;", "Q603=310 ;",
+                                   root / "posts/heidenhain-itnc530/tests/thesis/input.trace"));
 }
 
 INSTANTIATE_TEST_SUITE_P(PostGoldens, PostRoundTrip, testing::ValuesIn(postCases()),

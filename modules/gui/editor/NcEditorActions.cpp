@@ -77,7 +77,7 @@ template <class Dialog> Dialog* reuseOrCreate(QWidget* parent, NcEditor* editor)
 }  // namespace
 
 void registerNcEditorActions(ActionRegistry& registry, NcEditor* editor, QWidget* dialogParent,
-                             std::function<Prompter&()> prompter)
+                             std::function<Prompter&()> prompter, std::function<double()> machineRapid)
 {
     const QString menu = Tr::tr("&NC");
     QPointer<NcEditor> ed(editor);
@@ -162,11 +162,11 @@ void registerNcEditorActions(ActionRegistry& registry, NcEditor* editor, QWidget
         });
     add({QStringLiteral("Cam.Nc.ProgramInfo"), Tr::tr("Program &Information…"), menu, QKeySequence(), false, false,
          Tr::tr("Extents, path lengths and machining time of the NC program")},
-        [ed, parent] {
+        [ed, parent, machineRapid] {
             if (!ed || !parent)
                 return;
             ProgramInfoDialog* dialog = reuseOrCreate<ProgramInfoDialog>(parent, ed);
-            dialog->analyze(ed->text(), ed->dialect(), ed->programPath());
+            dialog->analyze(ed->text(), ed->dialect(), ed->programPath(), machineRapid ? machineRapid() : 0);
             dialog->show();
             dialog->raise();
         });

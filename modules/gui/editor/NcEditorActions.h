@@ -18,8 +18,9 @@ class Prompter;
 // children of it (found with findChild<CompareDialog*>() / findChild<ProgramInfoDialog*>()).
 // Compare asks `prompter` for the file first and opens with both sides. Renumbering and removing
 // numbers are one undo step each in the editor. Results and notes go to the status bar when
-// `dialogParent` is a QMainWindow.
+// `dialogParent` is a QMainWindow. `machineRapid` answers the rapid rate of the machine the
+// program is for (0: none known), which Program Information's time estimate then assumes.
 void registerNcEditorActions(ActionRegistry& registry, NcEditor* editor, QWidget* dialogParent,
-                             std::function<Prompter&()> prompter);
+                             std::function<Prompter&()> prompter, std::function<double()> machineRapid = {});
 
 }  // namespace camwb::gui

@@ -10,6 +10,7 @@
 #include <QFormLayout>
 #include <QLabel>
 #include <QPointer>
+#include <QSignalBlocker>
 #include <QTextBrowser>
 #include <QThread>
 #include <QVBoxLayout>
@@ -96,10 +97,15 @@ ProgramInfoDialog::~ProgramInfoDialog()
         m_thread->wait();  // the interpreter cannot be interrupted; it owns nothing of ours
 }
 
-void ProgramInfoDialog::analyze(const QString& text, nc::Dialect dialect, const QString& fileName)
+void ProgramInfoDialog::analyze(const QString& text, nc::Dialect dialect, const QString& fileName,
+                                double machineRapidMmPerMin)
 {
     if (isBusy())
         return;
+    if (machineRapidMmPerMin > 0) {
+        const QSignalBlocker quiet(m_rapid);  // not a second analysis for the same program
+        m_rapid->setValue(machineRapidMmPerMin);
+    }
     m_status->setText(tr("Interpreting the program…"));
     m_view->clear();
     auto result = std::make_shared<Result>();

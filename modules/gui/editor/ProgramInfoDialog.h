@@ -25,8 +25,10 @@ public:
     ~ProgramInfoDialog() override;  // waits for a running analysis
 
     // Starts interpreting `text` off the GUI thread; `fileName` names it in diagnostics and finds
-    // its subprograms (in its folder) when it is a path.
-    void analyze(const QString& text, nc::Dialect dialect, const QString& fileName = {});
+    // its subprograms (in its folder) when it is a path. machineRapidMmPerMin > 0: the machine's
+    // rapid rate, which the estimate then assumes (as the post's header estimate does).
+    void analyze(const QString& text, nc::Dialect dialect, const QString& fileName = {},
+                 double machineRapidMmPerMin = 0);
     bool isBusy() const;
     bool hasStats() const;
     const toolpath::ProgramStats& stats() const;  // valid when hasStats()

@@ -18,6 +18,7 @@
 #include "gui/tasks/OperationPanel.h"
 #include "gui/view3d/TaskOverlay.h"
 #include "gui/view3d/View3D.h"
+#include "kinematics/Machine.h"
 
 #include <QAction>
 #include <QCloseEvent>
@@ -268,7 +269,9 @@ void MainWindow::registerActions()
     });
     add({"Cam.Nc.Trace", tr("&Trace NC Program"), nc, QKeySequence(Qt::Key_F5), true},
         [this] { m_inspector->traceNow(); });
-    registerNcEditorActions(*m_actions, m_editor, this, [this]() -> Prompter& { return *m_prompter; });
+    registerNcEditorActions(
+        *m_actions, m_editor, this, [this]() -> Prompter& { return *m_prompter; },
+        [this] { return m_inspector->machine() ? m_inspector->machine()->rapidMmPerMin : 0.0; });
 
     add({"Cam.View.Isometric", tr("&Isometric"), view, QKeySequence(Qt::Key_0), true, true},
         [this] { m_view->setViewPreset(View3D::Preset::Isometric); });

@@ -8,6 +8,7 @@
 #include "Shots.h"
 #include "gui/actions/ActionRegistry.h"
 #include "gui/editor/NcEditor.h"
+#include "gui/editor/ProgramInfoDialog.h"
 #include "gui/inspector/InspectorPanel.h"
 #include "gui/inspector/ModalStatePanel.h"
 #include "gui/inspector/NcInspector.h"
@@ -438,6 +439,23 @@ private slots:
         QTest::qWait(300);
         QVERIFY(!window.view()->highlightedSegments().empty() || !window.view()->hasOpenGl());
         saveShot(&window, QStringLiteral("heidenhain-posted-job.png"));
+        // Program Information estimates with the machine's rapid, as the header's time does: the
+        // same figure for the same program, to the second.
+        const QRegularExpressionMatch header =
+            QRegularExpression(QStringLiteral("; MACHINING TIME: (\\d+):(\\d\\d):(\\d\\d)\n"))
+                .match(window.ncEditor()->text());
+        QVERIFY(header.hasMatch());
+        const int headerSeconds =
+            header.captured(1).toInt() * 3600 + header.captured(2).toInt() * 60 + header.captured(3).toInt();
+        QVERIFY(window.actions().trigger(QStringLiteral("Cam.Nc.ProgramInfo")));
+        auto* info = window.findChild<camwb::gui::ProgramInfoDialog*>();
+        QVERIFY(info != nullptr);
+        QTRY_VERIFY_WITH_TIMEOUT(info->hasStats() && !info->isBusy(), 20000);
+        QCOMPARE(info->stats().rapidMmPerMin, 22000.0);
+        QVERIFY2(std::abs(info->stats().totals.totalSeconds() - headerSeconds) <= 1.0,
+                 qPrintable(QStringLiteral("%1 s vs the header's %2 s")
+                                .arg(info->stats().totals.totalSeconds())
+                                .arg(headerSeconds)));
     }
 
     // Pictures of the inspector (kept in CAMWB_SHOTS_DIR when set): posted SINUMERIK, ISO and

@@ -240,7 +240,7 @@ function onOpen(program) {
     if (getProperty("rotaryModes"))
         writeBlock("M135 M126");
     if (getProperty("machiningTime"))
-        comment(" " + words.machiningTime + ": " + duration(program.machiningSeconds));
+        comment(" " + words.machiningTime + ": " + duration(machiningSeconds()));
     if (program.tools.length > 0)
         toolList(program.tools);
     travel = program.extents;

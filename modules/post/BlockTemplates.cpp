@@ -245,21 +245,34 @@ bool BlockTemplate::write(const MoveValues& given, OutputWriter& out, Issues& is
     }
     if (straight && !axisChanges)
         return false;
-    m_block.clear();
-    auto put = [this](std::string_view text) { m_block.insert(m_block.end(), text.begin(), text.end()); };
+    // Decide what is written first (modal updates), then copy it into the block buffer in one go.
+    std::size_t needed = 0;
     for (std::size_t i = 0; i < words.size(); ++i) {
         const Word& word = words[i];
-        bool written = false;
-        if (word.variable)
-            written = !m_skip[i] && (word.variable->modal().update(m_texts[i]) || word.force);
-        else if (word.pending)
-            written = !word.pending->text().empty();
-        else
-            written = !word.literal.empty();
-        if (!written)
+        std::size_t length = 0;
+        if (word.variable) {
+            if (!m_skip[i] && (word.variable->modal().update(m_texts[i]) || word.force))
+                length = word.variable->modal().prefix().size() + m_texts[i].size();
+        } else {
+            length = word.pending ? word.pending->text().size() : word.literal.size();
+        }
+        m_skip[i] = length == 0;
+        needed += length ? length + 1 : 0;
+    }
+    if (m_block.size() < needed)
+        m_block.resize(needed);
+    char* const block = m_block.data();
+    char* end = block;
+    auto put = [&end](std::string_view text) {
+        std::memcpy(end, text.data(), text.size());
+        end += text.size();
+    };
+    for (std::size_t i = 0; i < words.size(); ++i) {
+        if (m_skip[i])
             continue;
-        if (!m_block.empty())
-            m_block.push_back(' ');
+        const Word& word = words[i];
+        if (end != block)
+            *end++ = ' ';
         if (word.variable) {
             put(word.variable->modal().prefix());
             put(m_texts[i]);
@@ -270,9 +283,9 @@ bool BlockTemplate::write(const MoveValues& given, OutputWriter& out, Issues& is
             put(word.literal);
         }
     }
-    if (m_block.empty())
+    if (end == block)
         return false;
-    out.writeCleanBlock(std::string_view(m_block.data(), m_block.size()));
+    out.writeCleanBlock(std::string_view(block, static_cast<std::size_t>(end - block)));
     return true;
 }
 
@@ -297,20 +310,22 @@ void writePending(const std::vector<PendingObject*>& list, OutputWriter& out)
 
 }  // namespace
 
-void BlockTemplates::writeBefore(OutputWriter& out) { writePending(before, out); }
+void BlockTemplates::writeBefore(OutputWriter& out)
+{
+    if (!before.empty())
+        writePending(before, out);
+}
 
-void BlockTemplates::finishMove(const std::vector<const BlockTemplate*>& blocks, const toolpath::Vec3& start,
-                                const toolpath::Vec3& end, OutputWriter& out)
+void BlockTemplates::resetUnwrittenAndWriteAfter(unsigned writtenAxes, const toolpath::Vec3& start,
+                                                 const toolpath::Vec3& end, OutputWriter& out)
 {
     const double moved[3] = {end.x - start.x, end.y - start.y, end.z - start.z};
-    for (int axis = 0; axis < 3; ++axis) {
-        if (moved[axis] == 0)
-            continue;
-        if (std::none_of(blocks.begin(), blocks.end(), [axis](const BlockTemplate* b) { return b->bindsAxis(axis); }))
+    for (int axis = 0; axis < 3; ++axis)
+        if (moved[axis] != 0 && !((writtenAxes >> axis) & 1))
             for (VariableObject* variable : axisVariables[axis])
                 variable->modal().reset();
-    }
-    writePending(after, out);
+    if (!after.empty())
+        writePending(after, out);
 }
 
 int BlockTemplates::planeIndex(const std::string& plane)

@@ -1,5 +1,7 @@
 #include "post/PostProcessor.h"
 
+#include "toolpath/ProgramStats.h"
+
 #include "base/AtomicFile.h"
 #include "kinematics/LimitCheck.h"
 #include "post/ProgramSummary.h"
@@ -50,8 +52,13 @@ base::Status prepare(ScriptRun& run, const PostInfo& info, const std::string& so
 std::vector<base::Diagnostic> playAndCollect(ScriptRun& run, const toolpath::Toolpath& toolpath,
                                              const RunOptions& options, base::Status& status)
 {
-    const ProgramSummary summary =
-        summarizeProgram(toolpath, kinematics::estimateRapidMmPerMin(options.machine ? &*options.machine : nullptr));
+    const ProgramSummary summary = summarizeProgram(toolpath);
+    // machiningSeconds() in the script: the estimate costs a pass over the program, made only when asked.
+    run.setMachiningTime([&toolpath, &options] {
+        toolpath::StatsOptions stats;
+        stats.rapidMmPerMin = kinematics::estimateRapidMmPerMin(options.machine ? &*options.machine : nullptr);
+        return toolpath::programStats(toolpath, stats).totals.totalSeconds();
+    });
     std::vector<base::Diagnostic> messages;
     if (options.machine) {
         toolpath::NullSink nowhere;

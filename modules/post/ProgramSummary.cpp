@@ -1,7 +1,5 @@
 #include "post/ProgramSummary.h"
 
-#include "toolpath/ProgramStats.h"
-
 #include "toolpath/ArcGeometry.h"
 #include "toolpath/CycleExpansion.h"
 #include "toolpath/KnownPosition.h"
@@ -37,7 +35,7 @@ struct AxisExtents {
 
 }  // namespace
 
-ProgramSummary summarizeProgram(const Toolpath& toolpath, double rapidMmPerMin)
+ProgramSummary summarizeProgram(const Toolpath& toolpath)
 {
     ProgramSummary summary;
     AxisExtents extents;
@@ -85,9 +83,6 @@ ProgramSummary summarizeProgram(const Toolpath& toolpath, double rapidMmPerMin)
     summary.extentAxes = extents.seen;
     summary.min = extents.min;
     summary.max = extents.max;
-    toolpath::StatsOptions stats;
-    stats.rapidMmPerMin = rapidMmPerMin;
-    summary.machiningSeconds = toolpath::programStats(toolpath, stats).totals.totalSeconds();
     return summary;
 }
 

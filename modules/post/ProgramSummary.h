@@ -14,10 +14,8 @@ struct ProgramSummary {
     bool hasMotion = false;
     toolpath::Vec3 min, max;           // every tool tip position (arcs exactly, cycles included)
     toolpath::AxisMask extentAxes{0};  // the axes min/max hold: an axis no move gave has none
-    double machiningSeconds = 0;       // toolpath::programStats: the editor's Program Information estimate
 };
 
-// rapidMmPerMin: the rate of the time estimate (kinematics::estimateRapidMmPerMin of the machine).
-ProgramSummary summarizeProgram(const toolpath::Toolpath& toolpath, double rapidMmPerMin);
+ProgramSummary summarizeProgram(const toolpath::Toolpath& toolpath);
 
 }  // namespace camwb::post

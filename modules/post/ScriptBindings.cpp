@@ -368,6 +368,13 @@ QJSValue ScriptKernel::getProperty(const QJSValue& name)
     return {};
 }
 
+double ScriptKernel::machiningSeconds()
+{
+    if (!m_machiningSeconds)
+        m_machiningSeconds = m_machiningTime ? m_machiningTime() : 0.0;
+    return *m_machiningSeconds;
+}
+
 void ScriptKernel::expandCyclePoint(const QJSValue& x, const QJSValue& y, const QJSValue& z)
 {
     if (!m_expandCycle) {

@@ -251,7 +251,7 @@ void ScriptSink::straight(Handler handler, const Vec3& to, AxisMask axes, double
         m_run.m_templates.writeBefore(kernel.writer());
         BlockTemplate::Issues issues;
         if (block->write(move, kernel.writer(), issues))
-            m_run.m_templates.finishMove({&*block}, move.start, move.end, kernel.writer());
+            m_run.m_templates.finishMove(block->axisBits(), move.start, move.end, kernel.writer());
         if (!issues.beyondMax.empty())
             m_run.fail(issues.beyondMax);
         if (issues.missingFeed)
@@ -353,17 +353,17 @@ void ScriptSink::arcPiece(const ArcPiece& p, const Arc& arc, int pieceIndex, int
         move.helical = p.helical;
         m_run.m_templates.writeBefore(kernel.writer());
         BlockTemplate::Issues issues;
-        std::vector<const BlockTemplate*> written;
+        unsigned writtenAxes = 0;
         for (BlockTemplate& block : *blocks)
             if (block.write(move, kernel.writer(), issues))
-                written.push_back(&block);
+                writtenAxes |= block.axisBits();
             else if (!issues.beyondMax.empty())
                 break;
         if (!issues.beyondMax.empty()) {
             m_run.fail(issues.beyondMax);
             return;
         }
-        m_run.m_templates.finishMove(written, p.start, p.end, kernel.writer());
+        m_run.m_templates.finishMove(writtenAxes, p.start, p.end, kernel.writer());
         if (issues.missingFeed)
             m_missingFeed.add(m_run.m_recordIndex);
     } else if (pieceIndex == 0) {  // one count per arc, not per piece
@@ -443,7 +443,6 @@ base::Status ScriptRun::play(const Toolpath& toolpath, const ProgramSummary& sum
     for (std::size_t i = 0; i < summary.tools.size(); ++i)
         tools.setProperty(static_cast<quint32>(i), sink.toolObject(summary.tools[i]));
     program.setProperty("tools", tools);
-    program.setProperty("machiningSeconds", summary.machiningSeconds);
     if (summary.hasMotion) {
         QJSValue extents = m_engine.newObject();
         QJSValue min = scriptPoint(m_engine, summary.min);

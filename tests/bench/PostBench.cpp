@@ -114,10 +114,12 @@ void postInMemory(benchmark::State& state, const std::string& postId)
 void BM_Sinumerik828dToFile(benchmark::State& state) { postToFile(state, "sinumerik828d-emco"); }
 void BM_Sinumerik828dInMemory(benchmark::State& state) { postInMemory(state, "sinumerik828d-emco"); }
 void BM_LinuxCncToFile(benchmark::State& state) { postToFile(state, "linuxcnc"); }
+void BM_HeidenhainToFile(benchmark::State& state) { postToFile(state, "heidenhain-itnc530"); }
 
 BENCHMARK(BM_Sinumerik828dToFile)->Arg(100000)->Arg(1000000)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK(BM_Sinumerik828dInMemory)->Arg(1000000)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK(BM_LinuxCncToFile)->Arg(1000000)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(BM_HeidenhainToFile)->Arg(1000000)->Unit(benchmark::kMillisecond)->UseRealTime();
 
 }  // namespace
 

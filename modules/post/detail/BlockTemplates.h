@@ -94,7 +94,8 @@ public:
     // Writes the block for `move`. False when nothing was written (a straight move that changes no
     // axis, or a value beyond its format's max: nothing of the block is written then).
     bool write(const MoveValues& move, OutputWriter& out, Issues& issues);
-    bool bindsAxis(int axis) const { return axes[static_cast<std::size_t>(axis)] != nullptr; }
+    // Bit 0 x, 1 y, 2 z: the axes this block writes with a variable.
+    unsigned axisBits() const { return (axes[0] ? 1u : 0u) | (axes[1] ? 2u : 0u) | (axes[2] ? 4u : 0u); }
 
     // Whether the arc's end, as written, is its start in both axes of the plane (0 XY, 1 ZX,
     // 2 YZ): written so, a short arc would read back as a full circle.
@@ -128,12 +129,20 @@ struct BlockTemplates {
     ArcBlocks* arcBlocks(int planeIndex, bool helical);
     // Writes the pending `before` blocks (the TOOL CALL still waiting for its speed).
     void writeBefore(OutputWriter& out);
-    // After a move from `start` to `end` written with `blocks`: resets the variables of the axes
-    // that moved but were not written; then writes the pending `after` blocks.
-    void finishMove(const std::vector<const BlockTemplate*>& blocks, const toolpath::Vec3& start,
-                    const toolpath::Vec3& end, OutputWriter& out);
+    // After a move from `start` to `end` whose blocks bind the axes in `writtenAxes` (axisBits):
+    // resets the variables of the axes that moved but were not written; then writes the pending
+    // `after` blocks.
+    void finishMove(unsigned writtenAxes, const toolpath::Vec3& start, const toolpath::Vec3& end, OutputWriter& out)
+    {
+        if (writtenAxes != 7 || !after.empty())  // the usual block writes all axes and has nothing after it
+            resetUnwrittenAndWriteAfter(writtenAxes, start, end, out);
+    }
 
     static int planeIndex(const std::string& plane);  // "XY" 0, "ZX" 1, "YZ" 2, else -1
+
+private:
+    void resetUnwrittenAndWriteAfter(unsigned writtenAxes, const toolpath::Vec3& start, const toolpath::Vec3& end,
+                                     OutputWriter& out);
 };
 
 // Reads `post.blocks` (undefined: no templates). Errors say which entry is wrong.

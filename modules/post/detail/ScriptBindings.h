@@ -180,6 +180,14 @@ public:
     Q_INVOKABLE QJSValue getCurrentAxis(const QJSValue& axis);
     Q_INVOKABLE QJSValue getProperty(const QJSValue& name);
     Q_INVOKABLE void expandCyclePoint(const QJSValue& x, const QJSValue& y, const QJSValue& z);
+    // The program's machining time in seconds: toolpath::programStats with the machine's rapid,
+    // the editor's Program Information estimate.
+    Q_INVOKABLE double machiningSeconds();
+    void setMachiningTime(std::function<double()> estimate)
+    {
+        m_machiningTime = std::move(estimate);
+        m_machiningSeconds.reset();
+    }
 
 private:
     QJSValue makeVariable(const QJSValue& spec, const QJSValue& format, bool acceptsText);
@@ -192,6 +200,8 @@ private:
     std::optional<std::string> m_postError;
     QJSValue m_properties;
     std::function<void(const toolpath::Vec3&)> m_expandCycle;
+    std::function<double()> m_machiningTime;
+    std::optional<double> m_machiningSeconds;
 };
 
 // Text of a script value for NC words: undefined and null are "", whole numbers without decimals,

@@ -56,6 +56,8 @@ public:
     void setMachine(const kinematics::Machine& machine);
     // `job` in the script: {name, stock: {min, max} or null}.
     void setJob(const JobFacts& job);
+    // What machiningSeconds() computes (once, when the script first asks).
+    void setMachiningTime(std::function<double()> estimate) { m_kernel->setMachiningTime(std::move(estimate)); }
 
     // Evaluates the post source and reads its declarations into `info` and the block templates.
     base::Status evaluate(const std::string& source, PostInfo& info);

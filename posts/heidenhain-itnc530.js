@@ -259,6 +259,8 @@ var presetChanged = false;  // a work offset other than the first was activated
 function onWorkOffset(index) {
     if (index == 1 && !presetChanged)
         return;
+    if (index > 65535)
+        error("work offset " + index + ": the iTNC's preset numbers end at 65535 (Q339)");
     presetChanged = true;
     flushPending();
     writeBlock("CYCL DEF 247", czech ? "NASTAVENÍ VZTAŽNÉHO BODU" : "DATUM SETTING");
@@ -478,6 +480,9 @@ var holeCount = 0;
 function onCycle(cycle) {
     flushToolCall();
     var definition = cycleDefinition(cycle);
+    for (var q = 0; q < definition[1].length; ++q)  // the control's input range of a Q value
+        if (!(Math.abs(parseFloat(definition[1][q][1])) <= 99999.9999))
+            error("Q" + definition[1][q][0] + "=" + definition[1][q][1] + " is out of the iTNC's range (+-99999.9999)");
     writeBlock("CYCL DEF " + definition[0], cycleNames[definition[0]]);
     for (var i = 0; i < definition[1].length; ++i) {
         var entry = definition[1][i];

@@ -316,12 +316,12 @@ void BlockTemplates::writeBefore(OutputWriter& out)
         writePending(before, out);
 }
 
-void BlockTemplates::resetUnwrittenAndWriteAfter(unsigned writtenAxes, const toolpath::Vec3& start,
+void BlockTemplates::resetUnwrittenAndWriteAfter(unsigned boundAxes, const toolpath::Vec3& start,
                                                  const toolpath::Vec3& end, OutputWriter& out)
 {
     const double moved[3] = {end.x - start.x, end.y - start.y, end.z - start.z};
     for (int axis = 0; axis < 3; ++axis)
-        if (moved[axis] != 0 && !((writtenAxes >> axis) & 1))
+        if (moved[axis] != 0 && !((boundAxes >> axis) & 1))
             for (VariableObject* variable : axisVariables[axis])
                 variable->modal().reset();
     if (!after.empty())

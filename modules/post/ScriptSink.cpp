@@ -353,17 +353,17 @@ void ScriptSink::arcPiece(const ArcPiece& p, const Arc& arc, int pieceIndex, int
         move.helical = p.helical;
         m_run.m_templates.writeBefore(kernel.writer());
         BlockTemplate::Issues issues;
-        unsigned writtenAxes = 0;
+        unsigned boundAxes = 0;
         for (BlockTemplate& block : *blocks)
             if (block.write(move, kernel.writer(), issues))
-                writtenAxes |= block.axisBits();
+                boundAxes |= block.axisBits();
             else if (!issues.beyondMax.empty())
                 break;
         if (!issues.beyondMax.empty()) {
             m_run.fail(issues.beyondMax);
             return;
         }
-        m_run.m_templates.finishMove(writtenAxes, p.start, p.end, kernel.writer());
+        m_run.m_templates.finishMove(boundAxes, p.start, p.end, kernel.writer());
         if (issues.missingFeed)
             m_missingFeed.add(m_run.m_recordIndex);
     } else if (pieceIndex == 0) {  // one count per arc, not per piece

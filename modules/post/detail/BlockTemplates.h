@@ -129,19 +129,19 @@ struct BlockTemplates {
     ArcBlocks* arcBlocks(int planeIndex, bool helical);
     // Writes the pending `before` blocks (the TOOL CALL still waiting for its speed).
     void writeBefore(OutputWriter& out);
-    // After a move from `start` to `end` whose blocks bind the axes in `writtenAxes` (axisBits):
+    // After a move from `start` to `end` whose blocks bind the axes in `boundAxes` (axisBits):
     // resets the variables of the axes that moved but were not written; then writes the pending
     // `after` blocks.
-    void finishMove(unsigned writtenAxes, const toolpath::Vec3& start, const toolpath::Vec3& end, OutputWriter& out)
+    void finishMove(unsigned boundAxes, const toolpath::Vec3& start, const toolpath::Vec3& end, OutputWriter& out)
     {
-        if (writtenAxes != 7 || !after.empty())  // the usual block writes all axes and has nothing after it
-            resetUnwrittenAndWriteAfter(writtenAxes, start, end, out);
+        if (boundAxes != 7 || !after.empty())  // the usual block writes all axes and has nothing after it
+            resetUnwrittenAndWriteAfter(boundAxes, start, end, out);
     }
 
     static int planeIndex(const std::string& plane);  // "XY" 0, "ZX" 1, "YZ" 2, else -1
 
 private:
-    void resetUnwrittenAndWriteAfter(unsigned writtenAxes, const toolpath::Vec3& start, const toolpath::Vec3& end,
+    void resetUnwrittenAndWriteAfter(unsigned boundAxes, const toolpath::Vec3& start, const toolpath::Vec3& end,
                                      OutputWriter& out);
 };
 

@@ -76,7 +76,8 @@ TEST(ContourFeedKinds, RampsArePlungesAndEntriesLeadOutsAreExits)
     // Two levels, one lead-out quarter arc each, and nothing else leaves.
     EXPECT_EQ(std::count(kinds.begin(), kinds.end(), FeedKind::Exit), 2);
     const Move* lastFeed = nullptr;
-    for (const Move& m : walk(tp))
+    const auto moves = walk(tp);  // kept: lastFeed points into it
+    for (const Move& m : moves)
         if (!m.rapid)
             lastFeed = &m;
     ASSERT_NE(lastFeed, nullptr);

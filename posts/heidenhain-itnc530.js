@@ -20,7 +20,10 @@ var post = {
     machines: ["mas-mcvl1000", "mas-mcvl1000-nikken-guaranteed"],
     capabilities: {
         arcPlanes: ["XY", "ZX", "YZ"],
-        helicalArcs: ["XY", "ZX", "YZ"],  // CP IPA with the rise along the plane's normal (IZ, IY, IX)
+        // CP IPA IZ in the working plane only: the iTNC 530 manual allows a helix about another main
+        // plane, the TNC 430's takes the height on the tool axis alone, and Autodesk's iTNC posts
+        // linearise such helices too; the kernel writes them as lines within the tolerance.
+        helicalArcs: ["XY"],
         maxArcSweep: 180,     // full circles as two halves: every C block's end differs from its start
         maxHelixSweep: 5400,  // IPA's range on the control: multi-turn helices in one CP block
         cycles: ["drill", "drillDwell", "peck", "chipBreak", "tap", "bore"],
@@ -107,8 +110,6 @@ var ccZ = createVariable({prefix: "Z", force: true}, xyzFormat);
 var radiusOutput = createVariable({prefix: "R", force: true}, xyzFormat);
 var ipaOutput = createVariable({prefix: "IPA", force: true}, angleFormat);
 var izOutput = createVariable({prefix: "IZ", force: true}, xyzFormat);
-var iyOutput = createVariable({prefix: "IY", force: true}, xyzFormat);
-var ixOutput = createVariable({prefix: "IX", force: true}, xyzFormat);
 var feedOutput = createVariable({prefix: "F"}, feedFormat);
 var compOutput = createModal({prefix: ""});
 var directionOutput = createModal({prefix: "DR", force: true});
@@ -138,11 +139,7 @@ post.blocks = {
         YZ: arcBlocks([ccY.bind("cy"), ccZ.bind("cz")], [yOutput.bind("y", always), zOutput.bind("z", always)]),
         helix: {
             XY: [["CC", ccX.bind("cx"), ccY.bind("cy")],
-                 ["CP", ipaOutput.bind("angle"), izOutput.bind("axial"), direction(), feedOutput.bind("feed")]],
-            ZX: [["CC", ccX.bind("cx"), ccZ.bind("cz")],
-                 ["CP", ipaOutput.bind("angle"), iyOutput.bind("axial"), direction(), feedOutput.bind("feed")]],
-            YZ: [["CC", ccY.bind("cy"), ccZ.bind("cz")],
-                 ["CP", ipaOutput.bind("angle"), ixOutput.bind("axial"), direction(), feedOutput.bind("feed")]]
+                 ["CP", ipaOutput.bind("angle"), izOutput.bind("axial"), direction(), feedOutput.bind("feed")]]
         }
     },
     before: [toolCallBlock],

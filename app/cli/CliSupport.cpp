@@ -4,10 +4,11 @@
 #include "base/Result.h"
 #include "document/JobFile.h"
 #include "post/PostInfo.h"
+#include "toolpath/ClText.h"
 
-#include <cmath>
-#include <cstdlib>
+#include <algorithm>
 #include <iostream>
+#include <string_view>
 
 namespace camwb::cli {
 
@@ -82,17 +83,17 @@ namespace {
 std::optional<base::Box3> parseStock(const std::string& text, std::string& error)
 {
     double v[6];
-    std::size_t at = 0;
+    std::string_view rest = text;
     for (int i = 0; i < 6; ++i) {
-        const std::size_t comma = i < 5 ? text.find(',', at) : text.size();
-        const std::string field = comma == std::string::npos ? std::string() : text.substr(at, comma - at);
-        char* end = nullptr;
-        v[i] = std::strtod(field.c_str(), &end);
-        if (field.empty() || *end != '\0' || !std::isfinite(v[i])) {
+        const std::size_t comma = i < 5 ? rest.find(',') : rest.size();
+        const std::optional<double> number =
+            comma == std::string_view::npos ? std::nullopt : toolpath::parseNumber(rest.substr(0, comma));
+        if (!number) {
             error = "--stock needs six numbers x0,y0,z0,x1,y1,z1, got '" + text + "'";
             return std::nullopt;
         }
-        at = comma + 1;
+        v[i] = *number;
+        rest.remove_prefix(std::min(comma + 1, rest.size()));
     }
     if (!(v[0] < v[3] && v[1] < v[4] && v[2] < v[5])) {
         error = "--stock " + text + ": each minimum must be below its maximum";

@@ -183,7 +183,7 @@ function programFileName() {
 }
 var pgmName = null;
 
-function header(program) {
+function header() {
     var now = new Date();
     var date = now.getUTCDate() + "." + (now.getUTCMonth() + 1) + "." + now.getUTCFullYear();
     var time = pad(now.getUTCHours(), 2) + ":" + pad(now.getUTCMinutes(), 2) + ":" + pad(now.getUTCSeconds(), 2);
@@ -238,7 +238,7 @@ function onOpen(program) {
     pgmName = programFileName();
     setBlockNumbering(0, 1, true, "");
     writeBlock("BEGIN PGM", pgmName, unitWord);
-    header(program);
+    header();
     blankForm(program);
     if (getProperty("rotaryModes"))
         writeBlock("M135 M126");

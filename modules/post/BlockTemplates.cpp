@@ -310,11 +310,7 @@ void writePending(const std::vector<PendingObject*>& list, OutputWriter& out)
 
 }  // namespace
 
-void BlockTemplates::writeBefore(OutputWriter& out)
-{
-    if (!before.empty())
-        writePending(before, out);
-}
+void BlockTemplates::writeBefore(OutputWriter& out) { writePending(before, out); }
 
 void BlockTemplates::resetUnwrittenAndWriteAfter(unsigned boundAxes, const toolpath::Vec3& start,
                                                  const toolpath::Vec3& end, OutputWriter& out)
@@ -444,32 +440,18 @@ base::Result<BlockTemplates> parseBlockTemplates(const QJSValue& blocks, const s
         }
     }
     // Every variable bound to an axis anywhere; the first of each axis tells how it was written.
-    auto collect = [&templates](BlockTemplate& block) {
+    templates.forEach([&templates](BlockTemplate& block) {
         for (int axis = 0; axis < 3; ++axis) {
             std::vector<VariableObject*>& list = templates.axisVariables[axis];
             if (VariableObject* v = block.axes[axis]; v && std::find(list.begin(), list.end(), v) == list.end())
                 list.push_back(v);
         }
-    };
-    for (std::optional<BlockTemplate>* block : {&templates.rapid, &templates.linear})
-        if (*block)
-            collect(**block);
-    for (auto* planes : {&templates.circular, &templates.helix})
-        for (ArcBlocks& arcBlocks : *planes)
-            for (BlockTemplate& block : arcBlocks)
-                collect(block);
-    auto assign = [&templates](BlockTemplate& block) {
+    });
+    templates.forEach([&templates](BlockTemplate& block) {
         for (int axis = 0; axis < 3; ++axis)
             block.writtenAxes[axis] =
                 templates.axisVariables[axis].empty() ? nullptr : templates.axisVariables[axis][0];
-    };
-    for (std::optional<BlockTemplate>* block : {&templates.rapid, &templates.linear})
-        if (*block)
-            assign(**block);
-    for (auto* planes : {&templates.circular, &templates.helix})
-        for (ArcBlocks& arcBlocks : *planes)
-            for (BlockTemplate& block : arcBlocks)
-                assign(block);
+    });
     return templates;
 }
 

@@ -183,6 +183,17 @@ private:
         return m_inverseTime ? feed * static_cast<double>(pieces) : feed;
     }
     void arcPiece(const ArcPiece& piece, const Arc& arc, int pieceIndex, int pieces);
+    // What a template could not write: a value beyond its format stops the run (false), a missing
+    // feed is counted for the warning at the end.
+    bool handleIssues(const BlockTemplate::Issues& issues)
+    {
+        if (issues.missingFeed)
+            m_missingFeed.add(m_run.m_recordIndex);
+        if (issues.beyondMax.empty())
+            return true;
+        m_run.fail(issues.beyondMax);
+        return false;
+    }
     void expandHole(const Cycle& cycle, const Vec3& hole);
 
     ScriptRun& m_run;
@@ -248,14 +259,11 @@ void ScriptSink::straight(Handler handler, const Vec3& to, AxisMask axes, double
         move.motion = isLinear ? 1 : 0;
         move.comp = compCode(m_comp);
         move.feedKind = feedKind;
-        m_run.m_templates.writeBefore(kernel.writer());
+        m_run.m_templates.writeBeforeMove(kernel.writer());
         BlockTemplate::Issues issues;
         if (block->write(move, kernel.writer(), issues))
             m_run.m_templates.finishMove(block->axisBits(), move.start, move.end, kernel.writer());
-        if (!issues.beyondMax.empty())
-            m_run.fail(issues.beyondMax);
-        if (issues.missingFeed)
-            m_missingFeed.add(m_run.m_recordIndex);
+        handleIssues(issues);
     } else {
         ++m_unhandled[std::string(m_run.m_recordName) + " (" + handlerName(handler) + ")"];
     }
@@ -351,7 +359,7 @@ void ScriptSink::arcPiece(const ArcPiece& p, const Arc& arc, int pieceIndex, int
         move.plane = 17 + BlockTemplates::planeIndex(plane);
         move.comp = compCode(m_comp);
         move.helical = p.helical;
-        m_run.m_templates.writeBefore(kernel.writer());
+        m_run.m_templates.writeBeforeMove(kernel.writer());
         BlockTemplate::Issues issues;
         unsigned boundAxes = 0;
         for (BlockTemplate& block : *blocks)
@@ -359,13 +367,9 @@ void ScriptSink::arcPiece(const ArcPiece& p, const Arc& arc, int pieceIndex, int
                 boundAxes |= block.axisBits();
             else if (!issues.beyondMax.empty())
                 break;
-        if (!issues.beyondMax.empty()) {
-            m_run.fail(issues.beyondMax);
+        if (!handleIssues(issues))
             return;
-        }
         m_run.m_templates.finishMove(boundAxes, p.start, p.end, kernel.writer());
-        if (issues.missingFeed)
-            m_missingFeed.add(m_run.m_recordIndex);
     } else if (pieceIndex == 0) {  // one count per arc, not per piece
         ++m_unhandled[std::string(m_run.m_recordName) + " (onCircular)"];
     }

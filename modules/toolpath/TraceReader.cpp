@@ -166,17 +166,11 @@ public:
             }
         return {};
     }
-    // Fails on a word left over where only the optional fields `what` may follow.
-    void expectEnd(const std::string& what)
+    // Fails on a word left over; `where` says what may end the line ("(flutes N, ...)").
+    void end(const std::string& where = "at the end of the line")
     {
         if (!failed() && !atEnd())
-            fail("unexpected '" + std::string(m_tokens[m_index].text) + "' (" + what + ")", m_tokens[m_index].column);
-    }
-    void end()
-    {
-        if (!failed() && !atEnd())
-            fail("unexpected '" + std::string(m_tokens[m_index].text) + "' at the end of the line",
-                 m_tokens[m_index].column);
+            fail("unexpected '" + std::string(m_tokens[m_index].text) + "' " + where, m_tokens[m_index].column);
     }
     void fail(const std::string& message, int column)
     {
@@ -282,7 +276,7 @@ base::Result<ClImport> readTrace(base::LineReader& lines, const std::string& fil
                 else
                     t.holder = in.text();
             }
-            in.expectEnd("after a tool's name: flutes N, angle A, holder \"...\"");
+            in.end("(after a tool's name: flutes N, angle A, holder \"...\")");
             record = ToolChange{t};
         } else if (kind == "spindle") {
             Spindle s{in.number()};
@@ -372,7 +366,7 @@ base::Result<ClImport> readTrace(base::LineReader& lines, const std::string& fil
                 (key == "entry"  ? s.feeds.entryMmPerMin
                  : key == "exit" ? s.feeds.exitMmPerMin
                                  : s.feeds.finishingMmPerMin) = in.number();
-            in.expectEnd("after a section's plunge feed: entry F, exit F, finish F");
+            in.end("(after a section's plunge feed: entry F, exit F, finish F)");
             record = s;
             section = sections++;
         } else if (kind == "endsection") {

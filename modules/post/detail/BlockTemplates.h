@@ -128,7 +128,11 @@ struct BlockTemplates {
     // The arc blocks for a piece in `planeIndex`: the helix ones for a helical piece if declared.
     ArcBlocks* arcBlocks(int planeIndex, bool helical);
     // Writes the pending `before` blocks (the TOOL CALL still waiting for its speed).
-    void writeBefore(OutputWriter& out);
+    void writeBeforeMove(OutputWriter& out)
+    {
+        if (!before.empty())  // most posts have none: no call on the per-move path
+            writeBefore(out);
+    }
     // After a move from `start` to `end` whose blocks bind the axes in `boundAxes` (axisBits):
     // resets the variables of the axes that moved but were not written; then writes the pending
     // `after` blocks.
@@ -140,7 +144,20 @@ struct BlockTemplates {
 
     static int planeIndex(const std::string& plane);  // "XY" 0, "ZX" 1, "YZ" 2, else -1
 
+    // Calls fn for every template block: rapid, linear, every arc and helix block.
+    template <typename Fn> void forEach(Fn fn)
+    {
+        for (std::optional<BlockTemplate>* block : {&rapid, &linear})
+            if (*block)
+                fn(**block);
+        for (auto* planes : {&circular, &helix})
+            for (ArcBlocks& blocks : *planes)
+                for (BlockTemplate& block : blocks)
+                    fn(block);
+    }
+
 private:
+    void writeBefore(OutputWriter& out);
     void resetUnwrittenAndWriteAfter(unsigned boundAxes, const toolpath::Vec3& start, const toolpath::Vec3& end,
                                      OutputWriter& out);
 };

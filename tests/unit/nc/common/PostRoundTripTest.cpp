@@ -104,6 +104,14 @@ toolpath::Toolpath pecksFromRPlane(const toolpath::Toolpath& cl)
     return out;
 }
 
+// Written with 3 decimals in mm or 4 in inch: up to 0.00005 in (0.00127 mm) per axis.
+MatchTolerance writtenTolerance()
+{
+    MatchTolerance tolerance;
+    tolerance.pointMm = tolerance.backPointMm = 0.0025;
+    return tolerance;
+}
+
 class PostRoundTrip : public testing::TestWithParam<PostCase> {};
 
 TEST_P(PostRoundTrip, NcTracesBackToTheCl)
@@ -144,9 +152,7 @@ TEST_P(PostRoundTrip, NcTracesBackToTheCl)
     if (result.files.size() && guessDialect("", nc.string()) == Dialect::Iso)
         expected = pecksFromRPlane(expected);
 
-    MatchTolerance tolerance;
-    // Written with 3 decimals in mm or 4 in inch: up to 0.00005 in (0.00127 mm) per axis.
-    tolerance.pointMm = tolerance.backPointMm = 0.0025;
+    MatchTolerance tolerance = writtenTolerance();
     // Arcs the post linearises within 0.01 mm (its warnings say so): chords and arc may be that far apart.
     std::ifstream warnings(dir / "expected.warnings");
     const std::string warned((std::istreambuf_iterator<char>(warnings)), std::istreambuf_iterator<char>());
@@ -175,9 +181,7 @@ std::optional<std::string> klartextDifference(const std::string& caseName, const
     EXPECT_TRUE(cl.ok());
     toolpath::ToolpathRecorder recorder;
     interpretFile(mutated.string(), std::nullopt, {}, recorder);
-    MatchTolerance tolerance;
-    tolerance.pointMm = tolerance.backPointMm = 0.0025;
-    return matchMotion(recorder.toolpath(), cl.value().toolpath, tolerance);
+    return matchMotion(recorder.toolpath(), cl.value().toolpath, writtenTolerance());
 }
 
 TEST(PostRoundTripCanFail, AMovedKlartextCoordinateOrAChangedFeedParameter)

@@ -5,6 +5,7 @@
 #pragma once
 
 #include "base/Result.h"
+#include "kinematics/KinematicChain.h"
 
 #include <string>
 #include <vector>
@@ -35,6 +36,7 @@ struct Machine {
     double maxCuttingFeedMmPerMin = 0;  // 0: not limited
     double rapidMmPerMin = 0;           // 0: unknown
     std::vector<std::string> coolants;  // "flood", "mist", "throughTool": what the machine has
+    KinematicChain kinematics;          // three-axis unless the file gives a chain (version 2)
     std::string filePath;
 
     const Axis* axis(const std::string& axisName) const;
@@ -44,7 +46,9 @@ struct Machine {
 // Version 1 grows by optional fields (feed.minCutting, toolChanger.manual, an axis' endless and
 // maxRpm): every file written before them still loads and means what it meant. A version 1
 // reader that predates them rejects an endless axis (it has no min) and ignores the rest.
-inline constexpr int kMachineFormatVersion = 1;
+// Version 2 adds the kinematic chain ("kinematics"); a version 1 file is a three-axis chain
+// whatever rotary axes it lists, as it always was.
+inline constexpr int kMachineFormatVersion = 2;
 
 // The rapid rate a machining time estimate assumes for `machine` (toolpath::StatsOptions): its
 // own when the file gives one, else toolpath::kDefaultRapidMmPerMin. nullptr: no machine.

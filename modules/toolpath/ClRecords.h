@@ -140,11 +140,24 @@ struct Cycle {
     bool returnToClearance = true;  // after each hole: up to clearanceZ (G98 style), else retractZ (G99)
 };
 
-// Five-axis move: tool tip and unit tool vector (from tip towards spindle). feed 0 = rapid.
+// Machine rotary axis positions in degrees, where the source knows them: NC read back through a
+// machine's kinematics, or a post that solved them. CL from operations and APT leaves them
+// unknown (the machine is the post's business).
+struct RotaryAxes {
+    static constexpr unsigned char kA = 1, kB = 2, kC = 4;
+    double aDeg = 0, bDeg = 0, cDeg = 0;
+    unsigned char known = 0;  // kA | kB | kC
+
+    bool has(unsigned char axis) const { return (known & axis) != 0; }
+};
+
+// Five-axis move: tool tip and unit tool vector (from tip towards spindle), both in the workpiece
+// frame. feed 0 = rapid.
 struct ToolAxisMove {
     Vec3 tip;
     Vec3 axis{0, 0, 1};
     double feedMmPerMin = 0;
+    RotaryAxes machine{};
 };
 
 struct CutterComp {

@@ -1,0 +1,88 @@
+// A five-axis machine's kinematic chain and its forward and inverse kinematics: which rotary axes
+// turn the workpiece (table) and which the tool (head), about which direction and through which
+// pivot, and how machine axis positions map to the tool tip and tool axis in the workpiece frame.
+// One model for table-table (B/C, A/C), head-table and head-head machines; no Qt, Eigen inside.
+#pragma once
+
+#include "base/Vec.h"
+
+#include <array>
+#include <string>
+#include <vector>
+
+namespace camwb::kinematics {
+
+using base::Vec3;
+
+// One rotary axis of the chain. A positive angle turns what the axis carries right-handed about
+// `direction` (so a machine whose axis counts the other way gives the opposite direction: seed
+// 000's B and C "taken negative" are directions +Y and +Z of a chain that turns the workpiece).
+struct RotaryJoint {
+    std::string axis;     // the machine axis it is ("A", "B", "C"), as in Machine::axes
+    bool onTable = true;  // turns the workpiece (table) or the tool (head)
+    Vec3 direction{0, 0, 1};
+    // A point on the axis at the zero pose: machine coordinates for a table axis; for a head axis,
+    // relative to the spindle gauge point (where a tool of length 0 would have its tip).
+    Vec3 pivot;
+};
+
+enum class ChainType { ThreeAxis, TableTable, HeadTable, HeadHead };
+
+struct KinematicChain {
+    ChainType type = ChainType::ThreeAxis;
+    // Two joints for a five-axis chain, table joints first from the machine frame outwards to the
+    // workpiece (the tilt that carries the rotary table first), then head joints from the frame
+    // out to the tool. MachinePose::rotaryDeg follows this order.
+    std::vector<RotaryJoint> joints;
+    // The workpiece zero in machine coordinates at the zero pose (seed 000: MRZP, the origin;
+    // seed 003: P above the pivot).
+    Vec3 workpieceZero;
+    // The solution branch a post takes first: the joint whose angle's sign tells the two
+    // branches apart (usually the tilt) and the sign wanted; index -1: none preferred.
+    int preferredJoint = -1;
+    int preferredSign = 1;
+
+    bool fiveAxis() const { return joints.size() == 2; }
+};
+
+// Machine axis positions: linear X Y Z (where the machine's own position display would be with
+// the tool's length compensated) and the two rotary angles in degrees, in KinematicChain::joints
+// order.
+struct MachinePose {
+    Vec3 linear;
+    std::array<double, 2> rotaryDeg{0, 0};
+};
+
+// The tool in the workpiece frame: tip point and unit axis from the tip towards the spindle.
+struct ToolPose {
+    Vec3 tip;
+    Vec3 axis{0, 0, 1};
+};
+
+// Machine axes → tool tip and axis in the workpiece frame. `toolLengthMm` matters only for head
+// joints (a head turns the tool about a pivot above its tip).
+ToolPose forwardKinematics(const KinematicChain& chain, const MachinePose& pose, double toolLengthMm = 0);
+
+// Tool pose → machine axes: the rotary solutions as the chain defines them, each angle in
+// (-180, 180], and the linear axes belonging to each. Two solutions in general, one at the pole,
+// none when the chain cannot point the tool that way (a head whose axes are not perpendicular, a
+// tool axis the directions cannot reach). At the pole (the tool axis on a rotary axis' direction,
+// so that axis' angle is free) the free angle takes `freeAngleDeg` of that joint (the previous
+// pose's, so a post keeps C) and `pole` says which joint was free.
+struct IkSolution {
+    MachinePose pose;
+    int pole = -1;  // the joint whose angle the tool axis does not fix; -1: none
+};
+std::vector<IkSolution> inverseKinematics(const KinematicChain& chain, const ToolPose& tool,
+                                          const std::array<double, 2>& freeAngleDeg = {0, 0},
+                                          double toolLengthMm = 0);
+
+// The linear axes that put the tool tip at `tip` with the rotary angles of `pose` (its linear
+// part is ignored): the part of the inverse kinematics after the angles are chosen, e.g. after an
+// angle was moved by a whole turn.
+Vec3 linearAxesFor(const KinematicChain& chain, const Vec3& tip, const std::array<double, 2>& rotaryDeg,
+                   double toolLengthMm = 0);
+
+const char* name(ChainType type);  // "three-axis", "table-table", "head-table", "head-head"
+
+}  // namespace camwb::kinematics

@@ -7,6 +7,7 @@
 #include "toolpath/ArcGeometry.h"
 #include "toolpath/CycleExpansion.h"
 #include "toolpath/MachineSink.h"
+#include "toolpath/PlaneFrames.h"
 #include "toolpath/RecordNames.h"
 
 #include <cmath>
@@ -119,6 +120,39 @@ public:
     void sectionEnd(const SectionEnd&) override { handle(Handler::SectionEnd, {}); }
     void programStop(const ProgramStop& r) override { handle(Handler::Stop, {r.optional}); }
     void passThrough(const PassThrough& r) override { handle(Handler::PassThrough, {qs(r.text)}); }
+    void workingPlane(const WorkingPlane& r) override
+    {
+        if (!m_run.has(Handler::WorkingPlane)) {
+            if (r.tilted())
+                m_run.fail("3+2 working plane (tool axis " + base::NumberFormat{6, true}.format(r.zAxis.x) + ", " +
+                           base::NumberFormat{6, true}.format(r.zAxis.y) + ", " +
+                           base::NumberFormat{6, true}.format(r.zAxis.z) + ") but post " + m_run.m_postId +
+                           " has no onWorkingPlane: it cannot tilt the working plane");
+            return;
+        }
+        auto vector = [this](const Vec3& v) {
+            QJSValue o = engine().newObject();
+            o.setProperty("x", v.x);
+            o.setProperty("y", v.y);
+            o.setProperty("z", v.z);
+            return o;
+        };
+        QJSValue plane = engine().newObject();
+        plane.setProperty("origin", vector(r.origin));
+        plane.setProperty("xAxis", vector(r.xAxis));
+        plane.setProperty("yAxis", vector(r.yAxis()));
+        plane.setProperty("zAxis", vector(r.zAxis));
+        plane.setProperty("tilted", r.tilted());
+        // The spatial angles of the rotation (toolpath/PlaneFrames.h: about the fixed X, Y, Z).
+        const std::array<double, 3> angles = toolpath::spatialAngles(r);
+        plane.setProperty("spatialA", angles[0]);
+        plane.setProperty("spatialB", angles[1]);
+        plane.setProperty("spatialC", angles[2]);
+        handle(Handler::WorkingPlane, {plane});
+        // The coordinates that follow are in another frame: no axis value written before means
+        // anything there, so every axis is written again.
+        m_run.m_kernel->forgetPosition();
+    }
     void setSource(const SourceRef& source) override
     {
         m_operation = source.operationIndex;

@@ -83,12 +83,14 @@ public:
     void sectionEnd(const toolpath::SectionEnd&) override {}
     void programStop(const toolpath::ProgramStop&) override {}
     void passThrough(const toolpath::PassThrough&) override {}
+    void workingPlane(const toolpath::WorkingPlane&) override;
 
 private:
     void lineTo(const base::Vec3& to, PathSegmentKind kind);
     void errorTo(const base::Vec3& to);
     void straightTo(const base::Vec3& to, toolpath::AxisMask axes, PathSegmentKind kind);
     std::uint32_t currentIndex();
+    base::Vec3 shown(const base::Vec3& p) const { return m_tilted ? m_plane.toWorkpiece(p) : p; }
 
     double m_chordToleranceMm;
     std::vector<base::Vec3> m_points;
@@ -100,6 +102,8 @@ private:
     std::uint32_t m_record = 0;
     std::int32_t m_tool = 0;
     bool m_inError = false;
+    toolpath::WorkingPlane m_plane;  // the frame of the moves (3+2)
+    bool m_tilted = false;
 };
 
 }  // namespace camwb::gui

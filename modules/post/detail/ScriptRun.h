@@ -41,6 +41,7 @@ enum class Handler {
     SectionEnd,
     Stop,
     PassThrough,
+    WorkingPlane,
     Close,
     Count
 };

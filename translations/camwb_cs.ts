@@ -1480,6 +1480,10 @@ Save them first?</source>
 %1</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <source>Working plane (3+2)</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>camwb::gui::PocketPanel</name>
@@ -1913,6 +1917,49 @@ Keep the operations without them (they are marked until you choose new geometry 
     </message>
     <message>
         <source>The job is being computed; save the NC program when the post has finished.</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>camwb::gui::WorkingPlaneBox</name>
+    <message>
+        <source>Flat (tool along Z)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Along a face&apos;s normal</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Spatial angles</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>3+2: the plane the operation is computed in; the post tilts the machine to it. Flat drilling turns to each hole&apos;s own axis.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Plane</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The planar face whose outward normal the tool follows</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Face</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>A (about X)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>B (about Y)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>C (about Z)</source>
         <translation type="unfinished"></translation>
     </message>
 </context>

@@ -97,6 +97,9 @@ var post = {
 };
 post.capabilities.arcWords = getProperty("arcOutput") == "CR" ? "radius" : "center";
 var tcpmMode = getProperty("tcpm");
+if (tcpmMode == "off" && getProperty("rotaryFeed") == "combined" && getProperty("units") == "inch")
+    error("tcpm off with the combined feed is written in mm programs only (F mixes mm and degrees): " +
+          "use units mm or rotaryFeed m116");
 post.fiveAxis = {
     output: tcpmMode == "off" ? "machine" : "tip",
     feed: tcpmMode == "off" && getProperty("rotaryFeed") == "combined" ? "combined" : "tip",
@@ -571,6 +574,7 @@ function onCycleEnd(cycle) {
 function onFiveAxisBegin(section) {
     flushToolCall();
     writeBlock("L", "M140 MB MAX");
+    forceMotion();  // the retract moved X, Y and Z
     var turn = ["L", cOutput.format(section.c), bOutput.format(section.b)];
     if (turn[1] || turn[2])
         writeBlock.apply(null, turn.concat(["FMAX"]));

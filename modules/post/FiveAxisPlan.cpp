@@ -50,7 +50,11 @@ std::vector<std::pair<std::size_t, std::size_t>> fiveAxisRanges(const toolpath::
     bool five = false;
     for (std::size_t i = 0; i < toolpath.size(); ++i) {
         const toolpath::Record& record = toolpath.record(i);
-        if (std::holds_alternative<toolpath::SectionBegin>(record)) {
+        // A section runs from its SectionBegin to its SectionEnd; what lies outside sections is
+        // a region of its own (a CL without sections is one).
+        const bool opens = std::holds_alternative<toolpath::SectionBegin>(record);
+        const bool closes = std::holds_alternative<toolpath::SectionEnd>(record);
+        if (opens) {
             if (five)
                 ranges.emplace_back(begin, i);
             begin = i;
@@ -58,6 +62,12 @@ std::vector<std::pair<std::size_t, std::size_t>> fiveAxisRanges(const toolpath::
         }
         if (const auto* move = std::get_if<toolpath::ToolAxisMove>(&record))
             five = five || !alongZ(move->axis);
+        if (closes) {
+            if (five)
+                ranges.emplace_back(begin, i + 1);
+            begin = i + 1;
+            five = false;
+        }
     }
     if (five)
         ranges.emplace_back(begin, toolpath.size());

@@ -72,7 +72,7 @@ inline bool alongZ(const toolpath::Vec3& axis)
     return std::abs(axis.x) < 1e-9 && std::abs(axis.y) < 1e-9 && axis.z > 0;
 }
 
-// A section (SectionBegin to the next, or the whole program without sections) with a ToolAxisMove
+// A section (SectionBegin to its SectionEnd; what lies outside sections counts as one) with a ToolAxisMove
 // off +Z is five-axis: every move in it is a tool pose (Rapid/Linear and linearised arcs along +Z), all
 // planned together from the home pose (rotaries 0, where the post returns them after a section).
 // Errors name the CL record: a pose out of reach, a reconfiguration refused, a cycle or an

@@ -210,6 +210,8 @@ base::Status SectionPlanner::plan(const std::vector<SectionPose>& poses, double 
     kinematics::BranchPlanOptions options;
     options.reconfigureStepDeg = m_options.reconfigureStepDeg;
     options.allowReconfigure = m_options.retractToReconfigure;
+    // Within the cone C may swing however the tool axis turns: the post keeps it there.
+    options.poleConeDeg = std::max(options.poleConeDeg, m_options.poleConeDeg);
     auto planned = kinematics::planBranches(solver, tools, &home, options);
     if (!planned)
         return explainFailure(solver, tools, poses, home, planned.error());

@@ -403,12 +403,35 @@ std::vector<MachinePose> lineariseJointMove(const kinematics::KinematicChain& ch
     return poses;
 }
 
-double combinedFeed(const MachinePose& from, const MachinePose& to, double tipLengthMm, double tipFeed, double maxFeed,
-                    bool* capped)
+namespace {
+
+// The length of a block in machine space, mm and degrees together.
+double axesLength(const MachinePose& from, const MachinePose& to)
 {
     const Vec3 d = to.linear - from.linear;
     const double b = to.rotaryDeg[0] - from.rotaryDeg[0], c = to.rotaryDeg[1] - from.rotaryDeg[1];
-    const double axes = std::sqrt(d.dot(d) + b * b + c * c);
+    return std::sqrt(d.dot(d) + b * b + c * c);
+}
+
+}  // namespace
+
+double inverseTimeFeed(const MachinePose& from, const MachinePose& to, double tipLengthMm, double tipFeed,
+                       double maxFeed, bool* capped)
+{
+    const double rotary = std::hypot(to.rotaryDeg[0] - from.rotaryDeg[0], to.rotaryDeg[1] - from.rotaryDeg[1]);
+    const double length = tipLengthMm > 1e-9 ? tipLengthMm : rotary;
+    const double inverse = length > 1e-12 ? tipFeed / length : 0;
+    const double axes = axesLength(from, to);
+    const bool over = maxFeed > 0 && axes > 1e-12 && inverse * axes > maxFeed;
+    if (capped)
+        *capped = over;
+    return over ? maxFeed / axes : inverse;
+}
+
+double combinedFeed(const MachinePose& from, const MachinePose& to, double tipLengthMm, double tipFeed, double maxFeed,
+                    bool* capped)
+{
+    const double axes = axesLength(from, to);
     double feed = tipLengthMm > 1e-9 ? tipFeed * axes / tipLengthMm : tipFeed;
     const bool over = maxFeed > 0 && feed > maxFeed;
     if (capped)

@@ -96,11 +96,20 @@ double jointMoveTipDeviation(const kinematics::KinematicChain& chain, const kine
                              const kinematics::MachinePose& to, const toolpath::Vec3& tipFrom,
                              const toolpath::Vec3& tipTo, double toolLengthMm = 0);
 
+// How F of a five-axis block is written: the CL's tip feed (TCPM, M116), for all axes together in
+// mm and degrees (combinedFeed), or inverse time (inverseTimeFeed: SINUMERIK G93).
+enum class FiveAxisFeed { Tip, Combined, InverseTime };
+
 // F for a block from `from` to `to` on a control that moves all axes together at F in mm and
 // degrees (the iTNC without M116/M128): the block takes the time the tip needs for tipLengthMm at
 // tipFeed. A rotary-only block (tip standing) keeps tipFeed as degrees/min. Capped at maxFeed
 // (0: none); `capped` says so.
 double combinedFeed(const kinematics::MachinePose& from, const kinematics::MachinePose& to, double tipLengthMm,
                     double tipFeed, double maxFeed, bool* capped = nullptr);
+
+// Inverse time (1/min) for the same block: the tip's time at tipFeed (a rotary-only block: its
+// rotary travel at tipFeed degrees/min), no shorter than all axes together need at maxFeed.
+double inverseTimeFeed(const kinematics::MachinePose& from, const kinematics::MachinePose& to, double tipLengthMm,
+                       double tipFeed, double maxFeed, bool* capped = nullptr);
 
 }  // namespace camwb::post

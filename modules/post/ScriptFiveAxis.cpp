@@ -123,11 +123,17 @@ bool FiveAxisWriter::writeRecord(bool compensationOn)
 double FiveAxisWriter::feedFor(const FiveAxisStep& step, const MachinePose& from, const MachinePose& to,
                                double tipLength)
 {
-    if (!m_run.m_fiveAxis.machineCoordinates || !m_run.m_fiveAxis.combinedFeed || step.feedMmPerMin <= 0)
+    // The combined feed is what a control without TCPM reads of machine coordinates.
+    const FiveAxisFeed mode = m_run.m_fiveAxis.feed == FiveAxisFeed::Combined && !m_run.m_fiveAxis.machineCoordinates
+                                  ? FiveAxisFeed::Tip
+                                  : m_run.m_fiveAxis.feed;
+    if (mode == FiveAxisFeed::Tip || step.feedMmPerMin <= 0)
         return step.feedMmPerMin;
     bool capped = false;
-    const double feed =
-        combinedFeed(from, to, tipLength, step.feedMmPerMin, m_run.m_machine->maxCuttingFeedMmPerMin, &capped);
+    const double max = m_run.m_machine->maxCuttingFeedMmPerMin;
+    const double feed = mode == FiveAxisFeed::Combined
+                            ? combinedFeed(from, to, tipLength, step.feedMmPerMin, max, &capped)
+                            : inverseTimeFeed(from, to, tipLength, step.feedMmPerMin, max, &capped);
     if (capped && m_capped++ == 0)
         m_firstCapped = step.record;
     return feed;
@@ -137,6 +143,10 @@ void FiveAxisWriter::writeStep(const FiveAxisStep& step)
 {
     const bool machine = m_run.m_fiveAxis.machineCoordinates;
     if (!(step.feedMmPerMin > 0) || !m_last) {
+        if (step.feedMmPerMin > 0 && m_run.m_fiveAxis.feed == FiveAxisFeed::InverseTime) {
+            m_run.fail("an inverse-time feed for the first move of a five-axis operation, whose start is not known");
+            return;
+        }
         writePose(step, step.pose, step.tool, step.feedMmPerMin);
         return;
     }

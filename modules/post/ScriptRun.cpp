@@ -498,9 +498,13 @@ base::Status ScriptRun::readFiveAxis(const std::string& source)
         bool ok = false;
         if (key == "output")
             ok = choice(value, "tip", "machine", five.machineCoordinates);
-        else if (key == "feed")
-            ok = choice(value, "tip", "combined", five.combinedFeed);
-        else if (key == "reconfigure")
+        else if (key == "feed") {
+            const std::string text = str(value);
+            ok = text == "tip" || text == "combined" || text == "inverse";
+            five.feed = text == "combined"  ? FiveAxisFeed::Combined
+                        : text == "inverse" ? FiveAxisFeed::InverseTime
+                                            : FiveAxisFeed::Tip;
+        } else if (key == "reconfigure")
             ok = choice(value, "retract", "refuse", refuse);
         else if (key == "poleCone")
             ok = number(value, 0, 10, five.options.poleConeDeg);
@@ -514,7 +518,7 @@ base::Status ScriptRun::readFiveAxis(const std::string& source)
                              "reconfigureStep)");
         if (!ok)
             return declError("." + key + ": \"" + str(value) +
-                             "\" is not accepted (output tip|machine, feed tip|combined, reconfigure "
+                             "\" is not accepted (output tip|machine, feed tip|combined|inverse, reconfigure "
                              "retract|refuse, poleCone 0..10 deg, retract > 0 mm, reconfigureStep > 0 deg)");
         if (key == "reconfigure")
             five.options.retractToReconfigure = !refuse;

@@ -51,8 +51,8 @@ const char* handlerName(Handler handler);
 
 // post.fiveAxis: how the kernel writes five-axis moves on a machine with a five-axis chain.
 struct FiveAxisDeclaration {
-    bool machineCoordinates = false;  // "machine": linear axes about the chain's origin (no TCPM); "tip"
-    bool combinedFeed = false;        // "combined": F for all axes together (combinedFeed()); "tip"
+    bool machineCoordinates = false;        // "machine": linear axes about the chain's origin (no TCPM); "tip"
+    FiveAxisFeed feed = FiveAxisFeed::Tip;  // "tip", "combined" (machine output), "inverse"
     FiveAxisOptions options;
 };
 

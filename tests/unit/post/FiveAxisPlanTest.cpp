@@ -223,5 +223,22 @@ TEST(FiveAxisPlan, CombinedFeedGivesTheTipItsTime)
     EXPECT_NEAR(combinedFeed(from, turn, 0, 600, 0), 600, 1e-9);
 }
 
+TEST(FiveAxisPlan, InverseTimeFeedIsTheTipsTime)
+{
+    MachinePose from, to;
+    to.linear = {3, 4, 0};
+    to.rotaryDeg = {0, 12};
+    bool capped = true;
+    // 10 mm at 600 mm/min: 1/60 min, F60 in inverse time.
+    EXPECT_NEAR(inverseTimeFeed(from, to, 10, 600, 0, &capped), 60, 1e-9);
+    EXPECT_FALSE(capped);
+    // All axes together (13 units) at most 390/min: the block takes 1/30 min.
+    EXPECT_NEAR(inverseTimeFeed(from, to, 10, 600, 390, &capped), 30, 1e-9);
+    EXPECT_TRUE(capped);
+    MachinePose turn;
+    turn.rotaryDeg = {0, 90};  // the tip stands: 90 degrees at 600 degrees/min
+    EXPECT_NEAR(inverseTimeFeed(from, turn, 0, 600, 0), 600.0 / 90, 1e-9);
+}
+
 }  // namespace
 }  // namespace camwb::post

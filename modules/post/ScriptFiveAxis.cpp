@@ -34,11 +34,6 @@ const char* kindName(StepKind kind)
     return "move";
 }
 
-std::string counted(int count, const char* one, const char* many)
-{
-    return std::to_string(count) + " " + (count == 1 ? one : many);
-}
-
 }  // namespace
 
 void ScriptKernel::noteMachineAxes(const std::array<double, 6>& values, unsigned mask)

@@ -96,6 +96,11 @@ bool isCycleKind(const std::string& kind)
 
 }  // namespace
 
+std::string counted(int count, const char* one, const char* many)
+{
+    return std::to_string(count) + " " + (count == 1 ? one : many);
+}
+
 const char* handlerName(Handler handler) { return kHandlerNames[static_cast<int>(handler)]; }
 
 ScriptRun::ScriptRun(std::string postFile, const PostContext& context, std::chrono::milliseconds budget) :

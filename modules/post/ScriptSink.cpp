@@ -29,11 +29,6 @@ int compCode(CutterCompSide side)
 // The feed kind as block templates take it (toolpath::FeedKind's value).
 template <typename Move> int feedKindOf(const Move& move) { return static_cast<int>(move.feedKind); }
 
-std::string counted(int count, const char* one, const char* many)
-{
-    return std::to_string(count) + " " + (count == 1 ? one : many);
-}
-
 // A message once per run for something that happened `count` times, first at `first`.
 struct Tally {
     long long first = -1;

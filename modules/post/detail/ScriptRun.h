@@ -48,6 +48,8 @@ enum class Handler {
     Count
 };
 const char* handlerName(Handler handler);
+// "1 arc", "3 arcs": a count with its noun, for the run's warnings.
+std::string counted(int count, const char* one, const char* many);
 
 // post.fiveAxis: how the kernel writes five-axis moves on a machine with a five-axis chain.
 struct FiveAxisDeclaration {

@@ -586,9 +586,9 @@ function onFiveAxisBegin(section) {
         writeBlock("L", "M116");
 }
 
-// After it: out along the tool axis, TCPM off, the table home (B+0, C at the nearest whole turn:
-// M126 takes the short way). X, Y and Z are then unknown: the next move writes them all.
-function onFiveAxisEnd(pose) {
+// After it: out along the tool axis, TCPM off, the table home as the kernel plans the next
+// operation from (B+0, C at the nearest whole turn). X, Y and Z are then unknown.
+function onFiveAxisEnd(pose, home) {
     writeBlock("L", "M140 MB MAX");
     if (tcpmMode == "m128")
         writeBlock("L", "M129");
@@ -596,10 +596,9 @@ function onFiveAxisEnd(pose) {
         writeBlock("FUNCTION RESET TCPM");
     else if (getProperty("rotaryFeed") == "m116")
         writeBlock("L", "M117");
-    var home = ["L", cOutput.format(pose && pose.c !== undefined ? 360 * Math.round(pose.c / 360) : 0),
-                bOutput.format(0)];
-    if (home[1] || home[2])
-        writeBlock.apply(null, home.concat(["FMAX"]));
+    var turn = ["L", cOutput.format(home.c), bOutput.format(home.b)];
+    if (turn[1] || turn[2])
+        writeBlock.apply(null, turn.concat(["FMAX"]));
     forceMotion();
 }
 

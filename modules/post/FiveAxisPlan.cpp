@@ -134,6 +134,7 @@ private:
     const kinematics::Machine& m_machine;
     const FiveAxisOptions& m_options;
     FiveAxisPlan& m_plan;
+    MachinePose m_home;  // where the rotaries stand before the next section
 };
 
 base::Status SectionPlanner::explainFailure(const kinematics::PoseSolver& solver, const std::vector<ToolPose>& tools,
@@ -206,7 +207,7 @@ base::Status SectionPlanner::plan(const std::vector<SectionPose>& poses, double 
     tools.reserve(poses.size());
     for (const SectionPose& pose : poses)
         tools.push_back(pose.tool);
-    const MachinePose home;
+    const MachinePose home = m_home;
     kinematics::BranchPlanOptions options;
     options.reconfigureStepDeg = m_options.reconfigureStepDeg;
     options.allowReconfigure = m_options.retractToReconfigure;
@@ -264,6 +265,15 @@ base::Status SectionPlanner::plan(const std::vector<SectionPose>& poses, double 
         m_plan.steps.push_back(move);
     }
     section.endStep = m_plan.steps.size();
+    // After the section the post turns the rotaries home: each to the whole turn nearest where it
+    // stands (a tilt to 0), or to 0 where that turn lies beyond the axis' limits.
+    for (int j = 0; j < 2; ++j) {
+        const double stands = m_plan.steps.back().pose.rotaryDeg[static_cast<std::size_t>(j)];
+        m_home.rotaryDeg[static_cast<std::size_t>(j)] = 360 * std::round(stands / 360);
+    }
+    if (solver.outsideLimits(m_home))
+        m_home = MachinePose{};
+    section.home = m_home.rotaryDeg;
     m_plan.sections.push_back(section);
     return {};
 }

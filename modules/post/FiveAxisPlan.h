@@ -10,6 +10,7 @@
 #include "kinematics/PoseSolver.h"
 #include "toolpath/Toolpath.h"
 
+#include <array>
 #include <cmath>
 #include <cstddef>
 #include <vector>
@@ -56,6 +57,9 @@ struct FiveAxisSection {
     std::size_t firstStep = 0, endStep = 0;
     int reconfigurations = 0;
     double toolLengthMm = 0;  // of the tool that cuts it (head joints turn about a pivot above the tip)
+    // Where the post turns the rotaries after it (onFiveAxisEnd): each at the whole turn nearest
+    // where it stands (0 where that is beyond its limits); the next section is planned from there.
+    std::array<double, 2> home{0, 0};
 };
 
 struct FiveAxisPlan {
@@ -74,7 +78,8 @@ inline bool alongZ(const toolpath::Vec3& axis)
 
 // A section (SectionBegin to its SectionEnd; what lies outside sections counts as one) with a ToolAxisMove
 // off +Z is five-axis: every move in it is a tool pose (Rapid/Linear and linearised arcs along +Z), all
-// planned together from the home pose (rotaries 0, where the post returns them after a section).
+// planned together from the home pose (rotaries 0, or the whole turns FiveAxisSection::home of
+// the section before, where the post returns them).
 // Errors name the CL record: a pose out of reach, a reconfiguration refused, a cycle or an
 // unknown start in a five-axis section.
 base::Result<FiveAxisPlan> planFiveAxis(const toolpath::Toolpath& toolpath, const kinematics::Machine& machine,

@@ -110,8 +110,14 @@ bool FiveAxisWriter::writeRecord(bool compensationOn)
     if (m_run.m_failure || (m_next < steps.size() && steps[m_next].section == m_last->section))
         return false;
     m_inSection = false;
-    if (m_run.has(Handler::FiveAxisEnd))
-        m_run.call(Handler::FiveAxisEnd, {m_run.m_kernel->getMachinePose()});
+    if (m_run.has(Handler::FiveAxisEnd)) {
+        const FiveAxisSection& section = m_plan.sections[static_cast<std::size_t>(m_last->section)];
+        const kinematics::KinematicChain& chain = m_run.m_machine->kinematics;
+        QJSValue home = m_run.m_engine.newObject();
+        for (std::size_t j = 0; j < chain.joints.size() && j < 2; ++j)
+            home.setProperty(kAxisNames[3 + rotaryIndex(chain.joints[j].axis)], section.home[j]);
+        m_run.call(Handler::FiveAxisEnd, {m_run.m_kernel->getMachinePose(), home});
+    }
     return true;
 }
 

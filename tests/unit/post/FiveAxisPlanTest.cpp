@@ -149,6 +149,30 @@ TEST(FiveAxisPlan, RetractsTurnsAndReentersWhereTheLimitsForceIt)
     EXPECT_NE(refused.error().message.find("reconfigured"), std::string::npos) << refused.error().message;
 }
 
+TEST(FiveAxisPlan, TheNextSectionStartsWhereTheRotariesWentHome)
+{
+    // The first section turns the tool axis round once and a bit: C ends near +-380.
+    toolpath::Toolpath tp;
+    tp.add(toolpath::SectionBegin{});
+    for (int az = 0; az <= 380; az += 20)
+        tp.add(toolpath::ToolAxisMove{{0, 0, 0}, tilted(30, az), 500});
+    tp.add(toolpath::SectionEnd{});
+    tp.add(toolpath::SectionBegin{});
+    tp.add(toolpath::ToolAxisMove{{0, 0, 0}, tilted(30, 10), 500});
+    tp.add(toolpath::SectionEnd{});
+    auto plan = planFiveAxis(tp, bcTable(), {}, 0.01);
+    ASSERT_TRUE(plan) << plan.error().message;
+    ASSERT_EQ(plan.value().sections.size(), 2u);
+    const auto& first = plan.value().sections[0];
+    const double lastC = plan.value().steps[first.endStep - 1].pose.rotaryDeg[1];
+    EXPECT_GT(std::abs(lastC), 360);
+    EXPECT_EQ(first.home[0], 0);
+    EXPECT_EQ(first.home[1], 360 * std::round(lastC / 360));
+    // Planned from there: no turn back over a whole revolution.
+    const double nextC = plan.value().steps[plan.value().sections[1].firstStep].pose.rotaryDeg[1];
+    EXPECT_LT(std::abs(nextC - first.home[1]), 180) << nextC;
+}
+
 TEST(FiveAxisPlan, ThreeAxisSectionsAreNotPlanned)
 {
     toolpath::Toolpath tp;

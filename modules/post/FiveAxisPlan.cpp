@@ -324,6 +324,8 @@ base::Result<FiveAxisPlan> planFiveAxis(const toolpath::Toolpath& toolpath, cons
             if (inside) {
                 if (auto status = known(); !status)
                     return status.error();
+                if (plan.arcsLinearised++ == 0)
+                    plan.firstArcLinearised = i;
                 for (const Vec3& point : toolpath::linearizeArc(position.value(), *arc, arcToleranceMm))
                     poses.push_back({i, {point, up}, arc->feedMmPerMin, static_cast<int>(arc->feedKind)});
             }

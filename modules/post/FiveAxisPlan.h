@@ -68,6 +68,8 @@ struct FiveAxisPlan {
     int poleAdjusted = 0;  // steps whose axis the cone moved onto the pole
     double maxAxisDeviationDeg = 0;
     std::size_t firstPoleAdjusted = 0;  // its CL record
+    int arcsLinearised = 0;             // arcs in five-axis sections, written as lines
+    std::size_t firstArcLinearised = 0;
 };
 
 // Whether a tool axis is +Z: a ToolAxisMove along it is a three-axis move.
@@ -77,7 +79,8 @@ inline bool alongZ(const toolpath::Vec3& axis)
 }
 
 // A section (SectionBegin to its SectionEnd; what lies outside sections counts as one) with a ToolAxisMove
-// off +Z is five-axis: every move in it is a tool pose (Rapid/Linear and linearised arcs along +Z), all
+// off +Z is five-axis: every move in it is a tool pose (Rapid/Linear and arcs, linearised within
+// `arcToleranceMm`, along +Z), all
 // planned together from the home pose (rotaries 0, or the whole turns FiveAxisSection::home of
 // the section before, where the post returns them).
 // Errors name the CL record: a pose out of reach, a reconfiguration refused, a cycle or an

@@ -239,6 +239,12 @@ void FiveAxisWriter::report(std::vector<base::Diagnostic>& messages) const
                 "keep C, at most " + base::NumberFormat{6, true}.format(m_plan.maxAxisDeviationDeg) +
                 " deg from the CL's (first: CL record " + std::to_string(m_plan.firstPoleAdjusted) + ")",
             file));
+    if (m_plan.arcsLinearised > 0)
+        messages.push_back(base::warningDiagnostic(
+            counted(m_plan.arcsLinearised, "arc", "arcs") + " in a five-axis operation: written as lines within " +
+                base::NumberFormat{6, true}.format(m_run.m_capabilities.toleranceMm) + " mm (first: CL record " +
+                std::to_string(m_plan.firstArcLinearised) + ")",
+            file));
     if (m_capped > 0)
         messages.push_back(base::warningDiagnostic(
             counted(m_capped, "five-axis block", "five-axis blocks") + " would need a feed above the machine's " +

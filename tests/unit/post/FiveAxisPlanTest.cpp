@@ -173,6 +173,36 @@ TEST(FiveAxisPlan, TheNextSectionStartsWhereTheRotariesWentHome)
     EXPECT_LT(std::abs(nextC - first.home[1]), 180) << nextC;
 }
 
+TEST(FiveAxisPlan, ArcsInAFiveAxisSectionAreToolPosesAlongTheirChords)
+{
+    toolpath::Toolpath tp;
+    tp.add(toolpath::SectionBegin{});
+    tp.add(toolpath::ToolAxisMove{{0, 0, 0}, tilted(20, 0), 500});
+    tp.add(toolpath::Linear{{10, 0, 0}, 500});
+    toolpath::Arc arc;
+    arc.to = {20, 10, 0};
+    arc.center = {10, 10, 0};
+    arc.normal = {0, 0, 1};
+    arc.clockwise = false;
+    arc.feedMmPerMin = 500;
+    tp.add(arc);
+    tp.add(toolpath::SectionEnd{});
+    auto plan = planFiveAxis(tp, bcTable(), {}, 0.01);
+    ASSERT_TRUE(plan) << plan.error().message;
+    EXPECT_EQ(plan.value().arcsLinearised, 1);
+    EXPECT_EQ(plan.value().firstArcLinearised, 3u);
+    int points = 0;
+    for (const FiveAxisStep& step : plan.value().steps) {
+        if (step.record != 3)
+            continue;
+        ++points;
+        EXPECT_NEAR(distance(step.tool.tip, Vec3{10, 10, 0}), 10, 1e-9);
+        EXPECT_EQ(step.tool.axis, (Vec3{0, 0, 1}));
+        EXPECT_NEAR(step.pose.rotaryDeg[0], 0, 1e-9);  // on the pole: B0, C kept
+    }
+    EXPECT_GT(points, 5);
+}
+
 TEST(FiveAxisPlan, ThreeAxisSectionsAreNotPlanned)
 {
     toolpath::Toolpath tp;

@@ -188,7 +188,8 @@ void SectionPlanner::keepPoleInCone(const kinematics::PoseSolver& solver, FiveAx
             return rotaryDistance(a.pose, previous) < rotaryDistance(b.pose, previous);
         });
         step.pose = nearest->pose;
-        step.pose.linear = kinematics::linearAxesFor(m_machine.kinematics, step.tool.tip, step.pose.rotaryDeg);
+        step.pose.linear =
+            kinematics::linearAxesFor(m_machine.kinematics, step.tool.tip, step.pose.rotaryDeg, solver.toolLengthMm());
         step.pole = true;
         step.axisDeviationDeg = off;
         if (off > 0 && m_plan.poleAdjusted++ == 0)

@@ -85,6 +85,13 @@ var post = {
             description: "Where no branch finishes an operation without a flip or rewind of B/C: retract along " +
                          "the tool axis, turn, re-enter (retract), or stop with an error naming the CL record"
         },
+        workingPlane: {
+            title: "Tilted working plane (3+2)", type: "enum", values: ["plane-spatial", "cycle19"],
+            default: "plane-spatial",
+            description: "PLANE SPATIAL SPA SPB SPC TURN MB MAX FMAX SEQ+- (PLANE RESET after), or the older CYCL DEF " +
+                         "19 WORKING PLANE with the machine's B and C (the control set for axis angles) and the " +
+                         "table turned by an L block"
+        },
         retractDistance: {
             title: "Reconfiguration retract (mm)", type: "number", default: 50, min: 1, max: 1000,
             description: "How far the tool leaves the part along its axis before the table turns to reconfigure"
@@ -567,6 +574,57 @@ function onCycleEnd(cycle) {
     zOutput.reset();  // the cycle left Z at its return plane
 }
 
+// --- 3+2: the tilted working plane ------------------------------------------------------------
+
+// The rotary positions the working planes turned to, for the travel report: {b: {min, max}, c: ...}.
+var planeTravel = {};
+
+function notePlaneTravel(axis, value) {
+    var t = planeTravel[axis];
+    planeTravel[axis] = t ? {min: Math.min(t.min, value), max: Math.max(t.max, value)} : {min: value, max: value};
+}
+
+// The moves after it are in the plane's frame (the kernel forgets every axis). PLANE SPATIAL turns
+// the table itself after retracting to the travel limit along the tool axis (TURN MB MAX), on the
+// branch the kinematics chose (SEQ: the sign of B); CYCL DEF 19 needs the table turned by hand.
+function onWorkingPlane(plane) {
+    flushToolCall();
+    var origin = plane.origin;
+    if (origin.x != 0 || origin.y != 0 || origin.z != 0)
+        throw new Error("a working plane whose origin is not the workpiece zero (a datum shift) is not written yet");
+    var cycle19 = getProperty("workingPlane") == "cycle19";
+    if (!plane.tilted) {
+        if (cycle19) {
+            writeBlock("L", "M140 MB MAX");
+            writeBlock("CYCL DEF 19.0", czech ? "NAKLOPENÍ ROVINY" : "WORKING PLANE");
+            writeBlock("CYCL DEF 19.1", "B+0", "C+0");
+            writeBlock("L", "C+0", "B+0", "R0", "FMAX");
+        } else {
+            writeBlock("PLANE RESET TURN MB MAX FMAX");
+        }
+        forceMotion();
+        return;
+    }
+    if (plane.machine) {
+        notePlaneTravel("b", plane.machine.b);
+        notePlaneTravel("c", plane.machine.c);
+    }
+    if (!plane.machine)
+        throw new Error("a tilted working plane needs a machine with a five-axis chain (" + (machine ? machine.id : "none") +
+                        " has none)");
+    if (cycle19) {
+        writeBlock("L", "M140 MB MAX");
+        writeBlock("CYCL DEF 19.0", czech ? "NAKLOPENÍ ROVINY" : "WORKING PLANE");
+        writeBlock("CYCL DEF 19.1", "B" + angleFormat.format(plane.machine.b), "C" + angleFormat.format(plane.machine.c));
+        writeBlock("L", "C" + angleFormat.format(plane.machine.c), "B" + angleFormat.format(plane.machine.b), "R0",
+                   "FMAX");
+    } else {
+        writeBlock("PLANE SPATIAL", "SPA" + angleFormat.format(plane.spatialA), "SPB" + angleFormat.format(plane.spatialB),
+                   "SPC" + angleFormat.format(plane.spatialC), "TURN MB MAX FMAX", plane.machine.branch < 0 ? "SEQ-" : "SEQ+");
+    }
+    forceMotion();
+}
+
 // --- Five-axis operations ---------------------------------------------------------------------
 
 // Before a five-axis operation: away from the part along the tool axis to the travel limit, the
@@ -607,8 +665,12 @@ function onFiveAxisEnd(pose, home) {
 // X Y Z from the program's extents widened by what five-axis blocks wrote (without TCPM machine
 // coordinates, so the report may be wider than either), then B and C as written.
 function travelReport() {
-    var five = getFiveAxisTravel();
-    if (!travel && !five)
+    var five = getFiveAxisTravel() || {};
+    for (var axis in planeTravel) {  // 3+2 positions count as the rotary axes' travel too
+        var p = planeTravel[axis];
+        five[axis] = five[axis] ? {min: Math.min(five[axis].min, p.min), max: Math.max(five[axis].max, p.max)} : p;
+    }
+    if (!travel && Object.keys(five).length == 0)
         return;
     var axes = ["x", "y", "z", "b", "c"];
     for (var i = 0; i < axes.length; ++i) {

@@ -49,10 +49,10 @@ var writeBlock = (function (kernel) {
 )JS";
 
 constexpr const char* kHandlerNames[] = {
-    "onOpen",       "onSection",     "onToolChange",   "onSpindle",       "onCoolant",    "onFeedMode",
-    "onWorkOffset", "onRapid",       "onLinear",       "onCircular",      "onLinear5D",   "onCycle",
-    "onCyclePoint", "onCycleEnd",    "onComment",      "onCutterComp",    "onDwell",      "onSectionEnd",
-    "onStop",       "onPassThrough", "onWorkingPlane", "onClose",         "onFiveAxisBegin", "onFiveAxisEnd"};
+    "onOpen",       "onSection",     "onToolChange",   "onSpindle",    "onCoolant",       "onFeedMode",
+    "onWorkOffset", "onRapid",       "onLinear",       "onCircular",   "onLinear5D",      "onCycle",
+    "onCyclePoint", "onCycleEnd",    "onComment",      "onCutterComp", "onDwell",         "onSectionEnd",
+    "onStop",       "onPassThrough", "onWorkingPlane", "onClose",      "onFiveAxisBegin", "onFiveAxisEnd"};
 static_assert(std::size(kHandlerNames) == static_cast<std::size_t>(Handler::Count), "a name for every handler");
 
 constexpr const char* kCapabilityKeys[] = {"arcPlanes",    "helicalArcs",  "maxArcSweep", "maxHelixSweep",

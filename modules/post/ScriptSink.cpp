@@ -3,6 +3,7 @@
 // linearised where the post cannot write them; cycles the post does not write are expanded into
 // moves; five-axis moves are refused by three-axis posts; cutter compensation must change on a
 // straight move and works in XY.
+#include "kinematics/PoseSolver.h"
 #include "post/detail/FiveAxisWriter.h"
 #include "post/detail/ScriptRun.h"
 #include "toolpath/ArcGeometry.h"
@@ -157,10 +158,30 @@ public:
         plane.setProperty("spatialA", angles[0]);
         plane.setProperty("spatialB", angles[1]);
         plane.setProperty("spatialC", angles[2]);
+        // The machine's pose for the plane, as the kinematics chooses it without a previous pose
+        // (the preferred branch): a post writes the branch the control should take (SEQ, _DIR).
+        const kinematics::Machine* machine = m_run.m_machine ? &*m_run.m_machine : nullptr;
+        if (r.tilted() && machine != nullptr && machine->kinematics.fiveAxis()) {
+            auto pose = kinematics::PoseSolver(*machine).solve({r.origin, r.zAxis}, nullptr);
+            if (!pose) {
+                m_run.fail("working plane with tool axis (" + base::NumberFormat{6, true}.format(r.zAxis.x) + ", " +
+                           base::NumberFormat{6, true}.format(r.zAxis.y) + ", " +
+                           base::NumberFormat{6, true}.format(r.zAxis.z) + "): " + pose.error().message);
+                return;
+            }
+            QJSValue rotary = engine().newObject();
+            for (int j = 0; j < 2; ++j)
+                rotary.setProperty(QString::fromStdString(machine->kinematics.joints[j].axis).toLower(),
+                                   pose->pose.rotaryDeg[j]);
+            rotary.setProperty("branch", pose->branch);
+            plane.setProperty("machine", rotary);
+        }
         handle(Handler::WorkingPlane, {plane});
         // The coordinates that follow are in another frame: no axis value written before means
-        // anything there, so every axis is written again.
+        // anything there, so every axis is written again, and the first rapid goes over in X/Y
+        // before it goes down, as after a tool change.
         m_run.m_kernel->forgetPosition();
+        m_afterToolChange = true;
     }
     void setSource(const SourceRef& source) override
     {

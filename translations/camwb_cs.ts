@@ -542,6 +542,10 @@
         <source>Hole %1 (not a hole of the model)</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <source>Face %1 — planar, normal (%2, %3, %4), %5 mm²</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>camwb::gui::HeightsBox</name>

@@ -266,7 +266,8 @@ TEST(LimitCheck, RotaryPositionsAgainstTheirRangesAndTheChain)
 TEST(LimitCheck, TiltedWorkingPlanes)
 {
     NullSink nowhere;
-    LimitCheck flat(smallMill(), nowhere);
+    const Machine mill = smallMill();  // the check keeps a reference: not a temporary
+    LimitCheck flat(mill, nowhere);
     flat.workingPlane(WorkingPlane{{0, 0, 0}, {1, 0, 0}, {0, -0.6, 0.8}});
     flat.rapid(Rapid{{0, 0, 0}});
     EXPECT_EQ(texts(flat.clDiagnostics()),

@@ -1286,6 +1286,26 @@ CAM and post-processor workbench.</source>
         <source>none programmed (control default)</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <source>%1 (five-axis move)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 (3-axis move)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>none known (trace with a five-axis machine)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Tool axis</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Rotary axes</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>camwb::gui::NcDocument</name>

@@ -70,7 +70,7 @@ void Machine::cycleDef(const Block& b)
         }
         if (tilted)
             report(Severity::Warning, b.line, b.column,
-                   "CYCL DEF 19: the tilted working plane is traced once the five-axis machine model exists; "
+                   "CYCL DEF 19: the tilted working plane is not traced yet; "
                    "positions are traced untilted");
         return;
     }

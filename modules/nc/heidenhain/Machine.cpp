@@ -271,7 +271,7 @@ void Machine::execute(const Block& b)
         if (!b.flag)
             report(Severity::Warning, b.line, b.column,
                    "PLANE " + std::string(b.name) +
-                       ": the tilted working plane is traced once the five-axis machine model exists; "
+                       ": the tilted working plane is not traced yet; "
                        "positions are traced untilted");
         return;
     case BlockKind::Function:

@@ -61,8 +61,7 @@ private:
         if (is("LP"))
             return motion(BlockKind::LinePolar, kAxes | kPolar | kComp | kFeed | kMisc);
         if (is("LN"))
-            return skipped("LN (vector five-axis line) is traced once the five-axis machine model exists",
-                           BlockKind::LineVector);
+            return skipped("LN (a line with surface normal and tool vectors) is not traced", BlockKind::LineVector);
         if (is("CC"))
             return motion(BlockKind::CircleCenter, kAxes | kPolar);
         if (is("C"))

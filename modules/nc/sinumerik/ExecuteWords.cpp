@@ -92,8 +92,8 @@ bool Machine::readKeyword(const Program& p, const Block& b, const Word& word, Bl
         break;
     case Keyword::Cycle800:
         warning(p, word.pos,
-                "CYCLE800 (swivel plane) is recognised; five-axis motion is traced once the "
-                "five-axis machine model exists: positions are traced in the unswivelled frame");
+                "CYCLE800 (swivel plane) is recognised; the swivelled plane is not traced yet: positions "
+                "are traced in the unswivelled frame");
         break;
     case Keyword::Frame:
         warning(p, word.pos,

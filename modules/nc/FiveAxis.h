@@ -78,6 +78,8 @@ public:
     // A move to `programmed` with the current angles is five-axis: they or the last pose sent
     // were turned. Plain 3-axis moves otherwise, so 3-axis programs trace as before.
     bool fiveAxisMove() const { return m_angles.turned() || m_lastSentTurned; }
+    // A move the trace does not show (the tip unknown): the next move starts from this pose.
+    void moveUntraced() { m_lastSentTurned = m_angles.turned(); }
 
     // The tool in the workpiece frame at `programmed` with the current angles (complete).
     kinematics::ToolPose toolPose(const toolpath::Vec3& programmed) const;

@@ -159,7 +159,8 @@ bool Machine::applyMotion(const Block& b, const BlockWords& w)
     bool moved = false;
     AxisMask given;
     RotaryTarget rotary;
-    if (!rotaryTarget(b, w, rotary) || !checkKnown(b, w, given) || !fiveAxisReady(b, rotary, given)) {
+    bool traced = true;
+    if (!rotaryTarget(b, w, rotary) || !checkKnown(b, w, given) || !fiveAxisReady(b, rotary, given, traced)) {
         m_corner.nextPending = false;
         return false;
     }
@@ -183,6 +184,11 @@ bool Machine::applyMotion(const Block& b, const BlockWords& w)
         if (e->type == Element::Type::Arc)
             m_lastDirection = e->clockwise ? -1 : 1;
         m_known.give(given);
+        if (!traced) {
+            m_pos = e->end;  // the axes the block gave; the others stay unknown
+            m_five.moveUntraced();
+            return false;
+        }
         if (m_known.complete())  // a corner is planned from known points only
             planCorner(*e, m_pc + 1);
         send(*e, rapid, m_feed);

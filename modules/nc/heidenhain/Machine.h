@@ -56,6 +56,7 @@ enum WarnKey : int {
     kWarnCompTilted,
     kWarnTcpmRefCenter,
     kWarnTcpmFeed,
+    kWarnFiveAxisUnknown,
 };
 
 // The evaluated words of one block (values in program units, not yet scaled or shifted).
@@ -191,7 +192,9 @@ private:
         bool changed = false;  // the block turns a rotary axis
     };
     bool rotaryTarget(const Block& b, const BlockWords& w, RotaryTarget& target);
-    bool fiveAxisReady(const Block& b, const RotaryTarget& target, toolpath::AxisMask given);
+    // False: an error, the block is not run. `traced` false: a five-axis move the trace cannot show
+    // (a linear axis is still unknown); the block runs without a record.
+    bool fiveAxisReady(const Block& b, const RotaryTarget& target, toolpath::AxisMask given, bool& traced);
     bool orientSpatial(const Block& b, const Vec3& end);
     void tcpmFunction(const Block& b);
     void setTcpm(bool on);

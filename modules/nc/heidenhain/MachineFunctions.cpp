@@ -298,8 +298,13 @@ void Machine::applyStop(const Block& b, const BlockWords& w, bool moved)
                     m_sink.rapid(Rapid{m_pos, m_known.mask()});
                 }
             } else {
+                // Up the tool axis to the travel limit, which the trace does not know in the work
+                // offset's frame: Z (with the rotary axes turned, X Y Z) unknown until given again.
+                const bool turned = m_five.active() && m_five.fiveAxisMove();
+                m_known.forget(turned ? AxisMask{} : axisBit(2));
                 warnOnce(kWarnM140, b,
-                         "M140 MB MAX: the retract to the travel limit is not traced (no machine limits)");
+                         std::string("M140 MB MAX: the retract to the travel limit is not traced; ") +
+                             (turned ? "X, Y and Z are" : "Z is") + " unknown until a block gives them again");
             }
             break;
         default:

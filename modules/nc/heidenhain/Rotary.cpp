@@ -110,12 +110,22 @@ bool Machine::rotaryTarget(const Block& b, const BlockWords& w, RotaryTarget& ta
 
 // A five-axis move needs the whole tip (a ToolAxisMove carries no axis mask) and, for a head
 // without tool-tip control, the tool's length.
-bool Machine::fiveAxisReady(const Block& b, const RotaryTarget& target, AxisMask given)
+bool Machine::fiveAxisReady(const Block& b, const RotaryTarget& target, AxisMask given, bool& traced)
 {
+    traced = true;
     if (!m_five.active() || !(target.angles.turned() || m_five.fiveAxisMove() || target.spatial))
         return true;
-    if (!needKnown(b, kNoAxes, AxisMask{}, given, "a move with the rotary axes turned"))
-        return false;
+    if (m_known.missing(kNoAxes, AxisMask{}, given) >= 0) {
+        // After M140 MB MAX the tool is somewhere up its axis: the table may turn there, and the
+        // trace shows the tool again once a block gives every axis.
+        if (target.spatial)
+            return needKnown(b, kNoAxes, AxisMask{}, given, "AXIS SPAT (the tool vector at the tip)");
+        warnOnce(kWarnFiveAxisUnknown, b,
+                 "a move with the rotary axes turned while X, Y or Z is unknown is not traced (the tool tip is "
+                 "unknown); the trace goes on once a block gives every axis");
+        traced = false;
+        return true;
+    }
     if (target.spatial && !m_five.tcpm()) {
         report(Severity::Error, b.line, b.column, "AXIS SPAT needs tool-tip control (FUNCTION TCPM): nothing moves");
         return false;

@@ -431,7 +431,8 @@ bool Machine::applyMotion(const Program& p, const BlockWords& w)
         return false;
     }
     AxisMask given;
-    if (!checkKnown(p, w, given) || !fiveAxisReady(p, w, rotary, given))
+    bool traced = true;
+    if (!checkKnown(p, w, given) || !fiveAxisReady(p, w, rotary, given, traced))
         return false;
     const Vec3 target = blockTarget(w);
     if (!turnTo(p, w, rotary, target))
@@ -439,6 +440,11 @@ bool Machine::applyMotion(const Program& p, const BlockWords& w)
     const int m = m_modal.motion;
     if (m < 2)
         m_known.give(given);
+    if (!traced) {
+        m_pos = target;  // the axes the block gave; the others stay unknown
+        m_five.moveUntraced();
+        return false;
+    }
     if (m < 2 && m_five.active() && m_five.fiveAxisMove())
         return moveFiveAxis(p, w, target);
     if (m == 0) {

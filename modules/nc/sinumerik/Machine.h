@@ -132,7 +132,10 @@ private:
     };
     bool rotaryTarget(const Program& p, const BlockWords& w, RotaryMove& r);
     bool toolVector(const Program& p, const BlockWords& w, RotaryMove& r);
-    bool fiveAxisReady(const Program& p, const BlockWords& w, const RotaryMove& r, toolpath::AxisMask given);
+    // False: an error, the block is left out. `traced` false: a five-axis move the trace cannot
+    // show (a linear axis is still unknown); the block runs without a record.
+    bool fiveAxisReady(const Program& p, const BlockWords& w, const RotaryMove& r, toolpath::AxisMask given,
+                       bool& traced);
     bool turnTo(const Program& p, const BlockWords& w, const RotaryMove& r, const Vec3& target);
     bool moveFiveAxis(const Program& p, const BlockWords& w, const Vec3& target);
     void applyTransformation(const Program& p, const BlockWords& w);

@@ -132,12 +132,20 @@ bool Machine::toolVector(const Program& p, const BlockWords& w, RotaryMove& r)
 
 // A five-axis move needs the whole tip (a ToolAxisMove carries no axis mask) and, for a head
 // without TRAORI, the tool's length.
-bool Machine::fiveAxisReady(const Program& p, const BlockWords& w, const RotaryMove& r, AxisMask given)
+bool Machine::fiveAxisReady(const Program& p, const BlockWords& w, const RotaryMove& r, AxisMask given, bool& traced)
 {
+    traced = true;
     if (!m_five.active() || !(r.angles.turned() || m_five.fiveAxisMove() || r.vector))
         return true;
-    if (!needKnown(p, w, kNoAxes, AxisMask{}, given, "a move with the rotary axes turned", {w.line, 0}))
-        return false;
+    if (m_known.missing(kNoAxes, AxisMask{}, given) >= 0) {
+        if (r.vector)
+            return needKnown(p, w, kNoAxes, AxisMask{}, given, "the tool vector (solved at the tip)", {w.line, 0});
+        warning(p, {w.line, 0},
+                "a move with the rotary axes turned while X, Y or Z is unknown is not traced (the tool tip is "
+                "unknown); the trace goes on once a block gives every axis");
+        traced = false;
+        return true;
+    }
     if (m_five.needsToolLength() && !m_five.toolLengthKnown()) {
         error(p, {w.line, 0},
               "the machine's head turns the tool about a pivot above its tip: without TRAORI the tool length "

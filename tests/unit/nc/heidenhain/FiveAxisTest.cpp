@@ -199,6 +199,33 @@ TEST(HeidenhainFiveAxis, M140RetractsAlongTheToolAxis)
     EXPECT_EQ(moves[1].feedMmPerMin, 0);
 }
 
+// The five-axis post's frame of an operation: M140 MB MAX, the table turned up there, TCPM on,
+// the first move giving every axis. Up the tool axis the tip is unknown: nothing is traced there.
+TEST(HeidenhainFiveAxis, AfterM140MbMaxTheTableTurnsUntracedUntilEveryAxisIsGiven)
+{
+    const kinematics::Machine m = mcvl1000();
+    const Traced r = runOn(m, "2 L X+0 Y+0 Z+50 R0 FMAX M3\n"
+                              "3 L M140 MB MAX\n"
+                              "4 L C+40 B+30 FMAX\n"
+                              "5 L M128\n"
+                              "6 L X+10 FMAX\n"
+                              "7 L X+10 Y+20 Z+50 C+40 B+30 FMAX\n"
+                              "8 L M140 MB MAX\n"
+                              "9 L M129\n"
+                              "10 L C+0 B+0 FMAX\n"
+                              "11 L X+0 Y+0 FMAX\n");
+    EXPECT_EQ(r.count(Severity::Error), 0u) << r.diagnostics()[0];
+    EXPECT_TRUE(r.has(Severity::Warning, 4, "Z is unknown until a block gives them again"));
+    EXPECT_TRUE(r.has(Severity::Warning, 5, "while X, Y or Z is unknown is not traced"));
+    const auto moves = r.all<ToolAxisMove>();
+    ASSERT_EQ(moves.size(), 1u);  // block 7 only
+    expectNear(moves[0].tip, {10, 20, 50});
+    expectNear(moves[0].axis, kAxis3040, 1e-12);
+    // Back to 3-axis with Z unknown: the known axes only, as at a program's start.
+    ASSERT_EQ(r.all<Rapid>().size(), 2u);
+    EXPECT_EQ(r.all<Rapid>()[1].axes.bits, AxisMask::kX | AxisMask::kY);
+}
+
 TEST(HeidenhainFiveAxis, FunctionTcpmWordsAreChecked)
 {
     const kinematics::Machine m = mcvl1000();

@@ -147,6 +147,21 @@ TEST(SinumerikFiveAxis, WordsTheMachineCannotReadAreErrors)
     EXPECT_EQ(r.all<Rapid>()[0].to.x, 3);
 }
 
+TEST(SinumerikFiveAxis, TheTableTurnsUntracedWhileTheTipIsUnknown)
+{
+    const kinematics::Machine m = bcTable();
+    InterpretOptions options;  // nothing known at the start, as on the control
+    options.machine = &m;
+    const NcRun r = run("G0 B30 C40\nG0 X10\nTRAORI\nG0 X10 Y20 Z50\nG0 Z5\nM30\n", {}, options);
+    EXPECT_EQ(r.errors(), 0) << r.diagnostics();
+    EXPECT_NE(r.find("while X, Y or Z is unknown is not traced"), nullptr);
+    const auto moves = r.all<ToolAxisMove>();
+    ASSERT_EQ(moves.size(), 2u);
+    expectNear(moves[0].tip, {10, 20, 50});
+    expectNear(moves[0].axis, kAxis3040, 1e-12);
+    expectNear(moves[1].tip, {10, 20, 5});
+}
+
 TEST(SinumerikFiveAxis, WithoutAMachineTheFiveAxisWordsWarn)
 {
     const NcRun r = run("TRAORI\nG1 X1 Y0 Z0 A3=0 B3=0 C3=1 F100\nG0 B30\nM30\n");

@@ -71,11 +71,12 @@ ToolPose forwardKinematics(const KinematicChain& chain, const MachinePose& pose,
 // pose's, so a post keeps C) and `pole` says which joint was free.
 struct IkSolution {
     MachinePose pose;
-    int pole = -1;  // the joint whose angle the tool axis does not fix; -1: none
+    int pole = -1;               // the joint whose angle the tool axis does not fix; -1: none
+    int poleJoint = 1;           // the joint whose angle the nearest pole frees
+    double poleDistanceDeg = 0;  // how far the tool axis is from that pole (0: on it)
 };
 std::vector<IkSolution> inverseKinematics(const KinematicChain& chain, const ToolPose& tool,
-                                          const std::array<double, 2>& freeAngleDeg = {0, 0},
-                                          double toolLengthMm = 0);
+                                          const std::array<double, 2>& freeAngleDeg = {0, 0}, double toolLengthMm = 0);
 
 // The linear axes that put the tool tip at `tip` with the rotary angles of `pose` (its linear
 // part is ignored): the part of the inverse kinematics after the angles are chosen, e.g. after an

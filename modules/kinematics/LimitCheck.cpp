@@ -108,10 +108,48 @@ void LimitCheck::arc(const Arc& r)
     ForwardingSink::arc(r);
 }
 
+// A rotary position a move gives (NC read back, a post's solved pose) against the machine's axis.
+void LimitCheck::rotary(const RotaryAxes& machine)
+{
+    const std::pair<unsigned char, const char*> axes[] = {
+        {RotaryAxes::kA, "A"}, {RotaryAxes::kB, "B"}, {RotaryAxes::kC, "C"}};
+    const double values[] = {machine.aDeg, machine.bDeg, machine.cDeg};
+    for (int i = 0; i < 3; ++i) {
+        if (!machine.has(axes[i].first))
+            continue;
+        const std::string name = axes[i].second;
+        const Axis* axis = m_machine.axis(name);
+        if (axis == nullptr || !axis->rotary)
+            flag("rotary axis " + name, "a move turns " + name + " but the " + m_name + " has no rotary axis " + name);
+        else if (values[i] < axis->min - 1e-9 || values[i] > axis->max + 1e-9)
+            flag("rotary range " + name, name + num(values[i]) + " is outside the " + m_name + "'s " + name +
+                                             " range " + num(axis->min) + " .. " + num(axis->max) + " degrees");
+    }
+}
+
+// Where the machine's linear axes are for a five-axis move: through the chain when the move gives
+// both of its rotary angles, else the tip (a machine without a chain moves the tip as it is).
+Vec3 LimitCheck::linearAxes(const ToolAxisMove& r) const
+{
+    const KinematicChain& chain = m_machine.kinematics;
+    if (!chain.fiveAxis())
+        return r.tip;
+    std::array<double, 2> deg{};
+    for (int j = 0; j < 2; ++j) {
+        const std::string& axis = chain.joints[j].axis;
+        const unsigned char bit = axis == "A" ? RotaryAxes::kA : axis == "B" ? RotaryAxes::kB : RotaryAxes::kC;
+        if (!r.machine.has(bit))
+            return r.tip;
+        deg[j] = bit == RotaryAxes::kA ? r.machine.aDeg : bit == RotaryAxes::kB ? r.machine.bDeg : r.machine.cDeg;
+    }
+    return linearAxesFor(chain, r.tip, deg);
+}
+
 void LimitCheck::toolAxisMove(const ToolAxisMove& r)
 {
     nextRecord();
-    reach(r.tip);
+    rotary(r.machine);
+    reach(linearAxes(r));
     m_position.set(r.tip);
     if (r.feedMmPerMin > 0)
         cutting(r.feedMmPerMin);

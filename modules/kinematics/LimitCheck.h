@@ -4,8 +4,9 @@
 // offset is not known, so only a span longer than the travel is certain to fail); spindle speed
 // range; cutting feed range (per minute); tool stations (T0 empties the spindle: cutting after it
 // is flagged); tool diameter and length; coolants. A filter: every record passes on unchanged.
-// Rotary axes are not checked yet: no record gives a rotary position (the five-axis machine model
-// will), and an endless axis has no travel to check.
+// Rotary axes: the positions a five-axis move gives (ToolAxisMove::machine, from NC read back or a
+// post's solved pose) against their range, an endless axis having none; with both angles of the
+// machine's chain known, the linear spans are the machine's (through the chain), not the tip's.
 #pragma once
 
 #include "base/Diagnostic.h"
@@ -71,6 +72,8 @@ private:
     void flag(const std::string& key, const std::string& message);
     void reach(const toolpath::Vec3& p, toolpath::AxisMask axes = {});  // only the axes given
     void cutting(double feed);
+    void rotary(const toolpath::RotaryAxes& machine);
+    toolpath::Vec3 linearAxes(const toolpath::ToolAxisMove& r) const;
     std::vector<Finding> spanFindings() const;
 
     const Machine& m_machine;

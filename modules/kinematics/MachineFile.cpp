@@ -2,6 +2,7 @@
 #include "base/DataDirs.h"
 #include "base/JsonRead.h"
 #include "kinematics/Machine.h"
+#include "kinematics/detail/ChainFile.h"
 #include "toolpath/ProgramStats.h"
 
 #include <algorithm>
@@ -109,6 +110,11 @@ Machine readMachine(const Json& root)
                 throw JsonFieldError{where + ".coolants: unknown coolant \"" + mode + "\" (flood, mist, throughTool)"};
             m.coolants.push_back(mode);
         }
+    }
+    if (const Json* chain = optionalMember(root, "kinematics", where)) {
+        if (version < 2)
+            throw JsonFieldError{where + ".kinematics: a kinematic chain needs format version 2"};
+        m.kinematics = detail::readKinematicChain(*chain, where + ".kinematics", m);
     }
     return m;
 }

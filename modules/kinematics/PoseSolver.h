@@ -19,8 +19,10 @@ namespace camwb::kinematics {
 
 struct PoseCandidate {
     MachinePose pose;
-    int branch = 0;  // +1 / -1: the sign of the preferred joint's angle (0 at the pole)
-    int pole = -1;   // IkSolution::pole
+    int branch = 0;              // +1 / -1: the sign of the branch joint's angle (0 on the pole)
+    int pole = -1;               // IkSolution::pole
+    int poleJoint = 1;           // IkSolution::poleJoint
+    double poleDistanceDeg = 0;  // IkSolution::poleDistanceDeg
 };
 
 class PoseSolver {
@@ -29,6 +31,7 @@ public:
     PoseSolver(const Machine& machine, double toolLengthMm = 0);
 
     const KinematicChain& chain() const { return m_chain; }
+    double toolLengthMm() const { return m_toolLengthMm; }
 
     // Every pose within the rotary limits that gives `tool`: per IK solution, each angle at the
     // whole turn nearest `previous` (or nearest 0) that the limits allow, and for a limited axis
@@ -42,8 +45,13 @@ public:
     // "B-125 is below the axis' limit -120".
     std::optional<std::string> outsideLimits(const MachinePose& pose) const;
 
+    // The joint whose angle's sign tells the two solutions apart: the preferred joint, else the
+    // tilt (a table-table chain's first joint, a head's joint otherwise).
+    int branchJoint() const { return m_branchJoint; }
+
 private:
     KinematicChain m_chain;
+    int m_branchJoint = 0;
     std::array<double, 2> m_min{}, m_max{};
     double m_toolLengthMm = 0;
 };
@@ -57,8 +65,11 @@ struct PlannedPose {
 
 struct BranchPlanOptions {
     // A step between consecutive poses in which a rotary axis moves more than this many degrees
-    // beyond the tool axis' own turn is a reconfiguration.
+    // beyond the tool axis' own turn is a reconfiguration ...
     double reconfigureStepDeg = 30;
+    // ... except for the axis the pole frees while the tool axis is within this cone of the pole,
+    // where any turn of the tool axis may swing that angle (the post keeps it there).
+    double poleConeDeg = 1;
     bool allowReconfigure = true;  // false: a plan that needs one is an error
 };
 

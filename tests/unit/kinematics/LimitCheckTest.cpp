@@ -223,5 +223,43 @@ TEST(LimitCheck, LinearAxesAreFoundAmongRotaryOnes)
                   "warning: the program spans 100 mm in Y (0 to 100); the Mill travels 80 mm (CL record 1)"}));
 }
 
+// A five-axis move that gives its rotary positions (NC read back, a post's pose): each against its
+// axis' range, an endless C never; through the machine's chain, the linear spans are the machine's.
+TEST(LimitCheck, RotaryPositionsAgainstTheirRangesAndTheChain)
+{
+    const Machine machine = mcvl1000();
+    NullSink nowhere;
+    LimitCheck check(machine, nowhere);
+    auto move = [](Vec3 tip, double b, double c, unsigned char known = RotaryAxes::kB | RotaryAxes::kC) {
+        ToolAxisMove m{tip, {0, 0, 1}, 100};
+        m.machine.bDeg = b;
+        m.machine.cDeg = c;
+        m.machine.known = known;
+        return m;
+    };
+    check.toolAxisMove(move({0, 0, 0}, -30, 1000));  // C endless: fine
+    check.toolAxisMove(move({0, 0, 0}, 35, 0));      // B above +30
+    check.toolAxisMove(move({0, 0, 0}, -125, 0));    // below -120: the same finding again
+    ToolAxisMove withA = move({0, 0, 0}, 0, 0, RotaryAxes::kA);
+    withA.machine.aDeg = 10;
+    check.toolAxisMove(withA);  // the machine has no A
+    EXPECT_EQ(
+        texts(check.clDiagnostics()),
+        (std::vector<std::string>{
+            "warning: B35 is outside the MAS MCVL 1000's B range -120 .. 30 degrees (CL record 1; 2 records in all)",
+            "warning: a move turns A but the MAS MCVL 1000 has no rotary axis A (CL record 3)"}));
+
+    // The tip stays at X 400 while B turns -90: about MRZP the machine's X goes to 0 and its Z to
+    // 400, so the span in Z is 800 > 660 where the tip's own span is 0.
+    LimitCheck spans(machine, nowhere);
+    spans.toolAxisMove(move({400, 0, 0}, -90, 0));
+    spans.toolAxisMove(move({400, 0, 0}, 90 - 180, 180));  // the same tilt on the other branch
+    spans.toolAxisMove(move({-400, 0, 0}, -90, 0));
+    const auto diagnostics = texts(spans.clDiagnostics());
+    ASSERT_EQ(diagnostics.size(), 1u);
+    EXPECT_EQ(diagnostics[0], "warning: the program spans 800 mm in Z (-400 to 400); the MAS MCVL 1000 travels 660 mm "
+                              "(CL record 1)");
+}
+
 }  // namespace
 }  // namespace camwb::kinematics

@@ -167,8 +167,8 @@ TEST(Machine, BadFilesGiveClearErrors)
               "literal");
     EXPECT_EQ(messageOf(R"({"format": "camwb-job"})"),
               "m.json: not a CAM Workbench machine (format is not \"camwb-machine\")");
-    EXPECT_EQ(messageOf(R"({"format": "camwb-machine", "version": 2})"),
-              "m.json: machine format version 2 is not supported (this is 1)");
+    EXPECT_EQ(messageOf(R"({"format": "camwb-machine", "version": 3})"),
+              "m.json: machine format version 3 is not supported (this is 2)");
     std::string badAxis = kMinimal;
     badAxis.replace(badAxis.find("\"linear\""), 8, "\"spiral\"");
     EXPECT_EQ(messageOf(badAxis), "m.json: machine.axes[0].type: expected \"linear\" or \"rotary\"");
@@ -215,4 +215,95 @@ TEST(Machine, LookupByIdWhereTheFileNameIsTheId)
     EXPECT_NE(missing.error().message.find("/nowhere/nope.json"), std::string::npos);
     EXPECT_FALSE(kinematics::findMachine("../m", {dir.string()}).ok());
     std::filesystem::remove_all(dir);
+}
+
+namespace {
+
+// A B/C machine in format version `version` with `chain` as its "kinematics".
+std::string fiveAxis(const std::string& chain, int version = 2)
+{
+    return R"({"format": "camwb-machine", "version": )" + std::to_string(version) +
+           R"(, "id": "m", "name": "M", "control": "c", "axes": [
+{"name": "X", "type": "linear", "min": -10, "max": 10},
+{"name": "B", "type": "rotary", "min": -90, "max": 90}, {"name": "C", "type": "rotary", "endless": true}],
+"kinematics": )" +
+           chain + "}";
+}
+
+const char* kTableTable = R"({"type": "table-table", "rotaries": [
+{"axis": "B", "on": "table", "direction": [0, 2, 0], "pivot": [1, 2, 3]},
+{"axis": "C", "on": "table", "direction": [0, 0, 1]}], "workpieceZero": [0, 0, 50],
+"preferred": {"axis": "B", "sign": "negative"}})";
+
+}  // namespace
+
+TEST(Machine, KinematicChainOfVersion2)
+{
+    auto m = kinematics::parseMachine(fiveAxis(kTableTable), "m.json");
+    ASSERT_TRUE(m.ok()) << m.error().toString();
+    const kinematics::KinematicChain& k = m->kinematics;
+    EXPECT_EQ(k.type, kinematics::ChainType::TableTable);
+    ASSERT_EQ(k.joints.size(), 2u);
+    EXPECT_EQ(k.joints[0].axis, "B");
+    EXPECT_TRUE(k.joints[0].onTable);
+    EXPECT_EQ(k.joints[0].direction, (base::Vec3{0, 1, 0}));  // normalised
+    EXPECT_EQ(k.joints[0].pivot, (base::Vec3{1, 2, 3}));
+    EXPECT_EQ(k.joints[1].pivot, (base::Vec3{}));
+    EXPECT_EQ(k.workpieceZero, (base::Vec3{0, 0, 50}));
+    EXPECT_EQ(k.preferredJoint, 0);
+    EXPECT_EQ(k.preferredSign, -1);
+    // A version 1 file with rotary axes is a three-axis chain, as it always was.
+    auto v1 = kinematics::parseMachine(withAxis(R"({"name": "C", "type": "rotary", "endless": true})"), "m.json");
+    ASSERT_TRUE(v1.ok()) << v1.error().toString();
+    EXPECT_EQ(v1->kinematics.type, kinematics::ChainType::ThreeAxis);
+    EXPECT_FALSE(v1->kinematics.fiveAxis());
+}
+
+TEST(Machine, BadKinematicChainsGiveClearErrors)
+{
+    EXPECT_EQ(messageOf(fiveAxis(kTableTable, 1)),
+              "m.json: machine.kinematics: a kinematic chain needs format version 2");
+    auto with = [](std::string from, const std::string& to) {
+        std::string chain = kTableTable;
+        chain.replace(chain.find(from), from.size(), to);
+        return messageOf(fiveAxis(chain));
+    };
+    EXPECT_EQ(with("\"axis\": \"B\"", "\"axis\": \"A\""),
+              "m.json: machine.kinematics.rotaries[0].axis: A is not a rotary axis of the machine's \"axes\"");
+    EXPECT_EQ(with("\"axis\": \"B\"", "\"axis\": \"X\""),
+              "m.json: machine.kinematics.rotaries[0].axis: X is not a rotary axis of the machine's \"axes\"");
+    EXPECT_EQ(with("table-table", "table-head"),
+              "m.json: machine.kinematics.type: expected \"table-table\", \"head-table\" or \"head-head\"");
+    EXPECT_EQ(with("table-table", "head-table"),
+              "m.json: machine.kinematics.rotaries: a head-table chain has 1 table axes, this one 2");
+    EXPECT_EQ(with("[0, 2, 0]", "[0, 0, 0]"),
+              "m.json: machine.kinematics.rotaries[0].direction: a zero vector has no direction");
+    EXPECT_EQ(with("[0, 2, 0]", "[0, 0, -3]"),
+              "m.json: machine.kinematics.rotaries: the two axes are parallel and cannot point a tool");
+    EXPECT_EQ(with("\"sign\": \"negative\"", "\"sign\": \"down\""),
+              "m.json: machine.kinematics.preferred.sign: expected \"positive\" or \"negative\"");
+    EXPECT_EQ(with("\"on\": \"table\", \"direction\": [0, 0, 1]", "\"on\": \"bench\", \"direction\": [0, 0, 1]"),
+              "m.json: machine.kinematics.rotaries[1].on: expected \"table\" or \"head\"");
+}
+
+TEST(Machine, FiveAxisMachinesFromTheReferences)
+{
+    const auto dirs = kinematics::defaultMachineDirs();
+    struct Expected {
+        const char* id;
+        kinematics::ChainType type;
+        const char* first;
+        const char* second;
+    };
+    for (const Expected& e : {Expected{"mas-mcvl1000", kinematics::ChainType::TableTable, "B", "C"},
+                              Expected{"mas-mcvl1000-nikken-guaranteed", kinematics::ChainType::TableTable, "B", "C"},
+                              Expected{"kovosvit-mcu700-vt5x", kinematics::ChainType::TableTable, "A", "C"},
+                              Expected{"hurco-vmx42sr", kinematics::ChainType::HeadTable, "C", "B"}}) {
+        auto m = kinematics::findMachine(e.id, dirs);
+        ASSERT_TRUE(m.ok()) << m.error().toString();
+        ASSERT_TRUE(m->kinematics.fiveAxis()) << e.id;
+        EXPECT_EQ(m->kinematics.type, e.type) << e.id;
+        EXPECT_EQ(m->kinematics.joints[0].axis, e.first) << e.id;
+        EXPECT_EQ(m->kinematics.joints[1].axis, e.second) << e.id;
+    }
 }

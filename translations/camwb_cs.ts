@@ -1401,7 +1401,11 @@ Save them first?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>Traced %1 as %2%3: %4 blocks, %5 lines, %6 arcs, %7 rapids, %8 cycles in %9 ms</source>
+        <source>, %1 five-axis moves</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Traced %1 as %2%3: %4 blocks, %5 lines, %6 arcs, %7 rapids, %8 cycles%9 in %10 ms</source>
         <translation type="unfinished"></translation>
     </message>
 </context>

@@ -7,13 +7,22 @@
 #include <QStringList>
 #include <QVBoxLayout>
 
+#include <cmath>
 #include <functional>
 
 namespace camwb::gui {
 
 namespace {
 
-QString mm(double value) { return QString::number(value, 'f', 3); }
+// Fixed decimals without a sign on a value that rounds to zero ("-0.000" reads as a position
+// on the other side).
+QString fixed(double value, int decimals)
+{
+    const double half = 0.5 * std::pow(10.0, -decimals);
+    return QString::number(std::abs(value) < half ? 0.0 : value, 'f', decimals);
+}
+
+QString mm(double value) { return fixed(value, 3); }
 
 QString position(const ModalState& state)
 {
@@ -24,10 +33,8 @@ QString position(const ModalState& state)
 
 QString toolAxisText(const ModalState& state)
 {
-    const QString vector =
-        QStringLiteral("I%1 J%2 K%3")
-            .arg(QString::number(state.toolAxis.x, 'f', 4), QString::number(state.toolAxis.y, 'f', 4),
-                 QString::number(state.toolAxis.z, 'f', 4));
+    const QString vector = QStringLiteral("I%1 J%2 K%3")
+                               .arg(fixed(state.toolAxis.x, 4), fixed(state.toolAxis.y, 4), fixed(state.toolAxis.z, 4));
     return state.fiveAxis ? ModalStatePanel::tr("%1 (five-axis move)").arg(vector)
                           : ModalStatePanel::tr("%1 (3-axis move)").arg(vector);
 }

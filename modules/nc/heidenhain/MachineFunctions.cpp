@@ -304,7 +304,8 @@ void Machine::applyStop(const Block& b, const BlockWords& w, bool moved)
                 m_known.forget(turned ? AxisMask{} : axisBit(2));
                 warnOnce(kWarnM140, b,
                          std::string("M140 MB MAX: the retract to the travel limit is not traced; ") +
-                             (turned ? "X, Y and Z are" : "Z is") + " unknown until a block gives them again");
+                             (turned ? "X, Y and Z are unknown until a block gives them"
+                                     : "Z is unknown until a block gives it"));
             }
             break;
         default:

@@ -8,12 +8,16 @@
 // parametric feeds Q601/Q602/Q603; cycles 200/201/203/205/207 with their Q lists; the min/max
 // travel report before END PGM. The words of the comments in English or in the thesis' Czech.
 //
-// Five-axis (the next issue) adds the rotary words here: B and C after X/Y/Z in the `L` blocks
-// (C before B, seed-000 §2.5), M128 / FUNCTION TCPM or post-side machine coordinates per
-// operation, and B/C in the min/max report (travelReport()).
+// Five-axis (seed-000 §2.4, §3.3-3.6): the kernel chooses the machine poses of each five-axis
+// operation (post.fiveAxis, FiveAxisPlan.h) and writes them through rapid5D/linear5D: with TCPM
+// (M128 or FUNCTION TCPM) the tip in the workpiece frame plus C and B, without it the machine
+// coordinates about MRZP (P = X^T Q, eqs. 20-24), linearised in joint space, F for all axes
+// together (or M116). C before B as the thesis writes them; M126 in the header: C is not unwound.
+// Each five-axis operation: M140 MB MAX, the rotaries turned, TCPM on ... TCPM off, M140 MB MAX,
+// the table home (B+0, C at the nearest whole turn). B and C join the min/max report.
 var post = {
     id: "heidenhain-itnc530",
-    description: "MAS MCVL 1000, HEIDENHAIN iTNC 530 Klartext (3-axis)",
+    description: "MAS MCVL 1000, HEIDENHAIN iTNC 530 Klartext (B/C table, simultaneous 5-axis)",
     vendor: "MAS / HEIDENHAIN",
     extension: "h",
     machine: "mas-mcvl1000",
@@ -27,7 +31,7 @@ var post = {
         maxArcSweep: 180,     // full circles as two halves: every C block's end differs from its start
         maxHelixSweep: 5400,  // IPA's range on the control: multi-turn helices in one CP block
         cycles: ["drill", "drillDwell", "peck", "chipBreak", "tap", "bore"],
-        maxAxes: 3
+        maxAxes: 5
     },
     properties: {
         language: {
@@ -59,6 +63,39 @@ var post = {
             title: "Travel report", type: "bool", default: true,
             description: "The smallest and largest position of each axis as comments before END PGM (seed-000 5.9)"
         },
+        tcpm: {
+            title: "TCPM (five-axis)", type: "enum", values: ["m128", "function-tcpm", "off"], default: "m128",
+            description: "Five-axis operations: M128 or FUNCTION TCPM F TCP AXIS POS PATHCTRL AXIS (the control keeps " +
+                         "the tip; X Y Z of the tip in the workpiece frame), or off: machine coordinates about MRZP " +
+                         "computed by the post (the preset at MRZP, seed-000 3.3)"
+        },
+        rotaryFeed: {
+            title: "Feed without TCPM", type: "enum", values: ["combined", "m116"], default: "combined",
+            description: "tcpm off: F for all axes together in mm and degrees, so that each block takes the time " +
+                         "the tip needs at the CL feed (capped by the machine's maximum), or M116 (software option " +
+                         "1: F in mm/min on the rotary table, the CL feed as it is)"
+        },
+        poleCone: {
+            title: "Pole cone (deg)", type: "number", default: 0, min: 0, max: 10,
+            description: "A tool axis within this angle of the C axis keeps C and is written on the pole (a " +
+                         "warning says how far from the CL's); 0: only an axis exactly on the pole keeps C"
+        },
+        reconfigure: {
+            title: "Rotary reconfiguration", type: "enum", values: ["retract", "refuse"], default: "retract",
+            description: "Where no branch finishes an operation without a flip or rewind of B/C: retract along " +
+                         "the tool axis, turn, re-enter (retract), or stop with an error naming the CL record"
+        },
+        workingPlane: {
+            title: "Tilted working plane (3+2)", type: "enum", values: ["plane-spatial", "cycle19"],
+            default: "plane-spatial",
+            description: "PLANE SPATIAL SPA SPB SPC TURN MB MAX FMAX SEQ+- (PLANE RESET after), or the older CYCL DEF " +
+                         "19 WORKING PLANE with the machine's B and C (the control set for axis angles) and the " +
+                         "table turned by an L block"
+        },
+        retractDistance: {
+            title: "Reconfiguration retract (mm)", type: "number", default: 50, min: 1, max: 1000,
+            description: "How far the tool leaves the part along its axis before the table turns to reconfigure"
+        },
         stopBeforeToolCall: {
             title: "Stop before each tool call (Stop_M0)", type: "bool", default: false,
             description: "M0 before every TOOL CALL, for the operator who changes the tool by hand"
@@ -66,6 +103,17 @@ var post = {
     }
 };
 post.capabilities.arcWords = getProperty("arcOutput") == "CR" ? "radius" : "center";
+var tcpmMode = getProperty("tcpm");
+if (tcpmMode == "off" && getProperty("rotaryFeed") == "combined" && getProperty("units") == "inch")
+    error("tcpm off with the combined feed is written in mm programs only (F mixes mm and degrees): " +
+          "use units mm or rotaryFeed m116");
+post.fiveAxis = {
+    output: tcpmMode == "off" ? "machine" : "tip",
+    feed: tcpmMode == "off" && getProperty("rotaryFeed") == "combined" ? "combined" : "tip",
+    poleCone: getProperty("poleCone"),
+    reconfigure: getProperty("reconfigure"),
+    retract: getProperty("retractDistance")
+};
 
 var czech = getProperty("language") == "czech";
 var inch = getProperty("units") == "inch";
@@ -111,6 +159,8 @@ var radiusOutput = createVariable({prefix: "R", force: true}, xyzFormat);
 var ipaOutput = createVariable({prefix: "IPA", force: true}, angleFormat);
 var izOutput = createVariable({prefix: "IZ", force: true}, xyzFormat);
 var feedOutput = createVariable({prefix: "F"}, feedFormat);
+var bOutput = createVariable({prefix: "B"}, angleFormat);
+var cOutput = createVariable({prefix: "C"}, angleFormat);
 var compOutput = createModal({prefix: ""});
 var directionOutput = createModal({prefix: "DR", force: true});
 var compTexts = {texts: {40: "R0", 41: "RL", 42: "RR"}};
@@ -133,6 +183,11 @@ post.blocks = {
             texts: compTexts.texts}), "FMAX", spindleStart],
     linear: ["L", xOutput.bind("x"), yOutput.bind("y"), zOutput.bind("z"), compOutput.bind("comp", compTexts),
              feedOutput.bind("feed"), spindleStart],
+    // Five-axis: C before B after the linear axes (seed-000 2.5: "C+0 B+0").
+    rapid5D: ["L", xOutput.bind("x"), yOutput.bind("y"), zOutput.bind("z"), cOutput.bind("c"), bOutput.bind("b"),
+              compOutput.bind("comp", {force: true, texts: compTexts.texts}), "FMAX", spindleStart],
+    linear5D: ["L", xOutput.bind("x"), yOutput.bind("y"), zOutput.bind("z"), cOutput.bind("c"), bOutput.bind("b"),
+               compOutput.bind("comp", compTexts), feedOutput.bind("feed"), spindleStart],
     circular: {
         XY: arcBlocks([ccX.bind("cx"), ccY.bind("cy")], [xOutput.bind("x", always), yOutput.bind("y", always)]),
         ZX: arcBlocks([ccX.bind("cx"), ccZ.bind("cz")], [xOutput.bind("x", always), zOutput.bind("z", always)]),
@@ -519,19 +574,118 @@ function onCycleEnd(cycle) {
     zOutput.reset();  // the cycle left Z at its return plane
 }
 
+// --- 3+2: the tilted working plane ------------------------------------------------------------
+
+// The rotary positions the working planes turned to, for the travel report: {b: {min, max}, c: ...}.
+var planeTravel = {};
+
+function notePlaneTravel(axis, value) {
+    var t = planeTravel[axis];
+    planeTravel[axis] = t ? {min: Math.min(t.min, value), max: Math.max(t.max, value)} : {min: value, max: value};
+}
+
+// The moves after it are in the plane's frame (the kernel forgets every axis). PLANE SPATIAL turns
+// the table itself after retracting to the travel limit along the tool axis (TURN MB MAX), on the
+// branch the kinematics chose (SEQ: the sign of B); CYCL DEF 19 needs the table turned by hand.
+function onWorkingPlane(plane) {
+    flushToolCall();
+    var origin = plane.origin;
+    if (origin.x != 0 || origin.y != 0 || origin.z != 0)
+        throw new Error("a working plane whose origin is not the workpiece zero (a datum shift) is not written yet");
+    var cycle19 = getProperty("workingPlane") == "cycle19";
+    if (!plane.tilted) {
+        if (cycle19) {
+            writeBlock("L", "M140 MB MAX");
+            writeBlock("CYCL DEF 19.0", czech ? "NAKLOPENÍ ROVINY" : "WORKING PLANE");
+            writeBlock("CYCL DEF 19.1", "B+0", "C+0");
+            writeBlock("L", "C+0", "B+0", "R0", "FMAX");
+        } else {
+            writeBlock("PLANE RESET TURN MB MAX FMAX");
+        }
+        forceMotion();
+        return;
+    }
+    if (plane.machine) {
+        notePlaneTravel("b", plane.machine.b);
+        notePlaneTravel("c", plane.machine.c);
+    }
+    if (!plane.machine)
+        throw new Error("a tilted working plane needs a machine with a five-axis chain (" + (machine ? machine.id : "none") +
+                        " has none)");
+    if (cycle19) {
+        writeBlock("L", "M140 MB MAX");
+        writeBlock("CYCL DEF 19.0", czech ? "NAKLOPENÍ ROVINY" : "WORKING PLANE");
+        writeBlock("CYCL DEF 19.1", "B" + angleFormat.format(plane.machine.b), "C" + angleFormat.format(plane.machine.c));
+        writeBlock("L", "C" + angleFormat.format(plane.machine.c), "B" + angleFormat.format(plane.machine.b), "R0",
+                   "FMAX");
+    } else {
+        writeBlock("PLANE SPATIAL", "SPA" + angleFormat.format(plane.spatialA), "SPB" + angleFormat.format(plane.spatialB),
+                   "SPC" + angleFormat.format(plane.spatialC), "TURN MB MAX FMAX", plane.machine.branch < 0 ? "SEQ-" : "SEQ+");
+    }
+    forceMotion();
+}
+
+// --- Five-axis operations ---------------------------------------------------------------------
+
+// Before a five-axis operation: away from the part along the tool axis to the travel limit, the
+// table turned to the operation's first pose without TCPM, then TCPM (or M116) on.
+function onFiveAxisBegin(section) {
+    flushToolCall();
+    writeBlock("L", "M140 MB MAX");
+    forceMotion();  // the retract moved X, Y and Z
+    var turn = ["L", cOutput.format(section.c), bOutput.format(section.b)];
+    if (turn[1] || turn[2])
+        writeBlock.apply(null, turn.concat(["FMAX"]));
+    if (tcpmMode == "m128")
+        writeBlock("L", "M128");
+    else if (tcpmMode == "function-tcpm")
+        writeBlock("FUNCTION TCPM F TCP AXIS POS PATHCTRL AXIS");
+    else if (getProperty("rotaryFeed") == "m116")
+        writeBlock("L", "M116");
+}
+
+// After it: out along the tool axis, TCPM off, the table home as the kernel plans the next
+// operation from (B+0, C at the nearest whole turn). X, Y and Z are then unknown.
+function onFiveAxisEnd(pose, home) {
+    writeBlock("L", "M140 MB MAX");
+    if (tcpmMode == "m128")
+        writeBlock("L", "M129");
+    else if (tcpmMode == "function-tcpm")
+        writeBlock("FUNCTION RESET TCPM");
+    else if (getProperty("rotaryFeed") == "m116")
+        writeBlock("L", "M117");
+    var turn = ["L", cOutput.format(home.c), bOutput.format(home.b)];
+    if (turn[1] || turn[2])
+        writeBlock.apply(null, turn.concat(["FMAX"]));
+    forceMotion();
+}
+
 // --- The end: retract, M30, the min/max travel report, END PGM ---------------------------------
 
+// X Y Z from the program's extents widened by what five-axis blocks wrote (without TCPM machine
+// coordinates, so the report may be wider than either), then B and C as written.
 function travelReport() {
-    if (!travel)
+    var five = getFiveAxisTravel() || {};
+    for (var axis in planeTravel) {  // 3+2 positions count as the rotary axes' travel too
+        var p = planeTravel[axis];
+        five[axis] = five[axis] ? {min: Math.min(five[axis].min, p.min), max: Math.max(five[axis].max, p.max)} : p;
+    }
+    if (!travel && Object.keys(five).length == 0)
         return;
-    var axes = ["x", "y", "z"];  // B and C join here with the five-axis output
+    var axes = ["x", "y", "z", "b", "c"];
     for (var i = 0; i < axes.length; ++i) {
         var a = axes[i];
-        if (travel.min[a] === null)
+        var min = travel && travel.min[a] !== undefined ? travel.min[a] : null;
+        var max = travel && travel.max[a] !== undefined ? travel.max[a] : null;
+        if (five && five[a]) {
+            min = min === null ? five[a].min : Math.min(min, five[a].min);
+            max = max === null ? five[a].max : Math.max(max, five[a].max);
+        }
+        if (min === null)
             continue;
-        var scale = inch ? 1 / 25.4 : 1;
-        comment(" " + a.toUpperCase() + "min = " + n(travel.min[a] * scale));
-        comment(" " + a.toUpperCase() + "max = " + n(travel.max[a] * scale));
+        var scale = inch && i < 3 ? 1 / 25.4 : 1;
+        comment(" " + a.toUpperCase() + "min = " + n(min * scale));
+        comment(" " + a.toUpperCase() + "max = " + n(max * scale));
     }
 }
 

@@ -542,6 +542,10 @@
         <source>Hole %1 (not a hole of the model)</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <source>Face %1 — planar, normal (%2, %3, %4), %5 mm²</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>camwb::gui::HeightsBox</name>
@@ -1504,6 +1508,10 @@ Save them first?</source>
 %1</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <source>Working plane (3+2)</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>camwb::gui::PocketPanel</name>
@@ -1937,6 +1945,49 @@ Keep the operations without them (they are marked until you choose new geometry 
     </message>
     <message>
         <source>The job is being computed; save the NC program when the post has finished.</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>camwb::gui::WorkingPlaneBox</name>
+    <message>
+        <source>Flat (tool along Z)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Along a face&apos;s normal</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Spatial angles</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>3+2: the plane the operation is computed in; the post tilts the machine to it. Flat drilling turns to each hole&apos;s own axis.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Plane</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The planar face whose outward normal the tool follows</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Face</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>A (about X)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>B (about Y)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>C (about Z)</source>
         <translation type="unfinished"></translation>
     </message>
 </context>

@@ -34,6 +34,18 @@ struct HeightOverrides {
     std::optional<double> clearanceZ, safeZ, startZ, finalZ;
 };
 
+// 3+2 machining: the plane an operation is computed in. Flat: the workpiece's XY, the tool along
+// +Z (drilling then finds each hole's own axis, and holes of several directions are drilled one
+// plane after another). Face: the tool along a planar face's outward normal. Angles: the spatial
+// angles A, B, C of toolpath/PlaneFrames.h. The plane turns about the workpiece zero.
+struct WorkingPlaneSpec {
+    enum class Mode { Flat, Face, Angles } mode = Mode::Flat;
+    int face = 0;
+    double aDeg = 0, bDeg = 0, cDeg = 0;
+
+    bool operator==(const WorkingPlaneSpec&) const = default;
+};
+
 enum class OperationKind { Contour, Pocket, Helix, Drill };
 using OperationParams = std::variant<ops::ContourParams, ops::PocketParams, ops::HelixParams, ops::DrillParams>;
 
@@ -44,6 +56,7 @@ struct Operation {
     GeometryRefs geometry;
     HeightOverrides heights;
     OperationParams params;
+    WorkingPlaneSpec plane;
 
     OperationKind kind() const { return static_cast<OperationKind>(params.index()); }
     const std::string& name() const;

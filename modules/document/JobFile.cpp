@@ -4,6 +4,7 @@
 #include "base/JsonRead.h"
 #include "document/detail/OperationFile.h"
 
+#include <algorithm>
 #include <filesystem>
 
 namespace camwb::document {
@@ -129,7 +130,9 @@ std::string serializeJob(const Job& job)
     using ojson = nlohmann::ordered_json;
     ojson root;
     root["format"] = "camwb-job";
-    root["version"] = kJobFormatVersion;
+    const bool planes = std::any_of(job.operations.begin(), job.operations.end(),
+                                    [](const Operation& op) { return op.plane.mode != WorkingPlaneSpec::Mode::Flat; });
+    root["version"] = planes ? kJobFormatVersion : 3;
     root["name"] = job.name;
     root["model"] = job.modelPath;
     root["stock"] = {{"min", {job.stock.min.x, job.stock.min.y, job.stock.min.z}},

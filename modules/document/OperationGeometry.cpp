@@ -1,5 +1,7 @@
 #include "document/OperationGeometry.h"
 
+#include "document/detail/OperationPlanes.h"
+
 #include <algorithm>
 #include <cmath>
 
@@ -181,19 +183,54 @@ ops::Heights resolveHeights(const Operation& op, const OperationGeometry& geomet
     return h;
 }
 
+namespace {
+base::Result<ops::OpResult> computeInPlane(const Job& job, int index, const Operation& op, const occ::Model& model,
+                                           const Stock& stock, const ops::Progress& progress,
+                                           std::optional<ops::Heights>* heightsUsed);
+}  // namespace
+
 base::Result<ops::OpResult> computeOperation(const Job& job, int index, const occ::Model& model,
                                              const ops::Progress& progress, std::optional<ops::Heights>* heightsUsed)
 {
     if (index < 0 || index >= static_cast<int>(job.operations.size()))
         return base::makeError("no operation " + std::to_string(index + 1) + " in the job");
     const Operation& op = job.operations[index];
-    const ops::ToolController* tc = job.tool(op.toolNumber);
-    if (!tc)
+    if (!job.tool(op.toolNumber))
         return refError(op, "no tool number " + std::to_string(op.toolNumber) + " in the job");
+    auto groups = detail::operationPlanes(op, model);
+    if (!groups)
+        return groups.error();
+    if (groups->size() == 1 && !groups->front().plane.tilted())
+        return computeInPlane(job, index, op, model, job.stock, progress, heightsUsed);
+    // 3+2: each plane's computation on the model turned into its frame, then one section.
+    std::vector<ops::OpResult> parts;
+    for (const detail::PlaneGroup& group : groups.value()) {
+        const toolpath::WorkingPlane& p = group.plane;
+        auto framed = p.tilted() ? model.inFrame(p.origin, p.xAxis, p.zAxis) : base::Result<occ::Model>(model);
+        if (!framed)
+            return refError(op, framed.error().message);
+        Operation inPlane = op;
+        inPlane.geometry.holes = group.holes;
+        auto part = computeInPlane(job, index, inPlane, framed.value(), detail::stockInFrame(job.stock, p), progress,
+                                   parts.empty() ? heightsUsed : nullptr);
+        if (!part)
+            return part;
+        parts.push_back(std::move(part).value());
+    }
+    return detail::joinPlanes(std::move(parts), groups.value(), index);
+}
+
+namespace {
+
+base::Result<ops::OpResult> computeInPlane(const Job& job, int index, const Operation& op, const occ::Model& model,
+                                           const Stock& stock, const ops::Progress& progress,
+                                           std::optional<ops::Heights>* heightsUsed)
+{
+    const ops::ToolController* tc = job.tool(op.toolNumber);
     auto geometry = resolveGeometry(op, model);
     if (!geometry)
         return geometry.error();
-    const ops::Heights heights = resolveHeights(op, geometry.value(), model, job.stock);
+    const ops::Heights heights = resolveHeights(op, geometry.value(), model, stock);
     if (heightsUsed)
         *heightsUsed = heights;
     const OperationGeometry& g = geometry.value();
@@ -213,5 +250,7 @@ base::Result<ops::OpResult> computeOperation(const Job& job, int index, const oc
         },
         op.params);
 }
+
+}  // namespace
 
 }  // namespace camwb::document

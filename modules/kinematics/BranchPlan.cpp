@@ -71,25 +71,29 @@ base::Result<std::vector<PlannedPose>> planBranches(const PoseSolver& solver, co
 {
     const KinematicChain& chain = solver.chain();
     const int preferred = chain.preferredJoint >= 0 ? chain.preferredSign : 0;
-    std::vector<std::vector<State>> steps;
-    steps.reserve(tools.size());
-    std::vector<PoseCandidate> previous;
+    // Every step's states in one array (stepStart[i] is where step i's begin): a 1M-move
+    // operation keeps a few small states per move and allocates once.
+    std::vector<State> states;
+    std::vector<std::size_t> stepStart;
+    states.reserve(tools.size() * 2);
+    stepStart.reserve(tools.size() + 1);
+    std::vector<PoseCandidate> previous, next, found;  // the candidates of the last and this step
     for (std::size_t i = 0; i < tools.size(); ++i) {
-        std::vector<State> next;
-        std::vector<PoseCandidate> nextCandidates;
+        const std::size_t begin = states.size();
+        next.clear();
         auto consider = [&](const PoseCandidate& c, int parent, bool reconfigure, Cost cost) {
             for (std::size_t k = 0; k < next.size(); ++k) {
-                if (std::abs(next[k].rotaryDeg[0] - c.pose.rotaryDeg[0]) < 1e-6 &&
-                    std::abs(next[k].rotaryDeg[1] - c.pose.rotaryDeg[1]) < 1e-6) {
-                    if (cost < next[k].cost) {
-                        next[k] = stateOf(c, parent, reconfigure, cost);
-                        nextCandidates[k] = c;
+                if (std::abs(next[k].pose.rotaryDeg[0] - c.pose.rotaryDeg[0]) < 1e-6 &&
+                    std::abs(next[k].pose.rotaryDeg[1] - c.pose.rotaryDeg[1]) < 1e-6) {
+                    if (cost < states[begin + k].cost) {
+                        states[begin + k] = stateOf(c, parent, reconfigure, cost);
+                        next[k] = c;
                     }
                     return;
                 }
             }
-            next.push_back(stateOf(c, parent, reconfigure, cost));
-            nextCandidates.push_back(c);
+            states.push_back(stateOf(c, parent, reconfigure, cost));
+            next.push_back(c);
         };
         if (i == 0) {
             for (const PoseCandidate& c : solver.candidates(tools[0], start)) {
@@ -102,11 +106,22 @@ base::Result<std::vector<PlannedPose>> planBranches(const PoseSolver& solver, co
             }
         } else {
             const double toolTurn = angleBetweenDeg(tools[i - 1].axis, tools[i].axis);
-            const std::vector<State>& last = steps.back();
-            for (std::size_t p = 0; p < last.size(); ++p) {
-                for (const PoseCandidate& c : solver.candidates(tools[i], &previous[p].pose)) {
+            const std::size_t last = stepStart.back();
+            // Away from the pole the solutions do not depend on the previous pose: solve once and
+            // only move the angles by whole turns for each state.
+            const std::vector<IkSolution> solutions =
+                inverseOrientation(chain, tools[i].axis, previous.front().pose.rotaryDeg);
+            const bool pole =
+                std::any_of(solutions.begin(), solutions.end(), [](const IkSolution& s) { return s.pole >= 0; });
+            for (std::size_t p = 0; p < previous.size(); ++p) {
+                found.clear();
+                if (pole)
+                    found = solver.candidates(tools[i], &previous[p].pose);
+                else
+                    solver.appendCandidates(solutions, previous[p].pose.rotaryDeg, found);
+                for (const PoseCandidate& c : found) {
                     const bool reconfigure = needsReconfigure(previous[p], c, toolTurn, options);
-                    Cost cost = last[p].cost;
+                    Cost cost = states[last + p].cost;
                     cost.reconfigurations += reconfigure ? 1 : 0;
                     cost.travelDeg += std::abs(c.pose.rotaryDeg[0] - previous[p].pose.rotaryDeg[0]) +
                                       std::abs(c.pose.rotaryDeg[1] - previous[p].pose.rotaryDeg[1]);
@@ -120,33 +135,35 @@ base::Result<std::vector<PlannedPose>> planBranches(const PoseSolver& solver, co
                 "tool pose " + std::to_string(i) + ": " +
                 (why ? std::string("no pose continues the path within the rotary limits") : why.error().message));
         }
-        if (next.size() > kMaxStates) {
+        if (next.size() > kMaxStates) {  // keep the cheapest
             std::vector<std::size_t> order(next.size());
             for (std::size_t k = 0; k < order.size(); ++k)
                 order[k] = k;
-            std::sort(order.begin(), order.end(), [&](auto a, auto b) { return next[a].cost < next[b].cost; });
+            std::sort(order.begin(), order.end(),
+                      [&](auto a, auto b) { return states[begin + a].cost < states[begin + b].cost; });
             order.resize(kMaxStates);
             std::vector<State> kept;
             std::vector<PoseCandidate> keptCandidates;
             for (std::size_t k : order) {
-                kept.push_back(next[k]);
-                keptCandidates.push_back(nextCandidates[k]);
+                kept.push_back(states[begin + k]);
+                keptCandidates.push_back(next[k]);
             }
-            next = std::move(kept);
-            nextCandidates = std::move(keptCandidates);
+            states.resize(begin);
+            states.insert(states.end(), kept.begin(), kept.end());
+            next = std::move(keptCandidates);
         }
-        steps.push_back(std::move(next));
-        previous = std::move(nextCandidates);
+        stepStart.push_back(begin);
+        std::swap(previous, next);
     }
-    if (steps.empty())
+    if (stepStart.empty())
         return std::vector<PlannedPose>{};
-    const std::vector<State>& last = steps.back();
-    int best = static_cast<int>(
-        std::min_element(last.begin(), last.end(), [](const State& a, const State& b) { return a.cost < b.cost; }) -
-        last.begin());
+    const std::size_t lastBegin = stepStart.back();
+    int best = static_cast<int>(std::min_element(states.begin() + static_cast<std::ptrdiff_t>(lastBegin), states.end(),
+                                                 [](const State& a, const State& b) { return a.cost < b.cost; }) -
+                                states.begin() - static_cast<std::ptrdiff_t>(lastBegin));
     std::vector<PlannedPose> plan(tools.size());
     for (std::size_t i = tools.size(); i-- > 0;) {
-        const State& s = steps[i][static_cast<std::size_t>(best)];
+        const State& s = states[stepStart[i] + static_cast<std::size_t>(best)];
         PoseCandidate& c = plan[i].candidate;
         c.pose.rotaryDeg = s.rotaryDeg;
         c.pose.linear = linearAxesFor(chain, tools[i].tip, s.rotaryDeg, solver.toolLengthMm());

@@ -160,10 +160,19 @@ Vec3 linearAxesFor(const KinematicChain& chain, const Vec3& tip, const std::arra
 std::vector<IkSolution> inverseKinematics(const KinematicChain& chain, const ToolPose& tool,
                                           const std::array<double, 2>& freeAngleDeg, double toolLengthMm)
 {
+    std::vector<IkSolution> out = inverseOrientation(chain, tool.axis, freeAngleDeg);
+    for (IkSolution& solution : out)
+        solution.pose.linear = linearAxesFor(chain, tool.tip, solution.pose.rotaryDeg, toolLengthMm);
+    return out;
+}
+
+std::vector<IkSolution> inverseOrientation(const KinematicChain& chain, const Vec3& toolAxis,
+                                           const std::array<double, 2>& freeAngleDeg)
+{
     std::vector<IkSolution> out;
     if (!chain.fiveAxis())
         return out;
-    const Vector3d axis = eigen(tool.axis).normalized();
+    const Vector3d axis = eigen(toolAxis).normalized();
     const OrientationProblem op = orientationProblem(chain, axis);
     // θ1 and θ2 such that R(u1, θ1) R(u2, θ2) p = q: the vector c = R(u2, θ2) p = R(u1, -θ1) q lies on
     // both cones, u1·c = u1·q and u2·c = u2·p; c = α u1 + β u2 + γ u1×u2.
@@ -213,7 +222,6 @@ std::vector<IkSolution> inverseKinematics(const KinematicChain& chain, const Too
         // At the pole both signs give the same pose.
         if (k == 1 && !out.empty() && out.front().pole >= 0)
             break;
-        solution.pose.linear = linearAxesFor(chain, tool.tip, deg, toolLengthMm);
         out.push_back(solution);
     }
     return out;

@@ -77,6 +77,10 @@ struct IkSolution {
 };
 std::vector<IkSolution> inverseKinematics(const KinematicChain& chain, const ToolPose& tool,
                                           const std::array<double, 2>& freeAngleDeg = {0, 0}, double toolLengthMm = 0);
+// The rotary part alone (the solutions' linear axes left at 0), for a search that needs the
+// linear axes of the poses it keeps only (kinematics::planBranches).
+std::vector<IkSolution> inverseOrientation(const KinematicChain& chain, const Vec3& toolAxis,
+                                           const std::array<double, 2>& freeAngleDeg = {0, 0});
 
 // The linear axes that put the tool tip at `tip` with the rotary angles of `pose` (its linear
 // part is ignored): the part of the inverse kinematics after the angles are chosen, e.g. after an

@@ -1,5 +1,7 @@
 #include "kinematics/LimitCheck.h"
 
+#include "kinematics/PoseSolver.h"
+
 #include "base/NumberFormat.h"
 #include "toolpath/ArcGeometry.h"
 #include "toolpath/CycleExpansion.h"
@@ -46,7 +48,7 @@ void LimitCheck::flag(const std::string& key, const std::string& message)
     ++m_findings[it->second].count;
 }
 
-void LimitCheck::reach(const Vec3& p, AxisMask axes)
+void LimitCheck::reachMachine(const Vec3& p, AxisMask axes)
 {
     for (int axis = 0; axis < 3; ++axis) {
         if (!axes.has(axis))  // a move that does not give this axis did not move it
@@ -99,8 +101,13 @@ void LimitCheck::arc(const Arc& r)
     if (const std::optional<Vec3> start = m_position.point()) {
         Vec3 min = *start, max = *start;
         extendByArc(min, max, *start, r);
-        reach(min);
-        reach(max);
+        if (m_plane.tilted()) {  // the box's corners: the arc lies within them in any frame
+            for (int corner = 0; corner < 8; ++corner)
+                reach({(corner & 1) ? max.x : min.x, (corner & 2) ? max.y : min.y, (corner & 4) ? max.z : min.z});
+        } else {
+            reach(min);
+            reach(max);
+        }
     }
     reach(r.to);
     m_position.set(r.to);
@@ -149,7 +156,7 @@ void LimitCheck::toolAxisMove(const ToolAxisMove& r)
 {
     nextRecord();
     rotary(r.machine);
-    reach(linearAxes(r));
+    reachMachine(linearAxes(r));
     m_position.set(r.tip);
     if (r.feedMmPerMin > 0)
         cutting(r.feedMmPerMin);
@@ -264,6 +271,41 @@ void LimitCheck::passThrough(const PassThrough& r)
 {
     nextRecord();
     ForwardingSink::passThrough(r);
+}
+
+// A point in the current working plane's frame: in the machine's linear axes through the pose
+// that tilts the tool along the plane's axis (the machine's preferred one: a post may take the
+// other branch, whose spans differ), the workpiece frame where that is not known. A move that
+// gives only some axes of a tilted frame says nothing certain about the machine's.
+void LimitCheck::reach(const Vec3& p, AxisMask axes)
+{
+    if (!m_plane.tilted()) {
+        reachMachine(p, axes);
+        return;
+    }
+    if (!axes.all())
+        return;
+    const Vec3 w = m_plane.toWorkpiece(p);
+    reachMachine(m_planePose ? linearAxesFor(m_machine.kinematics, w, m_planePose->rotaryDeg) : w);
+}
+
+void LimitCheck::workingPlane(const WorkingPlane& r)
+{
+    nextRecord();
+    m_plane = r;
+    m_planePose.reset();
+    if (r.tilted()) {
+        if (!m_machine.kinematics.fiveAxis()) {
+            flag("plane without chain", "a tilted working plane (3+2), but the " + m_name +
+                                            " has no five-axis chain in its machine file to tilt the tool");
+        } else if (auto pose = PoseSolver(m_machine).solve({r.origin, r.zAxis}, nullptr); pose.ok()) {
+            m_planePose = pose->pose;
+        } else {
+            flag("plane unreachable", "working plane with tool axis (" + num(r.zAxis.x) + ", " + num(r.zAxis.y) + ", " +
+                                          num(r.zAxis.z) + "): " + pose.error().message);
+        }
+    }
+    ForwardingSink::workingPlane(r);
 }
 
 std::vector<LimitCheck::Finding> LimitCheck::spanFindings() const

@@ -61,6 +61,7 @@ public:
     void sectionEnd(const toolpath::SectionEnd& r) override;
     void programStop(const toolpath::ProgramStop& r) override;
     void passThrough(const toolpath::PassThrough& r) override;
+    void workingPlane(const toolpath::WorkingPlane& r) override;
 
 private:
     struct Reach {  // the lowest and highest value met on one axis, and where
@@ -70,7 +71,8 @@ private:
     };
     void nextRecord();
     void flag(const std::string& key, const std::string& message);
-    void reach(const toolpath::Vec3& p, toolpath::AxisMask axes = {});  // only the axes given
+    void reach(const toolpath::Vec3& p, toolpath::AxisMask axes = {});         // in the working plane's frame
+    void reachMachine(const toolpath::Vec3& p, toolpath::AxisMask axes = {});  // only the axes given
     void cutting(double feed);
     void rotary(const toolpath::RotaryAxes& machine);
     toolpath::Vec3 linearAxes(const toolpath::ToolAxisMove& r) const;
@@ -83,7 +85,9 @@ private:
     bool m_perMinute = true;
     bool m_noTool = false;  // after a change to T0
     toolpath::KnownPosition m_position;
-    toolpath::AxisMask m_reached{0};  // the axes some move has given
+    toolpath::WorkingPlane m_plane;          // the frame moves are in (3+2)
+    std::optional<MachinePose> m_planePose;  // the pose that tilts the tool along it
+    toolpath::AxisMask m_reached{0};         // the axes some move has given
     std::array<Reach, 3> m_low, m_high;
     std::vector<Finding> m_findings;
     std::map<std::string, std::size_t> m_findingOfKey;

@@ -18,19 +18,28 @@ double rotaryTravel(const MachinePose& a, const MachinePose& b)
 }
 
 // The values of `deg` plus whole turns that lie within [min, max], nearest `near` first; for an
-// endless axis only the nearest.
-std::vector<double> turnsWithin(double deg, double near, double min, double max)
+// endless axis only the nearest. At most five (a limited axis spanning up to four turns).
+struct Turns {
+    double value[5];
+    int count = 0;
+};
+
+Turns turnsWithin(double deg, double near, double min, double max)
 {
+    Turns out;
     const double nearest = deg + 360.0 * std::round((near - deg) / 360.0);
-    if (!std::isfinite(min) && !std::isfinite(max))
-        return {nearest};
-    std::vector<double> out;
-    for (int k = -2; k <= 2; ++k) {
+    if (!std::isfinite(min) && !std::isfinite(max)) {
+        out.value[out.count++] = nearest;
+        return out;
+    }
+    // Nearest first: 0, -1, +1, -2, +2 turns away (ties keep that order).
+    for (int k : {0, -1, 1, -2, 2}) {
         const double v = nearest + 360.0 * k;
         if (v >= min - kLimitSlackDeg && v <= max + kLimitSlackDeg)
-            out.push_back(v);
+            out.value[out.count++] = v;
     }
-    std::sort(out.begin(), out.end(), [near](double a, double b) { return std::abs(a - near) < std::abs(b - near); });
+    std::stable_sort(out.value, out.value + out.count,
+                     [near](double a, double b) { return std::abs(a - near) < std::abs(b - near); });
     return out;
 }
 
@@ -77,13 +86,20 @@ std::vector<PoseCandidate> PoseSolver::candidates(const ToolPose& tool, const Ma
 {
     const std::array<double, 2> near = previous ? previous->rotaryDeg : std::array<double, 2>{0, 0};
     std::vector<PoseCandidate> out;
-    for (const IkSolution& s : inverseKinematics(m_chain, tool, near, m_toolLengthMm)) {
-        const auto first = turnsWithin(s.pose.rotaryDeg[0], near[0], m_min[0], m_max[0]);
-        const auto second = turnsWithin(s.pose.rotaryDeg[1], near[1], m_min[1], m_max[1]);
-        for (double a : first) {
-            for (double b : second) {
+    appendCandidates(inverseKinematics(m_chain, tool, near, m_toolLengthMm), near, out);
+    return out;
+}
+
+void PoseSolver::appendCandidates(const std::vector<IkSolution>& solutions, const std::array<double, 2>& near,
+                                  std::vector<PoseCandidate>& out) const
+{
+    for (const IkSolution& s : solutions) {
+        const Turns first = turnsWithin(s.pose.rotaryDeg[0], near[0], m_min[0], m_max[0]);
+        const Turns second = turnsWithin(s.pose.rotaryDeg[1], near[1], m_min[1], m_max[1]);
+        for (int i = 0; i < first.count; ++i) {
+            for (int k = 0; k < second.count; ++k) {
                 PoseCandidate c;
-                c.pose = {s.pose.linear, {a, b}};  // whole turns leave the linear axes as they are
+                c.pose = {s.pose.linear, {first.value[i], second.value[k]}};  // whole turns leave the linear axes
                 c.pole = s.pole;
                 c.poleJoint = s.poleJoint;
                 c.poleDistanceDeg = s.poleDistanceDeg;
@@ -93,7 +109,6 @@ std::vector<PoseCandidate> PoseSolver::candidates(const ToolPose& tool, const Ma
             }
         }
     }
-    return out;
 }
 
 base::Result<PoseCandidate> PoseSolver::solve(const ToolPose& tool, const MachinePose* previous) const

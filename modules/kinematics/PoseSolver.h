@@ -37,6 +37,10 @@ public:
     // whole turn nearest `previous` (or nearest 0) that the limits allow, and for a limited axis
     // whose range spans more than a turn the other turns too.
     std::vector<PoseCandidate> candidates(const ToolPose& tool, const MachinePose* previous) const;
+    // The same from solutions already found (away from the pole they do not depend on the
+    // previous pose, so a search over many previous poses solves once), appended to `out`.
+    void appendCandidates(const std::vector<IkSolution>& solutions, const std::array<double, 2>& near,
+                          std::vector<PoseCandidate>& out) const;
 
     // The one pose for `tool`; the error says which axis and limit no solution satisfies.
     base::Result<PoseCandidate> solve(const ToolPose& tool, const MachinePose* previous) const;

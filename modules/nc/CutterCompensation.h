@@ -85,6 +85,7 @@ public:
     void sectionEnd(const toolpath::SectionEnd& r) override { forward<&MachineSink::sectionEnd>(r); }
     void programStop(const toolpath::ProgramStop& r) override { forward<&MachineSink::programStop>(r); }
     void passThrough(const toolpath::PassThrough& r) override { forward<&MachineSink::passThrough>(r); }
+    void workingPlane(const toolpath::WorkingPlane& r) override { forward<&MachineSink::workingPlane>(r); }
 
 private:
     enum class State { Off, Starting, On };

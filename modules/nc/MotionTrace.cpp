@@ -385,6 +385,14 @@ private:
         state(r.feedMmPerMin, r.feedMmPerMin > 0);
         m_state.position.set(r.tip);
     }
+    void visit(const WorkingPlane& r)
+    {
+        begin("plane");
+        m_w.point("", "origin", r.origin);
+        m_w.point("x", "x", r.xAxis);
+        m_w.point("z", "z", r.zAxis);
+        m_w.end();
+    }
     void visit(const ToolChange& r) { m_state.tool = r.tool.number; }
     void visit(const Spindle& r)
     {
@@ -480,6 +488,7 @@ void MotionTraceWriter::sectionBegin(const SectionBegin& r) { m_impl->record(r);
 void MotionTraceWriter::sectionEnd(const SectionEnd& r) { m_impl->record(r); }
 void MotionTraceWriter::programStop(const ProgramStop& r) { m_impl->record(r); }
 void MotionTraceWriter::passThrough(const PassThrough& r) { m_impl->record(r); }
+void MotionTraceWriter::workingPlane(const WorkingPlane& r) { m_impl->record(r); }
 
 bool MotionTraceWriter::finish(const std::vector<std::string>& files)
 {

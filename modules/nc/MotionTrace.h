@@ -56,6 +56,7 @@ public:
     void sectionEnd(const toolpath::SectionEnd&) override;
     void programStop(const toolpath::ProgramStop&) override;
     void passThrough(const toolpath::PassThrough&) override;
+    void workingPlane(const toolpath::WorkingPlane&) override;
 
     // Traces what was kept with the run's files and hands over the rest of the text; false when a
     // write failed at any time.

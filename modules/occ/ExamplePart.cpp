@@ -11,6 +11,7 @@
 
 #include <cstdio>
 #include <filesystem>
+#include <functional>
 #include <string>
 #include <system_error>
 #include <utility>
@@ -35,16 +36,18 @@ TopoDS_Shape buildExamplePart()
 
 }  // namespace
 
-base::Status writeExamplePart(const std::string& stepPath)
+namespace detail {
+
+base::Status writeStep(const std::function<TopoDS_Shape()>& build, const char* name, const std::string& stepPath)
 {
     try {
-        const TopoDS_Shape part = buildExamplePart();
+        const TopoDS_Shape part = build();
         STEPControl_Writer writer;
         if (writer.Transfer(part, STEPControl_AsIs) != IFSelect_RetDone)
             return base::makeError("could not convert the example part to STEP", stepPath);
         // Fixed header fields: regenerating the example gives a byte-identical file.
         APIHeaderSection_MakeHeader header(writer.Model());
-        header.SetName(new TCollection_HAsciiString("example-block"));
+        header.SetName(new TCollection_HAsciiString(name));
         header.SetTimeStamp(new TCollection_HAsciiString("2024-01-01T00:00:00"));
         header.SetAuthorValue(1, new TCollection_HAsciiString("CAM Workbench"));
         header.SetOrganizationValue(1, new TCollection_HAsciiString("CAM Workbench"));
@@ -68,6 +71,13 @@ base::Status writeExamplePart(const std::string& stepPath)
     } catch (const Standard_Failure& e) {
         return base::makeError(std::string("could not build the example part: ") + e.GetMessageString(), stepPath);
     }
+}
+
+}  // namespace detail
+
+base::Status writeExamplePart(const std::string& stepPath)
+{
+    return detail::writeStep(buildExamplePart, "example-block", stepPath);
 }
 
 }  // namespace camwb::occ

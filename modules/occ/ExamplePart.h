@@ -16,4 +16,11 @@ namespace camwb::occ {
 // in mm, with a fixed header time stamp so that regenerating gives the same file.
 base::Status writeExamplePart(const std::string& stepPath);
 
+// The five-axis teaching part (after seed 000's test part): an 80 x 80 mm block, zero at the
+// centre of its bottom, 20 mm of vertical sides and above them four faces inclined 30 degrees up
+// to a 28 x 28 mm top at Z 35 with a spherical cap (R20 about (0, 0, 20), 5 mm high); a hole D6, 8
+// deep, square to each inclined face at its middle (Z 27.5; on the -X face 12 mm towards -Y) and a
+// boss 10 x 8 x 3 mm on the -X face 12 mm towards +Y.
+base::Status writeFiveAxisExamplePart(const std::string& stepPath);
+
 }  // namespace camwb::occ

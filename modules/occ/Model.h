@@ -13,6 +13,7 @@
 
 #include <functional>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -97,6 +98,14 @@ public:
 
     base::Vec3 boundsMin() const;
     base::Vec3 boundsMax() const;
+
+    // 3+2 machining: the same model with its coordinates in the frame whose origin and unit,
+    // perpendicular x and z axes (workpiece coordinates) are given, so that every question above
+    // (planar faces seen from +Z, vertical holes) is asked along the frame's z. Face and edge
+    // indices stay those of this model. Errors: an STL model, axes that are no frame.
+    base::Result<Model> inFrame(const base::Vec3& origin, const base::Vec3& xAxis, const base::Vec3& zAxis) const;
+    // The unit direction of a cylindrical face's axis (either sense); nullopt for another face.
+    std::optional<base::Vec3> cylinderAxis(int faceIndex) const;
 
 private:
     explicit Model(std::shared_ptr<const ModelData> data);

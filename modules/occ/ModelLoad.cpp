@@ -186,6 +186,8 @@ FaceInfo describeFace(const TopoDS_Face& face, int index)
     return info;
 }
 
+}  // namespace
+
 void describeShape(ModelData& data)
 {
     TopExp::MapShapes(data.shape, TopAbs_FACE, data.faces);
@@ -206,6 +208,8 @@ void describeShape(ModelData& data)
         data.boundsMax = {x1, y1, z1};
     }
 }
+
+namespace {
 
 base::Status loadInto(ModelData& data, const std::string& ext, ProgressBridge& bridge)
 {

@@ -12,22 +12,29 @@ namespace camwb::post {
 
 namespace {
 
-constexpr const char* kValueNames[] = {"x",      "y",    "z",      "i",     "j",    "k",     "cx",    "cy",   "cz",
-                                       "radius", "feed", "motion", "plane", "comp", "sweep", "angle", "axial"};
-static_assert(std::size(kValueNames) == static_cast<std::size_t>(MoveValue::Axial) + 1);
+constexpr const char* kValueNames[] = {"x",     "y",      "z",    "i",      "j",     "k",     "cx",    "cy",
+                                       "cz",    "radius", "feed", "motion", "plane", "comp",  "sweep", "angle",
+                                       "axial", "a",      "b",    "c",      "toolx", "tooly", "toolz"};
+static_assert(std::size(kValueNames) == static_cast<std::size_t>(MoveValue::ToolZ) + 1);
 
 bool isAxis(MoveValue v) { return v == MoveValue::X || v == MoveValue::Y || v == MoveValue::Z; }
+bool isRotary(MoveValue v) { return v == MoveValue::A || v == MoveValue::B || v == MoveValue::C; }
+bool isFiveAxisOnly(MoveValue v) { return v >= MoveValue::A; }
 
-// Which move values each kind of block may use: a rapid has no feed, straight moves no centre.
+// Which move values each kind of block may use: a rapid has no feed, straight moves no centre,
+// only five-axis blocks rotary axes and tool vectors.
 bool allowed(MoveValue v, const std::string& kind)
 {
+    const bool fiveAxis = kind == "rapid5D" || kind == "linear5D";
+    if (isFiveAxisOnly(v))
+        return fiveAxis;
     if (kind == "circular")
         return v != MoveValue::Comp;
     if (v == MoveValue::Angle || v == MoveValue::Axial)
         return false;
     if (isAxis(v) || v == MoveValue::Motion || v == MoveValue::Comp)
         return true;
-    return kind == "linear" && v == MoveValue::Feed;
+    return (kind == "linear" || kind == "linear5D") && v == MoveValue::Feed;
 }
 
 base::Result<BlockTemplate> parseWords(const QJSValue& list, const std::string& kind, const std::string& where,
@@ -149,6 +156,16 @@ double MoveValues::value(MoveValue which) const
         return motion == 2 ? -sweepDeg : sweepDeg;
     case MoveValue::Axial:
         return axialRise;
+    case MoveValue::A:
+    case MoveValue::B:
+    case MoveValue::C:
+        return rotaryDeg[static_cast<int>(which) - static_cast<int>(MoveValue::A)];
+    case MoveValue::ToolX:
+        return toolAxis.x;
+    case MoveValue::ToolY:
+        return toolAxis.y;
+    case MoveValue::ToolZ:
+        return toolAxis.z;
     }
     return 0;
 }
@@ -240,7 +257,7 @@ bool BlockTemplate::write(const MoveValues& given, OutputWriter& out, Issues& is
             }
         char* buffer = m_buffers.data() + i * kSize;
         m_texts[i] = std::string_view(buffer, word.variable->textOf(value, buffer));
-        if (isAxis(word.value) && word.variable->modal().wouldWrite(m_texts[i]))
+        if ((isAxis(word.value) || isRotary(word.value)) && word.variable->modal().wouldWrite(m_texts[i]))
             axisChanges = true;
     }
     if (straight && !axisChanges)
@@ -385,14 +402,18 @@ base::Result<BlockTemplates> parseBlockTemplates(const QJSValue& blocks, const s
         return templates;
     if (!blocks.isObject())
         return base::makeError("post.blocks must be an object {rapid, linear, circular, after}", postFile, line);
-    for (const char* kind : {"rapid", "linear"}) {
+    const std::pair<const char*, std::optional<BlockTemplate>*> straight[] = {{"rapid", &templates.rapid},
+                                                                              {"linear", &templates.linear},
+                                                                              {"rapid5D", &templates.rapid5D},
+                                                                              {"linear5D", &templates.linear5D}};
+    for (const auto& [kind, slot] : straight) {
         const QJSValue list = blocks.property(kind);
         if (list.isUndefined())
             continue;
         auto block = parseWords(list, kind, std::string("post.blocks.") + kind, postFile, line);
         if (!block)
             return block.error();
-        (std::string(kind) == "rapid" ? templates.rapid : templates.linear) = std::move(block).value();
+        *slot = std::move(block).value();
     }
     for (const char* key : {"before", "after"}) {
         const QJSValue list = blocks.property(key);

@@ -15,12 +15,20 @@ namespace {
 
 // Grows a box over tool positions axis by axis: a move that gives only Z widens only Z, and an
 // axis no move gave has no extent (base::Box3 knows only all three or none).
+// Points in a tilted working plane's frame count in the workpiece frame, and only when the move
+// gives all three axes (one axis of the plane is no axis of the workpiece).
 struct AxisExtents {
     AxisMask seen{0};
     Vec3 min, max;
+    WorkingPlane plane;
     bool any() const { return !seen.none(); }
-    void add(const Vec3& p, AxisMask axes = {})
+    void add(Vec3 p, AxisMask axes = {})
     {
+        if (plane.tilted()) {
+            if (!axes.all())
+                return;
+            p = plane.toWorkpiece(p);
+        }
         for (int axis = 0; axis < 3; ++axis) {
             if (!axes.has(axis))
                 continue;
@@ -52,8 +60,9 @@ ProgramSummary summarizeProgram(const Toolpath& toolpath)
             if (const std::optional<Vec3> start = position.point()) {
                 Vec3 min = *start, max = *start;
                 extendByArc(min, max, *start, *a);
-                extents.add(min);
-                extents.add(max);
+                for (int corner = 0; corner < 8; ++corner)  // in any frame the arc lies within them
+                    extents.add(
+                        {(corner & 1) ? max.x : min.x, (corner & 2) ? max.y : min.y, (corner & 4) ? max.z : min.z});
             } else {
                 extents.add(a->to);
             }
@@ -68,6 +77,12 @@ ProgramSummary summarizeProgram(const Toolpath& toolpath)
             }
             if (!c->holes.empty())
                 position.set({c->holes.back().x, c->holes.back().y, cycleReturnZ(*c)});
+        } else if (const auto* plane = std::get_if<WorkingPlane>(&record)) {
+            const std::optional<Vec3> at = position.point();
+            position = KnownPosition{};
+            if (at)
+                position.set(plane->toLocal(extents.plane.toWorkpiece(*at)));
+            extents.plane = *plane;
         } else if (const auto* w = std::get_if<WorkOffset>(&record)) {
             if (!offsetSeen && !extents.any())
                 summary.firstWorkOffset = w->index;

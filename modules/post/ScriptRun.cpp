@@ -49,9 +49,10 @@ var writeBlock = (function (kernel) {
 )JS";
 
 constexpr const char* kHandlerNames[] = {
-    "onOpen",    "onSection",    "onToolChange", "onSpindle",    "onCoolant", "onFeedMode",    "onWorkOffset",
-    "onRapid",   "onLinear",     "onCircular",   "onLinear5D",   "onCycle",   "onCyclePoint",  "onCycleEnd",
-    "onComment", "onCutterComp", "onDwell",      "onSectionEnd", "onStop",    "onPassThrough", "onClose"};
+    "onOpen",       "onSection",     "onToolChange",   "onSpindle",    "onCoolant",       "onFeedMode",
+    "onWorkOffset", "onRapid",       "onLinear",       "onCircular",   "onLinear5D",      "onCycle",
+    "onCyclePoint", "onCycleEnd",    "onComment",      "onCutterComp", "onDwell",         "onSectionEnd",
+    "onStop",       "onPassThrough", "onWorkingPlane", "onClose",      "onFiveAxisBegin", "onFiveAxisEnd"};
 static_assert(std::size(kHandlerNames) == static_cast<std::size_t>(Handler::Count), "a name for every handler");
 
 constexpr const char* kCapabilityKeys[] = {"arcPlanes",    "helicalArcs",  "maxArcSweep", "maxHelixSweep",
@@ -95,6 +96,11 @@ bool isCycleKind(const std::string& kind)
 
 }  // namespace
 
+std::string counted(int count, const char* one, const char* many)
+{
+    return std::to_string(count) + " " + (count == 1 ? one : many);
+}
+
 const char* handlerName(Handler handler) { return kHandlerNames[static_cast<int>(handler)]; }
 
 ScriptRun::ScriptRun(std::string postFile, const PostContext& context, std::chrono::milliseconds budget) :
@@ -107,9 +113,10 @@ ScriptRun::ScriptRun(std::string postFile, const PostContext& context, std::chro
     QJSValue global = m_engine.globalObject();
     QJSValue kernel = m_engine.newQObject(m_kernel.get());
     global.setProperty("__camwbKernel", kernel);
-    for (const char* name : {"createFormat", "createVariable", "createModal", "createPending", "writeComment",
-                             "writeln", "warning", "error", "setBlockNumbering", "getCurrentPosition", "getCurrentAxis",
-                             "getProperty", "expandCyclePoint", "machiningSeconds"})
+    for (const char* name :
+         {"createFormat", "createVariable", "createModal", "createPending", "writeComment", "writeln", "warning",
+          "error", "setBlockNumbering", "getCurrentPosition", "getCurrentAxis", "getProperty", "expandCyclePoint",
+          "machiningSeconds", "getFiveAxisTravel", "getMachinePose"})
         global.setProperty(name, kernel.property(name));  // QObject methods stay bound to the kernel
     global.setProperty("programName", qs(context.programName));
     global.setProperty("dateString", qs(formatDateUtc(context.dateEpochSeconds)));
@@ -147,6 +154,7 @@ void ScriptRun::setProperties(const std::map<std::string, PropertyValue>& values
 
 void ScriptRun::setMachine(const kinematics::Machine& machine)
 {
+    m_machine = machine;
     QJSValue m = m_engine.newObject();
     m.setProperty("id", qs(machine.id));
     m.setProperty("name", qs(machine.name));
@@ -460,6 +468,67 @@ base::Status ScriptRun::readDeclarations(const std::string& source, PostInfo& in
     if (!templates)
         return templates.error();
     m_templates = std::move(templates).value();
+    return readFiveAxis(source);
+}
+
+// post.fiveAxis = {output, feed, poleCone, reconfigure, retract, reconfigureStep}: unknown keys
+// and values are refused, as for the capabilities.
+base::Status ScriptRun::readFiveAxis(const std::string& source)
+{
+    const QJSValue declared = m_post.property("fiveAxis");
+    if (declared.isUndefined())
+        return {};
+    auto declError = [&](const std::string& message) {
+        return base::makeError("post.fiveAxis" + message, m_postFile, lineOfKey(source, "fiveAxis"));
+    };
+    if (!declared.isObject())
+        return declError(" must be an object {output, feed, poleCone, reconfigure, retract, reconfigureStep}");
+    if (m_capabilities.maxAxes < 5)
+        return declError(" needs post.capabilities.maxAxes 5");
+    FiveAxisDeclaration five;
+    auto choice = [&](const QJSValue& value, const char* a, const char* b, bool& second) {
+        second = str(value) == b;
+        return str(value) == a || second;
+    };
+    auto number = [](const QJSValue& value, double min, double max, double& out) {
+        out = value.toNumber();
+        return value.isNumber() && out >= min && out <= max;
+    };
+    QJSValueIterator it(declared);
+    while (it.hasNext()) {
+        it.next();
+        const std::string key = it.name().toStdString();
+        const QJSValue value = it.value();
+        bool refuse = false;
+        bool ok = false;
+        if (key == "output")
+            ok = choice(value, "tip", "machine", five.machineCoordinates);
+        else if (key == "feed") {
+            const std::string text = str(value);
+            ok = text == "tip" || text == "combined" || text == "inverse";
+            five.feed = text == "combined"  ? FiveAxisFeed::Combined
+                        : text == "inverse" ? FiveAxisFeed::InverseTime
+                                            : FiveAxisFeed::Tip;
+        } else if (key == "reconfigure")
+            ok = choice(value, "retract", "refuse", refuse);
+        else if (key == "poleCone")
+            ok = number(value, 0, 10, five.options.poleConeDeg);
+        else if (key == "retract")
+            ok = number(value, 0.001, 10000, five.options.retractMm);
+        else if (key == "reconfigureStep")
+            ok = number(value, 0.001, 360, five.options.reconfigureStepDeg);
+        else
+            return declError("." + key +
+                             " is not a five-axis setting (output, feed, poleCone, reconfigure, retract, "
+                             "reconfigureStep)");
+        if (!ok)
+            return declError("." + key + ": \"" + str(value) +
+                             "\" is not accepted (output tip|machine, feed tip|combined|inverse, reconfigure "
+                             "retract|refuse, poleCone 0..10 deg, retract > 0 mm, reconfigureStep > 0 deg)");
+        if (key == "reconfigure")
+            five.options.retractToReconfigure = !refuse;
+    }
+    m_fiveAxis = five;
     return {};
 }
 

@@ -3,10 +3,13 @@
 // linearised where the post cannot write them; cycles the post does not write are expanded into
 // moves; five-axis moves are refused by three-axis posts; cutter compensation must change on a
 // straight move and works in XY.
+#include "kinematics/PoseSolver.h"
+#include "post/detail/FiveAxisWriter.h"
 #include "post/detail/ScriptRun.h"
 #include "toolpath/ArcGeometry.h"
 #include "toolpath/CycleExpansion.h"
 #include "toolpath/MachineSink.h"
+#include "toolpath/PlaneFrames.h"
 #include "toolpath/RecordNames.h"
 
 #include <cmath>
@@ -28,11 +31,6 @@ int compCode(CutterCompSide side)
 // The feed kind as block templates take it (toolpath::FeedKind's value).
 template <typename Move> int feedKindOf(const Move& move) { return static_cast<int>(move.feedKind); }
 
-std::string counted(int count, const char* one, const char* many)
-{
-    return std::to_string(count) + " " + (count == 1 ? one : many);
-}
-
 // A message once per run for something that happened `count` times, first at `first`.
 struct Tally {
     long long first = -1;
@@ -51,7 +49,11 @@ public:
     explicit ScriptSink(ScriptRun& run) : m_run(run), m_caps(run.m_capabilities) {}
 
     void rapid(const Rapid& r) override;
-    void linear(const Linear& r) override { straight(Handler::Linear, r.to, r.axes, r.feedMmPerMin, feedKindOf(r)); }
+    void linear(const Linear& r) override
+    {
+        if (!fiveAxis())
+            straight(Handler::Linear, r.to, r.axes, r.feedMmPerMin, feedKindOf(r));
+    }
     void arc(const Arc& r) override;
     void cycle(const Cycle& r) override;
     void toolChange(const ToolChange& r) override
@@ -78,15 +80,24 @@ public:
     void dwell(const Dwell& r) override { handle(Handler::Dwell, {r.seconds}); }
     void toolAxisMove(const ToolAxisMove& r) override
     {
-        const Vec3& a = r.axis;
+        if (fiveAxis())
+            return;
+        // Along +Z: a three-axis move, outside the five-axis sections of a machine's chain too.
+        if (alongZ(r.axis) && (m_caps.maxAxes < 5 || m_five)) {
+            straight(r.feedMmPerMin > 0 ? Handler::Linear : Handler::Rapid, r.tip, {}, r.feedMmPerMin);
+            return;
+        }
         if (m_caps.maxAxes < 5) {
-            if (std::abs(a.x) < 1e-9 && std::abs(a.y) < 1e-9 && a.z > 0) {  // along +Z: a three-axis move
-                straight(r.feedMmPerMin > 0 ? Handler::Linear : Handler::Rapid, r.tip, {}, r.feedMmPerMin);
-                return;
-            }
             m_run.fail("five-axis move (tool axis " + std::to_string(r.axis.x) + ", " + std::to_string(r.axis.y) +
                        ", " + std::to_string(r.axis.z) + ") but post " + m_run.m_postId + " drives " +
                        std::to_string(m_caps.maxAxes) + " axes");
+            return;
+        }
+        if (!m_run.has(Handler::Linear5D)) {
+            m_run.fail("five-axis move but " +
+                       (m_run.m_machine ? "machine " + m_run.m_machine->id + " has no five-axis kinematic chain"
+                                        : std::string("no machine is given")) +
+                       ": post " + m_run.m_postId + " writes five-axis moves through the machine's kinematics");
             return;
         }
         m_afterToolChange = false;
@@ -119,6 +130,59 @@ public:
     void sectionEnd(const SectionEnd&) override { handle(Handler::SectionEnd, {}); }
     void programStop(const ProgramStop& r) override { handle(Handler::Stop, {r.optional}); }
     void passThrough(const PassThrough& r) override { handle(Handler::PassThrough, {qs(r.text)}); }
+    void workingPlane(const WorkingPlane& r) override
+    {
+        if (!m_run.has(Handler::WorkingPlane)) {
+            if (r.tilted())
+                m_run.fail("3+2 working plane (tool axis " + base::NumberFormat{6, true}.format(r.zAxis.x) + ", " +
+                           base::NumberFormat{6, true}.format(r.zAxis.y) + ", " +
+                           base::NumberFormat{6, true}.format(r.zAxis.z) + ") but post " + m_run.m_postId +
+                           " has no onWorkingPlane: it cannot tilt the working plane");
+            return;
+        }
+        auto vector = [this](const Vec3& v) {
+            QJSValue o = engine().newObject();
+            o.setProperty("x", v.x);
+            o.setProperty("y", v.y);
+            o.setProperty("z", v.z);
+            return o;
+        };
+        QJSValue plane = engine().newObject();
+        plane.setProperty("origin", vector(r.origin));
+        plane.setProperty("xAxis", vector(r.xAxis));
+        plane.setProperty("yAxis", vector(r.yAxis()));
+        plane.setProperty("zAxis", vector(r.zAxis));
+        plane.setProperty("tilted", r.tilted());
+        // The spatial angles of the rotation (toolpath/PlaneFrames.h: about the fixed X, Y, Z).
+        const std::array<double, 3> angles = toolpath::spatialAngles(r);
+        plane.setProperty("spatialA", angles[0]);
+        plane.setProperty("spatialB", angles[1]);
+        plane.setProperty("spatialC", angles[2]);
+        // The machine's pose for the plane, as the kinematics chooses it without a previous pose
+        // (the preferred branch): a post writes the branch the control should take (SEQ, _DIR).
+        const kinematics::Machine* machine = m_run.m_machine ? &*m_run.m_machine : nullptr;
+        if (r.tilted() && machine != nullptr && machine->kinematics.fiveAxis()) {
+            auto pose = kinematics::PoseSolver(*machine).solve({r.origin, r.zAxis}, nullptr);
+            if (!pose) {
+                m_run.fail("working plane with tool axis (" + base::NumberFormat{6, true}.format(r.zAxis.x) + ", " +
+                           base::NumberFormat{6, true}.format(r.zAxis.y) + ", " +
+                           base::NumberFormat{6, true}.format(r.zAxis.z) + "): " + pose.error().message);
+                return;
+            }
+            QJSValue rotary = engine().newObject();
+            for (int j = 0; j < 2; ++j)
+                rotary.setProperty(QString::fromStdString(machine->kinematics.joints[j].axis).toLower(),
+                                   pose->pose.rotaryDeg[j]);
+            rotary.setProperty("branch", pose->branch);
+            plane.setProperty("machine", rotary);
+        }
+        handle(Handler::WorkingPlane, {plane});
+        // The coordinates that follow are in another frame: no axis value written before means
+        // anything there, so every axis is written again, and the first rapid goes over in X/Y
+        // before it goes down, as after a tool change.
+        m_run.m_kernel->forgetPosition();
+        m_afterToolChange = true;
+    }
     void setSource(const SourceRef& source) override
     {
         m_operation = source.operationIndex;
@@ -141,9 +205,14 @@ public:
         return tool;
     }
 
+    // The five-axis sections of the program, planned before it is played.
+    void startFiveAxis(FiveAxisPlan plan) { m_five.emplace(m_run, std::move(plan)); }
+
     // Warnings for what this run could not write as the CL said, once per kind.
     void report(std::vector<base::Diagnostic>& messages) const
     {
+        if (m_five)
+            m_five->report(messages);
         auto warn = [&messages, &file = m_run.m_postFile](std::string text) {
             messages.push_back(base::warningDiagnostic(std::move(text), file));
         };
@@ -195,6 +264,19 @@ private:
         return false;
     }
     void expandHole(const Cycle& cycle, const Vec3& hole);
+    // A move of a five-axis section goes to FiveAxisWriter (true); after the section's last the
+    // machine stands where the post's onFiveAxisEnd left it: unknown, as after a tool change.
+    bool fiveAxis()
+    {
+        if (!m_five || !m_five->owns(m_run.m_recordIndex))
+            return false;
+        m_afterToolChange = false;
+        if (m_five->writeRecord(m_comp != CutterCompSide::Off)) {
+            m_run.m_kernel->forgetPosition();
+            m_afterToolChange = true;
+        }
+        return true;
+    }
 
     ScriptRun& m_run;
     const PostCapabilities& m_caps;
@@ -209,10 +291,13 @@ private:
     bool m_compChanged = false;      // since the last straight move
     bool m_afterToolChange = false;  // no motion since the last tool change
     int m_operation = -1;
+    std::optional<FiveAxisWriter> m_five;
 };
 
 void ScriptSink::rapid(const Rapid& r)
 {
+    if (fiveAxis())
+        return;
     // After a tool change the machine stands where the changer left it, at a height the post does
     // not know: a first rapid that gives X or Y and Z moves X/Y at that height and only then Z,
     // never diagonally down from the tool change position. A CL whose first move gives Z alone
@@ -273,6 +358,8 @@ void ScriptSink::straight(Handler handler, const Vec3& to, AxisMask axes, double
 
 void ScriptSink::arc(const Arc& r)
 {
+    if (fiveAxis())
+        return;
     ScriptKernel& kernel = *m_run.m_kernel;
     m_afterToolChange = false;
     const std::optional<Vec3> start = kernel.position().point();
@@ -465,6 +552,12 @@ base::Status ScriptRun::play(const Toolpath& toolpath, const ProgramSummary& sum
         program.setProperty("extents", QJSValue(QJSValue::NullValue));
     }
 
+    if (m_capabilities.maxAxes >= 5 && m_machine && m_machine->kinematics.fiveAxis()) {
+        auto plan = planFiveAxis(toolpath, *m_machine, m_fiveAxis.options, m_capabilities.toleranceMm);
+        if (!plan)
+            return base::makeError(plan.error().message, m_postFile);
+        sink.startFiveAxis(std::move(plan).value());
+    }
     m_recordIndex = -1;
     call(Handler::Open, {program});
     for (std::size_t i = 0; i < toolpath.size() && !m_failure; ++i) {

@@ -160,6 +160,28 @@ struct ToolAxisMove {
     RotaryAxes machine{};
 };
 
+// 3+2 machining: the tilted working plane the records after it are in, until the next one. Its
+// frame in the workpiece frame: origin and unit, perpendicular x and z axes (z is the tool axis).
+// Moves, arcs and cycles after it give their coordinates in this frame, as a control's PLANE
+// SPATIAL or CYCLE800 has them, so 2.5D operations compute as they do flat; the default (the
+// workpiece frame itself) ends the tilt.
+struct WorkingPlane {
+    Vec3 origin;
+    Vec3 xAxis{1, 0, 0};
+    Vec3 zAxis{0, 0, 1};
+
+    Vec3 yAxis() const { return zAxis.cross(xAxis); }
+    bool tilted() const { return !(origin == Vec3{} && xAxis == Vec3{1, 0, 0} && zAxis == Vec3{0, 0, 1}); }
+    // A direction given in this frame, in the workpiece frame; a point likewise; and back.
+    Vec3 direction(const Vec3& v) const { return xAxis * v.x + yAxis() * v.y + zAxis * v.z; }
+    Vec3 toWorkpiece(const Vec3& p) const { return origin + direction(p); }
+    Vec3 toLocal(const Vec3& p) const
+    {
+        const Vec3 d = p - origin;
+        return {d.dot(xAxis), d.dot(yAxis()), d.dot(zAxis)};
+    }
+};
+
 struct CutterComp {
     CutterCompSide side = CutterCompSide::Off;
 };
@@ -212,8 +234,9 @@ struct SectionBegin {
 };
 struct SectionEnd {};
 
-using Record = std::variant<Rapid, Linear, Arc, ToolChange, Spindle, Coolant, FeedModeChange, WorkOffset, Dwell, Cycle,
-                            ToolAxisMove, CutterComp, Comment, SectionBegin, SectionEnd, ProgramStop, PassThrough>;
+using Record =
+    std::variant<Rapid, Linear, Arc, ToolChange, Spindle, Coolant, FeedModeChange, WorkOffset, Dwell, Cycle,
+                 ToolAxisMove, CutterComp, Comment, SectionBegin, SectionEnd, ProgramStop, PassThrough, WorkingPlane>;
 
 // The feed kind of a Linear or Arc; Unspecified for any other record.
 inline FeedKind feedKindOf(const Record& record)

@@ -27,6 +27,7 @@ public:
     void sectionEnd(const SectionEnd&) override {}
     void programStop(const ProgramStop&) override {}
     void passThrough(const PassThrough&) override {}
+    void workingPlane(const WorkingPlane&) override {}
 };
 
 class ForwardingSink : public MachineSink {
@@ -54,6 +55,7 @@ public:
     void sectionEnd(const SectionEnd& r) override { m_next.sectionEnd(r); }
     void programStop(const ProgramStop& r) override { m_next.programStop(r); }
     void passThrough(const PassThrough& r) override { m_next.passThrough(r); }
+    void workingPlane(const WorkingPlane& r) override { m_next.workingPlane(r); }
 
 protected:
     MachineSink& next() { return m_next; }

@@ -53,6 +53,8 @@ public:
                     m_feedMode = rec.mode;
                 else if constexpr (std::is_same_v<T, ToolChange>)
                     toolChange(rec.tool.number);
+                else if constexpr (std::is_same_v<T, WorkingPlane>)
+                    workingPlane(rec);
             },
             r);
     }
@@ -110,12 +112,22 @@ private:
         m_tool = -1;
     }
 
-    void addPoint(const Vec3& p, bool cutting)
+    // Lengths and times are the same in any frame; extents are the workpiece's.
+    void addPoint(const Vec3& local, bool cutting)
     {
+        const Vec3 p = m_plane.toWorkpiece(local);
         for (MotionTotals* t : {&m_stats.totals, &toolTotals()}) {
             (cutting ? t->cuttingExtents : t->rapidExtents).add(p);
             t->allExtents.add(p);
         }
+    }
+
+    void workingPlane(const WorkingPlane& plane)
+    {
+        if (m_position)
+            m_position = plane.toLocal(m_plane.toWorkpiece(*m_position));
+        m_partial = {};
+        m_plane = plane;
     }
 
     void rapid(const Vec3& to)
@@ -187,8 +199,10 @@ private:
         const Vec3 start = *m_position;
         Vec3 min = start, max = start;
         extendByArc(min, max, start, a);
-        addPoint(min, true);
-        addPoint(max, true);
+        for (int corner = 0; corner < (m_plane.tilted() ? 8 : 2); ++corner) {  // any frame: the box's corners
+            const int c = m_plane.tilted() ? corner : corner * 7;              // flat: min and max
+            addPoint({(c & 1) ? max.x : min.x, (c & 2) ? max.y : min.y, (c & 4) ? max.z : min.z}, true);
+        }
         const double length = arcLength(start, a);
         addFeed(length, a.feedMmPerMin);
         m_position = a.to;
@@ -217,6 +231,7 @@ private:
     double m_rapidMmPerMin;
     std::optional<Vec3> m_position;
     KnownPosition m_partial;  // the axes given so far, while m_position is unknown
+    WorkingPlane m_plane;     // the frame the moves are in (3+2)
     SpindleState m_spindle;
     FeedMode m_feedMode = FeedMode::PerMinute;
     int m_toolNumber = 0;

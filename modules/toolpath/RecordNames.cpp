@@ -99,7 +99,7 @@ const char* recordName(const Record& record)
     static constexpr const char* names[] = {
         "Rapid",          "Linear",       "Arc",        "ToolChange",  "Spindle",      "Coolant",
         "FeedModeChange", "WorkOffset",   "Dwell",      "Cycle",       "ToolAxisMove", "CutterComp",
-        "Comment",        "SectionBegin", "SectionEnd", "ProgramStop", "PassThrough"};
+        "Comment",        "SectionBegin", "SectionEnd", "ProgramStop", "PassThrough",  "WorkingPlane"};
     static_assert(std::size(names) == std::variant_size_v<Record>, "a name for every CL record");
     return names[record.index()];
 }

@@ -111,6 +111,8 @@ void dispatch(const Record& record, MachineSink& sink)
                 sink.programStop(r);
             else if constexpr (std::is_same_v<T, PassThrough>)
                 sink.passThrough(r);
+            else if constexpr (std::is_same_v<T, WorkingPlane>)
+                sink.workingPlane(r);
             else
                 static_assert(sizeof(T) == 0, "every CL record needs a sink method");
         },

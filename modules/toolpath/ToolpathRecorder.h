@@ -28,6 +28,7 @@ public:
     void sectionEnd(const SectionEnd& r) override { m_path.add(r, m_source); }
     void programStop(const ProgramStop& r) override { m_path.add(r, m_source); }
     void passThrough(const PassThrough& r) override { m_path.add(r, m_source); }
+    void workingPlane(const WorkingPlane& r) override { m_path.add(r, m_source); }
 
     const Toolpath& toolpath() const { return m_path; }
     Toolpath take() { return std::move(m_path); }

@@ -5,6 +5,7 @@
 #include "toolpath/RecordNames.h"
 
 #include <array>
+#include <cmath>
 #include <initializer_list>
 #include <limits>
 #include <optional>
@@ -389,6 +390,17 @@ base::Result<ClImport> readTrace(base::LineReader& lines, const std::string& fil
             record = ProgramStop{optional};
         } else if (kind == "passthrough") {
             record = PassThrough{in.text()};
+        } else if (kind == "plane") {
+            WorkingPlane p{in.point()};
+            in.keyword("x");
+            p.xAxis = in.point();
+            in.keyword("z");
+            p.zAxis = in.point();
+            if (std::abs(p.xAxis.length() - 1) > 1e-6 || std::abs(p.zAxis.length() - 1) > 1e-6 ||
+                std::abs(p.xAxis.dot(p.zAxis)) > 1e-6)
+                return base::makeError("plane: the x and z axes must be unit vectors at right angles", fileName,
+                                       lineNumber, kindColumn);
+            record = p;
         } else if (!in.failed()) {
             return base::makeError("unknown trace record '" + kind + "'", fileName, lineNumber, kindColumn);
         }

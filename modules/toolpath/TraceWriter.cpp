@@ -131,6 +131,15 @@ void TraceWriter::sectionEnd(const SectionEnd&) { m_out += "endsection\n"; }
 void TraceWriter::programStop(const ProgramStop& r) { m_out += r.optional ? "stop optional\n" : "stop\n"; }
 void TraceWriter::passThrough(const PassThrough& r) { m_out += "passthrough " + quoted(r.text) + "\n"; }
 
+void TraceWriter::workingPlane(const WorkingPlane& r)
+{
+    // The axes to 9 decimals: at 4, a 100 mm reach would move by up to 0.01 mm.
+    auto unit = [](const Vec3& v) {
+        return base::formatFixed(v.x, 9) + ' ' + base::formatFixed(v.y, 9) + ' ' + base::formatFixed(v.z, 9);
+    };
+    m_out += "plane " + point(r.origin) + " x " + unit(r.xAxis) + " z " + unit(r.zAxis) + '\n';
+}
+
 std::string traceOf(const Toolpath& toolpath)
 {
     std::string out;

@@ -29,6 +29,7 @@ public:
     void sectionEnd(const SectionEnd&) override;
     void programStop(const ProgramStop&) override;
     void passThrough(const PassThrough&) override;
+    void workingPlane(const WorkingPlane&) override;
 
 private:
     std::string& m_out;

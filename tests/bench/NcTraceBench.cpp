@@ -67,6 +67,7 @@ public:
     void sectionEnd(const SectionEnd&) override { ++records; }
     void programStop(const ProgramStop&) override { ++records; }
     void passThrough(const PassThrough&) override { ++records; }
+    void workingPlane(const WorkingPlane&) override { ++records; }
 };
 
 nc::InterpretOptions optionsFor(NcProgram kind)

@@ -122,6 +122,26 @@ Operation readLegacyProfile(const Json& o, const std::string& where)
 
 }  // namespace
 
+// {"face": n} or {"a": A, "b": B, "c": C} (version 4).
+static WorkingPlaneSpec readWorkingPlane(const Json& p, const std::string& where)
+{
+    WorkingPlaneSpec spec;
+    if (optionalMember(p, "face", where)) {
+        if (optionalMember(p, "a", where) || optionalMember(p, "b", where) || optionalMember(p, "c", where))
+            throw JsonFieldError{where + ": a face or the angles a, b, c, not both"};
+        spec.mode = WorkingPlaneSpec::Mode::Face;
+        spec.face = integer(p, "face", where);
+        if (spec.face < 1)
+            throw JsonFieldError{where + ".face: expected a face number from 1"};
+        return spec;
+    }
+    spec.mode = WorkingPlaneSpec::Mode::Angles;
+    spec.aDeg = number(p, "a", where);
+    spec.bDeg = number(p, "b", where);
+    spec.cDeg = number(p, "c", where);
+    return spec;
+}
+
 Operation readOperation(const Json& o, const std::string& where)
 {
     const std::string type = text(o, "type", where);
@@ -144,6 +164,8 @@ Operation readOperation(const Json& o, const std::string& where)
     }
     if (const Json* params = optionalMember(o, "params", where))
         std::visit([&](auto& p) { readParams(p, *params, where + ".params"); }, op.params);
+    if (const Json* plane = optionalMember(o, "workingPlane", where))
+        op.plane = readWorkingPlane(*plane, where + ".workingPlane");
     return op;
 }
 
@@ -161,6 +183,10 @@ ojson writeOperation(const Operation& op)
             heights[kHeightKeys[i]] = *v;
     out["heights"] = heights;
     out["params"] = std::visit([](const auto& p) { return writeParams(p); }, op.params);
+    if (op.plane.mode == WorkingPlaneSpec::Mode::Face)
+        out["workingPlane"] = {{"face", op.plane.face}};
+    else if (op.plane.mode == WorkingPlaneSpec::Mode::Angles)
+        out["workingPlane"] = {{"a", op.plane.aDeg}, {"b", op.plane.bDeg}, {"c", op.plane.cDeg}};
     return out;
 }
 

@@ -152,6 +152,9 @@ std::string describeRecord(const toolpath::Record& record)
             [](const toolpath::CutterComp&) -> std::string { return "compensation"; },
             [](const toolpath::Comment&) -> std::string { return "comment"; },
             [](const toolpath::ProgramStop& p) -> std::string { return p.optional ? "optional stop" : "program stop"; },
+            [](const toolpath::WorkingPlane& p) -> std::string {
+                return p.tilted() ? "working plane tilted" : "working plane reset";
+            },
             [](const auto&) -> std::string { return {}; },
         },
         record);

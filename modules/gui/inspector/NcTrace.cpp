@@ -43,6 +43,7 @@ public:
     void sectionEnd(const toolpath::SectionEnd& r) override { add(r); }
     void programStop(const toolpath::ProgramStop& r) override { add(r); }
     void passThrough(const toolpath::PassThrough& r) override { add(r); }
+    void workingPlane(const toolpath::WorkingPlane& r) override { add(r); }
 
     bool cancelled() const { return m_cancelled; }
 

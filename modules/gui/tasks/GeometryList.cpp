@@ -1,5 +1,7 @@
 #include "gui/tasks/GeometryList.h"
 
+#include <cmath>
+
 #include "gui/view3d/TaskOverlay.h"
 #include "occ/Model.h"
 
@@ -176,6 +178,13 @@ QString GeometryList::describe(Kind kind, int index) const
             return tr("Face %1 (not in the model)").arg(index);
         if (!f.planar)
             return tr("Face %1 — not planar").arg(index);
+        if (std::abs(std::abs(f.normal.z) - 1) > 1e-9)  // inclined: Z is no level of it; its normal says where it faces
+            return tr("Face %1 — planar, normal (%2, %3, %4), %5 mm²")
+                .arg(index)
+                .arg(f.normal.x, 0, 'f', 3)
+                .arg(f.normal.y, 0, 'f', 3)
+                .arg(f.normal.z, 0, 'f', 3)
+                .arg(f.areaMm2, 0, 'f', 1);
         return tr("Face %1 — planar, Z %2, %3 mm²").arg(index).arg(mm(f.planeZ)).arg(f.areaMm2, 0, 'f', 1);
     }
     if (kind == Edges) {

@@ -6,6 +6,7 @@
 #include "gui/tasks/HeightsBox.h"
 #include "gui/tasks/ParamForm.h"
 #include "gui/tasks/PreviewRunner.h"
+#include "gui/tasks/WorkingPlaneBox.h"
 #include "gui/tasks/detail/KindPanels.h"
 #include "gui/view3d/TaskOverlay.h"
 
@@ -160,6 +161,9 @@ void OperationPanel::build()
     m_geometry = new GeometryList(m_op.geometry, geometryKinds(), m_workbench.model(), m_overlay);
     column->addWidget(group(tr("Geometry"), m_geometry));
 
+    m_plane = new WorkingPlaneBox(m_op.plane, m_workbench.model().faceCount());
+    column->addWidget(group(tr("Working plane (3+2)"), m_plane));
+
     auto* params = new QWidget;
     auto* paramsForm = new QFormLayout(params);
     m_form = std::make_unique<ParamForm>(paramsForm, [this] { parametersChanged(); });
@@ -185,6 +189,7 @@ void OperationPanel::build()
     connect(m_geometry, &GeometryList::changed, this, &OperationPanel::parametersChanged);
     connect(m_geometry, &GeometryList::rejected, this, [this](const QString& why) { m_status->setText(why); });
     connect(m_heights, &HeightsBox::changed, this, &OperationPanel::parametersChanged);
+    connect(m_plane, &WorkingPlaneBox::changed, this, &OperationPanel::parametersChanged);
     connect(m_cancelCompute, &QPushButton::clicked, m_preview, &PreviewRunner::cancel);
     connect(m_preview, &PreviewRunner::started, this, [this] { setComputing(true); });
     connect(m_preview, &PreviewRunner::progress, m_progress, &QProgressBar::setValue);

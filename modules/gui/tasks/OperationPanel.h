@@ -24,6 +24,7 @@ namespace camwb::gui {
 
 class GeometryList;
 class HeightsBox;
+class WorkingPlaneBox;
 class ParamForm;
 struct OperationPanelArgs;
 class PreviewRunner;
@@ -84,6 +85,7 @@ private:
     QComboBox* m_tool = nullptr;
     GeometryList* m_geometry = nullptr;
     HeightsBox* m_heights = nullptr;
+    WorkingPlaneBox* m_plane = nullptr;
     QLabel* m_status = nullptr;
     QProgressBar* m_progress = nullptr;
     QPushButton* m_cancelCompute = nullptr;

@@ -63,6 +63,18 @@ void ToolpathPolylines::clear()
     m_hasPosition = false;
     m_positionStored = false;
     m_partial.forget();
+    m_plane = {};
+    m_tilted = false;
+}
+
+// Moves after a tilted working plane are in its frame; the view shows the workpiece's.
+void ToolpathPolylines::workingPlane(const toolpath::WorkingPlane& plane)
+{
+    if (m_hasPosition)
+        m_position = plane.toLocal(m_plane.toWorkpiece(m_position));  // the same point, stored or not
+    m_partial.forget();
+    m_plane = plane;
+    m_tilted = plane.tilted();
 }
 
 void ToolpathPolylines::setStartPosition(const Vec3& position)
@@ -75,7 +87,7 @@ void ToolpathPolylines::setStartPosition(const Vec3& position)
 std::uint32_t ToolpathPolylines::currentIndex()
 {
     if (!m_positionStored) {
-        m_points.push_back(m_position);
+        m_points.push_back(shown(m_position));
         m_positionStored = true;
     }
     return static_cast<std::uint32_t>(m_points.size() - 1);
@@ -90,7 +102,7 @@ void ToolpathPolylines::lineTo(const Vec3& to, PathSegmentKind kind)
     if (base::distance(to, m_position) < 1e-12)
         return;
     const std::uint32_t from = currentIndex();
-    m_points.push_back(to);
+    m_points.push_back(shown(to));
     m_segments.push_back({from, static_cast<std::uint32_t>(m_points.size() - 1), m_record, m_tool, kind});
     m_position = to;
     m_positionStored = true;
@@ -109,12 +121,12 @@ void ToolpathPolylines::errorTo(const Vec3& to)
         return;
     constexpr int kPieces = 2 * kErrorDashes - 1;  // dash, gap, ..., dash: the last ends at `to`
     for (int i = 0; i < kPieces; i += 2) {
-        m_points.push_back(from + (to - from) * (double(i) / kPieces));
-        m_points.push_back(from + (to - from) * (double(i + 1) / kPieces));
+        m_points.push_back(shown(from + (to - from) * (double(i) / kPieces)));
+        m_points.push_back(shown(from + (to - from) * (double(i + 1) / kPieces)));
         const auto last = static_cast<std::uint32_t>(m_points.size() - 1);
         m_segments.push_back({last - 1, last, m_record, m_tool, PathSegmentKind::Error});
     }
-    m_points.back() = to;
+    m_points.back() = shown(to);
     m_position = to;
     m_positionStored = true;
 }
@@ -164,7 +176,7 @@ void ToolpathPolylines::toolAxisAt(const Vec3& axis)
     if (length < 1e-12)
         return;
     const std::uint32_t from = currentIndex();
-    m_points.push_back(m_position + axis * (kToolAxisLengthMm / length));
+    m_points.push_back(shown(m_position + axis * (kToolAxisLengthMm / length)));
     m_segments.push_back(
         {from, static_cast<std::uint32_t>(m_points.size() - 1), m_record, m_tool, PathSegmentKind::ToolAxis});
     m_positionStored = false;  // m_points.back() is the axis' end, not the tip

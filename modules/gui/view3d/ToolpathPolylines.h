@@ -89,6 +89,7 @@ public:
     void sectionEnd(const toolpath::SectionEnd&) override {}
     void programStop(const toolpath::ProgramStop&) override {}
     void passThrough(const toolpath::PassThrough&) override {}
+    void workingPlane(const toolpath::WorkingPlane&) override;
 
 private:
     void lineTo(const base::Vec3& to, PathSegmentKind kind);
@@ -96,6 +97,7 @@ private:
     void straightTo(const base::Vec3& to, toolpath::AxisMask axes, PathSegmentKind kind);
     void toolAxisAt(const base::Vec3& axis);
     std::uint32_t currentIndex();
+    base::Vec3 shown(const base::Vec3& p) const { return m_tilted ? m_plane.toWorkpiece(p) : p; }
 
     double m_chordToleranceMm;
     std::vector<base::Vec3> m_points;
@@ -108,6 +110,8 @@ private:
     std::int32_t m_tool = 0;
     bool m_inError = false;
     int m_toolAxisMoves = 0;  // five-axis moves since the last other move
+    toolpath::WorkingPlane m_plane;  // the frame of the moves (3+2)
+    bool m_tilted = false;
 };
 
 }  // namespace camwb::gui

@@ -35,4 +35,7 @@ struct ModelData {
 // Curve kind, ends in the edge's parameter direction, length (ModelEdges.cpp).
 EdgeInfo describeEdge(const TopoDS_Edge& edge, int index);
 
+// Fills faces, edges, their infos and the bounds from data.shape (ModelLoad.cpp).
+void describeShape(ModelData& data);
+
 }  // namespace camwb::occ

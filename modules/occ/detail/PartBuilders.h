@@ -14,7 +14,10 @@
 #include <TopoDS_Edge.hxx>
 #include <gp_Ax2.hxx>
 
+#include "base/Result.h"
+
 #include <cmath>
+#include <functional>
 #include <string>
 
 namespace camwb::occ::parts {
@@ -50,3 +53,11 @@ inline TopoDS_Shape cut(const TopoDS_Shape& from, const TopoDS_Shape& tool, cons
 }
 
 }  // namespace camwb::occ::parts
+
+namespace camwb::occ::detail {
+
+// Builds the part and writes it as AP214 STEP in mm with a fixed header (name, time stamp), so
+// that regenerating gives the same file; written beside the target and renamed (ExamplePart.cpp).
+base::Status writeStep(const std::function<TopoDS_Shape()>& build, const char* name, const std::string& stepPath);
+
+}  // namespace camwb::occ::detail

@@ -39,7 +39,13 @@ enum class MoveValue {
     Comp,
     Sweep,
     Angle,
-    Axial
+    Axial,
+    A,  // five-axis blocks (rapid5D, linear5D): the machine's rotary axes by name ...
+    B,
+    C,
+    ToolX,  // ... and the tool axis in the workpiece frame (SINUMERIK's A3 B3 C3)
+    ToolY,
+    ToolZ
 };
 
 std::optional<MoveValue> moveValueFromName(const std::string& name);
@@ -59,7 +65,9 @@ struct MoveValues {
     int comp = 40;         // 40 off, 41 left, 42 right
     int feedKind = 0;      // toolpath::FeedKind: which of the operation's feeds the move uses
     bool helical = false;
-    toolpath::AxisMask known;  // end axes the kernel knows: the others get no word (never invented)
+    std::array<double, 3> rotaryDeg{};  // A, B, C of a five-axis block
+    toolpath::Vec3 toolAxis;            // of a five-axis block
+    toolpath::AxisMask known;           // end axes the kernel knows: the others get no word (never invented)
 
     double value(MoveValue which) const;
 };
@@ -116,6 +124,8 @@ using ArcBlocks = std::vector<BlockTemplate>;
 struct BlockTemplates {
     std::optional<BlockTemplate> rapid;
     std::optional<BlockTemplate> linear;
+    std::optional<BlockTemplate> rapid5D;  // five-axis moves (FiveAxisWriter): x y z, a b c, toolx..
+    std::optional<BlockTemplate> linear5D;
     std::array<ArcBlocks, 3> circular;   // XY, ZX, YZ; empty: none
     std::array<ArcBlocks, 3> helix;      // helical pieces, when they take other words (CP IPA IZ)
     std::vector<PendingObject*> before;  // one-shot blocks written before the next move's blocks
@@ -147,7 +157,7 @@ struct BlockTemplates {
     // Calls fn for every template block: rapid, linear, every arc and helix block.
     template <typename Fn> void forEach(Fn fn)
     {
-        for (std::optional<BlockTemplate>* block : {&rapid, &linear})
+        for (std::optional<BlockTemplate>* block : {&rapid, &linear, &rapid5D, &linear5D})
             if (*block)
                 fn(**block);
         for (auto* planes : {&circular, &helix})

@@ -14,6 +14,7 @@
 #include <QObject>
 #include <QString>
 
+#include <array>
 #include <cmath>
 #include <functional>
 #include <optional>
@@ -188,6 +189,14 @@ public:
         m_machiningTime = std::move(estimate);
         m_machiningSeconds.reset();
     }
+    // Five-axis blocks (FiveAxisWriter): the axes X Y Z A B C (bits 0..5 of `mask`) as written.
+    void noteMachineAxes(const std::array<double, 6>& values, unsigned mask);
+    // {x: {min, max}, ..., c: {min, max}} of the axes five-axis blocks wrote (X Y Z as written:
+    // tips with TCPM, machine coordinates without), for travel reports; null before any.
+    Q_INVOKABLE QJSValue getFiveAxisTravel();
+    // The axes of the last five-axis block {x, y, z, a, b, c} (an axis it never wrote: absent);
+    // null before any, e.g. for the post that returns the rotaries home after a section.
+    Q_INVOKABLE QJSValue getMachinePose();
 
 private:
     QJSValue makeVariable(const QJSValue& spec, const QJSValue& format, bool acceptsText);
@@ -202,6 +211,8 @@ private:
     std::function<void(const toolpath::Vec3&)> m_expandCycle;
     std::function<double()> m_machiningTime;
     std::optional<double> m_machiningSeconds;
+    std::array<double, 6> m_axisMin{}, m_axisMax{}, m_axisLast{};
+    unsigned m_axesSeen = 0;
 };
 
 // Text of a script value for NC words: undefined and null are "", whole numbers without decimals,

@@ -4,6 +4,7 @@
 #pragma once
 
 #include "base/Result.h"
+#include "post/FiveAxisPlan.h"
 #include "post/PostProcessor.h"
 #include "post/ProgramSummary.h"
 #include "post/detail/BlockTemplates.h"
@@ -41,10 +42,22 @@ enum class Handler {
     SectionEnd,
     Stop,
     PassThrough,
+    WorkingPlane,
     Close,
+    FiveAxisBegin,
+    FiveAxisEnd,
     Count
 };
 const char* handlerName(Handler handler);
+// "1 arc", "3 arcs": a count with its noun, for the run's warnings.
+std::string counted(int count, const char* one, const char* many);
+
+// post.fiveAxis: how the kernel writes five-axis moves on a machine with a five-axis chain.
+struct FiveAxisDeclaration {
+    bool machineCoordinates = false;        // "machine": linear axes about the chain's origin (no TCPM); "tip"
+    FiveAxisFeed feed = FiveAxisFeed::Tip;  // "tip", "combined" (machine output), "inverse"
+    FiveAxisOptions options;
+};
 
 class ScriptRun {
 public:
@@ -69,6 +82,7 @@ public:
 
 private:
     friend class ScriptSink;
+    friend class FiveAxisWriter;
 
     // Calls `handler` when the post has it; false when the script failed (m_failure holds why).
     bool call(Handler handler, const QJSValueList& args);
@@ -77,6 +91,7 @@ private:
     void fail(const std::string& message);  // a kernel error about the current record
     std::string where() const;              // "CL record 12 Arc", or "" outside the records
     base::Status readDeclarations(const std::string& source, PostInfo& info);
+    base::Status readFiveAxis(const std::string& source);
 
     std::string m_postFile;
     std::string m_postId;
@@ -88,7 +103,9 @@ private:
     std::array<QJSValue, static_cast<int>(Handler::Count)> m_handlers;
     BlockTemplates m_templates;
     PostCapabilities m_capabilities;
-    long long m_recordIndex = -1;  // record being played, for messages
+    std::optional<kinematics::Machine> m_machine;
+    FiveAxisDeclaration m_fiveAxis;  // post.fiveAxis
+    long long m_recordIndex = -1;    // record being played, for messages
     const char* m_recordName = "";
     std::optional<base::Error> m_failure;
 };

@@ -18,15 +18,19 @@
 #include <QAbstractButton>
 #include <QApplication>
 #include <QCheckBox>
+#include <QComboBox>
 #include <QDoubleSpinBox>
 #include <QElapsedTimer>
 #include <QGuiApplication>
 #include <QLabel>
 #include <QListWidget>
 #include <QSignalSpy>
+#include <QSpinBox>
 #include <QTest>
 #include <QThreadPool>
 #include <QTimer>
+
+#include <cmath>
 
 using camwb::document::OperationKind;
 using camwb::gui::MainWindow;
@@ -359,6 +363,49 @@ private slots:
 
     // Pictures of each panel over the example job (kept in CAMWB_SHOTS_DIR when set); each must
     // show something.
+    // 3+2: the contour round the boss on an inclined face previews in that face's plane (the
+    // preview in the workpiece frame, nothing below the face), and flat it cannot be made.
+    void workingPlaneOfTheFiveAxisExample()
+    {
+        MainWindow window;
+        window.resize(1600, 1000);
+        window.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&window));
+        QSignalSpy posted(&window.workbench(), &Workbench::postFinished);
+        QVERIFY(window.openJob(QStringLiteral(CAMWB_FIVE_AXIS_JOB)));
+        QVERIFY(posted.wait(120000));
+        waitIdle(window);
+        const int index = indexOfKind(window, OperationKind::Contour);
+        QVERIFY(index >= 0);
+        OperationPanel* panel = openPanel(window, index);
+        QVERIFY(panel);
+        auto* mode = panel->findChild<QComboBox*>(QStringLiteral("planeMode"));
+        QVERIFY(mode);
+        QCOMPARE(mode->currentData().toInt(), int(camwb::document::WorkingPlaneSpec::Mode::Face));
+        QCOMPARE(panel->findChild<QSpinBox*>(QStringLiteral("planeFace"))->value(), 3);
+        const auto outcome = panel->preview().lastOutcome();
+        QVERIFY(outcome && outcome->ok);
+        // The -X face's normal; its plane is at 20 + 10 sqrt 3 along it.
+        const camwb::base::Vec3 n{-0.5, 0, std::sqrt(3.0) / 2};
+        const double face = 20 + 10 * std::sqrt(3.0);
+        double lowest = 1e9;
+        for (const camwb::base::Vec3& p : previewPoints(window))
+            lowest = std::min(lowest, n.dot(p));
+        QVERIFY2(std::abs(lowest - 37.3205) < 1e-6, qPrintable(QString::number(lowest, 'f', 6)));
+        QVERIFY(lowest > face - 1e-4);
+        saveShot(&window, QStringLiteral("panel-working-plane.png"));
+        {
+            QSignalSpy finished(&panel->preview(), &PreviewRunner::finished);
+            mode->setCurrentIndex(mode->findData(int(camwb::document::WorkingPlaneSpec::Mode::Flat)));
+            QVERIFY(waitPreview(finished));
+        }
+        QVERIFY(!panel->preview().lastOutcome()->ok);
+        QCOMPARE(panel->operation().plane.mode, camwb::document::WorkingPlaneSpec::Mode::Flat);
+        panel->reject();
+        QCOMPARE(window.workbench().job().operations[static_cast<std::size_t>(index)].plane.mode,
+                 camwb::document::WorkingPlaneSpec::Mode::Face);
+    }
+
     void panelScreenshots()
     {
         MainWindow window;

@@ -261,5 +261,34 @@ TEST(LimitCheck, RotaryPositionsAgainstTheirRangesAndTheChain)
                               "(CL record 1)");
 }
 
+// 3+2: a tilted plane needs a machine whose chain can tilt the tool so; the moves in it count in
+// the machine's axes through the pose that does.
+TEST(LimitCheck, TiltedWorkingPlanes)
+{
+    NullSink nowhere;
+    LimitCheck flat(smallMill(), nowhere);
+    flat.workingPlane(WorkingPlane{{0, 0, 0}, {1, 0, 0}, {0, -0.6, 0.8}});
+    flat.rapid(Rapid{{0, 0, 0}});
+    EXPECT_EQ(texts(flat.clDiagnostics()),
+              (std::vector<std::string>{"warning: a tilted working plane (3+2), but the Mill has no five-axis chain in "
+                                        "its machine file to tilt the tool (CL record 0)"}));
+
+    const Machine machine = mcvl1000();
+    LimitCheck tilted(machine, nowhere);
+    // The tool along -X: within B -120..+30 only the branch B -90 remains; about MRZP it turns
+    // the workpiece's X into the machine's Z.
+    tilted.workingPlane(WorkingPlane{{0, 0, 0}, {0, 0, 1}, {-1, 0, 0}});
+    tilted.rapid(Rapid{{0, 0, 400}});                                     // 400 along the tool axis: the workpiece's -X
+    tilted.rapid(Rapid{{0, 0, -400}});                                    // and +X: the machine's Z, 800 apart
+    tilted.workingPlane(WorkingPlane{{0, 0, 0}, {1, 0, 0}, {0, 0, -1}});  // upside down: no pose
+    const auto findings = texts(tilted.clDiagnostics());
+    ASSERT_EQ(findings.size(), 2u);
+    EXPECT_NE(findings[0].find("working plane with tool axis (0, 0, -1): no solution within the rotary limits"),
+              std::string::npos)
+        << findings[0];
+    EXPECT_EQ(findings[1], "warning: the program spans 800 mm in Z (-400 to 400); the MAS MCVL 1000 travels 660 mm "
+                           "(CL record 2)");
+}
+
 }  // namespace
 }  // namespace camwb::kinematics

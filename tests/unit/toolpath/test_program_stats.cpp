@@ -116,3 +116,23 @@ TEST(ProgramStats, CyclesExpandAndToolsSplit)
     EXPECT_NEAR(s.tools[1].totals.feedLengthMm, 10, 1e-9);
     EXPECT_NEAR(s.totals.feedLengthMm, 34, 1e-9);
 }
+
+// 3+2: moves in a tilted plane's frame count in the workpiece frame for the extents; lengths are
+// the same in any frame, and a move across the plane change starts where the last one ended.
+TEST(ProgramStats, ExtentsOfATiltedPlaneAreTheWorkpieces)
+{
+    tp::Toolpath p;
+    p.add(tp::Rapid{{0, 0, 50}});
+    // Turned 90 degrees about X: the frame's z is the workpiece's -Y, its y the workpiece's +Z.
+    p.add(tp::WorkingPlane{{0, 0, 0}, {1, 0, 0}, {0, -1, 0}});
+    p.add(tp::Rapid{{0, 50, 0}});  // the same point as before, in the new frame: no length
+    p.add(tp::Linear{{0, 50, 20}, 100});
+    p.add(tp::WorkingPlane{});
+    p.add(tp::Linear{{0, -20, 50}, 100});  // where the last move ended: no length either
+    const ProgramStats s = programStats(p);
+    EXPECT_NEAR(s.totals.rapidLengthMm, 0, 1e-12);
+    EXPECT_NEAR(s.totals.feedLengthMm, 20, 1e-12);
+    EXPECT_NEAR(s.totals.allExtents.min.y, -20, 1e-12);
+    EXPECT_NEAR(s.totals.allExtents.max.y, 0, 1e-12);
+    EXPECT_NEAR(s.totals.allExtents.max.z, 50, 1e-12);
+}

@@ -38,6 +38,7 @@ public:
     void sectionEnd(const SectionEnd&) override { calls.push_back("sectionEnd"); }
     void programStop(const ProgramStop&) override { calls.push_back("programStop"); }
     void passThrough(const PassThrough&) override { calls.push_back("passThrough"); }
+    void workingPlane(const WorkingPlane&) override { calls.push_back("workingPlane"); }
 };
 
 }  // namespace
@@ -127,14 +128,15 @@ TEST(Toolpath, PlayDispatchesEveryKindInOrder)
     add(Comment{});
     add(ProgramStop{});
     add(PassThrough{});
+    add(WorkingPlane{});
     add(SectionEnd{});
 
     RecordingSink sink;
     play(tp, sink);
-    const std::vector<std::string> expected{"begin",       "sectionBegin", "toolChange", "spindle",      "coolant",
-                                            "feedMode",    "workOffset",   "cutterComp", "rapid",        "linear",
-                                            "arc",         "dwell",        "cycle",      "toolAxisMove", "comment",
-                                            "programStop", "passThrough",  "sectionEnd", "end"};
+    const std::vector<std::string> expected{"begin",       "sectionBegin", "toolChange",   "spindle",      "coolant",
+                                            "feedMode",    "workOffset",   "cutterComp",   "rapid",        "linear",
+                                            "arc",         "dwell",        "cycle",        "toolAxisMove", "comment",
+                                            "programStop", "passThrough",  "workingPlane", "sectionEnd",   "end"};
     EXPECT_EQ(sink.calls, expected);
     ASSERT_EQ(sink.sources.size(), tp.size());
     for (std::size_t k = 0; k < sink.sources.size(); ++k) {

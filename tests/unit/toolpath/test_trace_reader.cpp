@@ -44,6 +44,9 @@ Toolpath everyRecord()
         Rapid{{0, 0, 50}},
         Rapid{{0, 0, 20}, AxisMask{AxisMask::kZ}},  // moves that give only some axes
         Linear{{4, -2, 0}, 300, AxisMask{AxisMask::kX | AxisMask::kY}},
+        WorkingPlane{{10, 0, 5}, {0.8, 0, -0.6}, {0.6, 0, 0.8}},  // 3+2, then back
+        Linear{{1, 1, 0}, 200},
+        WorkingPlane{},
     };
     for (const Record& record : records)
         t.add(record);
@@ -143,6 +146,8 @@ TEST(TraceReader, ErrorsNameLineAndColumn)
                       "  hole 1 1\n")
                   .toString(),
               "in.trace:2:11: expected a number at the end of the line");
+    EXPECT_EQ(failure("plane 0 0 0 x 1 0 0 z 0.6 0 0.8\n").toString(),
+              "in.trace:1:1: plane: the x and z axes must be unit vectors at right angles");
 }
 
 TEST(TraceReader, MovesThatGiveOnlySomeAxesNameThem)

@@ -37,7 +37,9 @@ std::vector<PostCase> postCases()
         if (!post.is_directory() || !fs::exists(post.path() / "tests"))
             continue;
         for (const auto& dir : fs::directory_iterator(post.path() / "tests")) {
-            if (!dir.is_directory())
+            // A case whose NC the interpreters cannot read back yet says why in `no-roundtrip`
+            // (the five-axis goldens until the Heidenhain interpreter runs M128 and B/C).
+            if (!dir.is_directory() || fs::exists(dir.path() / "no-roundtrip"))
                 continue;
             std::string name = post.path().filename().string() + "_" + dir.path().filename().string();
             std::replace_if(

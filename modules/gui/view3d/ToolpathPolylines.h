@@ -109,7 +109,7 @@ private:
     std::uint32_t m_record = 0;
     std::int32_t m_tool = 0;
     bool m_inError = false;
-    int m_toolAxisMoves = 0;  // five-axis moves since the last other move
+    int m_toolAxisMoves = 0;         // five-axis moves since the last other move
     toolpath::WorkingPlane m_plane;  // the frame of the moves (3+2)
     bool m_tilted = false;
 };

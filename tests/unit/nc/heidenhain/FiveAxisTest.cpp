@@ -215,7 +215,7 @@ TEST(HeidenhainFiveAxis, AfterM140MbMaxTheTableTurnsUntracedUntilEveryAxisIsGive
                               "10 L C+0 B+0 FMAX\n"
                               "11 L X+0 Y+0 FMAX\n");
     EXPECT_EQ(r.count(Severity::Error), 0u) << r.diagnostics()[0];
-    EXPECT_TRUE(r.has(Severity::Warning, 4, "Z is unknown until a block gives them again"));
+    EXPECT_TRUE(r.has(Severity::Warning, 4, "Z is unknown until a block gives it"));
     EXPECT_TRUE(r.has(Severity::Warning, 5, "while X, Y or Z is unknown is not traced"));
     const auto moves = r.all<ToolAxisMove>();
     ASSERT_EQ(moves.size(), 1u);  // block 7 only

@@ -1290,6 +1290,26 @@ CAM and post-processor workbench.</source>
         <source>none programmed (control default)</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <source>%1 (five-axis move)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 (3-axis move)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>none known (trace with a five-axis machine)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Tool axis</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Rotary axes</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>camwb::gui::NcDocument</name>
@@ -1385,7 +1405,11 @@ Save them first?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>Traced %1 as %2%3: %4 blocks, %5 lines, %6 arcs, %7 rapids, %8 cycles in %9 ms</source>
+        <source>, %1 five-axis moves</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Traced %1 as %2%3: %4 blocks, %5 lines, %6 arcs, %7 rapids, %8 cycles%9 in %10 ms</source>
         <translation type="unfinished"></translation>
     </message>
 </context>

@@ -39,6 +39,7 @@ public:
     bool has(int axis) const { return m_known.has(axis); }
     void give(toolpath::AxisMask axes) { m_known.bits |= axes.bits; }
     void forget() { m_known = kNoAxes; }
+    void forget(toolpath::AxisMask axes) { m_known.bits &= static_cast<unsigned char>(~axes.bits); }
 
     // The first axis a block cannot do without (0 X, 1 Y, 2 Z), or -1: one of `before` unknown
     // now, or one of `after` neither known now nor given in absolute terms by the block (`given`).

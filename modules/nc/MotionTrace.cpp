@@ -367,7 +367,21 @@ private:
     {
         begin(r.feedMmPerMin > 0 ? "linear5" : "rapid5");
         m_w.point("", "to", r.tip);
-        m_w.point("axis", "axis", r.axis);
+        // The tool vector (text "axis i j k", JSON "i" "j" "k") and the machine's rotary positions
+        // where the interpreter knows them (a b c).
+        if (m_w.isText()) {
+            m_w.point("axis", "", r.axis);
+        } else {
+            m_w.number("", "i", r.axis.x);
+            m_w.number("", "j", r.axis.y);
+            m_w.number("", "k", r.axis.z);
+        }
+        if (r.machine.has(RotaryAxes::kA))
+            m_w.number("a", "a", r.machine.aDeg);
+        if (r.machine.has(RotaryAxes::kB))
+            m_w.number("b", "b", r.machine.bDeg);
+        if (r.machine.has(RotaryAxes::kC))
+            m_w.number("c", "c", r.machine.cDeg);
         state(r.feedMmPerMin, r.feedMmPerMin > 0);
         m_state.position.set(r.tip);
     }

@@ -66,6 +66,8 @@ ToolpathStats statistics(const Toolpath& toolpath)
             ++stats.cycles;
         else if (std::holds_alternative<ToolChange>(record))
             ++stats.toolChanges;
+        else if (std::holds_alternative<ToolAxisMove>(record))
+            ++stats.fiveAxis;
     }
     return stats;
 }

@@ -31,6 +31,7 @@ private:
 // Counts by kind, for reports ("12 lines, 4 arcs").
 struct ToolpathStats {
     std::size_t rapids = 0, lines = 0, arcs = 0, helices = 0, cycles = 0, toolChanges = 0;
+    std::size_t fiveAxis = 0;  // ToolAxisMove, rapid or feed
 };
 ToolpathStats statistics(const Toolpath& toolpath);
 

@@ -9,6 +9,7 @@
 #include <initializer_list>
 #include <limits>
 #include <optional>
+#include <tuple>
 
 namespace camwb::toolpath {
 
@@ -346,6 +347,16 @@ base::Result<ClImport> readTrace(base::LineReader& lines, const std::string& fil
             m.axis = in.point();
             in.keyword("f");
             m.feedMmPerMin = in.number();
+            // Known rotary positions, each at most once, in the order a b c.
+            for (const auto& [key, bit, value] :
+                 {std::tuple{"a", RotaryAxes::kA, &m.machine.aDeg}, std::tuple{"b", RotaryAxes::kB, &m.machine.bDeg},
+                  std::tuple{"c", RotaryAxes::kC, &m.machine.cDeg}}) {
+                if (in.optionalKey({key}).empty())
+                    continue;
+                *value = in.number();
+                m.machine.known |= bit;
+            }
+            in.end("(after a five-axis move's feed: a A, b B, c C)");
             record = m;
         } else if (kind == "comp") {
             record = CutterComp{in.choice(kSides)};

@@ -97,7 +97,15 @@ void TraceWriter::cycle(const Cycle& r)
 
 void TraceWriter::toolAxisMove(const ToolAxisMove& r)
 {
-    m_out += "move5 " + point(r.tip) + " axis " + point(r.axis) + " f " + num(r.feedMmPerMin) + '\n';
+    m_out += "move5 " + point(r.tip) + " axis " + point(r.axis) + " f " + num(r.feedMmPerMin);
+    // The machine's rotary positions where the source knows them (NC read back through a machine).
+    if (r.machine.has(RotaryAxes::kA))
+        m_out += " a " + num(r.machine.aDeg);
+    if (r.machine.has(RotaryAxes::kB))
+        m_out += " b " + num(r.machine.bDeg);
+    if (r.machine.has(RotaryAxes::kC))
+        m_out += " c " + num(r.machine.cDeg);
+    m_out += '\n';
 }
 
 void TraceWriter::cutterComp(const CutterComp& r) { m_out += std::string("comp ") + name(r.side) + '\n'; }

@@ -61,17 +61,29 @@ bool leavesPlane(const ModalState& before, const toolpath::Arc& arc)
     return std::abs(n.dot(arc.to - before.position)) / length > 1e-6;
 }
 
+// A 3-axis move: the tool along +Z (the rotary axes, where known, stay as they were).
+void threeAxis(ModalState& state)
+{
+    state.toolAxis = {0, 0, 1};
+    state.fiveAxis = false;
+}
+
 }  // namespace
 
 void applyRecord(ModalState& state, const toolpath::Record& record)
 {
     std::visit(Overloaded{
-                   [&](const toolpath::Rapid& r) { moveStraight(state, r.to, r.axes); },
+                   [&](const toolpath::Rapid& r) {
+                       moveStraight(state, r.to, r.axes);
+                       threeAxis(state);
+                   },
                    [&](const toolpath::Linear& l) {
                        moveStraight(state, l.to, l.axes);
                        state.feed = l.feedMmPerMin;
+                       threeAxis(state);
                    },
                    [&](const toolpath::Arc& a) {
+                       threeAxis(state);
                        state.position = a.to;
                        state.hasPosition = true;
                        state.feed = a.feedMmPerMin;
@@ -81,6 +93,9 @@ void applyRecord(ModalState& state, const toolpath::Record& record)
                    [&](const toolpath::ToolAxisMove& m) {
                        state.position = m.tip;
                        state.hasPosition = true;
+                       state.toolAxis = m.axis;
+                       state.fiveAxis = true;
+                       state.rotaryAxes = m.machine;
                        if (m.feedMmPerMin > 0)
                            state.feed = m.feedMmPerMin;
                    },

@@ -31,6 +31,11 @@ struct ModalState {
     base::Vec3 position;
     bool hasArcNormal = false;
     base::Vec3 arcNormal{0, 0, 1};  // of the last arc: the plane the program was in then
+    // The tool axis in the workpiece frame (+Z for 3-axis moves) and the machine's rotary axes
+    // as the last five-axis move knew them (nc read back through a machine's kinematics).
+    base::Vec3 toolAxis{0, 0, 1};
+    bool fiveAxis = false;  // the last move was a five-axis move
+    toolpath::RotaryAxes rotaryAxes;
 };
 
 // Applies one record to a state (position after the move, tool, feed, ...).

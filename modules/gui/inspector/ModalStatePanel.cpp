@@ -4,21 +4,55 @@
 
 #include <QFormLayout>
 #include <QLabel>
+#include <QStringList>
 #include <QVBoxLayout>
 
+#include <cmath>
 #include <functional>
 
 namespace camwb::gui {
 
 namespace {
 
-QString mm(double value) { return QString::number(value, 'f', 3); }
+// Fixed decimals without a sign on a value that rounds to zero ("-0.000" reads as a position
+// on the other side).
+QString fixed(double value, int decimals)
+{
+    const double half = 0.5 * std::pow(10.0, -decimals);
+    return QString::number(std::abs(value) < half ? 0.0 : value, 'f', decimals);
+}
+
+QString mm(double value) { return fixed(value, 3); }
 
 QString position(const ModalState& state)
 {
     if (!state.hasPosition)
         return ModalStatePanel::tr("unknown (no move yet)");
     return QStringLiteral("X%1 Y%2 Z%3").arg(mm(state.position.x), mm(state.position.y), mm(state.position.z));
+}
+
+QString toolAxisText(const ModalState& state)
+{
+    const QString vector = QStringLiteral("I%1 J%2 K%3")
+                               .arg(fixed(state.toolAxis.x, 4), fixed(state.toolAxis.y, 4), fixed(state.toolAxis.z, 4));
+    return state.fiveAxis ? ModalStatePanel::tr("%1 (five-axis move)").arg(vector)
+                          : ModalStatePanel::tr("%1 (3-axis move)").arg(vector);
+}
+
+// The machine's rotary axes the interpreter read through the machine's kinematics.
+QString rotaryAxesText(const ModalState& state)
+{
+    const toolpath::RotaryAxes& r = state.rotaryAxes;
+    QStringList axes;
+    if (r.has(toolpath::RotaryAxes::kA))
+        axes << QStringLiteral("A%1").arg(mm(r.aDeg));
+    if (r.has(toolpath::RotaryAxes::kB))
+        axes << QStringLiteral("B%1").arg(mm(r.bDeg));
+    if (r.has(toolpath::RotaryAxes::kC))
+        axes << QStringLiteral("C%1").arg(mm(r.cDeg));
+    if (axes.isEmpty())
+        return ModalStatePanel::tr("none known (trace with a five-axis machine)");
+    return axes.join(QLatin1Char(' '));
 }
 
 // `word`: the program's own word for the feed mode (G94, F, FU ...), else the ISO one.
@@ -153,6 +187,8 @@ ModalStatePanel::ModalStatePanel(QWidget* parent) :
     addRow(QStringLiteral("distance"), tr("Abs/inc"));
     addRow(QStringLiteral("before"), tr("Before"));
     addRow(QStringLiteral("after"), tr("After"));
+    addRow(QStringLiteral("toolAxis"), tr("Tool axis"));
+    addRow(QStringLiteral("rotaryAxes"), tr("Rotary axes"));
     showMessage(tr("No NC program traced yet."));
 }
 
@@ -209,6 +245,8 @@ void ModalStatePanel::showState(const LineState& state, const NcTrace& trace)
     }
     set("before", position(state.before));
     set("after", position(state.after));
+    set("toolAxis", toolAxisText(state.after));
+    set("rotaryAxes", rotaryAxesText(state.after));
     showMessage(trace.result.completed || trace.result.diagnostics.empty()
                     ? QString()
                     : tr("%n diagnostic(s) in this program.", nullptr, int(trace.result.diagnostics.size())));

@@ -23,7 +23,8 @@ public:
     void showMessage(const QString& text);  // no trace yet, tracing, ...
 
     // The value shown for a row ("plane", "units", "distance", "compensation", "tool", "feed",
-    // "spindle", "coolant", "workOffset", "before", "after", "move", "block"), for tests.
+    // "spindle", "coolant", "workOffset", "before", "after", "move", "block", "toolAxis",
+    // "rotaryAxes"), for tests.
     QString value(const QString& row) const;
 
 private:

@@ -211,8 +211,9 @@ void NcInspector::reportDiagnostics(const NcTrace& trace)
     if (more > 0)
         emit message(Workbench::Severity::Warning, tr("%1: %2 more diagnostics not listed").arg(name).arg(more));
     const toolpath::ToolpathStats stats = toolpath::statistics(trace.program);
+    const QString fiveAxis = stats.fiveAxis > 0 ? tr(", %1 five-axis moves").arg(stats.fiveAxis) : QString();
     emit message(Workbench::Severity::Note,
-                 tr("Traced %1 as %2%3: %4 blocks, %5 lines, %6 arcs, %7 rapids, %8 cycles in %9 ms")
+                 tr("Traced %1 as %2%3: %4 blocks, %5 lines, %6 arcs, %7 rapids, %8 cycles%9 in %10 ms")
                      .arg(name, QString::fromLatin1(nc::dialectName(trace.dialect)),
                           trace.dialectGuessed ? tr(" (guessed)") : QString())
                      .arg(trace.result.blocksExecuted)
@@ -220,6 +221,7 @@ void NcInspector::reportDiagnostics(const NcTrace& trace)
                      .arg(stats.arcs + stats.helices)
                      .arg(stats.rapids)
                      .arg(stats.cycles)
+                     .arg(fiveAxis)
                      .arg(trace.interpretSeconds * 1e3, 0, 'f', trace.interpretSeconds < 0.01 ? 2 : 0));
 }
 

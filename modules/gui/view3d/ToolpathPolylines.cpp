@@ -147,9 +147,17 @@ void ToolpathPolylines::straightTo(const Vec3& to, toolpath::AxisMask axes, Path
         lineTo(*point, kind);
 }
 
-void ToolpathPolylines::rapid(const toolpath::Rapid& r) { straightTo(r.to, r.axes, PathSegmentKind::Rapid); }
+void ToolpathPolylines::rapid(const toolpath::Rapid& r)
+{
+    m_toolAxisMoves = 0;
+    straightTo(r.to, r.axes, PathSegmentKind::Rapid);
+}
 
-void ToolpathPolylines::linear(const toolpath::Linear& l) { straightTo(l.to, l.axes, PathSegmentKind::Feed); }
+void ToolpathPolylines::linear(const toolpath::Linear& l)
+{
+    m_toolAxisMoves = 0;
+    straightTo(l.to, l.axes, PathSegmentKind::Feed);
+}
 
 void ToolpathPolylines::toolAxisMove(const toolpath::ToolAxisMove& m)
 {
@@ -157,11 +165,27 @@ void ToolpathPolylines::toolAxisMove(const toolpath::ToolAxisMove& m)
         errorTo(m.tip);
     else
         lineTo(m.tip, m.feedMmPerMin > 0 ? PathSegmentKind::Feed : PathSegmentKind::Rapid);
+    if (m_hasPosition && m_toolAxisMoves++ % kToolAxisEvery == 0)
+        toolAxisAt(m.axis);
+}
+
+// A segment of its own from the tip along the axis: no run of the path continues from its end.
+void ToolpathPolylines::toolAxisAt(const Vec3& axis)
+{
+    const double length = axis.length();
+    if (length < 1e-12)
+        return;
+    const std::uint32_t from = currentIndex();
+    m_points.push_back(shown(m_position + axis * (kToolAxisLengthMm / length)));
+    m_segments.push_back(
+        {from, static_cast<std::uint32_t>(m_points.size() - 1), m_record, m_tool, PathSegmentKind::ToolAxis});
+    m_positionStored = false;  // m_points.back() is the axis' end, not the tip
 }
 
 // Start = the current position (toolpath/ArcGeometry.h says how helices and inconsistent radii go).
 void ToolpathPolylines::arc(const toolpath::Arc& a)
 {
+    m_toolAxisMoves = 0;
     if (m_inError) {
         errorTo(a.to);
         return;

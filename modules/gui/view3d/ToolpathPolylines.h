@@ -20,7 +20,9 @@ namespace camwb::gui {
 
 // Error: a dash of a record from a block with an error, drawn straight from where it starts to
 // where it ends instead of what it claims (an arc whose radii disagree would be a huge circle).
-enum class PathSegmentKind : std::uint8_t { Rapid, Feed, Arc, Error };
+// ToolAxis: no motion but the tool's axis at a five-axis move's tip, kToolAxisLengthMm long
+// towards the spindle, drawn at every kToolAxisEvery-th such move (and at the first of each run).
+enum class PathSegmentKind : std::uint8_t { Rapid, Feed, Arc, Error, ToolAxis };
 
 // One straight display segment between two entries of ToolpathPolylines::points(). `record` is
 // the index of the toolpath record that made it (the NC inspector links segments to lines with
@@ -63,6 +65,10 @@ public:
     // Segments of records [first, last] (segments are in record order): [begin, end) indices.
     std::pair<std::size_t, std::size_t> segmentsOfRecords(std::uint32_t first, std::uint32_t last) const;
 
+    // The tool axis along five-axis moves: its length and how often it is drawn.
+    static constexpr double kToolAxisLengthMm = 10;
+    static constexpr int kToolAxisEvery = 5;
+
     // Hard cap on the segments of one arc (huge helices with many turns).
     static constexpr int kMaxSegmentsPerArc = 200000;
 
@@ -89,6 +95,7 @@ private:
     void lineTo(const base::Vec3& to, PathSegmentKind kind);
     void errorTo(const base::Vec3& to);
     void straightTo(const base::Vec3& to, toolpath::AxisMask axes, PathSegmentKind kind);
+    void toolAxisAt(const base::Vec3& axis);
     std::uint32_t currentIndex();
     base::Vec3 shown(const base::Vec3& p) const { return m_tilted ? m_plane.toWorkpiece(p) : p; }
 
@@ -102,6 +109,7 @@ private:
     std::uint32_t m_record = 0;
     std::int32_t m_tool = 0;
     bool m_inError = false;
+    int m_toolAxisMoves = 0;         // five-axis moves since the last other move
     toolpath::WorkingPlane m_plane;  // the frame of the moves (3+2)
     bool m_tilted = false;
 };

@@ -175,9 +175,10 @@ std::size_t ToolpathScene::buildCells(const std::vector<std::size_t>& partOfSegm
             builder.rapid->InsertNextCell(static_cast<vtkIdType>(run.size()), run.data());
         } else {
             builder.cut->InsertNextCell(static_cast<vtkIdType>(run.size()), run.data());
-            builder.colors->InsertNextTypedTuple(first.kind == PathSegmentKind::Arc     ? kArcRgb
-                                                 : first.kind == PathSegmentKind::Error ? kErrorRgb
-                                                                                        : kFeedRgb);
+            builder.colors->InsertNextTypedTuple(first.kind == PathSegmentKind::Arc        ? kArcRgb
+                                                 : first.kind == PathSegmentKind::Error    ? kErrorRgb
+                                                 : first.kind == PathSegmentKind::ToolAxis ? kToolAxisRgb
+                                                                                           : kFeedRgb);
         }
         vertices += run.size();
         run.clear();

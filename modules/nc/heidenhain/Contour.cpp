@@ -135,10 +135,6 @@ void Machine::motionBlock(const Block& b)
     BlockWords w;
     if (!gather(b, w, false))
         return;
-    if (w.rotary)
-        warnOnce(kWarnRotary, b,
-                 "rotary and parallel axes (A, B, C, U, V, W) are traced once the five-axis machine model exists; "
-                 "their values are ignored");
     if (b.kind == BlockKind::Approach)
         warnOnce(kWarnApproach, b, "APPR/DEP are traced as straight moves to their end points");
     if (w.feed == BlockWords::FeedWord::PerTooth)
@@ -162,7 +158,9 @@ bool Machine::applyMotion(const Block& b, const BlockWords& w)
     const bool rapid = w.feed == BlockWords::FeedWord::Max;
     bool moved = false;
     AxisMask given;
-    if (!checkKnown(b, w, given)) {
+    RotaryTarget rotary;
+    bool traced = true;
+    if (!rotaryTarget(b, w, rotary) || !checkKnown(b, w, given) || !fiveAxisReady(b, rotary, given, traced)) {
         m_corner.nextPending = false;
         return false;
     }
@@ -174,10 +172,23 @@ bool Machine::applyMotion(const Block& b, const BlockWords& w)
         e = plan(b, w, m_pos, m_pole, m_tangents, false);
     }
     m_corner.nextPending = false;
+    if (e && e->type == Element::Type::None && rotary.changed) {
+        e->type = Element::Type::Line;  // the rotary axes alone move: the tool turns about its tip or with the table
+        e->end = e->start;
+    }
     if (e && e->type != Element::Type::None) {
+        if (!rotary.spatial)
+            m_five.setAngles(rotary.angles);
+        else if (!orientSpatial(b, e->end))
+            return false;
         if (e->type == Element::Type::Arc)
             m_lastDirection = e->clockwise ? -1 : 1;
         m_known.give(given);
+        if (!traced) {
+            m_pos = e->end;  // the axes the block gave; the others stay unknown
+            m_five.moveUntraced();
+            return false;
+        }
         if (m_known.complete())  // a corner is planned from known points only
             planCorner(*e, m_pc + 1);
         send(*e, rapid, m_feed);
@@ -199,7 +210,9 @@ void Machine::send(const Element& e, bool rapid, double feed)
         m_warned.set(kWarnZeroFeed);
         report(Severity::Warning, program().blocks[m_pc].line, 0, "feed motion with no feed programmed");
     }
-    if (e.type == Element::Type::Line) {
+    if (m_five.active() && m_five.fiveAxisMove()) {
+        sendFiveAxis(e, rapid, feed);
+    } else if (e.type == Element::Type::Line) {
         if (rapid)
             m_sink.rapid(Rapid{e.end, m_known.mask()});
         else

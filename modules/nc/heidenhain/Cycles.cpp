@@ -70,7 +70,7 @@ void Machine::cycleDef(const Block& b)
         }
         if (tilted)
             report(Severity::Warning, b.line, b.column,
-                   "CYCL DEF 19: the tilted working plane is traced once the five-axis machine model exists; "
+                   "CYCL DEF 19: the tilted working plane is not traced yet; "
                    "positions are traced untilted");
         return;
     }
@@ -192,6 +192,12 @@ void Machine::runCycle(const Block& b, Vec2 hole)
     }
     if (!traced(m_cycle.number))
         return;
+    if (m_five.active() && m_five.fiveAxisMove()) {
+        report(Severity::Error, b.line, b.column,
+               "a cycle called with the rotary axes turned is not traced (drill in a tilted working plane with "
+               "PLANE or CYCL DEF 19); nothing moves");
+        return;
+    }
     // The hole is where the tool is; the old cycles and 204/208 start from its Z, too.
     const bool fromZ = m_cycle.number < 200 || m_cycle.number == 204 || m_cycle.number == 208;
     if (!needKnown(b, fromZ ? AxisMask{} : kXyAxes, kNoAxes, kNoAxes, "the cycle call"))

@@ -27,7 +27,14 @@
 // - Inch programs read F in 1/10 inch/min, as the TNC does.
 // - "..." elisions warn and make the position unknown (no radius check on the next circle).
 // - M91/M92 positions are taken as workpiece coordinates; M140 MB MAX moves nothing.
-// - PLANE, CYCL DEF 19, M128, FUNCTION TCPM and A/B/C warn until the five-axis model exists.
+// - A/B/C words, M128 / FUNCTION TCPM (on at the block start) and M129 / FUNCTION RESET TCPM (off
+//   at the block end: iTNC 530 User's Manual, M128) run through the machine's kinematic chain
+//   (nc/FiveAxis.h; Rotary.cpp), without a five-axis machine they warn. M126 (until M127) turns an
+//   endless axis the shorter way; angles are traced continuous (C355 -> C5: C365). F after M128
+//   is the compensating moves' feed and is not traced. AXIS SPAT takes A, B, C as spatial angles
+//   (about X, then Y, then Z, as PLANE SPATIAL) from 0 at each FUNCTION TCPM; REFPNT ...-CENTER
+//   warns and traces X Y Z as the tip. M140 MB with the axes turned retracts along the tool axis.
+// - PLANE and CYCL DEF 19 warn: the tilted working plane is not traced yet.
 #include "nc/detail/Dialects.h"
 #include "nc/heidenhain/Machine.h"
 

@@ -45,7 +45,8 @@ Machine::Machine(const InterpretOptions& options, CutterCompensation& sink, Inte
     m_sink(sink),
     m_compensation(sink),
     m_result(result),
-    m_rep(result.diagnostics, options.maxDiagnostics, result.diagnosticsDropped)
+    m_rep(result.diagnostics, options.maxDiagnostics, result.diagnosticsDropped),
+    m_five(options.machine)
 {
     if (options.start)
         m_pos = *options.start;
@@ -270,15 +271,12 @@ void Machine::execute(const Block& b)
         if (!b.flag)
             report(Severity::Warning, b.line, b.column,
                    "PLANE " + std::string(b.name) +
-                       ": the tilted working plane is traced once the five-axis machine model exists; "
+                       ": the tilted working plane is not traced yet; "
                        "positions are traced untilted");
         return;
     case BlockKind::Function:
         if (equalsIgnoreCase(b.name, "TCPM")) {
-            if (!b.flag)
-                report(Severity::Warning, b.line, b.column,
-                       "FUNCTION TCPM: five-axis tool-tip motion is traced once the five-axis machine model exists; "
-                       "positions are traced as three-axis moves");
+            tcpmFunction(b);
         } else {
             report(Severity::Warning, b.line, b.column, "FUNCTION " + std::string(b.name) + " is not traced");
         }

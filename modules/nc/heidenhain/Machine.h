@@ -6,6 +6,7 @@
 
 #include "base/NumberFormat.h"
 #include "nc/CutterCompensation.h"
+#include "nc/FiveAxis.h"
 #include "nc/Interpreter.h"
 #include "nc/KnownAxes.h"
 #include "nc/ToolTable.h"
@@ -50,12 +51,18 @@ enum WarnKey : int {
     kWarnCalledEnd,
     kWarnRapidArc,
     kWarnZeroFeed,
+    kWarnParallelAxes,
+    kWarnNoChain,
+    kWarnCompTilted,
+    kWarnTcpmRefCenter,
+    kWarnTcpmFeed,
+    kWarnFiveAxisUnknown,
 };
 
 // The evaluated words of one block (values in program units, not yet scaled or shifted).
 struct BlockWords {
     std::array<std::optional<double>, 18> axes;  // Key::X .. Key::IW
-    std::optional<double> pr, pa, ipr, ipa, radius, len, angle, mb;
+    std::optional<double> pr, pa, ipr, ipa, radius, len, angle, mb, length, deltaLength;
     int direction = 0;  // +1 DR+, -1 DR-, 0 none
     int comp = -1;      // 0 R0, 1 RL, 2 RR
     enum class FeedWord { None, Value, Max, Auto, PerRev, PerTooth } feed = FeedWord::None;
@@ -177,6 +184,24 @@ private:
     bool needKnown(const Block& b, toolpath::AxisMask before, toolpath::AxisMask after, toolpath::AxisMask given,
                    const char* need);
 
+    // FiveAxis.cpp: rotary words, tool-tip control (M128/M129, FUNCTION TCPM), M126/M127, moves
+    // through the machine's kinematic chain.
+    struct RotaryTarget {
+        JointAngles angles;    // after the block
+        bool spatial = false;  // AXIS SPAT: the angles come from m_spatial once the tip is known
+        bool changed = false;  // the block turns a rotary axis
+    };
+    bool rotaryTarget(const Block& b, const BlockWords& w, RotaryTarget& target);
+    // False: an error, the block is not run. `traced` false: a five-axis move the trace cannot show
+    // (a linear axis is still unknown); the block runs without a record.
+    bool fiveAxisReady(const Block& b, const RotaryTarget& target, toolpath::AxisMask given, bool& traced);
+    bool orientSpatial(const Block& b, const Vec3& end);
+    void tcpmFunction(const Block& b);
+    void setTcpm(bool on);
+    void sendFiveAxis(const Element& e, bool rapid, double feed);
+    void retractAlongToolAxis(double distance);
+    void updateToolLength();
+
     // Cycles.cpp: CYCL DEF, CYCL CALL, M99/M89.
     void cycleDef(const Block& b);
     void datumSetting(const Block& b);
@@ -227,6 +252,11 @@ private:
     bool m_modalCycleCall = false;
     Corner m_corner;
     std::bitset<64> m_warned;
+    FiveAxisState m_five;
+    bool m_axisSpat = false;                       // FUNCTION TCPM AXIS SPAT in force
+    std::array<double, 3> m_spatial{0, 0, 0};      // its spatial angles A, B, C
+    std::unordered_map<int, double> m_toolLength;  // TOOL DEF L, mm
+    double m_deltaLength = 0;                      // DL of the last TOOL CALL, mm
     int m_cornerWarnedProgram = -1;
     std::size_t m_cornerWarnedBlock = 0;
 };

@@ -14,6 +14,7 @@ bool Machine::gather(const Block& b, BlockWords& w, bool quiet)
 {
     const Program& p = program();
     bool ok = true;
+    bool m128 = false;
     for (int i = 0; i < b.wordCount; ++i) {
         const Word& word = p.words[static_cast<std::size_t>(b.firstWord + i)];
         std::optional<double> v;
@@ -66,6 +67,12 @@ bool Machine::gather(const Block& b, BlockWords& w, bool quiet)
             w.comp = word.param;
             break;
         case Key::Feed:
+            if (m128) {
+                // M128 F: the feed of the compensating moves, not the block's (iTNC 530, M128).
+                if (!quiet)
+                    warnOnce(kWarnTcpmFeed, b, "M128 F (the feed of compensating moves) is not traced");
+                break;
+            }
             w.feed = BlockWords::FeedWord::Value;
             w.feedValue = *v;
             if (*v < 0 && !quiet) {
@@ -87,7 +94,14 @@ bool Machine::gather(const Block& b, BlockWords& w, bool quiet)
             w.feed = BlockWords::FeedWord::PerTooth;
             w.feedValue = *v;
             break;
+        case Key::Length:
+            w.length = v;
+            break;
+        case Key::DeltaLength:
+            w.deltaLength = v;
+            break;
         case Key::M:
+            m128 = m128 || word.param == 128;
             if (w.mCount < static_cast<int>(w.m.size())) {
                 if (w.mCount == 0)
                     w.mColumn = word.column;
@@ -201,10 +215,19 @@ void Machine::applySpindleAndCoolant(const Block& b, const BlockWords& w)
             spindleOn(false, b, w.mColumn);
             coolant(CoolantMode::Flood);
             break;
+        case 126:
+        case 127:
+            m_five.setShortestPath(w.m[static_cast<std::size_t>(i)] == 126);
+            break;
         case 128:
-            warnOnce(kWarnTcpm, b,
-                     "M128 (TCPM): five-axis tool-tip motion is traced once the five-axis machine model exists; "
-                     "positions are traced as three-axis moves");
+            if (m_five.active()) {
+                m_axisSpat = false;
+                setTcpm(true);
+            } else {
+                warnOnce(kWarnTcpm, b,
+                         "M128 (TCPM): tool-tip control needs a five-axis machine (--machine) to be traced; "
+                         "positions are traced as three-axis moves");
+            }
             break;
         case 91:
         case 92:
@@ -246,6 +269,13 @@ void Machine::applyStop(const Block& b, const BlockWords& w, bool moved)
         case 5:
             spindleOff();
             break;
+        case 129:
+            // M129 takes effect at the end of its block (iTNC 530 User's Manual, M128).
+            if (m_five.active()) {
+                m_axisSpat = false;
+                setTcpm(false);
+            }
+            break;
         case 9:
             coolant(CoolantMode::Off);
             break;
@@ -261,13 +291,21 @@ void Machine::applyStop(const Block& b, const BlockWords& w, bool moved)
             break;
         case 140:
             if (w.mb) {
-                if (needKnown(b, axisBit(2), kNoAxes, kNoAxes, "M140 MB (a retract from the current Z)")) {
+                if (m_five.active() && m_five.fiveAxisMove()) {
+                    retractAlongToolAxis(*w.mb * m_scale);
+                } else if (needKnown(b, axisBit(2), kNoAxes, kNoAxes, "M140 MB (a retract from the current Z)")) {
                     m_pos.z += *w.mb * m_scale;
                     m_sink.rapid(Rapid{m_pos, m_known.mask()});
                 }
             } else {
+                // Up the tool axis to the travel limit, which the trace does not know in the work
+                // offset's frame: Z (with the rotary axes turned, X Y Z) unknown until given again.
+                const bool turned = m_five.active() && m_five.fiveAxisMove();
+                m_known.forget(turned ? AxisMask{} : axisBit(2));
                 warnOnce(kWarnM140, b,
-                         "M140 MB MAX: the retract to the travel limit is not traced (no machine limits)");
+                         std::string("M140 MB MAX: the retract to the travel limit is not traced; ") +
+                             (turned ? "X, Y and Z are unknown until a block gives them"
+                                     : "Z is unknown until a block gives it"));
             }
             break;
         default:
@@ -292,6 +330,8 @@ void Machine::toolDef(const Block& b)
     }
     if (w.radius)
         m_toolRadius[static_cast<int>(*n)] = *w.radius * m_scale;
+    if (w.length)
+        m_toolLength[static_cast<int>(*n)] = *w.length * m_scale;
 }
 
 void Machine::toolCall(const Block& b)
@@ -322,6 +362,7 @@ void Machine::toolCall(const Block& b)
             if (const auto dr = eval(word.expr))
                 m_deltaRadius = *dr * m_scale;
     }
+    m_deltaLength = w.deltaLength ? *w.deltaLength * m_scale : 0;
     if (b.a != -2) {
         ToolChange change;
         if (b.a == -1) {
@@ -344,6 +385,7 @@ void Machine::toolCall(const Block& b)
         source(b);
         m_sink.toolChange(change);
     }
+    updateToolLength();
     if (speed) {
         if (*speed < 0 || *speed > 999999) {
             report(Severity::Error, b.line, b.column, "spindle speed out of range");

@@ -61,8 +61,7 @@ private:
         if (is("LP"))
             return motion(BlockKind::LinePolar, kAxes | kPolar | kComp | kFeed | kMisc);
         if (is("LN"))
-            return skipped("LN (vector five-axis line) is traced once the five-axis machine model exists",
-                           BlockKind::LineVector);
+            return skipped("LN (a line with surface normal and tool vectors) is not traced", BlockKind::LineVector);
         if (is("CC"))
             return motion(BlockKind::CircleCenter, kAxes | kPolar);
         if (is("C"))
@@ -148,6 +147,8 @@ private:
             b.kind = BlockKind::Function;
             b.flag = c.keyword("RESET");
             b.name = c.token();
+            if (!b.flag && equalsIgnoreCase(b.name, "TCPM"))
+                tcpmOptions();
             return;
         }
         if (is("TCH"))
@@ -161,6 +162,54 @@ private:
         c.reset(start);
         const int line = c.line(), column = c.column();
         fail(line, column, "unknown word '" + std::string(c.token()) + "'");
+    }
+
+    // FUNCTION TCPM F TCP|CONT AXIS POS|SPAT PATHCTRL AXIS|VECTOR [REFPNT TIP-TIP|TIP-CENTER|
+    // CENTER-CENTER] (iTNC 530 User's Manual, "FUNCTION TCPM"): the choices as TcpmOption bits in b.a.
+    void tcpmOptions()
+    {
+        Cursor& c = *m_c;
+        Block& b = *m_b;
+        struct Choice {
+            std::string_view word, first, second;
+            int secondBit;
+        };
+        static constexpr Choice kChoices[] = {
+            {"F", "TCP", "CONT", kTcpmFeedCont},
+            {"AXIS", "POS", "SPAT", kTcpmAxisSpat},
+            {"PATHCTRL", "AXIS", "VECTOR", kTcpmPathVector},
+        };
+        while (!c.atEnd()) {
+            const int line = c.line(), column = c.column();
+            const std::string_view word = c.token();
+            bool known = false;
+            for (const Choice& choice : kChoices) {
+                if (!equalsIgnoreCase(word, choice.word))
+                    continue;
+                known = true;
+                const int valueLine = c.line(), valueColumn = c.column();
+                const std::string_view value = c.token();
+                if (equalsIgnoreCase(value, choice.second))
+                    b.a |= choice.secondBit;
+                else if (!equalsIgnoreCase(value, choice.first))
+                    return fail(valueLine, valueColumn,
+                                std::string(choice.word) + " of FUNCTION TCPM is " + std::string(choice.first) +
+                                    " or " + std::string(choice.second) + ", not '" + std::string(value) + "'");
+            }
+            if (!known && equalsIgnoreCase(word, "REFPNT")) {
+                known = true;
+                const int valueLine = c.line(), valueColumn = c.column();
+                const std::string_view value = c.token();
+                if (equalsIgnoreCase(value, "TIP-CENTER") || equalsIgnoreCase(value, "CENTER-CENTER"))
+                    b.a |= kTcpmRefCenter;
+                else if (!equalsIgnoreCase(value, "TIP-TIP"))
+                    return fail(valueLine, valueColumn,
+                                "REFPNT of FUNCTION TCPM is TIP-TIP, TIP-CENTER or CENTER-CENTER, not '" +
+                                    std::string(value) + "'");
+            }
+            if (!known)
+                return fail(line, column, "unknown word '" + std::string(word) + "' in FUNCTION TCPM");
+        }
     }
 
     void motion(BlockKind kind, unsigned groups)

@@ -151,6 +151,15 @@ enum class BlockKind : std::uint8_t {
     Invalid,  // errors reported when parsed
 };
 
+// The choices of FUNCTION TCPM (Block::a); the iTNC's defaults F TCP, AXIS POS, PATHCTRL AXIS and
+// REFPNT TIP-TIP are 0.
+enum TcpmOption : int {
+    kTcpmFeedCont = 1,    // F CONT: the feed along the programmed path of the axes
+    kTcpmAxisSpat = 2,    // AXIS SPAT: A, B, C are spatial angles, not axis positions
+    kTcpmPathVector = 4,  // PATHCTRL VECTOR: the tool vector turns in the plane of start and end
+    kTcpmRefCenter = 8,   // REFPNT TIP-CENTER / CENTER-CENTER: X Y Z give the tool's centre
+};
+
 enum class Condition : std::uint8_t { Equal, NotEqual, Greater, Less };
 
 struct Block {

@@ -16,4 +16,5 @@ set(NC_PART_SOURCES
     MachineFunctions.cpp
     Contour.cpp
     Circles.cpp
-    Cycles.cpp)
+    Cycles.cpp
+    Rotary.cpp)

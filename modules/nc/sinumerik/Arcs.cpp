@@ -123,6 +123,8 @@ bool Machine::arc(const Program& p, const Vec3& to, bool clockwise, const ArcWor
     a.turns = words.turn;
     a.feedMmPerMin = m_feed;
     setSource(line);
+    if (m_five.active() && m_five.fiveAxisMove())
+        a = m_five.arcInWorkpiece(a);  // the axes move on the circle, the table turned (TRAFOOF)
     m_sink.arc(a);
     m_pos = end;
     return true;

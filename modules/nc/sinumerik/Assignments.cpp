@@ -16,7 +16,12 @@ bool Parser::parseAddressValue(Block& block, WordKind kind, std::uint8_t index, 
     if (allowMode && peekIs(Tok::Name) && peekIs(Tok::LParen, 1)) {
         const std::string fn = upper(peek()->text);
         if (fn == "AC" || fn == "IC" || fn == "DC" || fn == "ACP" || fn == "ACN") {
-            w.mode = fn == "IC" ? ValueMode::Incremental : ValueMode::Absolute;
+            const bool rotary = kind == WordKind::Axis && index >= 3;
+            w.mode = fn == "IC"              ? ValueMode::Incremental
+                     : rotary && fn == "DC"  ? ValueMode::Shortest
+                     : rotary && fn == "ACP" ? ValueMode::Positive
+                     : rotary && fn == "ACN" ? ValueMode::Negative
+                                             : ValueMode::Absolute;
             const Pos open = posOf(*peek(1));
             m_pos += 2;
             w.expr = parseExpr();
@@ -102,8 +107,10 @@ bool Parser::parseAssignment(Block& block, const Token& t, const std::string& u)
         addWord(block, WordKind::Assign, pos) = w;
         return true;
     }
-    if (isPassiveKeyword(u) || u == "A3" || u == "B3" || u == "C3" || u == "A2" || u == "B2" || u == "C2" ||
-        u == "LEAD" || u == "TILT" || u == "THETA" || u == "SF" || u == "OVR") {
+    if (u == "A3" || u == "B3" || u == "C3")
+        return parseAddressValue(block, WordKind::ToolVector, static_cast<std::uint8_t>(u[0] - 'A'), t, false);
+    if (isPassiveKeyword(u) || u == "A2" || u == "B2" || u == "C2" || u == "LEAD" || u == "TILT" || u == "THETA" ||
+        u == "SF" || u == "OVR") {
         const std::int32_t e = parseExpr();
         if (e < 0)
             return false;

@@ -149,6 +149,7 @@ bool Machine::executeNormal(const Program& p, const Block& b)
     applyCoolant(w);
     applyCompensation(w);
     applyDwell(p, w);
+    applyTransformation(p, w);
     const bool moved = applyMotion(p, w);
     applyCalls(p, b, w, moved);
     return applyStop(p, b, w);
@@ -227,6 +228,8 @@ void Machine::applyToolChange(const BlockWords& w)
     ToolChange tc;
     tc.tool.number = m_tool;
     tc.tool.name = m_toolName;
+    const ToolTableEntry* entry = m_options.toolTable ? m_options.toolTable->find(m_tool) : nullptr;
+    m_five.setToolLength(entry ? std::optional<double>(entry->lengthMm) : std::nullopt);
     setSource(w.line);
     m_sink.toolChange(tc);
 }
@@ -416,23 +419,34 @@ bool Machine::applyMotion(const Program& p, const BlockWords& w)
     if (w.motion >= 0 && !w.dwell)
         m_modal.motion = w.motion;
     const bool anyLinearAxis = w.axis[0] || w.axis[1] || w.axis[2];
-    if (w.axis[3] || w.axis[4] || w.axis[5])
-        warning(p, {line, 0}, "rotary axes A B C are not traced until the five-axis machine model exists");
+    RotaryMove rotary;
+    if (!rotaryTarget(p, w, rotary))
+        return false;
     const ArcWords& arcWords = w.arc;
     const bool arcWordsGiven = arcWords.centre[0] || arcWords.centre[1] || arcWords.centre[2] || arcWords.cr ||
                                arcWords.ar || arcWords.turn > 0;
-    if (w.dwell || !(anyLinearAxis || (arcWordsGiven && m_modal.motion >= 2))) {
+    if (w.dwell || !(anyLinearAxis || rotary.moves || (arcWordsGiven && m_modal.motion >= 2))) {
         if (arcWordsGiven && !w.dwell)
             warning(p, {line, 0}, "arc words without G2/G3: ignored");
         return false;
     }
     AxisMask given;
-    if (!checkKnown(p, w, given))
+    bool traced = true;
+    if (!checkKnown(p, w, given) || !fiveAxisReady(p, w, rotary, given, traced))
         return false;
     const Vec3 target = blockTarget(w);
+    if (!turnTo(p, w, rotary, target))
+        return false;
     const int m = m_modal.motion;
     if (m < 2)
         m_known.give(given);
+    if (!traced) {
+        m_pos = target;  // the axes the block gave; the others stay unknown
+        m_five.moveUntraced();
+        return false;
+    }
+    if (m < 2 && m_five.active() && m_five.fiveAxisMove())
+        return moveFiveAxis(p, w, target);
     if (m == 0) {
         const bool mcallPositioning = m_modalCall && m_modalCall->cycle > 0 && !w.callWord &&
                                       m_modalCall->level == m_stack.size() && target.z == m_pos.z &&

@@ -81,14 +81,19 @@ bool Machine::readKeyword(const Program& p, const Block& b, const Word& word, Bl
         m_known.give(axisBit(1));
         break;
     case Keyword::TraOri:
-        warning(p, word.pos,
-                "TRAORI (five-axis transformation) is recognised; its motion is traced once the "
-                "five-axis machine model exists: positions are traced as programmed");
+        if (!m_five.active())
+            warning(p, word.pos,
+                    "TRAORI (five-axis transformation) needs a five-axis machine (--machine) to be traced: "
+                    "positions are traced as programmed");
+        w.transform = 1;
+        break;
+    case Keyword::TraFoof:
+        w.transform = 0;
         break;
     case Keyword::Cycle800:
         warning(p, word.pos,
-                "CYCLE800 (swivel plane) is recognised; five-axis motion is traced once the "
-                "five-axis machine model exists: positions are traced in the unswivelled frame");
+                "CYCLE800 (swivel plane) is recognised; the swivelled plane is not traced yet: positions "
+                "are traced in the unswivelled frame");
         break;
     case Keyword::Frame:
         warning(p, word.pos,
@@ -130,6 +135,14 @@ bool Machine::readWords(const Program& p, const Block& b, BlockWords& w)
         case WordKind::Axis:
             readPosition(p, word, w.axis[word.index], w.axisMode[word.index]);
             w.axisPos[word.index] = word.pos;
+            break;
+        case WordKind::ToolVector:
+            if (const auto v = wordValue(p, word)) {
+                w.toolVector[word.index] = v;
+                w.toolVectorPos = word.pos;
+            } else {
+                m_evalFailed = true;
+            }
             break;
         case WordKind::Centre:
             readPosition(p, word, w.arc.centre[word.index], w.arc.centreMode[word.index]);

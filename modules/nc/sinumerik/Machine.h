@@ -4,6 +4,7 @@
 #pragma once
 
 #include "nc/CutterCompensation.h"
+#include "nc/FiveAxis.h"
 #include "nc/Interpreter.h"
 #include "nc/KnownAxes.h"
 #include "nc/ToolTable.h"
@@ -34,6 +35,7 @@ struct Modal {
     bool diameter = false;              // DIAMON: X is a diameter
     toolpath::CutterCompSide comp = toolpath::CutterCompSide::Off;
     int workOffset = -1;  // not yet programmed
+    bool traori = false;  // TRAORI: X Y Z the tool tip in the workpiece frame (a five-axis machine only)
 };
 
 // A modal call (MCALL): a cycle with its arguments evaluated when it was set, or a subprogram.
@@ -61,7 +63,8 @@ public:
         m_options(options),
         m_sink(sink),
         m_compensation(sink),
-        m_result(result)
+        m_result(result),
+        m_five(options.machine)
     {
         if (options.start)
             m_pos = *options.start;
@@ -115,8 +118,27 @@ private:
         std::optional<double> feed, speed, lims, tool, edge;
         int m[8];
         int mCount = 0;
-        const Word* callWord = nullptr;  // the block's cycle or subprogram call
+        const Word* callWord = nullptr;                     // the block's cycle or subprogram call
+        std::array<std::optional<double>, 3> toolVector{};  // A3 B3 C3
+        Pos toolVectorPos;
+        int transform = -1;  // 1 TRAORI, 0 TRAFOOF
     };
+    // Rotary.cpp: rotary words, TRAORI/TRAFOOF and A3/B3/C3 through the machine's kinematic chain.
+    struct RotaryMove {
+        JointAngles angles;   // after the block
+        bool vector = false;  // A3/B3/C3: the angles come from the tool vector once the tip is known
+        Vec3 axis;
+        bool moves = false;  // the block turns the tool or the table in a way the trace shows
+    };
+    bool rotaryTarget(const Program& p, const BlockWords& w, RotaryMove& r);
+    bool toolVector(const Program& p, const BlockWords& w, RotaryMove& r);
+    // False: an error, the block is left out. `traced` false: a five-axis move the trace cannot
+    // show (a linear axis is still unknown); the block runs without a record.
+    bool fiveAxisReady(const Program& p, const BlockWords& w, const RotaryMove& r, toolpath::AxisMask given,
+                       bool& traced);
+    bool turnTo(const Program& p, const BlockWords& w, const RotaryMove& r, const Vec3& target);
+    bool moveFiveAxis(const Program& p, const BlockWords& w, const Vec3& target);
+    void applyTransformation(const Program& p, const BlockWords& w);
     bool executeNormal(const Program& p, const Block& block);
     bool readWords(const Program& p, const Block& block, BlockWords& w);
     void readG(const Program& p, const Word& word, BlockWords& w);
@@ -201,6 +223,7 @@ private:
     std::string m_toolName;
     std::optional<ModalCall> m_modalCall;
     bool m_fiveAxisWarned = false;
+    FiveAxisState m_five;
     int m_currentFile = 0;
     int m_currentLine = 0;
 };

@@ -92,16 +92,19 @@ enum class WordKind : std::uint8_t {
     Ar,
     Turn,
     Lims,
-    TName,    // T="name": text in the block's text
-    Assign,   // target: R (index, or indirect expr2), local slot (+ element expr2)
-    Keyword,  // code = Keyword enum value
-    Cycle,    // CYCLE8x(args): code = cycle number, args in the block's argument list
-    Call,     // subprogram by name (block name), args in the argument list
-    Msg,      // MSG("text") / MSG()
-    Passive,  // recognised, no effect on the trace (G64, SOFT, CYCLE832(...), ...)
+    TName,       // T="name": text in the block's text
+    Assign,      // target: R (index, or indirect expr2), local slot (+ element expr2)
+    Keyword,     // code = Keyword enum value
+    Cycle,       // CYCLE8x(args): code = cycle number, args in the block's argument list
+    Call,        // subprogram by name (block name), args in the argument list
+    Msg,         // MSG("text") / MSG()
+    Passive,     // recognised, no effect on the trace (G64, SOFT, CYCLE832(...), ...)
+    ToolVector,  // A3= B3= C3= (index 0..2): the tool's direction under TRAORI
 };
 
-enum class ValueMode : std::uint8_t { Modal, Absolute, Incremental };  // X=AC(..) / X=IC(..)
+// X=AC(..) / X=IC(..); a rotary axis also B=DC(..) (the shorter way), ACP(..) / ACN(..) (turning in
+// the positive / negative sense only).
+enum class ValueMode : std::uint8_t { Modal, Absolute, Incremental, Shortest, Positive, Negative };
 
 enum class Keyword : std::uint8_t { DiamOn, DiamOf, TraOri, TraFoof, Cycle800, Frame, Ret, SetAl, Stopre };
 

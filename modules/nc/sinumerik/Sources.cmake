@@ -12,4 +12,5 @@ set(NC_PART_SOURCES
     Execute.cpp
     ExecuteWords.cpp
     Arcs.cpp
-    Cycles.cpp)
+    Cycles.cpp
+    Rotary.cpp)

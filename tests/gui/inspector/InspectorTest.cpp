@@ -20,6 +20,7 @@
 #include <QTemporaryDir>
 #include <QTest>
 
+#include <cmath>
 #include <map>
 #include <set>
 
@@ -331,6 +332,54 @@ private slots:
         rig.inspector.setMachine(nullptr);
         LOAD_OR_FAIL(rig, QString::fromLatin1(kProgram));
         QVERIFY(rig.inspector.trace()->result.diagnostics.empty());
+    }
+
+    // Five-axis Klartext on a B/C table machine: the panel shows the tool vector and the machine's
+    // rotary axes at the cursor, the view the tool axis along the path (seed 000: B30 C40 gives
+    // K = (-0.3830, 0.3214, 0.8660)).
+    void fiveAxisMovesShowTheToolAxisAndTheRotaryAxes()
+    {
+        auto machine = std::make_shared<camwb::kinematics::Machine>();
+        machine->id = "bc";
+        machine->name = "B/C table";
+        machine->axes = {{"X", false, -500, 500},
+                         {"Y", false, -500, 500},
+                         {"Z", false, -500, 500},
+                         {"B", true, -120, 30},
+                         {"C", true, -INFINITY, INFINITY, true}};
+        machine->kinematics.type = camwb::kinematics::ChainType::TableTable;
+        machine->kinematics.joints = {{"B", true, {0, 1, 0}, {}}, {"C", true, {0, 0, 1}, {}}};
+        Rig rig;
+        rig.inspector.setDialect(camwb::nc::Dialect::Heidenhain);
+        rig.inspector.setMachine(machine);
+        LOAD_OR_FAIL(rig, QStringLiteral("0 BEGIN PGM FIVE MM\n"                    // 1
+                                         "1 TOOL CALL 1 Z S1000\n"                  // 2
+                                         "2 L X+0 Y+0 Z+50 R0 FMAX M3\n"            // 3
+                                         "3 L X+10 Y+20 Z+5 B+30 C+40 F500 M128\n"  // 4
+                                         "4 L X+20 C+60\n"                          // 5
+                                         "5 L Z+50 B+0 C+0 FMAX M129\n"             // 6
+                                         "6 END PGM FIVE MM\n"));                   // 7
+        auto value = [&rig](const char* row) { return rig.panel.value(QLatin1String(row)); };
+        rig.editor.gotoLine(4);
+        QCOMPARE(value("move"), QStringLiteral("5-axis linear"));
+        QCOMPARE(value("toolAxis"), QStringLiteral("I-0.3830 J0.3214 K0.8660 (five-axis move)"));
+        QCOMPARE(value("rotaryAxes"), QStringLiteral("B30.000 C40.000"));
+        QCOMPARE(value("after"), QStringLiteral("X10.000 Y20.000 Z5.000"));
+        rig.editor.gotoLine(3);
+        QVERIFY2(value("toolAxis").contains(QLatin1String("3-axis")), qPrintable(value("toolAxis")));
+        QVERIFY2(value("rotaryAxes").startsWith(QLatin1String("none known")), qPrintable(value("rotaryAxes")));
+        // The tool axis is drawn at the first five-axis move of the run, from the tip to the spindle.
+        const ToolpathPolylines* lines = rig.view.toolpathPolylines();
+        QVERIFY(lines != nullptr);
+        QCOMPARE(lines->segmentCount(PathSegmentKind::ToolAxis), std::size_t(1));
+        for (const PathSegment& s : lines->segments()) {
+            if (s.kind != PathSegmentKind::ToolAxis)
+                continue;
+            const camwb::base::Vec3 tip = lines->points()[s.from], end = lines->points()[s.to];
+            QCOMPARE(rig.inspector.trace()->lineOfRecord(s.record), 4);
+            QVERIFY(std::abs(tip.x - 10) < 1e-9 && std::abs(tip.y - 20) < 1e-9 && std::abs(tip.z - 5) < 1e-9);
+            QVERIFY(std::abs((end.z - tip.z) / ToolpathPolylines::kToolAxisLengthMm - 0.8660254) < 1e-6);
+        }
     }
 
     // G41 with the tool's size from the tool table the main window passes (the job's tools): the

@@ -18,6 +18,7 @@
 #include "gui/tasks/OperationPanel.h"
 #include "gui/view3d/ToolpathPolylines.h"
 #include "gui/view3d/View3D.h"
+#include "kinematics/Machine.h"
 
 #include <QAction>
 #include <QApplication>
@@ -506,6 +507,42 @@ private slots:
         }
         QTest::qWait(300);
         saveShot(&window, QStringLiteral("posted-job.png"));
+    }
+
+    // Five-axis Klartext read back through the MAS MCVL 1000's kinematics (its machine file): the
+    // tip on a circle with the tool tilted 20 degrees outwards, the tool axis drawn along the path,
+    // the panel with the tool vector and B/C at the cursor. The picture: heidenhain-five-axis.png.
+    void fiveAxisProgramShowsTheToolAxis()
+    {
+        auto machine = camwb::kinematics::findMachine("mas-mcvl1000", camwb::kinematics::defaultMachineDirs());
+        QVERIFY2(machine.ok(), machine.ok() ? "" : machine.error().message.c_str());
+        MainWindow window;
+        window.resize(1600, 1000);
+        window.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&window));
+        window.inspector()->setMachine(std::make_shared<camwb::kinematics::Machine>(machine.value()));
+        if (auto* inspectorPanel = window.findChild<camwb::gui::InspectorPanel*>())
+            inspectorPanel->setMachineName(QString::fromStdString(machine.value().name));
+        QVERIFY(window.openNcFile(QStringLiteral(CAMWB_SOURCE_DIR "/tests/data/nc/five-axis-cone.h")));
+        QVERIFY(waitForTrace(window));
+        QVERIFY2(!window.inspector()->trace()->result.hasErrors(),
+                 window.inspector()->trace()->result.diagnostics.empty()
+                     ? ""
+                     : window.inspector()->trace()->result.diagnostics.front().message.c_str());
+        const camwb::gui::ToolpathPolylines* lines = window.view()->toolpathPolylines();
+        QVERIFY(lines != nullptr);
+        QVERIFY(lines->segmentCount(camwb::gui::PathSegmentKind::ToolAxis) >=
+                std::size_t(72 / camwb::gui::ToolpathPolylines::kToolAxisEvery));
+        window.ncEditor()->gotoLine(10);  // L Z+0 F300: down with the tool tilted 20 degrees towards +X
+        QTest::qWait(300);
+        auto* panel = window.findChild<camwb::gui::ModalStatePanel*>();
+        QVERIFY(panel != nullptr);
+        QCOMPARE(panel->value(QStringLiteral("toolAxis")), QStringLiteral("I0.3420 J0.0000 K0.9397 (five-axis move)"));
+        QCOMPARE(panel->value(QStringLiteral("rotaryAxes")), QStringLiteral("B-20.000 C0.000"));
+        window.ncEditor()->gotoLine(17);  // the loop's five-axis block
+        window.view()->fitAll();
+        QTest::qWait(300);
+        saveShot(&window, QStringLiteral("heidenhain-five-axis.png"));
     }
 
     // Offscreen there is no OpenGL; under Xvfb CAMWB_NO_OPENGL=1 turns it off the same way.

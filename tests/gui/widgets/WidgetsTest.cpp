@@ -165,6 +165,33 @@ private slots:
         QVERIFY(pts.back() == Vec3(r, 0, 0));
     }
 
+    // Five-axis moves: the path joins their tips; the tool axis stands at the first of each run and
+    // at every kToolAxisEvery-th move after it, a segment of its own that no path run continues from.
+    void toolAxisAlongFiveAxisMoves()
+    {
+        ToolpathPolylines lines;
+        lines.rapid({{0, 0, 10}});
+        const Vec3 axis{0.6, 0, 0.8};
+        const int moves = 2 * ToolpathPolylines::kToolAxisEvery + 1;
+        for (int i = 1; i <= moves; ++i)
+            lines.toolAxisMove({{double(i), 0, 10}, axis, 100});
+        lines.linear({{0, 0, 10}, 100});
+        QCOMPARE(lines.segmentCount(PathSegmentKind::Feed), std::size_t(moves + 1));
+        QCOMPARE(lines.segmentCount(PathSegmentKind::ToolAxis), std::size_t(3));  // moves 1, 6 and 11
+        const auto& pts = lines.points();
+        Vec3 previousEnd{0, 0, 10};
+        for (const camwb::gui::PathSegment& s : lines.segments()) {
+            if (s.kind == PathSegmentKind::ToolAxis) {
+                const Vec3 d = pts[s.to] - pts[s.from];
+                QVERIFY((d - axis * ToolpathPolylines::kToolAxisLengthMm).length() < 1e-12);
+                continue;
+            }
+            QVERIFY((pts[s.from] - previousEnd).length() < 1e-12);  // the path stays connected
+            previousEnd = pts[s.to];
+        }
+        QVERIFY((previousEnd - Vec3{0, 0, 10}).length() < 1e-12);
+    }
+
     void clockwiseQuarter()
     {
         ToolpathPolylines lines(0.001);

@@ -188,3 +188,29 @@ TEST(TraceReader, ToolDataAndSectionFeedsRoundTrip)
     EXPECT_EQ(section.feeds.exitMmPerMin, 600);
     EXPECT_EQ(camwb::toolpath::traceOf(read->toolpath), text);
 }
+
+TEST(TraceReader, FiveAxisMovesCarryTheMachinesKnownRotaryAxes)
+{
+    ToolAxisMove move{{1, 2, 3}, {0, 0.6, 0.8}, 250};
+    move.machine.bDeg = -36.8699;
+    move.machine.cDeg = 365;
+    move.machine.known = RotaryAxes::kB | RotaryAxes::kC;
+    Toolpath t;
+    t.add(move);
+    t.add(ToolAxisMove{{1, 2, 4}, {0, 0, 1}, 0});
+    const std::string trace = traceOf(t);
+    EXPECT_EQ(trace, "move5 1.0000 2.0000 3.0000 axis 0.0000 0.6000 0.8000 f 250.0000 b -36.8699 c 365.0000\n"
+                     "move5 1.0000 2.0000 4.0000 axis 0.0000 0.0000 1.0000 f 0.0000\n");
+    auto read = readTrace(trace, "in.trace");
+    ASSERT_TRUE(read.ok()) << read.error().toString();
+    EXPECT_EQ(traceOf(read->toolpath), trace);
+    const auto& back = std::get<ToolAxisMove>(read->toolpath.record(0));
+    EXPECT_EQ(back.machine.known, RotaryAxes::kB | RotaryAxes::kC);
+    EXPECT_EQ(back.machine.cDeg, 365);
+    EXPECT_EQ(std::get<ToolAxisMove>(read->toolpath.record(1)).machine.known, 0);
+    // In the order a b c, each once.
+    EXPECT_EQ(failure("move5 1 2 3 axis 0 0 1 f 0 c 5 b 3\n").toString(),
+              "in.trace:1:32: unexpected 'b' (after a five-axis move's feed: a A, b B, c C)");
+    EXPECT_EQ(failure("move5 1 2 3 axis 0 0 1 f 0 b\n").toString(),
+              "in.trace:1:29: expected a number at the end of the line");
+}

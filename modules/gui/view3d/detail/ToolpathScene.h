@@ -82,6 +82,8 @@ inline constexpr unsigned char kFeedRgb[3]{25, 160, 55};
 inline constexpr unsigned char kArcRgb[3]{40, 95, 230};
 // Blocks with an error: magenta dashes, a colour no move has.
 inline constexpr unsigned char kErrorRgb[3]{225, 0, 200};
+// The tool axis along five-axis moves: orange, apart from the moves' colours.
+inline constexpr unsigned char kToolAxisRgb[3]{245, 140, 0};
 inline constexpr double kRapidColor[3]{0.90, 0.12, 0.10};
 inline constexpr double kHighlightColor[3]{1.0, 0.85, 0.0};
 

@@ -80,6 +80,26 @@ TEST(MotionTrace, MovesWhileAnAxisIsUnknownNameTheKnownAxes)
                                                "20.0000],\"spindle\":0.0000,\"spindleCw\":true,\"tool\":0}");
 }
 
+TEST(MotionTrace, FiveAxisMovesCarryTheToolVectorAndTheKnownRotaryAxes)
+{
+    Toolpath p;
+    ToolAxisMove move{{10, 20, 5}, {-0.383022, 0.321394, 0.866025}, 500};
+    move.machine.bDeg = 30;
+    move.machine.cDeg = 40;
+    move.machine.known = RotaryAxes::kB | RotaryAxes::kC;
+    p.add(move, at(3));
+    p.add(ToolAxisMove{{10, 20, 50}, {0, 0, 1}, 0}, at(4));  // no machine angles known: none written
+    EXPECT_EQ(
+        motionTrace(p, {"a.h"}, TraceFormat::Text),
+        "3 linear5 10.0000 20.0000 5.0000 axis -0.3830 0.3214 0.8660 b 30.0000 c 40.0000 f 500.0000 s 0.0000 t 0\n"
+        "4 rapid5 10.0000 20.0000 50.0000 axis 0.0000 0.0000 1.0000 s 0.0000 t 0\n");
+    const std::string json = motionTrace(p, {"a.h"}, TraceFormat::Jsonl);
+    EXPECT_EQ(json.substr(0, json.find('\n')),
+              "{\"file\":\"a.h\",\"line\":3,\"kind\":\"linear5\",\"to\":[10.0000,20.0000,5.0000],\"i\":-0.3830,"
+              "\"j\":0.3214,\"k\":0.8660,\"b\":30.0000,\"c\":40.0000,\"feed\":500.0000,\"feedMode\":\"perMinute\","
+              "\"spindle\":0.0000,\"spindleCw\":true,\"tool\":0}");
+}
+
 TEST(MotionTrace, EmptyProgramTracesNothing) { EXPECT_EQ(motionTrace(Toolpath{}, {"a.nc"}, TraceFormat::Text), ""); }
 
 // What MotionTraceWriter hands over, piece by piece.

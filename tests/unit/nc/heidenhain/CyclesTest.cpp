@@ -161,8 +161,8 @@ TEST(HeidenhainCycles, FiveAxisFunctionsWarnAndTraceThreeAxes)
                          "9 CYCL DEF 19.1 A+0 B+0 C+0\n"
                          "10 END PGM T MM\n");
     EXPECT_EQ(r.count(Severity::Error), 0u) << r.diagnostics()[0];
-    EXPECT_TRUE(r.has(Severity::Warning, 2, "five-axis machine model"));
-    EXPECT_TRUE(r.has(Severity::Warning, 4, "five-axis machine model"));
+    EXPECT_TRUE(r.has(Severity::Warning, 2, "tilted working plane is not traced yet"));
+    EXPECT_TRUE(r.has(Severity::Warning, 4, "tilted working plane is not traced yet"));
     EXPECT_TRUE(r.has(Severity::Warning, 5, "M128"));
     EXPECT_TRUE(r.has(Severity::Warning, 5, "rotary"));
     EXPECT_TRUE(r.has(Severity::Warning, 6, "FUNCTION TCPM"));

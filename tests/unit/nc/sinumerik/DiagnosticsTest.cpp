@@ -56,8 +56,8 @@ TEST(SinumerikDiagnostics, WarningsForWhatIsNotTraced)
 {
     const NcRun r = run("TRAORI\nG0 A10\nTRANS X10\nG53 G0 Z0\nG33 Z-10 K1\nTRAFOOF\nM30\n");
     EXPECT_EQ(r.errors(), 0) << r.diagnostics();
-    expectAt(r, "TRAORI (five-axis transformation) is recognised", 1, 1, Severity::Warning);
-    expectAt(r, "rotary axes A B C", 2, 0, Severity::Warning);
+    expectAt(r, "TRAORI (five-axis transformation) needs a five-axis machine", 1, 1, Severity::Warning);
+    expectAt(r, "rotary axes A B C", 2, 4, Severity::Warning);
     expectAt(r, "programmable frame TRANS X10 is not applied", 3, 1, Severity::Warning);
     expectAt(r, "G53/G153", 4, 0, Severity::Warning);
     expectAt(r, "G33 is not interpreted", 5, 1, Severity::Warning);

@@ -1,5 +1,5 @@
 0 BEGIN PGM FIVEAX MM
-1 ; five-axis functions are recognised; until the five-axis machine model exists the trace is three-axis
+1 ; five-axis functions without a machine (--machine) are recognised with warnings; the trace is three-axis
 2 TOOL CALL 1 Z S8000
 3 L Z+100 R0 FMAX M3
 4 PLANE SPATIAL SPA+0 SPB+45 SPC+0 TURN FMAX SEQ- TABLE ROT

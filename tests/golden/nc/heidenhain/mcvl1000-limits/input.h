@@ -1,7 +1,7 @@
 0 BEGIN PGM MCVL MM
 1 ; what the MAS MCVL 1000 (resources/machines/mas-mcvl1000.json) cannot do: 8000 rpm on its
 2 ; 7500 rpm spindle, a cut at 1.5 mm/min under its 2 mm/min, 13000 mm/min over its 12000,
-3 ; 1100 mm of X on its 1016 mm travel; the B and C words of its table are read, not checked yet
+3 ; 1100 mm of X on its 1016 mm travel. B-30 C+355 turn its table: without TCPM X Y Z stay the machine's axes and the tip moves in the turned part
 4 BLK FORM 0.1 Z X+0 Y+0 Z-20
 5 BLK FORM 0.2 X+1100 Y+100 Z+0
 6 TOOL CALL 1 Z S8000

@@ -1,0 +1,254 @@
+#include "nc/FiveAxis.h"
+
+#include <cmath>
+#include <numbers>
+
+namespace camwb::nc {
+
+using kinematics::MachinePose;
+using kinematics::ToolPose;
+using toolpath::Vec3;
+
+namespace {
+
+constexpr double kTurnedDeg = 1e-9;
+
+// The difference `d` in degrees as the shorter way round, in (-180, 180].
+double shorterWay(double d)
+{
+    d = std::fmod(d, 360.0);
+    if (d > 180)
+        d -= 360;
+    else if (d <= -180)
+        d += 360;
+    return d;
+}
+
+// How far from `from` to the angle `to` in the positive sense, in [0, 360).
+double positiveWay(double from, double to)
+{
+    double d = std::fmod(to - from, 360.0);
+    return d < 0 ? d + 360 : d;
+}
+
+Vec3 unit(const Vec3& v)
+{
+    const double l = v.length();
+    return l > 0 ? v * (1 / l) : v;
+}
+
+}  // namespace
+
+bool JointAngles::turned() const
+{
+    for (int i = 0; i < 2; ++i) {
+        if (known[static_cast<std::size_t>(i)] && std::abs(deg[static_cast<std::size_t>(i)]) > kTurnedDeg)
+            return true;
+    }
+    return false;
+}
+
+FiveAxisState::FiveAxisState(const kinematics::Machine* machine) : m_machine(machine)
+{
+    if (machine && machine->kinematics.fiveAxis())
+        m_chain = &machine->kinematics;
+}
+
+FiveAxisState::~FiveAxisState() = default;
+
+RotaryAxisUse FiveAxisState::use(char axis, int* joint) const
+{
+    if (!m_machine)
+        return RotaryAxisUse::NoMachine;
+    const std::string name(1, axis);
+    if (!m_machine->axis(name))
+        return RotaryAxisUse::Missing;
+    if (m_chain) {
+        for (std::size_t i = 0; i < m_chain->joints.size(); ++i) {
+            if (m_chain->joints[i].axis == name) {
+                if (joint)
+                    *joint = static_cast<int>(i);
+                return RotaryAxisUse::Traced;
+            }
+        }
+    }
+    return RotaryAxisUse::NoChain;
+}
+
+std::string FiveAxisState::useMessage(char axis, RotaryAxisUse use) const
+{
+    const std::string name(1, axis);
+    const std::string machine = m_machine ? (m_machine->name.empty() ? m_machine->id : m_machine->name) : "";
+    switch (use) {
+    case RotaryAxisUse::NoMachine:
+        return "rotary axis " + name + " without a machine (--machine) to read it through: its value is ignored";
+    case RotaryAxisUse::Missing:
+        return "the " + machine + " has no " + name + " axis";
+    case RotaryAxisUse::NoChain:
+        return "the machine file of the " + machine + " gives no five-axis kinematic chain for " + name +
+               ": its value is ignored";
+    case RotaryAxisUse::Traced:
+        break;
+    }
+    return {};
+}
+
+std::optional<double> FiveAxisState::angleFor(int joint, double value, RotaryMode mode) const
+{
+    const auto j = static_cast<std::size_t>(joint);
+    const bool known = m_angles.known[j];
+    const double from = m_angles.deg[j];
+    const kinematics::Axis* axis = m_machine ? m_machine->axis(m_chain->joints[j].axis) : nullptr;
+    const bool endless = axis && axis->endless;
+    switch (mode) {
+    case RotaryMode::Absolute:
+        // M126 turns an axis whose display is reduced to 0..360 the shorter way (iTNC 530 User's
+        // Manual, "Shorter-path traverse of rotary axes: M126"): C355 -> C5 is +10, traced as 365.
+        if (m_shortestPath && endless && known)
+            return from + shorterWay(value - from);
+        return value;
+    case RotaryMode::Incremental:
+        return known ? std::optional<double>(from + value) : std::nullopt;
+    case RotaryMode::Shortest:
+        return known ? from + shorterWay(value - from) : value;
+    case RotaryMode::Positive:
+        return known ? from + positiveWay(from, value) : value;
+    case RotaryMode::Negative:
+        return known ? from - positiveWay(value, from) : value;
+    }
+    return value;
+}
+
+bool FiveAxisState::needsToolLength() const
+{
+    if (!m_chain || m_tcpm)
+        return false;
+    for (const kinematics::RotaryJoint& j : m_chain->joints) {
+        if (!j.onTable)
+            return true;
+    }
+    return false;
+}
+
+MachinePose FiveAxisState::pose(const Vec3& linear) const
+{
+    MachinePose p;
+    p.linear = linear;
+    p.rotaryDeg = m_angles.deg;
+    return p;
+}
+
+void FiveAxisState::setTcpm(bool on, Vec3& programmed, bool linearKnown)
+{
+    if (on == m_tcpm)
+        return;
+    if (m_chain && m_angles.complete() && m_angles.turned() && linearKnown) {
+        // The tool stays; what the program calls its position changes frame.
+        const Vec3 tip = toolPose(programmed).tip;
+        m_tcpm = on;
+        programmed = programmedFor(tip);
+    }
+    m_tcpm = on;
+}
+
+Vec3 FiveAxisState::programmedFor(const Vec3& tip) const
+{
+    if (m_tcpm)
+        return tip;
+    return kinematics::linearAxesFor(*m_chain, tip, m_angles.deg, m_toolLength.value_or(0)) - m_chain->workpieceZero;
+}
+
+ToolPose FiveAxisState::toolPose(const Vec3& programmed) const
+{
+    const double length = m_toolLength.value_or(0);
+    if (m_tcpm) {
+        // The tip is programmed; the angles give the axis wherever the linear axes are.
+        ToolPose t = kinematics::forwardKinematics(*m_chain, pose(m_chain->workpieceZero), length);
+        t.tip = programmed;
+        return t;
+    }
+    return kinematics::forwardKinematics(*m_chain, pose(programmed + m_chain->workpieceZero), length);
+}
+
+toolpath::RotaryAxes FiveAxisState::machineAxes() const
+{
+    toolpath::RotaryAxes r;
+    if (!m_chain)
+        return r;
+    for (std::size_t i = 0; i < m_chain->joints.size() && i < 2; ++i) {
+        if (!m_angles.known[i] || m_chain->joints[i].axis.size() != 1)
+            continue;
+        const double deg = m_angles.deg[i];
+        switch (m_chain->joints[i].axis[0]) {
+        case 'A':
+            r.aDeg = deg;
+            r.known |= toolpath::RotaryAxes::kA;
+            break;
+        case 'B':
+            r.bDeg = deg;
+            r.known |= toolpath::RotaryAxes::kB;
+            break;
+        case 'C':
+            r.cDeg = deg;
+            r.known |= toolpath::RotaryAxes::kC;
+            break;
+        default:
+            break;
+        }
+    }
+    return r;
+}
+
+toolpath::ToolAxisMove FiveAxisState::move(const Vec3& programmed, double feedMmPerMin)
+{
+    const ToolPose t = toolPose(programmed);
+    toolpath::ToolAxisMove m;
+    m.tip = t.tip;
+    m.axis = unit(t.axis);
+    m.feedMmPerMin = feedMmPerMin;
+    m.machine = machineAxes();
+    m_lastSentTurned = m_angles.turned();
+    return m;
+}
+
+toolpath::Arc FiveAxisState::arcInWorkpiece(const toolpath::Arc& programmed)
+{
+    m_lastSentTurned = m_angles.turned();
+    if (m_tcpm || !m_chain)
+        return programmed;
+    toolpath::Arc a = programmed;
+    const Vec3 centre = toolPose(programmed.center).tip;
+    a.to = toolPose(programmed.to).tip;
+    a.center = centre;
+    a.normal = unit(toolPose(programmed.center + programmed.normal).tip - centre);
+    return a;
+}
+
+std::optional<std::string> FiveAxisState::orient(const Vec3& tip, const Vec3& axis)
+{
+    const double length = m_toolLength.value_or(0);
+    if (!m_solver || m_solverToolLength != length) {
+        m_solver = std::make_unique<kinematics::PoseSolver>(*m_machine, length);
+        m_solverToolLength = length;
+    }
+    const MachinePose previous = pose(tip);
+    const auto solved = m_solver->solve(ToolPose{tip, unit(axis)}, m_angles.complete() ? &previous : nullptr);
+    if (!solved)
+        return solved.error().message;
+    m_angles.deg = solved.value().pose.rotaryDeg;
+    m_angles.known = {true, true};
+    return std::nullopt;
+}
+
+Vec3 spatialToolAxis(double aDeg, double bDeg, double cDeg)
+{
+    const double k = std::numbers::pi / 180;
+    const double a = aDeg * k, b = bDeg * k, c = cDeg * k;
+    // Rz(c) * Ry(b) * Rx(a) * (0, 0, 1)
+    const Vec3 afterA{0, -std::sin(a), std::cos(a)};
+    const Vec3 afterB{afterA.x * std::cos(b) + afterA.z * std::sin(b), afterA.y,
+                      -afterA.x * std::sin(b) + afterA.z * std::cos(b)};
+    return {afterB.x * std::cos(c) - afterB.y * std::sin(c), afterB.x * std::sin(c) + afterB.y * std::cos(c), afterB.z};
+}
+
+}  // namespace camwb::nc

@@ -1,0 +1,235 @@
+// The SINUMERIK 840D sl post on the DMU 50-class B/C table: five-axis moves under TRAORI with the
+// tool vector A3= B3= C3= (normalised, the CL's within 1e-6), every TRAORI closed by TRAFOOF,
+// G93 feeds that are the block's time, and errors instead of output where the machine cannot do it.
+#include "PostTestSupport.h"
+
+#include "kinematics/Machine.h"
+
+#include <cmath>
+#include <map>
+#include <random>
+
+namespace camwb::post::test {
+namespace {
+
+using namespace toolpath;
+
+const std::string kPost = kPostsDir + "/sinumerik840d.js";
+const std::string kMachines = std::string(CAMWB_TEST_DATA_DIR) + "/resources/machines/";
+
+// The words of a block by address ("X", "A3", "F"; "A3=0.5" and "X1.5" alike), without the N number.
+std::map<std::string, double> addresses(const std::string& line)
+{
+    std::map<std::string, double> result;
+    std::istringstream in(words(line));
+    for (std::string word; in >> word;) {
+        const std::size_t eq = word.find('=');
+        std::size_t split = eq;
+        if (eq == std::string::npos) {
+            split = 0;
+            while (split < word.size() && std::isalpha(static_cast<unsigned char>(word[split])))
+                ++split;
+        }
+        const std::string value = word.substr(eq == std::string::npos ? split : eq + 1);
+        if (split == 0 || value.empty() || !(std::isdigit(static_cast<unsigned char>(value[0])) || value[0] == '-'))
+            continue;
+        result[word.substr(0, split)] = std::stod(value);
+    }
+    return result;
+}
+
+bool has(const std::string& line, const std::string& word)
+{
+    std::istringstream in(words(line));
+    for (std::string w; in >> w;)
+        if (w == word)
+            return true;
+    return false;
+}
+
+class Sinumerik840dPost : public testing::Test {
+protected:
+    void SetUp() override
+    {
+        auto loaded = PostProcessor::load(kPost);
+        ASSERT_TRUE(loaded.ok()) << loaded.error().toString();
+        m_post = std::move(loaded).value();
+    }
+
+    base::Result<PostOutput> tryRun(const Toolpath& path, std::map<std::string, std::string> properties = {},
+                                    const std::string& machineId = "dmu50-840d")
+    {
+        RunOptions options;
+        options.context = fixedContext();
+        options.properties = std::move(properties);
+        auto machine = kinematics::loadMachine(kMachines + machineId + ".json");
+        EXPECT_TRUE(machine.ok()) << machine.error().toString();
+        if (machine.ok())
+            options.machine = machine.value();
+        return m_post->run(path, options);
+    }
+
+    std::vector<std::string> run(const Toolpath& path, std::map<std::string, std::string> properties = {})
+    {
+        auto output = tryRun(path, std::move(properties));
+        EXPECT_TRUE(output.ok()) << output.error().toString();
+        return output.ok() ? lines(output.value().text) : std::vector<std::string>{};
+    }
+
+    static Toolpath start()
+    {
+        Toolpath path;
+        path.add(SectionBegin{"Swarf", "swarf", 1, {}});
+        path.add(ToolChange{Tool{1, "D10", "ball", 10}});
+        path.add(Spindle{8000, true});
+        return path;
+    }
+
+    std::optional<PostProcessor> m_post;
+};
+
+TEST_F(Sinumerik840dPost, ToolVectorIsNormalisedAndTheClsWithin1e6)
+{
+    std::mt19937 random(840);
+    std::uniform_real_distribution<double> angle(0, 2 * M_PI), tilt(0, 110 * M_PI / 180);
+    Toolpath path = start();
+    std::vector<Vec3> vectors;
+    for (int n = 0; n < 200; ++n) {
+        const double a = angle(random), t = tilt(random);
+        vectors.push_back({std::sin(t) * std::cos(a), std::sin(t) * std::sin(a), std::cos(t)});
+        // Every other one at three times its length, as a hand-written trace may give it: written normalised.
+        path.add(ToolAxisMove{{double(n), 0, 5}, vectors.back() * (n % 2 ? 3.0 : 1.0), 500});
+    }
+    std::size_t seen = 0;
+    for (const std::string& line : run(path)) {
+        const auto words = addresses(line);
+        if (!words.count("A3"))
+            continue;
+        ASSERT_TRUE(words.count("B3") && words.count("C3")) << line << ": the control sets a missing component to 0";
+        ASSERT_LT(seen, vectors.size());
+        const Vec3 written{words.at("A3"), words.at("B3"), words.at("C3")};
+        EXPECT_NEAR(written.length(), 1, 1e-6) << line;
+        EXPECT_NEAR((written - vectors[seen]).length(), 0, 1e-6) << line;
+        ++seen;
+    }
+    EXPECT_EQ(seen, vectors.size());
+}
+
+TEST_F(Sinumerik840dPost, EveryTraoriIsClosedByTrafoofBeforeAToolChangeOrTheEnd)
+{
+    Toolpath path = start();
+    path.add(Rapid{{0, 0, 50}});
+    path.add(ToolAxisMove{{0, 0, 10}, {0.5, 0, std::sqrt(0.75)}, 0});
+    path.add(ToolAxisMove{{10, 0, 0}, {0, 0.5, std::sqrt(0.75)}, 400});
+    path.add(SectionEnd{});
+    path.add(SectionBegin{"Second", "swarf", 2, {}});
+    path.add(ToolChange{Tool{2, "D6", "ball", 6}});
+    path.add(ToolAxisMove{{10, 0, 0}, {0, -0.5, std::sqrt(0.75)}, 400});
+    path.add(Linear{{20, 0, 0}, 400});  // along +Z: the vector goes back to vertical in the same block
+    path.add(ToolAxisMove{{30, 0, 0}, {0.1, 0, std::sqrt(0.99)}, 400});
+    const std::vector<std::string> all = run(path);
+    bool open = false;
+    int runs = 0;
+    for (const std::string& line : all) {
+        if (has(line, "TRAORI")) {
+            EXPECT_FALSE(open) << line;
+            open = true;
+            ++runs;
+        } else if (has(line, "TRAFOOF")) {
+            EXPECT_TRUE(open) << line;
+            open = false;
+        } else if (has(line, "M6") || has(line, "M30")) {
+            EXPECT_FALSE(open) << line << ": TRAORI still on";
+        } else if (addresses(line).count("A3")) {
+            EXPECT_TRUE(open) << line << ": a tool vector without TRAORI";
+        }
+    }
+    EXPECT_EQ(runs, 2);
+    EXPECT_FALSE(open);
+    const auto vertical =
+        std::find_if(all.begin(), all.end(), [](const std::string& l) { return words(l).rfind("X20.000", 0) == 0; });
+    ASSERT_NE(vertical, all.end());
+    EXPECT_EQ(words(*vertical), "X20.000 A3=0 B3=0 C3=1");
+}
+
+TEST_F(Sinumerik840dPost, InverseTimeFeedIsTheBlocksLengthOverItsFeed)
+{
+    Toolpath path = start();
+    path.add(Rapid{{0, 0, 50}});
+    path.add(ToolAxisMove{{0, 0, 5}, {0, 0.3, std::sqrt(0.91)}, 0});
+    const std::vector<std::pair<Vec3, double>> moves = {
+        {{12.5, 3, 1}, 800}, {{13, 3, 1}, 1200}, {{-40, 7.25, -2}, 250}, {{-40.001, 7.25, -2}, 600}};
+    for (std::size_t n = 0; n < moves.size(); ++n)
+        path.add(ToolAxisMove{
+            moves[n].first, {0.01 * double(n), 0.3, std::sqrt(0.91 - 1e-4 * double(n * n))}, moves[n].second});
+    path.add(ToolAxisMove{{-40.001, 7.25, -2}, {0.5, 0, std::sqrt(0.75)}, 300});  // the tip stands: deg/min
+    const std::vector<std::string> all = run(path, {{"inverseTime", "true"}});
+    std::vector<double> feeds;
+    bool g93 = false;
+    for (const std::string& line : all) {
+        g93 = has(line, "G93") ? true : has(line, "G94") ? false : g93;
+        const auto words = addresses(line);
+        if (words.count("F") && (words.count("X") || words.count("A3"))) {
+            EXPECT_TRUE(g93) << line;
+            feeds.push_back(words.at("F"));
+        }
+    }
+    EXPECT_FALSE(g93) << "G94 again after the five-axis moves";
+    ASSERT_EQ(feeds.size(), moves.size() + 1);
+    Vec3 from{0, 0, 5};
+    for (std::size_t n = 0; n < moves.size(); ++n) {
+        const double minutes = (moves[n].first - from).length() / moves[n].second;
+        EXPECT_NEAR(feeds[n], 1 / minutes, 0.5e-4 + 1e-9 / minutes) << n;
+        from = moves[n].first;
+    }
+    const double turn =
+        std::acos(Vec3{0.03, 0.3, std::sqrt(0.91 - 9e-4)}.dot(Vec3{0.5, 0, std::sqrt(0.75)})) * 180 / M_PI;
+    EXPECT_NEAR(feeds.back(), 300 / turn, 0.5e-4);
+}
+
+TEST_F(Sinumerik840dPost, AFiveAxisMoveOnAMachineWithoutAChainIsAnError)
+{
+    Toolpath path = start();
+    path.add(ToolAxisMove{{0, 0, 5}, {0, 0.3, std::sqrt(0.91)}, 500});
+    auto output = tryRun(path, {}, "emco-concept-mill-105");
+    ASSERT_FALSE(output.ok());
+    EXPECT_NE(output.error().message.find("machine emco-concept-mill-105 has no five-axis kinematic chain"),
+              std::string::npos)
+        << output.error().toString();
+    // A vertical one is a three-axis move there.
+    Toolpath vertical = start();
+    vertical.add(ToolAxisMove{{0, 0, 5}, {0, 0, 1}, 500});
+    auto written = tryRun(vertical, {}, "emco-concept-mill-105");
+    ASSERT_TRUE(written.ok()) << written.error().toString();
+    EXPECT_EQ(written.value().text.find("TRAORI"), std::string::npos);
+}
+
+TEST_F(Sinumerik840dPost, AFeedAboveTheMachinesMaximumIsAnErrorInInverseTime)
+{
+    Toolpath path = start();
+    path.add(Rapid{{0, 0, 50}});
+    path.add(ToolAxisMove{{0, 0, 5}, {0, 0.3, std::sqrt(0.91)}, 24000});
+    EXPECT_TRUE(tryRun(path, {{"inverseTime", "true"}}).ok());
+    path.add(ToolAxisMove{{10, 0, 5}, {0, 0.3, std::sqrt(0.91)}, 24001});
+    auto output = tryRun(path, {{"inverseTime", "true"}});
+    ASSERT_FALSE(output.ok());
+    EXPECT_NE(output.error().message.find("feed 24001 mm/min is above"), std::string::npos)
+        << output.error().toString();
+    EXPECT_NE(output.error().message.find("CL record 5 ToolAxisMove"), std::string::npos) << output.error().toString();
+}
+
+TEST_F(Sinumerik840dPost, AToolVectorBeyondTheTiltIsAnError)
+{
+    Toolpath path = start();
+    path.add(ToolAxisMove{{0, 0, 5}, {std::sin(1.93), 0, std::cos(1.93)}, 500});  // 110.6 deg from Z
+    auto output = tryRun(path);
+    ASSERT_FALSE(output.ok());
+    EXPECT_NE(output.error().message.find("B axis reaches -5..110 deg"), std::string::npos)
+        << output.error().toString();
+    Toolpath within = start();
+    within.add(ToolAxisMove{{0, 0, 5}, {std::sin(1.91), 0, std::cos(1.91)}, 500});  // 109.4 deg
+    EXPECT_TRUE(tryRun(within).ok());
+}
+
+}  // namespace
+}  // namespace camwb::post::test

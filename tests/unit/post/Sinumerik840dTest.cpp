@@ -4,6 +4,7 @@
 #include "PostTestSupport.h"
 
 #include "kinematics/Machine.h"
+#include "kinematics/PoseSolver.h"
 
 #include <cmath>
 #include <map>
@@ -229,6 +230,32 @@ TEST_F(Sinumerik840dPost, AToolVectorBeyondTheTiltIsAnError)
     Toolpath within = start();
     within.add(ToolAxisMove{{0, 0, 5}, {std::sin(1.91), 0, std::cos(1.91)}, 500});  // 109.4 deg
     EXPECT_TRUE(tryRun(within).ok());
+}
+
+}  // namespace
+}  // namespace camwb::post::test
+
+namespace camwb::post::test {
+namespace {
+
+// The machine file's chain as SINUMERIK counts table axes (V1 = -Y, V2 = -Z): a tool tilted towards
+// +X of the workpiece is B+30 at C0, towards -X B+30 at C180 (B reaches only -5 the other way).
+TEST(Dmu50Machine, ChainCountsTableAxesAsSinumerikDoes)
+{
+    auto machine = kinematics::loadMachine(kMachines + "dmu50-840d.json");
+    ASSERT_TRUE(machine.ok()) << machine.error().toString();
+    ASSERT_TRUE(machine.value().kinematics.fiveAxis());
+    EXPECT_EQ(machine.value().kinematics.type, kinematics::ChainType::TableTable);
+    const kinematics::PoseSolver solver(machine.value());
+    const double s = std::sin(M_PI / 6), c = std::cos(M_PI / 6);
+    auto plusX = solver.solve({{0, 0, 0}, {s, 0, c}}, nullptr);
+    ASSERT_TRUE(plusX.ok()) << plusX.error().toString();
+    EXPECT_NEAR(plusX.value().pose.rotaryDeg[0], 30, 1e-9);
+    EXPECT_NEAR(std::remainder(plusX.value().pose.rotaryDeg[1], 360), 0, 1e-9);
+    auto minusX = solver.solve({{0, 0, 0}, {-s, 0, c}}, nullptr);
+    ASSERT_TRUE(minusX.ok()) << minusX.error().toString();
+    EXPECT_NEAR(minusX.value().pose.rotaryDeg[0], 30, 1e-9);
+    EXPECT_NEAR(std::abs(std::remainder(minusX.value().pose.rotaryDeg[1], 360)), 180, 1e-9);
 }
 
 }  // namespace

@@ -8,7 +8,8 @@
 // workpiece frame and the tool vector A3= B3= C3= (normalised, 7 decimals; the control turns B and
 // C itself, Programming Manual Job Planning, "Three, four and five axis transformation (TRAORI)").
 // Each run of them: TRAORI, ORIWKS ORIVECT ... TRAFOOF, then Z to the top of its travel and the
-// table home. G93 inverse-time feed is a property. CYCLE800 (3+2) waits for a working-plane CL
+// table home; after each tool change the table home too, so three-axis moves never run on a table
+// another program left tilted. G93 inverse-time feed is a property. CYCLE800 (3+2) waits for a working-plane CL
 // record; the rotary-angle output for the kernel's solved poses.
 var post = {
     id: "sinumerik840d",
@@ -196,8 +197,8 @@ function beginTraori() {
 }
 
 // After the run: transformation off, Z to the top of its travel in machine coordinates without the
-// length offset (SUPA ... D0: the tool's tip is above the part wherever it was), the table home (B0,
-// C the short way to 0: DC), the length offset back for the next move.
+// length offset (SUPA ... D0: the tool's tip is above the part wherever it was), the table home
+// (tableHome), the length offset back for the next move.
 function endTraori() {
     if (!traori)
         return;
@@ -211,17 +212,22 @@ function endTraori() {
     writeBlock("TRAFOOF");
     var z = axisOf("Z");
     writeBlock("G0", "SUPA", "Z" + xyzFormat.format(z && z.max !== null ? z.max : 0), "D0");
+    writeBlock(tableHome());
+    writeBlock("D1");
+    traori = false;
+    motionModal.reset();
+    forceMotion();
+}
+
+// "G0 B0 C=DC(0)": the rotaries at 0, an endless one the short way (DC).
+function tableHome() {
     var chain = machine.kinematics;
     var home = ["G0"];
     for (var r = 0; r < chain.rotaries.length; ++r) {
         var axis = axisOf(chain.rotaries[r].axis);
         home.push(axis && axis.endless ? axis.name + "=DC(0)" : chain.rotaries[r].axis + "0");
     }
-    writeBlock.apply(null, home);
-    writeBlock("D1");
-    traori = false;
-    motionModal.reset();
-    forceMotion();
+    return home.join(" ");
 }
 
 function vectorWords(i, j, k) {
@@ -334,6 +340,10 @@ function onToolChange(tool) {
     stopSpindleAndCoolant();
     comment(getProperty("toolChangeComment"));
     writeBlock("M6", "T" + Math.trunc(tool.number), "D1");
+    // Three-axis moves take the table at home, whatever the last program left: turn it there while
+    // the spindle stands at the tool change position, above everything.
+    if (machine && machine.kinematics)
+        writeBlock(tableHome());
     forceMotion();
 }
 

@@ -61,8 +61,9 @@ var xyzFormat = createFormat({decimals: inch ? 4 : 3, scale: inch ? 1 / 25.4 : 1
 // G700 takes feeds in inch/min as well; G70 changes only the geometry.
 var feedFormat = unitsWord == "G700" ? createFormat({decimals: 1, scale: 1 / 25.4}) : createFormat({decimals: 0});
 var feedPerRevFormat = createFormat({decimals: 3, scale: unitsWord == "G700" ? 1 / 25.4 : 1});
-// G93: 1/min. Four decimals keep a long block's time within 0.5 % down to F0.01 (a 100 mm block at 1 mm/min).
-var inverseTimeFormat = createFormat({decimals: 4, trim: true, max: 999999});
+// G93: 1/min. Four decimals keep a long block's time within 0.5 % down to F0.01 (a 100 mm block at
+// 1 mm/min); beyond the control's F range (999 999.999) a block is too short for its feed: an error.
+var inverseTimeFormat = createFormat({decimals: 4, trim: true, max: 999999.999});
 // Tool vector components: 7 decimals keep the written vector within 1e-7 of the CL's per component.
 var vectorFormat = createFormat({decimals: 7, trim: true});
 var secondsFormat = createFormat({decimals: 3, trim: true});

@@ -220,6 +220,19 @@ TEST_F(Sinumerik840dPost, AFeedAboveTheMachinesMaximumIsAnErrorInInverseTime)
     EXPECT_NE(output.error().message.find("CL record 5 ToolAxisMove"), std::string::npos) << output.error().toString();
 }
 
+TEST_F(Sinumerik840dPost, AnInverseTimeBeyondTheControlsRangeIsAnError)
+{
+    Toolpath path = start();
+    path.add(Rapid{{0, 0, 50}});
+    path.add(ToolAxisMove{{0, 0, 5}, {0, 0.3, std::sqrt(0.91)}, 0});
+    path.add(ToolAxisMove{{0.02, 0, 5}, {0, 0.3, std::sqrt(0.91)}, 20000});  // F1000000: 0.06 ms
+    EXPECT_TRUE(tryRun(path).ok()) << "G94: F20000 is a feed the machine has";
+    auto output = tryRun(path, {{"inverseTime", "true"}});
+    ASSERT_FALSE(output.ok());
+    EXPECT_NE(output.error().message.find("beyond the largest value the control reads"), std::string::npos)
+        << output.error().toString();
+}
+
 TEST_F(Sinumerik840dPost, AToolVectorBeyondTheTiltIsAnError)
 {
     Toolpath path = start();

@@ -194,6 +194,8 @@ function beginTraori() {
     writeBlock("ORIWKS", "ORIVECT");
     traori = true;
     vectorText = null;
+    lastVector = [0, 0, 1];
+    verticalDue = false;
     forceMotion();
 }
 
@@ -210,6 +212,7 @@ function endTraori() {
     }
     g93 = false;
     verticalVector.take();
+    verticalDue = false;
     writeBlock("TRAFOOF");
     var z = axisOf("Z");
     writeBlock("G0", "SUPA", "Z" + xyzFormat.format(z && z.max !== null ? z.max : 0), "D0");
@@ -242,7 +245,8 @@ function turnDeg(a, b) {
     return Math.acos(Math.min(1, Math.max(-1, dot))) * 180 / Math.PI;
 }
 
-var lastVector = [0, 0, 1];
+var lastVector = [0, 0, 1];  // the tool's last unit vector: vertical with the table home
+var verticalDue = false;     // verticalVector was set: a three-axis block may have written it
 
 function onLinear5D(x, y, z, i, j, k, feed) {
     if (!traori && Math.abs(i) < 1e-9 && Math.abs(j) < 1e-9 && k > 0) {
@@ -260,6 +264,10 @@ function onLinear5D(x, y, z, i, j, k, feed) {
     checkReach(chain, i / n, j / n, k / n);
     if (!traori)
         beginTraori();
+    if (verticalDue && !verticalVector.isSet()) {  // a three-axis block wrote the vertical vector
+        vectorText = vectorWords(0, 0, 1);
+        lastVector = [0, 0, 1];
+    }
     var start = getCurrentPosition();
     var vector = vectorWords(i, j, k);
     var words = [xOutput.format(x), yOutput.format(y), zOutput.format(z), vector != vectorText ? vector : ""];
@@ -268,7 +276,8 @@ function onLinear5D(x, y, z, i, j, k, feed) {
     lastVector = unit;
     vectorText = vector;
     // A tool along +Z on the next three-axis block: its vector is due only if this one is not.
-    if (vector != vectorWords(0, 0, 1))
+    verticalDue = vector != vectorWords(0, 0, 1);
+    if (verticalDue)
         verticalVector.set(vectorWords(0, 0, 1));
     else
         verticalVector.take();

@@ -154,6 +154,20 @@ TEST_F(Sinumerik840dPost, EveryTraoriIsClosedByTrafoofBeforeAToolChangeOrTheEnd)
     EXPECT_EQ(words(*vertical), "X20.000 A3=0 B3=0 C3=1");
 }
 
+TEST_F(Sinumerik840dPost, AFiveAxisMoveAfterAVerticalOneWritesItsVectorAgain)
+{
+    Toolpath path = start();
+    const Vec3 tilted{0, -0.5, std::sqrt(0.75)};
+    path.add(ToolAxisMove{{0, 0, 5}, tilted, 0});
+    path.add(Linear{{10, 0, 5}, 400});                // the tool vertical: A3=0 B3=0 C3=1
+    path.add(ToolAxisMove{{20, 0, 5}, tilted, 400});  // tilted again: the vector must be written
+    const std::vector<std::string> all = run(path);
+    ASSERT_GE(all.size(), 4u);
+    const std::vector<std::string> last{words(all[all.size() - 8]), words(all[all.size() - 7])};
+    EXPECT_EQ(last[0], "G1 X10.000 A3=0 B3=0 C3=1 F400") << last[0];
+    EXPECT_EQ(last[1], "X20.000 A3=0 B3=-0.5 C3=0.8660254") << last[1];
+}
+
 TEST_F(Sinumerik840dPost, InverseTimeFeedIsTheBlocksLengthOverItsFeed)
 {
     Toolpath path = start();

@@ -172,19 +172,26 @@ function axisOf(name) {
 // vector iff its tilt from +Z is within the tilt axis' larger reach (the other sign with C + 180):
 // refused here, naming the CL record, before the control stops on it. Other chains are left to the
 // control (and the kernel's pose solver).
+var reachDeg;  // undefined: not known yet; null: not checked here
+
 function checkReach(chain, i, j, k) {
-    if (chain.type != "table-table")
-        return;
-    var tilt = axisOf(chain.rotaries[0].axis), turn = axisOf(chain.rotaries[1].axis);
-    var d = chain.rotaries[1].direction;
-    if (!tilt || !turn || !turn.endless || tilt.min === null || Math.abs(Math.abs(d[2]) - 1) > 1e-9)
+    if (reachDeg === undefined) {
+        var tilt = axisOf(chain.rotaries[0].axis), turn = axisOf(chain.rotaries[1].axis);
+        var d = chain.rotaries[1].direction;
+        reachDeg = chain.type == "table-table" && tilt && turn && turn.endless && tilt.min !== null &&
+                           Math.abs(Math.abs(d[2]) - 1) < 1e-9
+                       ? Math.max(tilt.max, -tilt.min)
+                       : null;
+    }
+    if (reachDeg === null)
         return;
     var tiltDeg = Math.acos(Math.min(1, Math.max(-1, k))) * 180 / Math.PI;
-    var reach = Math.max(tilt.max, -tilt.min);
-    if (tiltDeg > reach + 1e-6)
+    if (tiltDeg > reachDeg + 1e-6) {
+        var tilt = axisOf(chain.rotaries[0].axis);
         error("tool vector (" + vectorFormat.format(i) + ", " + vectorFormat.format(j) + ", " + vectorFormat.format(k) +
               ") is tilted " + angleFormat.format(tiltDeg) + " deg from Z; the " + machine.name + "'s " + tilt.name +
               " axis reaches " + angleFormat.format(tilt.min) + ".." + angleFormat.format(tilt.max) + " deg");
+    }
 }
 
 function beginTraori() {
@@ -234,6 +241,8 @@ function tableHome() {
     return home.join(" ");
 }
 
+var verticalText = "A3=0 B3=0 C3=1";  // vectorWords(0, 0, 1)
+
 function vectorWords(i, j, k) {
     var n = Math.sqrt(i * i + j * j + k * k);
     return "A3=" + vectorFormat.format(i / n) + " B3=" + vectorFormat.format(j / n) + " C3=" + vectorFormat.format(k / n);
@@ -264,11 +273,12 @@ function onLinear5D(x, y, z, i, j, k, feed) {
     checkReach(chain, i / n, j / n, k / n);
     if (!traori)
         beginTraori();
-    if (verticalDue && !verticalVector.isSet()) {  // a three-axis block wrote the vertical vector
-        vectorText = vectorWords(0, 0, 1);
+    var consumed = verticalDue && !verticalVector.isSet();
+    if (consumed) {  // a three-axis block wrote the vertical vector
+        vectorText = verticalText;
         lastVector = [0, 0, 1];
     }
-    var start = getCurrentPosition();
+    var start = inverseTime && feed > 0 ? getCurrentPosition() : null;
     var vector = vectorWords(i, j, k);
     var words = [xOutput.format(x), yOutput.format(y), zOutput.format(z), vector != vectorText ? vector : ""];
     var unit = [i / n, j / n, k / n];
@@ -276,11 +286,13 @@ function onLinear5D(x, y, z, i, j, k, feed) {
     lastVector = unit;
     vectorText = vector;
     // A tool along +Z on the next three-axis block: its vector is due only if this one is not.
-    verticalDue = vector != vectorWords(0, 0, 1);
-    if (verticalDue)
-        verticalVector.set(vectorWords(0, 0, 1));
-    else
+    // (Each kernel call costs: the pending is set once per tilted stretch, not per block.)
+    var due = vector != verticalText;
+    if (due && (!verticalDue || consumed))
+        verticalVector.set(verticalText);
+    else if (!due && verticalDue)
         verticalVector.take();
+    verticalDue = due;
     if (!words[0] && !words[1] && !words[2] && !words[3])
         return;  // nothing moves
     if (!(feed > 0)) {

@@ -178,7 +178,7 @@ TEST_F(Sinumerik840dPost, InverseTimeFeedIsTheBlocksLengthOverItsFeed)
     for (std::size_t n = 0; n < moves.size(); ++n)
         path.add(ToolAxisMove{
             moves[n].first, {0.01 * double(n), 0.3, std::sqrt(0.91 - 1e-4 * double(n * n))}, moves[n].second});
-    path.add(ToolAxisMove{{-40.001, 7.25, -2}, {0.5, 0, std::sqrt(0.75)}, 300});  // the tip stands: deg/min
+    path.add(ToolAxisMove{{-40.001, 7.25, -2}, {0.1, 0.3, std::sqrt(0.9)}, 300});  // the tip stands: deg/min
     const std::vector<std::string> all = run(path, {{"inverseTime", "true"}});
     std::vector<double> feeds;
     bool g93 = false;
@@ -199,7 +199,7 @@ TEST_F(Sinumerik840dPost, InverseTimeFeedIsTheBlocksLengthOverItsFeed)
         from = moves[n].first;
     }
     const double turn =
-        std::acos(Vec3{0.03, 0.3, std::sqrt(0.91 - 9e-4)}.dot(Vec3{0.5, 0, std::sqrt(0.75)})) * 180 / M_PI;
+        std::acos(Vec3{0.03, 0.3, std::sqrt(0.91 - 9e-4)}.dot(Vec3{0.1, 0.3, std::sqrt(0.9)})) * 180 / M_PI;
     EXPECT_NEAR(feeds.back(), 300 / turn, 0.5e-4);
 }
 
@@ -253,7 +253,10 @@ TEST_F(Sinumerik840dPost, AToolVectorBeyondTheTiltIsAnError)
     path.add(ToolAxisMove{{0, 0, 5}, {std::sin(1.93), 0, std::cos(1.93)}, 500});  // 110.6 deg from Z
     auto output = tryRun(path);
     ASSERT_FALSE(output.ok());
-    EXPECT_NE(output.error().message.find("B axis reaches -5..110 deg"), std::string::npos)
+    // The kernel's pose solver (or, without its five-axis planning, the post) names the limit.
+    const std::string& message = output.error().message;
+    EXPECT_TRUE(message.find("B axis reaches -5..110 deg") != std::string::npos ||
+                message.find("B110.5809 is above the axis' limit 110") != std::string::npos)
         << output.error().toString();
     Toolpath within = start();
     within.add(ToolAxisMove{{0, 0, 5}, {std::sin(1.91), 0, std::cos(1.91)}, 500});  // 109.4 deg

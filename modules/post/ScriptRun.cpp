@@ -185,6 +185,28 @@ void ScriptRun::setMachine(const kinematics::Machine& machine)
     for (std::size_t i = 0; i < machine.coolants.size(); ++i)
         coolants.setProperty(static_cast<quint32>(i), qs(machine.coolants[i]));
     m.setProperty("coolants", coolants);
+    // The chain, so a five-axis post can refuse a machine without one: null for three axes, else
+    // {type, rotaries: [{axis, table, direction: [x, y, z]}]} in the file's order.
+    QJSValue chain(QJSValue::NullValue);
+    if (machine.kinematics.fiveAxis()) {
+        chain = m_engine.newObject();
+        chain.setProperty("type", kinematics::name(machine.kinematics.type));
+        QJSValue rotaries = m_engine.newArray(2);
+        for (quint32 i = 0; i < 2; ++i) {
+            const kinematics::RotaryJoint& j = machine.kinematics.joints[i];
+            QJSValue joint = m_engine.newObject();
+            joint.setProperty("axis", qs(j.axis));
+            joint.setProperty("table", j.onTable);
+            QJSValue direction = m_engine.newArray(3);
+            direction.setProperty(0, j.direction.x);
+            direction.setProperty(1, j.direction.y);
+            direction.setProperty(2, j.direction.z);
+            joint.setProperty("direction", direction);
+            rotaries.setProperty(i, joint);
+        }
+        chain.setProperty("rotaries", rotaries);
+    }
+    m.setProperty("kinematics", chain);
     m_engine.globalObject().setProperty("machine", m);
 }
 

@@ -15,7 +15,8 @@ add_test(NAME fuzz.build
           -P ${PROJECT_SOURCE_DIR}/tests/fuzz/BuildFuzz.cmake)
 set_tests_properties(fuzz.build PROPERTIES FIXTURES_SETUP fuzz_targets LABELS fuzz TIMEOUT 1200)
 
-set(seeds_sinumerik ${PROJECT_SOURCE_DIR}/tests/golden/nc/sinumerik ${PROJECT_SOURCE_DIR}/posts/sinumerik828d-emco/tests)
+set(seeds_sinumerik ${PROJECT_SOURCE_DIR}/tests/golden/nc/sinumerik ${PROJECT_SOURCE_DIR}/posts/sinumerik828d-emco/tests
+                    ${PROJECT_SOURCE_DIR}/posts/sinumerik840d/tests)
 set(seeds_heidenhain ${PROJECT_SOURCE_DIR}/tests/golden/nc/heidenhain)
 set(seeds_iso ${PROJECT_SOURCE_DIR}/tests/golden/nc/iso ${PROJECT_SOURCE_DIR}/posts/linuxcnc/tests)
 set(seeds_apt ${PROJECT_SOURCE_DIR}/tests/data/cl)

@@ -1,0 +1,504 @@
+// SINUMERIK 840D sl, three to five axes: a DMU 50-class B/C table-table machine by default, any
+// machine whose file gives a five-axis chain for simultaneous moves.
+// Three-axis output keeps the dialect the 828D proved on the control (seed-004, the
+// sinumerik828d-emco post): numbered blocks from N10 step 10, ';' comments, `G17 G40` / `G710` /
+// `G54 G90`, a comment and `M6 T<n> D1` per tool, `M3 S<n>`, modal G words and axes, 3 decimals,
+// integer F never on G0, G2/G3 with the plane's two centre words, CYCLE81..85, M5/M9, M30.
+// Five-axis moves (MULTAX CL, ToolAxisMove) go out under TRAORI: X Y Z of the tool tip in the
+// workpiece frame and the tool vector A3= B3= C3= (normalised, 7 decimals; the control turns B and
+// C itself, Programming Manual Job Planning, "Three, four and five axis transformation (TRAORI)").
+// Each run of them: TRAORI, ORIWKS ORIVECT ... TRAFOOF, then Z to the top of its travel and the
+// table home; after each tool change the table home too, so three-axis moves never run on a table
+// another program left tilted. G93 inverse-time feed is a property. CYCLE800 (3+2) waits for a working-plane CL
+// record; the rotary-angle output for the kernel's solved poses.
+var post = {
+    id: "sinumerik840d",
+    description: "SINUMERIK 840D sl, DMU 50-class B/C table (TRAORI, simultaneous 5-axis)",
+    vendor: "Siemens / DMG MORI",
+    extension: "mpf",
+    machine: "dmu50-840d",
+    capabilities: {
+        arcPlanes: ["XY", "ZX", "YZ"],
+        helicalArcs: true,
+        maxArcSweep: 180,  // full circles in two halves: every block's end differs from its start
+        cycles: ["drill", "drillDwell", "peck", "chipBreak", "tap", "bore"],
+        maxAxes: 5
+    },
+    properties: {
+        inverseTime: {
+            title: "Inverse-time feed (G93)", type: "bool", default: false,
+            description: "Five-axis feed moves in G93: F = 1 / the block's time in minutes (the tool tip's " +
+                         "length at the CL feed, or the tool vector's turn in degrees at the feed as deg/min " +
+                         "where the tip stands), G94 again after them; off: F is the tip's feed in mm/min"
+        },
+        toolChangeComment: {
+            title: "Tool change comment", type: "string", default: "Tool change",
+            description: "Comment line before each tool change"
+        },
+        drillingCalls: {
+            title: "Drilling cycle calls", type: "enum", values: ["mcall", "perHole"], default: "mcall",
+            description: "MCALL CYCLE8x(...) followed by the hole positions, or one CYCLE8x(...) after each position"
+        },
+        units: {
+            title: "Units word", type: "enum", values: ["G710", "G71", "G700", "G70", "none"], default: "G710",
+            description: "G710/G71 metric (G710 also for feeds), G700/G70 inch output, none: no units word"
+        },
+        sequenceStart: {
+            title: "First block number", type: "int", default: 10, min: 0,
+            description: "Number of the first block"
+        },
+        sequenceStep: {
+            title: "Block number step", type: "int", default: 10, min: 1, max: 1000,
+            description: "Increment between block numbers"
+        }
+    }
+};
+
+var unitsWord = getProperty("units");
+var inch = unitsWord == "G700" || unitsWord == "G70";
+var inverseTime = getProperty("inverseTime");
+var xyzFormat = createFormat({decimals: inch ? 4 : 3, scale: inch ? 1 / 25.4 : 1});
+// G700 takes feeds in inch/min as well; G70 changes only the geometry.
+var feedFormat = unitsWord == "G700" ? createFormat({decimals: 1, scale: 1 / 25.4}) : createFormat({decimals: 0});
+var feedPerRevFormat = createFormat({decimals: 3, scale: unitsWord == "G700" ? 1 / 25.4 : 1});
+// G93: 1/min. Four decimals keep a long block's time within 0.5 % down to F0.01 (a 100 mm block at
+// 1 mm/min); beyond the control's F range (999 999.999) a block is too short for its feed: an error.
+var inverseTimeFormat = createFormat({decimals: 4, trim: true, max: 999999.999});
+// Tool vector components: 7 decimals keep the written vector within 1e-7 of the CL's per component.
+var vectorFormat = createFormat({decimals: 7, trim: true});
+var secondsFormat = createFormat({decimals: 3, trim: true});
+var cycleFormat = createFormat({decimals: inch ? 4 : 3, scale: inch ? 1 / 25.4 : 1});
+var angleFormat = createFormat({decimals: 3, trim: true});
+
+var xOutput = createVariable({prefix: "X"}, xyzFormat);
+var yOutput = createVariable({prefix: "Y"}, xyzFormat);
+var zOutput = createVariable({prefix: "Z"}, xyzFormat);
+var iOutput = createVariable({prefix: "I", force: true}, xyzFormat);
+var jOutput = createVariable({prefix: "J", force: true}, xyzFormat);
+var kOutput = createVariable({prefix: "K", force: true}, xyzFormat);
+var feedOutput = createVariable({prefix: "F"}, feedFormat);
+var inverseFeedOutput = createVariable({prefix: "F", force: true}, inverseTimeFormat);  // each G93 block its own time
+var motionModal = createModal({prefix: "G"});
+var planeModal = createModal({prefix: "G"});
+var compModal = createModal({prefix: "G"});
+var workOffsetModal = createModal({prefix: "G"});
+var feedModeModal = createModal({prefix: "G"});
+
+// A straight move or arc of the CL between five-axis moves has the tool along +Z: under TRAORI
+// its block carries that vector (the control would keep the last one), and under G93 it needs G94
+// first. Both are set when a five-axis move leaves them due and ride on the next such block.
+var verticalVector = createPending();
+var backToG94 = createPending();
+
+// The per-move blocks run in C++ (no onRapid/onLinear/onCircular here): a million three-axis
+// moves never enter the script engine. They share the modal variables with the handlers below.
+post.blocks = {
+    before: [backToG94],
+    rapid: [motionModal.bind("motion"), compModal.bind("comp"), xOutput.bind("x"), yOutput.bind("y"),
+            zOutput.bind("z"), verticalVector],
+    linear: [motionModal.bind("motion"), compModal.bind("comp"), xOutput.bind("x"), yOutput.bind("y"),
+             zOutput.bind("z"), verticalVector, feedOutput.bind("feed")],
+    circular: {
+        // Without Y in helical blocks the 828D reports a wrong circle-centre definition (seed-004 §4.3).
+        forceOnHelical: [xOutput, yOutput, zOutput],
+        XY: [planeModal.bind("plane"), motionModal.bind("motion"), xOutput.bind("x"), yOutput.bind("y"),
+             zOutput.bind("z"), iOutput.bind("i"), jOutput.bind("j"), verticalVector, feedOutput.bind("feed")],
+        ZX: [planeModal.bind("plane"), motionModal.bind("motion"), xOutput.bind("x"), yOutput.bind("y"),
+             zOutput.bind("z"), iOutput.bind("i"), kOutput.bind("k"), verticalVector, feedOutput.bind("feed")],
+        YZ: [planeModal.bind("plane"), motionModal.bind("motion"), xOutput.bind("x"), yOutput.bind("y"),
+             zOutput.bind("z"), jOutput.bind("j"), kOutput.bind("k"), verticalVector, feedOutput.bind("feed")]
+    }
+};
+
+// What the CL left running; null until it says (the spindle may run from MDI): then M5/M9 are written.
+var spindleOn = null;
+var coolantOn = null;
+var compCode = 40;  // G40/G41/G42 as the CL last said
+
+// Comments never carry parentheses (seed-004 R7).
+function comment(text) {
+    writeComment(String(text).replace(/[()]/g, ""));
+}
+
+function stopSpindleAndCoolant() {
+    writeBlock(spindleOn !== false ? "M5" : "", coolantOn !== false ? "M9" : "");
+    spindleOn = false;
+    coolantOn = false;
+}
+
+function workOffsetCode(index) {
+    if (index >= 1 && index <= 4)
+        return 53 + index;      // G54..G57
+    if (index >= 5 && index <= 99)
+        return 500 + index;     // G505..G599, the settable offsets
+    error("work offset " + index + " is not available on the SINUMERIK 840D (1..99)");
+}
+
+// The first move after a section start, a tool change, a cycle or a five-axis run writes all
+// axes, G and F again.
+function forceMotion() {
+    xOutput.reset();
+    yOutput.reset();
+    zOutput.reset();
+    feedOutput.reset();
+    motionModal.reset();
+}
+
+// --- Five-axis: TRAORI with the tool vector ---------------------------------------------------
+
+var traori = false;      // a run of five-axis moves is open
+var g93 = false;         // G93 is in force
+var vectorText = null;   // "A3=.. B3=.. C3=.." as last written under TRAORI
+
+// The machine's chain, or an error: TRAORI turns B and C as the control's own kinematics says, but
+// a post that writes it for a machine whose file knows no chain would write blind.
+function fiveAxisChain() {
+    var chain = machine ? machine.kinematics : null;
+    if (!chain)
+        error("five-axis move but " + (machine ? "machine " + machine.id + " has no five-axis kinematic chain"
+                                               : "no machine is given") +
+              ": post " + post.id + " writes TRAORI only for a machine whose file gives one");
+    return chain;
+}
+
+function axisOf(name) {
+    for (var i = 0; i < machine.axes.length; ++i)
+        if (machine.axes[i].name == name)
+            return machine.axes[i];
+    return null;
+}
+
+// A table-table chain whose second axis turns endlessly about Z (the rotary table) reaches a tool
+// vector iff its tilt from +Z is within the tilt axis' larger reach (the other sign with C + 180):
+// refused here, naming the CL record, before the control stops on it. Other chains are left to the
+// control (and the kernel's pose solver).
+var reachDeg;  // undefined: not known yet; null: not checked here
+
+function checkReach(chain, i, j, k) {
+    if (reachDeg === undefined) {
+        var tilt = axisOf(chain.rotaries[0].axis), turn = axisOf(chain.rotaries[1].axis);
+        var d = chain.rotaries[1].direction;
+        reachDeg = chain.type == "table-table" && tilt && turn && turn.endless && tilt.min !== null &&
+                           Math.abs(Math.abs(d[2]) - 1) < 1e-9
+                       ? Math.max(tilt.max, -tilt.min)
+                       : null;
+    }
+    if (reachDeg === null)
+        return;
+    var tiltDeg = Math.acos(Math.min(1, Math.max(-1, k))) * 180 / Math.PI;
+    if (tiltDeg > reachDeg + 1e-6) {
+        var tilt = axisOf(chain.rotaries[0].axis);
+        error("tool vector (" + vectorFormat.format(i) + ", " + vectorFormat.format(j) + ", " + vectorFormat.format(k) +
+              ") is tilted " + angleFormat.format(tiltDeg) + " deg from Z; the " + machine.name + "'s " + tilt.name +
+              " axis reaches " + angleFormat.format(tilt.min) + ".." + angleFormat.format(tilt.max) + " deg");
+    }
+}
+
+function beginTraori() {
+    writeBlock("TRAORI");
+    // A3/B3/C3 in the workpiece frame (ORIWKS) and the vector turned on the great circle between
+    // blocks (ORIVECT), as CL vectors mean: both G groups reset to machine data, so say them.
+    writeBlock("ORIWKS", "ORIVECT");
+    traori = true;
+    vectorText = null;
+    lastVector = [0, 0, 1];
+    verticalDue = false;
+    forceMotion();
+}
+
+// After the run: transformation off, Z to the top of its travel in machine coordinates without the
+// length offset (SUPA ... D0: the tool's tip is above the part wherever it was), the table home
+// (tableHome), the length offset back for the next move.
+function endTraori() {
+    if (!traori)
+        return;
+    if (g93 && backToG94.isSet()) {  // else a three-axis block has written G94 already
+        backToG94.take();
+        writeBlock("G94");
+        feedModeModal.reset();
+    }
+    g93 = false;
+    verticalVector.take();
+    verticalDue = false;
+    writeBlock("TRAFOOF");
+    var z = axisOf("Z");
+    writeBlock("G0", "SUPA", "Z" + xyzFormat.format(z && z.max !== null ? z.max : 0), "D0");
+    writeBlock(tableHome());
+    writeBlock("D1");
+    traori = false;
+    motionModal.reset();
+    forceMotion();
+}
+
+// "G0 B0 C=DC(0)": the rotaries at 0, an endless one the short way (DC).
+function tableHome() {
+    var chain = machine.kinematics;
+    var home = ["G0"];
+    for (var r = 0; r < chain.rotaries.length; ++r) {
+        var axis = axisOf(chain.rotaries[r].axis);
+        home.push(axis && axis.endless ? axis.name + "=DC(0)" : chain.rotaries[r].axis + "0");
+    }
+    return home.join(" ");
+}
+
+var verticalText = "A3=0 B3=0 C3=1";  // vectorWords(0, 0, 1)
+
+function vectorWords(i, j, k) {
+    var n = Math.sqrt(i * i + j * j + k * k);
+    return "A3=" + vectorFormat.format(i / n) + " B3=" + vectorFormat.format(j / n) + " C3=" + vectorFormat.format(k / n);
+}
+
+// Degrees between two unit vectors.
+function turnDeg(a, b) {
+    var dot = a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+    return Math.acos(Math.min(1, Math.max(-1, dot))) * 180 / Math.PI;
+}
+
+var lastVector = [0, 0, 1];  // the tool's last unit vector: vertical with the table home
+var verticalDue = false;     // verticalVector was set: a three-axis block may have written it
+
+function onLinear5D(x, y, z, i, j, k, feed) {
+    if (!traori && Math.abs(i) < 1e-9 && Math.abs(j) < 1e-9 && k > 0) {
+        // Along +Z outside a five-axis run: a three-axis move, on any machine.
+        var move = [motionModal.format(feed > 0 ? 1 : 0), compModal.format(compCode),
+                    xOutput.format(x), yOutput.format(y), zOutput.format(z)];
+        if (move[2] || move[3] || move[4])
+            writeBlock.apply(null, move.concat([feed > 0 ? feedOutput.format(feed) : ""]));
+        return;
+    }
+    var chain = fiveAxisChain();
+    if (compCode != 40)
+        error("cutter compensation is on in a five-axis move: TRAORI moves are written without G41/G42");
+    var n = Math.sqrt(i * i + j * j + k * k);
+    checkReach(chain, i / n, j / n, k / n);
+    if (!traori)
+        beginTraori();
+    var consumed = verticalDue && !verticalVector.isSet();
+    if (consumed) {  // a three-axis block wrote the vertical vector
+        vectorText = verticalText;
+        lastVector = [0, 0, 1];
+    }
+    var start = inverseTime && feed > 0 ? getCurrentPosition() : null;
+    var vector = vectorWords(i, j, k);
+    var words = [xOutput.format(x), yOutput.format(y), zOutput.format(z), vector != vectorText ? vector : ""];
+    var unit = [i / n, j / n, k / n];
+    var turned = turnDeg(lastVector, unit);
+    lastVector = unit;
+    vectorText = vector;
+    // A tool along +Z on the next three-axis block: its vector is due only if this one is not.
+    // (Each kernel call costs: the pending is set once per tilted stretch, not per block.)
+    var due = vector != verticalText;
+    if (due && (!verticalDue || consumed))
+        verticalVector.set(verticalText);
+    else if (!due && verticalDue)
+        verticalVector.take();
+    verticalDue = due;
+    if (!words[0] && !words[1] && !words[2] && !words[3])
+        return;  // nothing moves
+    if (!(feed > 0)) {
+        writeBlock(motionModal.format(0), words[0], words[1], words[2], words[3]);
+        return;
+    }
+    var f;
+    if (inverseTime) {
+        if (machine.maxCuttingFeed > 0 && feed > machine.maxCuttingFeed)
+            error("feed " + feed + " mm/min is above the " + machine.name + "'s maximum of " + machine.maxCuttingFeed +
+                  " mm/min: G93 would ask for a block time the machine cannot keep");
+        if (!start)
+            error("inverse-time feed needs the move's start: no move gave X, Y and Z before it");
+        var length = Math.sqrt(Math.pow(x - start.x, 2) + Math.pow(y - start.y, 2) + Math.pow(z - start.z, 2));
+        // The tip's length at the feed; where the tip stands, the vector's turn at the feed as deg/min.
+        var minutes = length > 1e-9 ? length / feed : turned / feed;
+        if (!(minutes > 0))
+            error("inverse-time feed of a move that neither moves the tip nor turns the tool");
+        if (g93 && !backToG94.isSet())  // a three-axis block between wrote the G94
+            g93 = false;
+        if (!g93) {
+            writeBlock("G93");
+            feedModeModal.reset();
+            g93 = true;
+        }
+        backToG94.set("G94");
+        feedOutput.reset();  // F in mm/min again after G94
+        f = inverseFeedOutput.format(1 / minutes);
+    } else {
+        f = feedOutput.format(feed);
+    }
+    writeBlock(motionModal.format(1), words[0], words[1], words[2], words[3], f);
+}
+
+// --- Program frame ----------------------------------------------------------------------------
+
+function onOpen(program) {
+    setBlockNumbering(getProperty("sequenceStart"), getProperty("sequenceStep"), true);
+    comment(programName);
+    comment("generated by CAM Workbench " + version + " post " + post.id);
+    comment("user " + user);
+    comment("date " + dateString);
+    if (machine)
+        comment("machine " + machine.name);
+    writeBlock(planeModal.format(17), compModal.format(40));
+    if (unitsWord != "none")
+        writeBlock(unitsWord);
+    writeBlock(workOffsetModal.format(workOffsetCode(program.workOffset)), "G90");
+}
+
+function onWorkOffset(index) {
+    endTraori();
+    writeBlock(workOffsetModal.format(workOffsetCode(index)));
+}
+
+function onSection(section) {
+    comment(section.operationName);
+    forceMotion();
+}
+
+function onSectionEnd() {
+    endTraori();
+}
+
+function onToolChange(tool) {
+    endTraori();
+    stopSpindleAndCoolant();
+    comment(getProperty("toolChangeComment"));
+    writeBlock("M6", "T" + Math.trunc(tool.number), "D1");
+    // Three-axis moves take the table at home, whatever the last program left: turn it there while
+    // the spindle stands at the tool change position, above everything.
+    if (machine && machine.kinematics)
+        writeBlock(tableHome());
+    forceMotion();
+}
+
+function onSpindle(rpm, clockwise) {
+    spindleOn = rpm > 0;
+    if (rpm <= 0)
+        writeBlock("M5");
+    else
+        writeBlock(clockwise ? "M3" : "M4", "S" + Math.trunc(rpm));
+}
+
+function onCoolant(mode) {
+    if (mode == "off") {
+        writeBlock("M9");
+        coolantOn = false;
+    } else if (mode == "flood" || (mode == "mist" && machine && machine.coolants.indexOf("mist") >= 0)) {
+        writeBlock(mode == "flood" ? "M8" : "M7");
+        coolantOn = true;
+    } else if (!machine || machine.coolants.indexOf(mode) >= 0) {
+        // (Without this coolant on the machine, the kernel's limit check has said so already.)
+        warning("coolant " + mode + " is not written by this post: not output");
+    }
+}
+
+function onFeedMode(mode) {
+    if (mode == "perMinute") {
+        feedOutput.setFormat(feedFormat);
+        writeBlock(feedModeModal.format(94));
+    } else if (mode == "perRevolution") {
+        feedOutput.setFormat(feedPerRevFormat);
+        writeBlock(feedModeModal.format(95));
+    } else {
+        feedOutput.setFormat(inverseTimeFormat);
+        writeBlock(feedModeModal.format(93));
+    }
+}
+
+function onCutterComp(side) {
+    // G41/G42/G40 go out with the next straight move (blocks.rapid/linear bind "comp").
+    compCode = side == "left" ? 41 : side == "right" ? 42 : 40;
+}
+
+function onComment(text) {
+    comment(text);
+}
+
+function onDwell(seconds) {
+    writeBlock("G4", "F" + secondsFormat.format(seconds));  // F under G4 is seconds, this block only
+}
+
+function onStop(optional) {
+    writeBlock(optional ? "M1" : "M0");
+}
+
+function onPassThrough(text) {
+    writeBlock(text);
+}
+
+// --- Drilling: CYCLE81..85 (SINUMERIK Operate), as the 828D post writes them -------------------
+
+var cycleCall = "";
+
+function p(value) {
+    return cycleFormat.format(value);
+}
+
+function cycleText(cycle) {
+    var rtp = cycle.returnZ, rfp = cycle.topZ, dp = cycle.bottomZ;
+    var sdis = cycle.retractZ - cycle.topZ;
+    if (sdis < 0)
+        error("the R plane (" + cycle.retractZ + ") is below the hole top (" + cycle.topZ + "): no safety distance");
+    var common = [p(rtp), p(rfp), p(sdis), p(dp)];
+    var dwell = secondsFormat.format(cycle.dwell);
+    switch (cycle.kind) {
+    case "drill":
+        return "CYCLE81(" + common.join(",") + ")";
+    case "drillDwell":
+        return "CYCLE82(" + common.concat(["", dwell]).join(",") + ")";
+    case "peck":
+    case "chipBreak":
+        var first = cycle.peck > 0 ? Math.max(rfp - cycle.peck, dp) : dp;
+        var vari = cycle.kind == "peck" ? 1 : 0;
+        return "CYCLE83(" + common.concat(["", p(first), "", "0", "0", "0", "1", vari, "",
+                                           p(cycle.peck > 0 ? cycle.peck : rfp - dp), p(cycle.peckClearance),
+                                           dwell, p(cycle.peckClearance)]).join(",") + ")";
+    case "tap":
+        if (!(cycle.spindleRpm > 0))
+            error("tapping needs the spindle running: no spindle speed before the cycle");
+        var pitch = cycle.feed / cycle.spindleRpm * (cycle.spindleClockwise ? 1 : -1);
+        return "CYCLE84(" + common.concat(["", dwell, cycle.spindleClockwise ? "3" : "4", "", p(pitch), "0",
+                                           Math.trunc(cycle.spindleRpm), Math.trunc(cycle.spindleRpm)]).join(",") + ")";
+    case "bore":
+        return "CYCLE85(" + common.concat(["", dwell, feedFormat.format(cycle.feed),
+                                           feedFormat.format(cycle.feed)]).join(",") + ")";
+    }
+    error("cycle " + cycle.kind + " is not supported by this post");
+}
+
+function onCycle(cycle) {
+    endTraori();
+    cycleCall = cycleText(cycle);
+    if (cycle.kind != "tap")
+        writeBlock(feedOutput.format(cycle.feed));
+    var z = getCurrentAxis("z");
+    if (z === null || z < cycle.returnZ) {
+        motionModal.reset();
+        zOutput.reset();
+        writeBlock(motionModal.format(0), zOutput.format(cycle.returnZ));
+    }
+    if (getProperty("drillingCalls") == "mcall")
+        writeBlock("MCALL", cycleCall);
+}
+
+function onCyclePoint(x, y, z) {
+    var words = [motionModal.format(0), xOutput.format(x), yOutput.format(y)];
+    if (!words[1] && !words[2]) {  // the same position twice: MCALL needs a motion block to drill again
+        xOutput.reset();
+        words[1] = xOutput.format(x);
+    }
+    writeBlock(words[0], words[1], words[2]);
+    if (getProperty("drillingCalls") != "mcall")
+        writeBlock(cycleCall);
+}
+
+function onCycleEnd(cycle) {
+    if (getProperty("drillingCalls") == "mcall")
+        writeBlock("MCALL");
+    zOutput.reset();
+    motionModal.reset();
+}
+
+function onClose() {
+    endTraori();
+    stopSpindleAndCoolant();
+    writeBlock("M30");
+}

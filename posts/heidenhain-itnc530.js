@@ -584,6 +584,15 @@ function notePlaneTravel(axis, value) {
     planeTravel[axis] = t ? {min: Math.min(t.min, value), max: Math.max(t.max, value)} : {min: value, max: value};
 }
 
+// CYCL DEF 19 with the machine's B and C (0, 0: the plane reset), after retracting to the travel
+// limit along the tool axis; the control needs the table turned by an L block.
+function cycle19Plane(b, c) {
+    writeBlock("L", "M140 MB MAX");
+    writeBlock("CYCL DEF 19.0", czech ? "NAKLOPENÍ ROVINY" : "WORKING PLANE");
+    writeBlock("CYCL DEF 19.1", "B" + angleFormat.format(b), "C" + angleFormat.format(c));
+    writeBlock("L", "C" + angleFormat.format(c), "B" + angleFormat.format(b), "R0", "FMAX");
+}
+
 // The moves after it are in the plane's frame (the kernel forgets every axis). PLANE SPATIAL turns
 // the table itself after retracting to the travel limit along the tool axis (TURN MB MAX), on the
 // branch the kinematics chose (SEQ: the sign of B); CYCL DEF 19 needs the table turned by hand.
@@ -595,29 +604,20 @@ function onWorkingPlane(plane) {
     var cycle19 = getProperty("workingPlane") == "cycle19";
     if (!plane.tilted) {
         if (cycle19) {
-            writeBlock("L", "M140 MB MAX");
-            writeBlock("CYCL DEF 19.0", czech ? "NAKLOPENÍ ROVINY" : "WORKING PLANE");
-            writeBlock("CYCL DEF 19.1", "B+0", "C+0");
-            writeBlock("L", "C+0", "B+0", "R0", "FMAX");
+            cycle19Plane(0, 0);
         } else {
             writeBlock("PLANE RESET TURN MB MAX FMAX");
         }
         forceMotion();
         return;
     }
-    if (plane.machine) {
-        notePlaneTravel("b", plane.machine.b);
-        notePlaneTravel("c", plane.machine.c);
-    }
     if (!plane.machine)
         throw new Error("a tilted working plane needs a machine with a five-axis chain (" + (machine ? machine.id : "none") +
                         " has none)");
+    notePlaneTravel("b", plane.machine.b);
+    notePlaneTravel("c", plane.machine.c);
     if (cycle19) {
-        writeBlock("L", "M140 MB MAX");
-        writeBlock("CYCL DEF 19.0", czech ? "NAKLOPENÍ ROVINY" : "WORKING PLANE");
-        writeBlock("CYCL DEF 19.1", "B" + angleFormat.format(plane.machine.b), "C" + angleFormat.format(plane.machine.c));
-        writeBlock("L", "C" + angleFormat.format(plane.machine.c), "B" + angleFormat.format(plane.machine.b), "R0",
-                   "FMAX");
+        cycle19Plane(plane.machine.b, plane.machine.c);
     } else {
         writeBlock("PLANE SPATIAL", "SPA" + angleFormat.format(plane.spatialA), "SPB" + angleFormat.format(plane.spatialB),
                    "SPC" + angleFormat.format(plane.spatialC), "TURN MB MAX FMAX", plane.machine.branch < 0 ? "SEQ-" : "SEQ+");

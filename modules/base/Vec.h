@@ -2,6 +2,7 @@
 // nearly every header includes it; heavy linear algebra uses Eigen inside .cpp files.
 #pragma once
 
+#include <array>
 #include <cmath>
 
 namespace camwb::base {
@@ -55,6 +56,16 @@ struct Box3 {
         max = {std::fmax(max.x, p.x), std::fmax(max.y, p.y), std::fmax(max.z, p.z)};
     }
 };
+
+// The eight corners of the box from `min` to `max` (a box's extent in a turned frame lies within
+// the corners turned there).
+inline std::array<Vec3, 8> boxCorners(const Vec3& min, const Vec3& max)
+{
+    std::array<Vec3, 8> out;
+    for (int c = 0; c < 8; ++c)
+        out[c] = {(c & 1) ? max.x : min.x, (c & 2) ? max.y : min.y, (c & 4) ? max.z : min.z};
+    return out;
+}
 
 inline double distance(Vec2 a, Vec2 b) { return (a - b).length(); }
 inline double distance(Vec3 a, Vec3 b) { return (a - b).length(); }

@@ -116,9 +116,8 @@ base::Result<std::vector<PlaneGroup>> operationPlanes(const Operation& op, const
 Stock stockInFrame(const Stock& stock, const toolpath::WorkingPlane& plane)
 {
     base::Box3 box;
-    for (int corner = 0; corner < 8; ++corner)
-        box.add(plane.toLocal({(corner & 1) ? stock.max.x : stock.min.x, (corner & 2) ? stock.max.y : stock.min.y,
-                               (corner & 4) ? stock.max.z : stock.min.z}));
+    for (const base::Vec3& corner : base::boxCorners(stock.min, stock.max))
+        box.add(plane.toLocal(corner));
     return {box.min, box.max};
 }
 

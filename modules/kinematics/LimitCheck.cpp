@@ -102,8 +102,8 @@ void LimitCheck::arc(const Arc& r)
         Vec3 min = *start, max = *start;
         extendByArc(min, max, *start, r);
         if (m_plane.tilted()) {  // the box's corners: the arc lies within them in any frame
-            for (int corner = 0; corner < 8; ++corner)
-                reach({(corner & 1) ? max.x : min.x, (corner & 2) ? max.y : min.y, (corner & 4) ? max.z : min.z});
+            for (const Vec3& corner : base::boxCorners(min, max))
+                reach(corner);
         } else {
             reach(min);
             reach(max);

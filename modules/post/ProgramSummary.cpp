@@ -60,9 +60,8 @@ ProgramSummary summarizeProgram(const Toolpath& toolpath)
             if (const std::optional<Vec3> start = position.point()) {
                 Vec3 min = *start, max = *start;
                 extendByArc(min, max, *start, *a);
-                for (int corner = 0; corner < 8; ++corner)  // in any frame the arc lies within them
-                    extents.add(
-                        {(corner & 1) ? max.x : min.x, (corner & 2) ? max.y : min.y, (corner & 4) ? max.z : min.z});
+                for (const Vec3& corner : base::boxCorners(min, max))  // in any frame the arc lies within them
+                    extents.add(corner);
             } else {
                 extents.add(a->to);
             }

@@ -199,9 +199,12 @@ private:
         const Vec3 start = *m_position;
         Vec3 min = start, max = start;
         extendByArc(min, max, start, a);
-        for (int corner = 0; corner < (m_plane.tilted() ? 8 : 2); ++corner) {  // any frame: the box's corners
-            const int c = m_plane.tilted() ? corner : corner * 7;              // flat: min and max
-            addPoint({(c & 1) ? max.x : min.x, (c & 2) ? max.y : min.y, (c & 4) ? max.z : min.z}, true);
+        if (m_plane.tilted()) {  // in a turned frame the arc lies within its box's corners
+            for (const Vec3& corner : base::boxCorners(min, max))
+                addPoint(corner, true);
+        } else {
+            addPoint(min, true);
+            addPoint(max, true);
         }
         const double length = arcLength(start, a);
         addFeed(length, a.feedMmPerMin);

@@ -108,6 +108,7 @@ private:
                                 const std::vector<SectionPose>& poses, const MachinePose& home,
                                 const base::Error& error) const;
     void keepPoleInCone(const kinematics::PoseSolver& solver, FiveAxisStep& step, const MachinePose& previous);
+    void turnOnPole(const FiveAxisStep& pole, const FiveAxisStep& next, double toolLengthMm);
     FiveAxisStep step(const SectionPose& pose, StepKind kind) const
     {
         FiveAxisStep s;
@@ -199,6 +200,27 @@ void SectionPlanner::keepPoleInCone(const kinematics::PoseSolver& solver, FiveAx
     }
 }
 
+// Leaving the pole, the free angle must reach the next pose's: turned there, on the spot, while
+// the tool axis lies on the free joint's direction, so the turn does not tilt the tool. Turned
+// during the next move, it would swing the tool axis off the CL's (a B that may only be negative
+// goes through the pole with C half a turn on: the axis would spiral, degrees off the CL).
+void SectionPlanner::turnOnPole(const FiveAxisStep& pole, const FiveAxisStep& next, double toolLengthMm)
+{
+    const auto free = static_cast<std::size_t>(poleJoint(m_machine.kinematics));
+    const double target = next.pose.rotaryDeg[free];
+    if (std::abs(target - pole.pose.rotaryDeg[free]) < 1e-9)
+        return;
+    FiveAxisStep turn = pole;
+    turn.record = next.record;
+    turn.feedMmPerMin = next.feedMmPerMin;
+    turn.feedKind = next.feedKind;
+    turn.reconfigure = false;
+    turn.pose.rotaryDeg[free] = target;
+    turn.pose.linear =
+        kinematics::linearAxesFor(m_machine.kinematics, turn.tool.tip, turn.pose.rotaryDeg, toolLengthMm);
+    m_plan.steps.push_back(turn);
+}
+
 base::Status SectionPlanner::plan(const std::vector<SectionPose>& poses, double toolLengthMm)
 {
     if (poses.empty())
@@ -242,6 +264,8 @@ base::Status SectionPlanner::plan(const std::vector<SectionPose>& poses, double 
             move.pose.linear =
                 kinematics::linearAxesFor(m_machine.kinematics, move.tool.tip, move.pose.rotaryDeg, toolLengthMm);
         }
+        if (previous && previous->pole && !move.pole && !chosen.reconfigure)
+            turnOnPole(FiveAxisStep(*previous), move, toolLengthMm);
         if (!previous) {
             // The post turns the rotaries to the first pose (onFiveAxisBegin); then a first rapid
             // goes over in X/Y before it moves down, as after a tool change.

@@ -143,6 +143,7 @@ private:
     void applySpindleAndCoolant(const Block& b, const BlockWords& w);
     void applyStop(const Block& b, const BlockWords& w, bool moved);
     void applyFeedRate(const BlockWords& w);
+    void setFeedMode(toolpath::FeedMode mode);
     void applyCompensation(const BlockWords& w);
     void setCompensationRadius();
     void endProgram(bool completed);
@@ -239,6 +240,7 @@ private:
     double m_feed = 0;
     double m_autoFeed = 0;
     toolpath::FeedMode m_feedMode = toolpath::FeedMode::PerMinute;
+    bool m_m136 = false;  // M136 until M137: F per spindle revolution
     toolpath::CutterCompSide m_comp = toolpath::CutterCompSide::Off;
     int m_tool = 0;
     double m_rpm = 0;

@@ -127,18 +127,22 @@ void Machine::applyFeedRate(const BlockWords& w)
 {
     using F = BlockWords::FeedWord;
     if (w.feed == F::Value || w.feed == F::Auto) {
-        if (m_feedMode != FeedMode::PerMinute) {
-            m_feedMode = FeedMode::PerMinute;
-            m_sink.feedMode(FeedModeChange{FeedMode::PerMinute});
-        }
-        m_feed = w.feed == F::Value ? w.feedValue * m_feedScale : m_autoFeed;
+        // With M136 in force a plain F is per revolution (iTNC 530 User's Manual, M136), in the
+        // unit of a plain F (0.1 inch in inch programs, as the iTNC post writes it).
+        setFeedMode(m_m136 ? FeedMode::PerRevolution : FeedMode::PerMinute);
+        m_feed = w.feed == F::Auto ? m_autoFeed : w.feedValue * m_feedScale;
     } else if (w.feed == F::PerRev) {
-        if (m_feedMode != FeedMode::PerRevolution) {
-            m_feedMode = FeedMode::PerRevolution;
-            m_sink.feedMode(FeedModeChange{FeedMode::PerRevolution});
-        }
+        setFeedMode(FeedMode::PerRevolution);
         m_feed = w.feedValue * m_scale;
     }
+}
+
+void Machine::setFeedMode(FeedMode mode)
+{
+    if (m_feedMode == mode)
+        return;
+    m_feedMode = mode;
+    m_sink.feedMode(FeedModeChange{mode});
 }
 
 void Machine::applyCompensation(const BlockWords& w)
@@ -214,6 +218,12 @@ void Machine::applySpindleAndCoolant(const Block& b, const BlockWords& w)
         case 14:
             spindleOn(false, b, w.mColumn);
             coolant(CoolantMode::Flood);
+            break;
+        case 136:
+        case 137:
+            // M136: F in mm per spindle revolution until M137 (iTNC 530 User's Manual, M136).
+            m_m136 = w.m[static_cast<std::size_t>(i)] == 136;
+            setFeedMode(m_m136 ? FeedMode::PerRevolution : FeedMode::PerMinute);
             break;
         case 126:
         case 127:

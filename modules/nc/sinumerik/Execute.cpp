@@ -187,10 +187,6 @@ void Machine::applyWorkOffset(const Program& p, const BlockWords& w)
         setSource(w.line);
         m_sink.workOffset(WorkOffset{w.workOffset});
     }
-    if (w.g53)
-        warning(p, {w.line, 0},
-                "G53/G153 (machine coordinates for this block) is not traced: positions stay in the "
-                "work offset's frame");
 }
 
 void Machine::applyFeedMode(const BlockWords& w)
@@ -413,6 +409,30 @@ bool Machine::checkKnown(const Program& p, const BlockWords& w, AxisMask& given)
            needKnown(p, w, kXyAxes, AxisMask{}, given, "cutter compensation", at);
 }
 
+// G53 / G153 / SUPA X.. Y.. Z..: machine coordinates, whose place in the work offset's frame the
+// trace does not know (the offsets are the control's). The axes the block gives are unknown after
+// it, and with the rotary axes turned all three are (a machine axis then moves the tip along a
+// turned direction), until a block gives them again; nothing is drawn meanwhile.
+bool Machine::moveInMachineCoordinates(const Program& p, const BlockWords& w)
+{
+    AxisMask moved;
+    for (int i = 0; i < 3; ++i)
+        if (w.axis[static_cast<std::size_t>(i)])
+            moved.bits |= axisBit(i).bits;
+    const bool turned = m_five.active() && m_five.fiveAxisMove();
+    m_known.forget(turned ? AxisMask{AxisMask::kAll} : moved);
+    if (turned)
+        m_five.moveUntraced();
+    if (!m_warnedMachineCoordinates) {
+        m_warnedMachineCoordinates = true;
+        warning(p, {w.line, 0},
+                std::string("G53/G153/SUPA: a move in machine coordinates is not traced (the work offset is the "
+                            "control's); ") +
+                    (turned ? "X, Y and Z are" : "the axes it gives are") + " unknown until a block gives them");
+    }
+    return false;
+}
+
 bool Machine::applyMotion(const Program& p, const BlockWords& w)
 {
     const int line = w.line;
@@ -430,6 +450,8 @@ bool Machine::applyMotion(const Program& p, const BlockWords& w)
             warning(p, {line, 0}, "arc words without G2/G3: ignored");
         return false;
     }
+    if (w.g53 && anyLinearAxis)
+        return moveInMachineCoordinates(p, w);
     AxisMask given;
     bool traced = true;
     if (!checkKnown(p, w, given) || !fiveAxisReady(p, w, rotary, given, traced))

@@ -90,6 +90,9 @@ bool Machine::readKeyword(const Program& p, const Block& b, const Word& word, Bl
     case Keyword::TraFoof:
         w.transform = 0;
         break;
+    case Keyword::Supa:
+        w.g53 = true;  // G53 and more (handwheel and external offsets suppressed): machine coordinates
+        break;
     case Keyword::Cycle800:
         warning(p, word.pos,
                 "CYCLE800 (swivel plane) is recognised; the swivelled plane is not traced yet: positions "

@@ -157,7 +157,8 @@ private:
     void applyCompensation(const BlockWords& w);
     void setCompensationRadius();
     void applyDwell(const Program& p, const BlockWords& w);
-    bool applyMotion(const Program& p, const BlockWords& w);  // true: the tool moved
+    bool applyMotion(const Program& p, const BlockWords& w);
+    bool moveInMachineCoordinates(const Program& p, const BlockWords& w);  // true: the tool moved
     void applyCalls(const Program& p, const Block& block, const BlockWords& w, bool moved);
     bool applyStop(const Program& p, const Block& block, const BlockWords& w);
     Vec3 blockTarget(const BlockWords& w) const;
@@ -223,6 +224,7 @@ private:
     std::string m_toolName;
     std::optional<ModalCall> m_modalCall;
     bool m_fiveAxisWarned = false;
+    bool m_warnedMachineCoordinates = false;  // G53/G153/SUPA warned once
     FiveAxisState m_five;
     int m_currentFile = 0;
     int m_currentLine = 0;

@@ -106,7 +106,7 @@ enum class WordKind : std::uint8_t {
 // the positive / negative sense only).
 enum class ValueMode : std::uint8_t { Modal, Absolute, Incremental, Shortest, Positive, Negative };
 
-enum class Keyword : std::uint8_t { DiamOn, DiamOf, TraOri, TraFoof, Cycle800, Frame, Ret, SetAl, Stopre };
+enum class Keyword : std::uint8_t { DiamOn, DiamOf, TraOri, TraFoof, Cycle800, Frame, Ret, SetAl, Stopre, Supa };
 
 // ToolData: $TC_DPn[t, d] (code = n, expr2 = t, expr3 = d), the tool offsets a program sets.
 enum class AssignTarget : std::uint8_t { R, RIndirect, Local, ToolData };

@@ -29,13 +29,13 @@ bool isAddressLetter(std::string_view u)
 bool isPassiveKeyword(std::string_view u)
 {
     static constexpr std::string_view kPassive[] = {
-        "SOFT",    "BRISK",   "DRIVE",     "FFWON",   "FFWOF",   "CFC",      "CFTCP",     "CFIN",    "COMPON",
-        "COMPOF",  "COMPCAD", "COMPCURV",  "ORIWKS",  "ORIMKS",  "ORIAXES",  "ORIVECT",   "UPATH",   "SPATH",
-        "DISPLON", "DISPLOF", "SBLON",     "SBLOF",   "WAITM",   "STOPFIFO", "STARTFIFO", "DIAM90",  "DIAMCYCOF",
-        "CUT2D",   "CUT2DF",  "CUT3DC",    "CUT3DF",  "SUPA",    "G_GROUP",  "SPIF1",     "SPIF2",   "OFFN",
-        "NORM",    "KONT",    "KONTC",     "KONTT",   "WALIMON", "WALIMOF",  "PTP",       "CP",      "SPOS",
-        "SPOSA",   "M19",     "FGROUP",    "FTOCON",  "FTOCOF",  "ACC",      "OVR",       "VELOLIM", "JERKLIM",
-        "CTAB",    "DELT",    "WORKPIECE", "G_FNAME", "FNORM",   "FLIN",     "FCUB",      "CPRECON", "CPRECOF",
+        "SOFT",    "BRISK",     "DRIVE",    "FFWON",   "FFWOF",   "CFC",      "CFTCP",     "CFIN",    "COMPON",
+        "COMPOF",  "COMPCAD",   "COMPCURV", "ORIWKS",  "ORIMKS",  "ORIAXES",  "ORIVECT",   "UPATH",   "SPATH",
+        "DISPLON", "DISPLOF",   "SBLON",    "SBLOF",   "WAITM",   "STOPFIFO", "STARTFIFO", "DIAM90",  "DIAMCYCOF",
+        "CUT2D",   "CUT2DF",    "CUT3DC",   "CUT3DF",  "G_GROUP", "SPIF1",    "SPIF2",     "OFFN",    "NORM",
+        "KONT",    "KONTC",     "KONTT",    "WALIMON", "WALIMOF", "PTP",      "CP",        "SPOS",    "SPOSA",
+        "M19",     "FGROUP",    "FTOCON",   "FTOCOF",  "ACC",     "OVR",      "VELOLIM",   "JERKLIM", "CTAB",
+        "DELT",    "WORKPIECE", "G_FNAME",  "FNORM",   "FLIN",    "FCUB",     "CPRECON",   "CPRECOF",
     };
     return std::find(std::begin(kPassive), std::end(kPassive), u) != std::end(kPassive);
 }
@@ -329,12 +329,14 @@ bool Parser::parseRepetitions(Block& block)
 std::optional<bool> Parser::parseKeyword(Block& block, const Token& t, const std::string& u)
 {
     const Pos pos = posOf(t);
-    if (u == "DIAMON" || u == "DIAMOF" || u == "TRAORI" || u == "TRAFOOF" || u == "RET" || u == "STOPRE") {
+    if (u == "DIAMON" || u == "DIAMOF" || u == "TRAORI" || u == "TRAFOOF" || u == "RET" || u == "STOPRE" ||
+        u == "SUPA") {
         const Keyword k = u == "DIAMON"    ? Keyword::DiamOn
                           : u == "DIAMOF"  ? Keyword::DiamOf
                           : u == "TRAORI"  ? Keyword::TraOri
                           : u == "TRAFOOF" ? Keyword::TraFoof
                           : u == "RET"     ? Keyword::Ret
+                          : u == "SUPA"    ? Keyword::Supa
                                            : Keyword::Stopre;
         addWord(block, WordKind::Keyword, pos).code = static_cast<std::int32_t>(k);
         ++m_pos;

@@ -110,6 +110,30 @@ TEST(FiveAxisPlan, ThePoleKeepsC)
     EXPECT_NEAR(plan.value().maxAxisDeviationDeg, 0.004, 1e-9);
 }
 
+// Through the pole on a B that may not be positive, the tool axis goes from one side to the other:
+// C must turn half a turn, and it turns on the pole (tip and axis still), not during the next
+// move, where B and C together would swing the axis off the CL's plane.
+TEST(FiveAxisPlan, CTurnsOnThePoleNotOnTheWayOut)
+{
+    kinematics::Machine machine = bcTable();
+    machine.axes[3] = {"B", true, -120, 0};
+    const auto tp =
+        fiveAxisSection({{{-5, 0, 0}, tilted(20, 180)}, {{0, 0, 0}, {0, 0, 1}}, {{5, 0, 0}, tilted(20, 0)}});
+    auto plan = planFiveAxis(tp, machine, {}, 0.01);
+    ASSERT_TRUE(plan) << plan.error().message;
+    const auto m = moves(plan.value());
+    ASSERT_EQ(m.size(), 4u);
+    EXPECT_TRUE(m[1]->pole);
+    EXPECT_NEAR(m[1]->pose.rotaryDeg[1], m[0]->pose.rotaryDeg[1], 1e-9);  // arrives with C kept
+    // The turn: the pole's tip and axis, B still 0, C where the last move needs it.
+    EXPECT_NEAR(distance(m[2]->tool.tip, Vec3{0, 0, 0}), 0, 1e-12);
+    EXPECT_NEAR(m[2]->pose.rotaryDeg[0], 0, 1e-9);
+    EXPECT_NEAR(std::abs(m[2]->pose.rotaryDeg[1] - m[1]->pose.rotaryDeg[1]), 180, 1e-9);
+    EXPECT_NEAR(m[3]->pose.rotaryDeg[1], m[2]->pose.rotaryDeg[1], 1e-9);  // the way out turns B only
+    EXPECT_LT(m[3]->pose.rotaryDeg[0], 0);
+    EXPECT_EQ(m[2]->record, m[3]->record);
+}
+
 TEST(FiveAxisPlan, RetractsTurnsAndReentersWhereTheLimitsForceIt)
 {
     // The tool axis goes round twice at 30 deg of tilt: C must pass its +-200 limit.

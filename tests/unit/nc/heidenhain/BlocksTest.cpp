@@ -75,6 +75,21 @@ TEST(HeidenhainBlocks, HeaderFormsOfThePost)
     EXPECT_TRUE(r.result.completed);
 }
 
+// M136: F per spindle revolution until M137 (the iTNC post writes it for per-revolution CL feeds).
+TEST(HeidenhainBlocks, M136FeedsPerRevolution)
+{
+    const Traced r = run("0 BEGIN PGM T MM\n1 L Z+5 R0 FMAX\n2 L M136\n3 L Z-1 F0.1\n4 L M137\n5 L Z+5 F200\n"
+                         "6 END PGM T MM\n");
+    EXPECT_TRUE(r.result.diagnostics.empty()) << r.diagnostics()[0];
+    const auto modes = r.all<FeedModeChange>();
+    ASSERT_EQ(modes.size(), 2u);
+    EXPECT_EQ(modes[0].mode, FeedMode::PerRevolution);
+    EXPECT_EQ(modes[1].mode, FeedMode::PerMinute);
+    ASSERT_EQ(r.all<Linear>().size(), 2u);
+    EXPECT_DOUBLE_EQ(r.all<Linear>()[0].feedMmPerMin, 0.1);
+    EXPECT_DOUBLE_EQ(r.all<Linear>()[1].feedMmPerMin, 200);
+}
+
 TEST(HeidenhainBlocks, LoneCarriageReturnsAndUnnumberedBlocks)
 {
     const Traced r = run("BEGIN PGM T MM\rL X+1 FMAX\rL X+2 FMAX\rEND PGM T MM\r");

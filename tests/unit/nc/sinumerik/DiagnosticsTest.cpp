@@ -65,6 +65,22 @@ TEST(SinumerikDiagnostics, WarningsForWhatIsNotTraced)
     EXPECT_EQ(r.all<toolpath::PassThrough>()[0].text, "TRANS X10");
 }
 
+// SUPA (G53 and more) positions in machine coordinates: Z0 there is the top of the travel, not
+// the work offset's Z0, so the trace must not draw a rapid to Z0 (into the part); Z is unknown
+// until a block gives it, and the next move moves only the known axes.
+TEST(SinumerikDiagnostics, SupaLeavesTheAxesItMovesUnknown)
+{
+    const NcRun r = run("G0 X10 Y10 Z5\nG0 SUPA Z0 D0\nG0 X20\nG1 Z-1 F100\nM30\n");
+    EXPECT_EQ(r.errors(), 0) << r.diagnostics();
+    expectAt(r, "G53/G153/SUPA: a move in machine coordinates is not traced", 2, 0, Severity::Warning);
+    const auto rapids = r.all<toolpath::Rapid>();
+    ASSERT_EQ(rapids.size(), 2u);
+    EXPECT_EQ(rapids[1].to.x, 20);
+    EXPECT_FALSE(rapids[1].axes.has(2)) << "Z after SUPA is not known";
+    ASSERT_EQ(r.all<toolpath::Linear>().size(), 1u);
+    EXPECT_EQ(r.all<toolpath::Linear>()[0].to.z, -1);
+}
+
 TEST(SinumerikDiagnostics, DiagnosticsAreCapped)
 {
     InterpretOptions options;

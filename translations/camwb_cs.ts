@@ -660,11 +660,15 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>none: no limits checked</source>
+        <source>The machine the program is traced on: its limits are checked, and five-axis NC (M128, TRAORI, B and C words) is read through its kinematics</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>%1 (its limits are checked)</source>
+        <source>None: no limits checked, three axes</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 (%2)</source>
         <translation type="unfinished"></translation>
     </message>
 </context>
@@ -1089,6 +1093,18 @@ CAM and post-processor workbench.</source>
     </message>
     <message>
         <source>Closing the window loses them.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Machine</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The NC program is traced without a machine</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The NC program is traced on the machine %1</source>
         <translation type="unfinished"></translation>
     </message>
 </context>

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cstdlib>
 #include <filesystem>
+#include <map>
 #include <system_error>
 
 namespace camwb::base {
@@ -56,6 +57,34 @@ std::vector<std::string> dataDirPaths(const char* envVariable, const std::string
     for (DataDir& dir : dataDirs(envVariable, kind, sourceSubdir))
         paths.push_back(std::move(dir.path));
     return paths;
+}
+
+std::vector<DataFile> listDataFiles(const std::vector<DataDir>& dirs, const std::string& extension)
+{
+    std::map<std::string, DataFile> byId;
+    std::vector<std::string> seenDirs;
+    for (const DataDir& dir : dirs) {
+        std::error_code ec;
+        const std::string canonical = fs::weakly_canonical(dir.path, ec).string();
+        if (std::find(seenDirs.begin(), seenDirs.end(), canonical) != seenDirs.end())
+            continue;
+        seenDirs.push_back(canonical);
+        std::vector<fs::path> files;
+        for (fs::directory_iterator it(dir.path, ec), end; !ec && it != end; it.increment(ec))
+            if (it->path().extension() == extension && it->is_regular_file(ec))
+                files.push_back(it->path());
+        std::sort(files.begin(), files.end());
+        for (const fs::path& file : files) {
+            const std::string id = file.stem().string();
+            auto [entry, added] = byId.try_emplace(id, DataFile{id, file.string(), dir.builtIn, {}});
+            if (!added)
+                entry->second.shadows.push_back(file.string());
+        }
+    }
+    std::vector<DataFile> entries;
+    for (auto& [id, entry] : byId)
+        entries.push_back(std::move(entry));
+    return entries;
 }
 
 }  // namespace camwb::base

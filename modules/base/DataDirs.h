@@ -25,6 +25,18 @@ std::vector<DataDir> dataDirs(const char* envVariable, const std::string& kind, 
 Result<std::string> findDataFile(const std::string& kind, const std::string& id, const std::string& extension,
                                  const std::vector<std::string>& dirs);
 
+// One "<id><extension>" file of the folders: the first folder's with that id, and the files it hides.
+struct DataFile {
+    std::string id;
+    std::string path;
+    bool builtIn = false;
+    std::vector<std::string> shadows;  // files with the same id in later folders, which this one hides
+};
+
+// Every "<id><extension>" file in the folders, sorted by id; the first folder with an id wins (a
+// folder listed twice, e.g. the source tree that is also the installed one, counts once).
+std::vector<DataFile> listDataFiles(const std::vector<DataDir>& dirs, const std::string& extension);
+
 // Just the paths of dataDirs(), in order.
 std::vector<std::string> dataDirPaths(const char* envVariable, const std::string& kind,
                                       const std::string& sourceSubdir);

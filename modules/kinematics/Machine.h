@@ -4,6 +4,7 @@
 // --machine` pick one by id.
 #pragma once
 
+#include "base/DataDirs.h"
 #include "base/Result.h"
 #include "kinematics/KinematicChain.h"
 
@@ -61,6 +62,8 @@ base::Result<Machine> loadMachine(const std::string& path);
 // and the source tree's resources/machines, in that order; "<dir>/<id>.json", first match wins.
 // An `id` ending in ".json" is the path of a machine file, read as it is.
 std::vector<std::string> defaultMachineDirs();
+// Every "<id>.json" in those folders, sorted by id, the first folder's file for an id.
+std::vector<base::DataFile> listMachineFiles();
 base::Result<Machine> findMachine(const std::string& id, const std::vector<std::string>& dirs);
 
 }  // namespace camwb::kinematics

@@ -166,6 +166,11 @@ std::vector<std::string> defaultMachineDirs()
     return base::dataDirPaths("CAMWB_MACHINE_PATH", "machines", "resources/machines");
 }
 
+std::vector<base::DataFile> listMachineFiles()
+{
+    return base::listDataFiles(base::dataDirs("CAMWB_MACHINE_PATH", "machines", "resources/machines"), ".json");
+}
+
 base::Result<Machine> findMachine(const std::string& id, const std::vector<std::string>& dirs)
 {
     if (id.size() > 5 && id.compare(id.size() - 5, 5, ".json") == 0)

@@ -1,13 +1,6 @@
 #include "post/PostRegistry.h"
 
-#include <algorithm>
-#include <filesystem>
-#include <map>
-#include <system_error>
-
 namespace camwb::post {
-
-namespace fs = std::filesystem;
 
 std::vector<base::DataDir> defaultPostDirs(const std::vector<std::string>& extraDirs)
 {
@@ -19,34 +12,7 @@ std::vector<base::DataDir> defaultPostDirs(const std::vector<std::string>& extra
     return dirs;
 }
 
-std::vector<PostEntry> listPosts(const std::vector<base::DataDir>& dirs)
-{
-    std::map<std::string, PostEntry> byId;
-    std::vector<std::string> seenDirs;
-    for (const base::DataDir& dir : dirs) {
-        std::error_code ec;
-        // The same folder twice (the source tree is also the installed one) is not an override.
-        const std::string canonical = fs::weakly_canonical(dir.path, ec).string();
-        if (std::find(seenDirs.begin(), seenDirs.end(), canonical) != seenDirs.end())
-            continue;
-        seenDirs.push_back(canonical);
-        std::vector<fs::path> files;
-        for (fs::directory_iterator it(dir.path, ec), end; !ec && it != end; it.increment(ec))
-            if (it->path().extension() == ".js" && it->is_regular_file(ec))
-                files.push_back(it->path());
-        std::sort(files.begin(), files.end());
-        for (const fs::path& file : files) {
-            const std::string id = file.stem().string();
-            auto [entry, added] = byId.try_emplace(id, PostEntry{id, file.string(), dir.builtIn, {}});
-            if (!added)
-                entry->second.shadows.push_back(file.string());
-        }
-    }
-    std::vector<PostEntry> entries;
-    for (auto& [id, entry] : byId)
-        entries.push_back(std::move(entry));
-    return entries;
-}
+std::vector<PostEntry> listPosts(const std::vector<base::DataDir>& dirs) { return base::listDataFiles(dirs, ".js"); }
 
 base::Result<std::string> findPost(const std::string& id, const std::vector<base::DataDir>& dirs)
 {

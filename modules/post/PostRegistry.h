@@ -17,12 +17,7 @@ namespace camwb::post {
 // `extraDirs` (from --post-path) first, then base::dataDirs("CAMWB_POST_PATH", "posts", "posts").
 std::vector<base::DataDir> defaultPostDirs(const std::vector<std::string>& extraDirs = {});
 
-struct PostEntry {
-    std::string id;
-    std::string path;
-    bool builtIn = false;
-    std::vector<std::string> shadows;  // files with the same id in later folders, which this one hides
-};
+using PostEntry = base::DataFile;
 
 // Every "<id>.js" in the folders, sorted by id; the first folder with an id wins.
 std::vector<PostEntry> listPosts(const std::vector<base::DataDir>& dirs);

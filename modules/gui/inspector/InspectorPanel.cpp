@@ -4,7 +4,6 @@
 
 #include <QComboBox>
 #include <QFormLayout>
-#include <QLabel>
 #include <QListWidget>
 #include <QVBoxLayout>
 
@@ -17,7 +16,7 @@ InspectorPanel::InspectorPanel(QWidget* parent) :
     m_dialect(new QComboBox(this)),
     m_source(new QComboBox(this)),
     m_tools(new QListWidget(this)),
-    m_machine(new QLabel(this)),
+    m_machine(new QComboBox(this)),
     m_modal(new ModalStatePanel(this))
 {
     m_dialect->setObjectName(QStringLiteral("dialectCombo"));
@@ -31,9 +30,10 @@ InspectorPanel::InspectorPanel(QWidget* parent) :
     m_tools->setObjectName(QStringLiteral("toolList"));
     m_tools->setMaximumHeight(64);
     m_modal->setObjectName(QStringLiteral("modalStatePanel"));
-    m_machine->setObjectName(QStringLiteral("machineLabel"));
-    m_machine->setWordWrap(true);
-    setMachineName({});
+    m_machine->setObjectName(QStringLiteral("machineCombo"));
+    m_machine->setToolTip(tr("The machine the program is traced on: its limits are checked, and five-axis "
+                             "NC (M128, TRAORI, B and C words) is read through its kinematics"));
+    setMachines({});
 
     auto* form = new QFormLayout;
     form->addRow(tr("Dialect"), m_dialect);
@@ -46,6 +46,10 @@ InspectorPanel::InspectorPanel(QWidget* parent) :
     layout->addWidget(m_modal, 1);
 
     connect(m_dialect, &QComboBox::currentIndexChanged, this, [this] { emit dialectChosen(dialect()); });
+    connect(m_machine, &QComboBox::currentIndexChanged, this, [this] {
+        if (!m_filling)
+            emit machineChosen(machineId());
+    });
     connect(m_source, &QComboBox::currentIndexChanged, this, [this] { emit showNcTraceChosen(showsNcTrace()); });
     connect(m_tools, &QListWidget::itemChanged, this, [this](QListWidgetItem* item) {
         if (!m_filling)
@@ -66,10 +70,31 @@ void InspectorPanel::setDialect(std::optional<nc::Dialect> dialect)
     m_dialect->setCurrentIndex(m_dialect->findData(dialect ? static_cast<int>(*dialect) : -1));
 }
 
-void InspectorPanel::setMachineName(const QString& name)
+void InspectorPanel::setMachines(const std::vector<std::pair<QString, QString>>& machines)
 {
-    m_machine->setText(name.isEmpty() ? tr("none: no limits checked") : tr("%1 (its limits are checked)").arg(name));
+    const QString kept = machineId();
+    m_filling = true;
+    m_machine->clear();
+    m_machine->addItem(tr("None: no limits checked, three axes"), QString());
+    for (const auto& [id, name] : machines)
+        m_machine->addItem(name == id ? id : tr("%1 (%2)").arg(name, id), id);
+    m_filling = false;
+    setMachineId(kept);
 }
+
+void InspectorPanel::setMachineId(const QString& id)
+{
+    m_filling = true;
+    int index = m_machine->findData(id);
+    if (index < 0 && !id.isEmpty()) {  // a job's machine from a file outside the folders
+        m_machine->addItem(id, id);
+        index = m_machine->count() - 1;
+    }
+    m_machine->setCurrentIndex(std::max(index, 0));
+    m_filling = false;
+}
+
+QString InspectorPanel::machineId() const { return m_machine->currentData().toString(); }
 
 bool InspectorPanel::showsNcTrace() const { return m_source->currentIndex() == 0; }
 

@@ -1,6 +1,7 @@
-// The inspector dock's content: the dialect the program is read in (auto or a chosen one), what
-// the 3D view shows (the NC trace or the operations' toolpath), a checkable list of the tools in
-// the backplot and the modal state of the cursor's block. Emits choices; decides nothing.
+// The inspector dock's content: the dialect the program is read in (auto or a chosen one), the
+// machine it is traced on (its limits, and its kinematics for five-axis NC), what the 3D view
+// shows (the NC trace or the operations' toolpath), a checkable list of the tools in the
+// backplot and the modal state of the cursor's block. Emits choices; decides nothing.
 #pragma once
 
 #include "nc/Dialect.h"
@@ -8,10 +9,10 @@
 #include <QWidget>
 
 #include <optional>
+#include <utility>
 #include <vector>
 
 class QComboBox;
-class QLabel;
 class QListWidget;
 class QListWidgetItem;
 
@@ -34,19 +35,23 @@ public:
     void setTools(const std::vector<int>& tools, const std::vector<int>& hidden);
     void setToolChecked(int tool, bool checked);
     QListWidget* toolList() const { return m_tools; }
-    // The machine the program is checked against (empty: none).
-    void setMachineName(const QString& name);
+    // The machines to choose from (id and shown name); the choice is kept where the id still is.
+    void setMachines(const std::vector<std::pair<QString, QString>>& machines);
+    // The machine the program is traced on (empty: none), shown without emitting machineChosen.
+    void setMachineId(const QString& id);
+    QString machineId() const;
 
 signals:
     void dialectChosen(std::optional<camwb::nc::Dialect> dialect);
     void showNcTraceChosen(bool show);
     void toolVisibilityChanged(int tool, bool visible);
+    void machineChosen(const QString& id);  // empty: none
 
 private:
     QComboBox* m_dialect;
     QComboBox* m_source;
     QListWidget* m_tools;
-    QLabel* m_machine;
+    QComboBox* m_machine;
     ModalStatePanel* m_modal;
     bool m_filling = false;
 };

@@ -324,8 +324,7 @@ void MainWindow::connectWorkbench()
         const auto machine = m_workbench->machine();
         m_inspector->setMachine(machine);
         m_inspector->setToolTable(m_workbench->toolTable());
-        m_inspectorPanel->setMachineName(
-            machine ? QString::fromStdString(machine->name.empty() ? machine->id : machine->name) : QString());
+        m_inspectorPanel->setMachineId(machine ? QString::fromStdString(machine->id) : QString());
         m_inspector->loadProgram(m_workbench->ncText(), base + '.' + m_workbench->ncExtension());
         m_ncDocument->showsPostedProgram();
     });
@@ -366,6 +365,8 @@ void MainWindow::connectInspector()
         statusBar()->showMessage(tr("Segment from the called program %1; the editor shows its call.").arg(where), 5000);
     });
     connect(m_inspectorPanel, &InspectorPanel::dialectChosen, m_inspector, &NcInspector::setDialect);
+    connect(m_inspectorPanel, &InspectorPanel::machineChosen, this, &MainWindow::traceOnMachine);
+    fillMachineList();
     connect(m_inspectorPanel, &InspectorPanel::toolVisibilityChanged, m_view, &View3D::setToolVisible);
     connect(m_inspectorPanel, &InspectorPanel::showNcTraceChosen, this, [this](bool show) {
         if (show) {
@@ -376,6 +377,45 @@ void MainWindow::connectInspector()
         }
         refreshToolList();
     });
+}
+
+// The machines of the machine folders, by name; a file that does not load is reported, not offered.
+void MainWindow::fillMachineList()
+{
+    std::vector<std::pair<QString, QString>> machines;
+    for (const base::DataFile& file : kinematics::listMachineFiles()) {
+        auto machine = kinematics::loadMachine(file.path);
+        if (!machine) {
+            m_report->append(Workbench::Severity::Warning, QString::fromStdString(machine.error().toString()));
+            continue;
+        }
+        const std::string& name = machine.value().name;
+        machines.emplace_back(QString::fromStdString(file.id), QString::fromStdString(name.empty() ? file.id : name));
+    }
+    m_inspectorPanel->setMachines(machines);
+}
+
+// The program in the editor traced again on the machine the user chose (a standalone five-axis
+// program needs its machine's kinematics; a posted one starts on its job's machine).
+void MainWindow::traceOnMachine(const QString& id)
+{
+    std::shared_ptr<const kinematics::Machine> machine;
+    if (!id.isEmpty()) {
+        auto found = kinematics::findMachine(id.toStdString(), kinematics::defaultMachineDirs());
+        if (!found) {
+            m_report->append(Workbench::Severity::Error, QString::fromStdString(found.error().toString()));
+            m_prompter->showError(tr("Machine"), QString::fromStdString(found.error().toString()));
+            m_inspectorPanel->setMachineId(m_inspector->machine() ? QString::fromStdString(m_inspector->machine()->id)
+                                                                  : QString());
+            return;
+        }
+        machine = std::make_shared<const kinematics::Machine>(std::move(found).value());
+    }
+    m_inspector->setMachine(std::move(machine));
+    m_inspector->traceNow();
+    m_report->append(Workbench::Severity::Note, id.isEmpty()
+                                                    ? tr("The NC program is traced without a machine")
+                                                    : tr("The NC program is traced on the machine %1").arg(id));
 }
 
 void MainWindow::refreshToolList()

@@ -75,6 +75,8 @@ private:
     void connectWorkbench();
     void connectInspector();
     void refreshToolList();
+    void fillMachineList();
+    void traceOnMachine(const QString& id);
     void updateTitle();
     void openTaskPanel(int index, const document::Operation& operation,
                        const std::optional<ops::ToolController>& newTool);

@@ -249,10 +249,9 @@ TEST_P(PostRoundTrip, NcTracesBackToTheCl)
     EXPECT_FALSE(difference) << nc << ": " << *difference;
 }
 
-// The round trip must be able to fail: the example job's Klartext with one coordinate moved by
-// 0.1 mm, and the thesis case with its plunge feed parameter changed, no longer move as their CL.
-std::optional<std::string> klartextDifference(const std::string& caseName, const std::string& from,
-                                              const std::string& to, const fs::path& clFile)
+// The iTNC post's expected.h of `caseName` with `from` replaced by `to`, written to a temporary
+// file; empty when `from` is not in it.
+fs::path mutatedKlartext(const std::string& caseName, const std::string& from, const std::string& to)
 {
     const fs::path dir = fs::path(CAMWB_TEST_DATA_DIR) / "posts/heidenhain-itnc530/tests" / caseName;
     std::ifstream in(dir / "expected.h");
@@ -260,10 +259,21 @@ std::optional<std::string> klartextDifference(const std::string& caseName, const
     const std::size_t at = text.find(from);
     EXPECT_NE(at, std::string::npos) << from;
     if (at == std::string::npos)
-        return std::nullopt;
+        return {};
     text.replace(at, from.size(), to);
     const fs::path mutated = fs::path(testing::TempDir()) / ("mutated-" + caseName + ".h");
     std::ofstream(mutated) << text;
+    return mutated;
+}
+
+// The round trip must be able to fail: the example job's Klartext with one coordinate moved by
+// 0.1 mm, and the thesis case with its plunge feed parameter changed, no longer move as their CL.
+std::optional<std::string> klartextDifference(const std::string& caseName, const std::string& from,
+                                              const std::string& to, const fs::path& clFile)
+{
+    const fs::path mutated = mutatedKlartext(caseName, from, to);
+    if (mutated.empty())
+        return std::nullopt;
     auto cl = toolpath::readClFile(clFile.string(), *toolpath::clFormatFromExtension(clFile.string()));
     EXPECT_TRUE(cl.ok());
     toolpath::ToolpathRecorder recorder;
@@ -285,18 +295,13 @@ TEST(PostRoundTripCanFail, AMovedKlartextCoordinateOrAChangedFeedParameter)
 std::optional<std::string> fiveAxisDifference(const std::string& caseName, const std::string& from,
                                               const std::string& to)
 {
-    const fs::path root = CAMWB_TEST_DATA_DIR;
-    const fs::path dir = root / "posts/heidenhain-itnc530/tests" / caseName;
-    std::ifstream in(dir / "expected.h");
-    std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-    const std::size_t at = text.find(from);
-    EXPECT_NE(at, std::string::npos) << from;
-    if (at == std::string::npos)
+    const fs::path mutated = mutatedKlartext(caseName, from, to);
+    if (mutated.empty())
         return std::nullopt;
-    text.replace(at, from.size(), to);
-    const fs::path mutated = fs::path(testing::TempDir()) / ("mutated-" + caseName + ".h");
-    std::ofstream(mutated) << text;
-    return roundTrip({caseName, dir, {}, {}, root / "posts/heidenhain-itnc530.js"}, mutated);
+    const fs::path root = CAMWB_TEST_DATA_DIR;
+    return roundTrip(
+        {caseName, root / "posts/heidenhain-itnc530/tests" / caseName, {}, {}, root / "posts/heidenhain-itnc530.js"},
+        mutated);
 }
 
 // A C word 0.01 degree off turns the tool axis 9e-5 rad (with M128 the tip stays); without TCPM

@@ -19,6 +19,9 @@ install(FILES ${PROJECT_SOURCE_DIR}/resources/icons/camwb.svg
 # Post scripts only: their golden tests (posts/<id>/tests/) stay in the source tree.
 file(GLOB post_scripts CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/posts/*.js)
 install(FILES ${post_scripts} DESTINATION ${CMAKE_INSTALL_DATADIR}/camwb/posts)
+# Code several posts share, which they include("name") from posts/include/.
+file(GLOB post_includes CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/posts/include/*.js)
+install(FILES ${post_includes} DESTINATION ${CMAKE_INSTALL_DATADIR}/camwb/posts/include)
 install(DIRECTORY ${PROJECT_SOURCE_DIR}/resources/machines/ DESTINATION ${CMAKE_INSTALL_DATADIR}/camwb/machines
         FILES_MATCHING PATTERN "*.json")
 install(FILES ${PROJECT_SOURCE_DIR}/resources/examples/example-block.camwb

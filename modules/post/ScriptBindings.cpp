@@ -288,17 +288,20 @@ void ScriptKernel::writeComment(const QJSValue& text) { m_writer.writeComment(wo
 
 void ScriptKernel::writeln(const QJSValue& text) { m_writer.writeLine(wordText(text)); }
 
-int ScriptKernel::callerLine()
+std::pair<std::string, int> ScriptKernel::callerLocation()
 {
-    // QJSEngine has no public call-stack API: an Error created now carries the calling script line.
+    // QJSEngine has no public call-stack API: an Error created now carries the calling script's
+    // file and line.
     m_engine->throwError(QJSValue::GenericError, QStringLiteral("location"));
     const QJSValue located = m_engine->catchError();
-    return located.property("lineNumber").toInt();
+    const std::string file = located.property("fileName").toString().toStdString();
+    return {file.empty() ? m_postFile : file, located.property("lineNumber").toInt()};
 }
 
 void ScriptKernel::warning(const QJSValue& text)
 {
-    m_messages.push_back(base::warningDiagnostic(wordText(text), m_postFile, callerLine()));
+    const auto [file, line] = callerLocation();
+    m_messages.push_back(base::warningDiagnostic(wordText(text), file, line));
 }
 
 void ScriptKernel::error(const QJSValue& text)

@@ -116,7 +116,7 @@ ScriptRun::ScriptRun(std::string postFile, const PostContext& context, std::chro
     for (const char* name :
          {"createFormat", "createVariable", "createModal", "createPending", "writeComment", "writeln", "warning",
           "error", "setBlockNumbering", "getCurrentPosition", "getCurrentAxis", "getProperty", "expandCyclePoint",
-          "machiningSeconds", "getFiveAxisTravel", "getMachinePose"})
+          "machiningSeconds", "getFiveAxisTravel", "getMachinePose", "include"})
         global.setProperty(name, kernel.property(name));  // QObject methods stay bound to the kernel
     global.setProperty("programName", qs(context.programName));
     global.setProperty("dateString", qs(formatDateUtc(context.dateEpochSeconds)));
@@ -241,9 +241,14 @@ void ScriptRun::fail(const std::string& message)
 base::Error ScriptRun::scriptError(const QJSValue& thrown, const std::string& context)
 {
     std::string message;
+    std::string file = m_postFile;
     int line = 0;
     if (thrown.isError()) {
         line = thrown.property("lineNumber").toInt();
+        if (const QString thrownIn = thrown.property("fileName").toString(); !thrownIn.isEmpty())
+            file = thrownIn.toStdString();  // a file the post included
+        if (file.rfind("<camwb-kernel>", 0) == 0)
+            file = m_postFile;
         const std::string text = str(thrown.property("message"));
         const std::optional<std::string> postError = m_kernel->takePostError();
         message = postError && *postError == text ? text : str(thrown);
@@ -252,7 +257,7 @@ base::Error ScriptRun::scriptError(const QJSValue& thrown, const std::string& co
     }
     if (!context.empty())
         message += " (" + context + ")";
-    return base::makeError(message, m_postFile, line);
+    return base::makeError(message, file, line);
 }
 
 bool ScriptRun::call(Handler handler, const QJSValueList& args)

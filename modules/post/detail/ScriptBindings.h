@@ -147,8 +147,9 @@ public:
     void setProperties(QJSValue values) { m_properties = std::move(values); }
     // What expandCyclePoint(x, y, z) does; empty outside onCyclePoint.
     void setCycleExpander(std::function<void(const toolpath::Vec3&)> expander) { m_expandCycle = std::move(expander); }
-    // Script line of the innermost script frame calling into the kernel now.
-    int callerLine();
+    // File and line of the innermost script frame calling into the kernel now (the post, or a
+    // file it included).
+    std::pair<std::string, int> callerLocation();
 
     // Overloads by argument count: QJSEngine requires every declared argument.
     Q_INVOKABLE QJSValue createFormat() { return createFormat(QJSValue()); }
@@ -197,6 +198,11 @@ public:
     // The axes of the last five-axis block {x, y, z, a, b, c} (an axis it never wrote: absent);
     // null before any, e.g. for the post that returns the rotaries home after a section.
     Q_INVOKABLE QJSValue getMachinePose();
+    // include("name"): evaluates include/<name>.js, shared code of several posts, in the post's
+    // global scope, once per run. Looked up in the post's own folder's include/, then in the
+    // include/ of every post folder (a user's post may include a built-in library). Names are
+    // plain ([a-z0-9_-]), so no other file can be reached.
+    Q_INVOKABLE void include(const QJSValue& name);
 
 private:
     QJSValue makeVariable(const QJSValue& spec, const QJSValue& format, bool acceptsText);
@@ -213,6 +219,7 @@ private:
     std::optional<double> m_machiningSeconds;
     std::array<double, 6> m_axisMin{}, m_axisMax{}, m_axisLast{};
     unsigned m_axesSeen = 0;
+    std::vector<std::string> m_included;
 };
 
 // Text of a script value for NC words: undefined and null are "", whole numbers without decimals,

@@ -67,12 +67,14 @@ var post = {
         },
         tcpm: {
             title: "TCPM (five-axis)", type: "enum", values: ["m128", "function-tcpm", "off"], default: "m128",
+            perOperation: true,
             description: "Five-axis operations: M128 or FUNCTION TCPM F TCP AXIS POS PATHCTRL AXIS (the control keeps " +
                          "the tip; X Y Z of the tip in the workpiece frame), or off: machine coordinates about MRZP " +
-                         "computed by the post (the preset at MRZP, seed-000 3.3)"
+                         "computed by the post (the preset at MRZP, seed-000 3.3); an operation may set its own"
         },
         rotaryFeed: {
             title: "Feed without TCPM", type: "enum", values: ["combined", "m116"], default: "combined",
+            perOperation: true,
             description: "tcpm off: F for all axes together in mm and degrees, so that each block takes the time " +
                          "the tip needs at the CL feed (capped by the machine's maximum), or M116 (software option " +
                          "1: F in mm/min on the rotary table, the CL feed as it is)"
@@ -105,13 +107,17 @@ var post = {
     }
 };
 post.capabilities.arcWords = getProperty("arcOutput") == "CR" ? "radius" : "center";
-var tcpmMode = getProperty("tcpm");
-if (tcpmMode == "off" && getProperty("rotaryFeed") == "combined" && getProperty("units") == "inch")
-    error("tcpm off with the combined feed is written in mm programs only (F mixes mm and degrees): " +
-          "use units mm or rotaryFeed m116");
+// tcpm and rotaryFeed are read per five-axis operation (an operation may set its own).
+function combinedFeed() {
+    var combined = getProperty("tcpm") == "off" && getProperty("rotaryFeed") == "combined";
+    if (combined && inch)
+        error("tcpm off with the combined feed is written in mm programs only (F mixes mm and degrees): " +
+              "use units mm or rotaryFeed m116");
+    return combined;
+}
 post.fiveAxis = {
-    output: tcpmMode == "off" ? "machine" : "tip",
-    feed: tcpmMode == "off" && getProperty("rotaryFeed") == "combined" ? "combined" : "tip",
+    output: function () { return getProperty("tcpm") == "off" ? "machine" : "tip"; },
+    feed: function () { return combinedFeed() ? "combined" : "tip"; },
     poleCone: getProperty("poleCone"),
     reconfigure: getProperty("reconfigure"),
     retract: getProperty("retractDistance")

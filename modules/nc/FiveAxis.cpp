@@ -207,6 +207,7 @@ toolpath::ToolAxisMove FiveAxisState::move(const Vec3& programmed, double feedMm
     m.axis = unit(t.axis);
     m.feedMmPerMin = feedMmPerMin;
     m.machine = machineAxes();
+    m.jointInterpolated = !m_tcpm;
     m_lastSentTurned = m_angles.turned();
     return m;
 }

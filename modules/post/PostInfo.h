@@ -42,6 +42,7 @@ struct PropertyDef {
     std::optional<double> min, max;   // Integer and Number
     std::vector<std::string> values;  // Enum
     int line = 0;                     // where the post script declares it, for messages
+    bool perOperation = false;        // the post reads it per section: an operation may set its own
 };
 
 // A property value resolved for one run: from the user, or the default.

@@ -4,6 +4,7 @@
 #include "toolpath/RecordNames.h"
 
 #include <QJSValueIterator>
+#include <QUrl>
 
 #include <charconv>
 #include <cmath>
@@ -288,14 +289,22 @@ void ScriptKernel::writeComment(const QJSValue& text) { m_writer.writeComment(wo
 
 void ScriptKernel::writeln(const QJSValue& text) { m_writer.writeLine(wordText(text)); }
 
+std::string errorFile(const QJSValue& error, const std::string& fallback)
+{
+    const QString name = error.property("fileName").toString();
+    if (name.isEmpty() || name.startsWith(QLatin1String("<camwb-kernel>")))
+        return fallback;
+    const QUrl url(name);
+    return url.isLocalFile() ? url.toLocalFile().toStdString() : name.toStdString();
+}
+
 std::pair<std::string, int> ScriptKernel::callerLocation()
 {
     // QJSEngine has no public call-stack API: an Error created now carries the calling script's
     // file and line.
     m_engine->throwError(QJSValue::GenericError, QStringLiteral("location"));
     const QJSValue located = m_engine->catchError();
-    const std::string file = located.property("fileName").toString().toStdString();
-    return {file.empty() ? m_postFile : file, located.property("lineNumber").toInt()};
+    return {errorFile(located, m_postFile), located.property("lineNumber").toInt()};
 }
 
 void ScriptKernel::warning(const QJSValue& text)
@@ -359,6 +368,8 @@ QJSValue ScriptKernel::getCurrentAxis(const QJSValue& axis)
 QJSValue ScriptKernel::getProperty(const QJSValue& name)
 {
     const QString key = name.toString();
+    if (m_sectionProperties.isObject() && m_sectionProperties.hasOwnProperty(key))
+        return m_sectionProperties.property(key);
     if (m_properties.isObject() && m_properties.hasOwnProperty(key))
         return m_properties.property(key);
     // While the post is only being loaded, getProperty() answers the declared default.

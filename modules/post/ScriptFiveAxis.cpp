@@ -90,9 +90,11 @@ bool FiveAxisWriter::writeRecord(bool compensationOn)
         if (!m_inSection) {
             m_inSection = true;
             m_last = nullptr;
+            if (!chooseModes())
+                return false;
             const FiveAxisSection& section = m_plan.sections[static_cast<std::size_t>(step.section)];
             QJSValue info = m_run.m_engine.newObject();
-            info.setProperty("output", m_run.m_fiveAxis.machineCoordinates ? "machine" : "tip");
+            info.setProperty("output", m_machineCoordinates ? "machine" : "tip");
             info.setProperty("reconfigurations", section.reconfigurations);
             info.setProperty("firstRecord", static_cast<double>(section.firstRecord));
             info.setProperty("lastRecord", static_cast<double>(section.lastRecord));
@@ -121,13 +123,41 @@ bool FiveAxisWriter::writeRecord(bool compensationOn)
     return true;
 }
 
+bool FiveAxisWriter::chooseModes()
+{
+    const FiveAxisDeclaration& declared = m_run.m_fiveAxis;
+    m_machineCoordinates = declared.machineCoordinates;
+    m_feed = declared.feed;
+    if (declared.chooseOutput.isCallable()) {
+        const std::optional<std::string> output = m_run.answer(declared.chooseOutput, "post.fiveAxis.output()");
+        if (!output)
+            return false;
+        if (*output != "tip" && *output != "machine") {
+            m_run.fail("post.fiveAxis.output() answered \"" + *output + "\": tip or machine");
+            return false;
+        }
+        m_machineCoordinates = *output == "machine";
+    }
+    if (declared.chooseFeed.isCallable()) {
+        const std::optional<std::string> feed = m_run.answer(declared.chooseFeed, "post.fiveAxis.feed()");
+        if (!feed)
+            return false;
+        if (*feed != "tip" && *feed != "combined" && *feed != "inverse") {
+            m_run.fail("post.fiveAxis.feed() answered \"" + *feed + "\": tip, combined or inverse");
+            return false;
+        }
+        m_feed = *feed == "combined"  ? FiveAxisFeed::Combined
+                 : *feed == "inverse" ? FiveAxisFeed::InverseTime
+                                      : FiveAxisFeed::Tip;
+    }
+    return true;
+}
+
 double FiveAxisWriter::feedFor(const FiveAxisStep& step, const MachinePose& from, const MachinePose& to,
                                double tipLength)
 {
     // The combined feed is what a control without TCPM reads of machine coordinates.
-    const FiveAxisFeed mode = m_run.m_fiveAxis.feed == FiveAxisFeed::Combined && !m_run.m_fiveAxis.machineCoordinates
-                                  ? FiveAxisFeed::Tip
-                                  : m_run.m_fiveAxis.feed;
+    const FiveAxisFeed mode = m_feed == FiveAxisFeed::Combined && !m_machineCoordinates ? FiveAxisFeed::Tip : m_feed;
     if (mode == FiveAxisFeed::Tip || step.feedMmPerMin <= 0)
         return step.feedMmPerMin;
     bool capped = false;
@@ -142,9 +172,9 @@ double FiveAxisWriter::feedFor(const FiveAxisStep& step, const MachinePose& from
 
 void FiveAxisWriter::writeStep(const FiveAxisStep& step)
 {
-    const bool machine = m_run.m_fiveAxis.machineCoordinates;
+    const bool machine = m_machineCoordinates;
     if (!(step.feedMmPerMin > 0) || !m_last) {
-        if (step.feedMmPerMin > 0 && m_run.m_fiveAxis.feed == FiveAxisFeed::InverseTime) {
+        if (step.feedMmPerMin > 0 && m_feed == FiveAxisFeed::InverseTime) {
             m_run.fail("an inverse-time feed for the first move of a five-axis operation, whose start is not known");
             return;
         }
@@ -177,7 +207,7 @@ void FiveAxisWriter::writePose(const FiveAxisStep& step, const MachinePose& pose
 {
     ScriptKernel& kernel = *m_run.m_kernel;
     const kinematics::KinematicChain& chain = m_run.m_machine->kinematics;
-    const Vec3 linear = m_run.m_fiveAxis.machineCoordinates ? pose.linear : tool.tip;
+    const Vec3 linear = m_machineCoordinates ? pose.linear : tool.tip;
     std::array<double, 6> axes{linear.x, linear.y, linear.z, 0, 0, 0};
     unsigned mask = step.linearAxes.bits;
     for (std::size_t j = 0; j < chain.joints.size() && j < 2; ++j) {

@@ -43,6 +43,9 @@ const char* kPrelude = R"JS(
 var writeBlock = (function (kernel) {
     return function writeBlock() { kernel.writeBlockWords(Array.prototype.slice.call(arguments)); };
 })(__camwbKernel);
+var __camwbAnswer = function (f, self) {  // a post function asked for a value (post.fiveAxis.output())
+    try { return { value: f.apply(self, []) }; } catch (e) { return { thrown: e }; }
+};
 (function (f, self, args) {
     try { f.apply(self, args); return undefined; } catch (e) { return { thrown: e }; }
 })
@@ -134,22 +137,54 @@ ScriptRun::~ScriptRun() = default;
 void ScriptRun::setProperties(const std::map<std::string, PropertyValue>& values)
 {
     QJSValue object = m_engine.newObject();
-    for (const auto& [name, value] : values) {
-        switch (value.type) {
-        case PropertyType::Bool:
-            object.setProperty(qs(name), value.boolean);
-            break;
-        case PropertyType::Integer:
-        case PropertyType::Number:
-            object.setProperty(qs(name), value.number);
-            break;
-        case PropertyType::Enum:
-        case PropertyType::String:
-            object.setProperty(qs(name), qs(value.text));
-            break;
-        }
-    }
+    for (const auto& [name, value] : values)
+        object.setProperty(qs(name), scriptValue(value));
     m_kernel->setProperties(object);
+}
+
+QJSValue ScriptRun::scriptValue(const PropertyValue& value)
+{
+    switch (value.type) {
+    case PropertyType::Bool:
+        return value.boolean;
+    case PropertyType::Integer:
+    case PropertyType::Number:
+        return value.number;
+    case PropertyType::Enum:
+    case PropertyType::String:
+        break;
+    }
+    return qs(value.text);
+}
+
+bool ScriptRun::setSectionProperties(const std::vector<std::pair<std::string, std::string>>& values)
+{
+    if (values.empty()) {
+        m_kernel->setSectionProperties(QJSValue());
+        return true;
+    }
+    QJSValue object = m_engine.newObject();
+    for (const auto& [name, text] : values) {
+        const auto def = std::find_if(m_propertyDefs.begin(), m_propertyDefs.end(),
+                                      [&](const PropertyDef& d) { return d.name == name; });
+        if (def == m_propertyDefs.end()) {
+            fail("the operation sets post property '" + name + "', which post " + m_postId + " does not declare");
+            return false;
+        }
+        if (!def->perOperation) {
+            fail("post property '" + name + "' applies to the whole program: post " + m_postId +
+                 " does not take it per operation");
+            return false;
+        }
+        auto parsed = parsePropertyValue(*def, text);
+        if (!parsed) {
+            fail("the operation's " + parsed.error().message);
+            return false;
+        }
+        object.setProperty(qs(name), scriptValue(parsed.value()));
+    }
+    m_kernel->setSectionProperties(object);
+    return true;
 }
 
 void ScriptRun::setMachine(const kinematics::Machine& machine)
@@ -245,10 +280,7 @@ base::Error ScriptRun::scriptError(const QJSValue& thrown, const std::string& co
     int line = 0;
     if (thrown.isError()) {
         line = thrown.property("lineNumber").toInt();
-        if (const QString thrownIn = thrown.property("fileName").toString(); !thrownIn.isEmpty())
-            file = thrownIn.toStdString();  // a file the post included
-        if (file.rfind("<camwb-kernel>", 0) == 0)
-            file = m_postFile;
+        file = errorFile(thrown, m_postFile);  // the post, or a file it included
         const std::string text = str(thrown.property("message"));
         const std::optional<std::string> postError = m_kernel->takePostError();
         message = postError && *postError == text ? text : str(thrown);
@@ -293,6 +325,32 @@ bool ScriptRun::call(Handler handler, const QJSValueList& args)
         return false;
     }
     return true;
+}
+
+std::optional<std::string> ScriptRun::answer(const QJSValue& function, const std::string& what)
+{
+    if (m_failure)
+        return std::nullopt;
+    m_watchdog.enter();
+    const QJSValue result = m_engine.globalObject().property("__camwbAnswer").call({function, m_post});
+    const bool interrupted = m_watchdog.leave();
+    const std::string at = where();
+    const std::string context = "in " + what + (at.empty() ? "" : ", " + at);
+    if (interrupted) {
+        m_failure = base::makeError("the post script ran longer than its budget of " + seconds(m_watchdog.budget()) +
+                                        " s and was interrupted (" + context + ")",
+                                    m_postFile);
+        return std::nullopt;
+    }
+    if (result.isError() || !result.isObject()) {
+        m_failure = scriptError(result, context);
+        return std::nullopt;
+    }
+    if (result.hasOwnProperty("thrown")) {
+        m_failure = scriptError(result.property("thrown"), context);
+        return std::nullopt;
+    }
+    return str(result.property("value"));
 }
 
 base::Status ScriptRun::evaluate(const std::string& source, PostInfo& info)
@@ -466,9 +524,15 @@ base::Status ScriptRun::readDeclarations(const std::string& source, PostInfo& in
             }
             if (auto parsed = parsePropertyValue(def, def.defaultValue); !parsed)
                 return fail("default: " + parsed.error().message);
+            // Read by the post per section (in its handlers), so an operation may set its own.
+            const QJSValue perOperation = d.property("perOperation");
+            if (!perOperation.isUndefined() && !perOperation.isBool())
+                return fail("perOperation must be true or false");
+            def.perOperation = perOperation.toBool();
             info.properties.push_back(std::move(def));
         }
     }
+    m_propertyDefs = info.properties;
 
     if (const QJSValue machines = m_post.property("machines"); machines.isArray()) {
         for (int i = 0; i < machines.property("length").toInt(); ++i)
@@ -528,7 +592,11 @@ base::Status ScriptRun::readFiveAxis(const std::string& source)
         const QJSValue value = it.value();
         bool refuse = false;
         bool ok = false;
-        if (key == "output")
+        if ((key == "output" || key == "feed") && value.isCallable()) {
+            // Asked at each five-axis section, under that section's post properties.
+            (key == "output" ? five.chooseOutput : five.chooseFeed) = value;
+            ok = true;
+        } else if (key == "output")
             ok = choice(value, "tip", "machine", five.machineCoordinates);
         else if (key == "feed") {
             const std::string text = str(value);

@@ -125,9 +125,16 @@ public:
         feeds.setProperty("exit", r.feeds.exitMmPerMin);
         feeds.setProperty("finishing", r.feeds.finishingMmPerMin);
         section.setProperty("feeds", feeds);
+        if (!m_run.setSectionProperties(r.postProperties))
+            return;
         handle(Handler::Section, {section});
     }
-    void sectionEnd(const SectionEnd&) override { handle(Handler::SectionEnd, {}); }
+    // The operation's own property values hold through onSectionEnd, then the job's again.
+    void sectionEnd(const SectionEnd&) override
+    {
+        handle(Handler::SectionEnd, {});
+        m_run.setSectionProperties({});
+    }
     void programStop(const ProgramStop& r) override { handle(Handler::Stop, {r.optional}); }
     void passThrough(const PassThrough& r) override { handle(Handler::PassThrough, {qs(r.text)}); }
     void workingPlane(const WorkingPlane& r) override

@@ -5,6 +5,7 @@
 #include "base/Vec.h"
 
 #include <string>
+#include <utility>
 #include <variant>
 #include <vector>
 
@@ -152,12 +153,15 @@ struct RotaryAxes {
 };
 
 // Five-axis move: tool tip and unit tool vector (from tip towards spindle), both in the workpiece
-// frame. feed 0 = rapid.
+// frame. feed 0 = rapid. The tip goes straight to `tip` (a CL's promise, a control's tool-tip
+// control) unless `jointInterpolated`: NC read back without TCPM, where the machine moves its
+// linear and rotary axes together from `machine` to `machine`, and the tip curves between.
 struct ToolAxisMove {
     Vec3 tip;
     Vec3 axis{0, 0, 1};
     double feedMmPerMin = 0;
     RotaryAxes machine{};
+    bool jointInterpolated = false;
 };
 
 // 3+2 machining: the tilted working plane the records after it are in, until the next one. Its
@@ -231,6 +235,10 @@ struct SectionBegin {
     std::string strategy;  // "profile", "pocket", ...
     int toolNumber = 0;
     SectionFeeds feeds;
+    // The operation's own values of post properties (name, value as text), over the job's for
+    // this section: e.g. tcpm=off for one five-axis operation. The post must allow each per
+    // operation; the kernel checks that and the value.
+    std::vector<std::pair<std::string, std::string>> postProperties;
 };
 struct SectionEnd {};
 

@@ -356,7 +356,8 @@ base::Result<ClImport> readTrace(base::LineReader& lines, const std::string& fil
                 *value = in.number();
                 m.machine.known |= bit;
             }
-            in.end("(after a five-axis move's feed: a A, b B, c C)");
+            m.jointInterpolated = !in.optionalKey({"joint"}).empty();
+            in.end("(after a five-axis move's feed: a A, b B, c C, joint)");
             record = m;
         } else if (kind == "comp") {
             record = CutterComp{in.choice(kSides)};
@@ -378,7 +379,11 @@ base::Result<ClImport> readTrace(base::LineReader& lines, const std::string& fil
                 (key == "entry"  ? s.feeds.entryMmPerMin
                  : key == "exit" ? s.feeds.exitMmPerMin
                                  : s.feeds.finishingMmPerMin) = in.number();
-            in.end("(after a section's plunge feed: entry F, exit F, finish F)");
+            while (!in.optionalKey({"set"}).empty()) {
+                std::string name = in.word();
+                s.postProperties.emplace_back(std::move(name), in.text());
+            }
+            in.end("(after a section's plunge feed: entry F, exit F, finish F, set NAME \"value\")");
             record = s;
             section = sections++;
         } else if (kind == "endsection") {

@@ -105,6 +105,8 @@ void TraceWriter::toolAxisMove(const ToolAxisMove& r)
         m_out += " b " + num(r.machine.bDeg);
     if (r.machine.has(RotaryAxes::kC))
         m_out += " c " + num(r.machine.cDeg);
+    if (r.jointInterpolated)
+        m_out += " joint";
     m_out += '\n';
 }
 
@@ -124,6 +126,8 @@ void TraceWriter::sectionBegin(const SectionBegin& r)
         m_out += " exit " + num(r.feeds.exitMmPerMin);
     if (r.feeds.finishingMmPerMin > 0)
         m_out += " finish " + num(r.feeds.finishingMmPerMin);
+    for (const auto& [name, value] : r.postProperties)
+        m_out += " set " + name + " " + quoted(value);
     m_out += '\n';
 }
 

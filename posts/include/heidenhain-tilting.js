@@ -2,7 +2,7 @@
 // working planes as PLANE SPATIAL ... TURN MB MAX FMAX SEQ+- / PLANE RESET or CYCL DEF 19 (the
 // post's workingPlane property), and the frame of a simultaneous five-axis operation: retract,
 // turn to the first pose, M128 / FUNCTION TCPM / M116 (the post's tcpm and rotaryFeed), and back.
-// Uses the including post's czech, tcpmMode, angleFormat, flushToolCall(), forceMotion() and the
+// Uses the including post's czech, angleFormat, flushToolCall(), forceMotion() and the
 // outputs bOutput and cOutput; planeTravel is the post's travel report's.
 
 // The rotary positions the working planes turned to, for the travel report: {b: {min, max}, c: ...}.
@@ -60,6 +60,7 @@ function onWorkingPlane(plane) {
 // table turned to the operation's first pose without TCPM, then TCPM (or M116) on.
 function onFiveAxisBegin(section) {
     flushToolCall();
+    var tcpmMode = getProperty("tcpm");  // the operation's own, if it sets one
     writeBlock("L", "M140 MB MAX");
     forceMotion();  // the retract moved X, Y and Z
     var turn = ["L", cOutput.format(section.c), bOutput.format(section.b)];
@@ -76,6 +77,7 @@ function onFiveAxisBegin(section) {
 // After it: out along the tool axis, TCPM off, the table home as the kernel plans the next
 // operation from (B+0, C at the nearest whole turn). X, Y and Z are then unknown.
 function onFiveAxisEnd(pose, home) {
+    var tcpmMode = getProperty("tcpm");
     writeBlock("L", "M140 MB MAX");
     if (tcpmMode == "m128")
         writeBlock("L", "M129");

@@ -31,6 +31,7 @@ public:
     void report(std::vector<base::Diagnostic>& messages) const;
 
 private:
+    bool chooseModes();  // the section's output and feed (post.fiveAxis, asked per section)
     void writeStep(const FiveAxisStep& step);
     void writePose(const FiveAxisStep& step, const kinematics::MachinePose& pose, const kinematics::ToolPose& tool,
                    double feed);
@@ -44,6 +45,8 @@ private:
     toolpath::Vec3 m_written;              // the linear axes the last complete five-axis block wrote
     bool m_writtenKnown = false;
     bool m_inSection = false;
+    bool m_machineCoordinates = false;  // of the section being written
+    FiveAxisFeed m_feed = FiveAxisFeed::Tip;
     int m_capped = 0;
     std::size_t m_firstCapped = 0;
 };

@@ -145,6 +145,8 @@ public:
     std::optional<std::string> takePostError() { return std::exchange(m_postError, std::nullopt); }
     // Property values for getProperty(); before a run sets them, it answers the declared defaults.
     void setProperties(QJSValue values) { m_properties = std::move(values); }
+    // The current section's own values (an operation's), answered before the job's; undefined: none.
+    void setSectionProperties(QJSValue values) { m_sectionProperties = std::move(values); }
     // What expandCyclePoint(x, y, z) does; empty outside onCyclePoint.
     void setCycleExpander(std::function<void(const toolpath::Vec3&)> expander) { m_expandCycle = std::move(expander); }
     // File and line of the innermost script frame calling into the kernel now (the post, or a
@@ -214,6 +216,7 @@ private:
     toolpath::KnownPosition m_position;
     std::optional<std::string> m_postError;
     QJSValue m_properties;
+    QJSValue m_sectionProperties;
     std::function<void(const toolpath::Vec3&)> m_expandCycle;
     std::function<double()> m_machiningTime;
     std::optional<double> m_machiningSeconds;
@@ -225,6 +228,10 @@ private:
 // Text of a script value for NC words: undefined and null are "", whole numbers without decimals,
 // other numbers with 3 decimals.
 std::string wordText(const QJSValue& value);
+
+// The file an Error object says it was thrown in, as a plain path (the engine keeps it as a
+// file:// URL); `fallback` when it names none or the kernel's own prelude.
+std::string errorFile(const QJSValue& error, const std::string& fallback);
 // The same for a number, into a base::NumberFormat::kBufferSize buffer; returns the length.
 std::size_t numberWordText(double value, char* out);
 

@@ -57,6 +57,9 @@ struct FiveAxisDeclaration {
     bool machineCoordinates = false;        // "machine": linear axes about the chain's origin (no TCPM); "tip"
     FiveAxisFeed feed = FiveAxisFeed::Tip;  // "tip", "combined" (machine output), "inverse"
     FiveAxisOptions options;
+    // output/feed given as functions: asked at each five-axis section (an operation may set the
+    // post properties they read), answering what the fields above say.
+    QJSValue chooseOutput, chooseFeed;
 };
 
 class ScriptRun {
@@ -66,6 +69,9 @@ public:
 
     // What getProperty() answers and what `machine` is while the script runs; set before evaluate().
     void setProperties(const std::map<std::string, PropertyValue>& values);
+    // An operation's own property values for its section (SectionBegin::postProperties; empty:
+    // none): each must be declared perOperation and valid, else the run fails naming the record.
+    bool setSectionProperties(const std::vector<std::pair<std::string, std::string>>& values);
     void setMachine(const kinematics::Machine& machine);
     // `job` in the script: {name, stock: {min, max} or null}.
     void setJob(const JobFacts& job);
@@ -86,12 +92,16 @@ private:
 
     // Calls `handler` when the post has it; false when the script failed (m_failure holds why).
     bool call(Handler handler, const QJSValueList& args);
+    // What a post function (no arguments) answers, as text; nullopt when it failed (m_failure
+    // holds why, naming `what` and the record).
+    std::optional<std::string> answer(const QJSValue& function, const std::string& what);
     bool has(Handler handler) const { return m_handlers[static_cast<int>(handler)].isCallable(); }
     base::Error scriptError(const QJSValue& thrown, const std::string& where);
     void fail(const std::string& message);  // a kernel error about the current record
     std::string where() const;              // "CL record 12 Arc", or "" outside the records
     base::Status readDeclarations(const std::string& source, PostInfo& info);
     base::Status readFiveAxis(const std::string& source);
+    QJSValue scriptValue(const PropertyValue& value);
 
     std::string m_postFile;
     std::string m_postId;
@@ -105,7 +115,8 @@ private:
     PostCapabilities m_capabilities;
     std::optional<kinematics::Machine> m_machine;
     FiveAxisDeclaration m_fiveAxis;  // post.fiveAxis
-    long long m_recordIndex = -1;    // record being played, for messages
+    std::vector<PropertyDef> m_propertyDefs;
+    long long m_recordIndex = -1;  // record being played, for messages
     const char* m_recordName = "";
     std::optional<base::Error> m_failure;
 };

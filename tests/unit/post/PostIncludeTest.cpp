@@ -9,12 +9,13 @@ namespace {
 
 using namespace toolpath;
 
-// include/<name>.js beside the scripts writeScript() writes.
-void writeInclude(const std::string& name, const std::string& source)
+// include/<name>.js beside the scripts writeScript() writes; its path.
+std::string writeInclude(const std::string& name, const std::string& source)
 {
     const std::filesystem::path dir = std::filesystem::path(writeScript("anchor.js", "")).parent_path() / "include";
     std::filesystem::create_directories(dir);
     std::ofstream(dir / (name + ".js"), std::ios::binary) << source;
+    return (dir / (name + ".js")).string();
 }
 
 Toolpath oneMove()
@@ -40,8 +41,9 @@ function onRapid(x, y, z) { writeBlock(words(x), "L" + loads); }
 
 TEST(PostInclude, AnErrorInTheLibraryNamesItsFileAndLine)
 {
-    writeInclude("lib-fails", "function check(x) {\n    if (x > 0)\n        error('x is positive');\n}\n"
-                              "function note() {\n    warning('noted');\n}\n");
+    const std::string library =
+        writeInclude("lib-fails", "function check(x) {\n    if (x > 0)\n        error('x is positive');\n}\n"
+                                  "function note() {\n    warning('noted');\n}\n");
     auto post = PostProcessor::load(writeScript("failing.js", R"JS(var post = {id: "failing"};
 include("lib-fails");
 function onRapid(x, y, z) { note(); check(x); }
@@ -49,21 +51,21 @@ function onRapid(x, y, z) { note(); check(x); }
     ASSERT_TRUE(post.ok()) << post.error().toString();
     const auto run = post->run(oneMove(), fixedContext());
     ASSERT_FALSE(run.ok());
-    EXPECT_NE(run.error().file.find("include/lib-fails.js"), std::string::npos) << run.error().toString();
+    EXPECT_EQ(run.error().file, library) << run.error().toString();
     EXPECT_EQ(run.error().line, 3) << run.error().toString();
     EXPECT_NE(run.error().message.find("x is positive"), std::string::npos);
 }
 
 TEST(PostInclude, WarningsInTheLibraryNameIt)
 {
-    writeInclude("lib-warns", "function note() {\n    warning('noted');\n}\n");
+    const std::string library = writeInclude("lib-warns", "function note() {\n    warning('noted');\n}\n");
     const PostOutput out = runSource("warner.js", R"JS(var post = {id: "warner"};
 include("lib-warns");
 function onRapid(x, y, z) { note(); }
 )JS",
                                      oneMove());
     ASSERT_EQ(out.messages.size(), 1u);
-    EXPECT_NE(out.messages[0].file.find("include/lib-warns.js"), std::string::npos) << out.messages[0].file;
+    EXPECT_EQ(out.messages[0].file, library);
     EXPECT_EQ(out.messages[0].line, 2);
 }
 

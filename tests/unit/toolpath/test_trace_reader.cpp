@@ -210,7 +210,31 @@ TEST(TraceReader, FiveAxisMovesCarryTheMachinesKnownRotaryAxes)
     EXPECT_EQ(std::get<ToolAxisMove>(read->toolpath.record(1)).machine.known, 0);
     // In the order a b c, each once.
     EXPECT_EQ(failure("move5 1 2 3 axis 0 0 1 f 0 c 5 b 3\n").toString(),
-              "in.trace:1:32: unexpected 'b' (after a five-axis move's feed: a A, b B, c C)");
+              "in.trace:1:32: unexpected 'b' (after a five-axis move's feed: a A, b B, c C, joint)");
     EXPECT_EQ(failure("move5 1 2 3 axis 0 0 1 f 0 b\n").toString(),
               "in.trace:1:29: expected a number at the end of the line");
+}
+
+// NC read back without tool-tip control: the move is the machine's (joint interpolated), and an
+// operation's own post property values ride on its section; both read back as written.
+TEST(TraceReader, JointMovesAndSectionPropertiesReadBack)
+{
+    Toolpath t;
+    SectionBegin section{"Ring", "swarf", 1, {600, 200, 0, 0, 0}};
+    section.postProperties = {{"tcpm", "off"}, {"rotaryFeed", "m116"}};
+    t.add(section);
+    ToolAxisMove joint{{1, 2, 3}, {0, 0, 1}, 100};
+    joint.machine.bDeg = 0;
+    joint.machine.known = RotaryAxes::kB;
+    joint.jointInterpolated = true;
+    t.add(joint);
+    const std::string trace = traceOf(t);
+    EXPECT_EQ(trace, "section \"Ring\" swarf tool 1 cut 600.0000 plunge 200.0000 set tcpm \"off\" set rotaryFeed "
+                     "\"m116\"\nmove5 1.0000 2.0000 3.0000 axis 0.0000 0.0000 1.0000 f 100.0000 b 0.0000 joint\n");
+    auto read = readTrace(trace, "in.trace");
+    ASSERT_TRUE(read.ok()) << read.error().toString();
+    EXPECT_EQ(traceOf(read->toolpath), trace);
+    EXPECT_EQ(std::get<SectionBegin>(read->toolpath.record(0)).postProperties, section.postProperties);
+    EXPECT_TRUE(std::get<ToolAxisMove>(read->toolpath.record(1)).jointInterpolated);
+    EXPECT_EQ(failure("section \"A\" - tool 1 cut 1 plunge 1 set tcpm\n").toString().find("in.trace:1:"), 0u);
 }

@@ -140,7 +140,7 @@ private:
     {
         const bool rapid = r.feedMmPerMin <= 0;
         const std::optional<std::array<double, 2>> angles = jointAngles(r.machine);
-        if (m_machineMotion && angles && m_angles)
+        if (m_machineMotion && r.jointInterpolated && angles && m_angles)
             machineMove(r, *angles, rapid);
         else {
             m_exactEnd = true;

@@ -33,9 +33,9 @@ struct MotionSample {
 };
 
 // Every segment end and midpoint, starting from the origin; arcs within chordToleranceMm. With
-// `machineMotion`, a five-axis move whose two ends give both rotary angles moves as a machine
-// without tool-tip control moves it (linear and rotary axes interpolated together, the tip on a
-// curve), sampled finely enough for chordToleranceMm.
+// `machineMotion`, a jointInterpolated five-axis move (NC without tool-tip control) whose two ends
+// give both rotary angles moves as the machine moves it (linear and rotary axes interpolated
+// together, the tip on a curve), sampled every 0.1 degree.
 std::vector<MotionSample> flattenMotion(const toolpath::Toolpath& path, double chordToleranceMm,
                                         const kinematics::KinematicChain* machineMotion = nullptr);
 
@@ -50,9 +50,9 @@ struct MatchTolerance {
     // Radians the axis of `a` may stray, between two points of `b`, outside the turn from one's
     // axis to the other's (the machine's own interpolation; 0: within axisRad).
     double axisBetweenRad = 0;
-    // `a`'s five-axis moves are the machine's own, without tool-tip control (flattenMotion): the
-    // tip between its points is where the machine takes it, and its feed is the machine's (the
-    // post converts it), not the tip's, so it is not compared.
+    // The chain that moves `a`'s jointInterpolated five-axis moves (flattenMotion): the tip between
+    // their points is where the machine takes it, and their feed is the machine's (the post
+    // converts it), not the tip's, so it is not compared.
     const kinematics::KinematicChain* machineMotion = nullptr;
 };
 

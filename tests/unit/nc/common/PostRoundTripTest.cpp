@@ -228,9 +228,14 @@ std::optional<std::string> roundTrip(const PostCase& c, const fs::path& nc)
     // Arcs the post linearises within 0.01 mm (its warnings say so): chords and arc may be that far apart.
     if (postWarned.find("written as lines within 0.01 mm") != std::string::npos)
         tolerance.pointMm = tolerance.backPointMm = 0.0125;
-    // Machine coordinates (the iTNC post's tcpm=off): the machine moves its axes linearly between
-    // blocks and the post cut the moves until the tip stays within its tolerance of the CL.
-    if (machine && caseProperty(dir, "tcpm") == "off") {
+    // Machine coordinates (the iTNC post's tcpm=off, for the program or an operation): the machine
+    // moves its axes linearly between blocks and the post cut the moves until the tip stays
+    // within its tolerance of the CL.
+    const auto& traced = recorder.toolpath().records();
+    if (machine && std::any_of(traced.begin(), traced.end(), [](const toolpath::Record& r) {
+            const auto* move = std::get_if<toolpath::ToolAxisMove>(&r);
+            return move && move->jointInterpolated && move->feedMmPerMin > 0;
+        })) {
         tolerance.machineMotion = &machine->kinematics;
         tolerance.pointMm += info.capabilities.toleranceMm;
         tolerance.axisBetweenRad = 1e-3;

@@ -113,6 +113,8 @@ bool Machine::rotaryTarget(const Block& b, const BlockWords& w, RotaryTarget& ta
 bool Machine::fiveAxisReady(const Block& b, const RotaryTarget& target, AxisMask given, bool& traced)
 {
     traced = true;
+    if (m_five.inPlane() && !target.spatial)
+        return true;  // the moves of a tilted plane are 3-axis moves in its frame
     if (!m_five.active() || !(target.angles.turned() || m_five.fiveAxisMove() || target.spatial))
         return true;
     if (m_known.missing(kNoAxes, AxisMask{}, given) >= 0) {

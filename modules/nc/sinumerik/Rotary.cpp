@@ -135,6 +135,8 @@ bool Machine::toolVector(const Program& p, const BlockWords& w, RotaryMove& r)
 bool Machine::fiveAxisReady(const Program& p, const BlockWords& w, const RotaryMove& r, AxisMask given, bool& traced)
 {
     traced = true;
+    if (m_five.inPlane() && !r.vector)
+        return true;  // the moves of a swivelled plane are 3-axis moves in its frame
     if (!m_five.active() || !(r.angles.turned() || m_five.fiveAxisMove() || r.vector))
         return true;
     if (m_known.missing(kNoAxes, AxisMask{}, given) >= 0) {

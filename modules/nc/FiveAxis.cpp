@@ -251,6 +251,14 @@ toolpath::WorkingPlane FiveAxisState::planeOfAngles(const std::array<double, 2>&
     return plane;
 }
 
+Vec3 FiveAxisState::reframe(const toolpath::WorkingPlane& old, const toolpath::WorkingPlane& next,
+                            const Vec3& programmed) const
+{
+    const bool machineAxes = m_chain && !m_tcpm && m_angles.complete() && m_angles.turned();
+    const Vec3 tip = old.tilted() ? old.toWorkpiece(programmed) : machineAxes ? toolPose(programmed).tip : programmed;
+    return next.tilted() ? next.toLocal(tip) : machineAxes ? programmedFor(tip) : tip;
+}
+
 Vec3 FiveAxisState::toolAxis() const { return unit(toolPose(Vec3{}).axis); }
 
 std::optional<std::string> FiveAxisState::orientPlane(const Vec3& axis, int branch)

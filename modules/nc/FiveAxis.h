@@ -88,6 +88,11 @@ public:
     // CYCLE800: the pose whose branch joint has the sign `branch` (+1, -1), or with 0 (or where
     // that branch cannot reach it) the one nearest the current angles; else the reason.
     std::optional<std::string> orientPlane(const toolpath::Vec3& axis, int branch);
+    // A known programmed position as a new working plane's frame has it: the tip stays where it is.
+    // Outside a plane, with the rotary axes turned and no tool-tip control, programmed positions
+    // are the machine's linear axes (so after a plane's reset on a turned table, too).
+    toolpath::Vec3 reframe(const toolpath::WorkingPlane& old, const toolpath::WorkingPlane& next,
+                           const toolpath::Vec3& programmed) const;
     // The tool axis of the current angles (complete) in the workpiece frame.
     toolpath::Vec3 toolAxis() const;
     // A move the trace does not show (the tip unknown): the next move starts from this pose.

@@ -183,7 +183,7 @@ void Machine::tilt(const Block& b, const WorkingPlane& rotation)
         next = WorkingPlane{};
     }
     if (m_known.complete())
-        m_pos = next.toLocal(old.toWorkpiece(m_pos));
+        m_pos = m_five.reframe(old, next, m_pos);
     else
         m_known.forget();
     m_tangents = {};

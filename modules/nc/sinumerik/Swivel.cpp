@@ -127,9 +127,9 @@ void Machine::swivel(const Program& p, const Block& b, const Word& word)
     const int dir = static_cast<int>(arg(13));
     if (dir == 0 || !m_five.active())
         return;
-    if (kind == 3) {
+    if (kind == 3 || !plane.tilted()) {  // the angles given, or home for the untilted plane
         JointAngles given;
-        given.deg = {arg(7), arg(8)};
+        given.deg = kind == 3 ? std::array<double, 2>{arg(7), arg(8)} : std::array<double, 2>{0, 0};
         given.known = {true, true};
         m_five.setAngles(given);
     } else if (const auto problem = m_five.orientPlane(plane.zAxis, dir > 0 ? 1 : -1)) {
@@ -141,7 +141,7 @@ void Machine::swivel(const Program& p, const Block& b, const Word& word)
 void Machine::setPlane(int line, const WorkingPlane& plane)
 {
     if (m_known.complete())
-        m_pos = plane.toLocal(m_plane.toWorkpiece(m_pos));
+        m_pos = m_five.reframe(m_plane, plane, m_pos);
     else
         m_known.forget();
     m_plane = plane;

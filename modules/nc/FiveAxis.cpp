@@ -49,6 +49,15 @@ bool JointAngles::turned() const
     return false;
 }
 
+bool JointAngles::atHome() const
+{
+    for (std::size_t i = 0; i < 2; ++i) {
+        if (known[i] && std::abs(std::remainder(deg[i], 360.0)) > kTurnedDeg)
+            return false;
+    }
+    return true;
+}
+
 FiveAxisState::FiveAxisState(const kinematics::Machine* machine) : m_machine(machine)
 {
     if (machine && machine->kinematics.fiveAxis())

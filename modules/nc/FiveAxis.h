@@ -29,6 +29,8 @@ struct JointAngles {
     bool complete() const { return known[0] && known[1]; }
     // Some known angle is not zero: the tool or the workpiece is turned away from the 3-axis pose.
     bool turned() const;
+    // Every known angle at a whole turn: the tool and table stand as in the 3-axis pose (C360 too).
+    bool atHome() const;
 };
 
 // What a rotary word means on this machine.

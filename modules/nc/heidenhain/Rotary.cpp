@@ -117,7 +117,7 @@ bool Machine::fiveAxisReady(const Block& b, const RotaryTarget& target, AxisMask
         return true;  // the moves of a tilted plane are 3-axis moves in its frame
     if (!m_five.active() || !(target.angles.turned() || m_five.fiveAxisMove() || target.spatial))
         return true;
-    if (m_known.missing(kNoAxes, AxisMask{}, given) >= 0 && !target.angles.turned() && given.bits == 0) {
+    if (m_known.missing(kNoAxes, AxisMask{}, given) >= 0 && target.angles.atHome() && given.bits == 0) {
         traced = false;  // home from a turned pose, the tool somewhere up its axis: a 3-axis pose again
         return true;
     }

@@ -139,7 +139,7 @@ bool Machine::fiveAxisReady(const Program& p, const BlockWords& w, const RotaryM
         return true;  // the moves of a swivelled plane are 3-axis moves in its frame
     if (!m_five.active() || !(r.angles.turned() || m_five.fiveAxisMove() || r.vector))
         return true;
-    if (m_known.missing(kNoAxes, AxisMask{}, given) >= 0 && !r.angles.turned() && given.bits == 0) {
+    if (m_known.missing(kNoAxes, AxisMask{}, given) >= 0 && r.angles.atHome() && given.bits == 0) {
         traced = false;  // home from a turned pose, the tool somewhere up its axis: a 3-axis pose again
         return true;
     }

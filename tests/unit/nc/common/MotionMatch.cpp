@@ -129,7 +129,6 @@ private:
         m_angles.reset();
         for (const Vec3& p : toolpath::linearizeArc(m_local.value(), r, m_chord))
             segment(m_plane.toWorkpiece(p), false, r.feedMmPerMin);
-        segment(p, false, r.feedMmPerMin);
     }
     void visit(const Cycle& c)
     {

@@ -9,8 +9,9 @@
 // C itself, Programming Manual Job Planning, "Three, four and five axis transformation (TRAORI)").
 // Each run of them: TRAORI, ORIWKS ORIVECT ... TRAFOOF, then Z to the top of its travel and the
 // table home; after each tool change the table home too, so three-axis moves never run on a table
-// another program left tilted. G93 inverse-time feed is a property. CYCLE800 (3+2) waits for a working-plane CL
-// record; the rotary-angle output for the kernel's solved poses.
+// another program left tilted. G93 inverse-time feed is a property. 3+2 working planes as CYCLE800
+// (the plane's spatial angles, the table turned by the control on the kernel's branch), CYCLE800()
+// and the table home after them.
 var post = {
     id: "sinumerik840d",
     description: "SINUMERIK 840D sl, DMU 50-class B/C table (TRAORI, simultaneous 5-axis)",
@@ -30,6 +31,11 @@ var post = {
             description: "Five-axis feed moves in G93: F = 1 / the block's time in minutes (the tool tip's " +
                          "length at the CL feed, or the tool vector's turn in degrees at the feed as deg/min " +
                          "where the tip stands), G94 again after them; off: F is the tip's feed in mm/min"
+        },
+        swivelDataSet: {
+            title: "Swivel data set (CYCLE800 _TC)", type: "string", default: "TC1",
+            description: "Name of the machine's swivel data set (tool carrier) that CYCLE800 swivels with, as set up " +
+                         "on the control"
         },
         toolChangeComment: {
             title: "Tool change comment", type: "string", default: "Tool change",
@@ -206,9 +212,17 @@ function beginTraori() {
     forceMotion();
 }
 
-// After the run: transformation off, Z to the top of its travel in machine coordinates without the
-// length offset (SUPA ... D0: the tool's tip is above the part wherever it was), the table home
-// (tableHome), the length offset back for the next move.
+// Z to the top of its travel in machine coordinates without the length offset (SUPA ... D0: the
+// tool's tip is above the part wherever it was), the table home (tableHome), the length offset back
+// for the next move.
+function retractAndHome() {
+    var z = axisOf("Z");
+    writeBlock("G0", "SUPA", "Z" + xyzFormat.format(z && z.max !== null ? z.max : 0), "D0");
+    writeBlock(tableHome());
+    writeBlock("D1");
+}
+
+// After the run: transformation off, then retractAndHome.
 function endTraori() {
     if (!traori)
         return;
@@ -221,10 +235,7 @@ function endTraori() {
     verticalVector.take();
     verticalDue = false;
     writeBlock("TRAFOOF");
-    var z = axisOf("Z");
-    writeBlock("G0", "SUPA", "Z" + xyzFormat.format(z && z.max !== null ? z.max : 0), "D0");
-    writeBlock(tableHome());
-    writeBlock("D1");
+    retractAndHome();
     traori = false;
     motionModal.reset();
     forceMotion();
@@ -325,6 +336,41 @@ function onLinear5D(x, y, z, i, j, k, feed) {
         f = feedOutput.format(feed);
     }
     writeBlock(motionModal.format(1), words[0], words[1], words[2], words[3], f);
+}
+
+// --- 3+2: CYCLE800 ---------------------------------------------------------------------------
+
+// CYCLE800(_FR, _TC, _ST, _MODE, _X0, _Y0, _Z0, _A, _B, _C, _X1, _Y1, _Z1, _DIR) (840D sl
+// Programming Manual Cycles, "Swiveling - CYCLE800"): _FR 1 retracts in machine Z before the table
+// turns (as the iTNC post's MB MAX); _ST 0 a new plane; _MODE 27 axis by axis about Z, then the
+// turned Y, then X'' (bits 1-0 11 Z, 3-2 10 Y, 5-4 01 X), which are the kernel's spatial angles
+// (about the fixed X, Y, Z) in reverse order; the plane's origin as the offset before the turn;
+// _DIR the branch the kinematics chose (the sign of rotary axis 1). The moves after it are in the
+// plane's frame (the kernel forgets every axis). The default plane swivels back the same way: the
+// zero plane with _DIR, so the control retracts and turns the table home (B0 C0) before 3-axis work.
+var swivelled = false;
+
+function swivel(origin, a, b, c, branch) {
+    writeBlock("CYCLE800(" + [1, "\"" + getProperty("swivelDataSet") + "\"", 0, 27, xyzFormat.format(origin.x),
+                              xyzFormat.format(origin.y), xyzFormat.format(origin.z), angleFormat.format(c),
+                              angleFormat.format(b), angleFormat.format(a), 0, 0, 0, branch < 0 ? -1 : 1].join(",") + ")");
+}
+
+function onWorkingPlane(plane) {
+    endTraori();
+    if (!plane.tilted) {
+        if (swivelled)
+            swivel({x: 0, y: 0, z: 0}, 0, 0, 0, 1);
+        swivelled = false;
+        forceMotion();
+        return;
+    }
+    fiveAxisChain();
+    if (!plane.machine)
+        error("the working plane's pose is unknown: machine " + machine.id + " cannot point the tool along it");
+    swivel(plane.origin, plane.spatialA, plane.spatialB, plane.spatialC, plane.machine.branch);
+    swivelled = true;
+    forceMotion();
 }
 
 // --- Program frame ----------------------------------------------------------------------------

@@ -149,6 +149,14 @@ ToolPose forwardKinematics(const KinematicChain& chain, const MachinePose& pose,
     return {vec(table.applyInverse(tipMachine)), vec(table.r.transpose() * axisMachine)};
 }
 
+TiltedAxes tiltedAxes(const KinematicChain& chain, const std::array<double, 2>& rotaryDeg)
+{
+    // A direction turned by the head, then seen from the turned workpiece (the tool's length moves
+    // points, not directions).
+    const Rotation r = tableMotion(chain, rotaryDeg).r.transpose() * headMotion(chain, rotaryDeg, 0).r;
+    return {vec(r * Vector3d::UnitX()), vec(r * Vector3d::UnitZ())};
+}
+
 Vec3 linearAxesFor(const KinematicChain& chain, const Vec3& tip, const std::array<double, 2>& rotaryDeg,
                    double toolLengthMm)
 {

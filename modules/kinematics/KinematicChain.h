@@ -88,6 +88,15 @@ std::vector<IkSolution> inverseOrientation(const KinematicChain& chain, const Ve
 Vec3 linearAxesFor(const KinematicChain& chain, const Vec3& tip, const std::array<double, 2>& rotaryDeg,
                    double toolLengthMm = 0);
 
+// The machine's X and Z axes as the rotary angles turn them, in the workpiece frame: the tilted
+// coordinate system a control sets up for axis angles (Heidenhain CYCL DEF 19 with the machine's
+// axis positions), whose axes are parallel to the machine's linear axes as the table and head turn.
+struct TiltedAxes {
+    Vec3 x{1, 0, 0};
+    Vec3 z{0, 0, 1};
+};
+TiltedAxes tiltedAxes(const KinematicChain& chain, const std::array<double, 2>& rotaryDeg);
+
 const char* name(ChainType type);  // "three-axis", "table-table", "head-table", "head-head"
 
 }  // namespace camwb::kinematics

@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <numbers>
+#include <vector>
 
 namespace camwb::nc {
 
@@ -46,6 +47,15 @@ bool JointAngles::turned() const
             return true;
     }
     return false;
+}
+
+bool JointAngles::atHome() const
+{
+    for (std::size_t i = 0; i < 2; ++i) {
+        if (known[i] && std::abs(std::remainder(deg[i], 360.0)) > kTurnedDeg)
+            return false;
+    }
+    return true;
 }
 
 FiveAxisState::FiveAxisState(const kinematics::Machine* machine) : m_machine(machine)
@@ -225,15 +235,73 @@ toolpath::Arc FiveAxisState::arcInWorkpiece(const toolpath::Arc& programmed)
     return a;
 }
 
-std::optional<std::string> FiveAxisState::orient(const Vec3& tip, const Vec3& axis)
+kinematics::PoseSolver& FiveAxisState::solver() const
 {
     const double length = m_toolLength.value_or(0);
     if (!m_solver || m_solverToolLength != length) {
         m_solver = std::make_unique<kinematics::PoseSolver>(*m_machine, length);
         m_solverToolLength = length;
     }
+    return *m_solver;
+}
+
+void FiveAxisState::setInPlane(bool tilted)
+{
+    m_inPlane = tilted;
+    // The plane's moves were 3-axis records: the first move after it starts from no turned pose.
+    m_lastSentTurned = false;
+}
+
+toolpath::WorkingPlane FiveAxisState::planeOfAngles(const std::array<double, 2>& deg) const
+{
+    const kinematics::TiltedAxes axes = kinematics::tiltedAxes(*m_chain, deg);
+    toolpath::WorkingPlane plane;
+    plane.xAxis = unit(axes.x);
+    plane.zAxis = unit(axes.z);
+    return plane;
+}
+
+Vec3 FiveAxisState::reframe(const toolpath::WorkingPlane& old, const toolpath::WorkingPlane& next,
+                            const Vec3& programmed) const
+{
+    const bool machineAxes = m_chain && !m_tcpm && m_angles.complete() && m_angles.turned();
+    const Vec3 tip = old.tilted() ? old.toWorkpiece(programmed) : machineAxes ? toolPose(programmed).tip : programmed;
+    return next.tilted() ? next.toLocal(tip) : machineAxes ? programmedFor(tip) : tip;
+}
+
+Vec3 FiveAxisState::toolAxis() const { return unit(toolPose(Vec3{}).axis); }
+
+std::optional<std::string> FiveAxisState::orientPlane(const Vec3& axis, int branch)
+{
+    const MachinePose previous = pose(Vec3{});
+    const ToolPose tool{Vec3{}, unit(axis)};
+    const std::vector<kinematics::PoseCandidate> candidates =
+        solver().candidates(tool, m_angles.complete() ? &previous : nullptr);
+    const kinematics::PoseCandidate* chosen = nullptr;
+    double nearest = 0;
+    for (const kinematics::PoseCandidate& c : candidates) {
+        if (branch != 0 && c.branch != 0 && c.branch != branch)
+            continue;
+        double travel = 0;
+        for (std::size_t j = 0; j < 2; ++j)
+            travel +=
+                m_angles.known[j] ? std::abs(c.pose.rotaryDeg[j] - m_angles.deg[j]) : std::abs(c.pose.rotaryDeg[j]);
+        if (!chosen || travel < nearest) {
+            chosen = &c;
+            nearest = travel;
+        }
+    }
+    if (!chosen)
+        return orient(Vec3{}, axis);  // no pose on that branch: the solver's choice, or its reason
+    m_angles.deg = chosen->pose.rotaryDeg;
+    m_angles.known = {true, true};
+    return std::nullopt;
+}
+
+std::optional<std::string> FiveAxisState::orient(const Vec3& tip, const Vec3& axis)
+{
     const MachinePose previous = pose(tip);
-    const auto solved = m_solver->solve(ToolPose{tip, unit(axis)}, m_angles.complete() ? &previous : nullptr);
+    const auto solved = solver().solve(ToolPose{tip, unit(axis)}, m_angles.complete() ? &previous : nullptr);
     if (!solved)
         return solved.error().message;
     m_angles.deg = solved.value().pose.rotaryDeg;

@@ -29,6 +29,8 @@ struct JointAngles {
     bool complete() const { return known[0] && known[1]; }
     // Some known angle is not zero: the tool or the workpiece is turned away from the 3-axis pose.
     bool turned() const;
+    // Every known angle at a whole turn: the tool and table stand as in the 3-axis pose (C360 too).
+    bool atHome() const;
 };
 
 // What a rotary word means on this machine.
@@ -76,8 +78,25 @@ public:
     bool toolLengthKnown() const { return m_toolLength.has_value(); }
 
     // A move to `programmed` with the current angles is five-axis: they or the last pose sent
-    // were turned. Plain 3-axis moves otherwise, so 3-axis programs trace as before.
-    bool fiveAxisMove() const { return m_angles.turned() || m_lastSentTurned; }
+    // were turned. Plain 3-axis moves otherwise, so 3-axis programs trace as before. In a tilted
+    // working plane (PLANE, CYCL DEF 19, CYCLE800) moves are 3-axis moves in the plane's frame.
+    bool fiveAxisMove() const { return !m_inPlane && (m_angles.turned() || m_lastSentTurned); }
+    void setInPlane(bool tilted);
+    bool inPlane() const { return m_inPlane; }
+    // The frame of a tilted plane given by the machine's axis angles (CYCL DEF 19): the machine's
+    // X and Z as the angles turn them (kinematics::tiltedAxes); the chain must be active.
+    toolpath::WorkingPlane planeOfAngles(const std::array<double, 2>& deg) const;
+    // Turns the rotary axes so the tool points along `axis` (a plane's Z) for PLANE ... TURN and
+    // CYCLE800: the pose whose branch joint has the sign `branch` (+1, -1), or with 0 (or where
+    // that branch cannot reach it) the one nearest the current angles; else the reason.
+    std::optional<std::string> orientPlane(const toolpath::Vec3& axis, int branch);
+    // A known programmed position as a new working plane's frame has it: the tip stays where it is.
+    // Outside a plane, with the rotary axes turned and no tool-tip control, programmed positions
+    // are the machine's linear axes (so after a plane's reset on a turned table, too).
+    toolpath::Vec3 reframe(const toolpath::WorkingPlane& old, const toolpath::WorkingPlane& next,
+                           const toolpath::Vec3& programmed) const;
+    // The tool axis of the current angles (complete) in the workpiece frame.
+    toolpath::Vec3 toolAxis() const;
     // A move the trace does not show (the tip unknown): the next move starts from this pose.
     void moveUntraced() { m_lastSentTurned = m_angles.turned(); }
 
@@ -98,6 +117,7 @@ public:
 
 private:
     kinematics::MachinePose pose(const toolpath::Vec3& linear) const;
+    kinematics::PoseSolver& solver() const;
 
     const kinematics::Machine* m_machine = nullptr;
     const kinematics::KinematicChain* m_chain = nullptr;  // five-axis, or nullptr
@@ -105,6 +125,7 @@ private:
     bool m_tcpm = false;
     bool m_shortestPath = false;
     bool m_lastSentTurned = false;
+    bool m_inPlane = false;
     std::optional<double> m_toolLength;
     mutable std::unique_ptr<kinematics::PoseSolver> m_solver;
     mutable double m_solverToolLength = 0;

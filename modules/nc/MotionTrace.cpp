@@ -392,6 +392,8 @@ private:
         m_w.point("x", "x", r.xAxis);
         m_w.point("z", "z", r.zAxis);
         m_w.end();
+        // Coordinates after it are in the new frame: the moves' masks say which are known there.
+        m_state.position.forget();
     }
     void visit(const ToolChange& r) { m_state.tool = r.tool.number; }
     void visit(const Spindle& r)

@@ -172,14 +172,21 @@ bool Machine::applyMotion(const Block& b, const BlockWords& w)
         e = plan(b, w, m_pos, m_pole, m_tangents, false);
     }
     m_corner.nextPending = false;
+    if (e && e->type == Element::Type::None && rotary.changed && m_five.inPlane()) {
+        // In a tilted plane a rotary-only block positions the axes; the tool tip stays in the plane.
+        m_five.setAngles(rotary.angles);
+        m_planeChecked = false;
+        return false;
+    }
     if (e && e->type == Element::Type::None && rotary.changed) {
         e->type = Element::Type::Line;  // the rotary axes alone move: the tool turns about its tip or with the table
         e->end = e->start;
     }
     if (e && e->type != Element::Type::None) {
-        if (!rotary.spatial)
+        if (!rotary.spatial) {
+            m_planeChecked = m_planeChecked && !rotary.changed;
             m_five.setAngles(rotary.angles);
-        else if (!orientSpatial(b, e->end))
+        } else if (!orientSpatial(b, e->end))
             return false;
         if (e->type == Element::Type::Arc)
             m_lastDirection = e->clockwise ? -1 : 1;
@@ -210,6 +217,7 @@ void Machine::send(const Element& e, bool rapid, double feed)
         m_warned.set(kWarnZeroFeed);
         report(Severity::Warning, program().blocks[m_pc].line, 0, "feed motion with no feed programmed");
     }
+    checkToolAlongPlane(program().blocks[m_pc]);
     if (m_five.active() && m_five.fiveAxisMove()) {
         sendFiveAxis(e, rapid, feed);
     } else if (e.type == Element::Type::Line) {

@@ -1,4 +1,4 @@
-// Klartext cycles: CYCL DEF 7 (datum shift), 9 (dwell), 19 (tilted plane, warned), the drilling
+// Klartext cycles: CYCL DEF 7 (datum shift), 9 (dwell), 19 (tilted plane: Planes.cpp), the drilling
 // cycles 200-209 and 240 and the old 1/2/17 as one toolpath::Cycle record per call; 204 (back
 // boring) and 208 (bore milling) expanded into moves here, because no CycleKind describes them.
 #include "nc/heidenhain/Machine.h"
@@ -61,18 +61,7 @@ void Machine::cycleDef(const Block& b)
                 report(Severity::Warning, b.line, b.column, "datum shift of rotary axes is not traced");
             return;
         }
-        bool tilted = false;
-        for (std::size_t i = 3; i < w.axes.size(); ++i) {
-            if (i >= 9 && i <= 11)
-                continue;
-            if (w.axes[i] && std::abs(*w.axes[i]) > 1e-9)
-                tilted = true;
-        }
-        if (tilted)
-            report(Severity::Warning, b.line, b.column,
-                   "CYCL DEF 19: the tilted working plane is not traced yet; "
-                   "positions are traced untilted");
-        return;
+        return workingPlaneCycle(b, w);
     }
     if (b.a == 247)
         return datumSetting(b);
@@ -192,6 +181,7 @@ void Machine::runCycle(const Block& b, Vec2 hole)
     }
     if (!traced(m_cycle.number))
         return;
+    checkToolAlongPlane(b);
     if (m_five.active() && m_five.fiveAxisMove()) {
         report(Severity::Error, b.line, b.column,
                "a cycle called with the rotary axes turned is not traced (drill in a tilted working plane with "

@@ -34,7 +34,9 @@
 //   is the compensating moves' feed and is not traced. AXIS SPAT takes A, B, C as spatial angles
 //   (about X, then Y, then Z, as PLANE SPATIAL) from 0 at each FUNCTION TCPM; REFPNT ...-CENTER
 //   warns and traces X Y Z as the tip. M140 MB with the axes turned retracts along the tool axis.
-// - PLANE and CYCL DEF 19 warn: the tilted working plane is not traced yet.
+// - PLANE SPATIAL / VECTOR / AXIAL / RESET and CYCL DEF 19 (the machine's axis angles, through its
+//   kinematics) tilt the working plane: WorkingPlane records, the moves after them in its frame
+//   (Planes.cpp); a datum shift before the tilt moves its origin, one after it shifts in it.
 #include "nc/detail/Dialects.h"
 #include "nc/heidenhain/Machine.h"
 

@@ -268,12 +268,7 @@ void Machine::execute(const Block& b)
     case BlockKind::CycleCallPos:
         return cycleCall(b);
     case BlockKind::Plane:
-        if (!b.flag)
-            report(Severity::Warning, b.line, b.column,
-                   "PLANE " + std::string(b.name) +
-                       ": the tilted working plane is not traced yet; "
-                       "positions are traced untilted");
-        return;
+        return planeFunction(b);
     case BlockKind::Function:
         if (equalsIgnoreCase(b.name, "TCPM")) {
             tcpmFunction(b);

@@ -203,6 +203,18 @@ private:
     void retractAlongToolAxis(double distance);
     void updateToolLength();
 
+    // Planes.cpp: tilted working planes (PLANE, CYCL DEF 19) with the datum shift.
+    void planeFunction(const Block& b);
+    void workingPlaneCycle(const Block& b, const BlockWords& w);
+    std::optional<toolpath::WorkingPlane> planeOfVectors(const Block& b,
+                                                         const std::array<std::optional<double>, kPlaneWordCount>& v);
+    std::optional<toolpath::WorkingPlane>
+    planeOfAxisAngles(const Block& b, const std::array<std::optional<double>, 3>& abc, const std::string& what);
+    void planeRetract(const Block& b, std::optional<double> distance);
+    void tilt(const Block& b, const toolpath::WorkingPlane& rotation);
+    void positionForPlane(const Block& b, const toolpath::WorkingPlane& plane);
+    void checkToolAlongPlane(const Block& b);
+
     // Cycles.cpp: CYCL DEF, CYCL CALL, M99/M89.
     void cycleDef(const Block& b);
     void datumSetting(const Block& b);
@@ -228,11 +240,14 @@ private:
     int m_programDepth = 0;
 
     Parameters m_params;
-    Vec3 m_pos;         // 0 on axes not yet known
-    KnownAxes m_known;  // axes given in absolute terms so far (none at the start)
-    Vec3 m_shift;
-    double m_scale = 1;      // mm per program unit
-    double m_feedScale = 1;  // mm/min per programmed feed unit
+    Vec3 m_pos;                      // 0 on axes not yet known
+    KnownAxes m_known;               // axes given in absolute terms so far (none at the start)
+    Vec3 m_shift;                    // the datum shift, in the tilted plane's frame while one is tilted
+    toolpath::WorkingPlane m_plane;  // the tilted working plane (default: none)
+    std::optional<std::array<double, 2>> m_planeAngles;  // the joint angles PLANE AXIAL / CYCL DEF 19 gave
+    bool m_planeChecked = false;                         // the tool's axis was checked against the plane
+    double m_scale = 1;                                  // mm per program unit
+    double m_feedScale = 1;                              // mm/min per programmed feed unit
     Pole m_pole;
     Tangents m_tangents;
     toolpath::AxisMask m_programmed = kNoAxes;  // absolute X/Y/Z since the start or the last "..." of a fragment

@@ -140,8 +140,9 @@ private:
         if (is("PLANE")) {
             b.kind = BlockKind::Plane;
             b.flag = c.keyword("RESET");
-            b.name = c.token();
-            return;
+            if (!b.flag)
+                b.name = c.letters();
+            return parsePlaneWords(c, m_env, b);
         }
         if (is("FUNCTION")) {
             b.kind = BlockKind::Function;

@@ -27,6 +27,10 @@ enum WordGroup : unsigned {
     kLenAngle = 1u << 9,  // LEN CCA
 };
 
+// The rest of a PLANE block after its form (SPATIAL, VECTOR, AXIAL, RESET ...): its values as
+// Key::PlaneValue words, MB, the positioning (Block::a) and SEQ (Block::b); errors at their columns.
+void parsePlaneWords(Cursor& cursor, ParseEnv& env, Block& block);
+
 // Parses the words of a block until its end into program.words (block.firstWord/wordCount).
 void parseWords(Cursor& cursor, ParseEnv& env, Block& block, unsigned groups);
 

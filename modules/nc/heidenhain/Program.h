@@ -97,14 +97,35 @@ enum class Key : std::uint8_t {
     DeltaLength,
     DeltaRadius,
     DeltaRadius2,
-    Length,    // L of TOOL DEF
-    ToolAxis,  // param = 'X' / 'Y' / 'Z'
-    Rep,       // REP n of CALL LBL
-    QSet,      // Qn = expr inside CYCL DEF (param = n)
-    Len,       // LEN of APPR/DEP, length of CHF, value of an old cycle line (9.1 DWELL 1.5)
-    Angle,     // CCA of APPR/DEP
-    Mb,        // MB of M140 (param 1 = MAX)
+    Length,      // L of TOOL DEF
+    ToolAxis,    // param = 'X' / 'Y' / 'Z'
+    Rep,         // REP n of CALL LBL
+    QSet,        // Qn = expr inside CYCL DEF (param = n)
+    Len,         // LEN of APPR/DEP, length of CHF, value of an old cycle line (9.1 DWELL 1.5)
+    Angle,       // CCA of APPR/DEP
+    Mb,          // MB of M140 and PLANE (param 1 = MAX)
+    PlaneValue,  // a PLANE value: param = PlaneWord
 };
+
+// The values a PLANE block gives (Word::param of Key::PlaneValue).
+enum PlaneWord : int {
+    kPlaneSpa,
+    kPlaneSpb,
+    kPlaneSpc,
+    kPlaneBx,
+    kPlaneBy,
+    kPlaneBz,
+    kPlaneNx,
+    kPlaneNy,
+    kPlaneNz,
+    kPlaneAxisA,  // PLANE AXIAL A B C: the machine's axis angles
+    kPlaneAxisB,
+    kPlaneAxisC,
+    kPlaneWordCount,
+};
+
+// How a PLANE block positions the rotary axes (Block::a): not said, MOVE, TURN or STAY.
+enum PlanePositioning : int { kPlaneNoPositioning, kPlaneMove, kPlaneTurn, kPlaneStay };
 
 struct Word {
     Key key = Key::X;
@@ -169,8 +190,8 @@ struct Block {
     std::int64_t number = -1;  // block number, -1 = none
     int firstWord = 0;
     int wordCount = 0;
-    int a = 0;       // kind-specific: cycle number, FN number, target parameter kind ...
-    int b = 0;       // cycle sub-number, target parameter number, condition ...
+    int a = 0;       // kind-specific: cycle number, FN number, target parameter kind, PLANE positioning ...
+    int b = 0;       // cycle sub-number, target parameter number, condition, PLANE's SEQ sign ...
     int exprA = -1;  // kind-specific expressions (FN assign value, FN jump operands)
     int exprB = -1;
     bool flag = false;          // MM/INCH (true = inch), PLANE RESET, label is a name, FUNCTION RESET ...

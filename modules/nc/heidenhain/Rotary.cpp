@@ -113,8 +113,14 @@ bool Machine::rotaryTarget(const Block& b, const BlockWords& w, RotaryTarget& ta
 bool Machine::fiveAxisReady(const Block& b, const RotaryTarget& target, AxisMask given, bool& traced)
 {
     traced = true;
+    if (m_five.inPlane() && !target.spatial)
+        return true;  // the moves of a tilted plane are 3-axis moves in its frame
     if (!m_five.active() || !(target.angles.turned() || m_five.fiveAxisMove() || target.spatial))
         return true;
+    if (m_known.missing(kNoAxes, AxisMask{}, given) >= 0 && target.angles.atHome() && given.bits == 0) {
+        traced = false;  // home from a turned pose, the tool somewhere up its axis: a 3-axis pose again
+        return true;
+    }
     if (m_known.missing(kNoAxes, AxisMask{}, given) >= 0) {
         // After M140 MB MAX the tool is somewhere up its axis: the table may turn there, and the
         // trace shows the tool again once a block gives every axis.

@@ -11,10 +11,12 @@ set(NC_PART_SOURCES
     Parser.cpp
     Parser.h
     ParserWords.cpp
+    ParserPlane.cpp
     Machine.cpp
     Machine.h
     MachineFunctions.cpp
     Contour.cpp
     Circles.cpp
     Cycles.cpp
-    Rotary.cpp)
+    Rotary.cpp
+    Planes.cpp)

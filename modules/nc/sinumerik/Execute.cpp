@@ -459,6 +459,8 @@ bool Machine::applyMotion(const Program& p, const BlockWords& w)
     const Vec3 target = blockTarget(w);
     if (!turnTo(p, w, rotary, target))
         return false;
+    if (m_five.inPlane() && !anyLinearAxis)
+        return false;  // in a swivelled plane the rotary axes alone turn; the tip stays in the plane
     const int m = m_modal.motion;
     if (m < 2)
         m_known.give(given);

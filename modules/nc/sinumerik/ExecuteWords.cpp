@@ -94,9 +94,7 @@ bool Machine::readKeyword(const Program& p, const Block& b, const Word& word, Bl
         w.g53 = true;  // G53 and more (handwheel and external offsets suppressed): machine coordinates
         break;
     case Keyword::Cycle800:
-        warning(p, word.pos,
-                "CYCLE800 (swivel plane) is recognised; the swivelled plane is not traced yet: positions "
-                "are traced in the unswivelled frame");
+        swivel(p, b, word);
         break;
     case Keyword::Frame:
         warning(p, word.pos,

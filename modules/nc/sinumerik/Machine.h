@@ -180,6 +180,9 @@ private:
     // Cycles.cpp: one hole of CYCLE8x at the current position (the tool is over the hole).
     bool runCycle(const Program& p, int number, const std::vector<std::optional<double>>& args, Pos pos, int line);
     std::vector<std::optional<double>> evalArgs(const Program& p, const Block& block);
+    // Swivel.cpp: CYCLE800, the swivelled working plane.
+    void swivel(const Program& p, const Block& block, const Word& word);
+    void setPlane(int line, const toolpath::WorkingPlane& plane);
 
 public:
     // Diagnostics, deduplicated per place and message: loops report a problem once.
@@ -226,6 +229,7 @@ private:
     bool m_fiveAxisWarned = false;
     bool m_warnedMachineCoordinates = false;  // G53/G153/SUPA warned once
     FiveAxisState m_five;
+    toolpath::WorkingPlane m_plane;  // CYCLE800's swivelled frame (default: none)
     int m_currentFile = 0;
     int m_currentLine = 0;
 };

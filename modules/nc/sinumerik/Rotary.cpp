@@ -135,8 +135,14 @@ bool Machine::toolVector(const Program& p, const BlockWords& w, RotaryMove& r)
 bool Machine::fiveAxisReady(const Program& p, const BlockWords& w, const RotaryMove& r, AxisMask given, bool& traced)
 {
     traced = true;
+    if (m_five.inPlane() && !r.vector)
+        return true;  // the moves of a swivelled plane are 3-axis moves in its frame
     if (!m_five.active() || !(r.angles.turned() || m_five.fiveAxisMove() || r.vector))
         return true;
+    if (m_known.missing(kNoAxes, AxisMask{}, given) >= 0 && r.angles.atHome() && given.bits == 0) {
+        traced = false;  // home from a turned pose, the tool somewhere up its axis: a 3-axis pose again
+        return true;
+    }
     if (m_known.missing(kNoAxes, AxisMask{}, given) >= 0) {
         if (r.vector)
             return needKnown(p, w, kNoAxes, AxisMask{}, given, "the tool vector (solved at the tip)", {w.line, 0});

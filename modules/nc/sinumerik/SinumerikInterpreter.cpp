@@ -10,7 +10,7 @@
 // - Under MCALL a rapid that only moves in the plane is the cycle's own positioning: the Cycle
 //   record (one per hole) stands for it, as in the CL a post writes from.
 // - Programmable frames (TRANS, ROT, SCALE, MIRROR, ...) are passed through with a warning: the
-//   trace stays in the programmed frame. CYCLE800 is recognised with a warning.
+//   trace stays in the programmed frame. CYCLE800 swivels the working plane (Swivel.cpp).
 // - TRAORI / TRAFOOF, rotary words (AC, IC, DC, ACP, ACN; G90/G91) and the tool vector A3= B3= C3=
 //   run through the machine's kinematic chain (nc/FiveAxis.h; Rotary.cpp); without a five-axis
 //   machine they warn. TRAORI's arguments (orientation offsets) are not read.

@@ -13,4 +13,5 @@ set(NC_PART_SOURCES
     ExecuteWords.cpp
     Arcs.cpp
     Cycles.cpp
-    Rotary.cpp)
+    Rotary.cpp
+    Swivel.cpp)

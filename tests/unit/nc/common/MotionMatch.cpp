@@ -45,9 +45,12 @@ private:
     // Rapids between two feed moves are one transit, compared by its ends and its lowest point:
     // posts add positioning moves of their own (to the clearance plane before a cycle, back up
     // after one), so only where a transit starts, ends and how deep it goes are the CL's promise.
-    // A move that only turns the tool axis is a segment too (of length 0).
+    // A move that only turns the tool axis is a segment too (of length 0). `to` is in the workpiece
+    // frame: after a working plane the samples stay there, so that a plane and the moves after it
+    // compare by where the tool goes, whichever records make the way there.
     void segment(const Vec3& to, bool rapid, double feed, const Vec3& axis)
     {
+        m_local = KnownPosition(m_plane.toLocal(to));
         if (to == m_at && axis == m_axis)
             return;
         if (rapid) {
@@ -67,8 +70,8 @@ private:
         m_at = to;
         m_axis = axis;
     }
-    // Three-axis records move with the tool along +Z.
-    void segment(const Vec3& to, bool rapid, double feed) { segment(to, rapid, feed, Vec3{0, 0, 1}); }
+    // Three-axis records move with the tool along +Z, the working plane's Z in a tilted plane.
+    void segment(const Vec3& to, bool rapid, double feed) { segment(to, rapid, feed, m_plane.zAxis); }
 
 public:
     void flushTransit()
@@ -103,38 +106,46 @@ private:
         s.exact = m_exactEnd;
         m_samples.push_back(s);
     }
-    // A move that gives only some axes keeps the others (both sides start at the origin here).
-    Vec3 endOf(const Vec3& to, AxisMask axes) const
+    // A move that gives only some axes keeps the others (both sides start at the origin here);
+    // after a working plane the position in its frame is unknown until the moves give every axis.
+    void straight(const Vec3& to, AxisMask axes, bool rapid, double feed)
     {
-        KnownPosition at(m_at);
-        at.moveTo(to, axes);
-        return at.value();
+        m_local.moveTo(to, axes);
+        if (m_local.complete())
+            segment(m_plane.toWorkpiece(m_local.value()), rapid, feed);
     }
     void visit(const Rapid& r)
     {
         m_angles.reset();
-        segment(endOf(r.to, r.axes), true, 0);
+        straight(r.to, r.axes, true, 0);
     }
     void visit(const Linear& r)
     {
         m_angles.reset();
-        segment(endOf(r.to, r.axes), false, r.feedMmPerMin);
+        straight(r.to, r.axes, false, r.feedMmPerMin);
     }
     void visit(const Arc& r)
     {
         m_angles.reset();
-        for (const Vec3& p : toolpath::linearizeArc(m_at, r, m_chord))
-            segment(p, false, r.feedMmPerMin);
+        for (const Vec3& p : toolpath::linearizeArc(m_local.value(), r, m_chord))
+            segment(m_plane.toWorkpiece(p), false, r.feedMmPerMin);
     }
     void visit(const Cycle& c)
     {
         m_angles.reset();
         for (const Vec3& hole : c.holes)
-            for (const Record& moved : expandCycleHole(c, hole, m_at, {m_rpm, true}))
+            for (const Record& moved : expandCycleHole(c, hole, m_local.value(), {m_rpm, true}))
                 std::visit([this](const auto& v) { cycleMove(v); }, moved);
     }
-    void cycleMove(const Rapid& r) { segment(endOf(r.to, r.axes), true, 0); }
-    void cycleMove(const Linear& r) { segment(endOf(r.to, r.axes), false, r.feedMmPerMin); }
+    void cycleMove(const Rapid& r) { straight(r.to, r.axes, true, 0); }
+    void cycleMove(const Linear& r) { straight(r.to, r.axes, false, r.feedMmPerMin); }
+    // The moves after it are in its frame (a post retracts and turns the table in between: the
+    // transit goes on to the first point the new frame gives whole).
+    void visit(const WorkingPlane& r)
+    {
+        m_plane = r;
+        m_local = KnownPosition();
+    }
     template <class T> void cycleMove(const T&) {}  // tapping's spindle reversals: the rpm stays
     void visit(const ToolAxisMove& r)
     {
@@ -196,11 +207,13 @@ private:
 
     double m_chord;
     const kinematics::KinematicChain* m_machineMotion;
-    Vec3 m_at;
+    Vec3 m_at;  // in the workpiece frame
     Vec3 m_axis{0, 0, 1};
     std::optional<std::array<double, 2>> m_angles;  // of the last five-axis move, for machineMove
     bool m_exactEnd = false;                        // the next end is a record's own point
     bool m_machineFeed = false;
+    WorkingPlane m_plane;
+    KnownPosition m_local{Vec3{}};  // m_at in the plane's frame, as far as known
     double m_rpm = 0;
     int m_tool = 0;
     bool m_perMinute = true;

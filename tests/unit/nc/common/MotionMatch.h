@@ -5,7 +5,8 @@
 // rapid transit of `a` deeper than `b`'s. So a post may split an arc, linearise it, write a
 // cycle natively or as moves, and the comparison still holds; a wrong point, order or feed fails.
 // Five-axis moves carry their tool axis: at every point of the CL the NC's axis must agree, and
-// between points it must lie between the ends' axes.
+// between points it must lie between the ends' axes. Moves after a WorkingPlane are taken into
+// the workpiece frame, so a plane's angle or origin counts as much as the coordinates in it.
 #pragma once
 
 #include "kinematics/KinematicChain.h"

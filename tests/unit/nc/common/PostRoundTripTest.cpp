@@ -350,6 +350,33 @@ TEST(PostRoundTripModes, TcpmAndMachineCoordinatesMoveTheToolAlike)
     EXPECT_FALSE(off) << *off;
 }
 
+// The working plane counts: the CYCLE800 case with one plane's angle or origin changed in the NC
+// no longer moves as its CL (read back through its machine, as the golden itself is).
+std::optional<std::string> swivelDifference(const std::string& from, const std::string& to)
+{
+    const fs::path root = CAMWB_TEST_DATA_DIR;
+    const fs::path dir = root / "posts/sinumerik840d/tests/planes-cycle800";
+    std::ifstream in(dir / "expected.mpf");
+    std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    const std::size_t at = text.find(from);
+    EXPECT_NE(at, std::string::npos) << from;
+    if (at == std::string::npos)
+        return std::nullopt;
+    text.replace(at, from.size(), to);
+    const fs::path mutated = fs::path(testing::TempDir()) / "mutated-planes-cycle800.mpf";
+    std::ofstream(mutated) << text;
+    return roundTrip({"planes-cycle800", dir, {}, {}, root / "posts/sinumerik840d.js"}, mutated);
+}
+
+TEST(PostRoundTripCanFail, AChangedPlaneAngleOrOrigin)
+{
+    const std::string plane = "CYCLE800(1,\"TC1\",0,27,0.000,0.000,0.000,0,-30,0,0,0,0,1)";
+    EXPECT_FALSE(swivelDifference(plane, plane));  // unchanged it matches
+    EXPECT_TRUE(swivelDifference(plane, "CYCLE800(1,\"TC1\",0,27,0.000,0.000,0.000,0,-30.1,0,0,0,0,1)"));
+    EXPECT_TRUE(swivelDifference(plane, "CYCLE800(1,\"TC1\",0,27,0.000,0.000,0.000,0.1,-30,0,0,0,0,1)"));
+    EXPECT_TRUE(swivelDifference(plane, "CYCLE800(1,\"TC1\",0,27,0.100,0.000,0.000,0,-30,0,0,0,0,1)"));
+}
+
 INSTANTIATE_TEST_SUITE_P(PostGoldens, PostRoundTrip, testing::ValuesIn(postCases()),
                          [](const testing::TestParamInfo<PostCase>& info) { return info.param.name; });
 

@@ -147,7 +147,7 @@ TEST(HeidenhainCycles, DwellAndUntracedCycles)
     EXPECT_EQ(r.count(Severity::Error), 0u);
 }
 
-TEST(HeidenhainCycles, FiveAxisFunctionsWarnAndTraceThreeAxes)
+TEST(HeidenhainCycles, FiveAxisFunctionsWithoutAMachine)
 {
     const Traced r = run("0 BEGIN PGM T MM\n"
                          "1 PLANE SPATIAL SPA+0 SPB+45 SPC+0 TURN FMAX SEQ- TABLE ROT\n"
@@ -160,15 +160,21 @@ TEST(HeidenhainCycles, FiveAxisFunctionsWarnAndTraceThreeAxes)
                          "8 PLANE RESET STAY\n"
                          "9 CYCL DEF 19.1 A+0 B+0 C+0\n"
                          "10 END PGM T MM\n");
-    EXPECT_EQ(r.count(Severity::Error), 0u) << r.diagnostics()[0];
-    EXPECT_TRUE(r.has(Severity::Warning, 2, "tilted working plane is not traced yet"));
-    EXPECT_TRUE(r.has(Severity::Warning, 4, "tilted working plane is not traced yet"));
+    // Without a machine PLANE SPATIAL is a plane all the same (its angles are the plane's); CYCL DEF
+    // 19's are the machine's axes, so its plane is unknown (an error), its reset is not.
+    EXPECT_TRUE(r.has(Severity::Error, 4, "needs a five-axis machine"));
+    EXPECT_EQ(r.count(Severity::Error), 1u);
     EXPECT_TRUE(r.has(Severity::Warning, 5, "M128"));
     EXPECT_TRUE(r.has(Severity::Warning, 5, "rotary"));
     EXPECT_TRUE(r.has(Severity::Warning, 6, "FUNCTION TCPM"));
-    EXPECT_EQ(r.count(Severity::Warning), 5u);
+    EXPECT_EQ(r.count(Severity::Warning), 3u);
+    const auto planes = r.all<WorkingPlane>();
+    ASSERT_EQ(planes.size(), 3u);  // PLANE SPATIAL, PLANE RESET, CYCL DEF 19 with 0
+    expectNear(planes[0].zAxis, {std::sqrt(0.5), 0, std::sqrt(0.5)});
+    EXPECT_FALSE(planes[1].tilted());
+    EXPECT_FALSE(planes[2].tilted());
     ASSERT_EQ(r.all<Rapid>().size(), 2u);
-    expectNear(r.all<Rapid>()[0].to, {1, 2, 3});
+    expectNear(r.all<Rapid>()[0].to, {1, 2, 3});  // in the plane's frame
 }
 
 TEST(HeidenhainCycles, DatumSettingSelectsAPresetAndKeepsTheCycle)

@@ -76,7 +76,10 @@ TEST(SinumerikCycles, InchAndErrors)
     EXPECT_NE(r.find("RTP (return plane) is missing"), nullptr);
     EXPECT_NE(r.find("no depth"), nullptr);
     EXPECT_NE(r.find("CYCLE93 is not interpreted"), nullptr);
-    EXPECT_NE(r.find("CYCLE800 (swivel plane) is recognised"), nullptr);
+    // Every angle and offset 0 (a real 840D program's _ST 200000): the untilted plane, no diagnostic.
+    ASSERT_EQ(r.all<toolpath::WorkingPlane>().size(), 1u);
+    EXPECT_FALSE(r.all<toolpath::WorkingPlane>()[0].tilted());
+    EXPECT_EQ(r.find("CYCLE800"), nullptr);
 }
 
 }  // namespace

@@ -4,20 +4,14 @@
 #pragma once
 
 #include "base/Vec.h"
+#include "geom/Ruling.h"
 
 #include <functional>
 #include <string>
 
 namespace camwb::occ {
 
-// At a point of the drive edge: the face's ruling through it (unit, from the edge across the face),
-// the ruling's length across the face, and the face's unit normal (pointing away from the material).
-struct RulingPoint {
-    base::Vec3 point;
-    base::Vec3 ruling;
-    base::Vec3 normal;
-    double lengthMm = 0;
-};
+using geom::RulingPoint;
 
 // A face that swarf milling can follow: its rulings known along the drive edge's parameter range.
 struct SwarfFace {

@@ -8,8 +8,8 @@
 
 #include <BRepAdaptor_Curve.hxx>
 #include <BRepAdaptor_Surface.hxx>
-#include <BRepClass_FaceClassifier.hxx>
 #include <BRepGProp_Face.hxx>
+#include <BRepTopAdaptor_FClass2d.hxx>
 #include <BRep_Tool.hxx>
 #include <ShapeAnalysis_Surface.hxx>
 #include <Standard_Failure.hxx>
@@ -59,6 +59,7 @@ public:
         m_face(face),
         m_surface(face),
         m_analysis(BRep_Tool::Surface(face)),
+        m_classifier(face, 1e-7),
         m_curve(edge),
         m_props(face),
         m_maxLength(maxLength)
@@ -94,8 +95,8 @@ public:
         const gp_Pnt2d uv = m_analysis.ValueOfUV(q, 1e-7);
         if (m_analysis.Gap() > 1e-5)
             return false;
-        BRepClass_FaceClassifier classifier(m_face, uv, 1e-7);
-        return classifier.State() == TopAbs_IN || classifier.State() == TopAbs_ON;
+        const TopAbs_State state = m_classifier.Perform(uv);
+        return state == TopAbs_IN || state == TopAbs_ON;
     }
 
     gp_Dir normalAt(const gp_Pnt& p) const
@@ -141,23 +142,42 @@ public:
         const std::optional<gp_Dir> line = rulingLine(p, tangent, normal);
         if (!line)
             return out;
-        const double up = lengthAlong(p, *line), down = lengthAlong(p, line->Reversed());
-        const gp_Dir ruling = up >= down ? *line : line->Reversed();
+        const gp_Dir ruling = m_sense > 0 ? *line : line->Reversed();
         // The normal square to the ruling (it is on a developable face; this removes rounding).
         const gp_Vec n = gp_Vec(normal) - gp_Vec(ruling) * gp_Vec(normal).Dot(gp_Vec(ruling));
         out.ruling = vec(ruling.XYZ());
         out.normal = n.Magnitude() > 1e-12 ? vec(gp_Dir(n).XYZ()) : vec(normal.XYZ());
-        out.lengthMm = std::max(up, down);
+        out.lengthMm = lengthAlong(p, ruling);
         return out;
+    }
+
+    // The rulings' sense across the face: rulingLine's sense is continuous along the edge, so the
+    // one that stays longer on the face at a few points holds all along (at the ends of an edge,
+    // where the face narrows to a corner, both senses may leave the face at once).
+    void chooseSense()
+    {
+        double balance = 0;
+        for (int i = 0; i < 5; ++i) {
+            const double t =
+                m_curve.FirstParameter() + (m_curve.LastParameter() - m_curve.FirstParameter()) * (0.1 + 0.2 * i);
+            gp_Pnt p;
+            gp_Vec tangent;
+            m_curve.D1(t, p, tangent);
+            if (const std::optional<gp_Dir> line = rulingLine(p, tangent, normalAt(p)))
+                balance += lengthAlong(p, *line) - lengthAlong(p, line->Reversed());
+        }
+        m_sense = balance >= 0 ? 1 : -1;
     }
 
 private:
     TopoDS_Face m_face;
     BRepAdaptor_Surface m_surface;
     mutable ShapeAnalysis_Surface m_analysis;
+    BRepTopAdaptor_FClass2d m_classifier;  // built once: classifying a point is then quick
     BRepAdaptor_Curve m_curve;
     mutable BRepGProp_Face m_props;
     double m_maxLength;
+    int m_sense = 1;  // +1: rulingLine's sense points across the face
 };
 
 // Whether the edge runs along the face's rulings (a cone's seam, a plane's or cylinder's side).
@@ -222,6 +242,7 @@ base::Result<SwarfFace> Model::swarfFace(int faceIndex, int edgeIndex) const
             return base::makeError(edgeIndex != 0 ? "edge " + std::to_string(edgeIndex) + " is not an edge of " + name
                                                   : name + " has no edge across its rulings to drive along");
         auto evaluator = std::make_shared<RulingEvaluator>(face, *drive, maxLength);
+        evaluator->chooseSense();
         SwarfFace out;
         out.face = faceIndex;
         out.edge = m_data->edges.FindIndex(*drive);

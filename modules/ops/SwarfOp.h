@@ -29,6 +29,7 @@ struct SwarfParams {
     double radialStepoverMm = 1;     // between passes
     double chordToleranceMm = 0.01;  // the tip and the flutes' top stay this close to the face's path
     double angleToleranceDeg = 1;    // the most the tool axis turns between consecutive points
+    double gougeToleranceMm = 0.01;  // how deep the tool may enter the model (the caller checks it)
 };
 
 // One pose of the cut: the tip, the unit tool axis (tip to spindle) and the drive parameter.

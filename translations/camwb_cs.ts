@@ -546,6 +546,10 @@
         <source>Face %1 — planar, normal (%2, %3, %4), %5 mm²</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <source>Face %1 — %2, ruled, drive edge %3, %4 mm²</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>camwb::gui::HeightsBox</name>
@@ -1107,6 +1111,10 @@ CAM and post-processor workbench.</source>
         <source>The NC program is traced on the machine %1</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <source>New &amp;Swarf (five-axis)…</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>camwb::gui::ModalStatePanel</name>
@@ -1528,6 +1536,10 @@ Save them first?</source>
         <source>Working plane (3+2)</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <source>Swarf (simultaneous five-axis)</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>camwb::gui::PocketPanel</name>
@@ -1802,6 +1814,53 @@ Save them first?</source>
     </message>
     <message>
         <source>error: </source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>camwb::gui::SwarfPanel</name>
+    <message>
+        <source>Climb milling</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Axial offset</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The tool tip above (+) or below (−) the face&apos;s bottom edge, along the tool axis</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Radial stock</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Radial passes</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Radial stepover</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Chord tolerance</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Angle tolerance</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The most the tool axis turns from one point to the next</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Gouge tolerance</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>How deep the tool may enter the model before the operation fails</source>
         <translation type="unfinished"></translation>
     </message>
 </context>

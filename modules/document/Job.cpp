@@ -31,6 +31,8 @@ const char* kindName(OperationKind kind)
         return "helix";
     case OperationKind::Drill:
         return "drill";
+    case OperationKind::Swarf:
+        return "swarf";
     }
     return "operation";
 }

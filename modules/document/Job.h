@@ -7,6 +7,7 @@
 #include "ops/DrillOp.h"
 #include "ops/HelixOp.h"
 #include "ops/PocketOp.h"
+#include "ops/SwarfOp.h"
 
 #include <map>
 #include <optional>
@@ -24,8 +25,10 @@ struct Stock {
 // What an operation cuts, as references into the loaded model (indices are stable for a file:
 // OCCT's map order, 1-based). Resolved to geometry by OperationGeometry.h.
 struct GeometryRefs {
-    std::vector<int> faces;  // planar faces: contour = their outer wires, pocket = face with islands
-    std::vector<int> edges;  // edge chains (contour), open or closed; circular edges (helix)
+    std::vector<int> faces;  // planar faces: contour = their outer wires, pocket = face with islands;
+                             // swarf: the one ruled face it follows
+    std::vector<int> edges;  // edge chains (contour), open or closed; circular edges (helix); swarf:
+                             // the drive edge (none: the face's lowest edge across its rulings)
     std::vector<int> holes;  // holes by their cylindrical face (helix, drilling)
 };
 
@@ -46,8 +49,9 @@ struct WorkingPlaneSpec {
     bool operator==(const WorkingPlaneSpec&) const = default;
 };
 
-enum class OperationKind { Contour, Pocket, Helix, Drill };
-using OperationParams = std::variant<ops::ContourParams, ops::PocketParams, ops::HelixParams, ops::DrillParams>;
+enum class OperationKind { Contour, Pocket, Helix, Drill, Swarf };
+using OperationParams =
+    std::variant<ops::ContourParams, ops::PocketParams, ops::HelixParams, ops::DrillParams, ops::SwarfParams>;
 
 // One operation of the job. `params.heights` is filled from `heights` and the model on compute;
 // what is stored in the file is the overrides, so derived heights follow model changes.
@@ -63,7 +67,7 @@ struct Operation {
     void setName(const std::string& name);
 };
 
-// "contour", "pocket", "helix", "drill": the operation's type in the file.
+// "contour", "pocket", "helix", "drill", "swarf": the operation's type in the file.
 const char* kindName(OperationKind kind);
 // The word messages name it by, as the operations do: "contour", "pocket", "helix", "drilling".
 const char* kindLabel(OperationKind kind);

@@ -132,7 +132,9 @@ std::string serializeJob(const Job& job)
     root["format"] = "camwb-job";
     const bool planes = std::any_of(job.operations.begin(), job.operations.end(),
                                     [](const Operation& op) { return op.plane.mode != WorkingPlaneSpec::Mode::Flat; });
-    root["version"] = planes ? kJobFormatVersion : 3;
+    const bool swarf = std::any_of(job.operations.begin(), job.operations.end(),
+                                   [](const Operation& op) { return op.kind() == OperationKind::Swarf; });
+    root["version"] = swarf ? kJobFormatVersion : planes ? 4 : 3;
     root["name"] = job.name;
     root["model"] = job.modelPath;
     root["stock"] = {{"min", {job.stock.min.x, job.stock.min.y, job.stock.min.z}},

@@ -1,6 +1,7 @@
 #include "document/OperationGeometry.h"
 
 #include "document/detail/OperationPlanes.h"
+#include "document/detail/SwarfOperation.h"
 
 #include <algorithm>
 #include <cmath>
@@ -94,6 +95,15 @@ base::Result<OperationGeometry> resolveGeometry(const Operation& op, const occ::
         return refError(op, "works on faces and edges, not holes");
     if (kind == OperationKind::Pocket && !op.geometry.edges.empty())
         return refError(op, "a pocket is made from faces; edges are not supported");
+    if (kind == OperationKind::Swarf) {
+        // The face and its drive edge are resolved by the model's swarfFace.
+        if (op.geometry.faces.size() != 1)
+            return refError(op, "follows one ruled face: select exactly one face (" +
+                                    std::to_string(op.geometry.faces.size()) + " selected)");
+        if (op.geometry.edges.size() > 1)
+            return refError(op, "drives along one edge of its face, or its lowest edge when none is selected");
+        return OperationGeometry{};
+    }
 
     const double tolerance = toleranceOf(op);
     OperationGeometry geometry;
@@ -163,6 +173,8 @@ ops::Heights resolveHeights(const Operation& op, const OperationGeometry& geomet
         if (op.geometry.faces.empty() && featureBottom < 1e299)
             h.finalZ = featureBottom;
         break;
+    case OperationKind::Swarf:
+        break;  // reached along the tool axis; start and final unused
     case OperationKind::Helix:
     case OperationKind::Drill:
         if (featureTop > -1e299) {
@@ -197,6 +209,8 @@ base::Result<ops::OpResult> computeOperation(const Job& job, int index, const oc
     const Operation& op = job.operations[index];
     if (!job.tool(op.toolNumber))
         return refError(op, "no tool number " + std::to_string(op.toolNumber) + " in the job");
+    if (op.kind() == OperationKind::Swarf)
+        return detail::computeSwarfOperation(job, index, model, progress, heightsUsed);
     auto groups = detail::operationPlanes(op, model);
     if (!groups)
         return groups.error();
@@ -245,8 +259,10 @@ base::Result<ops::OpResult> computeInPlane(const Job& job, int index, const Oper
                 return ops::computePocket(g.regions, params, *tc, index, progress);
             else if constexpr (std::is_same_v<P, ops::HelixParams>)
                 return ops::computeHelix(g.holes, params, *tc, index, progress);
-            else
+            else if constexpr (std::is_same_v<P, ops::DrillParams>)
                 return ops::computeDrill(g.holes, params, *tc, index, progress);
+            else
+                return base::makeError("swarf is computed by computeSwarfOperation");
         },
         op.params);
 }

@@ -1,11 +1,13 @@
 // writeFiveAxisExamplePart: the five-axis teaching part (inclined faces, a spherical cap, holes
-// square to the inclined faces, a boss on one of them), built with OCCT primitives and booleans.
+// square to the inclined faces, a boss on one of them, a drafted round boss on another), built with OCCT primitives and
+// booleans.
 #include "occ/ExamplePart.h"
 
 #include "occ/detail/PartBuilders.h"
 
 #include <BRepAlgoAPI_Common.hxx>
 #include <BRepAlgoAPI_Fuse.hxx>
+#include <BRepPrimAPI_MakeCone.hxx>
 #include <BRepPrimAPI_MakeSphere.hxx>
 
 namespace camwb::occ {
@@ -14,6 +16,7 @@ namespace {
 
 constexpr double kPi = 3.14159265358979323846;
 constexpr double kSlopeDeg = 30;  // the inclined faces against the horizontal
+constexpr double kDraftDeg = 15;  // the drafted boss' wall against its axis
 
 // The outward normal and the centre of the inclined face on the side `quarter` x 90 degrees from
 // +X about Z.
@@ -77,6 +80,16 @@ TopoDS_Shape buildFiveAxisPart()
         const gp_Pnt centre = sideCentre(quarter, quarter == 2 ? 12 : 0);
         const gp_Pnt start = centre.Translated(gp_Vec(n) * 1);
         part = cut(part, BRepPrimAPI_MakeCylinder(gp_Ax2(start, n.Reversed()), 3, 9).Shape(), "a hole");
+    }
+    // A drafted round boss on the +X face, 14 mm to the side of its hole (the swarf operation's
+    // cone): R5.5 where it meets the face, 5 high, its wall drafted 15 degrees. Added last, so the
+    // faces of the features above keep their numbers.
+    {
+        const double draft = std::tan(kDraftDeg * kPi / 180);
+        const gp_Dir n = sideNormal(0);
+        const gp_Pnt base = sideCentre(0, 14).Translated(gp_Vec(n) * -1);
+        const TopoDS_Shape cone = BRepPrimAPI_MakeCone(gp_Ax2(base, n), 5.5 + draft, 5.5 - 5 * draft, 6).Shape();
+        part = fuse(part, cone, "the drafted boss");
     }
     return part;
 }

@@ -10,6 +10,7 @@
 #include "geom/Profile.h"
 #include "geom/Region.h"
 #include "occ/DisplayMesh.h"
+#include "occ/Swarf.h"
 
 #include <functional>
 #include <memory>
@@ -106,6 +107,18 @@ public:
     base::Result<Model> inFrame(const base::Vec3& origin, const base::Vec3& xAxis, const base::Vec3& zAxis) const;
     // The unit direction of a cylindrical face's axis (either sense); nullopt for another face.
     std::optional<base::Vec3> cylinderAxis(int faceIndex) const;
+
+    // Swarf milling (ModelSwarf.cpp): the face as a ruled, developable surface (plane, cylinder,
+    // cone, linear extrusion) driven along `edgeIndex` (one of its edges, not a ruling), or with
+    // edgeIndex 0 along its lowest such edge. Errors name the face: not ruled ("face 12 is a sphere,
+    // not a ruled developable surface ..."), an edge not on the face, a ruling that leaves the face.
+    base::Result<SwarfFace> swarfFace(int faceIndex, int edgeIndex = 0) const;
+    // The first pose (in order; between consecutive poses too, at steps no longer than 0.5 mm) where
+    // a flat end mill of `radiusMm` with `fluteLengthMm` of flutes enters the material deeper than
+    // toleranceMm (ModelGouge.cpp). Sampled: points on the tool's side and bottom, the tool shrunk by
+    // the tolerance, classified against the solid. nullopt: no gouge found.
+    std::optional<Gouge> firstGouge(const std::vector<ToolPose>& poses, double radiusMm, double fluteLengthMm,
+                                    double toleranceMm) const;
 
 private:
     explicit Model(std::shared_ptr<const ModelData> data);

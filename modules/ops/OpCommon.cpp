@@ -24,6 +24,8 @@ MotionCounts countMotions(const toolpath::Toolpath& toolpath)
                                                                                            : counts.arcs);
         else if (std::holds_alternative<toolpath::Cycle>(r))
             ++counts.cycles;
+        else if (const auto* move = std::get_if<toolpath::ToolAxisMove>(&r))
+            ++(move->feedMmPerMin > 0 ? counts.lines : counts.rapids);
     }
     return counts;
 }

@@ -7,6 +7,7 @@
 #include "ops/DrillOp.h"
 #include "ops/HelixOp.h"
 #include "ops/PocketOp.h"
+#include "ops/SwarfOp.h"
 
 #include <initializer_list>
 #include <string_view>
@@ -88,6 +89,18 @@ template <class F> void visitFields(ops::DrillParams& p, F&& f)
     f("keepOrder", p.keepOrder);
     f("depthAtShoulder", p.depthAtShoulder);
     f("breakthrough", p.breakthroughMm);
+}
+
+template <class F> void visitFields(ops::SwarfParams& p, F&& f)
+{
+    f("climb", p.climb);
+    f("axialOffset", p.axialOffsetMm);
+    f("radialStock", p.radialStockMm);
+    f("radialPasses", p.radialPasses);
+    f("radialStepover", p.radialStepoverMm);
+    f("chordTolerance", p.chordToleranceMm);
+    f("angleTolerance", p.angleToleranceDeg);
+    f("gougeTolerance", p.gougeToleranceMm);
 }
 
 }  // namespace camwb::document::detail

@@ -97,8 +97,10 @@ OperationParams paramsOfType(const std::string& type, const std::string& where)
         return ops::HelixParams{};
     if (type == "drill")
         return ops::DrillParams{};
+    if (type == "swarf")
+        return ops::SwarfParams{};
     throw JsonFieldError{where + ".type: unknown operation type \"" + type +
-                         "\" (expected contour, pocket, helix or drill)"};
+                         "\" (expected contour, pocket, helix, drill or swarf)"};
 }
 
 // Versions 1-2: the outer profile of one face, all heights given.

@@ -223,6 +223,8 @@ void MainWindow::registerActions()
     add({"Cam.Op.NewPocket", tr("New P&ocket…"), operation, {}, true}, [this] { newOperation(OperationKind::Pocket); });
     add({"Cam.Op.NewHelix", tr("New &Helix…"), operation, {}, true}, [this] { newOperation(OperationKind::Helix); });
     add({"Cam.Op.NewDrill", tr("New &Drilling…"), operation, {}, true}, [this] { newOperation(OperationKind::Drill); });
+    add({"Cam.Op.NewSwarf", tr("New &Swarf (five-axis)…"), operation, {}, true},
+        [this] { newOperation(OperationKind::Swarf); });
     // The foundation's profile is the contour now; the id stays for scripts (no menu entry).
     add({"Cam.Op.NewProfile", tr("New &Profile"), {}}, [this] { newOperation(OperationKind::Contour); });
     // Without a selected operation these say so where the user looks (the status bar).

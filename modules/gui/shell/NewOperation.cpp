@@ -56,7 +56,7 @@ ops::ToolController defaultDrill(int number, double diameterMm)
 
 std::string defaultName(OperationKind kind, const document::Job& job)
 {
-    static const char* const names[] = {"Contour", "Pocket", "Helix", "Drilling"};
+    static const char* const names[] = {"Contour", "Pocket", "Helix", "Drilling", "Swarf"};
     const std::string base = names[static_cast<int>(kind)];
     int count = 1;
     for (const document::Operation& op : job.operations)
@@ -73,10 +73,30 @@ document::OperationParams defaultParams(OperationKind kind)
         return ops::PocketParams{};
     case OperationKind::Helix:
         return ops::HelixParams{};
+    case OperationKind::Swarf:
+        return ops::SwarfParams{};
     case OperationKind::Drill:
         break;
     }
     return ops::DrillParams{};
+}
+
+// The first selected face swarf milling can follow; else the model's first curved ruled face (a
+// cone or cylinder that is no hole); 0 if none.
+int swarfFace(const occ::Model& model, const std::vector<int>& selected)
+{
+    for (int f : selected)
+        if (model.swarfFace(f).ok())
+            return f;
+    const std::vector<geom::Hole> holes = model.holes();
+    for (int f = 1; f <= model.faceCount(); ++f) {
+        auto face = model.swarfFace(f);
+        const bool hole =
+            std::any_of(holes.begin(), holes.end(), [f](const geom::Hole& h) { return h.faceIndex == f; });
+        if (face.ok() && face->surface != "plane" && !hole && !model.cylinderAxis(f))
+            return f;
+    }
+    return 0;
 }
 
 std::vector<int> selectedPlanarFaces(const occ::Model& model, const std::vector<int>& selected)
@@ -248,6 +268,11 @@ base::Result<OperationProposal> proposeOperation(OperationKind kind, const docum
         op.geometry.holes = selectedHoles(holes, selectedFaces);
         if (op.geometry.holes.empty())
             op.geometry.holes = drillHoles(holes, tool->tool.diameterMm);
+        break;
+    case OperationKind::Swarf:
+        op.geometry.faces = {swarfFace(model, selectedFaces)};
+        if (op.geometry.faces.front() == 0)
+            return base::Error{what + ": the model has no ruled face (cone, cylinder) to follow; select a face"};
         break;
     }
     return proposal;

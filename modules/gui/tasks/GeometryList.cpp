@@ -176,8 +176,17 @@ QString GeometryList::describe(Kind kind, int index) const
         const occ::FaceInfo f = m_model.face(index);
         if (f.index == 0)
             return tr("Face %1 (not in the model)").arg(index);
-        if (!f.planar)
+        if (!f.planar) {
+            // Curved ruled faces (swarf milling's) say what they are.
+            auto ruled = m_model.swarfFace(index);
+            if (ruled.ok())
+                return tr("Face %1 — %2, ruled, drive edge %3, %4 mm²")
+                    .arg(index)
+                    .arg(QString::fromStdString(ruled->surface))
+                    .arg(ruled->edge)
+                    .arg(f.areaMm2, 0, 'f', 1);
             return tr("Face %1 — not planar").arg(index);
+        }
         if (std::abs(std::abs(f.normal.z) - 1) > 1e-9)  // inclined: Z is no level of it; its normal says where it faces
             return tr("Face %1 — planar, normal (%2, %3, %4), %5 mm²")
                 .arg(index)

@@ -35,6 +35,8 @@ QString kindTitle(document::OperationKind kind)
         return OperationPanel::tr("Pocket");
     case document::OperationKind::Helix:
         return OperationPanel::tr("Helix");
+    case document::OperationKind::Swarf:
+        return OperationPanel::tr("Swarf (simultaneous five-axis)");
     case document::OperationKind::Drill:
         break;
     }
@@ -70,6 +72,9 @@ OperationPanel* OperationPanel::create(Workbench& workbench, TaskOverlay* overla
         break;
     case document::OperationKind::Drill:
         panel = makeDrillPanel(args);
+        break;
+    case document::OperationKind::Swarf:
+        panel = makeSwarfPanel(args);
         break;
     }
     panel->build();
@@ -162,7 +167,9 @@ void OperationPanel::build()
     column->addWidget(group(tr("Geometry"), m_geometry));
 
     m_plane = new WorkingPlaneBox(m_op.plane, m_workbench.model().faceCount());
-    column->addWidget(group(tr("Working plane (3+2)"), m_plane));
+    QGroupBox* planeGroup = group(tr("Working plane (3+2)"), m_plane);
+    planeGroup->setVisible(takesWorkingPlane());
+    column->addWidget(planeGroup);
 
     auto* params = new QWidget;
     auto* paramsForm = new QFormLayout(params);

@@ -3,7 +3,7 @@
 // 3D view computed off the GUI thread (progress, Cancel). OK applies the edit as one undoable step
 // (or adds the new operation) unless the preview shows the operation cannot be made; Cancel
 // leaves the job as it was. Each kind adds its own rows
-// (ContourPanel.cpp, PocketPanel.cpp, HelixPanel.cpp, DrillPanel.cpp).
+// (ContourPanel.cpp, PocketPanel.cpp, HelixPanel.cpp, DrillPanel.cpp, SwarfPanel.cpp).
 #pragma once
 
 #include "document/Job.h"
@@ -62,8 +62,9 @@ protected:
     explicit OperationPanel(const OperationPanelArgs& args);
     // The kind's rows, bound to fields of m_op.params.
     virtual void buildParameters(ParamForm& form) = 0;
-    virtual int geometryKinds() const = 0;  // GeometryList::Kind flags
-    void parametersChanged();               // restarts the preview
+    virtual int geometryKinds() const = 0;                   // GeometryList::Kind flags
+    virtual bool takesWorkingPlane() const { return true; }  // false: the plane box is hidden
+    void parametersChanged();                                // restarts the preview
 
     document::Operation m_op;
 

@@ -96,6 +96,12 @@ void changeParameter(OperationPanel& panel)
         box->toggle();
         break;
     }
+    case OperationKind::Swarf: {
+        auto* box = panel.findChild<QDoubleSpinBox*>(QStringLiteral("chordToleranceBox"));
+        QVERIFY(box);
+        box->setValue(box->value() / 10);  // halving may keep the points (the bisection's steps)
+        break;
+    }
     }
 }
 
@@ -141,7 +147,7 @@ private slots:
         MainWindow window;
         const QStringList ids = window.actions().ids();
         for (const char* id : {"Cam.Op.NewContour", "Cam.Op.NewPocket", "Cam.Op.NewHelix", "Cam.Op.NewDrill",
-                               "Cam.Op.NewProfile", "Cam.Op.Edit", "Cam.Op.Delete"})
+                               "Cam.Op.NewSwarf", "Cam.Op.NewProfile", "Cam.Op.Edit", "Cam.Op.Delete"})
             QVERIFY2(ids.contains(QLatin1String(id)), id);
     }
 
@@ -382,7 +388,7 @@ private slots:
         auto* mode = panel->findChild<QComboBox*>(QStringLiteral("planeMode"));
         QVERIFY(mode);
         QCOMPARE(mode->currentData().toInt(), int(camwb::document::WorkingPlaneSpec::Mode::Face));
-        QCOMPARE(panel->findChild<QSpinBox*>(QStringLiteral("planeFace"))->value(), 3);
+        QCOMPARE(panel->findChild<QSpinBox*>(QStringLiteral("planeFace"))->value(), 26);
         const auto outcome = panel->preview().lastOutcome();
         QVERIFY(outcome && outcome->ok);
         // The -X face's normal; its plane is at 20 + 10 sqrt 3 along it.
@@ -404,6 +410,59 @@ private slots:
         panel->reject();
         QCOMPARE(window.workbench().job().operations[static_cast<std::size_t>(index)].plane.mode,
                  camwb::document::WorkingPlaneSpec::Mode::Face);
+    }
+
+    // Swarf on the five-axis example: the panel previews five-axis moves with the tool axes drawn
+    // along them, hides the working plane, a tighter chord tolerance gives more points, OK is one
+    // undo step; New Swarf proposes the drafted boss' cone.
+    void swarfPanelOnTheFiveAxisExample()
+    {
+        MainWindow window;
+        window.resize(1600, 1000);
+        window.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&window));
+        QSignalSpy posted(&window.workbench(), &Workbench::postFinished);
+        QVERIFY(window.openJob(QStringLiteral(CAMWB_FIVE_AXIS_JOB)));
+        QVERIFY(posted.wait(120000));
+        waitIdle(window);
+        const int index = indexOfKind(window, OperationKind::Swarf);
+        QVERIFY(index >= 0);
+        const std::string original = jobText(window);
+        const std::size_t undoSteps = window.workbench().document().undoStack().count();
+        OperationPanel* panel = openPanel(window, index);
+        QVERIFY(panel);
+        const auto first = panel->preview().lastOutcome();
+        QVERIFY2(first && first->ok, qPrintable(panel->statusText()));
+        QVERIFY2(first->result.counts.lines > 50, qPrintable(counts(first->result.counts)));
+        QVERIFY(!panel->findChild<QComboBox*>(QStringLiteral("planeMode"))->isVisibleTo(panel));
+        const auto* polylines = window.view()->overlay().previewPolylines();
+        QVERIFY(polylines);
+        int axes = 0;
+        for (const auto& segment : polylines->segments())
+            axes += segment.kind == camwb::gui::PathSegmentKind::ToolAxis ? 1 : 0;
+        QVERIFY2(axes > 10, qPrintable(QString::number(axes)));
+        QTest::qWait(300);
+        saveShot(&window, QStringLiteral("panel-swarf.png"));
+        {
+            QSignalSpy finished(&panel->preview(), &PreviewRunner::finished);
+            changeParameter(*panel);
+            QVERIFY(waitPreview(finished));
+        }
+        const auto finer = panel->preview().lastOutcome();
+        QVERIFY(finer && finer->ok);
+        QVERIFY2(finer->result.counts.lines > first->result.counts.lines, qPrintable(counts(finer->result.counts)));
+        panel->findChild<QAbstractButton*>(QStringLiteral("okButton"))->click();
+        QVERIFY(window.taskPanel() == nullptr);
+        QCOMPARE(window.workbench().document().undoStack().count(), undoSteps + 1);
+        waitIdle(window);
+        QVERIFY(window.actions().trigger(QStringLiteral("Cam.Edit.Undo")));
+        QCOMPARE(jobText(window), original);
+        waitIdle(window);
+
+        auto proposal =
+            camwb::gui::proposeOperation(OperationKind::Swarf, window.workbench().job(), window.workbench().model());
+        QVERIFY2(proposal.ok(), proposal.ok() ? "" : proposal.error().message.c_str());
+        QCOMPARE(proposal->operation.geometry.faces, std::vector<int>{1});
     }
 
     void panelScreenshots()

@@ -126,11 +126,14 @@ TEST(FiveAxisJob, TheProgramChangesToolsBeforeItTilts)
 TEST(FiveAxisJob, WorkingPlanesInTheJobFile)
 {
     const document::Job& job = fiveAxis().job;
-    ASSERT_EQ(job.operations.size(), 2u);
+    ASSERT_EQ(job.operations.size(), 3u);
     EXPECT_EQ(job.operations[0].plane.mode, document::WorkingPlaneSpec::Mode::Flat);
     EXPECT_EQ(job.operations[1].plane.mode, document::WorkingPlaneSpec::Mode::Face);
-    EXPECT_EQ(job.operations[1].plane.face, 3);
-    const std::string text = document::serializeJob(job);
+    EXPECT_EQ(job.operations[1].plane.face, 26);
+    EXPECT_NE(document::serializeJob(job).find("\"version\": 5"), std::string::npos);  // the swarf operation
+    document::Job planes = job;
+    planes.operations.resize(2);
+    const std::string text = document::serializeJob(planes);
     EXPECT_NE(text.find("\"version\": 4"), std::string::npos);
     auto again = document::parseJob(text, "again.camwb");
     ASSERT_TRUE(again.ok()) << again.error().toString();
@@ -141,12 +144,12 @@ TEST(FiveAxisJob, WorkingPlanesInTheJobFile)
     auto back = document::parseJob(document::serializeJob(angles), "a.camwb");
     ASSERT_TRUE(back.ok());
     EXPECT_EQ(back->operations[1].plane, angles.operations[1].plane);
-    document::Job flat = job;
+    document::Job flat = planes;
     flat.operations[1].plane = {};
     EXPECT_NE(document::serializeJob(flat).find("\"version\": 3"), std::string::npos);
     // A plane along a face that is not planar, or a face and angles both.
     std::string bad = text;
-    bad.replace(bad.find("\"face\": 3"), 9, "\"face\": 3, \"a\": 1");
+    bad.replace(bad.find("\"face\": 26"), 10, "\"face\": 26, \"a\": 1");
     auto refused = document::parseJob(bad, "bad.camwb");
     ASSERT_FALSE(refused.ok());
     EXPECT_NE(refused.error().message.find("workingPlane: a face or the angles a, b, c, not both"), std::string::npos)
@@ -156,10 +159,10 @@ TEST(FiveAxisJob, WorkingPlanesInTheJobFile)
 TEST(FiveAxisJob, APlaneThatCannotBeIsAnError)
 {
     document::Job job = fiveAxis().job;
-    job.operations[1].plane.face = 11;  // a hole's cylinder
+    job.operations[1].plane.face = 8;  // a hole's cylinder
     auto cylinder = document::computeOperation(job, 1, fiveAxis().model);
     ASSERT_FALSE(cylinder.ok());
-    EXPECT_EQ(cylinder.error().message, "contour \"Boss on the inclined face\": working plane: face 11 is not planar");
+    EXPECT_EQ(cylinder.error().message, "contour \"Boss on the inclined face\": working plane: face 8 is not planar");
     job.operations[1].plane.face = 999;
     auto missing = document::computeOperation(job, 1, fiveAxis().model);
     ASSERT_FALSE(missing.ok());

@@ -78,10 +78,13 @@ TEST_F(FiveAxisPartTest, InclinedFacesCapAndBounds)
         const int face = faceWithNormal(*model, sideNormal(quarter));
         EXPECT_GT(face, 0) << "inclined face " << quarter;
         // A trapezoid 15 / sin 30 = 30 mm up the slope, 80 and 28.04 mm wide, less a hole D6
-        // (and on -X, less the boss's footprint).
+        // (and on -X, less the boss's footprint; on +X exactly less the drafted boss' circle R5.5).
         const double trapezoid = 30 * (80 + (80 - 2 * 15 / std::tan(kPi / 6))) / 2;
-        EXPECT_LT(model->face(face).areaMm2, trapezoid - 9 * kPi + 1e-6) << quarter;
-        EXPECT_GT(model->face(face).areaMm2, trapezoid - 9 * kPi - 81) << quarter;
+        const double footprint = quarter == 0 ? 5.5 * 5.5 * kPi : 0;
+        EXPECT_LT(model->face(face).areaMm2, trapezoid - 9 * kPi - footprint + 1e-6) << quarter;
+        EXPECT_GT(model->face(face).areaMm2, trapezoid - 9 * kPi - footprint - 81) << quarter;
+        if (quarter == 0)
+            EXPECT_NEAR(model->face(face).areaMm2, trapezoid - 9 * kPi - footprint, 1e-6);
     }
     // No vertical holes: all four are square to the inclined faces.
     EXPECT_TRUE(model->holes().empty());

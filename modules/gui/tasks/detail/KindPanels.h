@@ -26,5 +26,6 @@ OperationPanel* makeContourPanel(const OperationPanelArgs& args);
 OperationPanel* makePocketPanel(const OperationPanelArgs& args);
 OperationPanel* makeHelixPanel(const OperationPanelArgs& args);
 OperationPanel* makeDrillPanel(const OperationPanelArgs& args);
+OperationPanel* makeSwarfPanel(const OperationPanelArgs& args);
 
 }  // namespace camwb::gui

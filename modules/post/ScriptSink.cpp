@@ -181,6 +181,12 @@ public:
                 rotary.setProperty(QString::fromStdString(machine->kinematics.joints[j].axis).toLower(),
                                    pose->pose.rotaryDeg[j]);
             rotary.setProperty("branch", pose->branch);
+            // A control that tilts by the machine's axis angles (CYCL DEF 19) sets up the machine's
+            // X as the table carries it: the plane's X lies this many degrees from it about the
+            // tool axis (counter-clockwise seen from +Z), which the post turns by (CYCL DEF 10).
+            const kinematics::TiltedAxes tilted = kinematics::tiltedAxes(machine->kinematics, pose->pose.rotaryDeg);
+            rotary.setProperty("rotation", std::atan2(tilted.x.cross(r.xAxis).dot(r.zAxis), tilted.x.dot(r.xAxis)) *
+                                               180 / std::acos(-1.0));
             plane.setProperty("machine", rotary);
         }
         handle(Handler::WorkingPlane, {plane});

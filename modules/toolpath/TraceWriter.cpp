@@ -10,6 +10,12 @@ namespace {
 
 std::string num(double v) { return base::formatFixed(v, 4); }
 std::string point(const Vec3& p) { return num(p.x) + ' ' + num(p.y) + ' ' + num(p.z); }
+// Unit vectors (tool axes, plane axes) to 9 decimals: at 4, a 100 mm reach would move by up to
+// 0.01 mm and the axis by 1e-4 rad, beyond what five-axis output keeps.
+std::string unitVector(const Vec3& v)
+{
+    return base::formatFixed(v.x, 9) + ' ' + base::formatFixed(v.y, 9) + ' ' + base::formatFixed(v.z, 9);
+}
 
 // The target of a straight move: three numbers when it gives every axis, else only the axes it
 // gives, each named ("z 20.0000"): the trace never shows a coordinate the move did not give.
@@ -97,7 +103,7 @@ void TraceWriter::cycle(const Cycle& r)
 
 void TraceWriter::toolAxisMove(const ToolAxisMove& r)
 {
-    m_out += "move5 " + point(r.tip) + " axis " + point(r.axis) + " f " + num(r.feedMmPerMin);
+    m_out += "move5 " + point(r.tip) + " axis " + unitVector(r.axis) + " f " + num(r.feedMmPerMin);
     // The machine's rotary positions where the source knows them (NC read back through a machine).
     if (r.machine.has(RotaryAxes::kA))
         m_out += " a " + num(r.machine.aDeg);
@@ -137,11 +143,7 @@ void TraceWriter::passThrough(const PassThrough& r) { m_out += "passthrough " + 
 
 void TraceWriter::workingPlane(const WorkingPlane& r)
 {
-    // The axes to 9 decimals: at 4, a 100 mm reach would move by up to 0.01 mm.
-    auto unit = [](const Vec3& v) {
-        return base::formatFixed(v.x, 9) + ' ' + base::formatFixed(v.y, 9) + ' ' + base::formatFixed(v.z, 9);
-    };
-    m_out += "plane " + point(r.origin) + " x " + unit(r.xAxis) + " z " + unit(r.zAxis) + '\n';
+    m_out += "plane " + point(r.origin) + " x " + unitVector(r.xAxis) + " z " + unitVector(r.zAxis) + '\n';
 }
 
 std::string traceOf(const Toolpath& toolpath)

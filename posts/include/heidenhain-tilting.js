@@ -14,12 +14,27 @@ function notePlaneTravel(axis, value) {
 }
 
 // CYCL DEF 19 with the machine's B and C (0, 0: the plane reset), after retracting to the travel
-// limit along the tool axis; the control needs the table turned by an L block.
-function cycle19Plane(b, c) {
+// limit along the tool axis; the control needs the table turned by an L block. Cycle 19 sets up
+// the machine's X as the turned table carries it, not the plane's: CYCL DEF 10 turns the
+// coordinates about the tool axis by `rotation` degrees onto the plane's X (ROT+0 undoes it before
+// the reset).
+var planeRotation = 0;  // the CYCL DEF 10 rotation in force
+
+function rotationCycle(degrees) {
+    writeBlock("CYCL DEF 10.0", czech ? "ROTACE" : "ROTATION");
+    writeBlock("CYCL DEF 10.1", "ROT" + angleFormat.format(degrees));
+    planeRotation = degrees;
+}
+
+function cycle19Plane(b, c, rotation) {
     writeBlock("L", "M140 MB MAX");
+    if (planeRotation != 0)
+        rotationCycle(0);
     writeBlock("CYCL DEF 19.0", czech ? "NAKLOPENÍ ROVINY" : "WORKING PLANE");
     writeBlock("CYCL DEF 19.1", "B" + angleFormat.format(b), "C" + angleFormat.format(c));
     writeBlock("L", "C" + angleFormat.format(c), "B" + angleFormat.format(b), "R0", "FMAX");
+    if (Math.abs(rotation) >= 0.00005)  // the angle as written (4 decimals) is not 0
+        rotationCycle(rotation);
 }
 
 // The moves after it are in the plane's frame (the kernel forgets every axis). PLANE SPATIAL turns
@@ -33,7 +48,7 @@ function onWorkingPlane(plane) {
     var cycle19 = getProperty("workingPlane") == "cycle19";
     if (!plane.tilted) {
         if (cycle19) {
-            cycle19Plane(0, 0);
+            cycle19Plane(0, 0, 0);
         } else {
             writeBlock("PLANE RESET TURN MB MAX FMAX");
         }
@@ -46,7 +61,7 @@ function onWorkingPlane(plane) {
     notePlaneTravel("b", plane.machine.b);
     notePlaneTravel("c", plane.machine.c);
     if (cycle19) {
-        cycle19Plane(plane.machine.b, plane.machine.c);
+        cycle19Plane(plane.machine.b, plane.machine.c, plane.machine.rotation);
     } else {
         writeBlock("PLANE SPATIAL", "SPA" + angleFormat.format(plane.spatialA), "SPB" + angleFormat.format(plane.spatialB),
                    "SPC" + angleFormat.format(plane.spatialC), "TURN MB MAX FMAX", plane.machine.branch < 0 ? "SEQ-" : "SEQ+");

@@ -65,6 +65,8 @@ void Machine::cycleDef(const Block& b)
     }
     if (b.a == 247)
         return datumSetting(b);
+    if (b.a == 10)
+        return rotationCycle(b);
     const Program& p = program();
     if (b.a < 200 && b.b > 0) {
         // One line of an old multi-block cycle (9.1 DWELL 1.5, 1.2 DEPTH -20 ...): its last value.

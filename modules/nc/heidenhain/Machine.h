@@ -212,6 +212,7 @@ private:
     planeOfAxisAngles(const Block& b, const std::array<std::optional<double>, 3>& abc, const std::string& what);
     void planeRetract(const Block& b, std::optional<double> distance);
     void tilt(const Block& b, const toolpath::WorkingPlane& rotation);
+    void rotationCycle(const Block& b);
     void positionForPlane(const Block& b, const toolpath::WorkingPlane& plane);
     void checkToolAlongPlane(const Block& b);
 
@@ -243,7 +244,9 @@ private:
     Vec3 m_pos;                      // 0 on axes not yet known
     KnownAxes m_known;               // axes given in absolute terms so far (none at the start)
     Vec3 m_shift;                    // the datum shift, in the tilted plane's frame while one is tilted
-    toolpath::WorkingPlane m_plane;  // the tilted working plane (default: none)
+    toolpath::WorkingPlane m_plane;  // the working plane in force: the tilt turned by the rotation
+    toolpath::WorkingPlane m_tilt;   // the tilt PLANE / CYCL DEF 19 set (default: none)
+    double m_rotationDeg = 0;        // CYCL DEF 10 ROT: about the working plane's tool axis
     std::optional<std::array<double, 2>> m_planeAngles;  // the joint angles PLANE AXIAL / CYCL DEF 19 gave
     bool m_planeChecked = false;                         // the tool's axis was checked against the plane
     double m_scale = 1;                                  // mm per program unit

@@ -483,6 +483,24 @@ private:
             parseWords(c, m_env, b, kAxes);
             return;
         }
+        if (b.a == 10) {
+            // 10.1 ROT+30 (absolute) or IROT+30 (added to the last rotation).
+            if (b.b == 0)
+                return;  // 10.0 ROTATION: the title
+            c.skipSpace();
+            const int l = c.line(), col = c.column();
+            const bool incremental = c.keyword("IROT");
+            if (!incremental && !c.keyword("ROT"))
+                return fail(l, col, "CYCL DEF 10.1 takes ROT or IROT and an angle");
+            c.skipSpace();
+            const int e = parseValue(c, m_env);
+            if (e < 0)
+                return fail(c.line(), c.column(), "the rotation angle expected");
+            m_p.words.push_back({Key::Angle, e, incremental ? 1 : 0, l, col});
+            b.firstWord = static_cast<int>(m_p.words.size()) - 1;
+            b.wordCount = 1;
+            return;
+        }
         if (b.a == 9) {
             // 9.1 DWELL 1.5 (the label depends on the control's language): the last number counts.
             b.firstWord = static_cast<int>(m_p.words.size());

@@ -162,8 +162,9 @@ void Machine::planeRetract(const Block& b, std::optional<double> distance)
     }
 }
 
-// Sets the tilt (`rotation` about the datum; the untilted plane resets it) and writes the record.
-// The position stays where the tool is, in the new frame's coordinates, when it is known.
+// Sets the tilt (`rotation` about the datum; the untilted plane resets it), turned by the
+// CYCL DEF 10 rotation in force, and writes the record. The position stays where the tool is, in
+// the new frame's coordinates, when it is known.
 void Machine::tilt(const Block& b, const WorkingPlane& rotation)
 {
     if (m_comp != CutterCompSide::Off) {
@@ -171,9 +172,14 @@ void Machine::tilt(const Block& b, const WorkingPlane& rotation)
                "a working plane changed with radius compensation RL/RR on: the plane is not changed");
         return;
     }
+    m_tilt = rotation;
     const WorkingPlane old = m_plane;
     WorkingPlane next = rotation;
-    if (rotation.tilted()) {
+    if (m_rotationDeg != 0) {  // the frame's X and Y turned about its Z, counter-clockwise seen from +Z
+        const double r = m_rotationDeg * std::acos(-1.0) / 180;
+        next.xAxis = rotation.xAxis * std::cos(r) + rotation.yAxis() * std::sin(r);
+    }
+    if (next.tilted()) {
         // The first tilt turns about the datum the shift set; a shift made in the tilted frame stays there.
         next.origin = old.tilted() ? old.origin : m_shift;
         if (!old.tilted())
@@ -193,6 +199,22 @@ void Machine::tilt(const Block& b, const WorkingPlane& rotation)
     m_five.setInPlane(next.tilted());
     source(b);
     m_sink.workingPlane(next);
+}
+
+// CYCL DEF 10 ROTATION (iTNC 530 User's Manual, cycle 10): the coordinates turn about the working
+// plane's tool axis through the datum, ROT absolute, IROT added to the rotation in force; 0 undoes
+// it. The working plane written is the tilt turned so.
+void Machine::rotationCycle(const Block& b)
+{
+    if (b.b == 0 || b.wordCount != 1)
+        return;
+    const Word& word = program().words[static_cast<std::size_t>(b.firstWord)];
+    const auto value = eval(word.expr);
+    if (!value)
+        return;
+    m_rotationDeg = word.param == 1 ? m_rotationDeg + *value : *value;
+    m_rotationDeg = std::remainder(m_rotationDeg, 360.0);
+    tilt(b, m_tilt);
 }
 
 // TURN and MOVE turn a five-axis machine's rotary axes onto the plane (on the branch SEQ names);

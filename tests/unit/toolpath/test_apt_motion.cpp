@@ -39,10 +39,10 @@ TEST(AptMotion, ToolAxisMoves)
                         "TLAXIS/1,0,0\n"
                         "GOTO/7,0,20\n"),
               "linear 0.0000 0.0000 10.0000 f 800.0000\n"
-              "move5 5.0000 0.0000 10.0000 axis 0.0000 0.6000 0.8000 f 800.0000\n"
-              "move5 5.0000 0.0000 20.0000 axis 0.0000 0.6000 0.8000 f 0.0000\n"
+              "move5 5.0000 0.0000 10.0000 axis 0.000000000 0.600000000 0.800000000 f 800.0000\n"
+              "move5 5.0000 0.0000 20.0000 axis 0.000000000 0.600000000 0.800000000 f 0.0000\n"
               "linear 6.0000 0.0000 20.0000 f 800.0000\n"
-              "move5 7.0000 0.0000 20.0000 axis 1.0000 0.0000 0.0000 f 800.0000\n");
+              "move5 7.0000 0.0000 20.0000 axis 1.000000000 0.000000000 0.000000000 f 800.0000\n");
     EXPECT_EQ(failure("GOTO/1,2,3,0,0,0\n").column, 12);
     EXPECT_EQ(failure("TLAXIS/0,0\n").message, "TLAXIS expects i,j,k");
 }
@@ -61,7 +61,8 @@ TEST(AptMotion, RelativeMoves)
 {
     EXPECT_EQ(traceFini("FEDRAT/100\nGOTO/1,1,1\nGODLTA/1,2,3\nGODLTA/-5\nGODLTA/0,0,1,0,1,0\n"),
               "linear 1.0000 1.0000 1.0000 f 100.0000\nlinear 2.0000 3.0000 4.0000 f 100.0000\n"
-              "linear 2.0000 3.0000 -1.0000 f 100.0000\nmove5 2.0000 3.0000 0.0000 axis 0.0000 1.0000 0.0000 f "
+              "linear 2.0000 3.0000 -1.0000 f 100.0000\nmove5 2.0000 3.0000 0.0000 axis 0.000000000 1.000000000 "
+              "0.000000000 f "
               "100.0000\n");
     EXPECT_EQ(failure("GODLTA/1,2,3\n").message, "GODLTA needs a known position (a GOTO or FROM before it)");
 }

@@ -199,8 +199,9 @@ TEST(TraceReader, FiveAxisMovesCarryTheMachinesKnownRotaryAxes)
     t.add(move);
     t.add(ToolAxisMove{{1, 2, 4}, {0, 0, 1}, 0});
     const std::string trace = traceOf(t);
-    EXPECT_EQ(trace, "move5 1.0000 2.0000 3.0000 axis 0.0000 0.6000 0.8000 f 250.0000 b -36.8699 c 365.0000\n"
-                     "move5 1.0000 2.0000 4.0000 axis 0.0000 0.0000 1.0000 f 0.0000\n");
+    EXPECT_EQ(trace,
+              "move5 1.0000 2.0000 3.0000 axis 0.000000000 0.600000000 0.800000000 f 250.0000 b -36.8699 c 365.0000\n"
+              "move5 1.0000 2.0000 4.0000 axis 0.000000000 0.000000000 1.000000000 f 0.0000\n");
     auto read = readTrace(trace, "in.trace");
     ASSERT_TRUE(read.ok()) << read.error().toString();
     EXPECT_EQ(traceOf(read->toolpath), trace);
@@ -229,8 +230,10 @@ TEST(TraceReader, JointMovesAndSectionPropertiesReadBack)
     joint.jointInterpolated = true;
     t.add(joint);
     const std::string trace = traceOf(t);
-    EXPECT_EQ(trace, "section \"Ring\" swarf tool 1 cut 600.0000 plunge 200.0000 set tcpm \"off\" set rotaryFeed "
-                     "\"m116\"\nmove5 1.0000 2.0000 3.0000 axis 0.0000 0.0000 1.0000 f 100.0000 b 0.0000 joint\n");
+    EXPECT_EQ(
+        trace,
+        "section \"Ring\" swarf tool 1 cut 600.0000 plunge 200.0000 set tcpm \"off\" set rotaryFeed "
+        "\"m116\"\nmove5 1.0000 2.0000 3.0000 axis 0.000000000 0.000000000 1.000000000 f 100.0000 b 0.0000 joint\n");
     auto read = readTrace(trace, "in.trace");
     ASSERT_TRUE(read.ok()) << read.error().toString();
     EXPECT_EQ(traceOf(read->toolpath), trace);

@@ -33,7 +33,7 @@ TEST(TraceWriter, Moves)
     EXPECT_EQ(traceOne(arc),
               "arc ccw 10.0000 0.0000 -1.0000 c 5.0000 0.0000 -1.0000 n 0.0000 0.0000 1.0000 turns 0 f 800.0000\n");
     EXPECT_EQ(traceOne(ToolAxisMove{{1, 2, 3}, {0, 0.6, 0.8}, 0}),
-              "move5 1.0000 2.0000 3.0000 axis 0.0000 0.6000 0.8000 f 0.0000\n");
+              "move5 1.0000 2.0000 3.0000 axis 0.000000000 0.600000000 0.800000000 f 0.0000\n");
 }
 
 TEST(TraceWriter, AMoveNamesItsFeedKindAfterTheFeedOnlyWhenItHasOne)

@@ -1,7 +1,7 @@
-// Round trip of every post golden (posts/<id>/tests/<case>/) and of the example job's goldens
-// (tests/golden/jobs/example-block: the NC and the CL the operations made): the NC the post wrote,
-// read back by our interpreter for its dialect, must move the machine as the CL it was posted
-// from does, within the output precision (MotionMatch.h).
+// Round trip of every post golden (posts/<id>/tests/<case>/) and of the example jobs' goldens
+// (tests/golden/jobs/example-block and example-five-axis: the NC and the CL the operations made): the NC the post
+// wrote, read back by our interpreter for its dialect, must move the machine as the CL it was posted from does, within
+// the output precision (MotionMatch.h).
 #include "MotionMatch.h"
 
 #include "kinematics/Machine.h"
@@ -62,6 +62,9 @@ std::vector<PostCase> postCases()
     std::sort(cases.begin(), cases.end(), [](const PostCase& a, const PostCase& b) { return a.name < b.name; });
     const fs::path example = fs::path(CAMWB_TEST_DATA_DIR) / "tests/golden/jobs/example-block";
     cases.push_back({"example_job", example, example / "expected.trace", example / "expected.mpf"});
+    const fs::path fiveAxis = fs::path(CAMWB_TEST_DATA_DIR) / "tests/golden/jobs/example-five-axis";
+    cases.push_back({"example_five_axis_job", fiveAxis, fiveAxis / "expected.trace", fiveAxis / "expected.h",
+                     posts / "heidenhain-itnc530.js"});
     return cases;
 }
 
@@ -238,6 +241,7 @@ std::optional<std::string> roundTrip(const PostCase& c, const fs::path& nc)
         })) {
         tolerance.machineMotion = &machine->kinematics;
         tolerance.pointMm += info.capabilities.toleranceMm;
+        tolerance.backPointMm += info.capabilities.toleranceMm;
         tolerance.axisBetweenRad = 1e-3;
     }
     return matchMotion(recorder.toolpath(), expected, tolerance);

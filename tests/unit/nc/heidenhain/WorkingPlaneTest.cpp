@@ -1,7 +1,8 @@
 // Tilted working planes in Klartext: PLANE SPATIAL (TURN, STAY with Q120..Q122), PLANE RESET,
 // VECTOR and AXIAL, CYCL DEF 19 with the machine's axis angles (its frame is the machine's axes as
 // the table turns them) and without a machine, the datum shift of CYCL DEF 7 before and after the
-// tilt, and the diagnostics of bad PLANE blocks. On the MAS MCVL 1000's B/C table.
+// tilt, the rotation of CYCL DEF 10, and the diagnostics of bad PLANE blocks. On the MAS MCVL
+// 1000's B/C table.
 #include "TestSupport.h"
 
 #include "kinematics/Machine.h"
@@ -161,6 +162,42 @@ TEST(HeidenhainWorkingPlane, BadPlaneBlocksAreDiagnosedOnTheirLines)
     EXPECT_TRUE(r.has(Severity::Error, 7, "unknown word 'FOO' in PLANE"));
     EXPECT_TRUE(r.has(Severity::Error, 8, "PLANE AXIAL gives the machine's rotary axis positions"));
     EXPECT_TRUE(r.all<WorkingPlane>().empty());
+}
+
+// CYCL DEF 10 ROTATION turns the coordinates about the working plane's tool axis (through the
+// datum): ROT absolute, IROT added, 0 undoes it; in a CYCL DEF 19 plane it turns the machine's
+// tilted X onto the plane's X, as the iTNC post writes it.
+TEST(HeidenhainWorkingPlane, RotationCycleTurnsTheFrameAboutTheToolAxis)
+{
+    const Traced flat = runOn(nullptr, "2 L X+0 Y+0 Z+50 R0 FMAX\n"
+                                       "3 CYCL DEF 10.0 ROTATION\n4 CYCL DEF 10.1 ROT+90\n"
+                                       "5 L X+10 Y+0 FMAX\n"
+                                       "6 CYCL DEF 10.0 ROTATION\n7 CYCL DEF 10.1 IROT-45\n"
+                                       "8 L X+10 Y+0 FMAX\n"
+                                       "9 CYCL DEF 10.0 ROTATION\n10 CYCL DEF 10.1 ROT+0\n");
+    EXPECT_TRUE(flat.result.diagnostics.empty()) << flat.diagnostics()[0];
+    const auto planes = flat.all<WorkingPlane>();
+    ASSERT_EQ(planes.size(), 3u);
+    expectNear(planes[0].xAxis, {0, 1, 0});
+    expectNear(planes[0].zAxis, {0, 0, 1});
+    expectNear(planes[0].toWorkpiece({10, 0, 50}), {0, 10, 50});
+    expectNear(planes[1].xAxis, {std::sqrt(0.5), std::sqrt(0.5), 0});
+    EXPECT_FALSE(planes[2].tilted());
+
+    const kinematics::Machine m = mcvl1000();
+    const Traced tilted = runOn(&m, "2 L X+0 Y+0 Z+100 R0 FMAX\n"
+                                    "3 CYCL DEF 19.0 WORKING PLANE\n4 CYCL DEF 19.1 B-30 C-90\n"
+                                    "5 L C-90 B-30 R0 FMAX\n"
+                                    "6 CYCL DEF 10.0 ROTATION\n7 CYCL DEF 10.1 ROT-90\n");
+    const auto turned = tilted.all<WorkingPlane>();
+    ASSERT_EQ(turned.size(), 2u);
+    // The tool axis stays; X turns 90 degrees clockwise about it (seen from the spindle).
+    expectNear(turned[1].zAxis, turned[0].zAxis);
+    expectNear(turned[1].xAxis, turned[0].yAxis() * -1.0);
+    const Traced bad = runOn(nullptr, "2 CYCL DEF 10.0 ROTATION\n3 CYCL DEF 10.1 TURN+5\n");
+    ASSERT_FALSE(bad.result.diagnostics.empty());
+    EXPECT_EQ(bad.result.diagnostics[0].line, 4);
+    EXPECT_NE(bad.result.diagnostics[0].message.find("ROT or IROT"), std::string::npos);
 }
 
 }  // namespace

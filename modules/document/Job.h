@@ -61,6 +61,9 @@ struct Operation {
     HeightOverrides heights;
     OperationParams params;
     WorkingPlaneSpec plane;
+    // The operation's own values of post properties the post takes per operation (the iTNC's
+    // tcpm), as text over the job's: they ride on its CL section (SectionBegin::postProperties).
+    std::map<std::string, std::string> postProperties;
 
     OperationKind kind() const { return static_cast<OperationKind>(params.index()); }
     const std::string& name() const;

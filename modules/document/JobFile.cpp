@@ -66,19 +66,8 @@ Job readJob(const json& root)
     job.postId = text(root, "post", where);
     if (optionalMember(root, "machine", where))
         job.machineId = text(root, "machine", where);
-    if (const Json* properties = optionalMember(root, "postProperties", where)) {
-        if (!properties->is_object())
-            throw JsonFieldError{where + ".postProperties: expected an object"};
-        for (const auto& [name, value] : properties->items()) {
-            // Kept as text: the post's declaration decides the type when the job is posted.
-            if (value.is_string())
-                job.postProperties[name] = value.get<std::string>();
-            else if (value.is_boolean() || value.is_number())
-                job.postProperties[name] = value.dump();
-            else
-                throw JsonFieldError{where + ".postProperties." + name + ": expected a string, number or bool"};
-        }
-    }
+    if (const Json* properties = optionalMember(root, "postProperties", where))
+        job.postProperties = detail::readPostProperties(*properties, where + ".postProperties");
 
     const json& tools = member(root, "tools", where);
     if (!tools.is_array())
@@ -132,8 +121,11 @@ std::string serializeJob(const Job& job)
     root["format"] = "camwb-job";
     const bool planes = std::any_of(job.operations.begin(), job.operations.end(),
                                     [](const Operation& op) { return op.plane.mode != WorkingPlaneSpec::Mode::Flat; });
-    const bool swarf = std::any_of(job.operations.begin(), job.operations.end(),
-                                   [](const Operation& op) { return op.kind() == OperationKind::Swarf; });
+    // Version 5: a swarf operation, or an operation's own post properties (an older reader would
+    // post it with the job's, e.g. another TCPM mode).
+    const bool swarf = std::any_of(job.operations.begin(), job.operations.end(), [](const Operation& op) {
+        return op.kind() == OperationKind::Swarf || !op.postProperties.empty();
+    });
     root["version"] = swarf ? kJobFormatVersion : planes ? 4 : 3;
     root["name"] = job.name;
     root["model"] = job.modelPath;

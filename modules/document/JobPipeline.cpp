@@ -50,7 +50,10 @@ base::Result<toolpath::Toolpath> computeProgram(const Job& job, const occ::Model
         const ops::ToolController& tc = *job.tool(op.toolNumber);  // computeOperation checked it
         const toolpath::Toolpath& records = section->toolpath;
         for (std::size_t r = 0; r < records.size(); ++r) {
-            program.add(records.record(r), records.source(r));
+            toolpath::Record record = records.record(r);
+            if (auto* begin = std::get_if<toolpath::SectionBegin>(&record))
+                begin->postProperties.assign(op.postProperties.begin(), op.postProperties.end());
+            program.add(record, records.source(r));
             const bool isSectionStart = std::holds_alternative<toolpath::SectionBegin>(records.record(r));
             if (isSectionStart && tc.tool.number != currentTool) {
                 program.add(toolpath::ToolChange{tc.tool}, {index, -1});

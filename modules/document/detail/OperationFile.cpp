@@ -168,7 +168,25 @@ Operation readOperation(const Json& o, const std::string& where)
         std::visit([&](auto& p) { readParams(p, *params, where + ".params"); }, op.params);
     if (const Json* plane = optionalMember(o, "workingPlane", where))
         op.plane = readWorkingPlane(*plane, where + ".workingPlane");
+    if (const Json* properties = optionalMember(o, "postProperties", where))
+        op.postProperties = readPostProperties(*properties, where + ".postProperties");
     return op;
+}
+
+std::map<std::string, std::string> readPostProperties(const Json& object, const std::string& where)
+{
+    if (!object.is_object())
+        throw JsonFieldError{where + ": expected an object"};
+    std::map<std::string, std::string> values;
+    for (const auto& [name, value] : object.items()) {
+        if (value.is_string())
+            values[name] = value.get<std::string>();
+        else if (value.is_boolean() || value.is_number())
+            values[name] = value.dump();
+        else
+            throw JsonFieldError{where + "." + name + ": expected a string, number or bool"};
+    }
+    return values;
 }
 
 ojson writeOperation(const Operation& op)
@@ -189,6 +207,8 @@ ojson writeOperation(const Operation& op)
         out["workingPlane"] = {{"face", op.plane.face}};
     else if (op.plane.mode == WorkingPlaneSpec::Mode::Angles)
         out["workingPlane"] = {{"a", op.plane.aDeg}, {"b", op.plane.bDeg}, {"c", op.plane.cDeg}};
+    if (!op.postProperties.empty())
+        out["postProperties"] = op.postProperties;
     return out;
 }
 

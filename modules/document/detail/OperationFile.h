@@ -12,6 +12,9 @@ namespace camwb::document::detail {
 
 // Throws base::jsonread::JsonFieldError naming the field ("job.operations[1].params.stepover: ...").
 Operation readOperation(const base::jsonread::Json& o, const std::string& where);
+// A "postProperties" object (the job's, or an operation's own): values kept as text, the post's
+// declaration decides their type when the job is posted.
+std::map<std::string, std::string> readPostProperties(const base::jsonread::Json& object, const std::string& where);
 nlohmann::ordered_json writeOperation(const Operation& op);
 
 }  // namespace camwb::document::detail

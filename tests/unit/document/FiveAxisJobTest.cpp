@@ -4,9 +4,12 @@
 #include "document/JobFile.h"
 #include "document/JobPipeline.h"
 #include "document/OperationGeometry.h"
+#include "kinematics/Machine.h"
+#include "post/PostRegistry.h"
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 
 using namespace camwb;
@@ -38,6 +41,59 @@ Vec3 sideNormal(int quarter)
 {
     const double a = quarter * kPi / 2;
     return {0.5 * std::cos(a), 0.5 * std::sin(a), std::sqrt(3.0) / 2};
+}
+
+// An operation's own post property: the swarf pass in machine coordinates (tcpm off) while the
+// job posts with M128; it rides on the CL section, survives the job file, and a value the post
+// does not take per operation, or a bad one, fails naming the record.
+TEST(FiveAxisJob, AnOperationSetsItsOwnTcpm)
+{
+    document::Job job = fiveAxis().job;
+    auto swarf = std::find_if(job.operations.begin(), job.operations.end(), [](const document::Operation& op) {
+        return op.kind() == document::OperationKind::Swarf;
+    });
+    ASSERT_NE(swarf, job.operations.end());
+    post::PostContext context;
+    context.outputName = "FIVE";  // the Klartext program's name
+    auto post = [&](const document::Job& j) -> base::Result<std::string> {
+        auto program = document::computeProgram(j, fiveAxis().model);
+        if (!program)
+            return program.error();
+        auto processor = document::loadJobPost(j, post::defaultPostDirs());
+        if (!processor)
+            return processor.error();
+        auto options = document::jobRunOptions(j, processor.value(), context, kinematics::defaultMachineDirs());
+        if (!options)
+            return options.error();
+        auto out = processor.value().run(program.value(), options.value());
+        if (!out)
+            return out.error();
+        return out.value().text;
+    };
+    auto asJob = post(job);
+    ASSERT_TRUE(asJob) << asJob.error().toString();
+    EXPECT_NE(asJob.value().find("L M128"), std::string::npos);
+
+    swarf->postProperties["tcpm"] = "off";
+    auto reread = document::parseJob(document::serializeJob(job), "five.camwb");
+    ASSERT_TRUE(reread) << reread.error().toString();
+    EXPECT_EQ(reread.value().operations[static_cast<std::size_t>(swarf - job.operations.begin())].postProperties,
+              swarf->postProperties);
+    EXPECT_NE(document::serializeJob(job).find("\"version\": 5"), std::string::npos);
+    auto own = post(reread.value());
+    ASSERT_TRUE(own) << own.error().toString();
+    EXPECT_EQ(own.value().find("M128"), std::string::npos);  // the only five-axis operation is off
+    EXPECT_NE(own.value().find("PLANE SPATIAL"), std::string::npos);
+
+    swarf->postProperties = {{"tcpm", "sometimes"}};
+    auto bad = post(job);
+    ASSERT_FALSE(bad);
+    EXPECT_NE(bad.error().message.find("tcpm"), std::string::npos) << bad.error().toString();
+    EXPECT_NE(bad.error().message.find("CL record"), std::string::npos) << bad.error().toString();
+    swarf->postProperties = {{"units", "inch"}};
+    bad = post(job);
+    ASSERT_FALSE(bad);
+    EXPECT_NE(bad.error().message.find("applies to the whole program"), std::string::npos) << bad.error().toString();
 }
 
 }  // namespace

@@ -1,6 +1,7 @@
 // The five-axis example job (3+2): drilling square to four inclined faces, one plane per hole
 // direction, and a contour round a boss on an inclined face in that face's plane; the working
 // planes in the job file; the errors of a plane that cannot be.
+#include "FiveAxisExample.h"
 #include "document/JobFile.h"
 #include "document/JobPipeline.h"
 #include "document/OperationGeometry.h"
@@ -17,25 +18,9 @@ using toolpath::Vec3;
 
 namespace {
 
-const std::string kFiveAxisJob = std::string(CAMWB_TEST_DATA_DIR) + "/resources/examples/example-five-axis.camwb";
 constexpr double kPi = 3.14159265358979323846;
 
-struct Loaded {
-    document::Job job;
-    occ::Model model;
-};
-
-const Loaded& fiveAxis()
-{
-    static const Loaded loaded = [] {
-        auto job = document::loadJob(kFiveAxisJob);
-        EXPECT_TRUE(job.ok()) << job.error().toString();
-        auto model = document::loadJobModel(job.value());
-        EXPECT_TRUE(model.ok()) << model.error().toString();
-        return Loaded{job.value(), model.value()};
-    }();
-    return loaded;
-}
+using document::test::fiveAxis;
 
 Vec3 sideNormal(int quarter)
 {

@@ -2,6 +2,7 @@
 // tool's side on the cone all round it (the axis leaning every way), gouge-checked against the
 // model; a tip forced into the inclined face is a gouge named by face and place; a face that is not
 // ruled and a working plane are refused; the parameters' round trip through the job file.
+#include "FiveAxisExample.h"
 #include "document/JobFile.h"
 #include "document/JobPipeline.h"
 #include "document/OperationGeometry.h"
@@ -15,26 +16,10 @@ using toolpath::Vec3;
 
 namespace {
 
-const std::string kFiveAxisJob = std::string(CAMWB_TEST_DATA_DIR) + "/resources/examples/example-five-axis.camwb";
 constexpr double kPi = 3.14159265358979323846;
 constexpr int kSwarf = 2;  // the operation's index in the job
 
-struct Loaded {
-    document::Job job;
-    occ::Model model;
-};
-
-const Loaded& fiveAxis()
-{
-    static const Loaded loaded = [] {
-        auto job = document::loadJob(kFiveAxisJob);
-        EXPECT_TRUE(job.ok()) << job.error().toString();
-        auto model = document::loadJobModel(job.value());
-        EXPECT_TRUE(model.ok()) << model.error().toString();
-        return Loaded{job.value(), model.value()};
-    }();
-    return loaded;
-}
+using document::test::fiveAxis;
 
 std::vector<toolpath::ToolAxisMove> moves(const toolpath::Toolpath& tp)
 {

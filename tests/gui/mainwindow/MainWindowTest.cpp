@@ -554,6 +554,46 @@ private slots:
         saveShot(&window, QStringLiteral("heidenhain-five-axis.png"));
     }
 
+    // The five-axis example job as a user opens it: posted for the MAS MCVL 1000 (its post's and
+    // job's machine) and read back through the machine: the four drilling planes and the boss's
+    // plane as tilted working planes, the swarf pass as five-axis moves with their tool axes drawn,
+    // and no diagnostic but the two the travel-limit retract gives by design (M140 MB MAX leaves Z
+    // unknown). The picture: five-axis-example-job.png.
+    void fiveAxisExampleJobTracesThroughItsMachine()
+    {
+        MainWindow window;
+        window.resize(1600, 1000);
+        window.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&window));
+        QSignalSpy posted(&window.workbench(), &Workbench::postFinished);
+        QVERIFY(window.openJob(QStringLiteral(CAMWB_SOURCE_DIR "/resources/examples/example-five-axis.camwb")));
+        QVERIFY(posted.wait(120000));
+        QCOMPARE(posted.first().first().toBool(), true);
+        QVERIFY(waitForTrace(window));
+        const auto trace = window.inspector()->trace();
+        QVERIFY(window.inspector()->machine() != nullptr);
+        QCOMPARE(QString::fromStdString(window.inspector()->machine()->id), QStringLiteral("mas-mcvl1000"));
+        for (const auto& d : trace->result.diagnostics)
+            QVERIFY2(d.severity == camwb::base::Severity::Warning &&
+                         (d.message.rfind("M140 MB MAX", 0) == 0 ||
+                          d.message.find("rotary axes turned while X, Y or Z is unknown") != std::string::npos),
+                     d.message.c_str());
+        int tilted = 0, fiveAxis = 0;
+        for (const camwb::toolpath::Record& r : trace->program.records()) {
+            if (const auto* plane = std::get_if<camwb::toolpath::WorkingPlane>(&r))
+                tilted += plane->tilted() ? 1 : 0;
+            fiveAxis += std::holds_alternative<camwb::toolpath::ToolAxisMove>(r) ? 1 : 0;
+        }
+        QCOMPARE(tilted, 5);  // four hole directions and the boss's face
+        QVERIFY(fiveAxis > 100);
+        const camwb::gui::ToolpathPolylines* lines = window.view()->toolpathPolylines();
+        QVERIFY(lines != nullptr);
+        QVERIFY(lines->segmentCount(camwb::gui::PathSegmentKind::ToolAxis) > 10);
+        window.view()->fitAll();
+        QTest::qWait(300);
+        saveShot(&window, QStringLiteral("five-axis-example-job.png"));
+    }
+
     // Offscreen there is no OpenGL; under Xvfb CAMWB_NO_OPENGL=1 turns it off the same way.
     void withoutOpenGlTheViewSaysSo()
     {

@@ -91,7 +91,8 @@ std::string FiveAxisState::useMessage(char axis, RotaryAxisUse use) const
     const std::string machine = m_machine ? (m_machine->name.empty() ? m_machine->id : m_machine->name) : "";
     switch (use) {
     case RotaryAxisUse::NoMachine:
-        return "rotary axis " + name + " without a machine (--machine) to read it through: its value is ignored";
+        return "rotary axis " + name +
+               " without a machine (--machine, or the NC inspector's Machine) to read it through: its value is ignored";
     case RotaryAxisUse::Missing:
         return "the " + machine + " has no " + name + " axis";
     case RotaryAxisUse::NoChain:

@@ -235,7 +235,8 @@ void Machine::applySpindleAndCoolant(const Block& b, const BlockWords& w)
                 setTcpm(true);
             } else {
                 warnOnce(kWarnTcpm, b,
-                         "M128 (TCPM): tool-tip control needs a five-axis machine (--machine) to be traced; "
+                         "M128 (TCPM): tool-tip control needs a five-axis machine (--machine, or the NC inspector's "
+                         "Machine) to be traced; "
                          "positions are traced as three-axis moves");
             }
             break;

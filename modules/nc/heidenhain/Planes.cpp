@@ -107,7 +107,7 @@ std::optional<WorkingPlane> Machine::planeOfAxisAngles(const Block& b, const std
     if (!m_five.active()) {
         report(Severity::Error, b.line, b.column,
                what + " gives the machine's rotary axis positions: its working plane needs a five-axis machine "
-                      "(--machine) to be known; the moves after it are traced untilted");
+                      "(--machine, or the NC inspector's Machine) to be known; the moves after it are traced untilted");
         return std::nullopt;
     }
     std::array<double, 2> deg{0, 0};  // an axis the block does not name stands at 0

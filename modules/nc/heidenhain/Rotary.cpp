@@ -58,7 +58,8 @@ bool Machine::rotaryTarget(const Block& b, const BlockWords& w, RotaryTarget& ta
         const RotaryAxisUse use = m_five.use(axis, &joint);
         if (use == RotaryAxisUse::NoMachine) {
             warnOnce(kWarnRotary, b,
-                     "rotary axes A, B, C need a five-axis machine (--machine) to be traced: their values are ignored");
+                     "rotary axes A, B, C need a five-axis machine (--machine, or the NC inspector's Machine) to be "
+                     "traced: their values are ignored");
             continue;
         }
         if (use == RotaryAxisUse::NoChain) {
@@ -160,7 +161,8 @@ void Machine::tcpmFunction(const Block& b)
     if (!m_five.active()) {
         if (!b.flag)
             report(Severity::Warning, b.line, b.column,
-                   "FUNCTION TCPM: tool-tip control needs a five-axis machine (--machine) to be traced; "
+                   "FUNCTION TCPM: tool-tip control needs a five-axis machine (--machine, or the NC inspector's "
+                   "Machine) to be traced; "
                    "positions are traced as three-axis moves");
         return;
     }

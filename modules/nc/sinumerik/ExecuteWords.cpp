@@ -83,7 +83,8 @@ bool Machine::readKeyword(const Program& p, const Block& b, const Word& word, Bl
     case Keyword::TraOri:
         if (!m_five.active())
             warning(p, word.pos,
-                    "TRAORI (five-axis transformation) needs a five-axis machine (--machine) to be traced: "
+                    "TRAORI (five-axis transformation) needs a five-axis machine (--machine, or the NC inspector's "
+                    "Machine) to be traced: "
                     "positions are traced as programmed");
         w.transform = 1;
         break;

@@ -63,7 +63,8 @@ bool Machine::rotaryTarget(const Program& p, const BlockWords& w, RotaryMove& r)
         const RotaryAxisUse use = m_five.use(axis, &joint);
         if (use == RotaryAxisUse::NoMachine) {
             warning(p, w.axisPos[i],
-                    "rotary axes A B C need a five-axis machine (--machine) to be traced: their values are ignored");
+                    "rotary axes A B C need a five-axis machine (--machine, or the NC inspector's Machine) to be "
+                    "traced: their values are ignored");
             continue;
         }
         if (use != RotaryAxisUse::Traced) {
@@ -110,7 +111,8 @@ bool Machine::toolVector(const Program& p, const BlockWords& w, RotaryMove& r)
         return true;
     if (!m_five.active()) {
         warning(p, w.toolVectorPos,
-                "A3= B3= C3= (tool vector) need a five-axis machine (--machine) to be traced: ignored");
+                "A3= B3= C3= (tool vector) need a five-axis machine (--machine, or the NC inspector's Machine) to be "
+                "traced: ignored");
         return true;
     }
     if (!m_modal.traori) {

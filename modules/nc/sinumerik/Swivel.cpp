@@ -99,7 +99,7 @@ void Machine::swivel(const Program& p, const Block& b, const Word& word)
             if (std::abs(arg(7)) > 1e-9 || std::abs(arg(8)) > 1e-9) {
                 error(p, word.pos,
                       "CYCLE800 direct mode gives rotary axis positions: its plane needs a five-axis machine "
-                      "(--machine); the swivel plane is not changed");
+                      "(--machine, or the NC inspector's Machine); the swivel plane is not changed");
                 return;
             }
         } else {

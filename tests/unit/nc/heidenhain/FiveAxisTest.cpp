@@ -162,7 +162,7 @@ TEST(HeidenhainFiveAxis, WithoutAMachineRotaryWordsWarnAndMoveNothing)
 {
     const Traced r = run(program("2 L X+10 B+30 C+40 FMAX M128\n"));
     EXPECT_EQ(r.count(Severity::Error), 0u);
-    EXPECT_TRUE(r.has(Severity::Warning, 3, "need a five-axis machine (--machine)"));
+    EXPECT_TRUE(r.has(Severity::Warning, 3, "need a five-axis machine (--machine, or the NC inspector's Machine)"));
     EXPECT_TRUE(r.has(Severity::Warning, 3, "M128"));
     EXPECT_TRUE(r.all<ToolAxisMove>().empty());
     ASSERT_EQ(r.all<Rapid>().size(), 1u);

@@ -9,7 +9,11 @@
 // C itself, Programming Manual Job Planning, "Three, four and five axis transformation (TRAORI)").
 // Each run of them: TRAORI, ORIWKS ORIVECT ... TRAFOOF, then Z to the top of its travel and the
 // table home; after each tool change the table home too, so three-axis moves never run on a table
-// another program left tilted. G93 inverse-time feed is a property. 3+2 working planes as CYCLE800
+// another program left tilted. With the property orientation=angles the kernel plans each
+// operation's rotary positions (post.fiveAxis: the branch over the whole operation, within the
+// limits) and the blocks give B and C instead of the vector: the table turned at the top of Z
+// first, TRAORI, X/Y then Z; an endless C by DC, or ACP/ACN for half a turn or more (the turn on
+// the pole). G93 inverse-time feed is a property. 3+2 working planes as CYCLE800
 // (the plane's spatial angles, the table turned by the control on the kernel's branch), CYCLE800()
 // and the table home after them.
 var post = {
@@ -31,6 +35,12 @@ var post = {
             description: "Five-axis feed moves in G93: F = 1 / the block's time in minutes (the tool tip's " +
                          "length at the CL feed, or the tool vector's turn in degrees at the feed as deg/min " +
                          "where the tip stands), G94 again after them; off: F is the tip's feed in mm/min"
+        },
+        orientation: {
+            title: "Five-axis orientation", type: "enum", values: ["vector", "angles"], default: "vector",
+            description: "Under TRAORI: the tool vector A3= B3= C3= (the control chooses the rotary positions), or " +
+                         "the rotary axes' positions as the kernel plans them over each operation (within the " +
+                         "machine's limits; an endless axis by DC, or ACP/ACN for a turn of half a revolution or more)"
         },
         swivelDataSet: {
             title: "Swivel data set (CYCLE800 _TC)", type: "string", default: "TC1",
@@ -93,6 +103,12 @@ var feedModeModal = createModal({prefix: "G"});
 // A straight move or arc of the CL between five-axis moves has the tool along +Z: under TRAORI
 // its block carries that vector (the control would keep the last one), and under G93 it needs G94
 // first. Both are set when a five-axis move leaves them due and ride on the next such block.
+// Rotary positions (orientation angles): the kernel plans each five-axis operation's poses
+// (kinematics::planBranches, for every post on a five-axis machine) and hands them to onLinear5D
+// with each step; post.fiveAxis says how (G93 by the kernel's inverse time).
+var angleOutput = getProperty("orientation") == "angles";
+if (angleOutput)
+    post.fiveAxis = {output: "tip", feed: inverseTime ? "inverse" : "tip"};
 var verticalVector = createPending();
 var backToG94 = createPending();
 
@@ -239,7 +255,11 @@ function turnDeg(a, b) {
 var lastVector = [0, 0, 1];  // the tool's last unit vector: vertical with the table home
 var verticalDue = false;     // verticalVector was set: a three-axis block may have written it
 
-function onLinear5D(x, y, z, i, j, k, feed) {
+function onLinear5D(x, y, z, i, j, k, feed, pose) {
+    if (angleOutput) {  // a step of the kernel's plan: orientation by rotary positions
+        writeRotaryPose(feed, pose);
+        return;
+    }
     if (!traori && Math.abs(i) < 1e-9 && Math.abs(j) < 1e-9 && k > 0) {
         // Along +Z outside a five-axis run: a three-axis move, on any machine.
         var move = [motionModal.format(feed > 0 ? 1 : 0), compModal.format(compCode),
@@ -307,6 +327,95 @@ function onLinear5D(x, y, z, i, j, k, feed) {
         f = feedOutput.format(feed);
     }
     writeBlock(motionModal.format(1), words[0], words[1], words[2], words[3], f);
+}
+
+// --- Five-axis by rotary positions (orientation angles) ----------------------------------------
+
+var rotaryAt = {};    // endless axes: the kernel's (continuous) angle each was last sent to
+var rotaryText = {};  // limited axes: the word last written
+// Rotary positions to 4 decimals: the tool axis within 1e-6 rad of the plan's per axis.
+var rotaryFormat = createFormat({decimals: 4, trim: true});
+
+// The word that sends rotary axis `name` to `deg` ("" when it stands there): a limited axis by its
+// position, an endless one (modulo 360 on the control) by DC, the shorter way, or by ACP/ACN where
+// the plan turns it half a revolution or more, so that it turns the way the plan does.
+function rotaryWord(name, deg) {
+    var axis = axisOf(name);
+    if (!axis || !axis.endless) {
+        var word = name + rotaryFormat.format(deg);
+        if (rotaryText[name] == word)
+            return "";
+        rotaryText[name] = word;
+        return word;
+    }
+    var from = rotaryAt[name];
+    rotaryAt[name] = deg;
+    var turn = from === undefined ? 0 : deg - from;
+    if (from !== undefined && Math.abs(turn) < 0.00005)
+        return "";
+    var position = rotaryFormat.format(((deg % 360) + 360) % 360);
+    if (Math.abs(turn) < 180 - 1e-6)
+        return name + "=DC(" + position + ")";
+    if (Math.abs(turn) < 360 - 1e-6)
+        return name + (turn > 0 ? "=ACP(" : "=ACN(") + position + ")";
+    error("axis " + name + " would turn " + rotaryFormat.format(turn) + " degrees in one block: more than a revolution");
+}
+
+// The rotary words of a planned pose ({b: .., c: ..} by axis name), in the chain's order.
+function rotaryWords(pose) {
+    var chain = fiveAxisChain();
+    var words = [];
+    for (var r = 0; r < chain.rotaries.length; ++r) {
+        var name = chain.rotaries[r].axis;
+        var deg = pose[name.toLowerCase()];
+        var word = deg === undefined ? "" : rotaryWord(name, deg);
+        if (word)
+            words.push(word);
+    }
+    return words;
+}
+
+// Before an operation: Z up to its travel, the table turned to the first pose there, TRAORI on.
+function onFiveAxisBegin(section) {
+    if (!angleOutput)
+        return;  // the vector: TRAORI opens with the first five-axis move (onLinear5D)
+    var z = axisOf("Z");
+    writeBlock("G0", "SUPA", "Z" + xyzFormat.format(z && z.max !== null ? z.max : 0), "D0");
+    rotaryAt = {};
+    rotaryText = {};
+    writeBlock.apply(null, ["G0"].concat(rotaryWords(section)));
+    writeBlock("D1");
+    writeBlock("TRAORI");
+    if (inverseTime)
+        writeBlock("G93");
+    forceMotion();
+}
+
+function writeRotaryPose(feed, pose) {
+    var words = [pose.x !== undefined ? xOutput.format(pose.x) : "", pose.y !== undefined ? yOutput.format(pose.y) : "",
+                 pose.z !== undefined ? zOutput.format(pose.z) : ""].concat(rotaryWords(pose));
+    if (!(feed > 0)) {
+        writeBlock.apply(null, [motionModal.format(0)].concat(words));
+        return;
+    }
+    // G93: the kernel's inverse time (1/min); else the tip's feed in mm/min.
+    var f = inverseTime ? inverseFeedOutput.format(feed) : feedOutput.format(feed);
+    writeBlock.apply(null, [motionModal.format(1)].concat(words, [f]));
+}
+
+// After it: G94, TRAFOOF, Z up to its travel, the table home, the length offset back.
+function onFiveAxisEnd(pose, home) {
+    if (!angleOutput)
+        return;  // the vector: TRAFOOF at the section's end (endTraori)
+    if (inverseTime) {
+        writeBlock("G94");
+        feedModeModal.reset();
+        feedOutput.reset();
+    }
+    writeBlock("TRAFOOF");
+    retractAndHome();
+    motionModal.reset();
+    forceMotion();
 }
 
 // --- 3+2: CYCLE800 ---------------------------------------------------------------------------

@@ -1,6 +1,6 @@
 #include "gui/inspector/ModalStatePanel.h"
 
-#include "gui/inspector/NcTrace.h"
+#include "document/NcTrace.h"
 
 #include <QFormLayout>
 #include <QLabel>
@@ -24,14 +24,14 @@ QString fixed(double value, int decimals)
 
 QString mm(double value) { return fixed(value, 3); }
 
-QString position(const ModalState& state)
+QString position(const document::ModalState& state)
 {
     if (!state.hasPosition)
         return ModalStatePanel::tr("unknown (no move yet)");
     return QStringLiteral("X%1 Y%2 Z%3").arg(mm(state.position.x), mm(state.position.y), mm(state.position.z));
 }
 
-QString toolAxisText(const ModalState& state)
+QString toolAxisText(const document::ModalState& state)
 {
     const QString vector = QStringLiteral("I%1 J%2 K%3")
                                .arg(fixed(state.toolAxis.x, 4), fixed(state.toolAxis.y, 4), fixed(state.toolAxis.z, 4));
@@ -40,7 +40,7 @@ QString toolAxisText(const ModalState& state)
 }
 
 // The machine's rotary axes the interpreter read through the machine's kinematics.
-QString rotaryAxesText(const ModalState& state)
+QString rotaryAxesText(const document::ModalState& state)
 {
     const toolpath::RotaryAxes& r = state.rotaryAxes;
     QStringList axes;
@@ -56,7 +56,7 @@ QString rotaryAxesText(const ModalState& state)
 }
 
 // `word`: the program's own word for the feed mode (G94, F, FU ...), else the ISO one.
-QString feedText(const ModalState& state, const char* word)
+QString feedText(const document::ModalState& state, const char* word)
 {
     const bool own = word != nullptr && *word != 0;
     switch (state.feedMode) {
@@ -76,7 +76,7 @@ QString feedText(const ModalState& state, const char* word)
     return {};
 }
 
-QString spindleText(const ModalState& state)
+QString spindleText(const document::ModalState& state)
 {
     if (state.spindleRpm <= 0 && state.surfaceSpeedMPerMin <= 0)
         return ModalStatePanel::tr("stopped (M5)");
@@ -149,7 +149,7 @@ QString unitsText(const nc::BlockModal& words)
 
 // The state the program set, in its own words (BlockModal); the rows the records cannot fill.
 void showWords(const std::function<void(const char*, const QString&)>& set, const nc::BlockModal& words,
-               const ModalState& s)
+               const document::ModalState& s)
 {
     set("feed", feedText(s, words.feedModeWord));
     set("compensation", compensationText(words.compensation, QString::fromLatin1(words.compensationWord)));
@@ -214,13 +214,13 @@ void ModalStatePanel::showMessage(const QString& text)
     m_message->setVisible(!text.isEmpty());
 }
 
-void ModalStatePanel::showState(const LineState& state, const NcTrace& trace)
+void ModalStatePanel::showState(const document::LineState& state, const document::NcTrace& trace)
 {
     auto set = [this](const char* key, const QString& text) {
         if (auto* label = findChild<QLabel*>(QStringLiteral("modal_") + QLatin1String(key)))
             label->setText(text);
     };
-    const ModalState& s = state.after;
+    const document::ModalState& s = state.after;
     QString block = tr("line %1").arg(state.line);
     if (state.runs > 1)
         block += tr(", runs %1 times (first run shown)").arg(state.runs);
@@ -238,7 +238,7 @@ void ModalStatePanel::showState(const LineState& state, const NcTrace& trace)
                                            : tr("none in the trace (control default)"));
         set("compensation", compensationText(s.compensation, QString()));
         set("plane", s.hasArcNormal
-                         ? tr("%1, from the last arc").arg(QString::fromStdString(planeOfNormal(s.arcNormal)))
+                         ? tr("%1, from the last arc").arg(QString::fromStdString(document::planeOfNormal(s.arcNormal)))
                          : tr("no arc yet (not in the trace)"));
         set("units", tr("mm (inch programs converted)"));
         set("distance", tr("not in the trace; positions absolute"));

@@ -8,10 +8,12 @@
 class QLabel;
 class QFormLayout;
 
-namespace camwb::gui {
-
+namespace camwb::document {
 struct LineState;
 struct NcTrace;
+}  // namespace camwb::document
+
+namespace camwb::gui {
 
 class ModalStatePanel : public QWidget {
     Q_OBJECT
@@ -19,7 +21,7 @@ public:
     explicit ModalStatePanel(QWidget* parent = nullptr);
 
     // `where` names a record from a called program ("SUB.SPF:12"), empty for the main program.
-    void showState(const LineState& state, const NcTrace& trace);
+    void showState(const document::LineState& state, const document::NcTrace& trace);
     void showMessage(const QString& text);  // no trace yet, tracing, ...
 
     // The value shown for a row ("plane", "units", "distance", "compensation", "tool", "feed",

@@ -25,7 +25,7 @@ constexpr int kReportedDiagnostics = 50;
 
 struct NcInspector::Result {
     quint64 generation = 0;
-    NcTrace trace;
+    document::NcTrace trace;
     std::shared_ptr<const ToolpathScene> scene;
     double sceneSeconds = 0;
     QElapsedTimer requested;
@@ -133,14 +133,14 @@ void NcInspector::traceNow()
         finish(result);
     });
     watcher->setFuture(QtConcurrent::run([result, text, path, dialect, machine, tools, cancel] {
-        NcTraceRequest request;
+        document::NcTraceRequest request;
         request.text = text.toStdString();
         request.path = path;
         request.dialect = dialect;
         request.machine = machine;
         request.tools = tools;
         request.cancel = cancel.get();
-        result->trace = traceNc(request);
+        result->trace = document::traceNc(request);
         if (result->trace.cancelled || cancel->load())
             return;
         const auto start = std::chrono::steady_clock::now();
@@ -156,7 +156,7 @@ void NcInspector::finish(const std::shared_ptr<Result>& result)
     if (result->generation != m_generation || result->trace.cancelled)
         return;  // superseded by a newer trace
     m_cancelCurrent = nullptr;
-    m_trace = std::make_shared<const NcTrace>(std::move(result->trace));
+    m_trace = std::make_shared<const document::NcTrace>(std::move(result->trace));
     m_scene = result->scene;
 
     QElapsedTimer show;
@@ -185,7 +185,7 @@ void NcInspector::finish(const std::shared_ptr<Result>& result)
 // The editor highlights in the traced dialect and marks the main program's diagnostics. A margin
 // that is clear already is not cleared again: on a million-line document that costs the editor
 // most of a second.
-void NcInspector::showInEditor(const NcTrace& trace)
+void NcInspector::showInEditor(const document::NcTrace& trace)
 {
     if (m_editor->dialect() != trace.dialect)
         m_editor->setDialect(trace.dialect);
@@ -196,7 +196,7 @@ void NcInspector::showInEditor(const NcTrace& trace)
     m_editorHasDiagnostics = !diagnostics.isEmpty();
 }
 
-void NcInspector::reportDiagnostics(const NcTrace& trace)
+void NcInspector::reportDiagnostics(const document::NcTrace& trace)
 {
     const auto& diagnostics = trace.result.diagnostics;
     const QString name = m_path.isEmpty() ? tr("NC program") : QFileInfo(m_path).fileName();

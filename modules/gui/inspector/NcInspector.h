@@ -5,7 +5,7 @@
 // the connections; the trace itself is plain C++ (NcTrace).
 #pragma once
 
-#include "gui/inspector/NcTrace.h"
+#include "document/NcTrace.h"
 #include "gui/shell/Workbench.h"
 
 #include <QObject>
@@ -66,7 +66,7 @@ public:
 
     bool isTracing() const { return m_running > 0; }
 
-    std::shared_ptr<const NcTrace> trace() const { return m_trace; }
+    std::shared_ptr<const document::NcTrace> trace() const { return m_trace; }
     NcTraceTimings lastTimings() const { return m_timings; }
     // Records highlighted for the editor's current line (all runs of it).
     const std::vector<std::size_t>& highlightedRecords() const { return m_highlighted; }
@@ -89,8 +89,8 @@ private:
     void onSegmentPicked(int segment, int record);
     void finish(const std::shared_ptr<Result>& result);
     void showLine(int line);
-    void reportDiagnostics(const NcTrace& trace);
-    void showInEditor(const NcTrace& trace);
+    void reportDiagnostics(const document::NcTrace& trace);
+    void showInEditor(const document::NcTrace& trace);
 
     NcEditor* m_editor = nullptr;
     View3D* m_view = nullptr;
@@ -105,7 +105,7 @@ private:
     int m_running = 0;
     quint64 m_generation = 0;
     std::shared_ptr<std::atomic<bool>> m_cancelCurrent;
-    std::shared_ptr<const NcTrace> m_trace;
+    std::shared_ptr<const document::NcTrace> m_trace;
     std::shared_ptr<const ToolpathScene> m_scene;
     std::vector<std::size_t> m_highlighted;
     NcTraceTimings m_timings;

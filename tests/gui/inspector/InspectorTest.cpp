@@ -4,8 +4,8 @@
 // is drawn marked. Runs under Xvfb and offscreen (no GL: everything but the clicks, which
 // InspectorViewTest does under Xvfb).
 #include "QtTestRun.h"
+#include "document/ModalState.h"
 #include "gui/editor/NcEditor.h"
-#include "gui/inspector/ModalState.h"
 #include "gui/inspector/ModalStatePanel.h"
 #include "gui/inspector/NcInspector.h"
 #include "gui/view3d/ToolpathPolylines.h"
@@ -118,20 +118,20 @@ private slots:
             arc.normal = {0, 1, 0};
             path.add(arc);
         }
-        const ModalStateTable table(path, 7);
-        ModalState plain;
+        const camwb::document::ModalStateTable table(path, 7);
+        camwb::document::ModalState plain;
         for (std::size_t i = 0; i <= path.size(); ++i) {
-            const ModalState fromTable = table.before(path, i);
+            const camwb::document::ModalState fromTable = table.before(path, i);
             QCOMPARE(fromTable.tool, plain.tool);
             QCOMPARE(fromTable.spindleRpm, plain.spindleRpm);
             QCOMPARE(fromTable.feed, plain.feed);
             QCOMPARE(fromTable.position.x, plain.position.x);
             QCOMPARE(fromTable.hasArcNormal, plain.hasArcNormal);
             if (i < path.size())
-                applyRecord(plain, path.record(i));
+                camwb::document::applyRecord(plain, path.record(i));
         }
-        QCOMPARE(planeOfNormal({0, 1, 0}), std::string("G18 (ZX)"));
-        QCOMPARE(planeOfNormal({0, 0, -1}), std::string("G17 (XY)"));
+        QCOMPARE(camwb::document::planeOfNormal({0, 1, 0}), std::string("G18 (ZX)"));
+        QCOMPARE(camwb::document::planeOfNormal({0, 0, -1}), std::string("G17 (XY)"));
     }
 
     void everySegmentMapsToItsLine()
@@ -396,7 +396,7 @@ private slots:
                                                "G1 Y20\n"           // 8
                                                "G40 G1 X30 Y30\n"   // 9
                                                "M30\n");            // 10
-        auto endYOfLine = [](const NcTrace& trace, int line) {
+        auto endYOfLine = [](const camwb::document::NcTrace& trace, int line) {
             const std::vector<std::size_t> records = trace.recordsOfLine(line);
             for (auto it = records.rbegin(); it != records.rend(); ++it)
                 if (const auto* l = std::get_if<tp::Linear>(&trace.program.record(*it)))

@@ -97,7 +97,7 @@ private:
     }
 
     // The first error of a trace, for a failure's message (QVERIFY2 evaluates it in any case).
-    static QString firstError(const camwb::gui::NcTrace& trace)
+    static QString firstError(const camwb::document::NcTrace& trace)
     {
         for (const auto& d : trace.result.diagnostics)
             if (d.severity == camwb::nc::Severity::Error)

@@ -1,4 +1,4 @@
-#include "gui/inspector/NcTrace.h"
+#include "document/NcTrace.h"
 
 #include "nc/tools/ErrorRecords.h"
 #include "toolpath/MachineSink.h"
@@ -7,7 +7,7 @@
 #include <chrono>
 #include <filesystem>
 
-namespace camwb::gui {
+namespace camwb::document {
 
 namespace {
 
@@ -230,4 +230,4 @@ std::string NcTrace::whereOf(std::size_t record) const
     return name + ":" + std::to_string(source.line);
 }
 
-}  // namespace camwb::gui
+}  // namespace camwb::document

@@ -15,7 +15,7 @@ namespace camwb::toolpath {
 class Toolpath;
 }
 
-namespace camwb::gui {
+namespace camwb::document {
 
 struct ModalState {
     int tool = 0;  // 0 = no tool change yet
@@ -63,4 +63,4 @@ private:
     std::vector<ModalState> m_checkpoints;  // state before record k * stride
 };
 
-}  // namespace camwb::gui
+}  // namespace camwb::document

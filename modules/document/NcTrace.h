@@ -4,7 +4,7 @@
 // plain C++, no Qt, so it is testable on its own.
 #pragma once
 
-#include "gui/inspector/ModalState.h"
+#include "document/ModalState.h"
 #include "kinematics/Machine.h"
 #include "nc/Dialect.h"
 #include "nc/Interpreter.h"
@@ -19,7 +19,7 @@
 #include <utility>
 #include <vector>
 
-namespace camwb::gui {
+namespace camwb::document {
 
 // What one line of the main program does: the state before its first record and after its
 // first run (a line inside a loop runs several times; `runs` counts them).
@@ -95,4 +95,4 @@ struct NcTraceRequest {
 // Heidenhain finish parsing first), nothing more is recorded and the trace is marked cancelled.
 NcTrace traceNc(const NcTraceRequest& request);
 
-}  // namespace camwb::gui
+}  // namespace camwb::document

@@ -1,4 +1,4 @@
-#include "gui/inspector/ModalState.h"
+#include "document/ModalState.h"
 
 #include "toolpath/CycleExpansion.h"
 #include "toolpath/KnownPosition.h"
@@ -9,7 +9,7 @@
 #include <cstdio>
 #include <variant>
 
-namespace camwb::gui {
+namespace camwb::document {
 
 namespace {
 
@@ -208,4 +208,4 @@ std::string describeMove(const ModalState& before, const toolpath::Record& recor
     return describeRecord(record);
 }
 
-}  // namespace camwb::gui
+}  // namespace camwb::document

@@ -3,8 +3,6 @@
 # includes them. Included from modules/gui/CMakeLists.txt.
 set(_camwb_gui_widgets_dir ${CMAKE_CURRENT_LIST_DIR})
 add_library(camwb_gui_widgets STATIC
-  ${_camwb_gui_widgets_dir}/view3d/ToolpathPolylines.h
-  ${_camwb_gui_widgets_dir}/view3d/ToolpathPolylines.cpp
   ${_camwb_gui_widgets_dir}/view3d/detail/ToolpathScene.h
   ${_camwb_gui_widgets_dir}/view3d/ToolpathScene.cpp
   ${_camwb_gui_widgets_dir}/view3d/VtkOpenGLWidget.h

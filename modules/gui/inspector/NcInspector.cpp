@@ -2,8 +2,8 @@
 
 #include "gui/editor/NcEditor.h"
 #include "gui/inspector/ModalStatePanel.h"
-#include "gui/view3d/ToolpathPolylines.h"
 #include "gui/view3d/View3D.h"
+#include "toolpath/ToolpathPolylines.h"
 
 #include <QElapsedTimer>
 #include <QFileInfo>

@@ -1,8 +1,8 @@
 #include "gui/view3d/TaskOverlay.h"
 
-#include "gui/view3d/ToolpathPolylines.h"
 #include "gui/view3d/detail/ModelActors.h"
 #include "gui/view3d/detail/ToolpathScene.h"
+#include "toolpath/ToolpathPolylines.h"
 
 #include <vtkActor.h>
 #include <vtkCellData.h>
@@ -101,7 +101,7 @@ int TaskOverlay::previewSegmentCount() const
     return d->preview ? static_cast<int>(d->preview->polylines().segments().size()) : 0;
 }
 
-const ToolpathPolylines* TaskOverlay::previewPolylines() const
+const toolpath::ToolpathPolylines* TaskOverlay::previewPolylines() const
 {
     return d->preview ? &d->preview->polylines() : nullptr;
 }

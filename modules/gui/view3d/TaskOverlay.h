@@ -14,9 +14,12 @@
 class vtkActor;
 class vtkRenderer;
 
+namespace camwb::toolpath {
+class ToolpathPolylines;
+}
+
 namespace camwb::gui {
 
-class ToolpathPolylines;
 class ToolpathScene;
 
 class TaskOverlay : public QObject {
@@ -28,8 +31,8 @@ public:
     // View3D::prepareToolpath (huge paths are simplified for display there, not here).
     void showPreview(std::shared_ptr<const ToolpathScene> scene);
     void clearPreview();
-    int previewSegmentCount() const;                    // exact segments; 0 when no preview is shown
-    const ToolpathPolylines* previewPolylines() const;  // nullptr when no preview is shown
+    int previewSegmentCount() const;                              // exact segments; 0 when no preview is shown
+    const toolpath::ToolpathPolylines* previewPolylines() const;  // nullptr when no preview is shown
 
     // Model faces (1-based) picked in the view, in picking order.
     const std::vector<int>& selectedFaces() const;

@@ -87,8 +87,8 @@ std::shared_ptr<ToolpathScene> ToolpathScene::build(const toolpath::Toolpath& to
                                                     const std::vector<bool>& recordsInError)
 {
     auto scene = std::make_shared<ToolpathScene>();
-    scene->m_polylines = ToolpathPolylines::fromToolpath(toolpath, chordToleranceMm, recordsInError);
-    const ToolpathPolylines& polylines = scene->m_polylines;
+    scene->m_polylines = toolpath::ToolpathPolylines::fromToolpath(toolpath, chordToleranceMm, recordsInError);
+    const toolpath::ToolpathPolylines& polylines = scene->m_polylines;
     if (polylines.empty())
         return scene;
 
@@ -104,14 +104,14 @@ std::shared_ptr<ToolpathScene> ToolpathScene::build(const toolpath::Toolpath& to
     std::vector<std::size_t> partOfSegment;
     partOfSegment.reserve(polylines.segments().size());
     for (std::size_t s = 0; s < polylines.segments().size(); ++s) {
-        const PathSegment& segment = polylines.segments()[s];
+        const toolpath::PathSegment& segment = polylines.segments()[s];
         std::size_t index = 0;
         while (index < scene->m_parts.size() && scene->m_parts[index].tool != segment.tool)
             ++index;
         if (index == scene->m_parts.size())
             scene->m_parts.push_back({segment.tool, nullptr, nullptr, {}, {}});
         Part& part = scene->m_parts[index];
-        (segment.kind == PathSegmentKind::Rapid ? part.rapidSegments : part.cutSegments)
+        (segment.kind == toolpath::PathSegmentKind::Rapid ? part.rapidSegments : part.cutSegments)
             .push_back(static_cast<std::uint32_t>(s));
         partOfSegment.push_back(index);
     }
@@ -169,22 +169,22 @@ std::size_t ToolpathScene::buildCells(const std::vector<std::size_t>& partOfSegm
         if (run.empty())
             return;
         run.push_back(pending);
-        const PathSegment& first = segments[runStart];
+        const toolpath::PathSegment& first = segments[runStart];
         Builder& builder = builders[partOfSegment[runStart]];
-        if (first.kind == PathSegmentKind::Rapid) {
+        if (first.kind == toolpath::PathSegmentKind::Rapid) {
             builder.rapid->InsertNextCell(static_cast<vtkIdType>(run.size()), run.data());
         } else {
             builder.cut->InsertNextCell(static_cast<vtkIdType>(run.size()), run.data());
-            builder.colors->InsertNextTypedTuple(first.kind == PathSegmentKind::Arc        ? kArcRgb
-                                                 : first.kind == PathSegmentKind::Error    ? kErrorRgb
-                                                 : first.kind == PathSegmentKind::ToolAxis ? kToolAxisRgb
-                                                                                           : kFeedRgb);
+            builder.colors->InsertNextTypedTuple(first.kind == toolpath::PathSegmentKind::Arc        ? kArcRgb
+                                                 : first.kind == toolpath::PathSegmentKind::Error    ? kErrorRgb
+                                                 : first.kind == toolpath::PathSegmentKind::ToolAxis ? kToolAxisRgb
+                                                                                                     : kFeedRgb);
         }
         vertices += run.size();
         run.clear();
     };
     for (std::size_t s = 0; s < segments.size(); ++s) {
-        const PathSegment& segment = segments[s];
+        const toolpath::PathSegment& segment = segments[s];
         const bool continues = !run.empty() && segment.from == static_cast<std::uint32_t>(pending) &&
                                segment.kind == segments[runStart].kind && partOfSegment[s] == partOfSegment[runStart];
         if (!continues) {

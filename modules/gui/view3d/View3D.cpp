@@ -1,12 +1,12 @@
 #include "gui/view3d/View3D.h"
 
 #include "gui/view3d/TaskOverlay.h"
-#include "gui/view3d/ToolpathPolylines.h"
 #include "gui/view3d/VtkOpenGLWidget.h"
 #include "gui/view3d/detail/ModelActors.h"
 #include "gui/view3d/detail/ToolpathScene.h"
 #include "occ/DisplayMesh.h"
 #include "toolpath/Toolpath.h"
+#include "toolpath/ToolpathPolylines.h"
 
 #include <QGuiApplication>
 #include <QLabel>
@@ -324,7 +324,10 @@ int View3D::toolpathSegmentCount() const
     return d->scene ? static_cast<int>(d->scene->polylines().segments().size()) : 0;
 }
 
-const ToolpathPolylines* View3D::toolpathPolylines() const { return d->scene ? &d->scene->polylines() : nullptr; }
+const toolpath::ToolpathPolylines* View3D::toolpathPolylines() const
+{
+    return d->scene ? &d->scene->polylines() : nullptr;
+}
 
 std::vector<int> View3D::toolpathTools() const { return d->scene ? d->scene->tools() : std::vector<int>{}; }
 
@@ -365,7 +368,7 @@ void View3D::setHighlightedRecords(const std::vector<std::size_t>& records)
     d->highlightActor = nullptr;
     d->highlighted.clear();
     if (d->scene) {
-        const ToolpathPolylines& polylines = d->scene->polylines();
+        const toolpath::ToolpathPolylines& polylines = d->scene->polylines();
         for (std::size_t record : records) {
             const auto [begin, end] =
                 polylines.segmentsOfRecords(static_cast<std::uint32_t>(record), static_cast<std::uint32_t>(record));

@@ -24,12 +24,12 @@ struct DisplayMesh;
 }
 namespace camwb::toolpath {
 class Toolpath;
-}
+class ToolpathPolylines;
+}  // namespace camwb::toolpath
 
 namespace camwb::gui {
 
 class TaskOverlay;
-class ToolpathPolylines;
 class ToolpathScene;
 
 class View3D : public QWidget {
@@ -67,7 +67,7 @@ public:
     bool hasToolpathActor() const;
     int toolpathSegmentCount() const;  // line segments in the toolpath polydata (rapid + cutting)
     // The segments shown (record index and tool of each), or nullptr without a toolpath.
-    const ToolpathPolylines* toolpathPolylines() const;
+    const toolpath::ToolpathPolylines* toolpathPolylines() const;
 
     // Tools of the backplot in order of first use (0 = moves before any tool change).
     std::vector<int> toolpathTools() const;

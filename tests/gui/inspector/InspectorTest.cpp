@@ -8,9 +8,9 @@
 #include "gui/editor/NcEditor.h"
 #include "gui/inspector/ModalStatePanel.h"
 #include "gui/inspector/NcInspector.h"
-#include "gui/view3d/ToolpathPolylines.h"
 #include "gui/view3d/View3D.h"
 #include "toolpath/Toolpath.h"
+#include "toolpath/ToolpathPolylines.h"
 
 #include <QApplication>
 #include <QFile>
@@ -85,7 +85,7 @@ struct Rig {
     std::vector<int> segmentLines() const
     {
         std::vector<int> lines;
-        for (const PathSegment& s : view.toolpathPolylines()->segments())
+        for (const tp::PathSegment& s : view.toolpathPolylines()->segments())
             lines.push_back(inspector.trace()->lineOfRecord(s.record));
         return lines;
     }
@@ -138,15 +138,15 @@ private slots:
     {
         Rig rig;
         LOAD_OR_FAIL(rig, QString::fromLatin1(kProgram));
-        const ToolpathPolylines* polylines = rig.view.toolpathPolylines();
+        const tp::ToolpathPolylines* polylines = rig.view.toolpathPolylines();
         QVERIFY(polylines != nullptr);
         const std::vector<int> lines = rig.segmentLines();
-        std::map<PathSegmentKind, std::set<int>> linesByKind;
+        std::map<tp::PathSegmentKind, std::set<int>> linesByKind;
         for (std::size_t s = 0; s < lines.size(); ++s)
             linesByKind[polylines->segments()[s].kind].insert(lines[s]);
-        QCOMPARE(linesByKind[PathSegmentKind::Feed], (std::set<int>{6, 7, 12}));
-        QCOMPARE(linesByKind[PathSegmentKind::Arc], (std::set<int>{8, 13}));
-        QCOMPARE(linesByKind[PathSegmentKind::Rapid], (std::set<int>{9, 11, 14}));
+        QCOMPARE(linesByKind[tp::PathSegmentKind::Feed], (std::set<int>{6, 7, 12}));
+        QCOMPARE(linesByKind[tp::PathSegmentKind::Arc], (std::set<int>{8, 13}));
+        QCOMPARE(linesByKind[tp::PathSegmentKind::Rapid], (std::set<int>{9, 11, 14}));
         // The arc of line 8 is tessellated: many segments, one block.
         QVERIFY(std::count(lines.begin(), lines.end(), 8) > 10);
     }
@@ -369,16 +369,16 @@ private slots:
         QVERIFY2(value("toolAxis").contains(QLatin1String("3-axis")), qPrintable(value("toolAxis")));
         QVERIFY2(value("rotaryAxes").startsWith(QLatin1String("none known")), qPrintable(value("rotaryAxes")));
         // The tool axis is drawn at the first five-axis move of the run, from the tip to the spindle.
-        const ToolpathPolylines* lines = rig.view.toolpathPolylines();
+        const tp::ToolpathPolylines* lines = rig.view.toolpathPolylines();
         QVERIFY(lines != nullptr);
-        QCOMPARE(lines->segmentCount(PathSegmentKind::ToolAxis), std::size_t(1));
-        for (const PathSegment& s : lines->segments()) {
-            if (s.kind != PathSegmentKind::ToolAxis)
+        QCOMPARE(lines->segmentCount(tp::PathSegmentKind::ToolAxis), std::size_t(1));
+        for (const tp::PathSegment& s : lines->segments()) {
+            if (s.kind != tp::PathSegmentKind::ToolAxis)
                 continue;
             const camwb::base::Vec3 tip = lines->points()[s.from], end = lines->points()[s.to];
             QCOMPARE(rig.inspector.trace()->lineOfRecord(s.record), 4);
             QVERIFY(std::abs(tip.x - 10) < 1e-9 && std::abs(tip.y - 20) < 1e-9 && std::abs(tip.z - 5) < 1e-9);
-            QVERIFY(std::abs((end.z - tip.z) / ToolpathPolylines::kToolAxisLengthMm - 0.8660254) < 1e-6);
+            QVERIFY(std::abs((end.z - tip.z) / tp::ToolpathPolylines::kToolAxisLengthMm - 0.8660254) < 1e-6);
         }
     }
 
@@ -505,7 +505,7 @@ private slots:
         const int all = rig.view.visibleSegmentCount();
         QCOMPARE(all, rig.view.toolpathSegmentCount());
         int ofTool2 = 0;
-        for (const PathSegment& s : rig.view.toolpathPolylines()->segments())
+        for (const tp::PathSegment& s : rig.view.toolpathPolylines()->segments())
             ofTool2 += s.tool == 2 ? 1 : 0;
         QVERIFY(ofTool2 > 10);
         rig.view.setToolVisible(2, false);
@@ -529,13 +529,13 @@ private slots:
         QCOMPARE(arc.size(), std::size_t(1));
         QVERIFY(arc.front() < trace->recordsInError.size() && trace->recordsInError[arc.front()]);
 
-        const ToolpathPolylines* polylines = rig.view.toolpathPolylines();
+        const tp::ToolpathPolylines* polylines = rig.view.toolpathPolylines();
         QVERIFY(polylines != nullptr);
         const std::vector<int> lines = rig.segmentLines();
         int dashes = 0;
         for (std::size_t s = 0; s < lines.size(); ++s) {
-            const PathSegment& segment = polylines->segments()[s];
-            QCOMPARE(lines[s] == 8, segment.kind == PathSegmentKind::Error);
+            const tp::PathSegment& segment = polylines->segments()[s];
+            QCOMPARE(lines[s] == 8, segment.kind == tp::PathSegmentKind::Error);
             if (lines[s] != 8)
                 continue;
             ++dashes;
@@ -545,7 +545,7 @@ private slots:
                 QVERIFY(std::abs(point.y) < 1e-9 && std::abs(point.z + 1) < 1e-9);
             }
         }
-        QCOMPARE(dashes, ToolpathPolylines::kErrorDashes);
+        QCOMPARE(dashes, tp::ToolpathPolylines::kErrorDashes);
         for (const camwb::base::Vec3& point : polylines->points())
             QVERIFY2(std::abs(point.y) <= 5 + 1e-9, qPrintable(QStringLiteral("a point at Y%1").arg(point.y)));
         // The cursor on the block still highlights it.
@@ -583,7 +583,7 @@ private slots:
         rig.view.setViewPreset(View3D::Preset::Top);
         QTest::qWait(50);
 
-        const ToolpathPolylines* polylines = rig.view.toolpathPolylines();
+        const tp::ToolpathPolylines* polylines = rig.view.toolpathPolylines();
         const std::vector<int> lines = rig.segmentLines();
         auto* gl = rig.view.findChild<QWidget*>(QStringLiteral("view3dGl"));
         QVERIFY(gl != nullptr);
@@ -594,7 +594,7 @@ private slots:
                 if (lines[s] == line)
                     ofLine.push_back(s);
             QVERIFY(!ofLine.empty());
-            const PathSegment& segment = polylines->segments()[ofLine[ofLine.size() / 2]];
+            const tp::PathSegment& segment = polylines->segments()[ofLine[ofLine.size() / 2]];
             const camwb::base::Vec3 middle =
                 (polylines->points()[segment.from] + polylines->points()[segment.to]) * 0.5;
             const std::optional<QPointF> at = rig.view.projectToWidget(middle);

@@ -16,9 +16,9 @@
 #include "gui/shell/ReportView.h"
 #include "gui/shell/Workbench.h"
 #include "gui/tasks/OperationPanel.h"
-#include "gui/view3d/ToolpathPolylines.h"
 #include "gui/view3d/View3D.h"
 #include "kinematics/Machine.h"
+#include "toolpath/ToolpathPolylines.h"
 
 #include <QAction>
 #include <QApplication>
@@ -328,7 +328,7 @@ private slots:
         // The view shows the trace of the posted program, not the operations' toolpath.
         QVERIFY(window.inspector()->showsInView());
         QCOMPARE(window.view()->toolpathSegmentCount(),
-                 int(camwb::gui::ToolpathPolylines::fromToolpath(trace->program).segments().size()));
+                 int(camwb::toolpath::ToolpathPolylines::fromToolpath(trace->program).segments().size()));
         QVERIFY(window.view()->toolpathSegmentCount() > 10);
         // The operations' toolpath on request, and back.
         window.inspectorPanel()->setShowsNcTrace(false);
@@ -524,7 +524,7 @@ private slots:
         // user chooses the machine in the inspector and the program is traced again on it.
         QCOMPARE(window.inspector()->machine(), nullptr);
         QVERIFY(window.view()->toolpathPolylines() != nullptr);
-        QCOMPARE(window.view()->toolpathPolylines()->segmentCount(camwb::gui::PathSegmentKind::ToolAxis),
+        QCOMPARE(window.view()->toolpathPolylines()->segmentCount(camwb::toolpath::PathSegmentKind::ToolAxis),
                  std::size_t(0));
         auto* machines = window.inspectorPanel()->findChild<QComboBox*>(QStringLiteral("machineCombo"));
         QVERIFY(machines != nullptr);
@@ -538,10 +538,10 @@ private slots:
                  window.inspector()->trace()->result.diagnostics.empty()
                      ? ""
                      : window.inspector()->trace()->result.diagnostics.front().message.c_str());
-        const camwb::gui::ToolpathPolylines* lines = window.view()->toolpathPolylines();
+        const camwb::toolpath::ToolpathPolylines* lines = window.view()->toolpathPolylines();
         QVERIFY(lines != nullptr);
-        QVERIFY(lines->segmentCount(camwb::gui::PathSegmentKind::ToolAxis) >=
-                std::size_t(72 / camwb::gui::ToolpathPolylines::kToolAxisEvery));
+        QVERIFY(lines->segmentCount(camwb::toolpath::PathSegmentKind::ToolAxis) >=
+                std::size_t(72 / camwb::toolpath::ToolpathPolylines::kToolAxisEvery));
         window.ncEditor()->gotoLine(10);  // L Z+0 F300: down with the tool tilted 20 degrees towards +X
         QTest::qWait(300);
         auto* panel = window.findChild<camwb::gui::ModalStatePanel*>();
@@ -586,9 +586,9 @@ private slots:
         }
         QCOMPARE(tilted, 5);  // four hole directions and the boss's face
         QVERIFY(fiveAxis > 100);
-        const camwb::gui::ToolpathPolylines* lines = window.view()->toolpathPolylines();
+        const camwb::toolpath::ToolpathPolylines* lines = window.view()->toolpathPolylines();
         QVERIFY(lines != nullptr);
-        QVERIFY(lines->segmentCount(camwb::gui::PathSegmentKind::ToolAxis) > 10);
+        QVERIFY(lines->segmentCount(camwb::toolpath::PathSegmentKind::ToolAxis) > 10);
         window.view()->fitAll();
         QTest::qWait(300);
         saveShot(&window, QStringLiteral("five-axis-example-job.png"));

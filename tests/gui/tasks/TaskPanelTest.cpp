@@ -12,8 +12,8 @@
 #include "gui/tasks/OperationPanel.h"
 #include "gui/tasks/PreviewRunner.h"
 #include "gui/view3d/TaskOverlay.h"
-#include "gui/view3d/ToolpathPolylines.h"
 #include "gui/view3d/View3D.h"
+#include "toolpath/ToolpathPolylines.h"
 
 #include <QAbstractButton>
 #include <QApplication>
@@ -439,7 +439,7 @@ private slots:
         QVERIFY(polylines);
         int axes = 0;
         for (const auto& segment : polylines->segments())
-            axes += segment.kind == camwb::gui::PathSegmentKind::ToolAxis ? 1 : 0;
+            axes += segment.kind == camwb::toolpath::PathSegmentKind::ToolAxis ? 1 : 0;
         QVERIFY2(axes > 10, qPrintable(QString::number(axes)));
         QTest::qWait(300);
         saveShot(&window, QStringLiteral("panel-swarf.png"));

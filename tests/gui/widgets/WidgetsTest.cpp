@@ -4,10 +4,10 @@
 #include "QtTestRun.h"
 #include "gui/editor/NcEditor.h"
 #include "gui/editor/NcStyles.h"
-#include "gui/view3d/ToolpathPolylines.h"
 #include "gui/view3d/View3D.h"
 #include "occ/DisplayMesh.h"
 #include "toolpath/Toolpath.h"
+#include "toolpath/ToolpathPolylines.h"
 
 #include <QApplication>
 #include <QLabel>
@@ -22,9 +22,9 @@
 using camwb::base::Vec3;
 using camwb::gui::NcEditor;
 using camwb::gui::NcStyle;
-using camwb::gui::PathSegmentKind;
-using camwb::gui::ToolpathPolylines;
 using camwb::gui::View3D;
+using camwb::toolpath::PathSegmentKind;
+using camwb::toolpath::ToolpathPolylines;
 namespace tp = camwb::toolpath;
 
 namespace {
@@ -140,17 +140,18 @@ private slots:
     void fullCircleStaysOnRadius()
     {
         const double r = 10.0, tol = 0.01;
-        ToolpathPolylines lines(tol);
+        camwb::toolpath::ToolpathPolylines lines(tol);
         lines.rapid({{r, 0, 0}});
         tp::Arc arc;
         arc.to = {r, 0, 0};
         arc.center = {0, 0, 0};
         lines.arc(arc);
-        QCOMPARE(lines.segmentCount(PathSegmentKind::Rapid), std::size_t(0));  // first move only sets the position
+        QCOMPARE(lines.segmentCount(camwb::toolpath::PathSegmentKind::Rapid),
+                 std::size_t(0));  // first move only sets the position
         const auto& pts = lines.points();
         const auto& segs = lines.segments();
         QVERIFY(segs.size() >= 36);
-        QCOMPARE(segs.size(), lines.segmentCount(PathSegmentKind::Arc));
+        QCOMPARE(segs.size(), lines.segmentCount(camwb::toolpath::PathSegmentKind::Arc));
         QCOMPARE(pts.size(), segs.size() + 1);
         double sweep = 0;
         for (const auto& s : segs) {
@@ -169,21 +170,21 @@ private slots:
     // at every kToolAxisEvery-th move after it, a segment of its own that no path run continues from.
     void toolAxisAlongFiveAxisMoves()
     {
-        ToolpathPolylines lines;
+        camwb::toolpath::ToolpathPolylines lines;
         lines.rapid({{0, 0, 10}});
         const Vec3 axis{0.6, 0, 0.8};
-        const int moves = 2 * ToolpathPolylines::kToolAxisEvery + 1;
+        const int moves = 2 * camwb::toolpath::ToolpathPolylines::kToolAxisEvery + 1;
         for (int i = 1; i <= moves; ++i)
             lines.toolAxisMove({{double(i), 0, 10}, axis, 100});
         lines.linear({{0, 0, 10}, 100});
-        QCOMPARE(lines.segmentCount(PathSegmentKind::Feed), std::size_t(moves + 1));
-        QCOMPARE(lines.segmentCount(PathSegmentKind::ToolAxis), std::size_t(3));  // moves 1, 6 and 11
+        QCOMPARE(lines.segmentCount(camwb::toolpath::PathSegmentKind::Feed), std::size_t(moves + 1));
+        QCOMPARE(lines.segmentCount(camwb::toolpath::PathSegmentKind::ToolAxis), std::size_t(3));  // moves 1, 6 and 11
         const auto& pts = lines.points();
         Vec3 previousEnd{0, 0, 10};
-        for (const camwb::gui::PathSegment& s : lines.segments()) {
-            if (s.kind == PathSegmentKind::ToolAxis) {
+        for (const camwb::toolpath::PathSegment& s : lines.segments()) {
+            if (s.kind == camwb::toolpath::PathSegmentKind::ToolAxis) {
                 const Vec3 d = pts[s.to] - pts[s.from];
-                QVERIFY((d - axis * ToolpathPolylines::kToolAxisLengthMm).length() < 1e-12);
+                QVERIFY((d - axis * camwb::toolpath::ToolpathPolylines::kToolAxisLengthMm).length() < 1e-12);
                 continue;
             }
             QVERIFY((pts[s.from] - previousEnd).length() < 1e-12);  // the path stays connected
@@ -194,7 +195,7 @@ private slots:
 
     void clockwiseQuarter()
     {
-        ToolpathPolylines lines(0.001);
+        camwb::toolpath::ToolpathPolylines lines(0.001);
         lines.setStartPosition({0, 5, 0});
         tp::Arc arc;
         arc.to = {5, 0, 0};
@@ -211,7 +212,7 @@ private slots:
 
     void helixEndsAtItsZ()
     {
-        ToolpathPolylines lines(0.01);
+        camwb::toolpath::ToolpathPolylines lines(0.01);
         lines.setStartPosition({18, 10, 15});
         tp::Arc helix;
         helix.to = {18, 10, 3};
@@ -237,16 +238,17 @@ private slots:
 
     void kindsFromToolpath()
     {
-        const ToolpathPolylines lines = ToolpathPolylines::fromToolpath(helixPath());
-        QCOMPARE(lines.segmentCount(PathSegmentKind::Rapid), std::size_t(2));  // first rapid only positions
-        QCOMPARE(lines.segmentCount(PathSegmentKind::Feed), std::size_t(2));
-        QVERIFY(lines.segmentCount(PathSegmentKind::Arc) > 100);
+        const camwb::toolpath::ToolpathPolylines lines = camwb::toolpath::ToolpathPolylines::fromToolpath(helixPath());
+        QCOMPARE(lines.segmentCount(camwb::toolpath::PathSegmentKind::Rapid),
+                 std::size_t(2));  // first rapid only positions
+        QCOMPARE(lines.segmentCount(camwb::toolpath::PathSegmentKind::Feed), std::size_t(2));
+        QVERIFY(lines.segmentCount(camwb::toolpath::PathSegmentKind::Arc) > 100);
         QVERIFY(lines.points().back() == Vec3(30, 28, 30));
     }
 
     void cycleDrawsEachHole()
     {
-        ToolpathPolylines lines;
+        camwb::toolpath::ToolpathPolylines lines;
         lines.setStartPosition({0, 0, 50});
         tp::Cycle cycle;
         cycle.clearanceZ = 10;
@@ -254,16 +256,16 @@ private slots:
         cycle.bottomZ = -5;
         cycle.holes = {{10, 10, 0}, {20, 10, 0}};
         lines.cycle(cycle);
-        QCOMPARE(lines.segmentCount(PathSegmentKind::Feed), std::size_t(2));
+        QCOMPARE(lines.segmentCount(camwb::toolpath::PathSegmentKind::Feed), std::size_t(2));
         QVERIFY(lines.points().back() == Vec3(20, 10, 10));
         // Pecks draw as posts without native cycles write them: down, out to R, back in, deeper.
-        ToolpathPolylines pecks;
+        camwb::toolpath::ToolpathPolylines pecks;
         pecks.setStartPosition({10, 10, 10});
         cycle.kind = tp::CycleKind::Peck;
         cycle.peckMm = 2;
         cycle.holes = {{10, 10, 0}};
         pecks.cycle(cycle);
-        QCOMPARE(pecks.segmentCount(PathSegmentKind::Feed), std::size_t(3));  // to -2, -4 and -5
+        QCOMPARE(pecks.segmentCount(camwb::toolpath::PathSegmentKind::Feed), std::size_t(3));  // to -2, -4 and -5
         QVERIFY(pecks.points().back() == Vec3(10, 10, 10));
     }
 };

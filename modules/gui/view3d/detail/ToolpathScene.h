@@ -5,7 +5,7 @@
 // only forward-declares it.
 #pragma once
 
-#include "gui/view3d/ToolpathPolylines.h"
+#include "toolpath/ToolpathPolylines.h"
 
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
@@ -45,7 +45,7 @@ public:
     static std::shared_ptr<ToolpathScene> build(const toolpath::Toolpath& toolpath, double chordToleranceMm,
                                                 const std::vector<bool>& recordsInError = {});
 
-    const ToolpathPolylines& polylines() const { return m_polylines; }
+    const toolpath::ToolpathPolylines& polylines() const { return m_polylines; }
     const std::vector<Part>& parts() const { return m_parts; }
     vtkPoints* points() const { return m_points; }
     // Tool numbers in order of first use.
@@ -71,7 +71,7 @@ private:
     double boundsDiagonal() const;
     std::size_t buildCells(const std::vector<std::size_t>& partOfSegment, double tolerance);
 
-    ToolpathPolylines m_polylines;
+    toolpath::ToolpathPolylines m_polylines;
     vtkSmartPointer<vtkPoints> m_points;
     std::vector<Part> m_parts;
     double m_displayToleranceMm = 0;

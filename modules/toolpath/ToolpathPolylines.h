@@ -13,10 +13,8 @@
 #include <vector>
 
 namespace camwb::toolpath {
-class Toolpath;
-}
 
-namespace camwb::gui {
+class Toolpath;
 
 // Error: a dash of a record from a block with an error, drawn straight from where it starts to
 // where it ends instead of what it claims (an arc whose radii disagree would be a huge circle).
@@ -114,4 +112,4 @@ private:
     bool m_tilted = false;
 };
 
-}  // namespace camwb::gui
+}  // namespace camwb::toolpath

@@ -1,4 +1,4 @@
-#include "gui/view3d/ToolpathPolylines.h"
+#include "toolpath/ToolpathPolylines.h"
 
 #include "toolpath/ArcGeometry.h"
 #include "toolpath/CycleExpansion.h"
@@ -6,7 +6,7 @@
 
 #include <algorithm>
 
-namespace camwb::gui {
+namespace camwb::toolpath {
 
 using base::Vec3;
 
@@ -215,4 +215,4 @@ void ToolpathPolylines::cycle(const toolpath::Cycle& c)
     }
 }
 
-}  // namespace camwb::gui
+}  // namespace camwb::toolpath

@@ -23,7 +23,7 @@ ToolpathPolylines::ToolpathPolylines(double chordToleranceMm) :
 {
 }
 
-ToolpathPolylines ToolpathPolylines::fromToolpath(const toolpath::Toolpath& toolpath, double chordToleranceMm,
+ToolpathPolylines ToolpathPolylines::fromToolpath(const Toolpath& toolpath, double chordToleranceMm,
                                                   const std::vector<bool>& recordsInError)
 {
     ToolpathPolylines polylines(chordToleranceMm);
@@ -68,7 +68,7 @@ void ToolpathPolylines::clear()
 }
 
 // Moves after a tilted working plane are in its frame; the view shows the workpiece's.
-void ToolpathPolylines::workingPlane(const toolpath::WorkingPlane& plane)
+void ToolpathPolylines::workingPlane(const WorkingPlane& plane)
 {
     if (m_hasPosition)
         m_position = plane.toLocal(m_plane.toWorkpiece(m_position));  // the same point, stored or not
@@ -133,7 +133,7 @@ void ToolpathPolylines::errorTo(const Vec3& to)
 
 // A move that gives only some axes keeps the others; until all three are known (a CL that
 // retracts in Z before its first X/Y) nothing is drawn rather than a line from a guessed point.
-void ToolpathPolylines::straightTo(const Vec3& to, toolpath::AxisMask axes, PathSegmentKind kind)
+void ToolpathPolylines::straightTo(const Vec3& to, AxisMask axes, PathSegmentKind kind)
 {
     if (m_hasPosition)
         m_partial.set(m_position);
@@ -147,19 +147,19 @@ void ToolpathPolylines::straightTo(const Vec3& to, toolpath::AxisMask axes, Path
         lineTo(*point, kind);
 }
 
-void ToolpathPolylines::rapid(const toolpath::Rapid& r)
+void ToolpathPolylines::rapid(const Rapid& r)
 {
     m_toolAxisMoves = 0;
     straightTo(r.to, r.axes, PathSegmentKind::Rapid);
 }
 
-void ToolpathPolylines::linear(const toolpath::Linear& l)
+void ToolpathPolylines::linear(const Linear& l)
 {
     m_toolAxisMoves = 0;
     straightTo(l.to, l.axes, PathSegmentKind::Feed);
 }
 
-void ToolpathPolylines::toolAxisMove(const toolpath::ToolAxisMove& m)
+void ToolpathPolylines::toolAxisMove(const ToolAxisMove& m)
 {
     if (m_inError)
         errorTo(m.tip);
@@ -183,7 +183,7 @@ void ToolpathPolylines::toolAxisAt(const Vec3& axis)
 }
 
 // Start = the current position (toolpath/ArcGeometry.h says how helices and inconsistent radii go).
-void ToolpathPolylines::arc(const toolpath::Arc& a)
+void ToolpathPolylines::arc(const Arc& a)
 {
     m_toolAxisMoves = 0;
     if (m_inError) {
@@ -200,17 +200,17 @@ void ToolpathPolylines::arc(const toolpath::Arc& a)
 
 // Canned cycles are drawn as the moves a control makes for each hole: the same expansion posts
 // without native cycles write (pecks, dwells and the return plane included).
-void ToolpathPolylines::cycle(const toolpath::Cycle& c)
+void ToolpathPolylines::cycle(const Cycle& c)
 {
     // A cycle block with an error: its holes' expansions are drawn dashed (the moves dispatched
     // below see m_inError).
     for (const Vec3& hole : c.holes) {
         // Without a position the drawing starts over the hole (the first move only sets it).
-        const toolpath::KnownPosition from =
-            m_hasPosition        ? toolpath::KnownPosition(m_position)
-            : m_partial.known(2) ? m_partial
-                                 : toolpath::KnownPosition(Vec3{hole.x, hole.y, toolpath::cycleReturnZ(c)});
-        for (const toolpath::Record& record : toolpath::expandCycleHole(c, hole, from, {}))
+        const KnownPosition from = m_hasPosition ? KnownPosition(m_position)
+                                   : m_partial.known(2)
+                                       ? m_partial
+                                       : KnownPosition(Vec3{hole.x, hole.y, toolpath::cycleReturnZ(c)});
+        for (const Record& record : toolpath::expandCycleHole(c, hole, from, {}))
             toolpath::dispatch(record, *this);
     }
 }

@@ -33,14 +33,14 @@ struct PathSegment {
     PathSegmentKind kind = PathSegmentKind::Feed;
 };
 
-class ToolpathPolylines : public toolpath::MachineSink {
+class ToolpathPolylines : public MachineSink {
 public:
     // chordToleranceMm: largest distance between a tessellated arc and its chords.
     explicit ToolpathPolylines(double chordToleranceMm = 0.01);
 
     // Convenience: plays `toolpath` into a fresh instance; records flagged in `recordsInError`
     // (nc::recordsInError: one flag per record, or empty) are drawn as Error dashes.
-    static ToolpathPolylines fromToolpath(const toolpath::Toolpath& toolpath, double chordToleranceMm = 0.01,
+    static ToolpathPolylines fromToolpath(const Toolpath& toolpath, double chordToleranceMm = 0.01,
                                           const std::vector<bool>& recordsInError = {});
 
     const std::vector<base::Vec3>& points() const { return m_points; }
@@ -70,29 +70,29 @@ public:
     // Hard cap on the segments of one arc (huge helices with many turns).
     static constexpr int kMaxSegmentsPerArc = 200000;
 
-    void rapid(const toolpath::Rapid&) override;
-    void linear(const toolpath::Linear&) override;
-    void arc(const toolpath::Arc&) override;
-    void toolChange(const toolpath::ToolChange& change) override { m_tool = change.tool.number; }
-    void spindle(const toolpath::Spindle&) override {}
-    void coolant(const toolpath::Coolant&) override {}
-    void feedMode(const toolpath::FeedModeChange&) override {}
-    void workOffset(const toolpath::WorkOffset&) override {}
-    void dwell(const toolpath::Dwell&) override {}
-    void cycle(const toolpath::Cycle&) override;
-    void toolAxisMove(const toolpath::ToolAxisMove&) override;
-    void cutterComp(const toolpath::CutterComp&) override {}
-    void comment(const toolpath::Comment&) override {}
-    void sectionBegin(const toolpath::SectionBegin&) override {}
-    void sectionEnd(const toolpath::SectionEnd&) override {}
-    void programStop(const toolpath::ProgramStop&) override {}
-    void passThrough(const toolpath::PassThrough&) override {}
-    void workingPlane(const toolpath::WorkingPlane&) override;
+    void rapid(const Rapid&) override;
+    void linear(const Linear&) override;
+    void arc(const Arc&) override;
+    void toolChange(const ToolChange& change) override { m_tool = change.tool.number; }
+    void spindle(const Spindle&) override {}
+    void coolant(const Coolant&) override {}
+    void feedMode(const FeedModeChange&) override {}
+    void workOffset(const WorkOffset&) override {}
+    void dwell(const Dwell&) override {}
+    void cycle(const Cycle&) override;
+    void toolAxisMove(const ToolAxisMove&) override;
+    void cutterComp(const CutterComp&) override {}
+    void comment(const Comment&) override {}
+    void sectionBegin(const SectionBegin&) override {}
+    void sectionEnd(const SectionEnd&) override {}
+    void programStop(const ProgramStop&) override {}
+    void passThrough(const PassThrough&) override {}
+    void workingPlane(const WorkingPlane&) override;
 
 private:
     void lineTo(const base::Vec3& to, PathSegmentKind kind);
     void errorTo(const base::Vec3& to);
-    void straightTo(const base::Vec3& to, toolpath::AxisMask axes, PathSegmentKind kind);
+    void straightTo(const base::Vec3& to, AxisMask axes, PathSegmentKind kind);
     void toolAxisAt(const base::Vec3& axis);
     std::uint32_t currentIndex();
     base::Vec3 shown(const base::Vec3& p) const { return m_tilted ? m_plane.toWorkpiece(p) : p; }
@@ -102,13 +102,13 @@ private:
     std::vector<PathSegment> m_segments;
     base::Vec3 m_position;
     bool m_hasPosition = false;
-    bool m_positionStored = false;      // m_points.back() == m_position
-    toolpath::KnownPosition m_partial;  // the axes known so far, while no whole position is
+    bool m_positionStored = false;  // m_points.back() == m_position
+    KnownPosition m_partial;        // the axes known so far, while no whole position is
     std::uint32_t m_record = 0;
     std::int32_t m_tool = 0;
     bool m_inError = false;
-    int m_toolAxisMoves = 0;         // five-axis moves since the last other move
-    toolpath::WorkingPlane m_plane;  // the frame of the moves (3+2)
+    int m_toolAxisMoves = 0;  // five-axis moves since the last other move
+    WorkingPlane m_plane;     // the frame of the moves (3+2)
     bool m_tilted = false;
 };
 

@@ -49,6 +49,18 @@ bool JointAngles::turned() const
     return false;
 }
 
+FiveAxisState::BlockTrace FiveAxisState::blockTrace(const JointAngles& target, bool orientation, bool tipKnown,
+                                                    bool linearGiven) const
+{
+    if ((m_inPlane && !orientation) || !active() || !(target.turned() || fiveAxisMove() || orientation))
+        return BlockTrace::ThreeAxis;
+    if (!tipKnown)
+        return target.atHome() && !linearGiven ? BlockTrace::HomeUntraced : BlockTrace::TipUnknown;
+    if (needsToolLength() && !toolLengthKnown())
+        return BlockTrace::NeedsToolLength;
+    return BlockTrace::FiveAxis;
+}
+
 bool JointAngles::atHome() const
 {
     for (std::size_t i = 0; i < 2; ++i) {

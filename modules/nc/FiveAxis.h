@@ -81,6 +81,18 @@ public:
     // were turned. Plain 3-axis moves otherwise, so 3-axis programs trace as before. In a tilted
     // working plane (PLANE, CYCL DEF 19, CYCLE800) moves are 3-axis moves in the plane's frame.
     bool fiveAxisMove() const { return !m_inPlane && (m_angles.turned() || m_lastSentTurned); }
+    // What a block turning the rotary axes to `target` (or, `orientation`, asking for a tool
+    // vector) can be traced as: the one decision of both interpreters' fiveAxisReady, which add
+    // their dialect's diagnostics. `tipKnown`: X, Y and Z known after the block; `linearGiven`:
+    // the block gives some linear axis.
+    enum class BlockTrace {
+        ThreeAxis,        // no machine, a tilted plane's move, nothing turned: a 3-axis move
+        HomeUntraced,     // home from a turned pose, the tool somewhere up its axis: not drawn
+        TipUnknown,       // turned with X, Y or Z unknown (after a retract to the travel limit)
+        NeedsToolLength,  // a head turns the tool without tool-tip control, its length unknown
+        FiveAxis,
+    };
+    BlockTrace blockTrace(const JointAngles& target, bool orientation, bool tipKnown, bool linearGiven) const;
     void setInPlane(bool tilted);
     bool inPlane() const { return m_inPlane; }
     // The frame of a tilted plane given by the machine's axis angles (CYCL DEF 19): the machine's

@@ -113,16 +113,17 @@ bool Machine::rotaryTarget(const Block& b, const BlockWords& w, RotaryTarget& ta
 // without tool-tip control, the tool's length.
 bool Machine::fiveAxisReady(const Block& b, const RotaryTarget& target, AxisMask given, bool& traced)
 {
+    using Trace = FiveAxisState::BlockTrace;
     traced = true;
-    if (m_five.inPlane() && !target.spatial)
-        return true;  // the moves of a tilted plane are 3-axis moves in its frame
-    if (!m_five.active() || !(target.angles.turned() || m_five.fiveAxisMove() || target.spatial))
+    const bool tipKnown = m_known.missing(kNoAxes, AxisMask{}, given) < 0;
+    const Trace trace = m_five.blockTrace(target.angles, target.spatial, tipKnown, given.bits != 0);
+    switch (trace) {
+    case Trace::ThreeAxis:
         return true;
-    if (m_known.missing(kNoAxes, AxisMask{}, given) >= 0 && target.angles.atHome() && given.bits == 0) {
-        traced = false;  // home from a turned pose, the tool somewhere up its axis: a 3-axis pose again
+    case Trace::HomeUntraced:
+        traced = false;
         return true;
-    }
-    if (m_known.missing(kNoAxes, AxisMask{}, given) >= 0) {
+    case Trace::TipUnknown:
         // After M140 MB MAX the tool is somewhere up its axis: the table may turn there, and the
         // trace shows the tool again once a block gives every axis.
         if (target.spatial)
@@ -132,12 +133,15 @@ bool Machine::fiveAxisReady(const Block& b, const RotaryTarget& target, AxisMask
                  "unknown); the trace goes on once a block gives every axis");
         traced = false;
         return true;
+    case Trace::NeedsToolLength:
+    case Trace::FiveAxis:
+        break;
     }
     if (target.spatial && !m_five.tcpm()) {
         report(Severity::Error, b.line, b.column, "AXIS SPAT needs tool-tip control (FUNCTION TCPM): nothing moves");
         return false;
     }
-    if (m_five.needsToolLength() && !m_five.toolLengthKnown()) {
+    if (trace == Trace::NeedsToolLength) {
         report(Severity::Error, b.line, b.column,
                "the machine's head turns the tool about a pivot above its tip: without tool-tip control the "
                "tool length is needed (TOOL DEF L, or the tool table); nothing moves");

@@ -136,16 +136,16 @@ bool Machine::toolVector(const Program& p, const BlockWords& w, RotaryMove& r)
 // without TRAORI, the tool's length.
 bool Machine::fiveAxisReady(const Program& p, const BlockWords& w, const RotaryMove& r, AxisMask given, bool& traced)
 {
+    using Trace = FiveAxisState::BlockTrace;
     traced = true;
-    if (m_five.inPlane() && !r.vector)
-        return true;  // the moves of a swivelled plane are 3-axis moves in its frame
-    if (!m_five.active() || !(r.angles.turned() || m_five.fiveAxisMove() || r.vector))
+    const bool tipKnown = m_known.missing(kNoAxes, AxisMask{}, given) < 0;
+    switch (m_five.blockTrace(r.angles, r.vector, tipKnown, given.bits != 0)) {
+    case Trace::ThreeAxis:
         return true;
-    if (m_known.missing(kNoAxes, AxisMask{}, given) >= 0 && r.angles.atHome() && given.bits == 0) {
-        traced = false;  // home from a turned pose, the tool somewhere up its axis: a 3-axis pose again
+    case Trace::HomeUntraced:
+        traced = false;
         return true;
-    }
-    if (m_known.missing(kNoAxes, AxisMask{}, given) >= 0) {
+    case Trace::TipUnknown:
         if (r.vector)
             return needKnown(p, w, kNoAxes, AxisMask{}, given, "the tool vector (solved at the tip)", {w.line, 0});
         warning(p, {w.line, 0},
@@ -153,12 +153,13 @@ bool Machine::fiveAxisReady(const Program& p, const BlockWords& w, const RotaryM
                 "unknown); the trace goes on once a block gives every axis");
         traced = false;
         return true;
-    }
-    if (m_five.needsToolLength() && !m_five.toolLengthKnown()) {
+    case Trace::NeedsToolLength:
         error(p, {w.line, 0},
               "the machine's head turns the tool about a pivot above its tip: without TRAORI the tool length "
               "is needed (the tool table); the block is left out");
         return false;
+    case Trace::FiveAxis:
+        break;
     }
     return true;
 }

@@ -22,52 +22,13 @@ var post = {
         cycles: ["drill", "drillDwell", "peck", "chipBreak", "tap", "bore"],
         maxAxes: 3
     },
-    properties: {
-        toolChangeComment: {
-            title: "Tool change comment", type: "string", default: "Tool change",
-            description: "Comment line before each tool change (the thesis post wrote 'Vymena nastroje')"
-        },
-        drillingCalls: {
-            title: "Drilling cycle calls", type: "enum", values: ["mcall", "perHole"], default: "mcall",
-            description: "MCALL CYCLE8x(...) followed by the hole positions, or one CYCLE8x(...) after each position"
-        },
-        units: {
-            title: "Units word", type: "enum", values: ["G710", "G71", "G700", "G70", "none"], default: "G710",
-            description: "G710/G71 metric (G710 also for feeds), G700/G70 inch output, none: the thesis preamble"
-        },
-        sequenceStart: {
-            title: "First block number", type: "int", default: 10, min: 0,
-            description: "Number of the first block"
-        },
-        sequenceStep: {
-            title: "Block number step", type: "int", default: 10, min: 1, max: 1000,
-            description: "Increment between block numbers"
-        }
-    }
+    properties: {}
 };
 
-var unitsWord = getProperty("units");
-var inch = unitsWord == "G700" || unitsWord == "G70";
-var xyzFormat = createFormat({decimals: inch ? 4 : 3, scale: inch ? 1 / 25.4 : 1});
-// G700 takes feeds in inch/min as well; G70 changes only the geometry (the 828D's feed unit stays mm).
-var feedFormat = unitsWord == "G700" ? createFormat({decimals: 1, scale: 1 / 25.4}) : createFormat({decimals: 0});
-var feedPerRevFormat = createFormat({decimals: 3, scale: unitsWord == "G700" ? 1 / 25.4 : 1});
-var inverseTimeFormat = createFormat({decimals: 3});
-var secondsFormat = createFormat({decimals: 3, trim: true});
-var cycleFormat = createFormat({decimals: inch ? 4 : 3, scale: inch ? 1 / 25.4 : 1});
+// The dialect's properties, formats, words and handlers shared with the other SINUMERIK post.
+include("sinumerik-common");
 
-var xOutput = createVariable({prefix: "X"}, xyzFormat);
-var yOutput = createVariable({prefix: "Y"}, xyzFormat);
-var zOutput = createVariable({prefix: "Z"}, xyzFormat);
-var iOutput = createVariable({prefix: "I", force: true}, xyzFormat);
-var jOutput = createVariable({prefix: "J", force: true}, xyzFormat);
-var kOutput = createVariable({prefix: "K", force: true}, xyzFormat);
-var feedOutput = createVariable({prefix: "F"}, feedFormat);
-var motionModal = createModal({prefix: "G"});
-var planeModal = createModal({prefix: "G"});
-var compModal = createModal({prefix: "G"});
-var workOffsetModal = createModal({prefix: "G"});
-var feedModeModal = createModal({prefix: "G"});
+var inverseTimeFormat = createFormat({decimals: 3});
 
 // The per-move blocks run in C++ (no onRapid/onLinear/onCircular here): a million moves never
 // enter the script engine. They share the modal variables above with the handlers below.
@@ -87,8 +48,6 @@ post.blocks = {
              zOutput.bind("z"), jOutput.bind("j"), kOutput.bind("k"), feedOutput.bind("feed")]
     }
 };
-
-include("sinumerik-common");  // comments, header, spindle, coolant, feed modes, drilling cycles
 
 function onOpen(program) {
     writeHeader(program);

@@ -46,69 +46,33 @@ var post = {
             title: "Swivel data set (CYCLE800 _TC)", type: "string", default: "TC1",
             description: "Name of the machine's swivel data set (tool carrier) that CYCLE800 swivels with, as set up " +
                          "on the control"
-        },
-        toolChangeComment: {
-            title: "Tool change comment", type: "string", default: "Tool change",
-            description: "Comment line before each tool change"
-        },
-        drillingCalls: {
-            title: "Drilling cycle calls", type: "enum", values: ["mcall", "perHole"], default: "mcall",
-            description: "MCALL CYCLE8x(...) followed by the hole positions, or one CYCLE8x(...) after each position"
-        },
-        units: {
-            title: "Units word", type: "enum", values: ["G710", "G71", "G700", "G70", "none"], default: "G710",
-            description: "G710/G71 metric (G710 also for feeds), G700/G70 inch output, none: no units word"
-        },
-        sequenceStart: {
-            title: "First block number", type: "int", default: 10, min: 0,
-            description: "Number of the first block"
-        },
-        sequenceStep: {
-            title: "Block number step", type: "int", default: 10, min: 1, max: 1000,
-            description: "Increment between block numbers"
         }
     }
 };
 
-var unitsWord = getProperty("units");
-var inch = unitsWord == "G700" || unitsWord == "G70";
+// The dialect's properties, formats, words and handlers shared with the other SINUMERIK post.
+include("sinumerik-common");
+
 var inverseTime = getProperty("inverseTime");
-var xyzFormat = createFormat({decimals: inch ? 4 : 3, scale: inch ? 1 / 25.4 : 1});
-// G700 takes feeds in inch/min as well; G70 changes only the geometry.
-var feedFormat = unitsWord == "G700" ? createFormat({decimals: 1, scale: 1 / 25.4}) : createFormat({decimals: 0});
-var feedPerRevFormat = createFormat({decimals: 3, scale: unitsWord == "G700" ? 1 / 25.4 : 1});
 // G93: 1/min. Four decimals keep a long block's time within 0.5 % down to F0.01 (a 100 mm block at
 // 1 mm/min); beyond the control's F range (999 999.999) a block is too short for its feed: an error.
 var inverseTimeFormat = createFormat({decimals: 4, trim: true, max: 999999.999});
 // Tool vector components: 7 decimals keep the written vector within 1e-7 of the CL's per component.
 var vectorFormat = createFormat({decimals: 7, trim: true});
-var secondsFormat = createFormat({decimals: 3, trim: true});
-var cycleFormat = createFormat({decimals: inch ? 4 : 3, scale: inch ? 1 / 25.4 : 1});
 var angleFormat = createFormat({decimals: 3, trim: true});
 
-var xOutput = createVariable({prefix: "X"}, xyzFormat);
-var yOutput = createVariable({prefix: "Y"}, xyzFormat);
-var zOutput = createVariable({prefix: "Z"}, xyzFormat);
-var iOutput = createVariable({prefix: "I", force: true}, xyzFormat);
-var jOutput = createVariable({prefix: "J", force: true}, xyzFormat);
-var kOutput = createVariable({prefix: "K", force: true}, xyzFormat);
-var feedOutput = createVariable({prefix: "F"}, feedFormat);
 var inverseFeedOutput = createVariable({prefix: "F", force: true}, inverseTimeFormat);  // each G93 block its own time
-var motionModal = createModal({prefix: "G"});
-var planeModal = createModal({prefix: "G"});
-var compModal = createModal({prefix: "G"});
-var workOffsetModal = createModal({prefix: "G"});
-var feedModeModal = createModal({prefix: "G"});
 
-// A straight move or arc of the CL between five-axis moves has the tool along +Z: under TRAORI
-// its block carries that vector (the control would keep the last one), and under G93 it needs G94
-// first. Both are set when a five-axis move leaves them due and ride on the next such block.
 // Rotary positions (orientation angles): the kernel plans each five-axis operation's poses
 // (kinematics::planBranches, for every post on a five-axis machine) and hands them to onLinear5D
 // with each step; post.fiveAxis says how (G93 by the kernel's inverse time).
 var angleOutput = getProperty("orientation") == "angles";
 if (angleOutput)
     post.fiveAxis = {output: "tip", feed: inverseTime ? "inverse" : "tip"};
+
+// A straight move or arc of the CL between five-axis moves has the tool along +Z: under TRAORI
+// its block carries that vector (the control would keep the last one), and under G93 it needs G94
+// first. Both are set when a five-axis move leaves them due and ride on the next such block.
 var verticalVector = createPending();
 var backToG94 = createPending();
 
@@ -133,9 +97,6 @@ post.blocks = {
 };
 
 var compCode = 40;  // G40/G41/G42 as the CL last said
-
-// Comments, header, spindle, coolant, feed modes and CYCLE81..85 as the 828D post writes them.
-include("sinumerik-common");
 
 // --- Five-axis: TRAORI with the tool vector ---------------------------------------------------
 

@@ -1,12 +1,56 @@
 // What the SINUMERIK posts (sinumerik828d-emco, sinumerik840d) write alike, included by them with
-// include("sinumerik-common"): the dialect the 828D proved on the control (seed-004): ';' comments
-// without parentheses, the header and `G17 G40` / units / `G54 G90` preamble, G54..G57 and
-// G505..G599, M5/M9 before a tool change and at the end, M3/M4 S, M7/M8/M9, G94/G95/G93, G4 F
-// dwell, M0/M1, and the drilling cycles CYCLE81..85 with MCALL or one call per hole.
-// The including post defines, before it calls these: xOutput yOutput zOutput feedOutput (variables),
-// motionModal planeModal compModal workOffsetModal feedModeModal (modals), feedFormat
-// feedPerRevFormat inverseTimeFormat secondsFormat cycleFormat (formats), unitsWord (its `units`
-// property) and the properties sequenceStart, sequenceStep and drillingCalls.
+// include("sinumerik-common") right after their `post` object: the dialect the 828D proved on the
+// control (seed-004): its properties (tool change comment, drilling calls, units word, block
+// numbers), 3 decimals (4 in inch), F in mm/min as an integer (G700: inch/min), the X Y Z I J K
+// and F words and the modal G groups, ';' comments without parentheses, the header and `G17 G40`
+// / units / `G54 G90` preamble, G54..G57 and G505..G599, M5/M9 before a tool change and at the
+// end, M3/M4 S, M7/M8/M9, G94/G95/G93, G4 F dwell, M0/M1, and the drilling cycles CYCLE81..85 with
+// MCALL or one call per hole. The including post defines inverseTimeFormat (its G93 F) before it
+// posts.
+
+post.properties = post.properties || {};
+post.properties.toolChangeComment = {
+    title: "Tool change comment", type: "string", default: "Tool change",
+    description: "Comment line before each tool change (the thesis post wrote 'Vymena nastroje')"
+};
+post.properties.drillingCalls = {
+    title: "Drilling cycle calls", type: "enum", values: ["mcall", "perHole"], default: "mcall",
+    description: "MCALL CYCLE8x(...) followed by the hole positions, or one CYCLE8x(...) after each position"
+};
+post.properties.units = {
+    title: "Units word", type: "enum", values: ["G710", "G71", "G700", "G70", "none"], default: "G710",
+    description: "G710/G71 metric (G710 also for feeds), G700/G70 inch output, none: no units word (the thesis preamble)"
+};
+post.properties.sequenceStart = {
+    title: "First block number", type: "int", default: 10, min: 0,
+    description: "Number of the first block"
+};
+post.properties.sequenceStep = {
+    title: "Block number step", type: "int", default: 10, min: 1, max: 1000,
+    description: "Increment between block numbers"
+};
+
+var unitsWord = getProperty("units");
+var inch = unitsWord == "G700" || unitsWord == "G70";
+var xyzFormat = createFormat({decimals: inch ? 4 : 3, scale: inch ? 1 / 25.4 : 1});
+// G700 takes feeds in inch/min as well; G70 changes only the geometry (the feed unit stays mm).
+var feedFormat = unitsWord == "G700" ? createFormat({decimals: 1, scale: 1 / 25.4}) : createFormat({decimals: 0});
+var feedPerRevFormat = createFormat({decimals: 3, scale: unitsWord == "G700" ? 1 / 25.4 : 1});
+var secondsFormat = createFormat({decimals: 3, trim: true});
+var cycleFormat = createFormat({decimals: inch ? 4 : 3, scale: inch ? 1 / 25.4 : 1});
+
+var xOutput = createVariable({prefix: "X"}, xyzFormat);
+var yOutput = createVariable({prefix: "Y"}, xyzFormat);
+var zOutput = createVariable({prefix: "Z"}, xyzFormat);
+var iOutput = createVariable({prefix: "I", force: true}, xyzFormat);
+var jOutput = createVariable({prefix: "J", force: true}, xyzFormat);
+var kOutput = createVariable({prefix: "K", force: true}, xyzFormat);
+var feedOutput = createVariable({prefix: "F"}, feedFormat);
+var motionModal = createModal({prefix: "G"});
+var planeModal = createModal({prefix: "G"});
+var compModal = createModal({prefix: "G"});
+var workOffsetModal = createModal({prefix: "G"});
+var feedModeModal = createModal({prefix: "G"});
 
 // What the CL left running; null until it says (the spindle may run from MDI): then M5/M9 are written.
 var spindleOn = null;

@@ -37,6 +37,14 @@ struct Vec3 {
     double dot(Vec3 o) const { return x * o.x + y * o.y + z * o.z; }
     Vec3 cross(Vec3 o) const { return {y * o.z - z * o.y, z * o.x - x * o.z, x * o.y - y * o.x}; }
     double length() const { return std::sqrt(x * x + y * y + z * z); }
+    // The unit vector along this one; the zero vector stays zero.
+    Vec3 normalized() const
+    {
+        const double l = length();
+        return l > 0 ? *this * (1 / l) : *this;
+    }
+    // The angle to `o` in radians, 0..pi (atan2: exact for tiny and for nearly opposite angles).
+    double angleTo(Vec3 o) const { return std::atan2(cross(o).length(), dot(o)); }
     Vec2 xy() const { return {x, y}; }
 };
 

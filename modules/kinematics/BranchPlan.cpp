@@ -48,7 +48,7 @@ State stateOf(const PoseCandidate& c, int parent, bool reconfigure, const Cost& 
             cost};
 }
 
-double angleBetweenDeg(const Vec3& a, const Vec3& b) { return std::atan2(a.cross(b).length(), a.dot(b)) * 180 / kPi; }
+double angleBetweenDeg(const Vec3& a, const Vec3& b) { return a.angleTo(b) * 180 / kPi; }
 
 bool needsReconfigure(const PoseCandidate& from, const PoseCandidate& to, double toolTurnDeg,
                       const BranchPlanOptions& options)

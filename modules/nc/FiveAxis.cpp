@@ -32,12 +32,6 @@ double positiveWay(double from, double to)
     return d < 0 ? d + 360 : d;
 }
 
-Vec3 unit(const Vec3& v)
-{
-    const double l = v.length();
-    return l > 0 ? v * (1 / l) : v;
-}
-
 }  // namespace
 
 bool JointAngles::turned() const
@@ -227,7 +221,7 @@ toolpath::ToolAxisMove FiveAxisState::move(const Vec3& programmed, double feedMm
     const ToolPose t = toolPose(programmed);
     toolpath::ToolAxisMove m;
     m.tip = t.tip;
-    m.axis = unit(t.axis);
+    m.axis = t.axis.normalized();
     m.feedMmPerMin = feedMmPerMin;
     m.machine = machineAxes();
     m.jointInterpolated = !m_tcpm;
@@ -244,7 +238,7 @@ toolpath::Arc FiveAxisState::arcInWorkpiece(const toolpath::Arc& programmed)
     const Vec3 centre = toolPose(programmed.center).tip;
     a.to = toolPose(programmed.to).tip;
     a.center = centre;
-    a.normal = unit(toolPose(programmed.center + programmed.normal).tip - centre);
+    a.normal = (toolPose(programmed.center + programmed.normal).tip - centre).normalized();
     return a;
 }
 
@@ -269,8 +263,8 @@ toolpath::WorkingPlane FiveAxisState::planeOfAngles(const std::array<double, 2>&
 {
     const kinematics::TiltedAxes axes = kinematics::tiltedAxes(*m_chain, deg);
     toolpath::WorkingPlane plane;
-    plane.xAxis = unit(axes.x);
-    plane.zAxis = unit(axes.z);
+    plane.xAxis = axes.x.normalized();
+    plane.zAxis = axes.z.normalized();
     return plane;
 }
 
@@ -282,12 +276,12 @@ Vec3 FiveAxisState::reframe(const toolpath::WorkingPlane& old, const toolpath::W
     return next.tilted() ? next.toLocal(tip) : machineAxes ? programmedFor(tip) : tip;
 }
 
-Vec3 FiveAxisState::toolAxis() const { return unit(toolPose(Vec3{}).axis); }
+Vec3 FiveAxisState::toolAxis() const { return toolPose(Vec3{}).axis.normalized(); }
 
 std::optional<std::string> FiveAxisState::orientPlane(const Vec3& axis, int branch)
 {
     const MachinePose previous = pose(Vec3{});
-    const ToolPose tool{Vec3{}, unit(axis)};
+    const ToolPose tool{Vec3{}, axis.normalized()};
     const std::vector<kinematics::PoseCandidate> candidates =
         solver().candidates(tool, m_angles.complete() ? &previous : nullptr);
     const kinematics::PoseCandidate* chosen = nullptr;
@@ -314,7 +308,7 @@ std::optional<std::string> FiveAxisState::orientPlane(const Vec3& axis, int bran
 std::optional<std::string> FiveAxisState::orient(const Vec3& tip, const Vec3& axis)
 {
     const MachinePose previous = pose(tip);
-    const auto solved = solver().solve(ToolPose{tip, unit(axis)}, m_angles.complete() ? &previous : nullptr);
+    const auto solved = solver().solve(ToolPose{tip, axis.normalized()}, m_angles.complete() ? &previous : nullptr);
     if (!solved)
         return solved.error().message;
     m_angles.deg = solved.value().pose.rotaryDeg;

@@ -27,13 +27,11 @@ namespace {
 constexpr double kPi = 3.14159265358979323846;
 constexpr double kSpacing = 1.0;  // mm between sample points on the tool, around and along
 
-base::Vec3 unit(const base::Vec3& v) { return v * (1 / v.length()); }
-
 // Two unit vectors square to the axis and to each other.
 std::pair<base::Vec3, base::Vec3> crossAxes(const base::Vec3& axis)
 {
     const base::Vec3 helper = std::abs(axis.z) < 0.9 ? base::Vec3{0, 0, 1} : base::Vec3{1, 0, 0};
-    const base::Vec3 u = unit(axis.cross(helper));
+    const base::Vec3 u = axis.cross(helper).normalized();
     return {u, axis.cross(u)};
 }
 
@@ -90,7 +88,7 @@ std::vector<DensePose> densePoses(const std::vector<ToolPose>& poses, double len
             const int n = static_cast<int>(std::ceil(moved / step));
             for (int k = 1; k < n; ++k) {
                 const double f = static_cast<double>(k) / n;
-                out.push_back({index, {a.tip + travel * f, unit(a.axis + (b.axis - a.axis) * f)}, length});
+                out.push_back({index, {a.tip + travel * f, (a.axis + (b.axis - a.axis) * f).normalized()}, length});
             }
         }
         out.push_back({index, poses[i], length});

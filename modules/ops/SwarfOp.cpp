@@ -14,8 +14,6 @@ constexpr double kPi = 3.14159265358979323846;
 std::string fmt(double v) { return base::NumberFormat{4, true}.format(v); }
 std::string operationName(const SwarfParams& p) { return "swarf \"" + p.name + "\""; }
 
-double angleBetween(const base::Vec3& a, const base::Vec3& b) { return std::atan2(a.cross(b).length(), a.dot(b)); }
-
 // The distance from p to the segment a-b.
 double distanceToChord(const base::Vec3& p, const base::Vec3& a, const base::Vec3& b)
 {
@@ -38,7 +36,7 @@ struct PassShape {
     // stays within the tolerances of the exact pose at `mid`.
     bool within(const SwarfPose& a, const SwarfPose& b, const SwarfPose& mid) const
     {
-        if (angleBetween(a.axis, b.axis) > angle)
+        if (a.axis.angleTo(b.axis) > angle)
             return false;
         if (distanceToChord(mid.tip, a.tip, b.tip) > chord)
             return false;

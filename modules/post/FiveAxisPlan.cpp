@@ -21,13 +21,7 @@ namespace {
 
 constexpr double kPi = 3.14159265358979323846;
 
-double angleDeg(const Vec3& a, const Vec3& b) { return std::atan2(a.cross(b).length(), a.dot(b)) * 180.0 / kPi; }
-
-Vec3 unit(const Vec3& v)
-{
-    const double length = v.length();
-    return length > 0 ? v * (1.0 / length) : v;
-}
+double angleDeg(const Vec3& a, const Vec3& b) { return a.angleTo(b) * 180.0 / kPi; }
 
 // One tool pose of a five-axis section before the plan: where it came from and how it moves.
 struct SectionPose {
@@ -176,7 +170,7 @@ base::Status SectionPlanner::explainFailure(const kinematics::PoseSolver& solver
 void SectionPlanner::keepPoleInCone(const kinematics::PoseSolver& solver, FiveAxisStep& step,
                                     const MachinePose& previous)
 {
-    const Vec3 direction = unit(m_machine.kinematics.joints[poleJoint(m_machine.kinematics)].direction);
+    const Vec3 direction = m_machine.kinematics.joints[poleJoint(m_machine.kinematics)].direction.normalized();
     for (const double sign : {1.0, -1.0}) {
         const Vec3 pole = direction * sign;
         const double off = angleDeg(step.tool.axis, pole);
@@ -358,7 +352,7 @@ base::Result<FiveAxisPlan> planFiveAxis(const toolpath::Toolpath& toolpath, cons
         } else if (const auto* move = std::get_if<toolpath::ToolAxisMove>(&record)) {
             position.set(move->tip);
             if (inside)
-                poses.push_back({i, {move->tip, unit(move->axis)}, move->feedMmPerMin, 0});
+                poses.push_back({i, {move->tip, move->axis.normalized()}, move->feedMmPerMin, 0});
         } else if (const auto* cycle = std::get_if<toolpath::Cycle>(&record)) {
             if (inside)
                 return base::makeError(recordError(toolpath, i,

@@ -14,11 +14,8 @@ constexpr double kPointTolerance = 1e-7;  // mm: start and end this close make a
 constexpr double kSweepTolerance = 1e-6;  // radians of slack before a piece counts as too long
 constexpr double kTwoPi = 2 * std::numbers::pi;
 
-Vec3 unit(const Vec3& v)
-{
-    const double length = v.length();
-    return length > 0 ? v * (1.0 / length) : Vec3{0, 0, 1};
-}
+// A unit vector; a zero one (an arc without a normal) is +Z.
+Vec3 unit(const Vec3& v) { return v.length() > 0 ? v.normalized() : Vec3{0, 0, 1}; }
 
 enum class Plane { XY, ZX, YZ, Other };
 

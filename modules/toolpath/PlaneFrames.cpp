@@ -9,8 +9,6 @@ namespace {
 constexpr double kPi = 3.14159265358979323846;
 constexpr double kDeg = kPi / 180;
 
-Vec3 unit(const Vec3& v) { return v * (1 / v.length()); }
-
 // Exact zeros where rounding left a trace, so that a plane along Z or X is written as such.
 Vec3 tidy(Vec3 v)
 {
@@ -24,9 +22,9 @@ Vec3 tidy(Vec3 v)
 
 WorkingPlane planeAlong(const Vec3& normal, const Vec3& origin)
 {
-    const Vec3 z = unit(normal);
+    const Vec3 z = normal.normalized();
     const Vec3 reference = std::abs(z.x) > 1 - 1e-9 ? Vec3{0, 1, 0} : Vec3{1, 0, 0};
-    const Vec3 x = unit(reference - z * reference.dot(z));
+    const Vec3 x = (reference - z * reference.dot(z)).normalized();
     return {origin, tidy(x), tidy(z)};
 }
 

@@ -15,16 +15,8 @@ namespace {
 
 using namespace camwb::toolpath;
 
-Vec3 unit(const Vec3& v)
-{
-    const double n = std::sqrt(v.dot(v));
-    return n > 0 ? v * (1 / n) : Vec3{0, 0, 1};
-}
-
-double angleBetween(const Vec3& u, const Vec3& v)
-{
-    return std::atan2(std::sqrt(u.cross(v).dot(u.cross(v))), u.dot(v));
-}
+// A unit vector; a zero one (no axis given) is the spindle's +Z.
+Vec3 unit(const Vec3& v) { return v.length() > 0 ? v.normalized() : Vec3{0, 0, 1}; }
 
 class Flattener {
 public:
@@ -282,12 +274,12 @@ bool axisAgrees(const MotionSample& s, const std::vector<Vec3>& vertices, const 
         return true;
     for (std::size_t end : {j, j - 1})
         if (distanceToSegment(s.point, vertices[end], vertices[end]) <= toleranceMm &&
-            angleBetween(s.axis, axes[end]) <= tol.axisRad)
+            s.axis.angleTo(axes[end]) <= tol.axisRad)
             return true;
     if (atVertices)
         return false;
-    const double span = angleBetween(axes[j - 1], axes[j]) + std::max(tol.axisRad, tol.axisBetweenRad);
-    return angleBetween(s.axis, axes[j - 1]) <= span && angleBetween(s.axis, axes[j]) <= span;
+    const double span = axes[j - 1].angleTo(axes[j]) + std::max(tol.axisRad, tol.axisBetweenRad);
+    return s.axis.angleTo(axes[j - 1]) <= span && s.axis.angleTo(axes[j]) <= span;
 }
 
 // Every sample of `from` must lie, in order, on the polyline of `onto` (first fit going forward,

@@ -2,19 +2,20 @@
 #  - project headers: only from the module itself and the modules below it (design.md §2);
 #  - OCCT headers: only in modules/occ sources and its private detail/ headers, never in a public header;
 #  - VTK and QScintilla: only in modules/gui, never in a gui header outside view3d/ and editor/ internals;
-#  - Qt: not at all in the kernels (base, geom, toolpath, kinematics, ops, occ, nc, document); in post only in .cpp files.
+#  - Qt: not at all in the kernels (base, geom, toolpath, kinematics, sim, ops, occ, nc, document); in post only in .cpp files.
 cmake_minimum_required(VERSION 3.25)
 set(allowed_base base)
 set(allowed_geom base geom)
 set(allowed_toolpath base toolpath)
 set(allowed_kinematics base toolpath kinematics)
+set(allowed_sim base geom toolpath kinematics sim)
 set(allowed_occ base geom occ)
-set(allowed_ops base geom toolpath ops)
-set(allowed_post base toolpath kinematics post)
-set(allowed_nc base geom toolpath kinematics nc)
-set(allowed_document base geom toolpath kinematics occ ops post nc document)
-set(allowed_gui base geom toolpath kinematics occ ops post nc document gui)
-set(qt_free base geom toolpath kinematics ops occ nc document)
+set(allowed_ops base geom toolpath kinematics sim ops)
+set(allowed_post base geom toolpath kinematics sim post)
+set(allowed_nc base geom toolpath kinematics sim nc)
+set(allowed_document base geom toolpath kinematics sim occ ops post nc document)
+set(allowed_gui base geom toolpath kinematics sim occ ops post nc document gui)
+set(qt_free base geom toolpath kinematics sim ops occ nc document)
 
 file(GLOB occt_headers RELATIVE ${OCCT_INCLUDE_DIR} ${OCCT_INCLUDE_DIR}/*.hxx)
 list(LENGTH occt_headers occt_count)
@@ -30,7 +31,7 @@ foreach(file IN LISTS files)
   foreach(line IN LISTS includes)
     string(REGEX REPLACE "^[ \t]*#[ \t]*include[ \t]*[<\"]([^>\"]+)[>\"].*" "\\1" header "${line}")
     # Project headers "<module>/<...>".
-    if(header MATCHES "^(base|geom|toolpath|kinematics|occ|ops|post|nc|document|gui)/")
+    if(header MATCHES "^(base|geom|toolpath|kinematics|sim|occ|ops|post|nc|document|gui)/")
       string(REGEX MATCH "^[^/]+" target "${header}")
       if(NOT target IN_LIST allowed_${module})
         string(APPEND violations "modules/${file}: ${module} may not include ${header}\n")

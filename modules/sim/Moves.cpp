@@ -1,0 +1,353 @@
+#include "sim/Moves.h"
+
+#include "toolpath/ArcGeometry.h"
+#include "toolpath/CycleExpansion.h"
+#include "toolpath/KnownPosition.h"
+#include "toolpath/MachineSink.h"
+#include "toolpath/Toolpath.h"
+
+#include <algorithm>
+#include <cmath>
+#include <optional>
+
+namespace camwb::sim {
+
+using toolpath::AxisMask;
+using toolpath::KnownPosition;
+
+namespace {
+
+constexpr double kMaxArcStepDeg = 10;
+constexpr int kMaxPiecesPerArc = 200000;
+constexpr int kMaxJointPieces = 4096;
+
+double& rotaryOf(toolpath::RotaryAxes& r, const std::string& axis)
+{
+    return axis == "A" ? r.aDeg : axis == "B" ? r.bDeg : r.cDeg;
+}
+
+bool knowsRotary(const toolpath::RotaryAxes& r, const std::string& axis)
+{
+    return r.has(axis == "A"   ? toolpath::RotaryAxes::kA
+                 : axis == "B" ? toolpath::RotaryAxes::kB
+                               : toolpath::RotaryAxes::kC);
+}
+
+// Follows the records as a control would, turning motion into Moves.
+class MoveBuilder : public toolpath::MachineSink {
+public:
+    MoveBuilder(MoveList& out, const MoveOptions& options) : m_out(out), m_options(options) {}
+
+    void setRecord(std::uint32_t record, bool inError)
+    {
+        m_record = record;
+        m_inError = inError;
+    }
+    void finish() { closeSection(); }
+
+    void rapid(const toolpath::Rapid& r) override { straight(r.to, r.axes, MoveKind::Rapid, 0); }
+    void linear(const toolpath::Linear& l) override { straight(l.to, l.axes, MoveKind::Feed, l.feedMmPerMin); }
+    void arc(const toolpath::Arc& a) override;
+    void toolChange(const toolpath::ToolChange& c) override
+    {
+        m_tool = c.tool.number;
+        m_out.tools[c.tool.number] = c.tool;
+        m_toolLengthMm = c.tool.lengthMm;
+        pause(MoveKind::ToolChange, 0);
+    }
+    void spindle(const toolpath::Spindle& s) override
+    {
+        m_rpm = s.rpm;
+        m_spindleCw = s.clockwise;
+    }
+    void coolant(const toolpath::Coolant&) override {}
+    void feedMode(const toolpath::FeedModeChange& f) override { m_feedMode = f.mode; }
+    void workOffset(const toolpath::WorkOffset&) override {}
+    void dwell(const toolpath::Dwell& d) override { pause(MoveKind::Dwell, d.seconds); }
+    void cycle(const toolpath::Cycle& c) override;
+    void toolAxisMove(const toolpath::ToolAxisMove& m) override;
+    void cutterComp(const toolpath::CutterComp&) override {}
+    void comment(const toolpath::Comment&) override {}
+    void sectionBegin(const toolpath::SectionBegin& s) override
+    {
+        closeSection();
+        m_section = MoveSection{s.operationName, s.toolNumber, m_out.moves.size(), m_out.moves.size()};
+        m_inSection = true;
+    }
+    void sectionEnd(const toolpath::SectionEnd&) override { closeSection(); }
+    void programStop(const toolpath::ProgramStop&) override { pause(MoveKind::Stop, 0); }
+    void passThrough(const toolpath::PassThrough&) override {}
+    void workingPlane(const toolpath::WorkingPlane& plane) override
+    {
+        if (const auto p = m_local.point())
+            m_local.set(plane.toLocal(m_plane.toWorkpiece(*p)));  // the same point in the new frame
+        else
+            m_local.forget();  // a partly known point cannot be carried into a turned frame
+        m_plane = plane;
+    }
+
+private:
+    void closeSection()
+    {
+        if (!m_inSection)
+            return;
+        m_section.endMove = m_out.moves.size();
+        if (m_section.tool == 0)
+            m_section.tool = m_tool;
+        m_out.sections.push_back(m_section);
+        m_inSection = false;
+    }
+
+    Move base(MoveKind kind) const
+    {
+        Move m;
+        m.kind = kind;
+        m.tool = m_tool;
+        m.record = m_record;
+        m.spindleRpm = m_rpm;
+        m.fromAxis = m.toAxis = m_axis;
+        m.fromMachine = m.toMachine = m_machine;
+        return m;
+    }
+
+    // The feed of a move of `lengthMm` at programmed `feed` in the current mode.
+    void setFeed(Move& m, double feed, double fraction) const
+    {
+        if (m.kind != MoveKind::Feed)
+            return;
+        switch (m_feedMode) {
+        case toolpath::FeedMode::PerMinute:
+            m.feedMmPerMin = feed;
+            break;
+        case toolpath::FeedMode::PerRevolution:
+            m.feedMmPerMin = feed * m_rpm;
+            break;
+        case toolpath::FeedMode::InverseTime:
+            m.minutes = feed > 0 ? fraction / feed : 0;
+            break;
+        }
+    }
+
+    void pause(MoveKind kind, double seconds)
+    {
+        if (m_inError)
+            return;
+        const auto p = m_local.point();
+        Move m = base(kind);
+        m.positionKnown = p.has_value();  // the time counts even before the first move
+        if (p)
+            m.from = m.to = m_plane.toWorkpiece(*p);
+        m.seconds = seconds;
+        m_out.moves.push_back(m);
+    }
+
+    void push(const Vec3& fromLocal, const Vec3& toLocal, MoveKind kind, double feed, double fraction, bool fromArc)
+    {
+        Move m = base(kind);
+        m.from = m_plane.toWorkpiece(fromLocal);
+        m.to = m_plane.toWorkpiece(toLocal);
+        m.fromArc = fromArc;
+        setFeed(m, feed, fraction);
+        m_out.moves.push_back(m);
+    }
+
+    void straight(const Vec3& to, AxisMask axes, MoveKind kind, double feed)
+    {
+        const std::optional<Vec3> from = m_local.point();
+        m_local.moveTo(to, axes);
+        leaveFiveAxis();
+        const std::optional<Vec3> end = m_local.point();
+        if (!end)
+            return;
+        if (!from) {
+            ++m_out.movesFromUnknownPosition;
+            return;
+        }
+        if (m_inError || base::distance(*from, *end) < 1e-12)
+            return;
+        push(*from, *end, kind, feed, 1.0, false);
+    }
+
+    // A three-axis move after five-axis ones: the tool stands along the plane's axis again.
+    void leaveFiveAxis() { m_axis = m_plane.zAxis; }
+
+    void splitJoint(const toolpath::ToolAxisMove& m, Move piece, const Vec3& fromTip);
+
+    MoveList& m_out;
+    const MoveOptions& m_options;
+    KnownPosition m_local;  // in the working plane's frame
+    toolpath::WorkingPlane m_plane;
+    Vec3 m_axis{0, 0, 1};
+    toolpath::RotaryAxes m_machine{};
+    toolpath::FeedMode m_feedMode = toolpath::FeedMode::PerMinute;
+    double m_rpm = 0;
+    bool m_spindleCw = true;
+    int m_tool = 0;
+    double m_toolLengthMm = 0;
+    std::uint32_t m_record = 0;
+    bool m_inError = false;
+    MoveSection m_section;
+    bool m_inSection = false;
+};
+
+void MoveBuilder::arc(const toolpath::Arc& a)
+{
+    const std::optional<Vec3> from = m_local.point();
+    leaveFiveAxis();
+    if (!from) {
+        m_local.moveTo(a.to, AxisMask{});
+        ++m_out.movesFromUnknownPosition;
+        return;
+    }
+    m_local.set(a.to);
+    if (m_inError)
+        return;
+    const std::vector<Vec3> points =
+        toolpath::linearizeArc(*from, a, m_options.chordToleranceMm, kMaxArcStepDeg, kMaxPiecesPerArc);
+    double total = 0;
+    Vec3 p = *from;
+    for (const Vec3& q : points) {
+        total += base::distance(p, q);
+        p = q;
+    }
+    p = *from;
+    for (const Vec3& q : points) {
+        const double fraction = total > 0 ? base::distance(p, q) / total : 1.0 / points.size();
+        if (base::distance(p, q) >= 1e-12)
+            push(p, q, MoveKind::Feed, a.feedMmPerMin, fraction, true);
+        p = q;
+    }
+}
+
+void MoveBuilder::cycle(const toolpath::Cycle& c)
+{
+    for (const Vec3& hole : c.holes) {
+        if (!m_local.known(2)) {
+            ++m_out.movesFromUnknownPosition;  // nothing says how high the tool is over the hole
+            continue;
+        }
+        for (const toolpath::Record& r : toolpath::expandCycleHole(c, hole, m_local, {m_rpm, m_spindleCw}))
+            toolpath::dispatch(r, *this);
+    }
+}
+
+void MoveBuilder::toolAxisMove(const toolpath::ToolAxisMove& m)
+{
+    // Five-axis moves are in the workpiece frame whatever plane was set before.
+    const std::optional<Vec3> fromLocal = m_local.point();
+    const std::optional<Vec3> from = fromLocal ? std::optional<Vec3>(m_plane.toWorkpiece(*fromLocal)) : std::nullopt;
+    const Vec3 fromAxis = m_axis;
+    const toolpath::RotaryAxes fromMachine = m_machine;
+    m_local.set(m_plane.toLocal(m.tip));
+    m_axis = m.axis.normalized();
+    m_machine = m.machine;
+    if (!from) {
+        ++m_out.movesFromUnknownPosition;
+        return;
+    }
+    if (m_inError)
+        return;
+    Move piece = base(m.feedMmPerMin > 0 ? MoveKind::Feed : MoveKind::Rapid);
+    piece.fiveAxis = true;
+    piece.from = *from;
+    piece.to = m.tip;
+    piece.fromAxis = fromAxis;
+    piece.toAxis = m_axis;
+    piece.fromMachine = fromMachine;
+    piece.toMachine = m.machine;
+    setFeed(piece, m.feedMmPerMin, 1.0);
+    if (m.jointInterpolated) {
+        splitJoint(m, piece, *from);
+        return;
+    }
+    if (base::distance(piece.from, piece.to) < 1e-12 && fromAxis.angleTo(m_axis) < 1e-12)
+        return;
+    m_out.moves.push_back(piece);
+}
+
+// The machine moves its joints evenly: the tip curves through the chain. Pieces double until the
+// middle of each lies within the chord tolerance of its chord.
+void MoveBuilder::splitJoint(const toolpath::ToolAxisMove& m, Move piece, const Vec3& fromTip)
+{
+    const kinematics::KinematicChain* chain = m_options.chain;
+    piece.jointInterpolated = true;
+    const bool known = chain && chain->fiveAxis() &&
+                       std::all_of(chain->joints.begin(), chain->joints.end(), [&](const kinematics::RotaryJoint& j) {
+                           return knowsRotary(piece.fromMachine, j.axis) && knowsRotary(piece.toMachine, j.axis);
+                       });
+    if (!known) {
+        m_out.moves.push_back(piece);  // straight: nothing here knows how the tip curves
+        return;
+    }
+    kinematics::MachinePose a, b;
+    for (int i = 0; i < 2; ++i) {
+        a.rotaryDeg[i] = rotaryOf(piece.fromMachine, chain->joints[i].axis);
+        b.rotaryDeg[i] = rotaryOf(piece.toMachine, chain->joints[i].axis);
+    }
+    a.linear = kinematics::linearAxesFor(*chain, fromTip, a.rotaryDeg, m_toolLengthMm);
+    b.linear = kinematics::linearAxesFor(*chain, m.tip, b.rotaryDeg, m_toolLengthMm);
+    auto at = [&](double t) {
+        kinematics::MachinePose p;
+        p.linear = a.linear + (b.linear - a.linear) * t;
+        for (int i = 0; i < 2; ++i)
+            p.rotaryDeg[i] = a.rotaryDeg[i] + (b.rotaryDeg[i] - a.rotaryDeg[i]) * t;
+        return kinematics::forwardKinematics(*chain, p, m_toolLengthMm);
+    };
+    int pieces = 1;
+    std::vector<kinematics::ToolPose> poses;
+    for (;;) {
+        poses.clear();
+        double worst = 0;
+        for (int i = 0; i <= pieces; ++i)
+            poses.push_back(at(double(i) / pieces));
+        for (int i = 0; i < pieces; ++i) {
+            const Vec3 mid = at((i + 0.5) / pieces).tip;
+            worst = std::max(worst, base::distance(mid, (poses[i].tip + poses[i + 1].tip) * 0.5));
+        }
+        if (worst <= m_options.chordToleranceMm || pieces >= kMaxJointPieces)
+            break;
+        pieces *= 2;
+    }
+    const Move whole = piece;
+    for (int i = 0; i < pieces; ++i) {
+        Move p = whole;
+        p.from = poses[i].tip;
+        p.to = poses[i + 1].tip;
+        p.fromAxis = poses[i].axis;
+        p.toAxis = poses[i + 1].axis;
+        p.minutes = whole.minutes / pieces;
+        for (int j = 0; j < 2; ++j) {
+            const std::string& axis = chain->joints[j].axis;
+            const double from = a.rotaryDeg[j] + (b.rotaryDeg[j] - a.rotaryDeg[j]) * double(i) / pieces;
+            const double to = a.rotaryDeg[j] + (b.rotaryDeg[j] - a.rotaryDeg[j]) * double(i + 1) / pieces;
+            rotaryOf(p.fromMachine, axis) = from;
+            rotaryOf(p.toMachine, axis) = to;
+        }
+        m_out.moves.push_back(p);
+    }
+}
+
+}  // namespace
+
+const toolpath::Tool* MoveList::tool(int number) const
+{
+    const auto it = tools.find(number);
+    return it == tools.end() ? nullptr : &it->second;
+}
+
+MoveList buildMoves(const toolpath::Toolpath& program, const MoveOptions& options,
+                    const std::vector<bool>& recordsInError)
+{
+    MoveList out;
+    MoveBuilder builder(out, options);
+    builder.begin();
+    for (std::size_t i = 0; i < program.size(); ++i) {
+        builder.setRecord(static_cast<std::uint32_t>(i), i < recordsInError.size() && recordsInError[i]);
+        toolpath::dispatch(program.record(i), builder);
+    }
+    builder.finish();
+    builder.end();
+    return out;
+}
+
+}  // namespace camwb::sim

@@ -1,0 +1,92 @@
+// The simulator's input: a program (CL or NC read back) as straight pieces of tool motion in the
+// workpiece frame, each with the state the simulator needs (feed on the tip, tool, spindle, the
+// record it came from). Arcs are split within a chord tolerance, canned cycles expanded as a
+// control makes them, working planes (3+2) applied, five-axis moves carry the tool axis at both
+// ends. Motion in time, stock removal, the checks and the simulator dock all read this one list.
+#pragma once
+
+#include "base/Vec.h"
+#include "kinematics/KinematicChain.h"
+#include "toolpath/ClRecords.h"
+
+#include <cstdint>
+#include <map>
+#include <string>
+#include <vector>
+
+namespace camwb::toolpath {
+class Toolpath;
+}
+
+namespace camwb::sim {
+
+using base::Vec3;
+
+enum class MoveKind : std::uint8_t {
+    Rapid,       // at the machine's rapid rate
+    Feed,        // at feedMmPerMin on the tip, or in `minutes` (inverse time)
+    Dwell,       // the tool stands for `seconds`
+    ToolChange,  // the tool stands while the changer works (kinematics::Machine says how long)
+    Stop,        // program stop (M0/M1): the tool stands; no time is counted
+};
+
+// One straight piece of motion (or a pause at `to` for the kinds that stand). The tip goes
+// straight from `from` to `to` and the tool axis turns evenly from `fromAxis` to `toAxis` (a
+// control's tool-tip control), unless `jointInterpolated`: then the machine moves its axes
+// evenly from `fromMachine` to `toMachine` and MoveList has split the move so that the tip's
+// curve stays within the chord tolerance of its pieces.
+struct Move {
+    Vec3 from;
+    Vec3 to;
+    Vec3 fromAxis{0, 0, 1};  // unit, tip towards spindle, workpiece frame
+    Vec3 toAxis{0, 0, 1};
+    MoveKind kind = MoveKind::Feed;
+    bool fromArc = false;                // a piece of a split arc or helix
+    bool fiveAxis = false;               // from a ToolAxisMove (the axis may turn)
+    bool jointInterpolated = false;      // see above
+    bool positionKnown = true;           // false: a pause before any move (from, to mean nothing)
+    int tool = 0;                        // tool number in use (0: none yet); MoveList::tools has it
+    std::uint32_t record = 0;            // index of the toolpath record it came from
+    double feedMmPerMin = 0;             // Feed, per minute mode (per revolution: times the rpm)
+    double minutes = 0;                  // Feed in inverse time: the time this piece takes; else 0
+    double seconds = 0;                  // Dwell
+    double spindleRpm = 0;               // 0: stopped
+    toolpath::RotaryAxes fromMachine{};  // machine rotary positions where the source gave them
+    toolpath::RotaryAxes toMachine{};
+
+    double lengthMm() const { return base::distance(from, to); }
+    bool moves() const { return kind == MoveKind::Rapid || kind == MoveKind::Feed; }
+};
+
+// An operation's span of moves (from SectionBegin to SectionEnd), for per-operation figures.
+struct MoveSection {
+    std::string name;
+    int tool = 0;
+    std::size_t firstMove = 0;
+    std::size_t endMove = 0;  // one past the last
+};
+
+struct MoveOptions {
+    double chordToleranceMm = 0.005;  // arcs and joint-interpolated moves split within this
+    // The machine's chain: joint-interpolated five-axis moves are split through it; a
+    // three-axis chain leaves such moves straight (nothing else knows how the tip curves).
+    const kinematics::KinematicChain* chain = nullptr;
+};
+
+struct MoveList {
+    std::vector<Move> moves;
+    std::map<int, toolpath::Tool> tools;  // every tool changed to, by number
+    std::vector<MoveSection> sections;
+    // Records whose motion could not be followed: a move from an unknown position (a CL that
+    // gives only Z before its first X/Y) only sets what it knows and makes no Move.
+    std::size_t movesFromUnknownPosition = 0;
+
+    const toolpath::Tool* tool(int number) const;
+};
+
+// The moves of `program`. Records flagged in `recordsInError` (nc::recordsInError) move the
+// position but make no motion: what such a block claims is not what the machine would do.
+MoveList buildMoves(const toolpath::Toolpath& program, const MoveOptions& options = {},
+                    const std::vector<bool>& recordsInError = {});
+
+}  // namespace camwb::sim

@@ -1,0 +1,63 @@
+// The workpiece material as the simulator removes it: one interface over the representations
+// (a height field for three-axis work, tri-dexels where the tool tilts), so the checks, the
+// command line and the simulator dock do not care which one cuts. A stock knows the design model
+// it is compared with, so every cut says at once how deep it went into the part.
+#pragma once
+
+#include "base/Vec.h"
+#include "sim/Moves.h"
+#include "sim/TriangleMesh.h"
+
+#include <cstdint>
+#include <memory>
+#include <vector>
+
+namespace camwb::sim {
+
+class ToolShape;
+
+// What one move did to the stock.
+struct CutResult {
+    double removedMm3 = 0;            // material the cutter removed
+    double gougeMm = 0;               // deepest the cutter went into the design model (0: not at all)
+    Vec3 gougeAt;                     // where (workpiece frame)
+    double holderInterferenceMm = 0;  // deepest the shank or holder reaches into the remaining stock
+    Vec3 holderAt;
+    bool removedOnAxis = false;  // material removed under the tool's centre (an axial plunge)
+};
+
+// Remaining material against the design model, sampled over the stock's surface.
+struct Deviation {
+    // One value per vertex of Stock::mesh(): + material left above the model (mm), - gouge depth.
+    std::vector<float> perVertex;
+    double maxLeftoverMm = 0;
+    Vec3 leftoverAt;
+    std::int64_t leftoverMove = -1;  // the last move that cut near there; -1: none did
+    double maxGougeMm = 0;
+    Vec3 gougeAt;
+    std::int64_t gougeMove = -1;
+};
+
+class Stock {
+public:
+    virtual ~Stock() = default;
+
+    // Removes what `tool` sweeps along `move` (index `moveIndex` of its MoveList, so a result can
+    // name its block later). Pauses (dwell, tool change) cut nothing.
+    virtual CutResult cut(const Move& move, std::size_t moveIndex, const ToolShape& tool) = 0;
+
+    // The design model the cuts and compare() measure against, with the tolerance under which a
+    // cut into it is not a gouge. An empty mesh: no model (gouges are never reported).
+    virtual void setDesign(const TriangleMesh& model, double toleranceMm) = 0;
+    virtual Deviation compare() const = 0;
+
+    virtual double volumeMm3() const = 0;
+    virtual base::Box3 bounds() const = 0;
+    virtual double resolutionMm() const = 0;
+    // The remaining material's surface: closed, outward-facing (an STL of the cut part).
+    virtual TriangleMesh mesh() const = 0;
+    // A copy: each operation can start from what the previous one left.
+    virtual std::unique_ptr<Stock> clone() const = 0;
+};
+
+}  // namespace camwb::sim

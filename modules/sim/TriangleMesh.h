@@ -1,0 +1,31 @@
+// A triangle mesh in plain arrays: the design model the simulator compares with (from occ's
+// meshing or an STL), and the cut stock it shows and exports. No OCCT, no VTK.
+#pragma once
+
+#include "base/Result.h"
+#include "base/Vec.h"
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace camwb::sim {
+
+struct TriangleMesh {
+    std::vector<float> positions;          // x, y, z per vertex
+    std::vector<std::uint32_t> triangles;  // three vertex indices per triangle, counter-clockwise from outside
+
+    std::size_t vertexCount() const { return positions.size() / 3; }
+    std::size_t triangleCount() const { return triangles.size() / 3; }
+    base::Vec3 vertex(std::size_t i) const { return {positions[3 * i], positions[3 * i + 1], positions[3 * i + 2]}; }
+    bool empty() const { return triangles.empty(); }
+    base::Box3 bounds() const;
+    // Enclosed volume (divergence theorem); meaningful for a closed, consistently oriented mesh.
+    double volumeMm3() const;
+};
+
+// Binary STL, written atomically (nothing half-written on failure).
+// (Reading STL is occ's: a model or a stock from a mesh file comes through occ::Model.)
+base::Status writeStl(const TriangleMesh& mesh, const std::string& path, const std::string& header = "camwb");
+
+}  // namespace camwb::sim

@@ -1,0 +1,1 @@
+set(SIM_PART_SOURCES)

@@ -1,0 +1,195 @@
+// The simulator's move list: arcs split within the chord tolerance, cycles expanded, working
+// planes applied, feeds per revolution and in inverse time resolved, unknown positions never
+// invented, joint-interpolated five-axis moves split along the tip's curve.
+#include "sim/Moves.h"
+
+#include "toolpath/Toolpath.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+using namespace camwb;
+using namespace camwb::toolpath;
+using sim::MoveKind;
+
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+Tool flat10()
+{
+    Tool t;
+    t.number = 3;
+    t.diameterMm = 10;
+    t.lengthMm = 50;
+    return t;
+}
+
+}  // namespace
+
+TEST(SimMoves, StraightMovesKeepFeedToolSpindleAndRecord)
+{
+    Toolpath p;
+    p.add(ToolChange{flat10()});
+    p.add(Spindle{2000, true});
+    p.add(Rapid{{0, 0, 10}});
+    p.add(Linear{{0, 0, -2}, 100});
+    p.add(Linear{{30, 0, -2}, 600});
+    const sim::MoveList list = sim::buildMoves(p);
+    ASSERT_EQ(list.moves.size(), 3u);  // the tool change (no position yet) and two feed moves
+    EXPECT_EQ(list.moves[0].kind, MoveKind::ToolChange);
+    EXPECT_FALSE(list.moves[0].positionKnown);
+    EXPECT_EQ(list.moves[1].kind, MoveKind::Feed);
+    EXPECT_DOUBLE_EQ(list.moves[1].feedMmPerMin, 100);
+    EXPECT_EQ(list.moves[2].record, 4u);
+    EXPECT_EQ(list.moves[2].tool, 3);
+    EXPECT_DOUBLE_EQ(list.moves[2].spindleRpm, 2000);
+    EXPECT_DOUBLE_EQ(list.moves[2].lengthMm(), 30);
+    ASSERT_NE(list.tool(3), nullptr);
+    EXPECT_DOUBLE_EQ(list.tool(3)->diameterMm, 10);
+}
+
+TEST(SimMoves, AMoveFromAnUnknownPositionMakesNoMotion)
+{
+    Toolpath p;
+    p.add(Rapid{{0, 0, 20}, AxisMask{AxisMask::kZ}});  // only Z known
+    p.add(Rapid{{5, 6, 0}, AxisMask{AxisMask::kX | AxisMask::kY}});
+    p.add(Linear{{5, 6, 0}, 100});
+    const sim::MoveList list = sim::buildMoves(p);
+    ASSERT_EQ(list.moves.size(), 1u);  // only the plunge from (5, 6, 20), never a line from a guess
+    EXPECT_EQ(list.moves[0].from.z, 20);
+    EXPECT_EQ(list.movesFromUnknownPosition, 1u);
+}
+
+TEST(SimMoves, ArcsAreSplitWithinTheChordTolerance)
+{
+    Toolpath p;
+    p.add(Rapid{{10, 0, 0}});
+    p.add(Arc{{-10, 0, 0}, {0, 0, 0}, {0, 0, 1}, false, 0, 300});
+    sim::MoveOptions options;
+    options.chordToleranceMm = 0.01;
+    const sim::MoveList list = sim::buildMoves(p, options);
+    ASSERT_GT(list.moves.size(), 10u);
+    double length = 0;
+    for (const sim::Move& m : list.moves) {  // the rapid only set the start
+        EXPECT_TRUE(m.fromArc);
+        EXPECT_DOUBLE_EQ(m.feedMmPerMin, 300);
+        const base::Vec3 mid = (m.from + m.to) * 0.5;
+        EXPECT_LE(10 - mid.length(), 0.01 + 1e-9);
+        length += m.lengthMm();
+    }
+    EXPECT_NEAR(length, 10 * kPi, 0.05);
+}
+
+TEST(SimMoves, InverseTimeFeedSharesTheBlockTimeOverItsPieces)
+{
+    Toolpath p;
+    p.add(Rapid{{10, 0, 0}});
+    p.add(FeedModeChange{FeedMode::InverseTime});
+    p.add(Arc{{-10, 0, 0}, {0, 0, 0}, {0, 0, 1}, false, 0, 2});  // 1/2 minute for the half circle
+    p.add(FeedModeChange{FeedMode::PerRevolution});
+    p.add(Spindle{1000, true});
+    p.add(Linear{{-10, 0, -5}, 0.1});
+    const sim::MoveList list = sim::buildMoves(p);
+    double minutes = 0;
+    for (std::size_t i = 0; i + 1 < list.moves.size(); ++i)
+        minutes += list.moves[i].minutes;
+    EXPECT_NEAR(minutes, 0.5, 1e-12);
+    EXPECT_DOUBLE_EQ(list.moves.back().feedMmPerMin, 100);  // 0.1 mm/rev at 1000 rpm
+}
+
+TEST(SimMoves, CyclesAreTheMovesAControlMakes)
+{
+    Toolpath p;
+    p.add(Rapid{{0, 0, 20}});
+    Cycle c;
+    c.clearanceZ = 20;
+    c.retractZ = 2;
+    c.topZ = 0;
+    c.bottomZ = -10;
+    c.feedMmPerMin = 120;
+    c.holes = {{10, 0, 0}, {20, 0, 0}};
+    p.add(c);
+    const sim::MoveList list = sim::buildMoves(p);
+    int feeds = 0;
+    double deepest = 0;
+    for (const sim::Move& m : list.moves) {
+        feeds += m.kind == MoveKind::Feed;
+        deepest = std::min(deepest, m.to.z);
+        EXPECT_EQ(m.record, 1u);
+    }
+    EXPECT_EQ(feeds, 2);
+    EXPECT_DOUBLE_EQ(deepest, -10);
+}
+
+TEST(SimMoves, WorkingPlanesPutMovesInTheWorkpieceFrame)
+{
+    Toolpath p;
+    WorkingPlane plane;  // turned 90 degrees about Y: the plane's Z is the workpiece's +X
+    plane.origin = {100, 0, 0};
+    plane.xAxis = {0, 0, -1};
+    plane.zAxis = {1, 0, 0};
+    p.add(plane);
+    p.add(Rapid{{0, 0, 10}});
+    p.add(Linear{{0, 0, 0}, 100});
+    const sim::MoveList list = sim::buildMoves(p);
+    ASSERT_EQ(list.moves.size(), 1u);
+    EXPECT_NEAR(list.moves[0].from.x, 110, 1e-12);
+    EXPECT_NEAR(list.moves[0].to.x, 100, 1e-12);
+    EXPECT_NEAR(list.moves[0].toAxis.x, 1, 1e-12);  // the tool stands along the plane's Z
+}
+
+TEST(SimMoves, SectionsSpanTheirMoves)
+{
+    Toolpath p;
+    p.add(Rapid{{0, 0, 10}});
+    SectionBegin s;
+    s.operationName = "Slot";
+    s.toolNumber = 3;
+    p.add(s);
+    p.add(Linear{{0, 0, 0}, 100});
+    p.add(Linear{{10, 0, 0}, 100});
+    p.add(SectionEnd{});
+    p.add(Rapid{{10, 0, 10}});
+    const sim::MoveList list = sim::buildMoves(p);
+    ASSERT_EQ(list.sections.size(), 1u);
+    EXPECT_EQ(list.sections[0].name, "Slot");
+    EXPECT_EQ(list.sections[0].firstMove, 0u);
+    EXPECT_EQ(list.sections[0].endMove, 2u);
+}
+
+TEST(SimMoves, JointInterpolatedMovesFollowTheTipsCurve)
+{
+    // Table-table A/C (seed 003 layout): turning C by 90 degrees with the tip off the C axis
+    // swings the tip on a circle; the pieces follow it within the tolerance.
+    kinematics::KinematicChain chain;
+    chain.type = kinematics::ChainType::TableTable;
+    chain.joints = {{"A", true, {-1, 0, 0}, {0, 0, 0}}, {"C", true, {0, 0, -1}, {0, 0, 0}}};
+    Toolpath p;
+    ToolAxisMove a;
+    a.tip = {50, 0, 0};
+    a.machine.known = RotaryAxes::kA | RotaryAxes::kC;
+    p.add(a);
+    ToolAxisMove b = a;
+    b.feedMmPerMin = 500;
+    b.machine.cDeg = 90;
+    b.tip = {50, 0, 0};  // the same tip on the workpiece: the machine turns the part under it
+    b.jointInterpolated = true;
+    p.add(b);
+    sim::MoveOptions options;
+    options.chain = &chain;
+    options.chordToleranceMm = 0.01;
+    const sim::MoveList list = sim::buildMoves(p, options);
+    // Without TCPM the linear axes travel straight from one end to the other while C turns, so
+    // the tip leaves (50, 0, 0) on the workpiece and comes back: pieces, not a zero-length move.
+    ASSERT_GT(list.moves.size(), 4u);
+    double farthest = 0;
+    for (const sim::Move& m : list.moves) {
+        EXPECT_TRUE(m.jointInterpolated);
+        farthest = std::max(farthest, base::distance(m.to, {50, 0, 0}));
+    }
+    EXPECT_GT(farthest, 10);
+    EXPECT_NEAR(list.moves.back().to.x, 50, 1e-9);
+    EXPECT_NEAR(list.moves.back().to.y, 0, 1e-9);
+}

@@ -19,6 +19,32 @@ double optionalNumber(const Json& object, const char* key, const std::string& wh
     return optionalMember(object, key, where) ? number(object, key, where) : fallback;
 }
 
+double positive(const Json& object, const char* key, const std::string& where, const char* what)
+{
+    const double value = number(object, key, where);
+    if (!(value > 0))
+        throw JsonFieldError{where + "." + key + ": expected " + what + " above 0"};
+    return value;
+}
+
+// The limits a file leaves out (Machine.h says which defaults and why).
+void applyMotionDefaults(Machine& m)
+{
+    const double linear = m.rapidMmPerMin > 0            ? m.rapidMmPerMin
+                          : m.maxCuttingFeedMmPerMin > 0 ? m.maxCuttingFeedMmPerMin
+                                                         : toolpath::kDefaultRapidMmPerMin;
+    for (Axis& a : m.axes) {
+        if (!a.velocityFromFile)
+            a.maxVelocity = !a.rotary ? linear : a.maxRpm > 0 ? a.maxRpm * 360 : kDefaultRotaryDegPerMin;
+        if (!a.accelerationFromFile)
+            a.maxAcceleration = a.rotary ? kDefaultRotaryAccelerationDegPerS2 : kDefaultLinearAccelerationMmPerS2;
+    }
+    if (m.toolChangeSeconds <= 0)
+        m.toolChangeSeconds = m.manualToolChange ? kDefaultManualToolChangeSeconds : kDefaultToolChangeSeconds;
+    if (m.spindleRampSeconds <= 0)
+        m.spindleRampSeconds = kDefaultSpindleRampSeconds;
+}
+
 Axis readAxis(const Json& a, const std::string& where)
 {
     Axis axis;
@@ -49,6 +75,16 @@ Axis readAxis(const Json& a, const std::string& where)
         if (axis.maxRpm <= 0)
             throw JsonFieldError{where + ".maxRpm: expected a speed above 0"};
     }
+    if (optionalMember(a, "maxVelocity", where)) {
+        if (axis.maxRpm > 0)  // two figures for one speed: which one does the file mean?
+            throw JsonFieldError{where + ": maxRpm and maxVelocity both give the axis' speed (keep one)"};
+        axis.maxVelocity = positive(a, "maxVelocity", where, "a speed");
+        axis.velocityFromFile = true;
+    }
+    if (optionalMember(a, "maxAcceleration", where)) {
+        axis.maxAcceleration = positive(a, "maxAcceleration", where, "an acceleration");
+        axis.accelerationFromFile = true;
+    }
     return axis;
 }
 
@@ -60,6 +96,8 @@ void readToolChanger(const Json& changer, const std::string& at, Machine& m)
         throw JsonFieldError{at + ": a manual tool change has no stations"};
     m.maxToolDiameterMm = optionalNumber(changer, "maxToolDiameter", at, 0);
     m.maxToolLengthMm = optionalNumber(changer, "maxToolLength", at, 0);
+    if (optionalMember(changer, "changeSeconds", at))
+        m.toolChangeSeconds = positive(changer, "changeSeconds", at, "a time");
 }
 
 void readFeed(const Json& feed, const std::string& at, Machine& m)
@@ -96,6 +134,8 @@ Machine readMachine(const Json& root)
     if (const Json* spindle = optionalMember(root, "spindle", where)) {
         m.spindleMinRpm = optionalNumber(*spindle, "minRpm", where + ".spindle", 0);
         m.spindleMaxRpm = optionalNumber(*spindle, "maxRpm", where + ".spindle", 0);
+        if (optionalMember(*spindle, "rampSeconds", where + ".spindle"))
+            m.spindleRampSeconds = positive(*spindle, "rampSeconds", where + ".spindle", "a time");
     }
     if (const Json* changer = optionalMember(root, "toolChanger", where))
         readToolChanger(*changer, where + ".toolChanger", m);
@@ -116,6 +156,7 @@ Machine readMachine(const Json& root)
             throw JsonFieldError{where + ".kinematics: a kinematic chain needs format version 2"};
         m.kinematics = detail::readKinematicChain(*chain, where + ".kinematics", m);
     }
+    applyMotionDefaults(m);
     return m;
 }
 

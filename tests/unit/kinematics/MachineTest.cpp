@@ -307,3 +307,67 @@ TEST(Machine, FiveAxisMachinesFromTheReferences)
         EXPECT_EQ(m->kinematics.joints[1].axis, e.second) << e.id;
     }
 }
+
+// The motion plan's limits (issue 14): what a file gives, the stated defaults where it gives none.
+TEST(Machine, MotionLimitsFromTheFileOrTheStatedDefaults)
+{
+    auto m = kinematics::parseMachine(
+        withAxis(R"({"name": "C", "type": "rotary", "endless": true, "maxVelocity": 7200, "maxAcceleration": 900})"),
+        "m.json");
+    ASSERT_TRUE(m.ok()) << m.error().toString();
+    const kinematics::Axis* x = m->axis("X");
+    EXPECT_FALSE(x->velocityFromFile);
+    EXPECT_DOUBLE_EQ(x->maxVelocity, toolpath::kDefaultRapidMmPerMin);  // no feed.rapid either
+    EXPECT_DOUBLE_EQ(x->maxAcceleration, kinematics::kDefaultLinearAccelerationMmPerS2);
+    const kinematics::Axis* c = m->axis("C");
+    EXPECT_TRUE(c->velocityFromFile && c->accelerationFromFile);
+    EXPECT_DOUBLE_EQ(c->maxVelocity, 7200);
+    EXPECT_DOUBLE_EQ(c->maxAcceleration, 900);
+    EXPECT_DOUBLE_EQ(m->toolChangeSeconds, kinematics::kDefaultToolChangeSeconds);
+    EXPECT_DOUBLE_EQ(m->spindleRampSeconds, kinematics::kDefaultSpindleRampSeconds);
+
+    std::string timed = withAxis(R"({"name": "B", "type": "rotary", "min": 0, "max": 9, "maxRpm": 15})");
+    timed.insert(timed.rfind('}'), R"(, "feed": {"rapid": 24000}, "toolChanger": {"changeSeconds": 3.5},
+        "spindle": {"maxRpm": 12000, "rampSeconds": 1.25})");
+    auto t = kinematics::parseMachine(timed, "m.json");
+    ASSERT_TRUE(t.ok()) << t.error().toString();
+    EXPECT_DOUBLE_EQ(t->axis("X")->maxVelocity, 24000);       // the rapid rate
+    EXPECT_DOUBLE_EQ(t->axis("B")->maxVelocity, 15 * 360.0);  // maxRpm in deg/min
+    EXPECT_DOUBLE_EQ(t->axis("B")->maxAcceleration, kinematics::kDefaultRotaryAccelerationDegPerS2);
+    EXPECT_DOUBLE_EQ(t->toolChangeSeconds, 3.5);
+    EXPECT_DOUBLE_EQ(t->spindleRampSeconds, 1.25);
+
+    std::string manual = kMinimal;
+    manual.insert(manual.rfind('}'), R"(, "toolChanger": {"manual": true})");
+    EXPECT_DOUBLE_EQ(kinematics::parseMachine(manual, "m.json")->toolChangeSeconds,
+                     kinematics::kDefaultManualToolChangeSeconds);
+}
+
+TEST(Machine, ShippedMachinesCarryTheirRapidAsAxisVelocity)
+{
+    auto kovosvit = kinematics::findMachine("kovosvit-mcu700-vt5x", kinematics::defaultMachineDirs());
+    ASSERT_TRUE(kovosvit.ok()) << kovosvit.error().toString();
+    for (const char* name : {"X", "Y", "Z"}) {
+        EXPECT_TRUE(kovosvit->axis(name)->velocityFromFile) << name;
+        EXPECT_DOUBLE_EQ(kovosvit->axis(name)->maxVelocity, 60000) << name;  // seed 003 Tab. 4.1
+    }
+    EXPECT_FALSE(kovosvit->axis("A")->velocityFromFile);
+    EXPECT_DOUBLE_EQ(kovosvit->axis("A")->maxVelocity, kinematics::kDefaultRotaryDegPerMin);
+}
+
+TEST(Machine, BadMotionLimitsGiveFileNamedErrors)
+{
+    EXPECT_EQ(messageOf(withAxis(R"({"name": "W", "type": "linear", "min": 0, "max": 9, "maxVelocity": 0})")),
+              "m.json: machine.axes[1].maxVelocity: expected a speed above 0");
+    EXPECT_EQ(messageOf(withAxis(R"({"name": "W", "type": "linear", "min": 0, "max": 9, "maxAcceleration": -1})")),
+              "m.json: machine.axes[1].maxAcceleration: expected an acceleration above 0");
+    EXPECT_EQ(
+        messageOf(withAxis(R"({"name": "B", "type": "rotary", "min": 0, "max": 9, "maxRpm": 5, "maxVelocity": 9})")),
+        "m.json: machine.axes[1]: maxRpm and maxVelocity both give the axis' speed (keep one)");
+    std::string changer = kMinimal;
+    changer.insert(changer.rfind('}'), R"(, "toolChanger": {"changeSeconds": 0})");
+    EXPECT_EQ(messageOf(changer), "m.json: machine.toolChanger.changeSeconds: expected a time above 0");
+    std::string spindle = kMinimal;
+    spindle.insert(spindle.rfind('}'), R"(, "spindle": {"rampSeconds": "slow"})");
+    EXPECT_NE(messageOf(spindle).find("m.json: machine.spindle.rampSeconds"), std::string::npos);
+}

@@ -1,0 +1,86 @@
+#include "sim/MachineAxes.h"
+
+#include <cmath>
+#include <limits>
+
+namespace camwb::sim {
+
+namespace {
+
+bool rotaryOf(const toolpath::RotaryAxes& r, const std::string& axis, double& deg)
+{
+    if (axis == "A" && r.has(toolpath::RotaryAxes::kA))
+        deg = r.aDeg;
+    else if (axis == "B" && r.has(toolpath::RotaryAxes::kB))
+        deg = r.bDeg;
+    else if (axis == "C" && r.has(toolpath::RotaryAxes::kC))
+        deg = r.cDeg;
+    else
+        return false;
+    return true;
+}
+
+// `deg` moved by whole turns to lie nearest `near`: an endless C goes the short way from where it is.
+double nearestTurn(double deg, double near) { return deg + 360.0 * std::round((near - deg) / 360.0); }
+
+}  // namespace
+
+kinematics::ToolPose toolAt(const Move& move, double u)
+{
+    kinematics::ToolPose pose;
+    pose.tip = move.from + (move.to - move.from) * u;
+    const Vec3 axis = move.fromAxis * (1 - u) + move.toAxis * u;
+    // Opposite ends have no even turn between them; keep the start's axis rather than invent one.
+    pose.axis = axis.length() > 1e-12 ? axis.normalized() : move.fromAxis;
+    return pose;
+}
+
+bool knownRotaries(const kinematics::KinematicChain& chain, const Move& move, bool end,
+                   std::array<double, 2>& rotaryDeg)
+{
+    if (!chain.fiveAxis())
+        return false;
+    const toolpath::RotaryAxes& r = end ? move.toMachine : move.fromMachine;
+    for (int j = 0; j < 2; ++j)
+        if (!rotaryOf(r, chain.joints[j].axis, rotaryDeg[j]))
+            return false;
+    return true;
+}
+
+kinematics::MachinePose machinePoseAt(const kinematics::KinematicChain& chain, const Move& move, double u,
+                                      const std::array<double, 2>& previousRotaryDeg, double toolLengthMm)
+{
+    const kinematics::ToolPose tool = toolAt(move, u);
+    kinematics::MachinePose pose;
+    if (!chain.fiveAxis()) {
+        pose.linear = kinematics::linearAxesFor(chain, tool.tip, {0, 0}, toolLengthMm);
+        return pose;
+    }
+    std::array<double, 2> a{}, b{};
+    if (knownRotaries(chain, move, false, a) && knownRotaries(chain, move, true, b)) {
+        for (int j = 0; j < 2; ++j)
+            pose.rotaryDeg[j] = a[j] + (b[j] - a[j]) * u;
+        pose.linear = kinematics::linearAxesFor(chain, tool.tip, pose.rotaryDeg, toolLengthMm);
+        return pose;
+    }
+    const auto solutions = kinematics::inverseKinematics(chain, tool, previousRotaryDeg, toolLengthMm);
+    if (solutions.empty()) {  // the chain cannot point the tool so: stay put rather than invent
+        pose.rotaryDeg = previousRotaryDeg;
+        pose.linear = kinematics::linearAxesFor(chain, tool.tip, pose.rotaryDeg, toolLengthMm);
+        return pose;
+    }
+    double best = std::numeric_limits<double>::infinity();
+    for (const auto& s : solutions) {
+        std::array<double, 2> deg{nearestTurn(s.pose.rotaryDeg[0], previousRotaryDeg[0]),
+                                  nearestTurn(s.pose.rotaryDeg[1], previousRotaryDeg[1])};
+        const double d = std::abs(deg[0] - previousRotaryDeg[0]) + std::abs(deg[1] - previousRotaryDeg[1]);
+        if (d < best) {
+            best = d;
+            pose.rotaryDeg = deg;
+        }
+    }
+    pose.linear = kinematics::linearAxesFor(chain, tool.tip, pose.rotaryDeg, toolLengthMm);
+    return pose;
+}
+
+}  // namespace camwb::sim

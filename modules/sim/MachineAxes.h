@@ -1,0 +1,31 @@
+// Where the machine's axes are along a simulated move: the tip and tool axis in the workpiece
+// frame at a fraction of the move, and the machine pose behind them through the machine's chain.
+// The motion plan (axis speed limits), the samples and the measured-trace overlay share it, so
+// there is one way a move becomes machine axes.
+#pragma once
+
+#include "kinematics/KinematicChain.h"
+#include "sim/Moves.h"
+
+#include <array>
+
+namespace camwb::sim {
+
+// The tool at fraction `u` (0..1) of `move`: the tip straight from `from` to `to`, the axis
+// turned evenly between the ends (normalised linear interpolation; a control's TCP interpolation
+// of the axis vector is of the same kind, it differs in how the angle is spread, not in the path).
+kinematics::ToolPose toolAt(const Move& move, double u);
+
+// The machine pose of `move` at fraction `u`. Rotary angles: interpolated between the move's
+// known machine positions (what the program gave, as a control interpolates programmed angles),
+// else from the inverse kinematics, the solution nearest `previousRotaryDeg` (C unwrapped to the
+// nearest turn). A three-axis chain gives the linear axes only (rotary 0).
+kinematics::MachinePose machinePoseAt(const kinematics::KinematicChain& chain, const Move& move, double u,
+                                      const std::array<double, 2>& previousRotaryDeg, double toolLengthMm);
+
+// The move's known rotary angles at its start (`end` false) or end, in chain order, when the
+// move carries both; false when it does not.
+bool knownRotaries(const kinematics::KinematicChain& chain, const Move& move, bool end,
+                   std::array<double, 2>& rotaryDeg);
+
+}  // namespace camwb::sim

@@ -1,0 +1,298 @@
+#include "sim/MotionPlan.h"
+
+#include "sim/MachineAxes.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+// The look-ahead, and why it is honest: every move gets a trapezoid (constant acceleration up to
+// a cruise speed, constant deceleration), the speed at each junction is capped by (1) both moves'
+// cruise speeds, (2) a per-axis velocity step at the corner no larger than the axis' acceleration
+// over one interpolation cycle (PlanOptions::cornerStepSeconds), and (3) what a backward pass and a
+// forward pass over the whole program allow, so that every move can brake to the next junction and
+// none is entered faster than the previous one could accelerate to. Nothing leaves a move faster
+// than it can stop by the end of the program. What it ignores: jerk (real profiles are S-shaped,
+// so short moves take a little longer), the control's smoothing filters and tolerance-based corner
+// blending (which pass corners faster than rule 2), and the curvature term of the axis
+// accelerations inside a five-axis move (the axis limits use the axes' rates at the move's quarter
+// points). Its cycle time is therefore a plan a control could follow, not a prediction of one.
+
+namespace camwb::sim {
+
+namespace {
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
+constexpr int kAxes = 5;  // X Y Z and the chain's two rotaries
+using AxisVector = std::array<double, kAxes>;
+
+struct AxisLimits {
+    AxisVector velocity{};      // per second
+    AxisVector acceleration{};  // per second squared
+    int count = 3;
+};
+
+AxisLimits axisLimits(const kinematics::Machine& machine)
+{
+    AxisLimits limits;
+    auto fill = [&](int k, const std::string& name, bool rotary) {
+        const kinematics::Axis* a = machine.axis(name);
+        const double fallbackVelocity =
+            rotary ? kinematics::kDefaultRotaryDegPerMin : kinematics::estimateRapidMmPerMin(&machine);
+        limits.velocity[k] = (a != nullptr && a->maxVelocity > 0 ? a->maxVelocity : fallbackVelocity) / 60.0;
+        limits.acceleration[k] = a != nullptr && a->maxAcceleration > 0 ? a->maxAcceleration
+                                 : rotary                               ? kinematics::kDefaultRotaryAccelerationDegPerS2
+                                                                        : kinematics::kDefaultLinearAccelerationMmPerS2;
+    };
+    fill(0, "X", false);
+    fill(1, "Y", false);
+    fill(2, "Z", false);
+    if (machine.kinematics.fiveAxis()) {
+        limits.count = 5;
+        fill(3, machine.kinematics.joints[0].axis, true);
+        fill(4, machine.kinematics.joints[1].axis, true);
+    }
+    return limits;
+}
+
+AxisVector axesOf(const kinematics::MachinePose& pose)
+{
+    return {pose.linear.x, pose.linear.y, pose.linear.z, pose.rotaryDeg[0], pose.rotaryDeg[1]};
+}
+
+// A move's geometry on the machine: its parameter length and the axes' rates along it (axis
+// units per parameter unit) at its start and end, and the speed and acceleration caps they set.
+struct MoveGeometry {
+    double length = 0;
+    bool rotationOnly = false;
+    AxisVector startRate{}, endRate{};
+    double velocityCap = kInf;
+    double accelerationCap = kInf;
+};
+
+class GeometryWalker {
+public:
+    GeometryWalker(const MoveList& list, const kinematics::Machine& machine) :
+        list_(list),
+        chain_(machine.kinematics),
+        limits_(axisLimits(machine))
+    {
+    }
+    const AxisLimits& limits() const { return limits_; }
+
+    MoveGeometry measure(const Move& move)
+    {
+        MoveGeometry g;
+        if (!move.moves() || !move.positionKnown)
+            return g;
+        const toolpath::Tool* tool = list_.tool(move.tool);
+        const double toolLength = tool != nullptr ? tool->lengthMm : 0;
+        // A three-axis chain maps the tip linearly: one piece. A five-axis move is looked at in
+        // quarters, so a rotary axis that turns fast in the middle still caps the speed.
+        const int pieces = chain_.fiveAxis() ? 4 : 1;
+        std::array<AxisVector, 5> q{};
+        for (int p = 0; p <= pieces; ++p) {
+            const auto pose = machinePoseAt(chain_, move, double(p) / pieces, previous_, toolLength);
+            q[p] = axesOf(pose);
+            previous_ = pose.rotaryDeg;
+        }
+        g.length = move.lengthMm();
+        if (g.length < 1e-9) {
+            g.length = 0;
+            for (int k = 3; k < limits_.count; ++k)
+                g.length = std::max(g.length, std::abs(q[pieces][k] - q[0][k]));
+            g.rotationOnly = g.length > 1e-9;
+            if (!g.rotationOnly)
+                return MoveGeometry{};
+        }
+        const double pieceLength = g.length / pieces;
+        for (int p = 0; p < pieces; ++p) {
+            AxisVector rate{};
+            for (int k = 0; k < limits_.count; ++k) {
+                rate[k] = (q[p + 1][k] - q[p][k]) / pieceLength;
+                if (std::abs(rate[k]) > 1e-12) {
+                    g.velocityCap = std::min(g.velocityCap, limits_.velocity[k] / std::abs(rate[k]));
+                    g.accelerationCap = std::min(g.accelerationCap, limits_.acceleration[k] / std::abs(rate[k]));
+                }
+            }
+            if (p == 0)
+                g.startRate = rate;
+            if (p == pieces - 1)
+                g.endRate = rate;
+        }
+        return g;
+    }
+
+private:
+    const MoveList& list_;
+    const kinematics::KinematicChain& chain_;
+    AxisLimits limits_;
+    std::array<double, 2> previous_{0, 0};
+};
+
+double programmedSpeed(const Move& move, const MoveGeometry& g, const kinematics::Machine& machine, bool& fixedTime)
+{
+    fixedTime = false;
+    if (move.kind == MoveKind::Rapid)  // a rotation in place at rapid: as fast as the axes go
+        return g.rotationOnly ? kInf : kinematics::estimateRapidMmPerMin(&machine) / 60.0;
+    if (move.minutes > 0) {
+        fixedTime = true;
+        return g.length / (move.minutes * 60.0);
+    }
+    // A rotation in place reads the feed as degrees per minute, as controls do for such a block.
+    return move.feedMmPerMin / 60.0;
+}
+
+// The corner cap of rule 2: each axis' velocity step v·|rateAfter − rateBefore| at most a·t.
+double cornerCap(const MoveGeometry& before, const MoveGeometry& after, const AxisLimits& limits, double stepSeconds)
+{
+    if (before.rotationOnly != after.rotationOnly)
+        return 0;  // speeds in different units: the control stops between them
+    double cap = kInf;
+    for (int k = 0; k < limits.count; ++k) {
+        const double jump = std::abs(after.startRate[k] - before.endRate[k]);
+        if (jump > 1e-9)
+            cap = std::min(cap, limits.acceleration[k] * stepSeconds / jump);
+    }
+    return cap;
+}
+
+double spindleRamp(double fromRpm, double toRpm, const kinematics::Machine& machine)
+{
+    if (fromRpm == toRpm)
+        return 0;
+    const double full =
+        machine.spindleMaxRpm > 0 ? machine.spindleMaxRpm : std::max(std::abs(fromRpm), std::abs(toRpm));
+    return machine.spindleRampSeconds * std::min(1.0, std::abs(toRpm - fromRpm) / full);
+}
+
+// The trapezoid (or triangle) from entry to exit within `length`; fills cruise and the time.
+void shapeProfile(PlannedMove& m)
+{
+    if (m.length <= 0 || m.cruiseSpeed <= 0) {
+        m.moveSeconds = 0;
+        return;
+    }
+    if (m.fixedTime) {
+        m.moveSeconds = m.length / m.cruiseSpeed;
+        return;
+    }
+    const double a = m.acceleration, v0 = m.entrySpeed, v1 = m.exitSpeed;
+    const double peak = std::sqrt(a * m.length + 0.5 * (v0 * v0 + v1 * v1));
+    m.cruiseSpeed = std::min(m.cruiseSpeed, peak);
+    const double vc = m.cruiseSpeed;
+    const double up = (vc * vc - v0 * v0) / (2 * a), down = (vc * vc - v1 * v1) / (2 * a);
+    const double level = std::max(0.0, m.length - up - down);
+    m.moveSeconds = (vc - v0) / a + (vc - v1) / a + level / vc;
+}
+
+}  // namespace
+
+double PlannedMove::distanceAt(double t) const
+{
+    if (moveSeconds <= 0 || t >= moveSeconds)
+        return length;
+    if (t <= 0)
+        return 0;
+    if (fixedTime)
+        return cruiseSpeed * t;
+    const double a = acceleration, v0 = entrySpeed, vc = cruiseSpeed;
+    const double t1 = (vc - v0) / a, d1 = (vc * vc - v0 * v0) / (2 * a);
+    const double d3 = (vc * vc - exitSpeed * exitSpeed) / (2 * a);
+    const double t2 = std::max(0.0, length - d1 - d3) / vc;
+    if (t < t1)
+        return v0 * t + 0.5 * a * t * t;
+    if (t < t1 + t2)
+        return d1 + vc * (t - t1);
+    const double td = t - t1 - t2;
+    return std::min(length, d1 + vc * t2 + vc * td - 0.5 * a * td * td);
+}
+
+MotionPlan planMotion(const MoveList& list, const kinematics::Machine& machine, const PlanOptions& options)
+{
+    MotionPlan plan;
+    const std::size_t n = list.moves.size();
+    plan.moves.resize(n);
+    std::vector<double> junction(n + 1, 0.0);  // speed at the start of move i (junction[n]: the end)
+    GeometryWalker walker(list, machine);
+    MoveGeometry previous;
+    bool previousFlows = false;  // the previous move ends in motion another can continue
+    double rpm = 0;
+    for (std::size_t i = 0; i < n; ++i) {
+        const Move& move = list.moves[i];
+        PlannedMove& p = plan.moves[i];
+        p.pauseSeconds = move.kind == MoveKind::Dwell        ? move.seconds
+                         : move.kind == MoveKind::ToolChange ? machine.toolChangeSeconds
+                                                             : 0;
+        p.pauseSeconds += spindleRamp(rpm, move.spindleRpm, machine);
+        rpm = move.spindleRpm;
+        const MoveGeometry g = walker.measure(move);
+        p.length = g.length;
+        p.rotationOnly = g.rotationOnly;
+        const double speed = move.moves() ? programmedSpeed(move, g, machine, p.fixedTime) : 0;
+        p.cruiseSpeed = std::min(speed, g.velocityCap);
+        p.acceleration = std::isfinite(g.accelerationCap) ? g.accelerationCap : 0;
+        if (move.moves() && p.length > 0 && !(p.cruiseSpeed > 0))
+            ++plan.movesWithoutSpeed;
+        const bool flows = p.length > 0 && p.cruiseSpeed > 0 && p.acceleration > 0;
+        if (flows && previousFlows && p.pauseSeconds == 0) {
+            const PlannedMove& before = plan.moves[i - 1];
+            junction[i] = std::min({before.cruiseSpeed, p.cruiseSpeed,
+                                    cornerCap(previous, g, walker.limits(), options.cornerStepSeconds)});
+        }
+        previous = g;
+        previousFlows = flows;
+    }
+    // Backward: every move can brake to the junction after it. Forward: no move is entered faster
+    // than the one before could accelerate to. A fixed-time move runs at one speed, so it passes
+    // its junctions on unchanged (both already at most its speed).
+    for (std::size_t i = n; i-- > 0;) {
+        const PlannedMove& p = plan.moves[i];
+        if (!p.fixedTime)
+            junction[i] =
+                std::min(junction[i], std::sqrt(junction[i + 1] * junction[i + 1] + 2 * p.acceleration * p.length));
+    }
+    for (std::size_t i = 0; i < n; ++i) {
+        const PlannedMove& p = plan.moves[i];
+        if (!p.fixedTime)
+            junction[i + 1] =
+                std::min(junction[i + 1], std::sqrt(junction[i] * junction[i] + 2 * p.acceleration * p.length));
+    }
+    double t = 0;
+    for (std::size_t i = 0; i < n; ++i) {
+        PlannedMove& p = plan.moves[i];
+        p.start = t;
+        p.entrySpeed = junction[i];
+        p.exitSpeed = junction[i + 1];
+        shapeProfile(p);
+        t = p.end();
+    }
+    plan.totalSeconds = t;
+    return plan;
+}
+
+CycleTimes cycleTimes(const MoveList& list, const MotionPlan& plan, const toolpath::ProgramStats& simple)
+{
+    CycleTimes c;
+    auto add = [&](TimeSplit& s, std::size_t i) {
+        const PlannedMove& p = plan.moves[i];
+        (list.moves[i].kind == MoveKind::Rapid ? s.rapidSeconds : s.feedSeconds) += p.moveSeconds;
+        s.pauseSeconds += p.pauseSeconds;
+    };
+    for (std::size_t i = 0; i < list.moves.size() && i < plan.moves.size(); ++i) {
+        add(c.planned, i);
+        add(c.plannedPerTool[list.moves[i].tool], i);
+    }
+    for (const MoveSection& section : list.sections) {
+        SectionTime s{section.name, section.tool, {}};
+        for (std::size_t i = section.firstMove; i < section.endMove && i < plan.moves.size(); ++i)
+            add(s.planned, i);
+        c.sections.push_back(s);
+    }
+    c.simpleSeconds = simple.totals.totalSeconds();
+    for (const toolpath::ToolStats& t : simple.tools)
+        c.simplePerTool[t.toolNumber] += t.totals.totalSeconds();
+    return c;
+}
+
+}  // namespace camwb::sim

@@ -1,0 +1,244 @@
+// Motion in time: exact trapezoid and triangle times, corner and continuation junction speeds,
+// axis velocity limits, dwell/tool change/spindle ramp times, inverse time, cycle-time totals,
+// and the fixed-step samples on a three- and a five-axis machine.
+#include "sim/MotionPlan.h"
+#include "sim/MotionSamples.h"
+
+#include "toolpath/ProgramStats.h"
+#include "toolpath/Toolpath.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+using namespace camwb;
+using sim::Move;
+using sim::MoveKind;
+
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+// A three-axis machine: X Y Z at 6000 mm/min (100 mm/s) and 1000 mm/s², no spindle ramp unless
+// the spindle changes (tests keep it at 0).
+kinematics::Machine machine3(double xMaxMmPerMin = 6000)
+{
+    kinematics::Machine m;
+    for (const char* name : {"X", "Y", "Z"}) {
+        kinematics::Axis a;
+        a.name = name;
+        a.maxVelocity = name[0] == 'X' ? xMaxMmPerMin : 6000;
+        a.maxAcceleration = 1000;
+        m.axes.push_back(a);
+    }
+    m.rapidMmPerMin = 6000;
+    m.toolChangeSeconds = 7;
+    m.spindleRampSeconds = 2;
+    m.spindleMaxRpm = 12000;
+    return m;
+}
+
+Move feed(base::Vec3 from, base::Vec3 to, double mmPerMin)
+{
+    Move m;
+    m.from = from;
+    m.to = to;
+    m.feedMmPerMin = mmPerMin;
+    return m;
+}
+
+Move pause(MoveKind kind, base::Vec3 at, double seconds = 0)
+{
+    Move m;
+    m.kind = kind;
+    m.from = m.to = at;
+    m.seconds = seconds;
+    return m;
+}
+
+}  // namespace
+
+TEST(MotionPlan, OneMoveIsAnExactTrapezoid)
+{
+    sim::MoveList list;
+    list.moves.push_back(feed({0, 0, 0}, {100, 0, 0}, 600));  // 10 mm/s, a = 1000 mm/s²
+    const sim::MotionPlan plan = sim::planMotion(list, machine3());
+    const sim::PlannedMove& p = plan.moves[0];
+    EXPECT_DOUBLE_EQ(p.entrySpeed, 0);
+    EXPECT_DOUBLE_EQ(p.cruiseSpeed, 10);
+    EXPECT_DOUBLE_EQ(p.exitSpeed, 0);
+    EXPECT_NEAR(p.moveSeconds, 100.0 / 10 + 10.0 / 1000, 1e-12);  // s/v + v/a
+    EXPECT_NEAR(plan.totalSeconds, 10.01, 1e-12);
+    EXPECT_NEAR(p.distanceAt(0.005), 0.5 * 1000 * 0.005 * 0.005, 1e-12);  // still accelerating
+    EXPECT_NEAR(p.distanceAt(5), 10 * 5 - 0.05, 1e-9);                    // cruising
+}
+
+TEST(MotionPlan, AShortMoveIsATriangle)
+{
+    sim::MoveList list;
+    list.moves.push_back(feed({0, 0, 0}, {0.01, 0, 0}, 600));
+    const sim::PlannedMove p = sim::planMotion(list, machine3()).moves[0];
+    EXPECT_NEAR(p.cruiseSpeed, std::sqrt(1000 * 0.01), 1e-12);  // never reaches 10 mm/s
+    EXPECT_NEAR(p.moveSeconds, 2 * std::sqrt(0.01 / 1000), 1e-12);
+}
+
+TEST(MotionPlan, ARightAngleCornerSlowsToTheJunctionSpeed)
+{
+    sim::MoveList list;
+    list.moves.push_back(feed({0, 0, 0}, {100, 0, 0}, 6000));
+    list.moves.push_back(feed({100, 0, 0}, {100, 100, 0}, 6000));
+    const sim::MotionPlan plan = sim::planMotion(list, machine3());
+    // X stops and Y starts at the corner: each axis' step v·1 may be a·t = 1000 · 0.003.
+    EXPECT_NEAR(plan.moves[0].exitSpeed, 3, 1e-12);
+    EXPECT_NEAR(plan.moves[1].entrySpeed, 3, 1e-12);
+    const double one = 100.0 / 100 + 100.0 / (2 * 1000) + (100.0 - 3) / 1000 - (100.0 * 100 - 9) / (2 * 1000 * 100);
+    EXPECT_NEAR(plan.moves[0].moveSeconds, one, 1e-12);
+}
+
+TEST(MotionPlan, AStraightContinuationDoesNotSlow)
+{
+    sim::MoveList split;
+    split.moves.push_back(feed({0, 0, 0}, {50, 0, 0}, 6000));
+    split.moves.push_back(feed({50, 0, 0}, {100, 0, 0}, 6000));
+    const sim::MotionPlan plan = sim::planMotion(split, machine3());
+    EXPECT_DOUBLE_EQ(plan.moves[0].exitSpeed, 100);
+    EXPECT_NEAR(plan.totalSeconds, 100.0 / 100 + 100.0 / 1000, 1e-12);  // as one 100 mm move
+}
+
+TEST(MotionPlan, AnAxisVelocityLimitLowersADiagonalsPathSpeed)
+{
+    sim::MoveList list;
+    list.moves.push_back(feed({0, 0, 0}, {100, 100, 0}, 6000));
+    const sim::PlannedMove p = sim::planMotion(list, machine3(600)).moves[0];  // X at most 10 mm/s
+    EXPECT_NEAR(p.cruiseSpeed, 10 * std::sqrt(2.0), 1e-9);                     // X moves 1/√2 mm per mm of path
+    // A rapid on the same machine: the same cap, not the rapid rate.
+    list.moves[0].kind = MoveKind::Rapid;
+    EXPECT_NEAR(sim::planMotion(list, machine3(600)).moves[0].cruiseSpeed, 10 * std::sqrt(2.0), 1e-9);
+}
+
+TEST(MotionPlan, DwellToolChangeAndSpindleRampAddExactlyTheirTime)
+{
+    sim::MoveList list;
+    list.moves.push_back(feed({0, 0, 0}, {100, 0, 0}, 600));
+    list.moves.push_back(pause(MoveKind::Dwell, {100, 0, 0}, 2.5));
+    list.moves.push_back(pause(MoveKind::ToolChange, {100, 0, 0}));
+    list.moves.push_back(pause(MoveKind::Stop, {100, 0, 0}));
+    list.moves.push_back(feed({100, 0, 0}, {200, 0, 0}, 600));
+    const sim::MotionPlan plan = sim::planMotion(list, machine3());
+    EXPECT_NEAR(plan.totalSeconds, 2 * 10.01 + 2.5 + 7, 1e-9);  // the stop counts 0
+    EXPECT_DOUBLE_EQ(plan.moves[0].exitSpeed, 0);               // a pause stands the tool
+
+    list.moves[4].spindleRpm = 6000;  // half the spindle's range: half the ramp
+    EXPECT_NEAR(sim::planMotion(list, machine3()).totalSeconds, 2 * 10.01 + 2.5 + 7 + 1, 1e-9);
+}
+
+TEST(MotionPlan, InverseTimeMovesTakeTheirProgrammedTime)
+{
+    sim::MoveList list;
+    list.moves.push_back(feed({0, 0, 0}, {10, 0, 0}, 0));
+    list.moves[0].minutes = 0.05;
+    list.moves.push_back(feed({10, 0, 0}, {10, 20, 0}, 0));
+    list.moves[1].minutes = 0.1;
+    const sim::MotionPlan plan = sim::planMotion(list, machine3());
+    EXPECT_DOUBLE_EQ(plan.moves[0].moveSeconds, 3);
+    EXPECT_DOUBLE_EQ(plan.moves[1].moveSeconds, 6);
+    EXPECT_DOUBLE_EQ(plan.totalSeconds, 9);
+}
+
+TEST(MotionPlan, CycleTimesPerToolAndSectionAddUpToTheTotal)
+{
+    toolpath::Toolpath p;
+    toolpath::Tool t1, t2;
+    t1.number = 1;
+    t2.number = 2;
+    p.add(toolpath::SectionBegin{"Face", "profile", 1});
+    p.add(toolpath::ToolChange{t1});
+    p.add(toolpath::Rapid{{0, 0, 10}});
+    p.add(toolpath::Linear{{0, 0, 0}, 300});
+    p.add(toolpath::Linear{{40, 0, 0}, 1200});
+    p.add(toolpath::Dwell{1.5});
+    p.add(toolpath::SectionEnd{});
+    p.add(toolpath::SectionBegin{"Pocket", "pocket", 2});
+    p.add(toolpath::ToolChange{t2});
+    p.add(toolpath::Rapid{{40, 30, 10}});
+    p.add(toolpath::Linear{{40, 30, -2}, 200});
+    p.add(toolpath::Linear{{0, 30, -2}, 800});
+    p.add(toolpath::SectionEnd{});
+    const sim::MoveList list = sim::buildMoves(p);
+    const kinematics::Machine m = machine3();
+    const sim::MotionPlan plan = sim::planMotion(list, m);
+    toolpath::StatsOptions so;
+    so.rapidMmPerMin = m.rapidMmPerMin;
+    const sim::CycleTimes c = sim::cycleTimes(list, plan, toolpath::programStats(p, so));
+    EXPECT_NEAR(c.planned.totalSeconds(), plan.totalSeconds, 1e-9);
+    double perTool = 0, perSection = 0;
+    for (const auto& [tool, split] : c.plannedPerTool)
+        perTool += split.totalSeconds();
+    for (const auto& s : c.sections)
+        perSection += s.planned.totalSeconds();
+    EXPECT_NEAR(perTool, plan.totalSeconds, 1e-9);
+    EXPECT_NEAR(perSection, plan.totalSeconds, 1e-9);
+    ASSERT_EQ(c.sections.size(), 2u);
+    EXPECT_EQ(c.sections[1].name, "Pocket");
+    EXPECT_GE(c.planned.pauseSeconds, 1.5 + 2 * 7);  // the dwell and two tool changes
+    // The simple estimate knows no acceleration and no tool change: it is shorter.
+    EXPECT_GT(c.simpleSeconds, 0);
+    EXPECT_LT(c.simpleSeconds, c.planned.totalSeconds());
+    EXPECT_EQ(c.simplePerTool.size(), 2u);
+}
+
+TEST(MotionSamples, FixedStepSamplesFollowThePlan)
+{
+    sim::MoveList list;
+    list.moves.push_back(feed({0, 0, 0}, {10, 0, 0}, 600));
+    const kinematics::Machine m = machine3();
+    const sim::MotionPlan plan = sim::planMotion(list, m);
+    const auto samples = sim::sampleMotion(list, plan, m);
+    ASSERT_EQ(samples.size(), std::size_t(std::floor(plan.totalSeconds / 0.003 + 1e-9)) + 1);
+    EXPECT_NEAR(samples[1].at.time, 0.003, 1e-15);
+    EXPECT_NEAR(samples[1].at.linear.x, 0.5 * 1000 * 0.003 * 0.003, 1e-12);
+    EXPECT_NEAR(samples[1].feedMmPerMin, 1000 * 0.003 * 60, 1e-9);
+    EXPECT_NEAR(samples[200].feedMmPerMin, 600, 1e-9);
+    EXPECT_NEAR(samples.back().at.tip.x, plan.moves[0].distanceAt(samples.back().at.time), 1e-12);
+    std::size_t streamed = 0;
+    sim::sampleMotion(list, plan, m, [&](const sim::MotionSample&) { return ++streamed < 10; });
+    EXPECT_EQ(streamed, 10u);  // the callback stopped it
+}
+
+// Seed 003's machine (A/C on the table, eq. 9 with r = P = 0): C turns 90° under a tip held at
+// X 50 of the workpiece. The tip stands on the workpiece, so the move is a rotation in place at
+// C's default 60 deg/s and 360 deg/s²; the machine's X and Y carry the tip round the table.
+TEST(MotionSamples, FiveAxisRotationInPlaceMovesTheLinearAxesThroughTheChain)
+{
+    kinematics::Machine m = machine3();
+    m.kinematics.type = kinematics::ChainType::TableTable;
+    m.kinematics.joints = {{"A", true, {-1, 0, 0}, {}}, {"C", true, {0, 0, -1}, {}}};
+    for (const char* name : {"A", "C"}) {
+        kinematics::Axis a;
+        a.name = name;
+        a.rotary = true;
+        a.maxVelocity = kinematics::kDefaultRotaryDegPerMin;
+        a.maxAcceleration = kinematics::kDefaultRotaryAccelerationDegPerS2;
+        m.axes.push_back(a);
+    }
+    Move turn = feed({50, 0, 0}, {50, 0, 0}, 0);
+    turn.kind = MoveKind::Rapid;
+    turn.fiveAxis = true;
+    turn.fromMachine.known = turn.toMachine.known = toolpath::RotaryAxes::kA | toolpath::RotaryAxes::kC;
+    turn.toMachine.cDeg = 90;
+    sim::MoveList list;
+    list.moves.push_back(turn);
+    const sim::MotionPlan plan = sim::planMotion(list, m);
+    EXPECT_TRUE(plan.moves[0].rotationOnly);
+    EXPECT_NEAR(plan.totalSeconds, 90.0 / 60 + 60.0 / 360, 1e-9);
+    const auto samples = sim::sampleMotion(list, plan, m);
+    const auto& last = samples.back().at;
+    for (const auto& s : samples) {
+        const auto tool = kinematics::forwardKinematics(m.kinematics, {s.at.linear, s.at.rotaryDeg});
+        ASSERT_NEAR(base::distance(tool.tip, {50, 0, 0}), 0, 1e-9);  // the tip never leaves its point
+        ASSERT_NEAR(std::hypot(s.at.linear.x, s.at.linear.y), 50, 1e-9);
+    }
+    EXPECT_NEAR(last.rotaryDeg[1], 90 * plan.moves[0].distanceAt(last.time) / 90, 1e-9);
+    EXPECT_NEAR(std::atan2(samples[300].at.linear.y, samples[300].at.linear.x) * 180 / kPi,
+                -samples[300].at.rotaryDeg[1], 1e-6);  // C about -Z: the point turns clockwise
+}

@@ -1,0 +1,148 @@
+// Seed 003's path analysis: the thesis' sample vector, reversals by the §6 item 11 rule (sine,
+// ramp, stop-and-continue, stop between opposite directions), central differences, the tip feed
+// relative to the workpiece on a case worked by hand, and the rotation per unit of tip travel N.
+#include "sim/PathAnalysis.h"
+
+#include "kinematics/KinematicChain.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+using namespace camwb;
+
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+constexpr double kStep = 0.003;
+
+// A trace of `n` samples 3 ms apart with `fill(sample, t)` setting what each holds.
+template <class F> sim::Trace traceOf(std::size_t n, F fill)
+{
+    sim::Trace trace(n);
+    for (std::size_t k = 0; k < n; ++k) {
+        trace[k].time = double(k) * kStep;
+        fill(trace[k], trace[k].time);
+    }
+    return trace;
+}
+
+std::vector<double> reversalTimes(const sim::Trace& trace, const std::vector<std::size_t>& at)
+{
+    std::vector<double> times;
+    for (std::size_t k : at)
+        times.push_back(trace[k].time);
+    return times;
+}
+
+}  // namespace
+
+TEST(PathAnalysis, TheThesisSampleVector)
+{
+    const double x[] = {2.302, 2.311, 2.319, 2.323};
+    const sim::Trace trace = traceOf(4, [&](sim::TraceSample& s, double t) { s.linear.x = x[std::lround(t / kStep)]; });
+    const sim::PathAnalysis a = sim::analysePath(trace, false);
+    const auto& v = a.linearVelocity[0];
+    ASSERT_EQ(v.value.size(), 3u);
+    EXPECT_EQ(v.firstSample, 1u);  // aligned to the later sample (t2)
+    EXPECT_NEAR(v.value[0], 3.000, 1e-3);
+    EXPECT_NEAR(v.value[1], 2.6667, 1e-3);
+    EXPECT_NEAR(v.value[2], 1.3333, 1e-3);
+    const auto& acc = a.linearAcceleration[0];
+    ASSERT_EQ(acc.value.size(), 2u);
+    EXPECT_EQ(acc.firstSample, 2u);
+    EXPECT_NEAR(acc.value[0], -111.11, 1e-2);
+    EXPECT_NEAR(acc.value[1], -444.44, 1e-2);
+    EXPECT_NEAR(a.pathSpeed.value[0], 3.000, 1e-3);  // only X moves
+}
+
+TEST(PathAnalysis, ASineOnCReversesExactlyFourTimes)
+{
+    // C = 10°·sin(πt) over 4 s: C turns back at 0.5, 1.5, 2.5 and 3.5 s.
+    const sim::Trace trace = traceOf(std::size_t(4 / kStep) + 1,
+                                     [](sim::TraceSample& s, double t) { s.rotaryDeg[1] = 10 * std::sin(kPi * t); });
+    const sim::PathAnalysis a = sim::analysePath(trace, true);
+    const std::vector<double> at = reversalTimes(trace, a.reversals[4]);
+    ASSERT_EQ(at.size(), 4u);
+    for (int i = 0; i < 4; ++i)
+        EXPECT_NEAR(at[i], 0.5 + i, kStep) << i;
+    EXPECT_TRUE(a.reversals[3].empty());                                    // A stands
+    EXPECT_NEAR(a.rotaryVelocity[1].value[0], 10 * kPi / 180 * kPi, 1e-3);  // rad/s: ω = 10°·π·cos(0)
+}
+
+TEST(PathAnalysis, ARampAndAStopAndContinueAreNoReversals)
+{
+    const sim::Trace ramp = traceOf(1000, [](sim::TraceSample& s, double t) { s.rotaryDeg[0] = 20 * t; });
+    EXPECT_TRUE(sim::analysePath(ramp, true).reversals[3].empty());
+    // X moves at 10 mm/s, stands 0.3 s, then moves on the same way: the stop is no reversal.
+    auto stopAndGo = [](double t) { return t < 1 ? 10 * t : t < 1.3 ? 10 : 10 + 10 * (t - 1.3); };
+    const sim::Trace go = traceOf(1000, [&](sim::TraceSample& s, double t) { s.linear.x = stopAndGo(t); });
+    EXPECT_TRUE(sim::analysePath(go, false).reversals[0].empty());
+    // Stopping and going back counts once, at the last sample of the stop, which the axis leaves
+    // in the new direction.
+    auto stopAndBack = [](double t) { return t < 1 ? 10 * t : t < 1.3 ? 10 : 10 - 10 * (t - 1.3); };
+    const sim::Trace back = traceOf(1000, [&](sim::TraceSample& s, double t) { s.linear.x = stopAndBack(t); });
+    const auto at = sim::analysePath(back, false).reversals[0];
+    ASSERT_EQ(at.size(), 1u);
+    EXPECT_NEAR(back[at[0]].time, 1.3, kStep + 1e-12);
+    EXPECT_NEAR(back[at[0]].linear.x, 10, 1e-12);
+    EXPECT_LT(back[at[0] + 1].linear.x, 10);
+}
+
+TEST(PathAnalysis, NoiseInsideTheDeadBandIsNoReversal)
+{
+    // A standing axis dithering by one 0.1 µm step: ±0.033 mm/s, inside the 0.05 mm/s dead band.
+    const sim::Trace dither =
+        traceOf(200, [](sim::TraceSample& s, double t) { s.linear.y = 5 + (std::lround(t / kStep) % 2) * 1e-4; });
+    EXPECT_TRUE(sim::analysePath(dither, false).reversals[1].empty());
+    sim::AnalysisOptions tight;
+    tight.reversal.linearDeadBand = 0.01;
+    EXPECT_EQ(sim::analysePath(dither, false, tight).reversals[1].size(), 198u);  // every step turns
+}
+
+TEST(PathAnalysis, CentralDifferencesAreExactOnAParabola)
+{
+    const sim::Trace trace = traceOf(10, [](sim::TraceSample& s, double t) { s.linear.z = t * t; });
+    sim::AnalysisOptions central;
+    central.difference = sim::Difference::Central;
+    const auto v = sim::analysePath(trace, false, central).linearVelocity[2];
+    ASSERT_EQ(v.value.size(), 9u);
+    for (std::size_t k = 0; k + 1 < v.value.size(); ++k)
+        EXPECT_NEAR(v.value[k], 2 * trace[v.firstSample + k].time, 1e-12);  // d(t²)/dt at the sample
+    const auto backward = sim::analysePath(trace, false).linearVelocity[2];
+    EXPECT_NEAR(backward.value[0], kStep, 1e-12);  // (0.003² − 0) / 0.003: half a step late
+}
+
+// Worked by hand: seed 003's A/C table (r = P = 0), linear axes standing at X 50, C turning at
+// 10°/s. Eq. 14 sees no motion at all, yet the tip cuts the workpiece at ω·r = 10·π/180·50 =
+// 8.7266 mm/s (the table turns under it: v_C = ω_C·r_v2 with r_v2 = 50, eq. 24).
+TEST(PathAnalysis, TipFeedRelativeToTheWorkpieceOnATurningTable)
+{
+    kinematics::KinematicChain chain;
+    chain.type = kinematics::ChainType::TableTable;
+    chain.joints = {{"A", true, {-1, 0, 0}, {}}, {"C", true, {0, 0, -1}, {}}};
+    const sim::Trace trace = traceOf(300, [&](sim::TraceSample& s, double t) {
+        s.linear = {50, 0, 0};
+        s.rotaryDeg = {0, 10 * t};
+        s.tip = kinematics::forwardKinematics(chain, {s.linear, s.rotaryDeg}).tip;
+    });
+    const sim::PathAnalysis a = sim::analysePath(trace, true);
+    EXPECT_NEAR(a.pathSpeed.value[100], 0, 1e-12);
+    EXPECT_NEAR(a.tipFeed.value[100], 10 * kPi / 180 * 50, 1e-4);
+    EXPECT_NEAR(a.rotaryVelocity[1].value[100], 10 * kPi / 180, 1e-9);
+}
+
+TEST(PathAnalysis, RotationPerUnitOfTipTravel)
+{
+    // 0.5 mm of tip travel and 0.1° of C per sample; A stands. Then a rotation in place.
+    const sim::Trace trace = traceOf(20, [](sim::TraceSample& s, double t) {
+        const double k = std::round(t / kStep);
+        s.tip = {std::min(k, 10.0) * 0.5, 0, 0};
+        s.rotaryDeg = {0, 0.1 * k};
+    });
+    const sim::PathAnalysis a = sim::analysePath(trace, true);
+    EXPECT_NEAR(a.rotationPerTravel[1].value[0], 0.1 * kPi / 180 / 0.5, 1e-12);
+    EXPECT_NEAR(a.rotationPerTravel[0].value[0], 0, 1e-12);
+    EXPECT_NEAR(a.rotationPerTravelCombined.value[0], 0.1 * kPi / 180 / 0.5, 1e-12);
+    EXPECT_TRUE(std::isnan(a.rotationPerTravel[1].value[15]));  // the tip stands: N undefined
+}

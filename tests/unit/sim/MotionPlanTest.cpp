@@ -205,10 +205,9 @@ TEST(MotionSamples, FixedStepSamplesFollowThePlan)
     EXPECT_EQ(streamed, 10u);  // the callback stopped it
 }
 
-// Seed 003's machine (A/C on the table, eq. 9 with r = P = 0): C turns 90° under a tip held at
-// X 50 of the workpiece. The tip stands on the workpiece, so the move is a rotation in place at
-// C's default 60 deg/s and 360 deg/s²; the machine's X and Y carry the tip round the table.
-TEST(MotionSamples, FiveAxisRotationInPlaceMovesTheLinearAxesThroughTheChain)
+// Seed 003's machine (A/C on the table, eq. 9 with r = P = 0) with the default rotary limits:
+// 60 deg/s and 360 deg/s².
+kinematics::Machine seed003Machine()
 {
     kinematics::Machine m = machine3();
     m.kinematics.type = kinematics::ChainType::TableTable;
@@ -221,6 +220,46 @@ TEST(MotionSamples, FiveAxisRotationInPlaceMovesTheLinearAxesThroughTheChain)
         a.maxAcceleration = kinematics::kDefaultRotaryAccelerationDegPerS2;
         m.axes.push_back(a);
     }
+    return m;
+}
+
+// A tool-tip move along X (on A's axis, so the linear axes only move X) while A tilts 30° in
+// 10 mm: A turns 3° per mm, so its 60 deg/s caps the tip at 20 mm/s and its 360 deg/s² the
+// acceleration at 120 mm/s², far below the programmed 100 mm/s and X's 1000 mm/s².
+TEST(MotionPlan, ARotaryAxisLimitCapsAFiveAxisMovesTipSpeed)
+{
+    const kinematics::Machine m = seed003Machine();
+    Move tilt = feed({0, 0, 0}, {10, 0, 0}, 6000);
+    tilt.fiveAxis = true;
+    tilt.toAxis = kinematics::forwardKinematics(m.kinematics, {{}, {30, 0}}).axis;
+    sim::MoveList list;
+    list.moves.push_back(tilt);
+    // The program's own angles (A 0 → 30, C 0): A turns evenly.
+    list.moves[0].fromMachine.known = list.moves[0].toMachine.known =
+        toolpath::RotaryAxes::kA | toolpath::RotaryAxes::kC;
+    list.moves[0].toMachine.aDeg = 30;
+    sim::PlannedMove p = sim::planMotion(list, m).moves[0];
+    EXPECT_NEAR(p.cruiseSpeed, 20, 1e-9);
+    EXPECT_NEAR(p.acceleration, 120, 1e-9);
+    // Angles from the inverse kinematics of the evenly interpolated axis vector: the tilt is
+    // atan2(u·sin 30°, 1 − u + u·cos 30°) at fraction u, fastest in the middle quarters, so the
+    // cap is 60 deg/s over the steepest quarter's degrees per mm.
+    list.moves[0].fromMachine.known = list.moves[0].toMachine.known = 0;
+    p = sim::planMotion(list, m).moves[0];
+    auto tiltAt = [](double u) { return std::atan2(u * std::sin(kPi / 6), 1 - u + u * std::cos(kPi / 6)) * 180 / kPi; };
+    double steepest = 0;
+    for (int q = 0; q < 4; ++q)
+        steepest = std::max(steepest, (tiltAt((q + 1) / 4.0) - tiltAt(q / 4.0)) / 2.5);
+    EXPECT_NEAR(p.cruiseSpeed, 60 / steepest, 1e-6);
+    EXPECT_LT(p.cruiseSpeed, 20);
+    EXPECT_NEAR(p.acceleration, 360 / steepest, 1e-6);
+}
+
+// C turns 90° under a tip held at X 50 of the workpiece. The tip stands on the workpiece, so the move is a rotation in
+// place at C's default 60 deg/s and 360 deg/s²; the machine's X and Y carry the tip round the table.
+TEST(MotionSamples, FiveAxisRotationInPlaceMovesTheLinearAxesThroughTheChain)
+{
+    const kinematics::Machine m = seed003Machine();
     Move turn = feed({50, 0, 0}, {50, 0, 0}, 0);
     turn.kind = MoveKind::Rapid;
     turn.fiveAxis = true;

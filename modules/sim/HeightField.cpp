@@ -1,0 +1,267 @@
+#include "sim/HeightField.h"
+
+#include "sim/MeshRays.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace camwb::sim {
+
+namespace {
+
+constexpr double kEps = 1e-6;  // heights closer than this are the same (float storage)
+
+bool vertical(const Vec3& axis) { return std::abs(axis.x) < 1e-9 && std::abs(axis.y) < 1e-9 && axis.z > 0; }
+
+// The x range over which the line y = yRow meets the capsule of radius r around the segment
+// a-b (xy): the hull of the two end discs and the band between them (the capsule is convex).
+bool capsuleRow(base::Vec2 a, base::Vec2 b, double r, double yRow, double& xlo, double& xhi)
+{
+    xlo = 1e300, xhi = -1e300;
+    for (const base::Vec2 c : {a, b}) {
+        const double dy = yRow - c.y;
+        if (std::abs(dy) <= r) {
+            const double half = std::sqrt(r * r - dy * dy);
+            xlo = std::min(xlo, c.x - half), xhi = std::max(xhi, c.x + half);
+        }
+    }
+    const base::Vec2 n = (b - a).normalized().leftNormal() * r;
+    const base::Vec2 quad[4] = {a + n, b + n, b - n, a - n};
+    for (int k = 0; k < 4; ++k) {
+        const base::Vec2 p = quad[k], q = quad[(k + 1) % 4];
+        if ((p.y - yRow) * (q.y - yRow) > 0 || p.y == q.y)
+            continue;
+        const double x = p.x + (yRow - p.y) / (q.y - p.y) * (q.x - p.x);
+        xlo = std::min(xlo, x), xhi = std::max(xhi, x);
+    }
+    return xlo <= xhi;
+}
+
+// The minimum of a convex function on [lo, hi] by golden section (one evaluation per step).
+template <class F> double convexMin(F f, double lo, double hi)
+{
+    constexpr double g = 0.6180339887498949;
+    double m1 = hi - g * (hi - lo), m2 = lo + g * (hi - lo);
+    double f1 = f(m1), f2 = f(m2);
+    for (int i = 0; i < 40; ++i) {
+        if (f1 < f2) {
+            hi = m2, m2 = m1, f2 = f1, m1 = hi - g * (hi - lo), f1 = f(m1);
+        } else {
+            lo = m1, m1 = m2, f1 = f2, m2 = lo + g * (hi - lo), f2 = f(m2);
+        }
+    }
+    return std::min({f1, f2, f(lo), f(hi)});
+}
+
+}  // namespace
+
+void ColumnRect::add(int i, int j)
+{
+    if (empty()) {
+        *this = {i, j, i, j};
+        return;
+    }
+    i0 = std::min(i0, i), j0 = std::min(j0, j), i1 = std::max(i1, i), j1 = std::max(j1, j);
+}
+
+void ColumnRect::add(const ColumnRect& r)
+{
+    if (!r.empty())
+        add(r.i0, r.j0), add(r.i1, r.j1);
+}
+
+HeightField::HeightField(const base::Box3& box, double resolutionMm) : box_(box)
+{
+    const double res = std::max(resolutionMm, 1e-3);
+    nx_ = std::max(2, int(std::ceil((box.max.x - box.min.x) / res - 1e-9)));
+    ny_ = std::max(2, int(std::ceil((box.max.y - box.min.y) / res - 1e-9)));
+    dx_ = (box.max.x - box.min.x) / nx_;
+    dy_ = (box.max.y - box.min.y) / ny_;
+    top_.assign(std::size_t(nx_) * ny_, float(box.max.z));
+    bottom_.assign(top_.size(), float(box.min.z));
+    lastCut_.assign(top_.size(), -1);
+}
+
+std::unique_ptr<HeightField> HeightField::fromMesh(const TriangleMesh& blank, double resolutionMm)
+{
+    auto field = std::make_unique<HeightField>(blank.bounds(), resolutionMm);
+    HeightField& f = *field;
+    std::fill(f.top_.begin(), f.top_.end(), kNone);
+    std::fill(f.bottom_.begin(), f.bottom_.end(), -kNone);
+    const RayGrid grid{2, f.box_.min.x, f.box_.min.y, f.dx_, f.dy_, f.nx_, f.ny_};
+    forEachCrossing(blank, grid, [&](int i, int j, double z, bool) {
+        const std::size_t k = f.index(i, j);
+        f.top_[k] = std::max(f.top_[k], float(z));
+        f.bottom_[k] = std::min(f.bottom_[k], float(z));
+    });
+    for (std::size_t k = 0; k < f.top_.size(); ++k)
+        if (f.top_[k] == kNone)  // no blank over this column: an empty column at the blank's foot
+            f.top_[k] = f.bottom_[k] = float(f.box_.min.z);
+    return field;
+}
+
+double HeightField::volumeMm3() const
+{
+    double sum = 0;
+    for (std::size_t k = 0; k < top_.size(); ++k)
+        sum += double(top_[k]) - bottom_[k];
+    return sum * dx_ * dy_;
+}
+
+ColumnRect HeightField::takeChanged() { return std::exchange(changed_, ColumnRect{}); }
+
+CutResult HeightField::cut(const Move& move, std::size_t moveIndex, const ToolShape& tool)
+{
+    CutResult result;
+    if (!move.moves() || !move.positionKnown || tool.radiusMm() <= 0)
+        return result;
+    if (vertical(move.fromAxis) && vertical(move.toAxis))
+        cutVertical(move, moveIndex, tool, result);
+    else
+        cutTilted(move, moveIndex, tool, result);
+    return result;
+}
+
+void HeightField::lower(int i, int j, double height, std::size_t moveIndex, CutResult& result)
+{
+    const std::size_t k = index(i, j);
+    const double newTop = std::max(height, double(bottom_[k]));
+    if (newTop >= top_[k] - kEps)
+        return;
+    result.removedMm3 += (top_[k] - newTop) * dx_ * dy_;
+    top_[k] = float(newTop);
+    lastCut_[k] = std::int32_t(moveIndex);
+    changed_.add(i, j);
+    if (!design_.empty() && newTop < design_[k] - tolerance_) {
+        const double depth = depthInDesign(i, j, newTop);
+        if (depth > tolerance_ && depth > result.gougeMm) {
+            result.gougeMm = depth;
+            result.gougeAt = {columnX(i), columnY(j), newTop};
+        }
+    }
+}
+
+// The vertical tool's sweep. At a column q the cutter's lower surface over the move is
+// f(t) = z(t) + L(d(t)) with d(t) = |q - c(t)| the distance to the tool's centre: d is convex
+// in t (the norm of an affine function), L is convex and non-decreasing for every profile here
+// (ToolShape::lowerSurface), so L(d(t)) is convex and f, adding the linear z(t), is convex too.
+// Its minimum over the t where the column is under the cutter is exact for level moves (the
+// nearest point of the segment) and for flat tools (an end of the interval, f being linear),
+// and found by golden section otherwise. The shank's and the holder's lowest points over the
+// move are at an end of their intervals (their bottoms are flat).
+void HeightField::cutVertical(const Move& move, std::size_t moveIndex, const ToolShape& tool, CutResult& result)
+{
+    const base::Vec2 c0 = move.from.xy(), c1 = move.to.xy(), v = c1 - c0;
+    const double z0 = move.from.z, dz = move.to.z - move.from.z, vv = v.dot(v);
+    const double r = tool.radiusMm(), rs = tool.shankRadiusMm(), rh = tool.holderRadiusMm();
+    const double reach = tool.boundingRadiusMm();
+    const bool flat = tool.flatBottomed(), hasShank = tool.stickOutMm() > tool.fluteLengthMm();
+    const bool plunge = -dz > std::sqrt(vv);  // descends along the axis more than it travels aside
+    const double axisBand = 0.75 * std::max(dx_, dy_);
+    auto zAt = [&](double t) { return z0 + t * dz; };
+    // The parameters [ta, tb] where the column lies within `radius` of the centre.
+    auto under = [&](double e2, double tStar, double radius, double& ta, double& tb) {
+        if (e2 > radius * radius)
+            return false;
+        if (vv < 1e-18) {
+            ta = 0, tb = 1;
+            return true;
+        }
+        const double half = std::sqrt((radius * radius - e2) / vv);
+        ta = std::max(0.0, tStar - half), tb = std::min(1.0, tStar + half);
+        return ta <= tb;
+    };
+    const int j0 = std::max(0, int(std::floor((std::min(c0.y, c1.y) - reach - box_.min.y) / dy_)));
+    const int j1 = std::min(ny_ - 1, int(std::floor((std::max(c0.y, c1.y) + reach - box_.min.y) / dy_)));
+    for (int j = j0; j <= j1; ++j) {
+        const double y = columnY(j);
+        double xlo, xhi;
+        if (!capsuleRow(c0, c1, reach, y, xlo, xhi))
+            continue;
+        const int i0 = std::max(0, int(std::floor((xlo - box_.min.x) / dx_ - 0.5)));
+        const int i1 = std::min(nx_ - 1, int(std::ceil((xhi - box_.min.x) / dx_ - 0.5)));
+        for (int i = i0; i <= i1; ++i) {
+            const base::Vec2 w = base::Vec2{columnX(i), y} - c0;
+            const double tStar = vv < 1e-18 ? 0 : w.dot(v) / vv;
+            const double e2 = std::max(0.0, w.dot(w) - tStar * tStar * vv);  // squared distance to the line
+            const double oldTop = top_[index(i, j)];
+            double ta, tb;
+            if (hasShank && under(e2, tStar, rs, ta, tb)) {
+                const double depth = oldTop - (std::min(zAt(ta), zAt(tb)) + tool.fluteLengthMm());
+                if (depth > result.holderInterferenceMm)
+                    result.holderInterferenceMm = depth, result.holderAt = {columnX(i), y, oldTop};
+            }
+            if (rh > 0 && under(e2, tStar, rh, ta, tb)) {
+                const double depth = oldTop - (std::min(zAt(ta), zAt(tb)) + tool.stickOutMm());
+                if (depth > result.holderInterferenceMm)
+                    result.holderInterferenceMm = depth, result.holderAt = {columnX(i), y, oldTop};
+            }
+            if (!under(e2, tStar, r, ta, tb))
+                continue;
+            double f;
+            if (std::abs(dz) < 1e-12) {
+                const double tc = std::clamp(tStar, ta, tb);
+                f = z0 + tool.lowerSurface(std::sqrt(e2 + (tc - tStar) * (tc - tStar) * vv));
+            } else if (vv < 1e-18) {
+                f = std::min(z0, z0 + dz) + tool.lowerSurface(std::sqrt(w.dot(w)));
+            } else if (flat) {
+                f = std::min(zAt(ta), zAt(tb));
+            } else {
+                f = convexMin(
+                    [&](double t) {
+                        return zAt(t) + tool.lowerSurface(std::min(r, std::sqrt(e2 + (t - tStar) * (t - tStar) * vv)));
+                    },
+                    ta, tb);
+            }
+            const double before = result.removedMm3;
+            lower(i, j, f, moveIndex, result);
+            if (plunge && result.removedMm3 > before && e2 <= axisBand * axisBand)
+                result.removedOnAxis = true;
+        }
+    }
+}
+
+// A tilted tool in a z-map: poses at most half a cell apart, each lowering the columns to the
+// cutter's lowest point over their centres (what a z-map can hold of a tilted cut; undercuts
+// need the dexel stock).
+void HeightField::cutTilted(const Move& move, std::size_t moveIndex, const ToolShape& tool, CutResult& result)
+{
+    const double step = 0.5 * std::min(dx_, dy_);
+    const double turn = move.fromAxis.angleTo(move.toAxis) * tool.totalLengthMm();
+    const int poses = std::max(1, int(std::ceil(std::max(move.lengthMm(), turn) / step)));
+    const double reach = tool.boundingRadiusMm(), below = box_.min.z - 1;
+    const Vec3 up{0, 0, 1};
+    for (int p = 0; p <= poses; ++p) {
+        const double t = double(p) / poses;
+        const Vec3 tip = move.from + (move.to - move.from) * t;
+        const Vec3 axis = (move.fromAxis * (1 - t) + move.toAxis * t).normalized();
+        const Vec3 end = tip + axis * tool.totalLengthMm();
+        const int i0 = std::max(0, int(std::floor((std::min(tip.x, end.x) - reach - box_.min.x) / dx_)));
+        const int i1 = std::min(nx_ - 1, int(std::floor((std::max(tip.x, end.x) + reach - box_.min.x) / dx_)));
+        const int j0 = std::max(0, int(std::floor((std::min(tip.y, end.y) - reach - box_.min.y) / dy_)));
+        const int j1 = std::min(ny_ - 1, int(std::floor((std::max(tip.y, end.y) + reach - box_.min.y) / dy_)));
+        for (int j = j0; j <= j1; ++j)
+            for (int i = i0; i <= i1; ++i) {
+                const Vec3 origin{columnX(i), columnY(j), below};
+                const double oldTop = top_[index(i, j)];
+                for (ToolPart part : {ToolPart::Shank, ToolPart::Holder}) {
+                    const LineSpan s = tool.intersect(part, tip, axis, origin, up);
+                    if (!s.empty() && oldTop - (below + s.s0) > result.holderInterferenceMm)
+                        result.holderInterferenceMm = oldTop - (below + s.s0),
+                        result.holderAt = {origin.x, origin.y, oldTop};
+                }
+                const LineSpan s = tool.intersect(ToolPart::Cutter, tip, axis, origin, up);
+                if (s.empty())
+                    continue;
+                const double before = result.removedMm3;
+                lower(i, j, below + s.s0, moveIndex, result);
+                const Vec3 off = origin - tip;
+                const double radial = (off - axis * off.dot(axis)).length();
+                if (result.removedMm3 > before && radial <= 0.75 * std::max(dx_, dy_) &&
+                    -(move.to - move.from).dot(axis) > (move.to - move.from).length() * std::sqrt(0.5))
+                    result.removedOnAxis = true;
+            }
+    }
+}
+
+}  // namespace camwb::sim

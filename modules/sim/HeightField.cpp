@@ -80,6 +80,23 @@ HeightField::HeightField(const base::Box3& box, double resolutionMm) : box_(box)
     top_.assign(std::size_t(nx_) * ny_, float(box.max.z));
     bottom_.assign(top_.size(), float(box.min.z));
     lastCut_.assign(top_.size(), -1);
+    tilesX_ = (nx_ + kTile - 1) / kTile;
+    tilesY_ = (ny_ + kTile - 1) / kTile;
+    tileTop_.assign(std::size_t(tilesX_) * tilesY_, float(box.max.z));
+}
+
+void HeightField::refreshTiles(const ColumnRect& rect)
+{
+    if (rect.empty())
+        return;
+    for (int tj = rect.j0 / kTile; tj <= rect.j1 / kTile; ++tj)
+        for (int ti = rect.i0 / kTile; ti <= rect.i1 / kTile; ++ti) {
+            float high = -std::numeric_limits<float>::infinity();
+            for (int j = tj * kTile; j < std::min(ny_, (tj + 1) * kTile); ++j)
+                for (int i = ti * kTile; i < std::min(nx_, (ti + 1) * kTile); ++i)
+                    high = std::max(high, top_[index(i, j)]);
+            tileTop_[std::size_t(tj) * tilesX_ + ti] = high;
+        }
 }
 
 std::unique_ptr<HeightField> HeightField::fromMesh(const TriangleMesh& blank, double resolutionMm)
@@ -97,6 +114,7 @@ std::unique_ptr<HeightField> HeightField::fromMesh(const TriangleMesh& blank, do
     for (std::size_t k = 0; k < f.top_.size(); ++k)
         if (f.top_[k] == kNone)  // no blank over this column: an empty column at the blank's foot
             f.top_[k] = f.bottom_[k] = float(f.box_.min.z);
+    f.refreshTiles({0, 0, f.nx_ - 1, f.ny_ - 1});
     return field;
 }
 
@@ -115,10 +133,15 @@ CutResult HeightField::cut(const Move& move, std::size_t moveIndex, const ToolSh
     CutResult result;
     if (!move.moves() || !move.positionKnown || tool.radiusMm() <= 0)
         return result;
-    if (vertical(move.fromAxis) && vertical(move.toAxis))
+    cutNow_ = {};
+    if (vertical(move.fromAxis) && vertical(move.toAxis)) {
+        checkHolder(move, tool, result);
         cutVertical(move, moveIndex, tool, result);
-    else
+    } else {
         cutTilted(move, moveIndex, tool, result);
+    }
+    refreshTiles(cutNow_);
+    changed_.add(cutNow_);
     return result;
 }
 
@@ -131,7 +154,7 @@ void HeightField::lower(int i, int j, double height, std::size_t moveIndex, CutR
     result.removedMm3 += (top_[k] - newTop) * dx_ * dy_;
     top_[k] = float(newTop);
     lastCut_[k] = std::int32_t(moveIndex);
-    changed_.add(i, j);
+    cutNow_.add(i, j);
     if (!design_.empty() && newTop < design_[k] - tolerance_) {
         const double depth = depthInDesign(i, j, newTop);
         if (depth > tolerance_ && depth > result.gougeMm) {
@@ -153,9 +176,8 @@ void HeightField::cutVertical(const Move& move, std::size_t moveIndex, const Too
 {
     const base::Vec2 c0 = move.from.xy(), c1 = move.to.xy(), v = c1 - c0;
     const double z0 = move.from.z, dz = move.to.z - move.from.z, vv = v.dot(v);
-    const double r = tool.radiusMm(), rs = tool.shankRadiusMm(), rh = tool.holderRadiusMm();
-    const double reach = tool.boundingRadiusMm();
-    const bool flat = tool.flatBottomed(), hasShank = tool.stickOutMm() > tool.fluteLengthMm();
+    const double r = tool.radiusMm(), reach = r;
+    const bool flat = tool.flatBottomed();
     const bool plunge = -dz > std::sqrt(vv);  // descends along the axis more than it travels aside
     const double axisBand = 0.75 * std::max(dx_, dy_);
     auto zAt = [&](double t) { return z0 + t * dz; };
@@ -184,18 +206,7 @@ void HeightField::cutVertical(const Move& move, std::size_t moveIndex, const Too
             const base::Vec2 w = base::Vec2{columnX(i), y} - c0;
             const double tStar = vv < 1e-18 ? 0 : w.dot(v) / vv;
             const double e2 = std::max(0.0, w.dot(w) - tStar * tStar * vv);  // squared distance to the line
-            const double oldTop = top_[index(i, j)];
             double ta, tb;
-            if (hasShank && under(e2, tStar, rs, ta, tb)) {
-                const double depth = oldTop - (std::min(zAt(ta), zAt(tb)) + tool.fluteLengthMm());
-                if (depth > result.holderInterferenceMm)
-                    result.holderInterferenceMm = depth, result.holderAt = {columnX(i), y, oldTop};
-            }
-            if (rh > 0 && under(e2, tStar, rh, ta, tb)) {
-                const double depth = oldTop - (std::min(zAt(ta), zAt(tb)) + tool.stickOutMm());
-                if (depth > result.holderInterferenceMm)
-                    result.holderInterferenceMm = depth, result.holderAt = {columnX(i), y, oldTop};
-            }
             if (!under(e2, tStar, r, ta, tb))
                 continue;
             double f;
@@ -218,6 +229,57 @@ void HeightField::cutVertical(const Move& move, std::size_t moveIndex, const Too
             if (plunge && result.removedMm3 > before && e2 <= axisBand * axisBand)
                 result.removedOnAxis = true;
         }
+    }
+}
+
+// The shank (from the flute length up) and the holder (from the stick-out up) have flat bottoms:
+// over the move a column within their radius meets them lowest at an end of the parameter
+// interval where it is under them; stock above that is how deep they reach. Only tiles whose
+// highest top rises above the lowest such bottom are looked at.
+void HeightField::checkHolder(const Move& move, const ToolShape& tool, CutResult& result) const
+{
+    const base::Vec2 c0 = move.from.xy(), v = move.to.xy() - c0;
+    const double vv = v.dot(v), z0 = move.from.z, dz = move.to.z - move.from.z, zLow = std::min(z0, z0 + dz);
+    struct Part {
+        double radius, bottom;  // bottom: above the tip
+    };
+    std::vector<Part> parts;
+    if (tool.stickOutMm() > tool.fluteLengthMm())
+        parts.push_back({tool.shankRadiusMm(), tool.fluteLengthMm()});
+    if (tool.holderRadiusMm() > 0)
+        parts.push_back({tool.holderRadiusMm(), tool.stickOutMm()});
+    for (const Part& part : parts) {
+        const double reach = part.radius, lowest = zLow + part.bottom;
+        const int i0 = std::max(0, int(std::floor((std::min(c0.x, c0.x + v.x) - reach - box_.min.x) / dx_)));
+        const int i1 = std::min(nx_ - 1, int(std::floor((std::max(c0.x, c0.x + v.x) + reach - box_.min.x) / dx_)));
+        const int j0 = std::max(0, int(std::floor((std::min(c0.y, c0.y + v.y) - reach - box_.min.y) / dy_)));
+        const int j1 = std::min(ny_ - 1, int(std::floor((std::max(c0.y, c0.y + v.y) + reach - box_.min.y) / dy_)));
+        for (int tj = j0 / kTile; tj <= j1 / kTile && j0 <= j1; ++tj)
+            for (int ti = i0 / kTile; ti <= i1 / kTile && i0 <= i1; ++ti) {
+                if (tileTop(ti, tj) <= lowest + result.holderInterferenceMm)
+                    continue;
+                for (int j = std::max(j0, tj * kTile); j <= std::min(j1, (tj + 1) * kTile - 1); ++j)
+                    for (int i = std::max(i0, ti * kTile); i <= std::min(i1, (ti + 1) * kTile - 1); ++i) {
+                        const double oldTop = top_[index(i, j)];
+                        if (oldTop <= lowest + result.holderInterferenceMm)
+                            continue;
+                        const base::Vec2 w = base::Vec2{columnX(i), columnY(j)} - c0;
+                        const double tStar = vv < 1e-18 ? 0 : w.dot(v) / vv;
+                        const double e2 = std::max(0.0, w.dot(w) - tStar * tStar * vv);
+                        if (e2 > reach * reach)
+                            continue;
+                        double ta = 0, tb = 1;
+                        if (vv >= 1e-18) {
+                            const double half = std::sqrt((reach * reach - e2) / vv);
+                            ta = std::max(0.0, tStar - half), tb = std::min(1.0, tStar + half);
+                            if (ta > tb)
+                                continue;
+                        }
+                        const double depth = oldTop - (std::min(z0 + ta * dz, z0 + tb * dz) + part.bottom);
+                        if (depth > result.holderInterferenceMm)
+                            result.holderInterferenceMm = depth, result.holderAt = {columnX(i), columnY(j), oldTop};
+                    }
+            }
     }
 }
 

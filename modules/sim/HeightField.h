@@ -62,6 +62,13 @@ private:
     void cutTilted(const Move& move, std::size_t moveIndex, const ToolShape& tool, CutResult& result);
     // Lowers column (i, j) to `height`; accounts the removed volume, the gouge and the change.
     void lower(int i, int j, double height, std::size_t moveIndex, CutResult& result);
+    // The shank's and holder's reach into the stock along a vertical move (before it cuts).
+    void checkHolder(const Move& move, const ToolShape& tool, CutResult& result) const;
+    // Tiles of kTile x kTile columns keep an upper bound of their tops, so the wide holder's
+    // check skips the tiles it stays above (nearly all of them, nearly always).
+    static constexpr int kTile = 16;
+    void refreshTiles(const ColumnRect& rect);
+    float tileTop(int ti, int tj) const { return tileTop_[std::size_t(tj) * tilesX_ + ti]; }
     // How deep the point at height z over column (i, j) lies inside the design (> 0), or how far
     // above it (< 0), measured to the nearest column boundary within a capped search.
     double depthInDesign(int i, int j, double z) const;
@@ -74,7 +81,9 @@ private:
     std::vector<float> designNear_;  // the highest design top within the search cap of each column
     std::vector<std::int32_t> lastCut_;
     double tolerance_ = 0;
-    ColumnRect changed_;
+    ColumnRect changed_, cutNow_;
+    int tilesX_ = 0, tilesY_ = 0;
+    std::vector<float> tileTop_;
 };
 
 }  // namespace camwb::sim

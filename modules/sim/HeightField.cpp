@@ -55,15 +55,6 @@ template <class F> double convexMin(F f, double lo, double hi)
 
 }  // namespace
 
-void ColumnRect::add(int i, int j)
-{
-    if (empty()) {
-        *this = {i, j, i, j};
-        return;
-    }
-    i0 = std::min(i0, i), j0 = std::min(j0, j), i1 = std::max(i1, i), j1 = std::max(j1, j);
-}
-
 void ColumnRect::add(const ColumnRect& r)
 {
     if (!r.empty())
@@ -83,6 +74,7 @@ HeightField::HeightField(const base::Box3& box, double resolutionMm) : box_(box)
     tilesX_ = (nx_ + kTile - 1) / kTile;
     tilesY_ = (ny_ + kTile - 1) / kTile;
     tileTop_.assign(std::size_t(tilesX_) * tilesY_, float(box.max.z));
+    tileStale_.assign(tileTop_.size(), 0);
 }
 
 void HeightField::refreshTiles(const ColumnRect& rect)
@@ -90,13 +82,22 @@ void HeightField::refreshTiles(const ColumnRect& rect)
     if (rect.empty())
         return;
     for (int tj = rect.j0 / kTile; tj <= rect.j1 / kTile; ++tj)
-        for (int ti = rect.i0 / kTile; ti <= rect.i1 / kTile; ++ti) {
-            float high = -std::numeric_limits<float>::infinity();
-            for (int j = tj * kTile; j < std::min(ny_, (tj + 1) * kTile); ++j)
-                for (int i = ti * kTile; i < std::min(nx_, (ti + 1) * kTile); ++i)
-                    high = std::max(high, top_[index(i, j)]);
-            tileTop_[std::size_t(tj) * tilesX_ + ti] = high;
-        }
+        for (int ti = rect.i0 / kTile; ti <= rect.i1 / kTile; ++ti)
+            tileStale_[std::size_t(tj) * tilesX_ + ti] = 1;
+}
+
+float HeightField::tileTop(int ti, int tj) const
+{
+    const std::size_t t = std::size_t(tj) * tilesX_ + ti;
+    if (tileStale_[t]) {
+        float high = -std::numeric_limits<float>::infinity();
+        for (int j = tj * kTile; j < std::min(ny_, (tj + 1) * kTile); ++j)
+            for (int i = ti * kTile; i < std::min(nx_, (ti + 1) * kTile); ++i)
+                high = std::max(high, top_[index(i, j)]);
+        tileTop_[t] = high;
+        tileStale_[t] = 0;
+    }
+    return tileTop_[t];
 }
 
 std::unique_ptr<HeightField> HeightField::fromMesh(const TriangleMesh& blank, double resolutionMm)
@@ -142,6 +143,9 @@ CutResult HeightField::cut(const Move& move, std::size_t moveIndex, const ToolSh
     }
     refreshTiles(cutNow_);
     changed_.add(cutNow_);
+    lastEnd_ = move.to;
+    lastRadius_ = tool.radiusMm();
+    lastFlatVertical_ = tool.flatBottomed() && vertical(move.toAxis);
     return result;
 }
 
@@ -195,6 +199,38 @@ void HeightField::cutVertical(const Move& move, std::size_t moveIndex, const Too
     };
     const int j0 = std::max(0, int(std::floor((std::min(c0.y, c1.y) - reach - box_.min.y) / dy_)));
     const int j1 = std::min(ny_ - 1, int(std::floor((std::max(c0.y, c1.y) + reach - box_.min.y) / dy_)));
+    if (flat && std::abs(dz) < 1e-12 && !plunge) {
+        // A flat tool moving level: every column under the capsule goes down to z, so a row is
+        // one span of columns (those whose centres lie in it) and a tight loop over it. When the
+        // last cut left this tool standing at the start, its disc there is already at z or
+        // below: only the columns beyond it are looked at (short arc pieces sweep a crescent).
+        const bool startDone = lastFlatVertical_ && lastRadius_ == r && lastEnd_ == move.from;
+        auto sweep = [&](int j, int i0, int i1) {
+            const float* row = &top_[index(0, j)];
+            for (int i = std::max(0, i0); i <= std::min(nx_ - 1, i1); ++i)
+                if (row[i] > z0 + kEps)
+                    lower(i, j, z0, moveIndex, result);
+        };
+        for (int j = j0; j <= j1; ++j) {
+            double xlo, xhi;
+            const double y = columnY(j);
+            if (!capsuleRow(c0, c1, r, y, xlo, xhi))
+                continue;
+            const int i0 = int(std::ceil((xlo - box_.min.x) / dx_ - 0.5));
+            const int i1 = int(std::floor((xhi - box_.min.x) / dx_ - 0.5));
+            const double dy = y - c0.y;
+            if (!startDone || std::abs(dy) >= r) {
+                sweep(j, i0, i1);
+                continue;
+            }
+            const double half = std::sqrt(r * r - dy * dy);  // the start disc's chord on this row
+            const int s0 = int(std::ceil((c0.x - half - box_.min.x) / dx_ - 0.5));
+            const int s1 = int(std::floor((c0.x + half - box_.min.x) / dx_ - 0.5));
+            sweep(j, i0, std::min(i1, s0 - 1));
+            sweep(j, std::max(i0, s1 + 1), i1);
+        }
+        return;
+    }
     for (int j = j0; j <= j1; ++j) {
         const double y = columnY(j);
         double xlo, xhi;
@@ -202,7 +238,26 @@ void HeightField::cutVertical(const Move& move, std::size_t moveIndex, const Too
             continue;
         const int i0 = std::max(0, int(std::floor((xlo - box_.min.x) / dx_ - 0.5)));
         const int i1 = std::min(nx_ - 1, int(std::ceil((xhi - box_.min.x) / dx_ - 0.5)));
+        // A flat tool ramping: its lowest point over a column is where the column last (going
+        // down) or first (going up) lies under it, so the disc at that end of the move is at that
+        // end's height, without a root per column. Going up from where the last cut left this
+        // tool, that disc is already cut.
+        int k0 = 1, k1 = 0;
+        const bool down = dz < 0;
+        const base::Vec2 disc = down ? c1 : c0;
+        const double discZ = down ? z0 + dz : z0;
+        const bool discDone = !down && lastFlatVertical_ && lastRadius_ == r && lastEnd_ == move.from;
+        if (flat && !plunge && vv >= 1e-18 && std::abs(y - disc.y) < r) {
+            const double half = std::sqrt(r * r - (y - disc.y) * (y - disc.y));
+            k0 = int(std::ceil((disc.x - half - box_.min.x) / dx_ - 0.5));
+            k1 = int(std::floor((disc.x + half - box_.min.x) / dx_ - 0.5));
+        }
         for (int i = i0; i <= i1; ++i) {
+            if (i >= k0 && i <= k1) {
+                if (!discDone && top_[index(i, j)] > discZ + kEps)
+                    lower(i, j, discZ, moveIndex, result);
+                continue;
+            }
             const base::Vec2 w = base::Vec2{columnX(i), y} - c0;
             const double tStar = vv < 1e-18 ? 0 : w.dot(v) / vv;
             const double e2 = std::max(0.0, w.dot(w) - tStar * tStar * vv);  // squared distance to the line
@@ -224,6 +279,8 @@ void HeightField::cutVertical(const Move& move, std::size_t moveIndex, const Too
                     },
                     ta, tb);
             }
+            if (f >= top_[index(i, j)] - kEps)
+                continue;
             const double before = result.removedMm3;
             lower(i, j, f, moveIndex, result);
             if (plunge && result.removedMm3 > before && e2 <= axisBand * axisBand)
@@ -250,6 +307,8 @@ void HeightField::checkHolder(const Move& move, const ToolShape& tool, CutResult
         parts.push_back({tool.holderRadiusMm(), tool.stickOutMm()});
     for (const Part& part : parts) {
         const double reach = part.radius, lowest = zLow + part.bottom;
+        if (lowest >= box_.max.z)  // above the highest the stock ever was (the usual case)
+            continue;
         const int i0 = std::max(0, int(std::floor((std::min(c0.x, c0.x + v.x) - reach - box_.min.x) / dx_)));
         const int i1 = std::min(nx_ - 1, int(std::floor((std::max(c0.x, c0.x + v.x) + reach - box_.min.x) / dx_)));
         const int j0 = std::max(0, int(std::floor((std::min(c0.y, c0.y + v.y) - reach - box_.min.y) / dy_)));

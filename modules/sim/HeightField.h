@@ -7,6 +7,7 @@
 #include "sim/Stock.h"
 #include "sim/ToolShape.h"
 
+#include <algorithm>
 #include <limits>
 
 namespace camwb::sim {
@@ -15,7 +16,14 @@ namespace camwb::sim {
 struct ColumnRect {
     int i0 = 0, j0 = 0, i1 = -1, j1 = -1;
     bool empty() const { return i0 > i1 || j0 > j1; }
-    void add(int i, int j);
+    void add(int i, int j)
+    {
+        if (empty()) {
+            *this = {i, j, i, j};
+            return;
+        }
+        i0 = std::min(i0, i), j0 = std::min(j0, j), i1 = std::max(i1, i), j1 = std::max(j1, j);
+    }
     void add(const ColumnRect& r);
 };
 
@@ -68,7 +76,7 @@ private:
     // check skips the tiles it stays above (nearly all of them, nearly always).
     static constexpr int kTile = 16;
     void refreshTiles(const ColumnRect& rect);
-    float tileTop(int ti, int tj) const { return tileTop_[std::size_t(tj) * tilesX_ + ti]; }
+    float tileTop(int ti, int tj) const;  // brought up to date on demand (cuts only mark tiles)
     // How deep the point at height z over column (i, j) lies inside the design (> 0), or how far
     // above it (< 0), measured to the nearest column boundary within a capped search.
     double depthInDesign(int i, int j, double z) const;
@@ -83,7 +91,13 @@ private:
     double tolerance_ = 0;
     ColumnRect changed_, cutNow_;
     int tilesX_ = 0, tilesY_ = 0;
-    std::vector<float> tileTop_;
+    mutable std::vector<float> tileTop_;
+    mutable std::vector<std::uint8_t> tileStale_;
+    // Where the last cut left the tool: a level flat move starting there finds its start disc
+    // already at its height, so it sweeps only what lies beyond (see cutVertical).
+    Vec3 lastEnd_;
+    double lastRadius_ = -1;
+    bool lastFlatVertical_ = false;
 };
 
 }  // namespace camwb::sim

@@ -110,6 +110,58 @@ TEST(SimHeightField, RampingBallFollowsItsLowestPoint)
     EXPECT_NEAR(topAt(stock, 30.05, 23.05), best, 1e-4);
 }
 
+TEST(SimHeightField, FlatRampCutsToWhereTheColumnLastLiesUnderTheTool)
+{
+    HeightField stock(box({0, 0, 0}, {60, 40, 20}), 0.1);
+    const ToolShape tool(makeTool("flat", 10));
+    stock.cut(makeMove({10.05, 20.05, 20}, {50.05, 20.05, 16}), 0, tool);
+    EXPECT_NEAR(topAt(stock, 50.05, 20.05), 16, 1e-5);
+    // 3 off the path the column leaves the tool when the centre is 4 past it: x = 34.05.
+    EXPECT_NEAR(topAt(stock, 30.05, 23.05), 20 - 4 * (34.05 - 10.05) / 40, 1e-5);
+}
+
+// The shortcuts for a flat tool that continues from where the last cut left it (start disc
+// already cut) must change nothing: the same moves, each after a far-away move that breaks the
+// chain, leave exactly the same tops.
+TEST(SimHeightField, ContinuingMovesLeaveWhatSeparateMovesLeave)
+{
+    const base::Box3 b = box({0, 0, 0}, {40, 30, 10});
+    HeightField chained(b, 0.1), separate(b, 0.1);
+    const ToolShape tool(makeTool("flat", 6));
+    std::vector<Vec3> path{{5, 5, 12}, {5, 5, 8}};
+    for (int k = 0; k < 60; ++k) {  // a helix-like ramp down, then level arc pieces, then up
+        const double a = 0.2 * k;
+        path.push_back({20 + 6 * std::cos(a), 15 + 6 * std::sin(a),
+                        k < 20   ? 8 - 0.1 * k
+                        : k < 45 ? 6
+                                 : 6 + 0.1 * (k - 45)});
+    }
+    const Move away = makeMove({100, 100, 50}, {101, 100, 50}, MoveKind::Rapid);
+    for (std::size_t k = 1; k < path.size(); ++k) {
+        chained.cut(makeMove(path[k - 1], path[k]), k, tool);
+        separate.cut(away, 0, tool);
+        separate.cut(makeMove(path[k - 1], path[k]), k, tool);
+    }
+    for (int j = 0; j < chained.columnsY(); ++j)
+        for (int i = 0; i < chained.columnsX(); ++i)
+            ASSERT_EQ(chained.top(i, j), separate.top(i, j)) << i << ", " << j;
+    EXPECT_LT(chained.volumeMm3(), 40 * 30 * 10 - 100);
+    // A wider tool starting where a narrow one stopped finds its start disc uncut: level and
+    // going up, it must sweep the disc as a separate move does.
+    const ToolShape narrow(makeTool("flat", 2)), wide(makeTool("flat", 8));
+    for (const Vec3& end : {Vec3{30, 15, 6}, Vec3{30, 15, 7}}) {
+        HeightField a(b, 0.1), c(b, 0.1);
+        for (HeightField* s : {&a, &c}) {
+            s->cut(makeMove({10, 15, 12}, {10, 15, 6}), 0, narrow);
+            if (s == &c)
+                s->cut(away, 1, narrow);
+            s->cut(makeMove({10, 15, 6}, end), 2, wide);
+        }
+        EXPECT_NEAR(a.volumeMm3(), c.volumeMm3(), 1e-6) << "end z " << end.z;
+        EXPECT_NEAR(topAt(a, 7.05, 15.05), 6, 1e-5) << "end z " << end.z;  // behind the start, in the disc
+    }
+}
+
 TEST(SimHeightField, PocketRemovesAreaTimesDepth)
 {
     // A 30 x 20 pocket 4 deep with a 6 mm flat tool: zig-zag at stepover 3 inside the tool-centre

@@ -13,29 +13,47 @@ constexpr double kEps = 1e-6;  // heights closer than this are the same (float s
 
 bool vertical(const Vec3& axis) { return std::abs(axis.x) < 1e-9 && std::abs(axis.y) < 1e-9 && axis.z > 0; }
 
-// The x range over which the line y = yRow meets the capsule of radius r around the segment
-// a-b (xy): the hull of the two end discs and the band between them (the capsule is convex).
-bool capsuleRow(base::Vec2 a, base::Vec2 b, double r, double yRow, double& xlo, double& xhi)
-{
-    xlo = 1e300, xhi = -1e300;
-    for (const base::Vec2 c : {a, b}) {
-        const double dy = yRow - c.y;
-        if (std::abs(dy) <= r) {
-            const double half = std::sqrt(r * r - dy * dy);
-            xlo = std::min(xlo, c.x - half), xhi = std::max(xhi, c.x + half);
+// The x range over which a row y meets the capsule of radius r around the segment a-b (xy):
+// the hull of the two end discs and the band between them (the capsule is convex). The band's
+// four edges are set up once per move; a row then costs a few multiplications.
+class Capsule {
+public:
+    Capsule(base::Vec2 a, base::Vec2 b, double r) : a_(a), b_(b), r_(r)
+    {
+        const base::Vec2 n = (b - a).normalized().leftNormal() * r;
+        const base::Vec2 quad[4] = {a + n, b + n, b - n, a - n};
+        for (int k = 0; k < 4; ++k) {
+            const base::Vec2 p = quad[k], q = quad[(k + 1) % 4];
+            edges_[k] = {std::min(p.y, q.y), std::max(p.y, q.y), p.x, p.y, p.y == q.y ? 0 : (q.x - p.x) / (q.y - p.y)};
         }
     }
-    const base::Vec2 n = (b - a).normalized().leftNormal() * r;
-    const base::Vec2 quad[4] = {a + n, b + n, b - n, a - n};
-    for (int k = 0; k < 4; ++k) {
-        const base::Vec2 p = quad[k], q = quad[(k + 1) % 4];
-        if ((p.y - yRow) * (q.y - yRow) > 0 || p.y == q.y)
-            continue;
-        const double x = p.x + (yRow - p.y) / (q.y - p.y) * (q.x - p.x);
-        xlo = std::min(xlo, x), xhi = std::max(xhi, x);
+    bool row(double y, double& xlo, double& xhi) const
+    {
+        xlo = 1e300, xhi = -1e300;
+        for (const base::Vec2 c : {a_, b_}) {
+            const double dy = y - c.y;
+            if (std::abs(dy) <= r_) {
+                const double half = std::sqrt(r_ * r_ - dy * dy);
+                xlo = std::min(xlo, c.x - half), xhi = std::max(xhi, c.x + half);
+            }
+        }
+        for (const Edge& e : edges_) {
+            if (y < e.ylo || y > e.yhi || e.ylo == e.yhi)
+                continue;
+            const double x = e.x0 + (y - e.y0) * e.slope;
+            xlo = std::min(xlo, x), xhi = std::max(xhi, x);
+        }
+        return xlo <= xhi;
     }
-    return xlo <= xhi;
-}
+
+private:
+    struct Edge {
+        double ylo, yhi, x0, y0, slope;
+    };
+    base::Vec2 a_, b_;
+    double r_;
+    Edge edges_[4];
+};
 
 // The minimum of a convex function on [lo, hi] by golden section (one evaluation per step).
 template <class F> double convexMin(F f, double lo, double hi)
@@ -149,7 +167,7 @@ CutResult HeightField::cut(const Move& move, std::size_t moveIndex, const ToolSh
     return result;
 }
 
-void HeightField::lower(int i, int j, double height, std::size_t moveIndex, CutResult& result)
+inline void HeightField::lower(int i, int j, double height, std::size_t moveIndex, CutResult& result)
 {
     const std::size_t k = index(i, j);
     const double newTop = std::max(height, double(bottom_[k]));
@@ -159,12 +177,16 @@ void HeightField::lower(int i, int j, double height, std::size_t moveIndex, CutR
     top_[k] = float(newTop);
     lastCut_[k] = std::int32_t(moveIndex);
     cutNow_.add(i, j);
-    if (!design_.empty() && newTop < design_[k] - tolerance_) {
-        const double depth = depthInDesign(i, j, newTop);
-        if (depth > tolerance_ && depth > result.gougeMm) {
-            result.gougeMm = depth;
-            result.gougeAt = {columnX(i), columnY(j), newTop};
-        }
+    if (!design_.empty() && newTop < design_[k] - tolerance_)
+        noteGouge(i, j, newTop, result);
+}
+
+void HeightField::noteGouge(int i, int j, double z, CutResult& result) const
+{
+    const double depth = depthInDesign(i, j, z);
+    if (depth > tolerance_ && depth > result.gougeMm) {
+        result.gougeMm = depth;
+        result.gougeAt = {columnX(i), columnY(j), z};
     }
 }
 
@@ -199,6 +221,7 @@ void HeightField::cutVertical(const Move& move, std::size_t moveIndex, const Too
     };
     const int j0 = std::max(0, int(std::floor((std::min(c0.y, c1.y) - reach - box_.min.y) / dy_)));
     const int j1 = std::min(ny_ - 1, int(std::floor((std::max(c0.y, c1.y) + reach - box_.min.y) / dy_)));
+    const Capsule capsule(c0, c1, r);
     if (flat && std::abs(dz) < 1e-12 && !plunge) {
         // A flat tool moving level: every column under the capsule goes down to z, so a row is
         // one span of columns (those whose centres lie in it) and a tight loop over it. When the
@@ -214,7 +237,7 @@ void HeightField::cutVertical(const Move& move, std::size_t moveIndex, const Too
         for (int j = j0; j <= j1; ++j) {
             double xlo, xhi;
             const double y = columnY(j);
-            if (!capsuleRow(c0, c1, r, y, xlo, xhi))
+            if (!capsule.row(y, xlo, xhi))
                 continue;
             const int i0 = int(std::ceil((xlo - box_.min.x) / dx_ - 0.5));
             const int i1 = int(std::floor((xhi - box_.min.x) / dx_ - 0.5));
@@ -234,7 +257,7 @@ void HeightField::cutVertical(const Move& move, std::size_t moveIndex, const Too
     for (int j = j0; j <= j1; ++j) {
         const double y = columnY(j);
         double xlo, xhi;
-        if (!capsuleRow(c0, c1, reach, y, xlo, xhi))
+        if (!capsule.row(y, xlo, xhi))
             continue;
         const int i0 = std::max(0, int(std::floor((xlo - box_.min.x) / dx_ - 0.5)));
         const int i1 = std::min(nx_ - 1, int(std::ceil((xhi - box_.min.x) / dx_ - 0.5)));

@@ -70,6 +70,7 @@ private:
     void cutTilted(const Move& move, std::size_t moveIndex, const ToolShape& tool, CutResult& result);
     // Lowers column (i, j) to `height`; accounts the removed volume, the gouge and the change.
     void lower(int i, int j, double height, std::size_t moveIndex, CutResult& result);
+    void noteGouge(int i, int j, double z, CutResult& result) const;  // out of the hot loop
     // The shank's and holder's reach into the stock along a vertical move (before it cuts).
     void checkHolder(const Move& move, const ToolShape& tool, CutResult& result) const;
     // Tiles of kTile x kTile columns keep an upper bound of their tops, so the wide holder's

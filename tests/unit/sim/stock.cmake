@@ -1,1 +1,2 @@
-# tests of the stock part: camwb_add_gtest(camwb_sim_stock_tests ...)
+# Tests of stock removal (issue 14): revolved tools, the height field, the tri-dexel stock.
+camwb_add_gtest(camwb_sim_stock_tests SOURCES HeightFieldTest.cpp TriDexelTest.cpp DEPS camwb_sim LABELS sim)

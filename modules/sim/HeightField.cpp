@@ -1,0 +1,411 @@
+#include "sim/HeightField.h"
+
+#include "sim/MeshRays.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace camwb::sim {
+
+namespace {
+
+constexpr double kEps = 1e-6;  // heights closer than this are the same (float storage)
+
+bool vertical(const Vec3& axis) { return std::abs(axis.x) < 1e-9 && std::abs(axis.y) < 1e-9 && axis.z > 0; }
+
+// The x range over which a row y meets the capsule of radius r around the segment a-b (xy):
+// the hull of the two end discs and the band between them (the capsule is convex). The band's
+// four edges are set up once per move; a row then costs a few multiplications.
+class Capsule {
+public:
+    Capsule(base::Vec2 a, base::Vec2 b, double r) : a_(a), b_(b), r_(r)
+    {
+        const base::Vec2 n = (b - a).normalized().leftNormal() * r;
+        const base::Vec2 quad[4] = {a + n, b + n, b - n, a - n};
+        for (int k = 0; k < 4; ++k) {
+            const base::Vec2 p = quad[k], q = quad[(k + 1) % 4];
+            edges_[k] = {std::min(p.y, q.y), std::max(p.y, q.y), p.x, p.y, p.y == q.y ? 0 : (q.x - p.x) / (q.y - p.y)};
+        }
+    }
+    bool row(double y, double& xlo, double& xhi) const
+    {
+        xlo = 1e300, xhi = -1e300;
+        for (const base::Vec2 c : {a_, b_}) {
+            const double dy = y - c.y;
+            if (std::abs(dy) <= r_) {
+                const double half = std::sqrt(r_ * r_ - dy * dy);
+                xlo = std::min(xlo, c.x - half), xhi = std::max(xhi, c.x + half);
+            }
+        }
+        for (const Edge& e : edges_) {
+            if (y < e.ylo || y > e.yhi || e.ylo == e.yhi)
+                continue;
+            const double x = e.x0 + (y - e.y0) * e.slope;
+            xlo = std::min(xlo, x), xhi = std::max(xhi, x);
+        }
+        return xlo <= xhi;
+    }
+
+private:
+    struct Edge {
+        double ylo, yhi, x0, y0, slope;
+    };
+    base::Vec2 a_, b_;
+    double r_;
+    Edge edges_[4];
+};
+
+// The minimum of a convex function on [lo, hi] by golden section (one evaluation per step).
+template <class F> double convexMin(F f, double lo, double hi)
+{
+    constexpr double g = 0.6180339887498949;
+    double m1 = hi - g * (hi - lo), m2 = lo + g * (hi - lo);
+    double f1 = f(m1), f2 = f(m2);
+    for (int i = 0; i < 40; ++i) {
+        if (f1 < f2) {
+            hi = m2, m2 = m1, f2 = f1, m1 = hi - g * (hi - lo), f1 = f(m1);
+        } else {
+            lo = m1, m1 = m2, f1 = f2, m2 = lo + g * (hi - lo), f2 = f(m2);
+        }
+    }
+    return std::min({f1, f2, f(lo), f(hi)});
+}
+
+}  // namespace
+
+void ColumnRect::add(const ColumnRect& r)
+{
+    if (!r.empty())
+        add(r.i0, r.j0), add(r.i1, r.j1);
+}
+
+HeightField::HeightField(const base::Box3& box, double resolutionMm) : box_(box)
+{
+    const double res = std::max(resolutionMm, 1e-3);
+    nx_ = std::max(2, int(std::ceil((box.max.x - box.min.x) / res - 1e-9)));
+    ny_ = std::max(2, int(std::ceil((box.max.y - box.min.y) / res - 1e-9)));
+    dx_ = (box.max.x - box.min.x) / nx_;
+    dy_ = (box.max.y - box.min.y) / ny_;
+    top_.assign(std::size_t(nx_) * ny_, float(box.max.z));
+    bottom_.assign(top_.size(), float(box.min.z));
+    lastCut_.assign(top_.size(), -1);
+    tilesX_ = (nx_ + kTile - 1) / kTile;
+    tilesY_ = (ny_ + kTile - 1) / kTile;
+    tileTop_.assign(std::size_t(tilesX_) * tilesY_, float(box.max.z));
+    tileStale_.assign(tileTop_.size(), 0);
+}
+
+void HeightField::refreshTiles(const ColumnRect& rect)
+{
+    if (rect.empty())
+        return;
+    for (int tj = rect.j0 / kTile; tj <= rect.j1 / kTile; ++tj)
+        for (int ti = rect.i0 / kTile; ti <= rect.i1 / kTile; ++ti)
+            tileStale_[std::size_t(tj) * tilesX_ + ti] = 1;
+}
+
+float HeightField::tileTop(int ti, int tj) const
+{
+    const std::size_t t = std::size_t(tj) * tilesX_ + ti;
+    if (tileStale_[t]) {
+        float high = -std::numeric_limits<float>::infinity();
+        for (int j = tj * kTile; j < std::min(ny_, (tj + 1) * kTile); ++j)
+            for (int i = ti * kTile; i < std::min(nx_, (ti + 1) * kTile); ++i)
+                high = std::max(high, top_[index(i, j)]);
+        tileTop_[t] = high;
+        tileStale_[t] = 0;
+    }
+    return tileTop_[t];
+}
+
+std::unique_ptr<HeightField> HeightField::fromMesh(const TriangleMesh& blank, double resolutionMm)
+{
+    auto field = std::make_unique<HeightField>(blank.bounds(), resolutionMm);
+    HeightField& f = *field;
+    std::fill(f.top_.begin(), f.top_.end(), kNone);
+    std::fill(f.bottom_.begin(), f.bottom_.end(), -kNone);
+    const RayGrid grid{2, f.box_.min.x, f.box_.min.y, f.dx_, f.dy_, f.nx_, f.ny_};
+    forEachCrossing(blank, grid, [&](int i, int j, double z, bool) {
+        const std::size_t k = f.index(i, j);
+        f.top_[k] = std::max(f.top_[k], float(z));
+        f.bottom_[k] = std::min(f.bottom_[k], float(z));
+    });
+    for (std::size_t k = 0; k < f.top_.size(); ++k)
+        if (f.top_[k] == kNone)  // no blank over this column: an empty column at the blank's foot
+            f.top_[k] = f.bottom_[k] = float(f.box_.min.z);
+    f.refreshTiles({0, 0, f.nx_ - 1, f.ny_ - 1});
+    return field;
+}
+
+double HeightField::volumeMm3() const
+{
+    double sum = 0;
+    for (std::size_t k = 0; k < top_.size(); ++k)
+        sum += double(top_[k]) - bottom_[k];
+    return sum * dx_ * dy_;
+}
+
+ColumnRect HeightField::takeChanged() { return std::exchange(changed_, ColumnRect{}); }
+
+CutResult HeightField::cut(const Move& move, std::size_t moveIndex, const ToolShape& tool)
+{
+    CutResult result;
+    if (!move.moves() || !move.positionKnown || tool.radiusMm() <= 0)
+        return result;
+    cutNow_ = {};
+    if (vertical(move.fromAxis) && vertical(move.toAxis)) {
+        checkHolder(move, tool, result);
+        cutVertical(move, moveIndex, tool, result);
+    } else {
+        cutTilted(move, moveIndex, tool, result);
+    }
+    refreshTiles(cutNow_);
+    changed_.add(cutNow_);
+    lastEnd_ = move.to;
+    lastRadius_ = tool.radiusMm();
+    lastFlatVertical_ = tool.flatBottomed() && vertical(move.toAxis);
+    return result;
+}
+
+inline void HeightField::lower(int i, int j, double height, std::size_t moveIndex, CutResult& result)
+{
+    const std::size_t k = index(i, j);
+    const double newTop = std::max(height, double(bottom_[k]));
+    if (newTop >= top_[k] - kEps)
+        return;
+    result.removedMm3 += (top_[k] - newTop) * dx_ * dy_;
+    top_[k] = float(newTop);
+    lastCut_[k] = std::int32_t(moveIndex);
+    cutNow_.add(i, j);
+    if (!design_.empty() && newTop < design_[k] - tolerance_)
+        noteGouge(i, j, newTop, result);
+}
+
+void HeightField::noteGouge(int i, int j, double z, CutResult& result) const
+{
+    const double depth = depthInDesign(i, j, z);
+    if (depth > tolerance_ && depth > result.gougeMm) {
+        result.gougeMm = depth;
+        result.gougeAt = {columnX(i), columnY(j), z};
+    }
+}
+
+// The vertical tool's sweep. At a column q the cutter's lower surface over the move is
+// f(t) = z(t) + L(d(t)) with d(t) = |q - c(t)| the distance to the tool's centre: d is convex
+// in t (the norm of an affine function), L is convex and non-decreasing for every profile here
+// (ToolShape::lowerSurface), so L(d(t)) is convex and f, adding the linear z(t), is convex too.
+// Its minimum over the t where the column is under the cutter is exact for level moves (the
+// nearest point of the segment) and for flat tools (an end of the interval, f being linear),
+// and found by golden section otherwise. The shank's and the holder's lowest points over the
+// move are at an end of their intervals (their bottoms are flat).
+void HeightField::cutVertical(const Move& move, std::size_t moveIndex, const ToolShape& tool, CutResult& result)
+{
+    const base::Vec2 c0 = move.from.xy(), c1 = move.to.xy(), v = c1 - c0;
+    const double z0 = move.from.z, dz = move.to.z - move.from.z, vv = v.dot(v);
+    const double r = tool.radiusMm(), reach = r;
+    const bool flat = tool.flatBottomed();
+    const bool plunge = -dz > std::sqrt(vv);  // descends along the axis more than it travels aside
+    const double axisBand = 0.75 * std::max(dx_, dy_);
+    auto zAt = [&](double t) { return z0 + t * dz; };
+    // The parameters [ta, tb] where the column lies within `radius` of the centre.
+    auto under = [&](double e2, double tStar, double radius, double& ta, double& tb) {
+        if (e2 > radius * radius)
+            return false;
+        if (vv < 1e-18) {
+            ta = 0, tb = 1;
+            return true;
+        }
+        const double half = std::sqrt((radius * radius - e2) / vv);
+        ta = std::max(0.0, tStar - half), tb = std::min(1.0, tStar + half);
+        return ta <= tb;
+    };
+    const int j0 = std::max(0, int(std::floor((std::min(c0.y, c1.y) - reach - box_.min.y) / dy_)));
+    const int j1 = std::min(ny_ - 1, int(std::floor((std::max(c0.y, c1.y) + reach - box_.min.y) / dy_)));
+    const Capsule capsule(c0, c1, r);
+    if (flat && std::abs(dz) < 1e-12 && !plunge) {
+        // A flat tool moving level: every column under the capsule goes down to z, so a row is
+        // one span of columns (those whose centres lie in it) and a tight loop over it. When the
+        // last cut left this tool standing at the start, its disc there is already at z or
+        // below: only the columns beyond it are looked at (short arc pieces sweep a crescent).
+        const bool startDone = lastFlatVertical_ && lastRadius_ == r && lastEnd_ == move.from;
+        auto sweep = [&](int j, int i0, int i1) {
+            const float* row = &top_[index(0, j)];
+            for (int i = std::max(0, i0); i <= std::min(nx_ - 1, i1); ++i)
+                if (row[i] > z0 + kEps)
+                    lower(i, j, z0, moveIndex, result);
+        };
+        for (int j = j0; j <= j1; ++j) {
+            double xlo, xhi;
+            const double y = columnY(j);
+            if (!capsule.row(y, xlo, xhi))
+                continue;
+            const int i0 = int(std::ceil((xlo - box_.min.x) / dx_ - 0.5));
+            const int i1 = int(std::floor((xhi - box_.min.x) / dx_ - 0.5));
+            const double dy = y - c0.y;
+            if (!startDone || std::abs(dy) >= r) {
+                sweep(j, i0, i1);
+                continue;
+            }
+            const double half = std::sqrt(r * r - dy * dy);  // the start disc's chord on this row
+            const int s0 = int(std::ceil((c0.x - half - box_.min.x) / dx_ - 0.5));
+            const int s1 = int(std::floor((c0.x + half - box_.min.x) / dx_ - 0.5));
+            sweep(j, i0, std::min(i1, s0 - 1));
+            sweep(j, std::max(i0, s1 + 1), i1);
+        }
+        return;
+    }
+    for (int j = j0; j <= j1; ++j) {
+        const double y = columnY(j);
+        double xlo, xhi;
+        if (!capsule.row(y, xlo, xhi))
+            continue;
+        const int i0 = std::max(0, int(std::floor((xlo - box_.min.x) / dx_ - 0.5)));
+        const int i1 = std::min(nx_ - 1, int(std::ceil((xhi - box_.min.x) / dx_ - 0.5)));
+        // A flat tool ramping: its lowest point over a column is where the column last (going
+        // down) or first (going up) lies under it, so the disc at that end of the move is at that
+        // end's height, without a root per column. Going up from where the last cut left this
+        // tool, that disc is already cut.
+        int k0 = 1, k1 = 0;
+        const bool down = dz < 0;
+        const base::Vec2 disc = down ? c1 : c0;
+        const double discZ = down ? z0 + dz : z0;
+        const bool discDone = !down && lastFlatVertical_ && lastRadius_ == r && lastEnd_ == move.from;
+        if (flat && !plunge && vv >= 1e-18 && std::abs(y - disc.y) < r) {
+            const double half = std::sqrt(r * r - (y - disc.y) * (y - disc.y));
+            k0 = int(std::ceil((disc.x - half - box_.min.x) / dx_ - 0.5));
+            k1 = int(std::floor((disc.x + half - box_.min.x) / dx_ - 0.5));
+        }
+        for (int i = i0; i <= i1; ++i) {
+            if (i >= k0 && i <= k1) {
+                if (!discDone && top_[index(i, j)] > discZ + kEps)
+                    lower(i, j, discZ, moveIndex, result);
+                continue;
+            }
+            const base::Vec2 w = base::Vec2{columnX(i), y} - c0;
+            const double tStar = vv < 1e-18 ? 0 : w.dot(v) / vv;
+            const double e2 = std::max(0.0, w.dot(w) - tStar * tStar * vv);  // squared distance to the line
+            double ta, tb;
+            if (!under(e2, tStar, r, ta, tb))
+                continue;
+            double f;
+            if (std::abs(dz) < 1e-12) {
+                const double tc = std::clamp(tStar, ta, tb);
+                f = z0 + tool.lowerSurface(std::sqrt(e2 + (tc - tStar) * (tc - tStar) * vv));
+            } else if (vv < 1e-18) {
+                f = std::min(z0, z0 + dz) + tool.lowerSurface(std::sqrt(w.dot(w)));
+            } else if (flat) {
+                f = std::min(zAt(ta), zAt(tb));
+            } else {
+                f = convexMin(
+                    [&](double t) {
+                        return zAt(t) + tool.lowerSurface(std::min(r, std::sqrt(e2 + (t - tStar) * (t - tStar) * vv)));
+                    },
+                    ta, tb);
+            }
+            if (f >= top_[index(i, j)] - kEps)
+                continue;
+            const double before = result.removedMm3;
+            lower(i, j, f, moveIndex, result);
+            if (plunge && result.removedMm3 > before && e2 <= axisBand * axisBand)
+                result.removedOnAxis = true;
+        }
+    }
+}
+
+// The shank (from the flute length up) and the holder (from the stick-out up) have flat bottoms:
+// over the move a column within their radius meets them lowest at an end of the parameter
+// interval where it is under them; stock above that is how deep they reach. Only tiles whose
+// highest top rises above the lowest such bottom are looked at.
+void HeightField::checkHolder(const Move& move, const ToolShape& tool, CutResult& result) const
+{
+    const base::Vec2 c0 = move.from.xy(), v = move.to.xy() - c0;
+    const double vv = v.dot(v), z0 = move.from.z, dz = move.to.z - move.from.z, zLow = std::min(z0, z0 + dz);
+    struct Part {
+        double radius, bottom;  // bottom: above the tip
+    };
+    std::vector<Part> parts;
+    if (tool.stickOutMm() > tool.fluteLengthMm())
+        parts.push_back({tool.shankRadiusMm(), tool.fluteLengthMm()});
+    if (tool.holderRadiusMm() > 0)
+        parts.push_back({tool.holderRadiusMm(), tool.stickOutMm()});
+    for (const Part& part : parts) {
+        const double reach = part.radius, lowest = zLow + part.bottom;
+        if (lowest >= box_.max.z)  // above the highest the stock ever was (the usual case)
+            continue;
+        const int i0 = std::max(0, int(std::floor((std::min(c0.x, c0.x + v.x) - reach - box_.min.x) / dx_)));
+        const int i1 = std::min(nx_ - 1, int(std::floor((std::max(c0.x, c0.x + v.x) + reach - box_.min.x) / dx_)));
+        const int j0 = std::max(0, int(std::floor((std::min(c0.y, c0.y + v.y) - reach - box_.min.y) / dy_)));
+        const int j1 = std::min(ny_ - 1, int(std::floor((std::max(c0.y, c0.y + v.y) + reach - box_.min.y) / dy_)));
+        for (int tj = j0 / kTile; tj <= j1 / kTile && j0 <= j1; ++tj)
+            for (int ti = i0 / kTile; ti <= i1 / kTile && i0 <= i1; ++ti) {
+                if (tileTop(ti, tj) <= lowest + result.holderInterferenceMm)
+                    continue;
+                for (int j = std::max(j0, tj * kTile); j <= std::min(j1, (tj + 1) * kTile - 1); ++j)
+                    for (int i = std::max(i0, ti * kTile); i <= std::min(i1, (ti + 1) * kTile - 1); ++i) {
+                        const double oldTop = top_[index(i, j)];
+                        if (oldTop <= lowest + result.holderInterferenceMm)
+                            continue;
+                        const base::Vec2 w = base::Vec2{columnX(i), columnY(j)} - c0;
+                        const double tStar = vv < 1e-18 ? 0 : w.dot(v) / vv;
+                        const double e2 = std::max(0.0, w.dot(w) - tStar * tStar * vv);
+                        if (e2 > reach * reach)
+                            continue;
+                        double ta = 0, tb = 1;
+                        if (vv >= 1e-18) {
+                            const double half = std::sqrt((reach * reach - e2) / vv);
+                            ta = std::max(0.0, tStar - half), tb = std::min(1.0, tStar + half);
+                            if (ta > tb)
+                                continue;
+                        }
+                        const double depth = oldTop - (std::min(z0 + ta * dz, z0 + tb * dz) + part.bottom);
+                        if (depth > result.holderInterferenceMm)
+                            result.holderInterferenceMm = depth, result.holderAt = {columnX(i), columnY(j), oldTop};
+                    }
+            }
+    }
+}
+
+// A tilted tool in a z-map: poses at most half a cell apart, each lowering the columns to the
+// cutter's lowest point over their centres (what a z-map can hold of a tilted cut; undercuts
+// need the dexel stock).
+void HeightField::cutTilted(const Move& move, std::size_t moveIndex, const ToolShape& tool, CutResult& result)
+{
+    const double step = 0.5 * std::min(dx_, dy_);
+    const double turn = move.fromAxis.angleTo(move.toAxis) * tool.totalLengthMm();
+    const int poses = std::max(1, int(std::ceil(std::max(move.lengthMm(), turn) / step)));
+    const double reach = tool.boundingRadiusMm(), below = box_.min.z - 1;
+    const Vec3 up{0, 0, 1};
+    for (int p = 0; p <= poses; ++p) {
+        const double t = double(p) / poses;
+        const Vec3 tip = move.from + (move.to - move.from) * t;
+        const Vec3 axis = (move.fromAxis * (1 - t) + move.toAxis * t).normalized();
+        const Vec3 end = tip + axis * tool.totalLengthMm();
+        const int i0 = std::max(0, int(std::floor((std::min(tip.x, end.x) - reach - box_.min.x) / dx_)));
+        const int i1 = std::min(nx_ - 1, int(std::floor((std::max(tip.x, end.x) + reach - box_.min.x) / dx_)));
+        const int j0 = std::max(0, int(std::floor((std::min(tip.y, end.y) - reach - box_.min.y) / dy_)));
+        const int j1 = std::min(ny_ - 1, int(std::floor((std::max(tip.y, end.y) + reach - box_.min.y) / dy_)));
+        for (int j = j0; j <= j1; ++j)
+            for (int i = i0; i <= i1; ++i) {
+                const Vec3 origin{columnX(i), columnY(j), below};
+                const double oldTop = top_[index(i, j)];
+                for (ToolPart part : {ToolPart::Shank, ToolPart::Holder}) {
+                    const LineSpan s = tool.intersect(part, tip, axis, origin, up);
+                    if (!s.empty() && oldTop - (below + s.s0) > result.holderInterferenceMm)
+                        result.holderInterferenceMm = oldTop - (below + s.s0),
+                        result.holderAt = {origin.x, origin.y, oldTop};
+                }
+                const LineSpan s = tool.intersect(ToolPart::Cutter, tip, axis, origin, up);
+                if (s.empty())
+                    continue;
+                const double before = result.removedMm3;
+                lower(i, j, below + s.s0, moveIndex, result);
+                const Vec3 off = origin - tip;
+                const double radial = (off - axis * off.dot(axis)).length();
+                if (result.removedMm3 > before && radial <= 0.75 * std::max(dx_, dy_) &&
+                    -(move.to - move.from).dot(axis) > (move.to - move.from).length() * std::sqrt(0.5))
+                    result.removedOnAxis = true;
+            }
+    }
+}
+
+}  // namespace camwb::sim

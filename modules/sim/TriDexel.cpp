@@ -1,0 +1,249 @@
+#include "sim/TriDexel.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace camwb::sim {
+
+struct TriDexel::PoseCut {
+    double removed = 0;  // length along the grid's rays
+    double gouge = 0;
+    Vec3 gougeAt;
+    bool onAxis = false;
+};
+
+namespace {
+
+double comp(const Vec3& p, int a) { return a == 0 ? p.x : a == 1 ? p.y : p.z; }
+void setComp(Vec3& p, int a, double value) { (a == 0 ? p.x : a == 1 ? p.y : p.z) = value; }
+
+// The spans inside a mesh along each ray: crossings sorted and walked with a winding count, so
+// overlapping shells (a union given as separate bodies) still fill once.
+std::vector<std::vector<TriDexel::Span>> insideSpans(const TriangleMesh& mesh, const RayGrid& grid)
+{
+    std::vector<std::vector<std::pair<float, int>>> hits(std::size_t(grid.nu) * grid.nv);
+    forEachCrossing(mesh, grid, [&](int i, int j, double t, bool entering) {
+        hits[std::size_t(j) * grid.nu + i].push_back({float(t), entering ? 1 : -1});
+    });
+    std::vector<std::vector<TriDexel::Span>> spans(hits.size());
+    for (std::size_t k = 0; k < hits.size(); ++k) {
+        std::sort(hits[k].begin(), hits[k].end());
+        int winding = 0;
+        float start = 0;
+        for (const auto& [t, step] : hits[k]) {
+            if (winding <= 0 && winding + step > 0)
+                start = t;
+            else if (winding > 0 && winding + step <= 0 && t > start)
+                spans[k].push_back({start, t});
+            winding += step;
+        }
+    }
+    return spans;
+}
+
+}  // namespace
+
+TriDexel::TriDexel(const base::Box3& box, double resolutionMm) : box_(box)
+{
+    const double res = std::max(resolutionMm, 1e-3);
+    for (int k = 0; k < 3; ++k) {
+        const double w = comp(box.max, k) - comp(box.min, k);
+        cells_[k] = std::max(2, int(std::ceil(w / res - 1e-9)));
+        cell_[k] = w / cells_[k];
+    }
+    for (int a = 0; a < 3; ++a) {
+        const int u = (a + 1) % 3, v = (a + 2) % 3;
+        Grid& g = grids_[a];
+        g.rays = {a, comp(box.min, u), comp(box.min, v), cell_[u], cell_[v], cells_[u], cells_[v]};
+        const Span whole{float(comp(box.min, a)), float(comp(box.max, a))};
+        g.spans.assign(std::size_t(g.rays.nu) * g.rays.nv, std::vector<Span>{whole});
+        g.lastCut.assign(g.spans.size(), -1);
+    }
+}
+
+std::unique_ptr<TriDexel> TriDexel::fromMesh(const TriangleMesh& blank, double resolutionMm)
+{
+    auto stock = std::make_unique<TriDexel>(blank.bounds(), resolutionMm);
+    for (Grid& g : stock->grids_)
+        g.spans = insideSpans(blank, g.rays);
+    return stock;
+}
+
+void TriDexel::setDesign(const TriangleMesh& model, double toleranceMm)
+{
+    tolerance_ = toleranceMm;
+    hasDesign_ = !model.empty();
+    for (Grid& g : grids_)
+        g.design = hasDesign_ ? insideSpans(model, g.rays) : std::vector<std::vector<Span>>{};
+}
+
+double TriDexel::gridVolumeMm3(int axis) const
+{
+    const Grid& g = grids_[axis];
+    double length = 0;
+    for (const auto& ray : g.spans)
+        for (const Span& s : ray)
+            length += double(s.hi) - s.lo;
+    return length * g.rays.du * g.rays.dv;
+}
+
+double TriDexel::volumeMm3() const { return (gridVolumeMm3(0) + gridVolumeMm3(1) + gridVolumeMm3(2)) / 3; }
+
+CutResult TriDexel::cut(const Move& move, std::size_t moveIndex, const ToolShape& tool)
+{
+    CutResult result;
+    if (!move.moves() || !move.positionKnown || tool.radiusMm() <= 0)
+        return result;
+    const double step = 0.5 * std::min({cell_[0], cell_[1], cell_[2]});
+    const double turn = move.fromAxis.angleTo(move.toAxis) * tool.fluteLengthMm();
+    const int poses = std::max(1, int(std::ceil(std::max(move.lengthMm(), turn) / step)));
+    const double r = tool.radiusMm();
+    PoseCut seen[3];
+    double nextHolderCheck = 0;
+    for (int p = 0; p <= poses; ++p) {
+        const double t = double(p) / poses;
+        const Vec3 tip = move.from + (move.to - move.from) * t;
+        const Vec3 axis = (move.fromAxis * (1 - t) + move.toAxis * t).normalized();
+        base::Box3 reach;  // the cutter's box: its axis segment grown by the radius
+        reach.add(tip);
+        reach.add(tip + axis * tool.fluteLengthMm());
+        reach.min = reach.min - Vec3{r, r, r};
+        reach.max = reach.max + Vec3{r, r, r};
+        for (int a = 0; a < 3; ++a)
+            cutPose(a, tip, axis, reach, tool, moveIndex, seen[a]);
+        // The shank and holder are wide and rarely touch: checked every millimetre of travel
+        // and at the ends, not at every pose.
+        if (p == 0 || p == poses || t * move.lengthMm() >= nextHolderCheck) {
+            checkHolder(tip, axis, tool, result);
+            nextHolderCheck = t * move.lengthMm() + 1;
+        }
+    }
+    double removed = 0;
+    result.gougeMm = 0;
+    for (int a = 0; a < 3; ++a) {
+        removed += seen[a].removed * grids_[a].rays.du * grids_[a].rays.dv;
+        // Each grid measures a gouge along its own rays; the depth into the model is the
+        // shortest of them (a wall's depth is across it, not along it).
+        if (seen[a].gouge > 0 && (result.gougeMm == 0 || seen[a].gouge < result.gougeMm))
+            result.gougeMm = seen[a].gouge, result.gougeAt = seen[a].gougeAt;
+    }
+    result.removedMm3 = removed / 3;
+    const Vec3 d = move.to - move.from;
+    const Vec3 a0 = move.fromAxis;
+    const int aligned = std::abs(a0.x) >= std::max(std::abs(a0.y), std::abs(a0.z)) ? 0
+                        : std::abs(a0.y) >= std::abs(a0.z)                         ? 1
+                                                                                   : 2;
+    result.removedOnAxis = seen[aligned].onAxis && -d.dot(a0) > d.length() * std::sqrt(0.5);
+    return result;
+}
+
+void TriDexel::cutPose(int a, const Vec3& tip, const Vec3& toolAxis, const base::Box3& reach, const ToolShape& tool,
+                       std::size_t moveIndex, PoseCut& seen)
+{
+    Grid& g = grids_[a];
+    const int u = (a + 1) % 3, v = (a + 2) % 3;
+    const RayGrid& rg = g.rays;
+    const int i0 = std::max(0, int(std::ceil((comp(reach.min, u) - rg.u0) / rg.du - 0.5)));
+    const int i1 = std::min(rg.nu - 1, int(std::floor((comp(reach.max, u) - rg.u0) / rg.du - 0.5)));
+    const int j0 = std::max(0, int(std::ceil((comp(reach.min, v) - rg.v0) / rg.dv - 0.5)));
+    const int j1 = std::min(rg.nv - 1, int(std::floor((comp(reach.max, v) - rg.v0) / rg.dv - 0.5)));
+    const double lo = comp(reach.min, a), hi = comp(reach.max, a);
+    const double axisBand = 0.75 * std::max(rg.du, rg.dv);
+    Vec3 dir;
+    setComp(dir, a, 1);
+    for (int j = j0; j <= j1; ++j)
+        for (int i = i0; i <= i1; ++i) {
+            const std::size_t k = g.at(i, j);
+            std::vector<Span>& spans = g.spans[k];
+            if (spans.empty() || spans.front().lo > hi || spans.back().hi < lo)
+                continue;
+            Vec3 origin;
+            setComp(origin, a, comp(box_.min, a));
+            setComp(origin, u, rg.uAt(i));
+            setComp(origin, v, rg.vAt(j));
+            const LineSpan cutter = tool.intersect(ToolPart::Cutter, tip, toolAxis, origin, dir);
+            if (cutter.empty())
+                continue;
+            const double c0 = comp(box_.min, a) + cutter.s0, c1 = comp(box_.min, a) + cutter.s1;
+            if (spans.front().lo >= c1 || spans.back().hi <= c0)
+                continue;
+            double removed = 0;
+            std::vector<Span> kept;
+            kept.reserve(spans.size() + 1);
+            for (const Span& s : spans) {
+                const double r0 = std::max<double>(s.lo, c0), r1 = std::min<double>(s.hi, c1);
+                if (r1 - r0 <= 1e-7) {
+                    kept.push_back(s);
+                    continue;
+                }
+                removed += r1 - r0;
+                if (s.lo < r0)
+                    kept.push_back({s.lo, float(r0)});
+                if (s.hi > r1)
+                    kept.push_back({float(r1), s.hi});
+                if (!g.design.empty())  // the deepest removed point inside a design span, along the ray
+                    for (const Span& d : g.design[k]) {
+                        const double dlo = std::max<double>(r0, d.lo), dhi = std::min<double>(r1, d.hi);
+                        if (dlo >= dhi)
+                            continue;
+                        const double x = std::clamp((double(d.lo) + d.hi) / 2, dlo, dhi);
+                        const double depth = std::min(x - d.lo, d.hi - x);
+                        if (depth > tolerance_ && depth > seen.gouge) {
+                            seen.gouge = depth;
+                            seen.gougeAt = origin + dir * (x - comp(box_.min, a));
+                        }
+                    }
+            }
+            if (removed <= 0)
+                continue;
+            spans.swap(kept);
+            g.lastCut[k] = std::int32_t(moveIndex);
+            seen.removed += removed;
+            if (std::hypot(rg.uAt(i) - comp(tip, u), rg.vAt(j) - comp(tip, v)) <= axisBand)
+                seen.onAxis = true;
+        }
+}
+
+// Shank and holder against the Z rays (at most 64 x 64 of them over their box): the length of
+// remaining material along a ray inside either is how deep they reach into the stock.
+void TriDexel::checkHolder(const Vec3& tip, const Vec3& toolAxis, const ToolShape& tool, CutResult& result) const
+{
+    const Grid& g = grids_[2];
+    const RayGrid& rg = g.rays;
+    const double r = tool.boundingRadiusMm();
+    base::Box3 reach;
+    reach.add(tip + toolAxis * tool.fluteLengthMm());
+    reach.add(tip + toolAxis * tool.totalLengthMm());
+    if (reach.min.z > box_.max.z)
+        return;
+    const int i0 = std::max(0, int(std::floor((reach.min.x - r - rg.u0) / rg.du)));
+    const int i1 = std::min(rg.nu - 1, int(std::floor((reach.max.x + r - rg.u0) / rg.du)));
+    const int j0 = std::max(0, int(std::floor((reach.min.y - r - rg.v0) / rg.dv)));
+    const int j1 = std::min(rg.nv - 1, int(std::floor((reach.max.y + r - rg.v0) / rg.dv)));
+    const int si = std::max(1, (i1 - i0) / 64), sj = std::max(1, (j1 - j0) / 64);
+    const Vec3 up{0, 0, 1};
+    for (int j = j0; j <= j1; j += sj)
+        for (int i = i0; i <= i1; i += si) {
+            const std::vector<Span>& spans = g.spans[g.at(i, j)];
+            if (spans.empty())
+                continue;
+            const Vec3 origin{rg.uAt(i), rg.vAt(j), box_.min.z};
+            for (ToolPart part : {ToolPart::Shank, ToolPart::Holder}) {
+                const LineSpan s = tool.intersect(part, tip, toolAxis, origin, up);
+                if (s.empty())
+                    continue;
+                double inside = 0, top = 0;
+                for (const Span& m : spans) {
+                    const double lo = std::max<double>(m.lo, box_.min.z + s.s0),
+                                 hi = std::min<double>(m.hi, box_.min.z + s.s1);
+                    if (hi > lo)
+                        inside += hi - lo, top = hi;
+                }
+                if (inside > result.holderInterferenceMm)
+                    result.holderInterferenceMm = inside, result.holderAt = {origin.x, origin.y, top};
+            }
+        }
+}
+
+}  // namespace camwb::sim

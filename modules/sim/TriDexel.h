@@ -1,0 +1,65 @@
+// Stock for tilted tools and undercuts: tri-dexels, three grids of parallel rays (along X, Y and
+// Z, one ray per cell of the stock's side at the resolution) each holding the spans of material
+// along it. Memory grows with the stock's area over the resolution squared, not its volume over
+// the cube; a cut steps the tool's poses at most half a cell apart and subtracts the cutter's
+// span from every ray it crosses, so its cost is set by the resolution, not by time samples.
+#pragma once
+
+#include "sim/MeshRays.h"
+#include "sim/Stock.h"
+#include "sim/ToolShape.h"
+
+namespace camwb::sim {
+
+class TriDexel final : public Stock {
+public:
+    struct Span {
+        float lo, hi;
+    };
+    TriDexel(const base::Box3& box, double resolutionMm);
+    // A cast or forged blank: every ray filled with the spans inside `blank` (holes kept).
+    static std::unique_ptr<TriDexel> fromMesh(const TriangleMesh& blank, double resolutionMm);
+
+    CutResult cut(const Move& move, std::size_t moveIndex, const ToolShape& tool) override;
+    void setDesign(const TriangleMesh& model, double toleranceMm) override;
+    Deviation compare() const override;
+    // The mean of the three grids' estimates (each is its spans' lengths times its cell area).
+    double volumeMm3() const override;
+    base::Box3 bounds() const override { return box_; }
+    double resolutionMm() const override { return std::max({cell_[0], cell_[1], cell_[2]}); }
+    // The Z rays' spans as boxes with faces merged between neighbours (voxel faces, exact in Z,
+    // stepped by a cell across): closed in space and outward-facing, so its volume is the Z
+    // grid's, but side faces meet top faces in T-junctions (no shared vertices across heights).
+    TriangleMesh mesh() const override;
+    std::unique_ptr<Stock> clone() const override { return std::make_unique<TriDexel>(*this); }
+
+    // The spans along ray (i, j) of grid `axis` (0 x, 1 y, 2 z); RayGrid says where it runs.
+    const std::vector<Span>& spans(int axis, int i, int j) const { return grids_[axis].spans[grids_[axis].at(i, j)]; }
+    const RayGrid& rays(int axis) const { return grids_[axis].rays; }
+    double gridVolumeMm3(int axis) const;
+
+private:
+    struct Grid {
+        RayGrid rays;
+        std::vector<std::vector<Span>> spans, design;
+        std::vector<std::int32_t> lastCut;
+        std::size_t at(int i, int j) const { return std::size_t(j) * rays.nu + i; }
+    };
+    struct PoseCut;  // what one grid saw of a cut (TriDexel.cpp)
+    void cutPose(int axis, const Vec3& tip, const Vec3& toolAxis, const base::Box3& reach, const ToolShape& tool,
+                 std::size_t moveIndex, PoseCut& seen);
+    void checkHolder(const Vec3& tip, const Vec3& toolAxis, const ToolShape& tool, CutResult& result) const;
+    // Signed distance along ray (i, j) of grid `axis` from coordinate t to the design's surface
+    // (negative inside it); +infinity where the ray meets no design.
+    double alongRay(int axis, int i, int j, double t) const;
+    double vertexDeviation(const Vec3& p) const;
+
+    base::Box3 box_;
+    double cell_[3] = {1, 1, 1};
+    int cells_[3] = {2, 2, 2};
+    Grid grids_[3];
+    double tolerance_ = 0;
+    bool hasDesign_ = false;
+};
+
+}  // namespace camwb::sim

@@ -1,0 +1,142 @@
+// The tri-dexel stock's mesh and its comparison with the design (TriDexel.h).
+#include "sim/TriDexel.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace camwb::sim {
+
+namespace {
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
+
+double comp(const Vec3& p, int a) { return a == 0 ? p.x : a == 1 ? p.y : p.z; }
+
+// Calls out(lo, hi) for each stretch where `a` has material and `b` has none.
+template <class Out>
+void difference(const std::vector<TriDexel::Span>& a, const std::vector<TriDexel::Span>* b, Out out)
+{
+    for (const TriDexel::Span& s : a) {
+        double from = s.lo;
+        if (b)
+            for (const TriDexel::Span& t : *b) {
+                if (t.hi <= from || t.lo >= s.hi)
+                    continue;
+                if (t.lo > from)
+                    out(from, double(t.lo));
+                from = std::max<double>(from, t.hi);
+            }
+        if (from < s.hi)
+            out(from, double(s.hi));
+    }
+}
+
+struct MeshBuilder {
+    TriangleMesh mesh;
+    // A quad p0..p3, counter-clockwise seen from outside.
+    void quad(const Vec3& p0, const Vec3& p1, const Vec3& p2, const Vec3& p3)
+    {
+        const auto first = std::uint32_t(mesh.vertexCount());
+        for (const Vec3& p : {p0, p1, p2, p3})
+            mesh.positions.insert(mesh.positions.end(), {float(p.x), float(p.y), float(p.z)});
+        mesh.triangles.insert(mesh.triangles.end(), {first, first + 1, first + 2, first, first + 2, first + 3});
+    }
+};
+
+}  // namespace
+
+TriangleMesh TriDexel::mesh() const
+{
+    const Grid& g = grids_[2];
+    const RayGrid& rg = g.rays;
+    MeshBuilder b;
+    for (int j = 0; j < rg.nv; ++j)
+        for (int i = 0; i < rg.nu; ++i) {
+            const std::vector<Span>& spans = g.spans[g.at(i, j)];
+            const double x0 = rg.u0 + i * rg.du, x1 = x0 + rg.du, y0 = rg.v0 + j * rg.dv, y1 = y0 + rg.dv;
+            for (const Span& s : spans) {
+                b.quad({x0, y0, s.hi}, {x1, y0, s.hi}, {x1, y1, s.hi}, {x0, y1, s.hi});
+                b.quad({x0, y0, s.lo}, {x0, y1, s.lo}, {x1, y1, s.lo}, {x1, y0, s.lo});
+            }
+            // Sides where this column has material and its neighbour (or the outside) has none.
+            const std::vector<Span>* east = i + 1 < rg.nu ? &g.spans[g.at(i + 1, j)] : nullptr;
+            const std::vector<Span>* west = i > 0 ? &g.spans[g.at(i - 1, j)] : nullptr;
+            const std::vector<Span>* north = j + 1 < rg.nv ? &g.spans[g.at(i, j + 1)] : nullptr;
+            const std::vector<Span>* south = j > 0 ? &g.spans[g.at(i, j - 1)] : nullptr;
+            difference(spans, east, [&](double lo, double hi) {
+                b.quad({x1, y0, lo}, {x1, y1, lo}, {x1, y1, hi}, {x1, y0, hi});
+            });
+            difference(spans, west, [&](double lo, double hi) {
+                b.quad({x0, y0, lo}, {x0, y0, hi}, {x0, y1, hi}, {x0, y1, lo});
+            });
+            difference(spans, north, [&](double lo, double hi) {
+                b.quad({x0, y1, lo}, {x0, y1, hi}, {x1, y1, hi}, {x1, y1, lo});
+            });
+            difference(spans, south, [&](double lo, double hi) {
+                b.quad({x0, y0, lo}, {x1, y0, lo}, {x1, y0, hi}, {x0, y0, hi});
+            });
+        }
+    return std::move(b.mesh);
+}
+
+double TriDexel::alongRay(int axis, int i, int j, double t) const
+{
+    const Grid& g = grids_[axis];
+    const std::vector<Span>& design = g.design[g.at(i, j)];
+    double best = kInf;
+    for (const Span& d : design) {
+        if (t >= d.lo && t <= d.hi)
+            return -std::min(t - d.lo, d.hi - t);
+        best = std::min({best, std::abs(t - d.lo), std::abs(t - d.hi)});
+    }
+    return best;
+}
+
+// The deviation at a surface point: along the nearest ray of each grid, the distance to the
+// design's surface; the smallest of the three (a dexel stock knows the model only along its rays).
+double TriDexel::vertexDeviation(const Vec3& p) const
+{
+    double best = kInf;
+    for (int a = 0; a < 3; ++a) {
+        const RayGrid& rg = grids_[a].rays;
+        const int u = (a + 1) % 3, v = (a + 2) % 3;
+        const int i = std::clamp(int(std::floor((comp(p, u) - rg.u0) / rg.du)), 0, rg.nu - 1);
+        const int j = std::clamp(int(std::floor((comp(p, v) - rg.v0) / rg.dv)), 0, rg.nv - 1);
+        const double d = alongRay(a, i, j, comp(p, a));
+        if (std::abs(d) < std::abs(best))
+            best = d;
+    }
+    return best;
+}
+
+Deviation TriDexel::compare() const
+{
+    Deviation out;
+    const TriangleMesh m = mesh();
+    out.perVertex.assign(m.vertexCount(), 0.f);
+    if (!hasDesign_)
+        return out;
+    const RayGrid& rz = grids_[2].rays;
+    for (std::size_t k = 0; k < m.vertexCount(); ++k) {
+        const Vec3 p = m.vertex(k);
+        // A vertex sits on its column's corner: measure at the middle of the face it belongs to,
+        // nudged into the column whose triangle it came from (four vertices per quad, in order).
+        const std::size_t first = k - k % 4;
+        const Vec3 centre = (m.vertex(first) + m.vertex(first + 1) + m.vertex(first + 2) + m.vertex(first + 3)) * 0.25;
+        double dev = vertexDeviation(centre);
+        if (!std::isfinite(dev))  // no design along any of the three rays: all of it is left over
+            dev = box_.max.z - box_.min.z;
+        out.perVertex[k] = float(dev);
+        const int i = std::clamp(int(std::floor((centre.x - rz.u0) / rz.du)), 0, rz.nu - 1);
+        const int j = std::clamp(int(std::floor((centre.y - rz.v0) / rz.dv)), 0, rz.nv - 1);
+        const std::int64_t move = grids_[2].lastCut[grids_[2].at(i, j)];
+        if (dev > out.maxLeftoverMm)
+            out.maxLeftoverMm = dev, out.leftoverAt = p, out.leftoverMove = move;
+        if (-dev > tolerance_ && -dev > out.maxGougeMm)
+            out.maxGougeMm = -dev, out.gougeAt = p, out.gougeMove = move;
+    }
+    return out;
+}
+
+}  // namespace camwb::sim

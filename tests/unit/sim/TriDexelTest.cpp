@@ -1,0 +1,144 @@
+// The tri-dexel stock: it agrees with the height field on three-axis cuts, cuts an undercut a
+// z-map cannot hold, reports a gouge and a short holder like the height field, fills a blank
+// with a cavity, and its mesh holds its volume; the factory picks the representation.
+#include "sim/TriDexel.h"
+#include "StockTestUtil.h"
+#include "sim/HeightField.h"
+#include "sim/MakeStock.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+
+using namespace camwb;
+using namespace camwb::sim;
+using namespace camwb::sim::test;
+
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+base::Box3 box(Vec3 lo, Vec3 hi)
+{
+    base::Box3 b;
+    b.add(lo);
+    b.add(hi);
+    return b;
+}
+
+double zTop(const TriDexel& s, int i, int j) { return s.spans(2, i, j).empty() ? -1 : s.spans(2, i, j).back().hi; }
+
+}  // namespace
+
+TEST(SimTriDexel, AgreesWithTheHeightFieldOnThreeAxisCuts)
+{
+    const base::Box3 b = box({0, 0, 0}, {40, 30, 20});
+    HeightField field(b, 0.2);
+    TriDexel dexels(b, 0.2);
+    const ToolShape ball(makeTool("ball", 6)), flat(makeTool("flat", 4));
+    const std::vector<std::pair<Move, const ToolShape*>> cuts = {
+        {makeMove({5, 10.05, 25}, {5, 10.05, 16}), &flat},
+        {makeMove({5, 10.05, 16}, {35, 10.05, 16}), &flat},
+        {makeMove({5, 20.1, 18}, {35, 22.1, 15}), &ball},
+        {makeMove({35, 22.1, 15}, {20, 8.1, 17}), &ball},
+    };
+    for (std::size_t k = 0; k < cuts.size(); ++k) {
+        const double hf = field.cut(cuts[k].first, k, *cuts[k].second).removedMm3;
+        const double dx = dexels.cut(cuts[k].first, k, *cuts[k].second).removedMm3;
+        EXPECT_NEAR(dx, hf, 0.02 * hf + 1) << "move " << k;
+    }
+    EXPECT_NEAR(dexels.volumeMm3(), field.volumeMm3(), 0.002 * field.volumeMm3());
+    EXPECT_NEAR(dexels.gridVolumeMm3(2), field.volumeMm3(), 0.001 * field.volumeMm3());
+    // The Z rays and the columns share a grid: the same tops to within the poses' cusps.
+    double worst = 0;
+    for (int j = 0; j < field.columnsY(); ++j)
+        for (int i = 0; i < field.columnsX(); ++i)
+            worst = std::max(worst, std::abs(zTop(dexels, i, j) - field.top(i, j)));
+    EXPECT_LT(worst, 0.02);
+}
+
+TEST(SimTriDexel, CutsAnUndercutAZMapCannot)
+{
+    // A flat tool lying along X (its tip towards -X) bores in from the side at z = 5: the
+    // material above the bore stays, so a Z ray through it holds two spans.
+    const base::Box3 b = box({0, 0, 0}, {40, 40, 20});
+    TriDexel dexels(b, 0.2);
+    HeightField field(b, 0.2);
+    const ToolShape tool(makeTool("flat", 6, 0, 30, 40));
+    Move bore = makeMove({45, 20.1, 5.1}, {20, 20.1, 5.1});
+    bore.fromAxis = bore.toAxis = {1, 0, 0};
+    const double removed = dexels.cut(bore, 0, tool).removedMm3;
+    EXPECT_NEAR(removed, kPi * 9 * 20, 0.02 * kPi * 9 * 20);
+    const auto& spans = dexels.spans(2, 150, 100);  // x = 30.1, y = 20.1
+    ASSERT_EQ(spans.size(), 2u);
+    EXPECT_NEAR(spans[0].hi, 2.1, 0.05);
+    EXPECT_NEAR(spans[1].lo, 8.1, 0.05);
+    EXPECT_NEAR(spans[1].hi, 20, 1e-6);
+    // The height field can only lower the column to the tool's lowest point: it loses the top.
+    field.cut(bore, 0, tool);
+    EXPECT_NEAR(field.top(150, 100), 2.1, 0.05);
+    EXPECT_GT(b.max.z - b.min.z, 0);
+}
+
+TEST(SimTriDexel, GougeAndShortHolderAreReported)
+{
+    TriDexel stock(box({0, 0, 0}, {60, 40, 20}), 0.2);
+    TriangleMesh design = boxMesh({0, 0, 0}, {60, 40, 10});
+    append(design, boxMesh({0, 30, 0}, {60, 40, 20}));
+    stock.setDesign(design, 0.01);
+    const ToolShape tool(makeTool("flat", 10));
+    EXPECT_EQ(stock.cut(makeMove({5, 25, 10}, {55, 25, 10}), 0, tool).gougeMm, 0);
+    const CutResult into = stock.cut(makeMove({55, 25.5, 10}, {5, 25.5, 10}), 1, tool);
+    EXPECT_NEAR(into.gougeMm, 0.5, 0.2);
+    EXPECT_GT(stock.compare().maxGougeMm, 0.3);
+
+    TriDexel deep(box({0, 0, 0}, {100, 100, 60}), 0.5);
+    const ToolShape stubby(makeTool("flat", 10, 0, 45, 50, "ER32"));
+    double worst = 0;
+    std::size_t index = 0;
+    for (double z = 55; z >= 5; z -= 5) {
+        Vec3 at{45, 45, z};
+        for (const Vec3& next : {Vec3{55, 45, z}, Vec3{55, 55, z}, Vec3{45, 55, z}, Vec3{45, 45, z}}) {
+            const CutResult r = deep.cut(makeMove(at, next), index++, stubby);
+            if (z >= 10)
+                EXPECT_EQ(r.holderInterferenceMm, 0) << "z " << z;
+            worst = std::max(worst, r.holderInterferenceMm);
+            at = next;
+        }
+    }
+    EXPECT_NEAR(worst, 5, 1e-3);
+}
+
+TEST(SimTriDexel, BlankWithACavityAndTheMeshVolume)
+{
+    TriangleMesh blank = boxMesh({0, 0, 0}, {20, 20, 20});
+    TriangleMesh cavity = boxMesh({5, 5, 5}, {15, 15, 15});
+    for (std::size_t t = 0; t < cavity.triangleCount(); ++t)  // inward-facing: a hollow
+        std::swap(cavity.triangles[3 * t + 1], cavity.triangles[3 * t + 2]);
+    append(blank, cavity);
+    const auto stock = TriDexel::fromMesh(blank, 0.5);
+    EXPECT_EQ(stock->spans(2, 20, 20).size(), 2u);
+    EXPECT_NEAR(stock->volumeMm3(), 8000 - 1000, 1e-3);
+    const ToolShape tool(makeTool("ball", 4));
+    stock->cut(makeMove({-5, 10, 18}, {25, 12, 18}), 0, tool);
+    const TriangleMesh m = stock->mesh();
+    const auto path = (std::filesystem::temp_directory_path() / "camwb_tridexel_test.stl").string();
+    ASSERT_TRUE(writeStl(m, path).ok());
+    std::size_t triangles = 0;
+    EXPECT_NEAR(stlVolume(path, triangles), stock->gridVolumeMm3(2), 1e-3 * stock->gridVolumeMm3(2));
+    std::filesystem::remove(path);
+}
+
+TEST(SimTriDexel, FactoryPicksTheRepresentation)
+{
+    const base::Box3 b = box({0, 0, 0}, {10, 10, 10});
+    EXPECT_NE(dynamic_cast<HeightField*>(makeStock(b, 0.5, false).get()), nullptr);
+    EXPECT_NE(dynamic_cast<TriDexel*>(makeStock(b, 0.5, true).get()), nullptr);
+    EXPECT_NE(dynamic_cast<TriDexel*>(makeStockFromMesh(boxMesh({0, 0, 0}, {5, 5, 5}), 0.5, true).get()), nullptr);
+    MoveList list;
+    list.moves.push_back(makeMove({0, 0, 0}, {1, 0, 0}));
+    EXPECT_FALSE(anyToolTilts(list));
+    list.moves.back().toAxis = Vec3{1, 0, 1}.normalized();
+    EXPECT_TRUE(anyToolTilts(list));
+}

@@ -110,11 +110,19 @@ double radialDepth(const TurningRegion& cut, const TurningRegion& material, doub
 {
     const std::vector<Loop> cutLoops = loopsOf(cut, tolerance);
     const std::vector<Loop> materialLoops = loopsOf(material, tolerance);
+    // Only the Z range of `cut` matters; the stock's other vertices would only cost time.
+    double low = 1e300, high = -1e300;
+    for (const Loop& loop : cutLoops)
+        for (const Vec2 p : loop) {
+            low = std::min(low, p.x);
+            high = std::max(high, p.x);
+        }
     std::vector<double> zs;
     for (const auto* loops : {&cutLoops, &materialLoops})
         for (const Loop& loop : *loops)
             for (const Vec2 p : loop)
-                zs.push_back(p.x);
+                if (p.x >= low && p.x <= high)
+                    zs.push_back(p.x);
     std::sort(zs.begin(), zs.end());
     zs.erase(std::unique(zs.begin(), zs.end()), zs.end());
     double deepest = 0;

@@ -35,21 +35,23 @@ struct Traced {
     toolpath::Toolpath path;
 };
 
-// KOD5.MPF calling the reconstructed programs (seed §4.3), with `r3` as the groove depth.
-Traced traceSeed(double r3)
+// KOD5.MPF calling the reconstructed programs (seed §4.3), with some of Kod 1's input blocks
+// replaced (e.g. {"N08 R3=170", "N08 R3=160"}).
+Traced traceSeed(const std::map<std::string, std::string>& replace = {})
 {
     const nc::ProgramResolver folder = nc::folderResolver(dataDir() + "/reconstructed", {".SPF"});
     nc::InterpretOptions options;
     options.dialect = nc::Dialect::Sinumerik;
     options.fileName = dataDir() + "/KOD5.MPF";
-    options.resolveProgram = [folder, r3](std::string_view name) {
+    options.resolveProgram = [folder, replace](std::string_view name) {
         auto source = folder(name);
-        const std::string kod1 = "N08 R3=170";
-        if (source && name == "PODPROG_ZAPICH") {
-            const auto at = source->text.find(kod1);
-            EXPECT_NE(at, std::string::npos);
-            source->text.replace(at, kod1.size(), "N08 R3=" + std::to_string(r3));
-        }
+        if (source && name == "PODPROG_ZAPICH")
+            for (const auto& [from, to] : replace) {
+                const auto at = source->text.find(from);
+                EXPECT_NE(at, std::string::npos) << from;
+                if (at != std::string::npos)
+                    source->text.replace(at, from.size(), to);
+            }
         return source;
     };
     toolpath::ToolpathRecorder recorder;
@@ -61,13 +63,11 @@ Traced traceSeed(double r3)
     return t;
 }
 
-TurningReport checkSeed(double r3)
+TurningReport checkSeed(const Traced& t, const GrooveParameters& g)
 {
-    GrooveParameters g;
-    g.r3 = r3;
     TurningOptions options;
     options.insert.widthMm = g.r9;
-    return checkTurning(traceSeed(r3).path, grooveStock(g), grooveOffsetPart(g), options);
+    return checkTurning(t.path, grooveStock(g), grooveOffsetPart(g), options);
 }
 
 // "PODPROG_DNO_ZP.SPF:12" for each finding of `kind`.
@@ -87,17 +87,20 @@ std::vector<std::string> where(const TurningReport& report, const Traced& traced
 // itself (seed REQ-15 a, b, d: the roughing leaves no material above the offset contour).
 TEST(TurningSeed001, ThesisProgramCutsTheGrooveWithoutRapidHitsOrGouges)
 {
-    const Traced t = traceSeed(170);
-    GrooveParameters g;
-    TurningOptions options;
-    options.insert.widthMm = g.r9;
-    const TurningReport r = checkTurning(t.path, grooveStock(g), grooveOffsetPart(g), options);
-    EXPECT_EQ(r.moves, 566u);  // 574 traced, less the approach from unknown Z and the zero-length ones
+    const Traced t = traceSeed();
+    const GrooveParameters g;
+    const TurningReport r = checkSeed(t, g);
+    // 575 traced moves: Kod 5's G0 X=R0+200 and N72 G0 Z start where Z is not known yet, and 7
+    // of the others have no length.
+    EXPECT_EQ(r.moves, 566u);
     EXPECT_TRUE(where(r, t, TurningCheckKind::RapidInStock).empty());
     EXPECT_TRUE(where(r, t, TurningCheckKind::Gouge).empty());
     EXPECT_FALSE(r.hasErrors());
     EXPECT_NEAR(r.maxRapidDepthMm, 0, 1e-3);
-    EXPECT_EQ(r.feedsInAir, 8u);
+    EXPECT_EQ(r.feedsInAir, 8u);  // counted and named once (the first: ZL line 41, G1 to the cleared flank top)
+    ASSERT_EQ(r.findings.size(), 1u);
+    EXPECT_EQ(r.findings[0].kind, TurningCheckKind::FeedInAir);
+    EXPECT_EQ(r.findings[0].severity, base::Severity::Note);
     const TurningRegion part = grooveOffsetPart(g);
     EXPECT_NEAR(geom::totalArea(geom::subtract(r.stock, part, 1e-4)), 0, 0.01);  // nothing left over
     EXPECT_NEAR(geom::totalArea(geom::subtract(part, r.stock, 1e-4)), 0, 0.01);  // nothing gouged
@@ -111,12 +114,10 @@ TEST(TurningSeed001, ThesisProgramCutsTheGrooveWithoutRapidHitsOrGouges)
 // insert's width) and N180 G0 Z=R20 (22.9261 mm, the seed's strip model samples 22.89 there).
 TEST(TurningSeed001, DnoZpGougesTheRightFlankAndRapidsThroughStock)
 {
-    const Traced t = traceSeed(160);
+    const Traced t = traceSeed({{"N08 R3=170", "N08 R3=160"}});
     GrooveParameters g;
     g.r3 = 160;
-    TurningOptions options;
-    options.insert.widthMm = g.r9;
-    const TurningReport r = checkTurning(t.path, grooveStock(g), grooveOffsetPart(g), options);
+    const TurningReport r = checkSeed(t, g);
     EXPECT_EQ(where(r, t, TurningCheckKind::RapidInStock),
               (std::vector<std::string>{"PODPROG_DNO_ZP.SPF:31", "PODPROG_DNO_ZP.SPF:42"}));
     std::vector<double> rapidDepths;
@@ -138,6 +139,33 @@ TEST(TurningSeed001, DnoZpGougesTheRightFlankAndRapidsThroughStock)
     EXPECT_NEAR(r.maxGougeMm, expected, 1e-3);
     EXPECT_NEAR(r.maxGougeAt.y, g.r0 - g.r3 + g.r7, 1e-3);  // the insert on the bottom offset
     EXPECT_TRUE(r.hasErrors());
+}
+
+// Seed §2.2: with no safety distance (R30 = 0) the example is still free of rapid collisions:
+// the rapids run exactly along the surfaces the plunges left, touching but not cutting.
+TEST(TurningSeed001, NoSafetyDistanceStillTouchesOnly)
+{
+    const Traced t = traceSeed({{"N17 R30=1", "N17 R30=0"}});
+    const TurningReport r = checkSeed(t, {});
+    EXPECT_FALSE(r.hasErrors());
+    EXPECT_TRUE(where(r, t, TurningCheckKind::RapidInStock).empty());
+    EXPECT_NEAR(r.maxRapidDepthMm, 0, 1e-6);
+}
+
+// Seed §5.3 item 7: R10 = 1.2 steps further than the insert is wide; the thesis' retract heights
+// assume overlap, so the ZP sweeps rapid through the ribs left standing (the seed: a 41.9 mm G0
+// hit in ZP, 28.8 mm² left over), and the run ends through the faulty PODPROG_DNO_ZP.
+TEST(TurningSeed001, StepBeyondTheInsertWidthRapidsThroughTheRibs)
+{
+    const Traced t = traceSeed({{"N15 R10=0.8", "N15 R10=1.2"}});
+    const TurningReport r = checkSeed(t, {});
+    EXPECT_NEAR(r.maxRapidDepthMm, 41.9195, 1e-3);
+    ASSERT_FALSE(r.findings.empty());
+    EXPECT_EQ(where(r, t, TurningCheckKind::RapidInStock).front(), "PODPROG_ZP.SPF:4");  // G0 Z=R20-R9-R10*R9*R18
+    EXPECT_NEAR(r.findings.front().mm, 41.9195, 1e-3);
+    EXPECT_EQ(r.rapidsInStock, 133u);
+    EXPECT_NEAR(geom::totalArea(geom::subtract(r.stock, grooveOffsetPart({}), 1e-4)), 28.791, 0.01);
+    EXPECT_NEAR(r.maxGougeMm, 25.4994, 1e-3);
 }
 
 // A shaft of radius 50 (Z 0..100) with a groove to radius 40 between Z 40 and 49.

@@ -8,6 +8,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <filesystem>
+#include <fstream>
 #include <numbers>
 
 namespace camwb::sim {
@@ -30,6 +32,11 @@ TEST(TurningStock, SweepOfTheInsertIsTheHullOfItsTwoPlacements)
     for (std::size_t i = 0; i < hull.size(); ++i)
         twice += hull[i].cross(hull[(i + 1) % hull.size()]);
     EXPECT_NEAR(twice / 2, 3 * 5 + 2 * 3 + 4 * 5, 1e-9);
+    // A move of no length, and points on the edges: the rectangle's four corners.
+    auto same = a;
+    same.insert(same.end(), a.begin(), a.end());
+    same.push_back({11, 20});
+    EXPECT_EQ(convexHull(same).size(), 4u);
 }
 
 TEST(TurningStock, PlungeRemovesWidthTimesDepth)
@@ -88,6 +95,12 @@ TEST(TurningProfile, RectangleAndPointErrors)
     EXPECT_NEAR(geom::totalArea(parseProfilePoints("20,0\n20,10 # shoulder\n30,10\n30,40\n").value()),
                 20 * 10 + 30 * 30, 1e-9);
     EXPECT_FALSE(stockProfileFromArgument("/nonexistent/profile.txt").ok());
+    const std::string file = (std::filesystem::temp_directory_path() / "camwb-turning-profile.txt").string();
+    std::ofstream(file) << "# bar\n25,-5\n25 60\n";
+    EXPECT_NEAR(geom::totalArea(stockProfileFromArgument(file).value()), 25 * 65, 1e-9);
+    std::ofstream(file) << "25,-5\n25,60,3\n";
+    EXPECT_EQ(stockProfileFromArgument(file).error().toString(), file + ":2: expected X,Z (radius, Z in mm)");
+    std::filesystem::remove(file);
     EXPECT_NEAR(geom::totalArea(stockProfileFromArgument("0,0,10,10").value()), 100, 1e-9);
 }
 

@@ -18,26 +18,26 @@ bool vertical(const Vec3& axis) { return std::abs(axis.x) < 1e-9 && std::abs(axi
 // four edges are set up once per move; a row then costs a few multiplications.
 class Capsule {
 public:
-    Capsule(base::Vec2 a, base::Vec2 b, double r) : a_(a), b_(b), r_(r)
+    Capsule(base::Vec2 a, base::Vec2 b, double r) : m_a(a), m_b(b), m_r(r)
     {
         const base::Vec2 n = (b - a).normalized().leftNormal() * r;
         const base::Vec2 quad[4] = {a + n, b + n, b - n, a - n};
         for (int k = 0; k < 4; ++k) {
             const base::Vec2 p = quad[k], q = quad[(k + 1) % 4];
-            edges_[k] = {std::min(p.y, q.y), std::max(p.y, q.y), p.x, p.y, p.y == q.y ? 0 : (q.x - p.x) / (q.y - p.y)};
+            m_edges[k] = {std::min(p.y, q.y), std::max(p.y, q.y), p.x, p.y, p.y == q.y ? 0 : (q.x - p.x) / (q.y - p.y)};
         }
     }
     bool row(double y, double& xlo, double& xhi) const
     {
         xlo = 1e300, xhi = -1e300;
-        for (const base::Vec2 c : {a_, b_}) {
+        for (const base::Vec2 c : {m_a, m_b}) {
             const double dy = y - c.y;
-            if (std::abs(dy) <= r_) {
-                const double half = std::sqrt(r_ * r_ - dy * dy);
+            if (std::abs(dy) <= m_r) {
+                const double half = std::sqrt(m_r * m_r - dy * dy);
                 xlo = std::min(xlo, c.x - half), xhi = std::max(xhi, c.x + half);
             }
         }
-        for (const Edge& e : edges_) {
+        for (const Edge& e : m_edges) {
             if (y < e.ylo || y > e.yhi || e.ylo == e.yhi)
                 continue;
             const double x = e.x0 + (y - e.y0) * e.slope;
@@ -50,9 +50,9 @@ private:
     struct Edge {
         double ylo, yhi, x0, y0, slope;
     };
-    base::Vec2 a_, b_;
-    double r_;
-    Edge edges_[4];
+    base::Vec2 m_a, m_b;
+    double m_r;
+    Edge m_edges[4];
 };
 
 // The minimum of a convex function on [lo, hi] by golden section (one evaluation per step).
@@ -79,20 +79,20 @@ void ColumnRect::add(const ColumnRect& r)
         add(r.i0, r.j0), add(r.i1, r.j1);
 }
 
-HeightField::HeightField(const base::Box3& box, double resolutionMm) : box_(box)
+HeightField::HeightField(const base::Box3& box, double resolutionMm) : m_box(box)
 {
     const double res = std::max(resolutionMm, 1e-3);
-    nx_ = std::max(2, int(std::ceil((box.max.x - box.min.x) / res - 1e-9)));
-    ny_ = std::max(2, int(std::ceil((box.max.y - box.min.y) / res - 1e-9)));
-    dx_ = (box.max.x - box.min.x) / nx_;
-    dy_ = (box.max.y - box.min.y) / ny_;
-    top_.assign(std::size_t(nx_) * ny_, float(box.max.z));
-    bottom_.assign(top_.size(), float(box.min.z));
-    lastCut_.assign(top_.size(), -1);
-    tilesX_ = (nx_ + kTile - 1) / kTile;
-    tilesY_ = (ny_ + kTile - 1) / kTile;
-    tileTop_.assign(std::size_t(tilesX_) * tilesY_, float(box.max.z));
-    tileStale_.assign(tileTop_.size(), 0);
+    m_nx = std::max(2, int(std::ceil((box.max.x - box.min.x) / res - 1e-9)));
+    m_ny = std::max(2, int(std::ceil((box.max.y - box.min.y) / res - 1e-9)));
+    m_dx = (box.max.x - box.min.x) / m_nx;
+    m_dy = (box.max.y - box.min.y) / m_ny;
+    m_top.assign(std::size_t(m_nx) * m_ny, float(box.max.z));
+    m_bottom.assign(m_top.size(), float(box.min.z));
+    m_lastCut.assign(m_top.size(), -1);
+    m_tilesX = (m_nx + kTile - 1) / kTile;
+    m_tilesY = (m_ny + kTile - 1) / kTile;
+    m_tileTop.assign(std::size_t(m_tilesX) * m_tilesY, float(box.max.z));
+    m_tileStale.assign(m_tileTop.size(), 0);
 }
 
 void HeightField::refreshTiles(const ColumnRect& rect)
@@ -101,90 +101,92 @@ void HeightField::refreshTiles(const ColumnRect& rect)
         return;
     for (int tj = rect.j0 / kTile; tj <= rect.j1 / kTile; ++tj)
         for (int ti = rect.i0 / kTile; ti <= rect.i1 / kTile; ++ti)
-            tileStale_[std::size_t(tj) * tilesX_ + ti] = 1;
+            m_tileStale[std::size_t(tj) * m_tilesX + ti] = 1;
 }
 
 float HeightField::tileTop(int ti, int tj) const
 {
-    const std::size_t t = std::size_t(tj) * tilesX_ + ti;
-    if (tileStale_[t]) {
+    const std::size_t t = std::size_t(tj) * m_tilesX + ti;
+    if (m_tileStale[t]) {
         float high = -std::numeric_limits<float>::infinity();
-        for (int j = tj * kTile; j < std::min(ny_, (tj + 1) * kTile); ++j)
-            for (int i = ti * kTile; i < std::min(nx_, (ti + 1) * kTile); ++i)
-                high = std::max(high, top_[index(i, j)]);
-        tileTop_[t] = high;
-        tileStale_[t] = 0;
+        for (int j = tj * kTile; j < std::min(m_ny, (tj + 1) * kTile); ++j)
+            for (int i = ti * kTile; i < std::min(m_nx, (ti + 1) * kTile); ++i)
+                high = std::max(high, m_top[index(i, j)]);
+        m_tileTop[t] = high;
+        m_tileStale[t] = 0;
     }
-    return tileTop_[t];
+    return m_tileTop[t];
 }
 
 std::unique_ptr<HeightField> HeightField::fromMesh(const TriangleMesh& blank, double resolutionMm)
 {
     auto field = std::make_unique<HeightField>(blank.bounds(), resolutionMm);
     HeightField& f = *field;
-    std::fill(f.top_.begin(), f.top_.end(), kNone);
-    std::fill(f.bottom_.begin(), f.bottom_.end(), -kNone);
-    const RayGrid grid{2, f.box_.min.x, f.box_.min.y, f.dx_, f.dy_, f.nx_, f.ny_};
+    std::fill(f.m_top.begin(), f.m_top.end(), kNone);
+    std::fill(f.m_bottom.begin(), f.m_bottom.end(), -kNone);
+    const RayGrid grid{2, f.m_box.min.x, f.m_box.min.y, f.m_dx, f.m_dy, f.m_nx, f.m_ny};
     forEachCrossing(blank, grid, [&](int i, int j, double z, bool) {
         const std::size_t k = f.index(i, j);
-        f.top_[k] = std::max(f.top_[k], float(z));
-        f.bottom_[k] = std::min(f.bottom_[k], float(z));
+        f.m_top[k] = std::max(f.m_top[k], float(z));
+        f.m_bottom[k] = std::min(f.m_bottom[k], float(z));
     });
-    for (std::size_t k = 0; k < f.top_.size(); ++k)
-        if (f.top_[k] == kNone)  // no blank over this column: an empty column at the blank's foot
-            f.top_[k] = f.bottom_[k] = float(f.box_.min.z);
-    f.refreshTiles({0, 0, f.nx_ - 1, f.ny_ - 1});
+    for (std::size_t k = 0; k < f.m_top.size(); ++k)
+        if (f.m_top[k] == kNone)  // no blank over this column: an empty column at the blank's foot
+            f.m_top[k] = f.m_bottom[k] = float(f.m_box.min.z);
+    f.refreshTiles({0, 0, f.m_nx - 1, f.m_ny - 1});
     return field;
 }
 
 double HeightField::volumeMm3() const
 {
     double sum = 0;
-    for (std::size_t k = 0; k < top_.size(); ++k)
-        sum += double(top_[k]) - bottom_[k];
-    return sum * dx_ * dy_;
+    for (std::size_t k = 0; k < m_top.size(); ++k)
+        sum += double(m_top[k]) - m_bottom[k];
+    return sum * m_dx * m_dy;
 }
 
-ColumnRect HeightField::takeChanged() { return std::exchange(changed_, ColumnRect{}); }
+ColumnRect HeightField::takeChanged() { return std::exchange(m_changed, ColumnRect{}); }
 
 CutResult HeightField::cut(const Move& move, std::size_t moveIndex, const ToolShape& tool)
 {
     CutResult result;
     if (!move.moves() || !move.positionKnown || tool.radiusMm() <= 0)
         return result;
-    cutNow_ = {};
+    m_cutNow = {};
     if (vertical(move.fromAxis) && vertical(move.toAxis)) {
-        checkHolder(move, tool, result);
+        // The cutter leads: the shank and holder meet what it left (a shank as wide as the
+        // cutter rides in its own slot), so they are checked against the stock after the cut.
         cutVertical(move, moveIndex, tool, result);
+        checkHolder(move, tool, result);
     } else {
         cutTilted(move, moveIndex, tool, result);
     }
-    refreshTiles(cutNow_);
-    changed_.add(cutNow_);
-    lastEnd_ = move.to;
-    lastRadius_ = tool.radiusMm();
-    lastFlatVertical_ = tool.flatBottomed() && vertical(move.toAxis);
+    refreshTiles(m_cutNow);
+    m_changed.add(m_cutNow);
+    m_lastEnd = move.to;
+    m_lastRadius = tool.radiusMm();
+    m_lastFlatVertical = tool.flatBottomed() && vertical(move.toAxis);
     return result;
 }
 
 inline void HeightField::lower(int i, int j, double height, std::size_t moveIndex, CutResult& result)
 {
     const std::size_t k = index(i, j);
-    const double newTop = std::max(height, double(bottom_[k]));
-    if (newTop >= top_[k] - kEps)
+    const double newTop = std::max(height, double(m_bottom[k]));
+    if (newTop >= m_top[k] - kEps)
         return;
-    result.removedMm3 += (top_[k] - newTop) * dx_ * dy_;
-    top_[k] = float(newTop);
-    lastCut_[k] = std::int32_t(moveIndex);
-    cutNow_.add(i, j);
-    if (!design_.empty() && newTop < design_[k] - tolerance_)
+    result.removedMm3 += (m_top[k] - newTop) * m_dx * m_dy;
+    m_top[k] = float(newTop);
+    m_lastCut[k] = std::int32_t(moveIndex);
+    m_cutNow.add(i, j);
+    if (!m_design.empty() && newTop < m_design[k] - m_tolerance)
         noteGouge(i, j, newTop, result);
 }
 
 void HeightField::noteGouge(int i, int j, double z, CutResult& result) const
 {
     const double depth = depthInDesign(i, j, z);
-    if (depth > tolerance_ && depth > result.gougeMm) {
+    if (depth > m_tolerance && depth > result.gougeMm) {
         result.gougeMm = depth;
         result.gougeAt = {columnX(i), columnY(j), z};
     }
@@ -205,7 +207,7 @@ void HeightField::cutVertical(const Move& move, std::size_t moveIndex, const Too
     const double r = tool.radiusMm(), reach = r;
     const bool flat = tool.flatBottomed();
     const bool plunge = -dz > std::sqrt(vv);  // descends along the axis more than it travels aside
-    const double axisBand = 0.75 * std::max(dx_, dy_);
+    const double axisBand = 0.75 * std::max(m_dx, m_dy);
     auto zAt = [&](double t) { return z0 + t * dz; };
     // The parameters [ta, tb] where the column lies within `radius` of the centre.
     auto under = [&](double e2, double tStar, double radius, double& ta, double& tb) {
@@ -219,18 +221,18 @@ void HeightField::cutVertical(const Move& move, std::size_t moveIndex, const Too
         ta = std::max(0.0, tStar - half), tb = std::min(1.0, tStar + half);
         return ta <= tb;
     };
-    const int j0 = std::max(0, int(std::floor((std::min(c0.y, c1.y) - reach - box_.min.y) / dy_)));
-    const int j1 = std::min(ny_ - 1, int(std::floor((std::max(c0.y, c1.y) + reach - box_.min.y) / dy_)));
+    const int j0 = std::max(0, int(std::floor((std::min(c0.y, c1.y) - reach - m_box.min.y) / m_dy)));
+    const int j1 = std::min(m_ny - 1, int(std::floor((std::max(c0.y, c1.y) + reach - m_box.min.y) / m_dy)));
     const Capsule capsule(c0, c1, r);
     if (flat && std::abs(dz) < 1e-12 && !plunge) {
         // A flat tool moving level: every column under the capsule goes down to z, so a row is
         // one span of columns (those whose centres lie in it) and a tight loop over it. When the
         // last cut left this tool standing at the start, its disc there is already at z or
         // below: only the columns beyond it are looked at (short arc pieces sweep a crescent).
-        const bool startDone = lastFlatVertical_ && lastRadius_ == r && lastEnd_ == move.from;
+        const bool startDone = m_lastFlatVertical && m_lastRadius == r && m_lastEnd == move.from;
         auto sweep = [&](int j, int i0, int i1) {
-            const float* row = &top_[index(0, j)];
-            for (int i = std::max(0, i0); i <= std::min(nx_ - 1, i1); ++i)
+            const float* row = &m_top[index(0, j)];
+            for (int i = std::max(0, i0); i <= std::min(m_nx - 1, i1); ++i)
                 if (row[i] > z0 + kEps)
                     lower(i, j, z0, moveIndex, result);
         };
@@ -239,16 +241,16 @@ void HeightField::cutVertical(const Move& move, std::size_t moveIndex, const Too
             const double y = columnY(j);
             if (!capsule.row(y, xlo, xhi))
                 continue;
-            const int i0 = int(std::ceil((xlo - box_.min.x) / dx_ - 0.5));
-            const int i1 = int(std::floor((xhi - box_.min.x) / dx_ - 0.5));
+            const int i0 = int(std::ceil((xlo - m_box.min.x) / m_dx - 0.5));
+            const int i1 = int(std::floor((xhi - m_box.min.x) / m_dx - 0.5));
             const double dy = y - c0.y;
             if (!startDone || std::abs(dy) >= r) {
                 sweep(j, i0, i1);
                 continue;
             }
             const double half = std::sqrt(r * r - dy * dy);  // the start disc's chord on this row
-            const int s0 = int(std::ceil((c0.x - half - box_.min.x) / dx_ - 0.5));
-            const int s1 = int(std::floor((c0.x + half - box_.min.x) / dx_ - 0.5));
+            const int s0 = int(std::ceil((c0.x - half - m_box.min.x) / m_dx - 0.5));
+            const int s1 = int(std::floor((c0.x + half - m_box.min.x) / m_dx - 0.5));
             sweep(j, i0, std::min(i1, s0 - 1));
             sweep(j, std::max(i0, s1 + 1), i1);
         }
@@ -259,8 +261,8 @@ void HeightField::cutVertical(const Move& move, std::size_t moveIndex, const Too
         double xlo, xhi;
         if (!capsule.row(y, xlo, xhi))
             continue;
-        const int i0 = std::max(0, int(std::floor((xlo - box_.min.x) / dx_ - 0.5)));
-        const int i1 = std::min(nx_ - 1, int(std::ceil((xhi - box_.min.x) / dx_ - 0.5)));
+        const int i0 = std::max(0, int(std::floor((xlo - m_box.min.x) / m_dx - 0.5)));
+        const int i1 = std::min(m_nx - 1, int(std::ceil((xhi - m_box.min.x) / m_dx - 0.5)));
         // A flat tool ramping: its lowest point over a column is where the column last (going
         // down) or first (going up) lies under it, so the disc at that end of the move is at that
         // end's height, without a root per column. Going up from where the last cut left this
@@ -269,15 +271,15 @@ void HeightField::cutVertical(const Move& move, std::size_t moveIndex, const Too
         const bool down = dz < 0;
         const base::Vec2 disc = down ? c1 : c0;
         const double discZ = down ? z0 + dz : z0;
-        const bool discDone = !down && lastFlatVertical_ && lastRadius_ == r && lastEnd_ == move.from;
+        const bool discDone = !down && m_lastFlatVertical && m_lastRadius == r && m_lastEnd == move.from;
         if (flat && !plunge && vv >= 1e-18 && std::abs(y - disc.y) < r) {
             const double half = std::sqrt(r * r - (y - disc.y) * (y - disc.y));
-            k0 = int(std::ceil((disc.x - half - box_.min.x) / dx_ - 0.5));
-            k1 = int(std::floor((disc.x + half - box_.min.x) / dx_ - 0.5));
+            k0 = int(std::ceil((disc.x - half - m_box.min.x) / m_dx - 0.5));
+            k1 = int(std::floor((disc.x + half - m_box.min.x) / m_dx - 0.5));
         }
         for (int i = i0; i <= i1; ++i) {
             if (i >= k0 && i <= k1) {
-                if (!discDone && top_[index(i, j)] > discZ + kEps)
+                if (!discDone && m_top[index(i, j)] > discZ + kEps)
                     lower(i, j, discZ, moveIndex, result);
                 continue;
             }
@@ -302,7 +304,7 @@ void HeightField::cutVertical(const Move& move, std::size_t moveIndex, const Too
                     },
                     ta, tb);
             }
-            if (f >= top_[index(i, j)] - kEps)
+            if (f >= m_top[index(i, j)] - kEps)
                 continue;
             const double before = result.removedMm3;
             lower(i, j, f, moveIndex, result);
@@ -330,19 +332,19 @@ void HeightField::checkHolder(const Move& move, const ToolShape& tool, CutResult
         parts.push_back({tool.holderRadiusMm(), tool.stickOutMm()});
     for (const Part& part : parts) {
         const double reach = part.radius, lowest = zLow + part.bottom;
-        if (lowest >= box_.max.z)  // above the highest the stock ever was (the usual case)
+        if (lowest >= m_box.max.z)  // above the highest the stock ever was (the usual case)
             continue;
-        const int i0 = std::max(0, int(std::floor((std::min(c0.x, c0.x + v.x) - reach - box_.min.x) / dx_)));
-        const int i1 = std::min(nx_ - 1, int(std::floor((std::max(c0.x, c0.x + v.x) + reach - box_.min.x) / dx_)));
-        const int j0 = std::max(0, int(std::floor((std::min(c0.y, c0.y + v.y) - reach - box_.min.y) / dy_)));
-        const int j1 = std::min(ny_ - 1, int(std::floor((std::max(c0.y, c0.y + v.y) + reach - box_.min.y) / dy_)));
+        const int i0 = std::max(0, int(std::floor((std::min(c0.x, c0.x + v.x) - reach - m_box.min.x) / m_dx)));
+        const int i1 = std::min(m_nx - 1, int(std::floor((std::max(c0.x, c0.x + v.x) + reach - m_box.min.x) / m_dx)));
+        const int j0 = std::max(0, int(std::floor((std::min(c0.y, c0.y + v.y) - reach - m_box.min.y) / m_dy)));
+        const int j1 = std::min(m_ny - 1, int(std::floor((std::max(c0.y, c0.y + v.y) + reach - m_box.min.y) / m_dy)));
         for (int tj = j0 / kTile; tj <= j1 / kTile && j0 <= j1; ++tj)
             for (int ti = i0 / kTile; ti <= i1 / kTile && i0 <= i1; ++ti) {
                 if (tileTop(ti, tj) <= lowest + result.holderInterferenceMm)
                     continue;
                 for (int j = std::max(j0, tj * kTile); j <= std::min(j1, (tj + 1) * kTile - 1); ++j)
                     for (int i = std::max(i0, ti * kTile); i <= std::min(i1, (ti + 1) * kTile - 1); ++i) {
-                        const double oldTop = top_[index(i, j)];
+                        const double oldTop = m_top[index(i, j)];
                         if (oldTop <= lowest + result.holderInterferenceMm)
                             continue;
                         const base::Vec2 w = base::Vec2{columnX(i), columnY(j)} - c0;
@@ -370,24 +372,24 @@ void HeightField::checkHolder(const Move& move, const ToolShape& tool, CutResult
 // need the dexel stock).
 void HeightField::cutTilted(const Move& move, std::size_t moveIndex, const ToolShape& tool, CutResult& result)
 {
-    const double step = 0.5 * std::min(dx_, dy_);
+    const double step = 0.5 * std::min(m_dx, m_dy);
     const double turn = move.fromAxis.angleTo(move.toAxis) * tool.totalLengthMm();
     const int poses = std::max(1, int(std::ceil(std::max(move.lengthMm(), turn) / step)));
-    const double reach = tool.boundingRadiusMm(), below = box_.min.z - 1;
+    const double reach = tool.boundingRadiusMm(), below = m_box.min.z - 1;
     const Vec3 up{0, 0, 1};
     for (int p = 0; p <= poses; ++p) {
         const double t = double(p) / poses;
         const Vec3 tip = move.from + (move.to - move.from) * t;
         const Vec3 axis = (move.fromAxis * (1 - t) + move.toAxis * t).normalized();
         const Vec3 end = tip + axis * tool.totalLengthMm();
-        const int i0 = std::max(0, int(std::floor((std::min(tip.x, end.x) - reach - box_.min.x) / dx_)));
-        const int i1 = std::min(nx_ - 1, int(std::floor((std::max(tip.x, end.x) + reach - box_.min.x) / dx_)));
-        const int j0 = std::max(0, int(std::floor((std::min(tip.y, end.y) - reach - box_.min.y) / dy_)));
-        const int j1 = std::min(ny_ - 1, int(std::floor((std::max(tip.y, end.y) + reach - box_.min.y) / dy_)));
+        const int i0 = std::max(0, int(std::floor((std::min(tip.x, end.x) - reach - m_box.min.x) / m_dx)));
+        const int i1 = std::min(m_nx - 1, int(std::floor((std::max(tip.x, end.x) + reach - m_box.min.x) / m_dx)));
+        const int j0 = std::max(0, int(std::floor((std::min(tip.y, end.y) - reach - m_box.min.y) / m_dy)));
+        const int j1 = std::min(m_ny - 1, int(std::floor((std::max(tip.y, end.y) + reach - m_box.min.y) / m_dy)));
         for (int j = j0; j <= j1; ++j)
             for (int i = i0; i <= i1; ++i) {
                 const Vec3 origin{columnX(i), columnY(j), below};
-                const double oldTop = top_[index(i, j)];
+                const double oldTop = m_top[index(i, j)];
                 for (ToolPart part : {ToolPart::Shank, ToolPart::Holder}) {
                     const LineSpan s = tool.intersect(part, tip, axis, origin, up);
                     if (!s.empty() && oldTop - (below + s.s0) > result.holderInterferenceMm)
@@ -401,7 +403,7 @@ void HeightField::cutTilted(const Move& move, std::size_t moveIndex, const ToolS
                 lower(i, j, below + s.s0, moveIndex, result);
                 const Vec3 off = origin - tip;
                 const double radial = (off - axis * off.dot(axis)).length();
-                if (result.removedMm3 > before && radial <= 0.75 * std::max(dx_, dy_) &&
+                if (result.removedMm3 > before && radial <= 0.75 * std::max(m_dx, m_dy) &&
                     -(move.to - move.from).dot(axis) > (move.to - move.from).length() * std::sqrt(0.5))
                     result.removedOnAxis = true;
             }

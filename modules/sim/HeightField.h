@@ -39,20 +39,20 @@ public:
     void setDesign(const TriangleMesh& model, double toleranceMm) override;
     Deviation compare() const override;
     double volumeMm3() const override;
-    base::Box3 bounds() const override { return box_; }
-    double resolutionMm() const override { return std::max(dx_, dy_); }
+    base::Box3 bounds() const override { return m_box; }
+    double resolutionMm() const override { return std::max(m_dx, m_dy); }
     TriangleMesh mesh() const override;
     std::unique_ptr<Stock> clone() const override { return std::make_unique<HeightField>(*this); }
 
-    int columnsX() const { return nx_; }
-    int columnsY() const { return ny_; }
-    double columnX(int i) const { return box_.min.x + (i + 0.5) * dx_; }
-    double columnY(int j) const { return box_.min.y + (j + 0.5) * dy_; }
-    double top(int i, int j) const { return top_[index(i, j)]; }
-    double bottom(int i, int j) const { return bottom_[index(i, j)]; }
+    int columnsX() const { return m_nx; }
+    int columnsY() const { return m_ny; }
+    double columnX(int i) const { return m_box.min.x + (i + 0.5) * m_dx; }
+    double columnY(int j) const { return m_box.min.y + (j + 0.5) * m_dy; }
+    double top(int i, int j) const { return m_top[index(i, j)]; }
+    double bottom(int i, int j) const { return m_bottom[index(i, j)]; }
     // The top height of the design model over a column; -infinity where the model is not.
-    double designTop(int i, int j) const { return design_.empty() ? kNone : design_[index(i, j)]; }
-    std::int64_t lastCut(int i, int j) const { return lastCut_[index(i, j)]; }
+    double designTop(int i, int j) const { return m_design.empty() ? kNone : m_design[index(i, j)]; }
+    std::int64_t lastCut(int i, int j) const { return m_lastCut[index(i, j)]; }
 
     // Playing: the columns cut since the last call (and forget them), and mesh() brought up to
     // date over such a rectangle; mesh()'s triangles never change, only its top heights.
@@ -63,7 +63,7 @@ public:
 
 private:
     static constexpr float kNone = -std::numeric_limits<float>::infinity();
-    std::size_t index(int i, int j) const { return std::size_t(j) * nx_ + i; }
+    std::size_t index(int i, int j) const { return std::size_t(j) * m_nx + i; }
     bool sameBottom() const;
     // The cut of a vertical tool (the analytic sweep) and of a tilted one (poses).
     void cutVertical(const Move& move, std::size_t moveIndex, const ToolShape& tool, CutResult& result);
@@ -83,22 +83,22 @@ private:
     double depthInDesign(int i, int j, double z) const;
     double distanceToDesign(int i, int j, double z) const;
 
-    base::Box3 box_;
-    int nx_ = 0, ny_ = 0;
-    double dx_ = 0, dy_ = 0;
-    std::vector<float> top_, bottom_, design_;
-    std::vector<float> designNear_;  // the highest design top within the search cap of each column
-    std::vector<std::int32_t> lastCut_;
-    double tolerance_ = 0;
-    ColumnRect changed_, cutNow_;
-    int tilesX_ = 0, tilesY_ = 0;
-    mutable std::vector<float> tileTop_;
-    mutable std::vector<std::uint8_t> tileStale_;
+    base::Box3 m_box;
+    int m_nx = 0, m_ny = 0;
+    double m_dx = 0, m_dy = 0;
+    std::vector<float> m_top, m_bottom, m_design;
+    std::vector<float> m_designNear;  // the highest design top within the search cap of each column
+    std::vector<std::int32_t> m_lastCut;
+    double m_tolerance = 0;
+    ColumnRect m_changed, m_cutNow;
+    int m_tilesX = 0, m_tilesY = 0;
+    mutable std::vector<float> m_tileTop;
+    mutable std::vector<std::uint8_t> m_tileStale;
     // Where the last cut left the tool: a level flat move starting there finds its start disc
     // already at its height, so it sweeps only what lies beyond (see cutVertical).
-    Vec3 lastEnd_;
-    double lastRadius_ = -1;
-    bool lastFlatVertical_ = false;
+    Vec3 m_lastEnd;
+    double m_lastRadius = -1;
+    bool m_lastFlatVertical = false;
 };
 
 }  // namespace camwb::sim

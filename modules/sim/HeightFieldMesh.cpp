@@ -41,42 +41,42 @@ void windowMax(const float* in, float* out, int n, int stride, int radius)
 
 void HeightField::setDesign(const TriangleMesh& model, double toleranceMm)
 {
-    tolerance_ = toleranceMm;
-    design_.clear();
+    m_tolerance = toleranceMm;
+    m_design.clear();
     if (model.empty())
         return;
-    design_.assign(top_.size(), kNone);
-    const RayGrid grid{2, box_.min.x, box_.min.y, dx_, dy_, nx_, ny_};
+    m_design.assign(m_top.size(), kNone);
+    const RayGrid grid{2, m_box.min.x, m_box.min.y, m_dx, m_dy, m_nx, m_ny};
     forEachCrossing(model, grid, [&](int i, int j, double z, bool) {
-        float& d = design_[index(i, j)];
+        float& d = m_design[index(i, j)];
         d = std::max(d, float(z));
     });
     // The highest design top near each column bounds every sideways distance from below, so a
     // column over a level stretch of the model skips the search (compare() stays linear).
-    const int radius = int(std::ceil(searchCap(std::min(dx_, dy_)) / std::min(dx_, dy_))) + 1;
-    std::vector<float> rows(design_.size());
-    designNear_.resize(design_.size());
-    for (int j = 0; j < ny_; ++j)
-        windowMax(&design_[index(0, j)], &rows[index(0, j)], nx_, 1, radius);
-    for (int i = 0; i < nx_; ++i)
-        windowMax(&rows[index(i, 0)], &designNear_[index(i, 0)], ny_, nx_, radius);
+    const int radius = int(std::ceil(searchCap(std::min(m_dx, m_dy)) / std::min(m_dx, m_dy))) + 1;
+    std::vector<float> rows(m_design.size());
+    m_designNear.resize(m_design.size());
+    for (int j = 0; j < m_ny; ++j)
+        windowMax(&m_design[index(0, j)], &rows[index(0, j)], m_nx, 1, radius);
+    for (int i = 0; i < m_nx; ++i)
+        windowMax(&rows[index(i, 0)], &m_designNear[index(i, 0)], m_ny, m_nx, radius);
 }
 
 // The distance from (q, z), inside the design, to its outside {z' > designTop(q')}: straight up,
 // or sideways to a column whose design top is lower (then up over it), within the search cap.
 double HeightField::depthInDesign(int i, int j, double z) const
 {
-    const double cell = std::min(dx_, dy_), cap = searchCap(cell);
-    double best = design_[index(i, j)] - z;
+    const double cell = std::min(m_dx, m_dy), cap = searchCap(cell);
+    double best = m_design[index(i, j)] - z;
     for (int r = 1; (r - 0.5) * cell < best && (r - 1) * cell <= cap; ++r)
         for (int dj = -r; dj <= r; ++dj)
             for (int di = -r; di <= r; di += (std::abs(dj) == r ? 1 : 2 * r)) {
                 const int ii = i + di, jj = j + dj;
-                const double side = std::hypot(di * dx_, dj * dy_) - 0.5 * cell;
+                const double side = std::hypot(di * m_dx, dj * m_dy) - 0.5 * cell;
                 if (side >= best)
                     continue;
-                const bool outsideGrid = ii < 0 || jj < 0 || ii >= nx_ || jj >= ny_;
-                const double up = outsideGrid ? 0 : std::max(0.0, double(design_[index(ii, jj)]) - z);
+                const bool outsideGrid = ii < 0 || jj < 0 || ii >= m_nx || jj >= m_ny;
+                const double up = outsideGrid ? 0 : std::max(0.0, double(m_design[index(ii, jj)]) - z);
                 best = std::min(best, std::hypot(side, up));
             }
     return best;
@@ -87,30 +87,30 @@ double HeightField::depthInDesign(int i, int j, double z) const
 // design (or over its bottom where the design is absent).
 double HeightField::distanceToDesign(int i, int j, double z) const
 {
-    const double cell = std::min(dx_, dy_), cap = searchCap(cell);
-    const double own = design_[index(i, j)];
+    const double cell = std::min(m_dx, m_dy), cap = searchCap(cell);
+    const double own = m_design[index(i, j)];
     double best = own > kNone ? z - own : 1e300;
-    if (z - designNear_[index(i, j)] >= best)  // nothing near is higher than the column's own
-        return best < 1e300 ? best : z - bottom_[index(i, j)];
+    if (z - m_designNear[index(i, j)] >= best)  // nothing near is higher than the column's own
+        return best < 1e300 ? best : z - m_bottom[index(i, j)];
     for (int r = 1; (r - 0.5) * cell < best && (r - 1) * cell <= cap; ++r)
         for (int dj = -r; dj <= r; ++dj)
             for (int di = -r; di <= r; di += (std::abs(dj) == r ? 1 : 2 * r)) {
                 const int ii = i + di, jj = j + dj;
-                if (ii < 0 || jj < 0 || ii >= nx_ || jj >= ny_ || design_[index(ii, jj)] == kNone)
+                if (ii < 0 || jj < 0 || ii >= m_nx || jj >= m_ny || m_design[index(ii, jj)] == kNone)
                     continue;
-                const double side = std::hypot(di * dx_, dj * dy_) - 0.5 * cell;
-                best = std::min(best, std::hypot(side, std::max(0.0, z - design_[index(ii, jj)])));
+                const double side = std::hypot(di * m_dx, dj * m_dy) - 0.5 * cell;
+                best = std::min(best, std::hypot(side, std::max(0.0, z - m_design[index(ii, jj)])));
             }
-    return best < 1e300 ? best : z - bottom_[index(i, j)];
+    return best < 1e300 ? best : z - m_bottom[index(i, j)];
 }
 
 double HeightField::deviation(int i, int j) const
 {
     const std::size_t k = index(i, j);
-    if (design_.empty())
+    if (m_design.empty())
         return 0;
-    const double z = top_[k], d = design_[k];
-    if (d == kNone && z <= bottom_[k] + 1e-6)
+    const double z = m_top[k], d = m_design[k];
+    if (d == kNone && z <= m_bottom[k] + 1e-6)
         return 0;  // nothing left and nothing wanted
     if (d > kNone && z < d)
         return -depthInDesign(i, j, z);
@@ -120,26 +120,31 @@ double HeightField::deviation(int i, int j) const
 Deviation HeightField::compare() const
 {
     Deviation out;
-    out.perVertex.assign(top_.size() + (sameBottom() ? 2 * (nx_ + ny_) - 3 : top_.size()), 0.f);
-    if (design_.empty())
+    out.perVertex.assign(m_top.size() + (sameBottom() ? 2 * (m_nx + m_ny) - 3 : m_top.size()), 0.f);
+    if (m_design.empty())
         return out;
-    for (int j = 0; j < ny_; ++j)
-        for (int i = 0; i < nx_; ++i) {
+    for (int j = 0; j < m_ny; ++j)
+        for (int i = 0; i < m_nx; ++i) {
             const double dev = deviation(i, j);
             const std::size_t k = index(i, j);
             out.perVertex[k] = float(dev);
-            const Vec3 at{columnX(i), columnY(j), top_[k]};
+            const Vec3 at{columnX(i), columnY(j), m_top[k]};
+            if (m_design[k] == kNone) {
+                if (m_top[k] - m_bottom[k] > out.maxOutsideMm)
+                    out.maxOutsideMm = m_top[k] - m_bottom[k], out.outsideAt = at;
+                continue;
+            }
             if (dev > out.maxLeftoverMm)
-                out.maxLeftoverMm = dev, out.leftoverAt = at, out.leftoverMove = lastCut_[k];
-            if (-dev > tolerance_ && -dev > out.maxGougeMm)
-                out.maxGougeMm = -dev, out.gougeAt = at, out.gougeMove = lastCut_[k];
+                out.maxLeftoverMm = dev, out.leftoverAt = at, out.leftoverMove = m_lastCut[k];
+            if (-dev > m_tolerance && -dev > out.maxGougeMm)
+                out.maxGougeMm = -dev, out.gougeAt = at, out.gougeMove = m_lastCut[k];
         }
     return out;
 }
 
 bool HeightField::sameBottom() const
 {
-    return std::all_of(bottom_.begin(), bottom_.end(), [&](float b) { return b == bottom_.front(); });
+    return std::all_of(m_bottom.begin(), m_bottom.end(), [&](float b) { return b == m_bottom.front(); });
 }
 
 // One top vertex per column (the grid's outer vertices pushed out to the box's sides, so the mesh
@@ -149,10 +154,10 @@ TriangleMesh HeightField::mesh() const
 {
     TriangleMesh m;
     const bool flatBottom = sameBottom();
-    const std::size_t n = top_.size();
-    m.positions.reserve(3 * (flatBottom ? n + 2 * (nx_ + ny_) : 2 * n));
-    auto vx = [&](int i) { return i == 0 ? box_.min.x : i == nx_ - 1 ? box_.max.x : columnX(i); };
-    auto vy = [&](int j) { return j == 0 ? box_.min.y : j == ny_ - 1 ? box_.max.y : columnY(j); };
+    const std::size_t n = m_top.size();
+    m.positions.reserve(3 * (flatBottom ? n + 2 * (m_nx + m_ny) : 2 * n));
+    auto vx = [&](int i) { return i == 0 ? m_box.min.x : i == m_nx - 1 ? m_box.max.x : columnX(i); };
+    auto vy = [&](int j) { return j == 0 ? m_box.min.y : j == m_ny - 1 ? m_box.max.y : columnY(j); };
     auto put = [&](double x, double y, double z) {
         m.positions.insert(m.positions.end(), {float(x), float(y), float(z)});
         return std::uint32_t(m.positions.size() / 3 - 1);
@@ -160,37 +165,38 @@ TriangleMesh HeightField::mesh() const
     auto tri = [&](std::uint32_t a, std::uint32_t b, std::uint32_t c) {
         m.triangles.insert(m.triangles.end(), {a, b, c});
     };
-    for (int j = 0; j < ny_; ++j)
-        for (int i = 0; i < nx_; ++i)
-            put(vx(i), vy(j), top_[index(i, j)]);
-    for (int j = 0; j + 1 < ny_; ++j)
-        for (int i = 0; i + 1 < nx_; ++i) {
+    for (int j = 0; j < m_ny; ++j)
+        for (int i = 0; i < m_nx; ++i)
+            put(vx(i), vy(j), m_top[index(i, j)]);
+    for (int j = 0; j + 1 < m_ny; ++j)
+        for (int i = 0; i + 1 < m_nx; ++i) {
             const auto a = std::uint32_t(index(i, j)), b = a + 1, d = std::uint32_t(index(i, j + 1)), c = d + 1;
             tri(a, b, c), tri(a, c, d);
         }
     // The perimeter counter-clockwise seen from above.
     std::vector<std::pair<int, int>> ring;
-    for (int i = 0; i < nx_ - 1; ++i)
+    for (int i = 0; i < m_nx - 1; ++i)
         ring.push_back({i, 0});
-    for (int j = 0; j < ny_ - 1; ++j)
-        ring.push_back({nx_ - 1, j});
-    for (int i = nx_ - 1; i > 0; --i)
-        ring.push_back({i, ny_ - 1});
-    for (int j = ny_ - 1; j > 0; --j)
+    for (int j = 0; j < m_ny - 1; ++j)
+        ring.push_back({m_nx - 1, j});
+    for (int i = m_nx - 1; i > 0; --i)
+        ring.push_back({i, m_ny - 1});
+    for (int j = m_ny - 1; j > 0; --j)
         ring.push_back({0, j});
     std::vector<std::uint32_t> below(ring.size());
     if (flatBottom) {
         for (std::size_t k = 0; k < ring.size(); ++k)
-            below[k] = put(vx(ring[k].first), vy(ring[k].second), bottom_.front());
-        const std::uint32_t centre = put((box_.min.x + box_.max.x) / 2, (box_.min.y + box_.max.y) / 2, bottom_.front());
+            below[k] = put(vx(ring[k].first), vy(ring[k].second), m_bottom.front());
+        const std::uint32_t centre =
+            put((m_box.min.x + m_box.max.x) / 2, (m_box.min.y + m_box.max.y) / 2, m_bottom.front());
         for (std::size_t k = 0; k < ring.size(); ++k)
             tri(centre, below[(k + 1) % ring.size()], below[k]);
     } else {
-        for (int j = 0; j < ny_; ++j)
-            for (int i = 0; i < nx_; ++i)
-                put(vx(i), vy(j), bottom_[index(i, j)]);
-        for (int j = 0; j + 1 < ny_; ++j)
-            for (int i = 0; i + 1 < nx_; ++i) {
+        for (int j = 0; j < m_ny; ++j)
+            for (int i = 0; i < m_nx; ++i)
+                put(vx(i), vy(j), m_bottom[index(i, j)]);
+        for (int j = 0; j + 1 < m_ny; ++j)
+            for (int i = 0; i + 1 < m_nx; ++i) {
                 const auto a = std::uint32_t(n + index(i, j)), b = a + 1, d = std::uint32_t(n + index(i, j + 1)),
                            c = d + 1;
                 tri(a, c, b), tri(a, d, c);
@@ -211,9 +217,9 @@ void HeightField::updateMesh(TriangleMesh& mesh, const ColumnRect& changed) cons
 {
     if (changed.empty())
         return;
-    for (int j = std::max(0, changed.j0); j <= std::min(ny_ - 1, changed.j1); ++j)
-        for (int i = std::max(0, changed.i0); i <= std::min(nx_ - 1, changed.i1); ++i)
-            mesh.positions[3 * index(i, j) + 2] = top_[index(i, j)];
+    for (int j = std::max(0, changed.j0); j <= std::min(m_ny - 1, changed.j1); ++j)
+        for (int i = std::max(0, changed.i0); i <= std::min(m_nx - 1, changed.i1); ++i)
+            mesh.positions[3 * index(i, j) + 2] = m_top[index(i, j)];
 }
 
 }  // namespace camwb::sim

@@ -73,33 +73,33 @@ struct MoveGeometry {
 class GeometryWalker {
 public:
     GeometryWalker(const MoveList& list, const kinematics::Machine& machine) :
-        list_(list),
-        chain_(machine.kinematics),
-        limits_(axisLimits(machine))
+        m_list(list),
+        m_chain(machine.kinematics),
+        m_limits(axisLimits(machine))
     {
     }
-    const AxisLimits& limits() const { return limits_; }
+    const AxisLimits& limits() const { return m_limits; }
 
     MoveGeometry measure(const Move& move)
     {
         MoveGeometry g;
         if (!move.moves() || !move.positionKnown)
             return g;
-        const toolpath::Tool* tool = list_.tool(move.tool);
+        const toolpath::Tool* tool = m_list.tool(move.tool);
         const double toolLength = tool != nullptr ? tool->lengthMm : 0;
         // A three-axis chain maps the tip linearly: one piece. A five-axis move is looked at in
         // quarters, so a rotary axis that turns fast in the middle still caps the speed.
-        const int pieces = chain_.fiveAxis() ? 4 : 1;
+        const int pieces = m_chain.fiveAxis() ? 4 : 1;
         std::array<AxisVector, 5> q{};
         for (int p = 0; p <= pieces; ++p) {
-            const auto pose = machinePoseAt(chain_, move, double(p) / pieces, previous_, toolLength);
+            const auto pose = machinePoseAt(m_chain, move, double(p) / pieces, m_previous, toolLength);
             q[p] = axesOf(pose);
-            previous_ = pose.rotaryDeg;
+            m_previous = pose.rotaryDeg;
         }
         g.length = move.lengthMm();
         if (g.length < 1e-9) {
             g.length = 0;
-            for (int k = 3; k < limits_.count; ++k)
+            for (int k = 3; k < m_limits.count; ++k)
                 g.length = std::max(g.length, std::abs(q[pieces][k] - q[0][k]));
             g.rotationOnly = g.length > 1e-9;
             if (!g.rotationOnly)
@@ -108,11 +108,11 @@ public:
         const double pieceLength = g.length / pieces;
         for (int p = 0; p < pieces; ++p) {
             AxisVector rate{};
-            for (int k = 0; k < limits_.count; ++k) {
+            for (int k = 0; k < m_limits.count; ++k) {
                 rate[k] = (q[p + 1][k] - q[p][k]) / pieceLength;
                 if (std::abs(rate[k]) > 1e-12) {
-                    g.velocityCap = std::min(g.velocityCap, limits_.velocity[k] / std::abs(rate[k]));
-                    g.accelerationCap = std::min(g.accelerationCap, limits_.acceleration[k] / std::abs(rate[k]));
+                    g.velocityCap = std::min(g.velocityCap, m_limits.velocity[k] / std::abs(rate[k]));
+                    g.accelerationCap = std::min(g.accelerationCap, m_limits.acceleration[k] / std::abs(rate[k]));
                 }
             }
             if (p == 0)
@@ -124,10 +124,10 @@ public:
     }
 
 private:
-    const MoveList& list_;
-    const kinematics::KinematicChain& chain_;
-    AxisLimits limits_;
-    std::array<double, 2> previous_{0, 0};
+    const MoveList& m_list;
+    const kinematics::KinematicChain& m_chain;
+    AxisLimits m_limits;
+    std::array<double, 2> m_previous{0, 0};
 };
 
 double programmedSpeed(const Move& move, const MoveGeometry& g, const kinematics::Machine& machine, bool& fixedTime)

@@ -27,28 +27,28 @@ double pointSegment(const Vec3& p, const Segment& s)
 
 class SegmentGrid {
 public:
-    explicit SegmentGrid(std::vector<Segment> segments) : segments_(std::move(segments))
+    explicit SegmentGrid(std::vector<Segment> segments) : m_segments(std::move(segments))
     {
-        Vec3 lo = segments_[0].a, hi = lo;
-        for (const Segment& s : segments_)
+        Vec3 lo = m_segments[0].a, hi = lo;
+        for (const Segment& s : m_segments)
             for (const Vec3& v : {s.a, s.b}) {
                 lo = {std::min(lo.x, v.x), std::min(lo.y, v.y), std::min(lo.z, v.z)};
                 hi = {std::max(hi.x, v.x), std::max(hi.y, v.y), std::max(hi.z, v.z)};
             }
-        origin_ = lo;
+        m_origin = lo;
         const double extent = std::max({hi.x - lo.x, hi.y - lo.y, hi.z - lo.z, 1e-3});
         // About as many cells along the largest side as the cube root of the moves, times two.
-        const double perSide = std::clamp(2 * std::cbrt(double(segments_.size())), 1.0, 256.0);
-        cell_ = extent / perSide;
+        const double perSide = std::clamp(2 * std::cbrt(double(m_segments.size())), 1.0, 256.0);
+        m_cell = extent / perSide;
         const Vec3 span = hi - lo;
-        size_ = {int(span.x / cell_) + 1, int(span.y / cell_) + 1, int(span.z / cell_) + 1};
-        for (std::uint32_t i = 0; i < segments_.size(); ++i) {
-            const Segment& s = segments_[i];
+        m_size = {int(span.x / m_cell) + 1, int(span.y / m_cell) + 1, int(span.z / m_cell) + 1};
+        for (std::uint32_t i = 0; i < m_segments.size(); ++i) {
+            const Segment& s = m_segments[i];
             const auto a = cellOf(s.a), b = cellOf(s.b);
             for (int x = std::min(a[0], b[0]); x <= std::max(a[0], b[0]); ++x)
                 for (int y = std::min(a[1], b[1]); y <= std::max(a[1], b[1]); ++y)
                     for (int z = std::min(a[2], b[2]); z <= std::max(a[2], b[2]); ++z)
-                        cells_[key(x, y, z)].push_back(i);
+                        m_cells[key(x, y, z)].push_back(i);
         }
     }
 
@@ -56,21 +56,21 @@ public:
     {
         const auto c = cellOf(p);
         double best = std::numeric_limits<double>::infinity();
-        const int maxRing = std::max({size_[0], size_[1], size_[2]}) + 1;
+        const int maxRing = std::max({m_size[0], m_size[1], m_size[2]}) + 1;
         for (int r = 0; r <= maxRing; ++r) {
             for (int x = c[0] - r; x <= c[0] + r; ++x)
                 for (int y = c[1] - r; y <= c[1] + r; ++y)
                     for (int z = c[2] - r; z <= c[2] + r; ++z) {
                         if (std::max({std::abs(x - c[0]), std::abs(y - c[1]), std::abs(z - c[2])}) != r)
                             continue;  // inner rings were searched already
-                        const auto it = cells_.find(key(x, y, z));
-                        if (it != cells_.end())
+                        const auto it = m_cells.find(key(x, y, z));
+                        if (it != m_cells.end())
                             for (std::uint32_t i : it->second)
-                                best = std::min(best, pointSegment(p, segments_[i]));
+                                best = std::min(best, pointSegment(p, m_segments[i]));
                     }
             // Every cell of the next ring lies at least r cells from p (also where p lies outside
             // the grid and its cell was clamped: it is then only farther from them).
-            if (best <= r * cell_)
+            if (best <= r * m_cell)
                 break;
         }
         return best;
@@ -79,10 +79,10 @@ public:
 private:
     std::array<int, 3> cellOf(const Vec3& p) const
     {
-        const double v[3] = {p.x - origin_.x, p.y - origin_.y, p.z - origin_.z};
+        const double v[3] = {p.x - m_origin.x, p.y - m_origin.y, p.z - m_origin.z};
         std::array<int, 3> c{};
         for (int k = 0; k < 3; ++k)
-            c[k] = std::clamp(int(std::floor(v[k] / cell_)), 0, size_[k] - 1);
+            c[k] = std::clamp(int(std::floor(v[k] / m_cell)), 0, m_size[k] - 1);
         return c;
     }
     static std::int64_t key(int x, int y, int z)
@@ -90,11 +90,11 @@ private:
         return (std::int64_t(x) << 42) ^ (std::int64_t(y) << 21) ^ std::int64_t(z);
     }
 
-    std::vector<Segment> segments_;
-    std::unordered_map<std::int64_t, std::vector<std::uint32_t>> cells_;
-    Vec3 origin_;
-    double cell_ = 1;
-    std::array<int, 3> size_{1, 1, 1};
+    std::vector<Segment> m_segments;
+    std::unordered_map<std::int64_t, std::vector<std::uint32_t>> m_cells;
+    Vec3 m_origin;
+    double m_cell = 1;
+    std::array<int, 3> m_size{1, 1, 1};
 };
 
 }  // namespace

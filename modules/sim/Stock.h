@@ -30,12 +30,17 @@ struct CutResult {
 struct Deviation {
     // One value per vertex of Stock::mesh(): + material left above the model (mm), - gouge depth.
     std::vector<float> perVertex;
+    // Over the model (where a ray or column meets it): the remaining material's distance from it.
     double maxLeftoverMm = 0;
     Vec3 leftoverAt;
     std::int64_t leftoverMove = -1;  // the last move that cut near there; -1: none did
     double maxGougeMm = 0;
     Vec3 gougeAt;
     std::int64_t gougeMove = -1;
+    // Beside the model (no column or ray of it there): how thick the material still is, e.g. the
+    // foot a job leaves to hold the part. Not leftover of the part: a separate figure.
+    double maxOutsideMm = 0;
+    Vec3 outsideAt;
 };
 
 class Stock {

@@ -135,45 +135,45 @@ HolderShape holderShape(const std::string& name)
     return {name, {{50, 35}, {50, 35}}, false};  // the default: an ER32 nut, 70 mm to the gauge line
 }
 
-ToolShape::ToolShape(const toolpath::Tool& tool) : tool_(tool), holder_(holderShape(tool.holder))
+ToolShape::ToolShape(const toolpath::Tool& tool) : m_tool(tool), m_holder(holderShape(tool.holder))
 {
-    radius_ = std::max(0.0, tool.diameterMm / 2);
+    m_radius = std::max(0.0, tool.diameterMm / 2);
     const std::string kind = lower(tool.kind);
     const bool pointed = tool.pointAngleDeg > 0 && tool.pointAngleDeg < 180;
     if (kind == "ball")
-        corner_ = radius_;
+        m_corner = m_radius;
     else if ((kind == "drill" || kind == "chamfer") && pointed)
-        coneSlope_ = std::tan(tool.pointAngleDeg / 2 * kPi / 180);
+        m_coneSlope = std::tan(tool.pointAngleDeg / 2 * kPi / 180);
     else if (kind == "bull" || (kind != "flat" && !pointed))
-        corner_ = std::clamp(tool.cornerRadiusMm, 0.0, radius_);
+        m_corner = std::clamp(tool.cornerRadiusMm, 0.0, m_radius);
     // Without a flute length the whole stick-out cuts (nothing to call shank); without a length the
     // stick-out is three diameters, a common default for holders' gauge tables.
-    flute_ = tool.fluteLengthMm > 0 ? tool.fluteLengthMm : tool.lengthMm > 0 ? tool.lengthMm : 3 * tool.diameterMm;
-    stickOut_ = tool.lengthMm > 0 ? std::max(tool.lengthMm, flute_) : std::max(flute_, 3 * tool.diameterMm);
-    shankRadius_ = radius_;
+    m_flute = tool.fluteLengthMm > 0 ? tool.fluteLengthMm : tool.lengthMm > 0 ? tool.lengthMm : 3 * tool.diameterMm;
+    m_stickOut = tool.lengthMm > 0 ? std::max(tool.lengthMm, m_flute) : std::max(m_flute, 3 * tool.diameterMm);
+    m_shankRadius = m_radius;
 
-    if (coneSlope_ > 0) {
-        const double pointHeight = std::min(radius_ / coneSlope_, flute_);
-        cutter_.push_back({Piece::Cone, coneSlope_, 0, pointHeight});
-        if (pointHeight < flute_)
-            cutter_.push_back({Piece::Cylinder, radius_, pointHeight, flute_});
-    } else if (corner_ > 0 && corner_ >= radius_ - 1e-12) {
-        cutter_.push_back({Piece::Sphere, radius_, radius_, flute_});
-        if (radius_ < flute_)
-            cutter_.push_back({Piece::Cylinder, radius_, radius_, flute_});
-    } else if (corner_ > 0) {
-        cutter_.push_back({Piece::Corner, corner_, 0, std::min(corner_, flute_), radius_ - corner_});
-        cutter_.push_back({Piece::Cylinder, radius_ - corner_, 0, flute_});
-        if (corner_ < flute_)
-            cutter_.push_back({Piece::Cylinder, radius_, corner_, flute_});
+    if (m_coneSlope > 0) {
+        const double pointHeight = std::min(m_radius / m_coneSlope, m_flute);
+        m_cutter.push_back({Piece::Cone, m_coneSlope, 0, pointHeight});
+        if (pointHeight < m_flute)
+            m_cutter.push_back({Piece::Cylinder, m_radius, pointHeight, m_flute});
+    } else if (m_corner > 0 && m_corner >= m_radius - 1e-12) {
+        m_cutter.push_back({Piece::Sphere, m_radius, m_radius, m_flute});
+        if (m_radius < m_flute)
+            m_cutter.push_back({Piece::Cylinder, m_radius, m_radius, m_flute});
+    } else if (m_corner > 0) {
+        m_cutter.push_back({Piece::Corner, m_corner, 0, std::min(m_corner, m_flute), m_radius - m_corner});
+        m_cutter.push_back({Piece::Cylinder, m_radius - m_corner, 0, m_flute});
+        if (m_corner < m_flute)
+            m_cutter.push_back({Piece::Cylinder, m_radius, m_corner, m_flute});
     } else {
-        cutter_.push_back({Piece::Cylinder, radius_, 0, flute_});
+        m_cutter.push_back({Piece::Cylinder, m_radius, 0, m_flute});
     }
-    if (stickOut_ > flute_)
-        shank_.push_back({Piece::Cylinder, shankRadius_, flute_, stickOut_});
-    double h = stickOut_;
-    for (const HolderStep& s : holder_.steps) {
-        holderPieces_.push_back({Piece::Cylinder, s.diameterMm / 2, h, h + s.lengthMm});
+    if (m_stickOut > m_flute)
+        m_shank.push_back({Piece::Cylinder, m_shankRadius, m_flute, m_stickOut});
+    double h = m_stickOut;
+    for (const HolderStep& s : m_holder.steps) {
+        m_holderPieces.push_back({Piece::Cylinder, s.diameterMm / 2, h, h + s.lengthMm});
         h += s.lengthMm;
     }
 }
@@ -181,43 +181,43 @@ ToolShape::ToolShape(const toolpath::Tool& tool) : tool_(tool), holder_(holderSh
 double ToolShape::holderRadiusMm() const
 {
     double r = 0;
-    for (const HolderStep& s : holder_.steps)
+    for (const HolderStep& s : m_holder.steps)
         r = std::max(r, s.diameterMm / 2);
     return r;
 }
 
-double ToolShape::totalLengthMm() const { return stickOut_ + holder_.lengthMm(); }
+double ToolShape::totalLengthMm() const { return m_stickOut + m_holder.lengthMm(); }
 
-double ToolShape::boundingRadiusMm() const { return std::max({radius_, shankRadius_, holderRadiusMm()}); }
+double ToolShape::boundingRadiusMm() const { return std::max({m_radius, m_shankRadius, holderRadiusMm()}); }
 
 double ToolShape::lowerSurface(double d) const
 {
-    if (d > radius_ + 1e-12)
+    if (d > m_radius + 1e-12)
         return kInf;
-    if (coneSlope_ > 0)
-        return d / coneSlope_;
-    const double flatRadius = radius_ - corner_;
+    if (m_coneSlope > 0)
+        return d / m_coneSlope;
+    const double flatRadius = m_radius - m_corner;
     if (d <= flatRadius)
         return 0;
     const double off = d - flatRadius;
-    return corner_ - std::sqrt(std::max(0.0, corner_ * corner_ - off * off));
+    return m_corner - std::sqrt(std::max(0.0, m_corner * m_corner - off * off));
 }
 
 double ToolShape::profileRadius(double h) const
 {
     if (h < 0)
         return 0;
-    if (h <= flute_) {
-        if (coneSlope_ > 0)
-            return std::min(radius_, h * coneSlope_);
-        if (h >= corner_)
-            return radius_;
-        const double up = corner_ - h;
-        return radius_ - corner_ + std::sqrt(std::max(0.0, corner_ * corner_ - up * up));
+    if (h <= m_flute) {
+        if (m_coneSlope > 0)
+            return std::min(m_radius, h * m_coneSlope);
+        if (h >= m_corner)
+            return m_radius;
+        const double up = m_corner - h;
+        return m_radius - m_corner + std::sqrt(std::max(0.0, m_corner * m_corner - up * up));
     }
-    if (h <= stickOut_)
-        return shankRadius_;
-    for (const Piece& p : holderPieces_)
+    if (h <= m_stickOut)
+        return m_shankRadius;
+    for (const Piece& p : m_holderPieces)
         if (h <= p.h1)
             return p.radius;
     return 0;
@@ -230,9 +230,9 @@ LineSpan ToolShape::intersect(ToolPart part, const Vec3& tip, const Vec3& axis, 
     const Vec3 w = origin - tip;
     const double h0 = w.dot(axis), dh = dir.dot(axis);
     const Vec3 perp0 = w - axis * h0, perpD = dir - axis * dh;
-    const std::vector<Piece>& pieces = part == ToolPart::Cutter  ? cutter_
-                                       : part == ToolPart::Shank ? shank_
-                                                                 : holderPieces_;
+    const std::vector<Piece>& pieces = part == ToolPart::Cutter  ? m_cutter
+                                       : part == ToolPart::Shank ? m_shank
+                                                                 : m_holderPieces;
     LineSpan span;
     for (const Piece& p : pieces)
         span = hull(span, pieceSpan(p, h0, dh, perp0, perpD));

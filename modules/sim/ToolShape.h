@@ -43,16 +43,16 @@ class ToolShape {
 public:
     explicit ToolShape(const toolpath::Tool& tool);
 
-    const toolpath::Tool& tool() const { return tool_; }
-    double radiusMm() const { return radius_; }            // the cutter's
-    double fluteLengthMm() const { return flute_; }        // the cutter ends here
-    double stickOutMm() const { return stickOut_; }        // the shank ends (the holder starts) here
-    double shankRadiusMm() const { return shankRadius_; }  // the tool's radius: no shank data in the CL
-    const HolderShape& holder() const { return holder_; }
+    const toolpath::Tool& tool() const { return m_tool; }
+    double radiusMm() const { return m_radius; }            // the cutter's
+    double fluteLengthMm() const { return m_flute; }        // the cutter ends here
+    double stickOutMm() const { return m_stickOut; }        // the shank ends (the holder starts) here
+    double shankRadiusMm() const { return m_shankRadius; }  // the tool's radius: no shank data in the CL
+    const HolderShape& holder() const { return m_holder; }
     double holderRadiusMm() const;    // the widest step
     double totalLengthMm() const;     // tip to the holder's top
     double boundingRadiusMm() const;  // the widest of cutter, shank and holder
-    bool flatBottomed() const { return coneSlope_ == 0 && corner_ == 0; }
+    bool flatBottomed() const { return m_coneSlope == 0 && m_corner == 0; }
 
     // Height of the cutter's lower surface above the tip at radial distance d (the z-map's view of
     // the tool); +infinity beyond the cutter's radius. Non-decreasing and convex in d for every
@@ -79,11 +79,11 @@ private:
     LineSpan pieceSpan(const Piece& piece, double h0, double dh, const Vec3& perp0, const Vec3& perpD) const;
     LineSpan cornerSpan(const Piece& piece, double h0, double dh, const Vec3& perp0, const Vec3& perpD) const;
 
-    toolpath::Tool tool_;
-    HolderShape holder_;
-    double radius_ = 0, corner_ = 0, coneSlope_ = 0;  // coneSlope_: radius per height of the point; 0: none
-    double flute_ = 0, stickOut_ = 0, shankRadius_ = 0;
-    std::vector<Piece> cutter_, shank_, holderPieces_;
+    toolpath::Tool m_tool;
+    HolderShape m_holder;
+    double m_radius = 0, m_corner = 0, m_coneSlope = 0;  // m_coneSlope: radius per height of the point; 0: none
+    double m_flute = 0, m_stickOut = 0, m_shankRadius = 0;
+    std::vector<Piece> m_cutter, m_shank, m_holderPieces;
 };
 
 }  // namespace camwb::sim

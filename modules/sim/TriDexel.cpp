@@ -44,18 +44,18 @@ std::vector<std::vector<TriDexel::Span>> insideSpans(const TriangleMesh& mesh, c
 
 }  // namespace
 
-TriDexel::TriDexel(const base::Box3& box, double resolutionMm) : box_(box)
+TriDexel::TriDexel(const base::Box3& box, double resolutionMm) : m_box(box)
 {
     const double res = std::max(resolutionMm, 1e-3);
     for (int k = 0; k < 3; ++k) {
         const double w = comp(box.max, k) - comp(box.min, k);
-        cells_[k] = std::max(2, int(std::ceil(w / res - 1e-9)));
-        cell_[k] = w / cells_[k];
+        m_cells[k] = std::max(2, int(std::ceil(w / res - 1e-9)));
+        m_cell[k] = w / m_cells[k];
     }
     for (int a = 0; a < 3; ++a) {
         const int u = (a + 1) % 3, v = (a + 2) % 3;
-        Grid& g = grids_[a];
-        g.rays = {a, comp(box.min, u), comp(box.min, v), cell_[u], cell_[v], cells_[u], cells_[v]};
+        Grid& g = m_grids[a];
+        g.rays = {a, comp(box.min, u), comp(box.min, v), m_cell[u], m_cell[v], m_cells[u], m_cells[v]};
         const Span whole{float(comp(box.min, a)), float(comp(box.max, a))};
         g.spans.assign(std::size_t(g.rays.nu) * g.rays.nv, std::vector<Span>{whole});
         g.lastCut.assign(g.spans.size(), -1);
@@ -65,22 +65,22 @@ TriDexel::TriDexel(const base::Box3& box, double resolutionMm) : box_(box)
 std::unique_ptr<TriDexel> TriDexel::fromMesh(const TriangleMesh& blank, double resolutionMm)
 {
     auto stock = std::make_unique<TriDexel>(blank.bounds(), resolutionMm);
-    for (Grid& g : stock->grids_)
+    for (Grid& g : stock->m_grids)
         g.spans = insideSpans(blank, g.rays);
     return stock;
 }
 
 void TriDexel::setDesign(const TriangleMesh& model, double toleranceMm)
 {
-    tolerance_ = toleranceMm;
-    hasDesign_ = !model.empty();
-    for (Grid& g : grids_)
-        g.design = hasDesign_ ? insideSpans(model, g.rays) : std::vector<std::vector<Span>>{};
+    m_tolerance = toleranceMm;
+    m_hasDesign = !model.empty();
+    for (Grid& g : m_grids)
+        g.design = m_hasDesign ? insideSpans(model, g.rays) : std::vector<std::vector<Span>>{};
 }
 
 double TriDexel::gridVolumeMm3(int axis) const
 {
-    const Grid& g = grids_[axis];
+    const Grid& g = m_grids[axis];
     double length = 0;
     for (const auto& ray : g.spans)
         for (const Span& s : ray)
@@ -95,7 +95,7 @@ CutResult TriDexel::cut(const Move& move, std::size_t moveIndex, const ToolShape
     CutResult result;
     if (!move.moves() || !move.positionKnown || tool.radiusMm() <= 0)
         return result;
-    const double step = 0.5 * std::min({cell_[0], cell_[1], cell_[2]});
+    const double step = 0.5 * std::min({m_cell[0], m_cell[1], m_cell[2]});
     const double turn = move.fromAxis.angleTo(move.toAxis) * tool.fluteLengthMm();
     const int poses = std::max(1, int(std::ceil(std::max(move.lengthMm(), turn) / step)));
     const double r = tool.radiusMm();
@@ -122,7 +122,7 @@ CutResult TriDexel::cut(const Move& move, std::size_t moveIndex, const ToolShape
     double removed = 0;
     result.gougeMm = 0;
     for (int a = 0; a < 3; ++a) {
-        removed += seen[a].removed * grids_[a].rays.du * grids_[a].rays.dv;
+        removed += seen[a].removed * m_grids[a].rays.du * m_grids[a].rays.dv;
         // Each grid measures a gouge along its own rays; the depth into the model is the
         // shortest of them (a wall's depth is across it, not along it).
         if (seen[a].gouge > 0 && (result.gougeMm == 0 || seen[a].gouge < result.gougeMm))
@@ -141,7 +141,7 @@ CutResult TriDexel::cut(const Move& move, std::size_t moveIndex, const ToolShape
 void TriDexel::cutPose(int a, const Vec3& tip, const Vec3& toolAxis, const base::Box3& reach, const ToolShape& tool,
                        std::size_t moveIndex, PoseCut& seen)
 {
-    Grid& g = grids_[a];
+    Grid& g = m_grids[a];
     const int u = (a + 1) % 3, v = (a + 2) % 3;
     const RayGrid& rg = g.rays;
     const int i0 = std::max(0, int(std::ceil((comp(reach.min, u) - rg.u0) / rg.du - 0.5)));
@@ -159,13 +159,13 @@ void TriDexel::cutPose(int a, const Vec3& tip, const Vec3& toolAxis, const base:
             if (spans.empty() || spans.front().lo > hi || spans.back().hi < lo)
                 continue;
             Vec3 origin;
-            setComp(origin, a, comp(box_.min, a));
+            setComp(origin, a, comp(m_box.min, a));
             setComp(origin, u, rg.uAt(i));
             setComp(origin, v, rg.vAt(j));
             const LineSpan cutter = tool.intersect(ToolPart::Cutter, tip, toolAxis, origin, dir);
             if (cutter.empty())
                 continue;
-            const double c0 = comp(box_.min, a) + cutter.s0, c1 = comp(box_.min, a) + cutter.s1;
+            const double c0 = comp(m_box.min, a) + cutter.s0, c1 = comp(m_box.min, a) + cutter.s1;
             if (spans.front().lo >= c1 || spans.back().hi <= c0)
                 continue;
             double removed = 0;
@@ -189,9 +189,9 @@ void TriDexel::cutPose(int a, const Vec3& tip, const Vec3& toolAxis, const base:
                             continue;
                         const double x = std::clamp((double(d.lo) + d.hi) / 2, dlo, dhi);
                         const double depth = std::min(x - d.lo, d.hi - x);
-                        if (depth > tolerance_ && depth > seen.gouge) {
+                        if (depth > m_tolerance && depth > seen.gouge) {
                             seen.gouge = depth;
-                            seen.gougeAt = origin + dir * (x - comp(box_.min, a));
+                            seen.gougeAt = origin + dir * (x - comp(m_box.min, a));
                         }
                     }
             }
@@ -209,13 +209,13 @@ void TriDexel::cutPose(int a, const Vec3& tip, const Vec3& toolAxis, const base:
 // remaining material along a ray inside either is how deep they reach into the stock.
 void TriDexel::checkHolder(const Vec3& tip, const Vec3& toolAxis, const ToolShape& tool, CutResult& result) const
 {
-    const Grid& g = grids_[2];
+    const Grid& g = m_grids[2];
     const RayGrid& rg = g.rays;
     const double r = tool.boundingRadiusMm();
     base::Box3 reach;
     reach.add(tip + toolAxis * tool.fluteLengthMm());
     reach.add(tip + toolAxis * tool.totalLengthMm());
-    if (reach.min.z > box_.max.z)
+    if (reach.min.z > m_box.max.z)
         return;
     const int i0 = std::max(0, int(std::floor((reach.min.x - r - rg.u0) / rg.du)));
     const int i1 = std::min(rg.nu - 1, int(std::floor((reach.max.x + r - rg.u0) / rg.du)));
@@ -228,15 +228,15 @@ void TriDexel::checkHolder(const Vec3& tip, const Vec3& toolAxis, const ToolShap
             const std::vector<Span>& spans = g.spans[g.at(i, j)];
             if (spans.empty())
                 continue;
-            const Vec3 origin{rg.uAt(i), rg.vAt(j), box_.min.z};
+            const Vec3 origin{rg.uAt(i), rg.vAt(j), m_box.min.z};
             for (ToolPart part : {ToolPart::Shank, ToolPart::Holder}) {
                 const LineSpan s = tool.intersect(part, tip, toolAxis, origin, up);
                 if (s.empty())
                     continue;
                 double inside = 0, top = 0;
                 for (const Span& m : spans) {
-                    const double lo = std::max<double>(m.lo, box_.min.z + s.s0),
-                                 hi = std::min<double>(m.hi, box_.min.z + s.s1);
+                    const double lo = std::max<double>(m.lo, m_box.min.z + s.s0),
+                                 hi = std::min<double>(m.hi, m_box.min.z + s.s1);
                     if (hi > lo)
                         inside += hi - lo, top = hi;
                 }

@@ -25,8 +25,8 @@ public:
     Deviation compare() const override;
     // The mean of the three grids' estimates (each is its spans' lengths times its cell area).
     double volumeMm3() const override;
-    base::Box3 bounds() const override { return box_; }
-    double resolutionMm() const override { return std::max({cell_[0], cell_[1], cell_[2]}); }
+    base::Box3 bounds() const override { return m_box; }
+    double resolutionMm() const override { return std::max({m_cell[0], m_cell[1], m_cell[2]}); }
     // The Z rays' spans as boxes with faces merged between neighbours (voxel faces, exact in Z,
     // stepped by a cell across): closed in space and outward-facing, so its volume is the Z
     // grid's, but side faces meet top faces in T-junctions (no shared vertices across heights).
@@ -34,8 +34,8 @@ public:
     std::unique_ptr<Stock> clone() const override { return std::make_unique<TriDexel>(*this); }
 
     // The spans along ray (i, j) of grid `axis` (0 x, 1 y, 2 z); RayGrid says where it runs.
-    const std::vector<Span>& spans(int axis, int i, int j) const { return grids_[axis].spans[grids_[axis].at(i, j)]; }
-    const RayGrid& rays(int axis) const { return grids_[axis].rays; }
+    const std::vector<Span>& spans(int axis, int i, int j) const { return m_grids[axis].spans[m_grids[axis].at(i, j)]; }
+    const RayGrid& rays(int axis) const { return m_grids[axis].rays; }
     double gridVolumeMm3(int axis) const;
 
 private:
@@ -54,12 +54,12 @@ private:
     double alongRay(int axis, int i, int j, double t) const;
     double vertexDeviation(const Vec3& p) const;
 
-    base::Box3 box_;
-    double cell_[3] = {1, 1, 1};
-    int cells_[3] = {2, 2, 2};
-    Grid grids_[3];
-    double tolerance_ = 0;
-    bool hasDesign_ = false;
+    base::Box3 m_box;
+    double m_cell[3] = {1, 1, 1};
+    int m_cells[3] = {2, 2, 2};
+    Grid m_grids[3];
+    double m_tolerance = 0;
+    bool m_hasDesign = false;
 };
 
 }  // namespace camwb::sim

@@ -48,7 +48,7 @@ struct MeshBuilder {
 
 TriangleMesh TriDexel::mesh() const
 {
-    const Grid& g = grids_[2];
+    const Grid& g = m_grids[2];
     const RayGrid& rg = g.rays;
     MeshBuilder b;
     for (int j = 0; j < rg.nv; ++j)
@@ -82,7 +82,7 @@ TriangleMesh TriDexel::mesh() const
 
 double TriDexel::alongRay(int axis, int i, int j, double t) const
 {
-    const Grid& g = grids_[axis];
+    const Grid& g = m_grids[axis];
     const std::vector<Span>& design = g.design[g.at(i, j)];
     double best = kInf;
     for (const Span& d : design) {
@@ -99,7 +99,7 @@ double TriDexel::vertexDeviation(const Vec3& p) const
 {
     double best = kInf;
     for (int a = 0; a < 3; ++a) {
-        const RayGrid& rg = grids_[a].rays;
+        const RayGrid& rg = m_grids[a].rays;
         const int u = (a + 1) % 3, v = (a + 2) % 3;
         const int i = std::clamp(int(std::floor((comp(p, u) - rg.u0) / rg.du)), 0, rg.nu - 1);
         const int j = std::clamp(int(std::floor((comp(p, v) - rg.v0) / rg.dv)), 0, rg.nv - 1);
@@ -115,25 +115,29 @@ Deviation TriDexel::compare() const
     Deviation out;
     const TriangleMesh m = mesh();
     out.perVertex.assign(m.vertexCount(), 0.f);
-    if (!hasDesign_)
+    if (!m_hasDesign)
         return out;
-    const RayGrid& rz = grids_[2].rays;
+    const RayGrid& rz = m_grids[2].rays;
     for (std::size_t k = 0; k < m.vertexCount(); ++k) {
         const Vec3 p = m.vertex(k);
         // A vertex sits on its column's corner: measure at the middle of the face it belongs to,
         // nudged into the column whose triangle it came from (four vertices per quad, in order).
         const std::size_t first = k - k % 4;
         const Vec3 centre = (m.vertex(first) + m.vertex(first + 1) + m.vertex(first + 2) + m.vertex(first + 3)) * 0.25;
-        double dev = vertexDeviation(centre);
-        if (!std::isfinite(dev))  // no design along any of the three rays: all of it is left over
-            dev = box_.max.z - box_.min.z;
+        const double dev = vertexDeviation(centre);
+        if (!std::isfinite(dev)) {  // no design along any of the three rays: beside the part
+            out.perVertex[k] = float(m_box.max.z - m_box.min.z);
+            if (p.z - m_box.min.z > out.maxOutsideMm)
+                out.maxOutsideMm = p.z - m_box.min.z, out.outsideAt = p;
+            continue;
+        }
         out.perVertex[k] = float(dev);
         const int i = std::clamp(int(std::floor((centre.x - rz.u0) / rz.du)), 0, rz.nu - 1);
         const int j = std::clamp(int(std::floor((centre.y - rz.v0) / rz.dv)), 0, rz.nv - 1);
-        const std::int64_t move = grids_[2].lastCut[grids_[2].at(i, j)];
+        const std::int64_t move = m_grids[2].lastCut[m_grids[2].at(i, j)];
         if (dev > out.maxLeftoverMm)
             out.maxLeftoverMm = dev, out.leftoverAt = p, out.leftoverMove = move;
-        if (-dev > tolerance_ && -dev > out.maxGougeMm)
+        if (-dev > m_tolerance && -dev > out.maxGougeMm)
             out.maxGougeMm = -dev, out.gougeAt = p, out.gougeMove = move;
     }
     return out;

@@ -1,1 +1,1 @@
-set(SIM_PART_SOURCES)
+set(SIM_PART_SOURCES Checks.cpp StockRun.cpp Simulation.cpp)

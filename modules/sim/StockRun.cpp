@@ -1,0 +1,149 @@
+#include "sim/StockRun.h"
+
+#include "base/NumberFormat.h"
+
+#include <cmath>
+
+namespace camwb::sim {
+
+namespace {
+
+std::string mm(double value) { return base::formatFixed(value, 3) + " mm"; }
+
+// Steeper than this along the tool axis, a move into material is a plunge: a tool that does not
+// cut at its centre may ramp in at a shallow angle (its edges sweep the core away) but not drill.
+constexpr double kPlungeSlope = 1.0;  // 45 degrees
+
+}  // namespace
+
+StockRun::StockRun(const MoveList& moves, Stock& stock) : m_moves(moves), m_stock(stock) {}
+
+double StockRun::noiseMm3() const
+{
+    const double r = m_stock.resolutionMm();
+    return 1e-3 * r * r * r;
+}
+
+const ToolShape* StockRun::shapeOf(int tool)
+{
+    auto it = m_shapes.find(tool);
+    if (it == m_shapes.end()) {
+        const toolpath::Tool* cl = m_moves.tool(tool);
+        if (!cl)
+            return nullptr;
+        it = m_shapes.emplace(tool, std::make_unique<ToolShape>(*cl)).first;
+    }
+    return it->second.get();
+}
+
+std::size_t StockRun::cutTo(std::size_t endMove, const std::atomic<bool>* cancel)
+{
+    endMove = std::min(endMove, m_moves.moves.size());
+    for (; m_next < endMove; ++m_next) {
+        if (cancel && (m_next & 63) == 0 && cancel->load(std::memory_order_relaxed))
+            break;
+        const Move& move = m_moves.moves[m_next];
+        if (!move.moves())
+            continue;
+        const ToolShape* shape = shapeOf(move.tool);
+        if (!shape || shape->radiusMm() <= 0) {
+            // Nothing known to cut with: say so at the first such move of each tool rather than
+            // report a clean run.
+            if (m_shapeless.insert(move.tool).second) {
+                Check c;
+                c.kind = CheckKind::NoToolShape;
+                c.severity = base::Severity::Warning;
+                c.record = move.record;
+                c.move = static_cast<std::int64_t>(m_next);
+                c.at = move.from;
+                c.message = move.tool == 0 ? "moves before any tool change: not cut"
+                                           : "tool " + std::to_string(move.tool) +
+                                                 " has no diameter (the program gives none; a tool table can): "
+                                                 "its moves are not cut";
+                m_checks.add(std::move(c));
+            }
+            continue;
+        }
+        const CutResult cut = m_stock.cut(move, m_next, *shape);
+        judge(move, m_next, cut, *shape);
+    }
+    return m_next;
+}
+
+void StockRun::judge(const Move& move, std::size_t index, const CutResult& cut, const ToolShape& shape)
+{
+    const bool removed = cut.removedMm3 > noiseMm3();
+    auto check = [&](CheckKind kind, base::Severity severity, double value, const Vec3& at) {
+        Check c;
+        c.removedMm3 = removed ? cut.removedMm3 : 0;
+        c.kind = kind;
+        c.severity = severity;
+        c.record = move.record;
+        c.move = static_cast<std::int64_t>(index);
+        c.valueMm = value;
+        c.at = at;
+        m_checks.add(std::move(c));
+    };
+    if (removed)
+        m_removedMm3 += cut.removedMm3;
+    if (move.kind == MoveKind::Rapid && removed)
+        check(CheckKind::RapidInStock, base::Severity::Error, 0, move.to);
+    if (move.kind == MoveKind::Feed) {
+        if (removed)
+            m_cuttingMm += move.lengthMm();
+        else {
+            m_airMm += move.lengthMm();
+            check(CheckKind::AirCutting, base::Severity::Note, move.lengthMm(), move.to);
+        }
+    }
+    if (cut.gougeMm > 0)
+        check(CheckKind::Gouge, base::Severity::Error, cut.gougeMm, cut.gougeAt);
+    if (cut.holderInterferenceMm > 0)
+        check(CheckKind::HolderCollision, base::Severity::Error, cut.holderInterferenceMm, cut.holderAt);
+    if (removed && move.spindleRpm <= 0)
+        check(CheckKind::SpindleOffCutting, base::Severity::Error, 0, move.to);
+    if (removed && cut.removedOnAxis && !shape.tool().centreCutting) {
+        const Vec3 d = move.to - move.from;
+        const double down = -d.dot(move.fromAxis);
+        const double across = (d + move.fromAxis * down).length();
+        if (down > 0 && down > kPlungeSlope * across)
+            check(CheckKind::PlungeNotCentre, base::Severity::Error, down, move.to);
+    }
+}
+
+std::vector<Check> StockRun::checks() const
+{
+    std::vector<Check> out = m_checks.checks();
+    for (Check& c : out)
+        c.message = describe(c);
+    return out;
+}
+
+std::string describe(const Check& check)
+{
+    if (!check.message.empty())
+        return check.message;
+    const std::string moves = check.moves > 1 ? " (" + std::to_string(check.moves) + " moves)" : "";
+    switch (check.kind) {
+    case CheckKind::RapidInStock:
+        return "rapid through stock: " + base::formatFixed(check.removedMm3, 3) + " mm³ removed at rapid" + moves;
+    case CheckKind::Gouge:
+        return "gouge: the cutter goes " + mm(check.valueMm) + " into the part" + moves;
+    case CheckKind::HolderCollision:
+        return "shank or holder " + mm(check.valueMm) + " into the stock" + moves +
+               ": the tool sticks out too little for this depth";
+    case CheckKind::PlungeNotCentre:
+        return "plunge of " + mm(check.valueMm) + " into material with a tool that does not cut at its centre" + moves;
+    case CheckKind::SpindleOffCutting:
+        return "cutting with the spindle stopped" + moves;
+    case CheckKind::MachineLimit:
+        return "machine limit";
+    case CheckKind::AirCutting:
+        return "feed move in air: " + mm(check.valueMm) + " cut nothing" + moves;
+    case CheckKind::NoToolShape:
+        return "a tool without a shape: its moves are not cut";
+    }
+    return {};
+}
+
+}  // namespace camwb::sim

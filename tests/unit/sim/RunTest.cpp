@@ -1,0 +1,213 @@
+// The simulation's checks on small programs whose answer is known: a feed move 0.5 mm into a
+// wall is a gouge at that record, a rapid through the stock is an error at its record, a holder
+// that sticks out too little for a deep pocket hits the stock, a tool that does not cut at its
+// centre may ramp but not plunge, cutting with the spindle off is an error, a feed move in air is
+// a note with its length, and the machine's limits name their record.
+#include "sim/HeightField.h"
+#include "sim/Simulation.h"
+#include "sim/StockRun.h"
+
+#include "toolpath/Toolpath.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+
+using namespace camwb;
+using namespace camwb::toolpath;
+using sim::CheckKind;
+
+namespace {
+
+// A closed box, triangles facing out.
+sim::TriangleMesh boxMesh(const base::Vec3& lo, const base::Vec3& hi)
+{
+    sim::TriangleMesh mesh;
+    for (int c = 0; c < 8; ++c) {
+        mesh.positions.push_back(float((c & 1) ? hi.x : lo.x));
+        mesh.positions.push_back(float((c & 2) ? hi.y : lo.y));
+        mesh.positions.push_back(float((c & 4) ? hi.z : lo.z));
+    }
+    mesh.triangles = {0, 2, 1, 1, 2, 3, 4, 5, 6, 5, 7, 6, 0, 1, 4, 1, 5, 4,
+                      2, 6, 3, 3, 6, 7, 0, 4, 2, 2, 4, 6, 1, 3, 5, 3, 7, 5};
+    return mesh;
+}
+
+Tool flat10(double stickOut = 40, bool centreCutting = true)
+{
+    Tool t;
+    t.number = 1;
+    t.diameterMm = 10;
+    t.fluteLengthMm = std::min(25.0, stickOut);
+    t.lengthMm = stickOut;
+    t.centreCutting = centreCutting;
+    return t;
+}
+
+Toolpath start(const Tool& tool, double rpm = 3000)
+{
+    Toolpath p;
+    p.add(ToolChange{tool});
+    if (rpm > 0)
+        p.add(Spindle{rpm, true});
+    p.add(Rapid{{-10, -10, 30}});
+    return p;
+}
+
+std::vector<sim::Check> of(const sim::SimulationResult& r, CheckKind kind)
+{
+    std::vector<sim::Check> out;
+    std::copy_if(r.checks.begin(), r.checks.end(), std::back_inserter(out),
+                 [kind](const sim::Check& c) { return c.kind == kind; });
+    return out;
+}
+
+sim::SimulationResult run(const Toolpath& p, sim::Stock& stock, const kinematics::Machine* machine = nullptr)
+{
+    sim::SimulationSetup setup;
+    setup.stock = &stock;
+    setup.machine = machine;
+    return sim::simulate(p, setup);
+}
+
+}  // namespace
+
+TEST(SimRun, AFeedMoveHalfAMillimetreIntoAWallIsAGougeAtThatRecord)
+{
+    // Stock 60 x 40 x 20; the part is the block x >= 30: its wall at x = 30.
+    sim::HeightField stock({{0, 0, 0}, {60, 40, 20}, false}, 0.1);
+    stock.setDesign(boxMesh({30, 0, 0}, {60, 40, 20}), 0.02);
+    Toolpath p = start(flat10());
+    p.add(Rapid{{25, -10, 30}});
+    p.add(Rapid{{25, -10, 10}});
+    p.add(Linear{{25, 20, 10}, 600});    // record 5: the cutter's edge on the wall
+    p.add(Linear{{25.5, 30, 10}, 600});  // record 6: half a millimetre into it
+    p.add(Linear{{25, 50, 10}, 600});
+    const sim::SimulationResult r = run(p, stock);
+    const auto gouges = of(r, CheckKind::Gouge);
+    ASSERT_EQ(gouges.size(), 2u);  // the move in, and the move back out of the wall
+    EXPECT_EQ(gouges[0].record, 6);
+    EXPECT_NEAR(gouges[0].valueMm, 0.5, 0.1);
+    EXPECT_EQ(gouges[0].severity, base::Severity::Error);
+    EXPECT_EQ(gouges[1].record, 7);
+    EXPECT_NEAR(r.deviation.maxGougeMm, 0.5, 0.1);
+    EXPECT_TRUE(of(r, CheckKind::RapidInStock).empty());
+}
+
+TEST(SimRun, TheSameSlotAlongTheWallIsClean)
+{
+    sim::HeightField stock({{0, 0, 0}, {60, 40, 20}, false}, 0.1);
+    stock.setDesign(boxMesh({30, 0, 0}, {60, 40, 20}), 0.02);
+    Toolpath p = start(flat10());
+    p.add(Rapid{{25, -10, 30}});
+    p.add(Rapid{{25, -10, 10}});
+    p.add(Linear{{25, 50, 10}, 600});
+    const sim::SimulationResult r = run(p, stock);
+    EXPECT_TRUE(of(r, CheckKind::Gouge).empty());
+    EXPECT_EQ(r.count(base::Severity::Error), 0);
+    EXPECT_NEAR(r.removedMm3, 10 * 40 * 10, 10 * 40 * 10 * 0.03);  // the slot: width x length x depth
+}
+
+TEST(SimRun, ARapidThroughTheStockIsAnErrorAtItsRecord)
+{
+    sim::HeightField stock({{0, 0, 0}, {60, 40, 20}, false}, 0.2);
+    Toolpath p = start(flat10());
+    p.add(Rapid{{-10, 20, 15}});
+    p.add(Rapid{{70, 20, 15}});  // record 4: straight through the block
+    const sim::SimulationResult r = run(p, stock);
+    const auto rapids = of(r, CheckKind::RapidInStock);
+    ASSERT_EQ(rapids.size(), 1u);
+    EXPECT_EQ(rapids[0].record, 4);
+    EXPECT_GT(rapids[0].removedMm3, 60 * 10 * 5 * 0.9);
+}
+
+TEST(SimRun, AHolderTooShortForADeepPocketHitsTheStock)
+{
+    sim::HeightField stock({{0, 0, 0}, {60, 60, 40}, false}, 0.2);
+    Toolpath shortTool = start(flat10(20));
+    shortTool.add(Rapid{{30, 30, 45}});
+    shortTool.add(Linear{{30, 30, 10}, 100});  // 30 deep with 20 sticking out
+    const auto hits = of(run(shortTool, stock), CheckKind::HolderCollision);
+    ASSERT_EQ(hits.size(), 1u);
+    EXPECT_EQ(hits[0].record, 4);
+    EXPECT_NEAR(hits[0].valueMm, 10, 0.5);
+
+    sim::HeightField fresh({{0, 0, 0}, {60, 60, 40}, false}, 0.2);
+    Toolpath longTool = start(flat10(45));
+    longTool.add(Rapid{{30, 30, 45}});
+    longTool.add(Linear{{30, 30, 10}, 100});
+    EXPECT_TRUE(of(run(longTool, fresh), CheckKind::HolderCollision).empty());
+}
+
+TEST(SimRun, AToolThatDoesNotCutAtItsCentreMayRampButNotPlunge)
+{
+    sim::HeightField stock({{0, 0, 0}, {60, 40, 20}, false}, 0.2);
+    Toolpath plunge = start(flat10(40, false));
+    plunge.add(Rapid{{20, 20, 25}});
+    plunge.add(Linear{{20, 20, 15}, 100});
+    const auto plunges = of(run(plunge, stock), CheckKind::PlungeNotCentre);
+    ASSERT_EQ(plunges.size(), 1u);
+    EXPECT_EQ(plunges[0].record, 4);
+
+    sim::HeightField fresh({{0, 0, 0}, {60, 40, 20}, false}, 0.2);
+    Toolpath ramp = start(flat10(40, false));
+    ramp.add(Rapid{{10, 20, 21}});
+    ramp.add(Linear{{50, 20, 17}, 300});  // about 6 degrees
+    EXPECT_TRUE(of(run(ramp, fresh), CheckKind::PlungeNotCentre).empty());
+}
+
+TEST(SimRun, CuttingWithTheSpindleOffIsAnError)
+{
+    sim::HeightField stock({{0, 0, 0}, {60, 40, 20}, false}, 0.2);
+    Toolpath p = start(flat10(), 0);
+    p.add(Rapid{{-10, 20, 18}});
+    p.add(Linear{{70, 20, 18}, 300});
+    const auto off = of(run(p, stock), CheckKind::SpindleOffCutting);
+    ASSERT_EQ(off.size(), 1u);
+    EXPECT_EQ(off[0].record, 3);
+}
+
+TEST(SimRun, AFeedMoveInAirIsANoteWithItsLength)
+{
+    sim::HeightField stock({{0, 0, 0}, {60, 40, 20}, false}, 0.2);
+    Toolpath p = start(flat10());
+    p.add(Linear{{-10, 30, 30}, 300});  // above and beside the stock
+    const sim::SimulationResult r = run(p, stock);
+    const auto air = of(r, CheckKind::AirCutting);
+    ASSERT_EQ(air.size(), 1u);
+    EXPECT_EQ(air[0].severity, base::Severity::Note);
+    EXPECT_NEAR(air[0].valueMm, 40, 1e-9);
+    EXPECT_NEAR(r.airCuttingMm, 40, 1e-9);
+    EXPECT_EQ(r.count(base::Severity::Error), 0);
+}
+
+TEST(SimRun, MachineLimitsNameTheirRecord)
+{
+    kinematics::Machine machine;
+    machine.id = "small";
+    machine.name = "Small mill";
+    machine.axes = {{"X", false, 0, 50}, {"Y", false, 0, 50}, {"Z", false, -50, 50}};
+    machine.spindleMaxRpm = 2000;
+    Toolpath p = start(flat10(), 3000);  // record 1: above the machine's top speed
+    p.add(Linear{{10, 10, 30}, 300});
+    const sim::SimulationResult r = sim::simulate(p, sim::SimulationSetup{&machine});
+    const auto limits = of(r, CheckKind::MachineLimit);
+    ASSERT_FALSE(limits.empty());
+    EXPECT_EQ(limits[0].record, 1);
+    EXPECT_EQ(limits[0].severity, base::Severity::Error);
+    EXPECT_NE(limits[0].message.find("3000"), std::string::npos) << limits[0].message;
+}
+
+TEST(SimRun, ChecksOfOneRecordAreOneFindingAtItsWorst)
+{
+    sim::CheckList list;
+    for (double depth : {0.1, 0.4, 0.2}) {
+        sim::Check c;
+        c.record = 7;
+        c.valueMm = depth;
+        list.add(c);
+    }
+    ASSERT_EQ(list.checks().size(), 1u);
+    EXPECT_DOUBLE_EQ(list.checks()[0].valueMm, 0.4);
+    EXPECT_EQ(list.checks()[0].moves, 3);
+}

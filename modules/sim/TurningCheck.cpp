@@ -53,7 +53,7 @@ public:
     {
         flush();
         if (m_report.feedsInAir > 0)
-            push(TurningCheckKind::FeedInAir, base::Severity::Note, m_firstFeedInAir, 0, {},
+            push(CheckKind::AirCutting, base::Severity::Note, m_firstFeedInAir, 0, {},
                  std::to_string(m_report.feedsInAir) + " feed moves cut no material (the first here)");
     }
 
@@ -64,23 +64,28 @@ private:
             return;
         if (m_rapid.mm > m_tolerance) {
             ++m_report.rapidsInStock;
-            push(TurningCheckKind::RapidInStock, base::Severity::Error, *m_record, m_rapid.mm, m_rapid.at,
+            push(CheckKind::RapidInStock, base::Severity::Error, *m_record, m_rapid.mm, m_rapid.at,
                  "rapid through stock, " + mm(m_rapid.mm) + " deep at " + point(m_rapid.at));
         }
         if (m_gouge.mm > m_tolerance) {
             ++m_report.gouges;
-            push(TurningCheckKind::Gouge, base::Severity::Error, *m_record, m_gouge.mm, m_gouge.at,
+            push(CheckKind::Gouge, base::Severity::Error, *m_record, m_gouge.mm, m_gouge.at,
                  "gouge: " + mm(m_gouge.mm) + " below the design contour at " + point(m_gouge.at));
         }
         m_rapid = {};
         m_gouge = {};
     }
 
-    void push(TurningCheckKind kind, base::Severity severity, std::size_t record, double depth, Vec2 at,
-              std::string message)
+    void push(CheckKind kind, base::Severity severity, std::size_t record, double depth, Vec2 at, std::string message)
     {
-        const toolpath::SourceRef& src = m_program.source(record);
-        m_report.findings.push_back({kind, severity, record, src.file, src.line, depth, at, std::move(message)});
+        Check c;
+        c.kind = kind;
+        c.severity = severity;
+        c.record = static_cast<std::int64_t>(record);
+        c.valueMm = depth;
+        c.at = {at.y, 0, at.x};  // (Z, X) in the plane: X radius, Z along the spindle
+        c.message = std::move(message);
+        m_report.findings.push_back(std::move(c));
     }
 
     const toolpath::Toolpath& m_program;
@@ -91,9 +96,8 @@ private:
     Worst m_rapid, m_gouge;
 };
 
-// A lathe has no Y axis: its programs never give Y, and buildMoves would wait for it forever.
-// The turning plane is Y = 0 by definition, so a straight move that leaves Y out is taken there
-// (X and Z stay exactly as the program has them; a Y a program does give is kept and ignored).
+}  // namespace
+
 toolpath::Toolpath inTurningPlane(const toolpath::Toolpath& program)
 {
     toolpath::Toolpath out = program;
@@ -111,8 +115,6 @@ toolpath::Toolpath inTurningPlane(const toolpath::Toolpath& program)
     }
     return out;
 }
-
-}  // namespace
 
 TurningReport checkTurning(const toolpath::Toolpath& program, TurningRegion stock, TurningRegion design,
                            const TurningOptions& options)

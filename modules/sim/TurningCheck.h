@@ -5,6 +5,7 @@
 #pragma once
 
 #include "base/Diagnostic.h"
+#include "sim/Checks.h"
 #include "sim/TurningStock.h"
 
 #include <cstdint>
@@ -17,18 +18,6 @@ class Toolpath;
 
 namespace camwb::sim {
 
-enum class TurningCheckKind : std::uint8_t { RapidInStock, Gouge, FeedInAir };
-
-struct TurningFinding {
-    TurningCheckKind kind = TurningCheckKind::RapidInStock;
-    base::Severity severity = base::Severity::Error;
-    std::size_t record = 0;   // index in the toolpath
-    int file = 0, line = -1;  // the record's SourceRef (file indexes the interpreter's files)
-    double mm = 0;            // the rapid's depth in the stock, the gouge's depth (radial)
-    Vec2 at;                  // where (Z, X)
-    std::string message;
-};
-
 struct TurningOptions {
     Insert insert;
     // Set only for a toolpath whose X is a diameter: the NC interpreters already halve X under
@@ -38,8 +27,10 @@ struct TurningOptions {
 };
 
 struct TurningReport {
-    std::vector<TurningFinding> findings;  // in record order
-    std::size_t moves = 0;                 // straight moves simulated
+    // In record order: RapidInStock, Gouge (valueMm: the radial depth) and one AirCutting note;
+    // `at` is (X radius, 0, Z).
+    std::vector<Check> findings;
+    std::size_t moves = 0;  // straight moves simulated
     std::size_t rapidsInStock = 0, gouges = 0, feedsInAir = 0;
     double removedMm2 = 0;
     double maxGougeMm = 0;
@@ -55,5 +46,10 @@ struct TurningReport {
 // finding of each kind, with its deepest figure.
 TurningReport checkTurning(const toolpath::Toolpath& program, TurningRegion stock, TurningRegion design,
                            const TurningOptions& options);
+
+// A lathe has no Y axis: its programs never give Y, and buildMoves would wait for it forever.
+// The turning plane is Y = 0 by definition, so a straight move that leaves Y out is taken there
+// (X and Z stay exactly as the program has them; a Y a program does give is kept and ignored).
+toolpath::Toolpath inTurningPlane(const toolpath::Toolpath& program);
 
 }  // namespace camwb::sim

@@ -71,13 +71,14 @@ TurningReport checkSeed(const Traced& t, const GrooveParameters& g)
 }
 
 // "PODPROG_DNO_ZP.SPF:12" for each finding of `kind`.
-std::vector<std::string> where(const TurningReport& report, const Traced& traced, TurningCheckKind kind)
+std::vector<std::string> where(const TurningReport& report, const Traced& traced, CheckKind kind)
 {
     std::vector<std::string> out;
-    for (const TurningFinding& f : report.findings)
+    for (const Check& f : report.findings)
         if (f.kind == kind) {
-            const std::string& file = traced.result.files[static_cast<std::size_t>(f.file)];
-            out.push_back(file.substr(file.find_last_of('/') + 1) + ":" + std::to_string(f.line));
+            const toolpath::SourceRef& source = traced.path.source(static_cast<std::size_t>(f.record));
+            const std::string& file = traced.result.files[static_cast<std::size_t>(source.file)];
+            out.push_back(file.substr(file.find_last_of('/') + 1) + ":" + std::to_string(source.line));
         }
     return out;
 }
@@ -93,13 +94,13 @@ TEST(TurningSeed001, ThesisProgramCutsTheGrooveWithoutRapidHitsOrGouges)
     // 575 traced moves: Kod 5's G0 X=R0+200 and N72 G0 Z start where Z is not known yet, and 7
     // of the others have no length.
     EXPECT_EQ(r.moves, 566u);
-    EXPECT_TRUE(where(r, t, TurningCheckKind::RapidInStock).empty());
-    EXPECT_TRUE(where(r, t, TurningCheckKind::Gouge).empty());
+    EXPECT_TRUE(where(r, t, CheckKind::RapidInStock).empty());
+    EXPECT_TRUE(where(r, t, CheckKind::Gouge).empty());
     EXPECT_FALSE(r.hasErrors());
     EXPECT_NEAR(r.maxRapidDepthMm, 0, 1e-3);
     EXPECT_EQ(r.feedsInAir, 8u);  // counted and named once (the first: ZL line 41, G1 to the cleared flank top)
     ASSERT_EQ(r.findings.size(), 1u);
-    EXPECT_EQ(r.findings[0].kind, TurningCheckKind::FeedInAir);
+    EXPECT_EQ(r.findings[0].kind, CheckKind::AirCutting);
     EXPECT_EQ(r.findings[0].severity, base::Severity::Note);
     const TurningRegion part = grooveOffsetPart(g);
     EXPECT_NEAR(geom::totalArea(geom::subtract(r.stock, part, 1e-4)), 0, 0.01);  // nothing left over
@@ -118,12 +119,12 @@ TEST(TurningSeed001, DnoZpGougesTheRightFlankAndRapidsThroughStock)
     GrooveParameters g;
     g.r3 = 160;
     const TurningReport r = checkSeed(t, g);
-    EXPECT_EQ(where(r, t, TurningCheckKind::RapidInStock),
+    EXPECT_EQ(where(r, t, CheckKind::RapidInStock),
               (std::vector<std::string>{"PODPROG_DNO_ZP.SPF:31", "PODPROG_DNO_ZP.SPF:42"}));
     std::vector<double> rapidDepths;
-    for (const TurningFinding& f : r.findings)
-        if (f.kind == TurningCheckKind::RapidInStock) {
-            rapidDepths.push_back(f.mm);
+    for (const Check& f : r.findings)
+        if (f.kind == CheckKind::RapidInStock) {
+            rapidDepths.push_back(f.valueMm);
             EXPECT_EQ(f.severity, base::Severity::Error);
         }
     ASSERT_EQ(rapidDepths.size(), 2u);
@@ -131,7 +132,7 @@ TEST(TurningSeed001, DnoZpGougesTheRightFlankAndRapidsThroughStock)
     EXPECT_NEAR(rapidDepths[1], 22.9261, 1e-3);
     // 27: the half-step plunge already 1.57 mm right of T; 31, 42: the rapids; 32, 43, 44: the
     // plunge at T, the plunge at B and the slide from B to T, all with the insert beyond T.
-    EXPECT_EQ(where(r, t, TurningCheckKind::Gouge),
+    EXPECT_EQ(where(r, t, CheckKind::Gouge),
               (std::vector<std::string>{"PODPROG_DNO_ZP.SPF:27", "PODPROG_DNO_ZP.SPF:31", "PODPROG_DNO_ZP.SPF:32",
                                         "PODPROG_DNO_ZP.SPF:42", "PODPROG_DNO_ZP.SPF:43", "PODPROG_DNO_ZP.SPF:44"}));
     const double expected = g.r9 / std::tan(g.r5 * std::numbers::pi / 180);
@@ -148,7 +149,7 @@ TEST(TurningSeed001, NoSafetyDistanceStillTouchesOnly)
     const Traced t = traceSeed({{"N17 R30=1", "N17 R30=0"}});
     const TurningReport r = checkSeed(t, {});
     EXPECT_FALSE(r.hasErrors());
-    EXPECT_TRUE(where(r, t, TurningCheckKind::RapidInStock).empty());
+    EXPECT_TRUE(where(r, t, CheckKind::RapidInStock).empty());
     EXPECT_NEAR(r.maxRapidDepthMm, 0, 1e-6);
 }
 
@@ -161,8 +162,8 @@ TEST(TurningSeed001, StepBeyondTheInsertWidthRapidsThroughTheRibs)
     const TurningReport r = checkSeed(t, {});
     EXPECT_NEAR(r.maxRapidDepthMm, 41.9195, 1e-3);
     ASSERT_FALSE(r.findings.empty());
-    EXPECT_EQ(where(r, t, TurningCheckKind::RapidInStock).front(), "PODPROG_ZP.SPF:4");  // G0 Z=R20-R9-R10*R9*R18
-    EXPECT_NEAR(r.findings.front().mm, 41.9195, 1e-3);
+    EXPECT_EQ(where(r, t, CheckKind::RapidInStock).front(), "PODPROG_ZP.SPF:4");  // G0 Z=R20-R9-R10*R9*R18
+    EXPECT_NEAR(r.findings.front().valueMm, 41.9195, 1e-3);
     EXPECT_EQ(r.rapidsInStock, 133u);
     EXPECT_NEAR(geom::totalArea(geom::subtract(r.stock, grooveOffsetPart({}), 1e-4)), 28.791, 0.01);
     EXPECT_NEAR(r.maxGougeMm, 25.4994, 1e-3);
@@ -175,7 +176,13 @@ TurningRegion groovedPart()
     return parseProfilePoints("50,0\n50,40\n40,40\n40,49\n50,49\n50,100\n", "part.txt").value();
 }
 
-TurningReport checkProgram(const std::string& program, TurningOptions options = {})
+struct CheckedProgram {
+    toolpath::Toolpath path;
+    TurningReport report;
+    int lineOf(const Check& f) const { return path.source(static_cast<std::size_t>(f.record)).line; }
+};
+
+CheckedProgram checkProgram(const std::string& program, TurningOptions options = {})
 {
     nc::InterpretOptions io;
     io.dialect = nc::Dialect::Sinumerik;
@@ -183,7 +190,10 @@ TurningReport checkProgram(const std::string& program, TurningOptions options = 
     toolpath::ToolpathRecorder recorder;
     const nc::InterpretResult result = nc::interpret(program, io, recorder);
     EXPECT_FALSE(result.hasErrors());
-    return checkTurning(recorder.take(), shaft(), groovedPart(), options);
+    CheckedProgram out;
+    out.path = recorder.take();
+    out.report = checkTurning(out.path, shaft(), groovedPart(), options);
+    return out;
 }
 
 // Three plunges of a 3 mm insert side by side from an approach outside the stock.
@@ -207,7 +217,7 @@ std::string cleanGroove(const std::string& plungeTo = "X40", const std::string& 
 
 TEST(TurningChecks, CleanGrooveReportsNothing)
 {
-    const TurningReport r = checkProgram(cleanGroove());
+    const TurningReport r = checkProgram(cleanGroove()).report;
     EXPECT_TRUE(r.findings.empty());
     EXPECT_NEAR(r.removedMm2, 9 * 10, 1e-3);  // the groove, 9 wide, 10 deep
     EXPECT_EQ(r.feedsInAir, 0u);
@@ -216,22 +226,24 @@ TEST(TurningChecks, CleanGrooveReportsNothing)
 TEST(TurningChecks, RapidThroughStockIsReportedAtItsLine)
 {
     // Line 8 goes back in at the bottom of the first slot instead of over the stock.
-    const TurningReport r = checkProgram(cleanGroove("X40", "G0 X40\nG0 Z46"));
+    const CheckedProgram checked = checkProgram(cleanGroove("X40", "G0 X40\nG0 Z46"));
+    const TurningReport& r = checked.report;
     ASSERT_EQ(r.rapidsInStock, 1u);
-    const TurningFinding& f = r.findings.front();
-    EXPECT_EQ(f.kind, TurningCheckKind::RapidInStock);
+    const Check& f = r.findings.front();
+    EXPECT_EQ(f.kind, CheckKind::RapidInStock);
     EXPECT_EQ(f.severity, base::Severity::Error);
-    EXPECT_EQ(f.line, 9);  // G0 Z46 from the bottom at Z43 through the uncut Z 46..49
-    EXPECT_NEAR(f.mm, 10, 1e-3);
+    EXPECT_EQ(checked.lineOf(f), 9);  // G0 Z46 from the bottom at Z43 through the uncut Z 46..49
+    EXPECT_NEAR(f.valueMm, 10, 1e-3);
     EXPECT_EQ(r.gouges, 0u);
     EXPECT_EQ(r.feedsInAir, 0u);  // the plunge after it is already at X40: no move
 }
 
 TEST(TurningChecks, PlungeTooDeepIsAGougeAtItsLine)
 {
-    const TurningReport r = checkProgram(cleanGroove("X39.5"));
+    const CheckedProgram checked = checkProgram(cleanGroove("X39.5"));
+    const TurningReport& r = checked.report;
     ASSERT_EQ(r.gouges, 1u);
-    EXPECT_EQ(r.findings.front().line, 9);
+    EXPECT_EQ(checked.lineOf(r.findings.front()), 9);
     EXPECT_NEAR(r.maxGougeMm, 0.5, 1e-3);
     EXPECT_EQ(r.rapidsInStock, 0u);
 }
@@ -245,7 +257,7 @@ TEST(TurningChecks, DiameterProgramsAreHalvedByTheInterpreter)
             diameter.replace(at, std::strlen(from), to);
     diameter.replace(diameter.find("G1 X40"), 6, "G1 X80");
     diameter.replace(diameter.find("G1 X40"), 6, "G1 X80");
-    const TurningReport r = checkProgram(diameter);
+    const TurningReport r = checkProgram(diameter).report;
     EXPECT_EQ(r.rapidsInStock, 0u);
     ASSERT_EQ(r.gouges, 1u);
     EXPECT_NEAR(r.maxGougeMm, 0.5, 1e-3);

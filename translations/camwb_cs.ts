@@ -1707,10 +1707,6 @@ Save them first?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>&lt;b&gt;Estimated machining time&lt;/b&gt;</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
         <source>Rapids / feed moves / arcs</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1743,10 +1739,6 @@ Save them first?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>Time</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
         <source>Z min (cutting)</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1765,6 +1757,26 @@ Save them first?</source>
     <message>
         <source>%1 blocks interpreted; %2 error(s), %3 other diagnostic(s): the figures cover what could be interpreted; %4 move(s) of blocks with an error are left out.</source>
         <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Estimate from distance and feed</source>
+        <translation>Odhad z dráhy a posuvu</translation>
+    </message>
+    <message>
+        <source>&lt;b&gt;Cycle time with accelerations&lt;/b&gt; (no machine chosen: default limits)</source>
+        <translation>&lt;b&gt;Čas cyklu se zrychleními&lt;/b&gt; (bez zvoleného stroje: výchozí limity)</translation>
+    </message>
+    <message>
+        <source>&lt;b&gt;Cycle time with accelerations&lt;/b&gt; (%1)</source>
+        <translation>&lt;b&gt;Čas cyklu se zrychleními&lt;/b&gt; (%1)</translation>
+    </message>
+    <message>
+        <source>Time (distance/feed)</source>
+        <translation>Čas (dráha/posuv)</translation>
+    </message>
+    <message>
+        <source>Time with accelerations</source>
+        <translation>Čas se zrychleními</translation>
     </message>
 </context>
 <context>

@@ -40,7 +40,7 @@ target_link_libraries(camwb_gui_widgets
   PUBLIC Qt6::Widgets camwb_toolpath
   PRIVATE Qt6::OpenGL Qt6::OpenGLWidgets camwb_qscintilla ${_camwb_gui_vtk_modules})
 # The NC editor speaks the NC module's dialects and diagnostics and runs its text tools.
-target_link_libraries(camwb_gui_widgets PUBLIC camwb_nc)
+target_link_libraries(camwb_gui_widgets PUBLIC camwb_nc camwb_sim)
 # Registers VTK's object factories (OpenGL2 render classes, FreeType text) in this library.
 vtk_module_autoinit(TARGETS camwb_gui_widgets MODULES ${_camwb_gui_vtk_modules})
 target_compile_options(camwb_gui_widgets PRIVATE -Wall -Wextra -Wno-unused-parameter)

@@ -82,6 +82,10 @@ inline constexpr int kMachineFormatVersion = 2;
 // own when the file gives one, else toolpath::kDefaultRapidMmPerMin. nullptr: no machine.
 double estimateRapidMmPerMin(const Machine* machine);
 
+// The machine a simulation plans on when none is chosen: X, Y and Z without travel limits and
+// every motion limit at its default above (the time it gives is said to be on default limits).
+Machine defaultLimitsMachine();
+
 base::Result<Machine> parseMachine(const std::string& json, const std::string& pathForMessages);
 base::Result<Machine> loadMachine(const std::string& path);
 

@@ -180,6 +180,18 @@ double estimateRapidMmPerMin(const Machine* machine)
     return machine != nullptr && machine->rapidMmPerMin > 0 ? machine->rapidMmPerMin : toolpath::kDefaultRapidMmPerMin;
 }
 
+Machine defaultLimitsMachine()
+{
+    Machine m;
+    m.id = "default-limits";
+    m.name = "default limits";
+    constexpr double kInf = std::numeric_limits<double>::infinity();
+    for (const char* name : {"X", "Y", "Z"})
+        m.axes.push_back({name, false, -kInf, kInf});
+    applyMotionDefaults(m);
+    return m;
+}
+
 base::Result<Machine> parseMachine(const std::string& json, const std::string& path)
 {
     auto root = parse(json, path);

@@ -77,7 +77,8 @@ template <class Dialog> Dialog* reuseOrCreate(QWidget* parent, NcEditor* editor)
 }  // namespace
 
 void registerNcEditorActions(ActionRegistry& registry, NcEditor* editor, QWidget* dialogParent,
-                             std::function<Prompter&()> prompter, std::function<double()> machineRapid)
+                             std::function<Prompter&()> prompter,
+                             std::function<std::shared_ptr<const kinematics::Machine>()> machine)
 {
     const QString menu = Tr::tr("&NC");
     QPointer<NcEditor> ed(editor);
@@ -162,11 +163,11 @@ void registerNcEditorActions(ActionRegistry& registry, NcEditor* editor, QWidget
         });
     add({QStringLiteral("Cam.Nc.ProgramInfo"), Tr::tr("Program &Information…"), menu, QKeySequence(), false, false,
          Tr::tr("Extents, path lengths and machining time of the NC program")},
-        [ed, parent, machineRapid] {
+        [ed, parent, machine] {
             if (!ed || !parent)
                 return;
             ProgramInfoDialog* dialog = reuseOrCreate<ProgramInfoDialog>(parent, ed);
-            dialog->analyze(ed->text(), ed->dialect(), ed->programPath(), machineRapid ? machineRapid() : 0);
+            dialog->analyze(ed->text(), ed->dialect(), ed->programPath(), machine ? machine() : nullptr);
             dialog->show();
             dialog->raise();
         });

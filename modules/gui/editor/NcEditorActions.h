@@ -4,8 +4,13 @@
 #pragma once
 
 #include <functional>
+#include <memory>
 
 class QWidget;
+
+namespace camwb::kinematics {
+struct Machine;
+}
 
 namespace camwb::gui {
 
@@ -18,9 +23,11 @@ class Prompter;
 // children of it (found with findChild<CompareDialog*>() / findChild<ProgramInfoDialog*>()).
 // Compare asks `prompter` for the file first and opens with both sides. Renumbering and removing
 // numbers are one undo step each in the editor. Results and notes go to the status bar when
-// `dialogParent` is a QMainWindow. `machineRapid` answers the rapid rate of the machine the
-// program is for (0: none known), which Program Information's time estimate then assumes.
+// `dialogParent` is a QMainWindow. `machine` answers the machine the program is for (null: none
+// known): Program Information's simple estimate assumes its rapid, and its cycle time with
+// accelerations plans the motion on its axes' limits.
 void registerNcEditorActions(ActionRegistry& registry, NcEditor* editor, QWidget* dialogParent,
-                             std::function<Prompter&()> prompter, std::function<double()> machineRapid = {});
+                             std::function<Prompter&()> prompter,
+                             std::function<std::shared_ptr<const kinematics::Machine>()> machine = {});
 
 }  // namespace camwb::gui

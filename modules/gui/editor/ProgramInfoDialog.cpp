@@ -1,7 +1,10 @@
 #include "gui/editor/ProgramInfoDialog.h"
 
+#include "kinematics/Machine.h"
 #include "nc/Interpreter.h"
 #include "nc/tools/ErrorRecords.h"
+#include "sim/MotionPlan.h"
+#include "sim/Moves.h"
 #include "toolpath/ToolpathRecorder.h"
 
 #include <QDialogButtonBox>
@@ -24,6 +27,8 @@ struct ProgramInfoDialog::Result {
     nc::InterpretResult interpretation;
     std::vector<bool> recordsInError;  // left out of the figures
     toolpath::ProgramStats stats;
+    sim::CycleTimes planned;  // on the machine's limits
+    QString machineName;      // empty: the default limits
 };
 
 namespace {
@@ -98,13 +103,13 @@ ProgramInfoDialog::~ProgramInfoDialog()
 }
 
 void ProgramInfoDialog::analyze(const QString& text, nc::Dialect dialect, const QString& fileName,
-                                double machineRapidMmPerMin)
+                                std::shared_ptr<const kinematics::Machine> machine)
 {
     if (isBusy())
         return;
-    if (machineRapidMmPerMin > 0) {
+    if (machine && machine->rapidMmPerMin > 0) {
         const QSignalBlocker quiet(m_rapid);  // not a second analysis for the same program
-        m_rapid->setValue(machineRapidMmPerMin);
+        m_rapid->setValue(machine->rapidMmPerMin);
     }
     m_status->setText(tr("Interpreting the program…"));
     m_view->clear();
@@ -116,7 +121,9 @@ void ProgramInfoDialog::analyze(const QString& text, nc::Dialect dialect, const 
     if (!fileName.isEmpty() && QFileInfo(fileName).isAbsolute())
         options.resolveProgram = nc::resolverBeside(fileName.toStdString(), dialect);
     const double rapid = m_rapid->value();
-    m_thread = QThread::create([result, source = std::move(source), options, rapid] {
+    if (machine)
+        result->machineName = QString::fromStdString(machine->name.empty() ? machine->id : machine->name);
+    m_thread = QThread::create([result, source = std::move(source), options, rapid, machine] {
         toolpath::ToolpathRecorder recorder;
         result->interpretation = nc::interpret(source, options, recorder);
         result->program = recorder.take();
@@ -125,6 +132,12 @@ void ProgramInfoDialog::analyze(const QString& text, nc::Dialect dialect, const 
         statsOptions.rapidMmPerMin = rapid;
         statsOptions.recordsInError = &result->recordsInError;
         result->stats = toolpath::programStats(result->program, statsOptions);
+        const kinematics::Machine limits = machine ? *machine : kinematics::defaultLimitsMachine();
+        sim::MoveOptions moveOptions;
+        if (limits.kinematics.fiveAxis())
+            moveOptions.chain = &limits.kinematics;
+        const sim::MoveList moves = sim::buildMoves(result->program, moveOptions, result->recordsInError);
+        result->planned = sim::cycleTimes(moves, sim::planMotion(moves, limits), result->stats);
     });
     QThread* thread = m_thread;
     connect(thread, &QThread::finished, this, [this, thread, result] {
@@ -141,6 +154,8 @@ bool ProgramInfoDialog::isBusy() const { return m_thread != nullptr; }
 bool ProgramInfoDialog::hasStats() const { return m_result != nullptr; }
 
 const toolpath::ProgramStats& ProgramInfoDialog::stats() const { return m_result->stats; }
+
+double ProgramInfoDialog::plannedSeconds() const { return m_result->planned.planned.totalSeconds(); }
 
 int ProgramInfoDialog::errorCount() const
 {
@@ -193,7 +208,12 @@ void ProgramInfoDialog::render()
     row(tr("Feed time"), duration(s.totals.feedSeconds));
     row(tr("Rapid time (at %1 mm/min)").arg(s.rapidMmPerMin, 0, 'f', 0), duration(s.totals.rapidSeconds));
     row(tr("Dwell time"), duration(s.totals.dwellSeconds));
-    row(tr("<b>Estimated machining time</b>"), QStringLiteral("<b>%1</b>").arg(duration(s.totals.totalSeconds())));
+    row(tr("Estimate from distance and feed"), duration(s.totals.totalSeconds()));
+    const sim::CycleTimes& planned = m_result->planned;
+    row(m_result->machineName.isEmpty()
+            ? tr("<b>Cycle time with accelerations</b> (no machine chosen: default limits)")
+            : tr("<b>Cycle time with accelerations</b> (%1)").arg(m_result->machineName.toHtmlEscaped()),
+        QStringLiteral("<b>%1</b>").arg(duration(planned.planned.totalSeconds())));
     row(tr("Rapids / feed moves / arcs"), QStringLiteral("%1 / %2 / %3").arg(s.rapids).arg(s.feedMoves).arg(s.arcs));
     row(tr("Cycle holes"), QString::number(s.cycleHoles));
     row(tr("Tool changes"), QString::number(s.toolChanges));
@@ -203,13 +223,17 @@ void ProgramInfoDialog::render()
 
     html += QStringLiteral("<h3>%1</h3>").arg(tr("Per tool"));
     html += QStringLiteral("<table cellspacing=0 cellpadding=3 border=1><tr><th>%1</th><th>%2</th><th>%3</th>"
-                           "<th>%4</th><th>%5</th></tr>")
-                .arg(tr("Tool"), tr("Feed length (mm)"), tr("Rapid length (mm)"), tr("Time"), tr("Z min (cutting)"));
+                           "<th>%4</th><th>%5</th><th>%6</th></tr>")
+                .arg(tr("Tool"), tr("Feed length (mm)"), tr("Rapid length (mm)"), tr("Time (distance/feed)"),
+                     tr("Time with accelerations"), tr("Z min (cutting)"));
     for (const toolpath::ToolStats& t : s.tools) {
+        const auto plannedTool = planned.plannedPerTool.find(t.toolNumber);
         html += QStringLiteral("<tr><td>%1</td><td align=right>%2</td><td align=right>%3</td><td align=right>%4</td>"
-                               "<td align=right>%5</td></tr>")
+                               "<td align=right>%5</td><td align=right>%6</td></tr>")
                     .arg(t.toolNumber == 0 ? tr("(none)") : QStringLiteral("T%1").arg(t.toolNumber),
                          mm(t.totals.feedLengthMm), mm(t.totals.rapidLengthMm), duration(t.totals.totalSeconds()),
+                         plannedTool == planned.plannedPerTool.end() ? QStringLiteral("—")
+                                                                     : duration(plannedTool->second.totalSeconds()),
                          t.totals.cuttingExtents.empty ? QStringLiteral("—") : mm(t.totals.cuttingExtents.min.z));
     }
     html += QStringLiteral("</table>");

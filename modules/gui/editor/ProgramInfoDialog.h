@@ -1,10 +1,13 @@
 // Program information (Cam.Nc.ProgramInfo): interprets the editor's program in its dialect in the
 // background (the GUI stays responsive on a million lines) and shows extents per axis for rapids,
-// cutting and both, rapid and feed lengths, a machining time estimate and the same per tool.
+// cutting and both, rapid and feed lengths, the cycle time with the machine's accelerations
+// (sim::planMotion) beside the simple distance/feed estimate, and the same per tool.
 #pragma once
 
 #include "nc/Dialect.h"
 #include "toolpath/ProgramStats.h"
+
+#include <memory>
 
 #include <QDialog>
 
@@ -14,6 +17,10 @@ class QDoubleSpinBox;
 class QLabel;
 class QTextBrowser;
 class QThread;
+
+namespace camwb::kinematics {
+struct Machine;
+}
 
 namespace camwb::gui {
 
@@ -25,13 +32,15 @@ public:
     ~ProgramInfoDialog() override;  // waits for a running analysis
 
     // Starts interpreting `text` off the GUI thread; `fileName` names it in diagnostics and finds
-    // its subprograms (in its folder) when it is a path. machineRapidMmPerMin > 0: the machine's
-    // rapid rate, which the estimate then assumes (as the post's header estimate does).
+    // its subprograms (in its folder) when it is a path. With a `machine`, the simple estimate
+    // assumes its rapid rate (as the post's header estimate does) and the cycle time is planned on
+    // its axes; without one, on the default limits (kinematics/Machine.h), which the dialog says.
     void analyze(const QString& text, nc::Dialect dialect, const QString& fileName = {},
-                 double machineRapidMmPerMin = 0);
+                 std::shared_ptr<const kinematics::Machine> machine = nullptr);
     bool isBusy() const;
     bool hasStats() const;
     const toolpath::ProgramStats& stats() const;  // valid when hasStats()
+    double plannedSeconds() const;                // the cycle time with accelerations; valid when hasStats()
     int errorCount() const;
     QString reportText() const;  // what the dialog shows, as plain text
 

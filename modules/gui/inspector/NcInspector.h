@@ -52,6 +52,7 @@ public:
     // next trace on: its limit warnings join the program's diagnostics. nullptr: no machine checks.
     void setMachine(std::shared_ptr<const kinematics::Machine> machine);
     const kinematics::Machine* machine() const { return m_machine.get(); }
+    std::shared_ptr<const kinematics::Machine> sharedMachine() const { return m_machine; }
     // Tool sizes for cutter compensation where the program defines none (a posted program's D1
     // means the job's tool), from the next trace on; nullptr: none.
     void setToolTable(std::shared_ptr<const nc::ToolTable> tools) { m_tools = std::move(tools); }

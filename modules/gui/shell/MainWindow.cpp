@@ -273,7 +273,7 @@ void MainWindow::registerActions()
         [this] { m_inspector->traceNow(); });
     registerNcEditorActions(
         *m_actions, m_editor, this, [this]() -> Prompter& { return *m_prompter; },
-        [this] { return m_inspector->machine() ? m_inspector->machine()->rapidMmPerMin : 0.0; });
+        [this] { return m_inspector->sharedMachine(); });
 
     add({"Cam.View.Isometric", tr("&Isometric"), view, QKeySequence(Qt::Key_0), true, true},
         [this] { m_view->setViewPreset(View3D::Preset::Isometric); });

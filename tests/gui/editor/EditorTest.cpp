@@ -517,6 +517,13 @@ private slots:
         QVERIFY(std::abs(s.totals.cuttingExtents.min.z + 1.0) < 1e-6);
         QVERIFY(std::abs(s.totals.feedSeconds - (11.0 / 100 + 100.0 / 600) * 60) < 1e-6);
         QVERIFY(dialog->reportText().contains(QStringLiteral("100.000")));
+        // The cycle time with accelerations (no machine: the default limits, said so) adds the
+        // tool change and the speed ramps to what distance and feed alone give.
+        QVERIFY(dialog->reportText().contains(QStringLiteral("default limits")));
+        QVERIFY2(
+            dialog->plannedSeconds() > s.totals.totalSeconds() + 4,
+            qPrintable(
+                QStringLiteral("%1 s planned vs %2 s").arg(dialog->plannedSeconds()).arg(s.totals.totalSeconds())));
         saveShot(dialog, QStringLiteral("program-info.png"));
     }
 };

@@ -21,16 +21,18 @@ namespace {
 
 TopoDS_Shape buildExamplePart()
 {
-    using parts::cut, parts::roundedBox, parts::verticalCylinder;
+    using parts::cut, parts::drilledHole, parts::roundedBox, parts::verticalCylinder;
     TopoDS_Shape part = roundedBox(gp_Pnt(0, 0, 0), gp_Pnt(90, 60, 15), 8);
     // Tools reach 1 mm past the faces they open so the booleans see no coplanar faces. The pocket
     // tool has the island cut out of it, so the island keeps the block's top at Z 15.
     const TopoDS_Shape pocket = roundedBox(gp_Pnt(33 - 22, 30 - 18, 10), gp_Pnt(33 + 22, 30 + 18, 16), 6);
     part = cut(part, cut(pocket, verticalCylinder(33, 30, 5, 9, 17), "the island"), "the pocket");
     part = cut(part, verticalCylinder(72, 30, 5, -1, 16), "the through hole");
-    // Blind holes concentric with the R8 corners: 5.5 mm of wall to the outside, about 5 mm to the pocket.
+    // Blind holes concentric with the R8 corners: 5.5 mm of wall to the outside, about 5 mm to the
+    // pocket; drilled, so with a 118° drill's point below their full depth (what the simulator
+    // compares the drilled part with).
     for (const auto& [x, y] : {std::pair{8.0, 8.0}, {82.0, 8.0}, {82.0, 52.0}, {8.0, 52.0}})
-        part = cut(part, verticalCylinder(x, y, 2.5, 7, 16), "a drilled hole");
+        part = cut(part, drilledHole(x, y, 2.5, 7, 16, 118), "a drilled hole");
     return part;
 }
 

@@ -3,8 +3,10 @@
 #pragma once
 
 #include <BRepAlgoAPI_Cut.hxx>
+#include <BRepAlgoAPI_Fuse.hxx>
 #include <BRepFilletAPI_MakeFillet.hxx>
 #include <BRepPrimAPI_MakeBox.hxx>
+#include <BRepPrimAPI_MakeCone.hxx>
 #include <BRepPrimAPI_MakeCylinder.hxx>
 #include <BRep_Tool.hxx>
 #include <Standard_Failure.hxx>
@@ -41,6 +43,19 @@ inline TopoDS_Shape roundedBox(gp_Pnt lo, gp_Pnt hi, double radius)
 inline TopoDS_Shape verticalCylinder(double x, double y, double radius, double z0, double z1)
 {
     return BRepPrimAPI_MakeCylinder(gp_Ax2(gp_Pnt(x, y, z0), gp::DZ()), radius, z1 - z0).Shape();
+}
+
+// A drilled blind hole's volume: the cylinder from the shoulder z0 up to z1 and below it the
+// drill's point, a cone of `pointAngleDeg` included angle, as a twist drill leaves it.
+inline TopoDS_Shape drilledHole(double x, double y, double radius, double z0, double z1, double pointAngleDeg)
+{
+    const double pointDepth = radius / std::tan(pointAngleDeg * M_PI / 360);
+    const TopoDS_Shape point =
+        BRepPrimAPI_MakeCone(gp_Ax2(gp_Pnt(x, y, z0 - pointDepth), gp::DZ()), 0, radius, pointDepth).Shape();
+    BRepAlgoAPI_Fuse hole(verticalCylinder(x, y, radius, z0, z1), point);
+    if (!hole.IsDone())
+        throw Standard_Failure("fusing a drilled hole's point failed");
+    return hole.Shape();
 }
 
 // `from` minus `tool`; throws Standard_Failure naming `what` when the boolean fails.

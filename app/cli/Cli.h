@@ -67,5 +67,9 @@ int postsCommand(const std::vector<std::string>& args);  // camwb-cli posts [<id
 int postCommand(const std::vector<std::string>& args);   // camwb-cli post <input> --post <id> ...
 int ncCommand(const std::vector<std::string>& args);     // camwb-cli nc trace <file> ...
 int clCommand(const std::vector<std::string>& args);     // camwb-cli cl <job> [-o <file>]
+int simCommand(const std::vector<std::string>& args);    // camwb-cli sim <job|program> ...
+
+// "x0,y0,z0,x1,y1,z1": a stock box, each minimum below its maximum; nothing and `error` set when not.
+std::optional<base::Box3> parseStockBox(const std::string& text, std::string& error);
 
 }  // namespace camwb::cli

@@ -23,6 +23,10 @@ void printUsage(std::ostream& out)
            "       camwb-cli cl <job.camwb> [-o <output file>]\n"
            "       camwb-cli nc trace <NC file> [--dialect sinumerik|heidenhain|iso] [--machine <id>]\n"
            "                      [--format text|jsonl] [-o <output file>] [--max-blocks N] [--tool-table FILE]\n"
+           "       camwb-cli sim <job.camwb | NC file> [--machine <id>] [--resolution mm] [--tolerance mm]\n"
+           "                      [--report <file.json>|-] [--stl <cut.stl>] [--trace-csv <out.csv>] [--sample-ms ms]\n"
+           "                      [--model <part>] [--stock x0,y0,z0,x1,y1,z1|<blank file>] [--tool-table FILE]\n"
+           "                      [--stock-profile x0,z0,x1,z1|<X,Z file> --insert-width mm [--design-profile ...]]\n"
            "\n"
            "run:   loads the job and its model, recomputes every operation, posts the program with\n"
            "       the job's post, machine and post properties and writes the NC file.\n"
@@ -44,6 +48,18 @@ void printUsage(std::ostream& out)
            "       the exit code is 1 when there are errors. Subprograms are looked up beside the file.\n"
            "       Cutter compensation moves the contour by the tool radius: from the program's own tool\n"
            "       data, else from --tool-table (LinuxCNC format: T<n> P<pocket> D<diameter> Z<length>).\n"
+           "sim:   simulates a job (its model, stock, tools and machine) or an NC program (--model is the\n"
+           "       part to compare with, --stock the blank: a box or a mesh/STEP file; --machine its\n"
+           "       limits): the cycle time with the machine's accelerations, the stock cut at --resolution\n"
+           "       (a height field, or tri-dexels when the tool tilts), and every check with file and\n"
+           "       line: rapids through stock, gouges deeper than --tolerance (default 0.02 mm), shank or\n"
+           "       holder in the stock, plunges of tools that do not cut at their centre, cutting with the\n"
+           "       spindle off, machine limits. Exit code 1 when any of them is an error. --report writes\n"
+           "       them all as JSON, --stl the cut stock, --trace-csv the motion sampled every --sample-ms\n"
+           "       (default 3 ms). An NC program's tools are sized from --tool-table (as for nc trace).\n"
+           "       Turning: --stock-profile gives the revolved stock in XZ (X a radius), a rectangle or a file of\n"
+           "       X,Z points, --design-profile the contour it must not cut into, --insert-width the grooving\n"
+           "       insert (reference: its left corner); rapids through the stock and gouges are errors.\n"
            "\n"
            "Posts are looked up in --post-path folders, $CAMWB_POST_PATH, ~/.local/share/camwb/posts\n"
            "and the built-in folders, in that order: a user's post overrides a built-in one.\n"
@@ -77,10 +93,7 @@ int printDiagnostics(const std::vector<base::Diagnostic>& diagnostics)
     return static_cast<int>(base::countOf(diagnostics, base::Severity::Warning));
 }
 
-namespace {
-
-// "x0,y0,z0,x1,y1,z1": the stock box's corners, each minimum below its maximum.
-std::optional<base::Box3> parseStock(const std::string& text, std::string& error)
+std::optional<base::Box3> parseStockBox(const std::string& text, std::string& error)
 {
     double v[6];
     std::string_view rest = text;
@@ -101,8 +114,6 @@ std::optional<base::Box3> parseStock(const std::string& text, std::string& error
     }
     return base::Box3{{v[0], v[1], v[2]}, {v[3], v[4], v[5]}, false};
 }
-
-}  // namespace
 
 bool takePostOption(const std::vector<std::string>& args, std::size_t& i, PostOptions& options, std::string& error)
 {
@@ -131,7 +142,7 @@ bool takePostOption(const std::vector<std::string>& args, std::size_t& i, PostOp
     } else if (arg == "--project") {
         options.project = value;
     } else if (arg == "--stock") {
-        options.stock = parseStock(value, error);
+        options.stock = parseStockBox(value, error);
     } else {
         options.output = value;
     }

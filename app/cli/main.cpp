@@ -32,5 +32,7 @@ int main(int argc, char** argv)
         return clCommand(rest);
     if (args[0] == "nc")
         return ncCommand(rest);
+    if (args[0] == "sim")
+        return simCommand(rest);
     return usageError("unknown command '" + args[0] + "'");
 }

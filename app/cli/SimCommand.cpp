@@ -1,0 +1,466 @@
+// camwb-cli sim: simulates a job or an NC program headless: the cycle time from the machine's
+// limits, the stock cut with the job's or the given tools, every check with file and line, the
+// remaining material against the model, and optionally the cut stock as STL, the sampled motion
+// as CSV and everything as a JSON report.
+#include "Cli.h"
+
+#include "base/AtomicFile.h"
+#include "base/NumberFormat.h"
+#include "document/NcTrace.h"
+#include "document/Simulate.h"
+#include "nc/ToolTable.h"
+#include "occ/Model.h"
+#include "sim/MotionPlan.h"
+#include "sim/MotionSamples.h"
+#include "sim/Simulation.h"
+#include "sim/TurningCheck.h"
+#include "sim/TurningProfile.h"
+#include "toolpath/ProgramStats.h"
+
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <charconv>
+#include <filesystem>
+#include <iostream>
+
+namespace camwb::cli {
+
+namespace {
+
+struct SimOptions {
+    std::string input;
+    std::string machineId;
+    double resolutionMm = 0;  // 0: the default for the input's size
+    double toleranceMm = 0.02;
+    double sampleMs = 3;
+    std::string report;  // JSON; "-" = stdout
+    std::string stl;
+    std::string traceCsv;
+    std::string model;      // NC: the part to compare with
+    std::string stock;      // NC: a box "x0,y0,z0,x1,y1,z1" or a mesh/STEP file
+    std::string toolTable;  // NC: the tools' sizes
+    // Turning: the revolved stock and the part's (offset) contour in XZ, and the insert's width.
+    std::string stockProfile;
+    std::string designProfile;
+    double insertWidthMm = 0;
+};
+
+std::optional<double> positive(const std::string& text)
+{
+    double value = 0;
+    const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
+    if (ec != std::errc() || end != text.data() + text.size() || !(value > 0))
+        return std::nullopt;
+    return value;
+}
+
+std::string parseSimOptions(const std::vector<std::string>& args, SimOptions& options)
+{
+    for (std::size_t i = 0; i < args.size(); ++i) {
+        const std::string& arg = args[i];
+        const bool takesValue = arg == "--machine" || arg == "--resolution" || arg == "--report" || arg == "--stl" ||
+                                arg == "--trace-csv" || arg == "--model" || arg == "--stock" || arg == "--tolerance" ||
+                                arg == "--sample-ms" || arg == "--tool-table" || arg == "--stock-profile" ||
+                                arg == "--design-profile" || arg == "--insert-width";
+        if (!takesValue) {
+            if (!arg.empty() && arg[0] == '-')
+                return "unknown option '" + arg + "'";
+            if (!options.input.empty())
+                return "sim takes one input, got '" + options.input + "' and '" + arg + "'";
+            options.input = arg;
+            continue;
+        }
+        if (i + 1 >= args.size())
+            return arg + " needs a value";
+        const std::string& value = args[++i];
+        if (arg == "--resolution" || arg == "--tolerance" || arg == "--sample-ms" || arg == "--insert-width") {
+            const std::optional<double> number = positive(value);
+            if (!number)
+                return arg + " needs a positive number, not '" + value + "'";
+            (arg == "--resolution"  ? options.resolutionMm
+             : arg == "--tolerance" ? options.toleranceMm
+             : arg == "--sample-ms" ? options.sampleMs
+                                    : options.insertWidthMm) = *number;
+        } else if (arg == "--stock-profile") {
+            options.stockProfile = value;
+        } else if (arg == "--design-profile") {
+            options.designProfile = value;
+        } else if (arg == "--machine") {
+            options.machineId = value;
+        } else if (arg == "--report") {
+            options.report = value;
+        } else if (arg == "--stl") {
+            options.stl = value;
+        } else if (arg == "--trace-csv") {
+            options.traceCsv = value;
+        } else if (arg == "--model") {
+            options.model = value;
+        } else if (arg == "--tool-table") {
+            options.toolTable = value;
+        } else {
+            options.stock = value;
+        }
+    }
+    if (options.input.empty())
+        return "sim needs a job (.camwb) or an NC program";
+    const bool turning = !options.stockProfile.empty();
+    if (!turning && (!options.designProfile.empty() || options.insertWidthMm > 0))
+        return "--design-profile and --insert-width need --stock-profile (a turning simulation)";
+    if (turning && (!options.stock.empty() || !options.model.empty()))
+        return "--stock-profile simulates turning: --stock and --model are for milling";
+    if (turning && options.insertWidthMm <= 0)
+        return "--stock-profile needs --insert-width (the grooving insert's width, mm)";
+    return {};
+}
+
+// Everything the report needs, from a job or from an NC program.
+struct Input {
+    toolpath::Toolpath program;
+    std::vector<bool> recordsInError;
+    std::optional<document::Job> job;
+    std::optional<document::NcTrace> trace;
+    std::optional<kinematics::Machine> machine;
+    sim::TriangleMesh design;
+    std::optional<base::Box3> stockBox;
+    sim::TriangleMesh stockMesh;
+    std::vector<base::Diagnostic> diagnostics;  // reading the program
+};
+
+document::RecordPlace placeOf(const Input& input, const std::string& path, std::int64_t record)
+{
+    if (input.trace)
+        return document::placeOfRecord(*input.trace, record);
+    return document::placeOfRecord(*input.job, path, input.program, record);
+}
+
+std::optional<Input> loadJobInput(const SimOptions& options)
+{
+    std::optional<ComputedJob> computed = computeJobFile(options.input);
+    if (!computed)
+        return std::nullopt;
+    Input input;
+    auto model = document::loadJobModel(computed->job);
+    if (!model) {
+        fail(model.error().toString());
+        return std::nullopt;
+    }
+    input.design = document::designMesh(model.value());
+    input.stockBox = document::jobStockBox(computed->job, model.value());
+    if (options.machineId.empty()) {
+        auto machine = document::jobMachine(computed->job);
+        if (!machine) {
+            fail(machine.error().toString());
+            return std::nullopt;
+        }
+        input.machine = std::move(machine).value();
+    }
+    input.diagnostics = computed->report.warnings;
+    input.program = std::move(computed->program);
+    input.job = std::move(computed->job);
+    return input;
+}
+
+std::optional<Input> loadNcInput(const SimOptions& options, const kinematics::Machine* machine)
+{
+    auto text = base::readTextFile(options.input);
+    if (!text) {
+        fail(text.error().toString());
+        return std::nullopt;
+    }
+    Input input;
+    document::NcTraceRequest request;
+    request.text = std::move(text).value();
+    request.path = options.input;
+    if (machine)
+        request.machine = std::make_shared<const kinematics::Machine>(*machine);
+    if (!options.toolTable.empty()) {
+        auto table = nc::readToolTable(options.toolTable);
+        if (!table) {
+            fail(table.error().toString());
+            return std::nullopt;
+        }
+        request.tools = std::make_shared<const nc::ToolTable>(std::move(table).value());
+    }
+    input.trace = document::traceNc(request);
+    input.program = input.trace->program;
+    if (request.tools)
+        document::sizeTools(input.program, *request.tools);
+    input.recordsInError = input.trace->recordsInError;
+    input.diagnostics = input.trace->result.diagnostics;
+    return input;
+}
+
+// --model and --stock: meshes through occ (STEP, IGES, BREP, STL), or a box.
+bool loadModelAndStock(const SimOptions& options, Input& input)
+{
+    if (!options.model.empty()) {
+        auto model = occ::Model::load(options.model);
+        if (!model) {
+            fail(model.error().toString());
+            return false;
+        }
+        input.design = document::designMesh(model.value());
+    }
+    if (options.stock.empty()) {
+        if (!input.stockBox && !input.design.empty())
+            input.stockBox = input.design.bounds();
+        return true;
+    }
+    if (options.stock.find(',') != std::string::npos) {
+        std::string error;
+        input.stockBox = parseStockBox(options.stock, error);
+        if (!input.stockBox) {
+            usageError(error);
+            return false;
+        }
+        return true;
+    }
+    auto blank = occ::Model::load(options.stock);
+    if (!blank) {
+        fail(blank.error().toString());
+        return false;
+    }
+    input.stockMesh = document::designMesh(blank.value());
+    input.stockBox.reset();
+    return true;
+}
+
+// A resolution that keeps the stock near a million columns when the user gives none.
+double defaultResolution(const base::Box3& box)
+{
+    const double area = (box.max.x - box.min.x) * (box.max.y - box.min.y);
+    double r = 0.1;
+    while (area / (r * r) > 4e6)
+        r *= 2;
+    return r;
+}
+
+std::string mm(double value) { return base::formatFixed(value, 3); }
+
+nlohmann::json point(const base::Vec3& p) { return {p.x, p.y, p.z}; }
+
+}  // namespace
+
+int simCommand(const std::vector<std::string>& args)
+{
+    SimOptions options;
+    if (const std::string error = parseSimOptions(args, options); !error.empty())
+        return usageError(error);
+    const bool isJob = std::filesystem::path(options.input).extension() == ".camwb";
+    if (isJob && (!options.model.empty() || !options.stock.empty() || !options.toolTable.empty()))
+        return usageError("--model, --stock and --tool-table are for an NC program; a job brings its own");
+
+    std::optional<kinematics::Machine> machine;
+    if (!options.machineId.empty()) {
+        auto found = kinematics::findMachine(options.machineId, kinematics::defaultMachineDirs());
+        if (!found)
+            return fail(found.error().toString());
+        machine = std::move(found).value();
+    }
+    std::optional<Input> input = isJob ? loadJobInput(options) : loadNcInput(options, machine ? &*machine : nullptr);
+    if (!input || !loadModelAndStock(options, *input))
+        return kExitError;
+    if (machine)
+        input->machine = machine;
+    const bool turning = !options.stockProfile.empty();
+    std::optional<sim::TurningReport> turned;
+    if (turning) {
+        input->program = sim::inTurningPlane(input->program);
+        auto stock = sim::stockProfileFromArgument(options.stockProfile);
+        if (!stock)
+            return fail(stock.error().toString());
+        sim::TurningRegion design;
+        if (!options.designProfile.empty()) {
+            auto read = sim::stockProfileFromArgument(options.designProfile);
+            if (!read)
+                return fail(read.error().toString());
+            design = std::move(read).value();
+        }
+        sim::TurningOptions turningOptions;
+        turningOptions.insert.widthMm = options.insertWidthMm;
+        turned = sim::checkTurning(input->program, std::move(stock).value(), std::move(design), turningOptions);
+    }
+
+    // The stock and the cut.
+    std::optional<sim::StockSpec> spec;
+    const base::Box3 stockBounds = input->stockBox ? *input->stockBox : input->stockMesh.bounds();
+    if (input->stockBox || !input->stockMesh.empty()) {
+        spec.emplace();
+        spec->box = input->stockBox;
+        spec->blank = input->stockMesh;
+        spec->resolutionMm = options.resolutionMm > 0 ? options.resolutionMm : defaultResolution(stockBounds);
+        spec->design = input->design;
+        spec->gougeToleranceMm = options.toleranceMm;
+    }
+    sim::SimulationSetup setup;
+    setup.machine = input->machine ? &*input->machine : nullptr;
+    setup.stockSpec = spec ? &*spec : nullptr;
+    sim::SimulationResult result = sim::simulate(input->program, setup, input->recordsInError);
+    if (turned) {
+        result.checks.insert(result.checks.begin(), turned->findings.begin(), turned->findings.end());
+        result.deviation.maxGougeMm = turned->maxGougeMm;
+        result.deviation.gougeAt = {turned->maxGougeAt.y, 0, turned->maxGougeAt.x};
+    }
+    // The interpreter checked the same limits on the same records (as warnings): say each once.
+    std::erase_if(input->diagnostics, [&](const base::Diagnostic& d) {
+        return std::any_of(result.checks.begin(), result.checks.end(), [&](const sim::Check& c) {
+            return c.kind == sim::CheckKind::MachineLimit && c.message == d.message;
+        });
+    });
+    printDiagnostics(input->diagnostics);
+
+    // Time.
+    const kinematics::Machine planMachine = input->machine ? *input->machine : kinematics::defaultLimitsMachine();
+    const sim::MotionPlan plan = sim::planMotion(result.moves, planMachine);
+    toolpath::StatsOptions statsOptions;
+    statsOptions.rapidMmPerMin = kinematics::estimateRapidMmPerMin(input->machine ? &*input->machine : nullptr);
+    statsOptions.recordsInError = input->recordsInError.empty() ? nullptr : &input->recordsInError;
+    const sim::CycleTimes times =
+        sim::cycleTimes(result.moves, plan, toolpath::programStats(input->program, statsOptions));
+
+    // What it found, as compilers report.
+    std::vector<base::Diagnostic> found;
+    for (const sim::Check& check : result.checks) {
+        if (check.kind == sim::CheckKind::AirCutting)
+            continue;  // in the report and the counts; too many to print
+        const document::RecordPlace place = placeOf(*input, options.input, check.record);
+        std::string message = check.message;
+        if (!place.operation.empty())
+            message = place.operation + ": " + message;
+        found.push_back({check.severity, place.file, place.line, 0, message});
+    }
+    printDiagnostics(found);
+    std::cout << "cycle time " << base::formatFixed(times.planned.totalSeconds(), 1) << " s on "
+              << (input->machine ? input->machine->id : std::string("default limits (no machine given)"))
+              << " (distance/feed estimate " << base::formatFixed(times.simpleSeconds, 1) << " s), "
+              << result.moves.moves.size() << " moves\n";
+    if (turned)
+        std::cout << "turning stock: removed " << base::formatFixed(turned->removedMm2, 2) << " mm2 of the profile, "
+                  << turned->rapidsInStock << " rapids through stock, " << turned->gouges << " gouges (deepest "
+                  << mm(turned->maxGougeMm) << " mm)\n";
+    if (result.cut) {
+        std::cout << "stock " << (result.tilts ? "tri-dexel" : "height field") << " at " << mm(spec->resolutionMm)
+                  << " mm: removed " << base::formatFixed(result.removedMm3, 1) << " mm3, feed in air "
+                  << base::formatFixed(result.airCuttingMm, 1) << " mm\n";
+        if (!input->design.empty())
+            std::cout << "largest gouge " << mm(result.deviation.maxGougeMm) << " mm, largest leftover over the part "
+                      << mm(result.deviation.maxLeftoverMm) << " mm, material beside the part up to "
+                      << mm(result.deviation.maxOutsideMm) << " mm thick\n";
+    }
+
+    // Files.
+    if (!options.stl.empty()) {
+        if (!result.stock)
+            return usageError("--stl needs a stock (a job, or --stock/--model for an NC program)");
+        if (const base::Status written = sim::writeStl(result.stock->mesh(), options.stl, "camwb-cli sim"); !written)
+            return fail(written.error().toString());
+    }
+    if (!options.traceCsv.empty()) {
+        std::string csv = "time_s,move,line,tip_x,tip_y,tip_z,axis_i,axis_j,axis_k,X,Y,Z,R1_deg,R2_deg,feed_mm_min\n";
+        sim::SampleOptions sampling;
+        sampling.stepSeconds = options.sampleMs / 1000;
+        sim::sampleMotion(
+            result.moves, plan, planMachine,
+            [&](const sim::MotionSample& s) {
+                const int line = placeOf(*input, options.input, result.moves.moves[s.move].record).line;
+                csv += base::formatFixed(s.at.time, 4) + "," + std::to_string(s.move) + "," + std::to_string(line);
+                for (double v : {s.at.tip.x, s.at.tip.y, s.at.tip.z})
+                    csv += "," + base::formatFixed(v, 4);
+                for (double v : {s.toolAxis.x, s.toolAxis.y, s.toolAxis.z})
+                    csv += "," + base::formatFixed(v, 6);
+                for (double v : {s.at.linear.x, s.at.linear.y, s.at.linear.z, s.at.rotaryDeg[0], s.at.rotaryDeg[1]})
+                    csv += "," + base::formatFixed(v, 4);
+                csv += "," + base::formatFixed(s.feedMmPerMin, 1) + "\n";
+                return true;
+            },
+            sampling);
+        if (const base::Status written = base::writeFileAtomically(options.traceCsv, csv); !written)
+            return fail(written.error().toString());
+    }
+    if (!options.report.empty()) {
+        nlohmann::json report;
+        report["input"] = options.input;
+        report["machine"] = input->machine ? input->machine->id : std::string();
+        report["cycleTimeSeconds"] = times.planned.totalSeconds();
+        report["simpleEstimateSeconds"] = times.simpleSeconds;
+        report["moves"] = result.moves.moves.size();
+        nlohmann::json perTool = nlohmann::json::array();
+        for (const auto& [tool, split] : times.plannedPerTool) {
+            const auto simple = times.simplePerTool.find(tool);
+            perTool.push_back({{"tool", tool},
+                               {"seconds", split.totalSeconds()},
+                               {"simpleSeconds", simple == times.simplePerTool.end() ? 0.0 : simple->second}});
+        }
+        report["perTool"] = perTool;
+        nlohmann::json perOperation = nlohmann::json::array();
+        for (const sim::SectionTime& section : times.sections)
+            perOperation.push_back(
+                {{"name", section.name}, {"tool", section.tool}, {"seconds", section.planned.totalSeconds()}});
+        report["perOperation"] = perOperation;
+        report["stock"] = result.stock ? nlohmann::json{{"kind", result.tilts ? "tri-dexel" : "height-field"},
+                                                        {"resolutionMm", spec->resolutionMm},
+                                                        {"min", point(stockBounds.min)},
+                                                        {"max", point(stockBounds.max)},
+                                                        {"remainingMm3", result.stock->volumeMm3()}}
+                                       : nlohmann::json();
+        if (turned)
+            report["turning"] = {{"removedMm2", turned->removedMm2},
+                                 {"rapidsInStock", turned->rapidsInStock},
+                                 {"gouges", turned->gouges},
+                                 {"feedsInAir", turned->feedsInAir},
+                                 {"maxRapidDepthMm", turned->maxRapidDepthMm}};
+        report["removedMm3"] = result.removedMm3;
+        report["airCuttingMm"] = result.airCuttingMm;
+        report["maxGougeMm"] = result.deviation.maxGougeMm;
+        report["maxLeftoverMm"] = result.deviation.maxLeftoverMm;
+        report["maxOutsideMm"] = result.deviation.maxOutsideMm;
+        auto extreme = [&](const base::Vec3& at, std::int64_t move) {
+            nlohmann::json j{{"at", point(at)}};
+            if (move >= 0 && move < static_cast<std::int64_t>(result.moves.moves.size())) {
+                const document::RecordPlace place = placeOf(*input, options.input, result.moves.moves[move].record);
+                j["file"] = place.file;
+                j["line"] = place.line;
+                if (!place.operation.empty())
+                    j["operation"] = place.operation;
+            }
+            return j;
+        };
+        report["gouge"] = extreme(result.deviation.gougeAt, result.deviation.gougeMove);
+        report["leftover"] = extreme(result.deviation.leftoverAt, result.deviation.leftoverMove);
+        nlohmann::json checks = nlohmann::json::array();
+        for (const sim::Check& check : result.checks) {
+            const document::RecordPlace place = placeOf(*input, options.input, check.record);
+            nlohmann::json c{{"kind", sim::checkKindName(check.kind)},
+                             {"severity", base::severityName(check.severity)},
+                             {"file", place.file},
+                             {"line", place.line},
+                             {"message", check.message}};
+            if (!place.operation.empty())
+                c["operation"] = place.operation;
+            if (check.record >= 0)
+                c["record"] = check.record;
+            if (check.move >= 0)
+                c["at"] = point(check.at);
+            if (check.valueMm != 0)
+                c["valueMm"] = check.valueMm;
+            checks.push_back(c);
+        }
+        for (const base::Diagnostic& d : input->diagnostics)
+            checks.push_back({{"kind", "program"},
+                              {"severity", base::severityName(d.severity)},
+                              {"file", d.file},
+                              {"line", d.line},
+                              {"message", d.message}});
+        report["checks"] = checks;
+        const std::string text = report.dump(2) + "\n";
+        if (options.report == "-")
+            std::cout << text;
+        else if (const base::Status written = base::writeFileAtomically(options.report, text); !written)
+            return fail(written.error().toString());
+    }
+    const bool programErrors = base::countOf(input->diagnostics, base::Severity::Error) > 0;
+    return result.count(base::Severity::Error) > 0 || programErrors ? kExitError : kExitOk;
+}
+
+}  // namespace camwb::cli

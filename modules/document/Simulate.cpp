@@ -1,0 +1,82 @@
+#include "document/Simulate.h"
+
+#include "document/JobPipeline.h"
+#include "document/NcTrace.h"
+#include "nc/ToolTable.h"
+#include "occ/Model.h"
+#include "post/PostRegistry.h"
+#include "toolpath/Toolpath.h"
+
+#include <cmath>
+
+namespace camwb::document {
+
+sim::TriangleMesh designMesh(const occ::Model& model, double deflectionMm)
+{
+    const occ::DisplayMesh display = model.mesh(deflectionMm);
+    sim::TriangleMesh mesh;
+    mesh.positions = display.positions;
+    mesh.triangles = display.triangles;
+    return mesh;
+}
+
+base::Result<std::optional<kinematics::Machine>> jobMachine(const Job& job)
+{
+    auto post = loadJobPost(job, post::defaultPostDirs());
+    if (!post)
+        return post.error();
+    return post::machineForPost(post.value().info(), job.machineId, kinematics::defaultMachineDirs());
+}
+
+base::Box3 jobStockBox(const Job& job, const occ::Model& model)
+{
+    const base::Vec3 &lo = job.stock.min, &hi = job.stock.max;
+    if (hi.x > lo.x && hi.y > lo.y && hi.z > lo.z)
+        return base::Box3{lo, hi, false};
+    return designMesh(model).bounds();
+}
+
+void sizeTools(toolpath::Toolpath& program, const nc::ToolTable& table)
+{
+    for (std::size_t i = 0; i < program.size(); ++i) {
+        auto* change = std::get_if<toolpath::ToolChange>(&program.record(i));
+        if (!change || change->tool.diameterMm > 0)
+            continue;
+        if (const nc::ToolTableEntry* entry = table.find(change->tool.number)) {
+            change->tool.diameterMm = entry->diameterMm;
+            if (change->tool.lengthMm <= 0)
+                change->tool.lengthMm = entry->lengthMm;
+        }
+    }
+}
+
+RecordPlace placeOfRecord(const NcTrace& trace, std::int64_t record)
+{
+    RecordPlace place;
+    if (record < 0 || static_cast<std::size_t>(record) >= trace.program.size()) {
+        place.file = trace.result.files.empty() ? std::string() : trace.result.files.front();
+        return place;
+    }
+    const toolpath::SourceRef& source = trace.program.source(static_cast<std::size_t>(record));
+    const auto& files = trace.result.files;
+    place.file = source.file >= 0 && source.file < static_cast<int>(files.size()) ? files[source.file]
+                 : files.empty()                                                  ? std::string()
+                                                                                  : files.front();
+    place.line = std::max(source.line, 0);
+    return place;
+}
+
+RecordPlace placeOfRecord(const Job& job, const std::string& jobPath, const toolpath::Toolpath& program,
+                          std::int64_t record)
+{
+    RecordPlace place;
+    place.file = jobPath;
+    if (record < 0 || static_cast<std::size_t>(record) >= program.size())
+        return place;
+    const int op = program.source(static_cast<std::size_t>(record)).operationIndex;
+    if (op >= 0 && op < static_cast<int>(job.operations.size()))
+        place.operation = job.operations[op].name();
+    return place;
+}
+
+}  // namespace camwb::document

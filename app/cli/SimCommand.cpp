@@ -4,6 +4,7 @@
 // as CSV and everything as a JSON report.
 #include "Cli.h"
 
+#include "SimMeasured.h"
 #include "base/AtomicFile.h"
 #include "base/NumberFormat.h"
 #include "document/NcTrace.h"
@@ -15,6 +16,7 @@
 #include "sim/Simulation.h"
 #include "sim/TurningCheck.h"
 #include "sim/TurningProfile.h"
+#include "toolpath/ClText.h"
 #include "toolpath/ProgramStats.h"
 
 #include <nlohmann/json.hpp>
@@ -23,6 +25,7 @@
 #include <charconv>
 #include <filesystem>
 #include <iostream>
+#include <set>
 
 namespace camwb::cli {
 
@@ -44,6 +47,9 @@ struct SimOptions {
     std::string stockProfile;
     std::string designProfile;
     double insertWidthMm = 0;
+    // A trace the control recorded (TNCscope CSV), and how far its Z is above the tool tip.
+    std::string measured;
+    double measuredZOffsetMm = 0;
 };
 
 std::optional<double> positive(const std::string& text)
@@ -59,10 +65,11 @@ std::string parseSimOptions(const std::vector<std::string>& args, SimOptions& op
 {
     for (std::size_t i = 0; i < args.size(); ++i) {
         const std::string& arg = args[i];
-        const bool takesValue = arg == "--machine" || arg == "--resolution" || arg == "--report" || arg == "--stl" ||
-                                arg == "--trace-csv" || arg == "--model" || arg == "--stock" || arg == "--tolerance" ||
-                                arg == "--sample-ms" || arg == "--tool-table" || arg == "--stock-profile" ||
-                                arg == "--design-profile" || arg == "--insert-width";
+        static const std::set<std::string> kTakesValue{
+            "--machine",       "--resolution",     "--report",       "--stl",       "--trace-csv",
+            "--model",         "--stock",          "--tolerance",    "--sample-ms", "--tool-table",
+            "--stock-profile", "--design-profile", "--insert-width", "--measured",  "--measured-z-offset"};
+        const bool takesValue = kTakesValue.count(arg) > 0;
         if (!takesValue) {
             if (!arg.empty() && arg[0] == '-')
                 return "unknown option '" + arg + "'";
@@ -82,6 +89,13 @@ std::string parseSimOptions(const std::vector<std::string>& args, SimOptions& op
              : arg == "--tolerance" ? options.toleranceMm
              : arg == "--sample-ms" ? options.sampleMs
                                     : options.insertWidthMm) = *number;
+        } else if (arg == "--measured") {
+            options.measured = value;
+        } else if (arg == "--measured-z-offset") {
+            const std::optional<double> number = toolpath::parseNumber(value);
+            if (!number)
+                return arg + " needs a number, not '" + value + "'";
+            options.measuredZOffsetMm = *number;
         } else if (arg == "--stock-profile") {
             options.stockProfile = value;
         } else if (arg == "--design-profile") {
@@ -349,6 +363,18 @@ int simCommand(const std::vector<std::string>& args)
                       << mm(result.deviation.maxOutsideMm) << " mm thick\n";
     }
 
+    std::optional<nlohmann::json> measured;
+    if (!options.measured.empty()) {
+        auto read = measuredReport(options.measured, planMachine, result.moves, options.measuredZOffsetMm);
+        if (!read)
+            return fail(read.error().toString());
+        measured = std::move(read).value();
+        std::cout << "measured trace: " << (*measured)["samples"].get<std::size_t>() << " samples, reversals";
+        for (const auto& [axis, times] : (*measured)["reversals"].items())
+            std::cout << " " << axis << " " << times.size();
+        std::cout << "\n";
+    }
+
     // Files.
     if (!options.stl.empty()) {
         if (!result.stock)
@@ -453,6 +479,8 @@ int simCommand(const std::vector<std::string>& args)
                               {"line", d.line},
                               {"message", d.message}});
         report["checks"] = checks;
+        if (measured)
+            report["measured"] = *measured;
         const std::string text = report.dump(2) + "\n";
         if (options.report == "-")
             std::cout << text;

@@ -5,6 +5,7 @@
 #include "base/Diagnostic.h"
 #include "document/Job.h"
 #include "document/JobPipeline.h"
+#include "kinematics/Machine.h"
 #include "post/PostProcessor.h"
 
 #include "base/Vec.h"
@@ -68,6 +69,9 @@ int postCommand(const std::vector<std::string>& args);   // camwb-cli post <inpu
 int ncCommand(const std::vector<std::string>& args);     // camwb-cli nc trace <file> ...
 int clCommand(const std::vector<std::string>& args);     // camwb-cli cl <job> [-o <file>]
 int simCommand(const std::vector<std::string>& args);    // camwb-cli sim <job|program> ...
+
+// The machine `--machine <id>` names (an id or a machine file); none when `id` is empty.
+base::Result<std::optional<kinematics::Machine>> machineOption(const std::string& id);
 
 // "x0,y0,z0,x1,y1,z1": a stock box, each minimum below its maximum; nothing and `error` set when not.
 std::optional<base::Box3> parseStockBox(const std::string& text, std::string& error);

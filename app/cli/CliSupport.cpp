@@ -97,6 +97,16 @@ int printDiagnostics(const std::vector<base::Diagnostic>& diagnostics)
     return static_cast<int>(base::countOf(diagnostics, base::Severity::Warning));
 }
 
+base::Result<std::optional<kinematics::Machine>> machineOption(const std::string& id)
+{
+    if (id.empty())
+        return std::optional<kinematics::Machine>();
+    auto found = kinematics::findMachine(id, kinematics::defaultMachineDirs());
+    if (!found)
+        return found.error();
+    return std::optional<kinematics::Machine>(std::move(found).value());
+}
+
 std::optional<base::Box3> parseStockBox(const std::string& text, std::string& error)
 {
     double v[6];

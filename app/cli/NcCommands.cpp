@@ -84,14 +84,12 @@ int ncCommand(const std::vector<std::string>& args)
         return usageError(error);
 
     nc::InterpretOptions interpretOptions;
-    std::optional<kinematics::Machine> machine;
-    if (!options.machineId.empty()) {
-        auto found = kinematics::findMachine(options.machineId, kinematics::defaultMachineDirs());
-        if (!found)
-            return fail(found.error().toString());
-        machine = std::move(found).value();
+    auto found = machineOption(options.machineId);
+    if (!found)
+        return fail(found.error().toString());
+    const std::optional<kinematics::Machine> machine = std::move(found).value();
+    if (machine)
         interpretOptions.machine = &*machine;
-    }
     if (options.maxBlocks > 0)
         interpretOptions.maxBlocks = options.maxBlocks;
     std::optional<nc::ToolTable> toolTable;

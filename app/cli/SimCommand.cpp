@@ -265,13 +265,10 @@ int simCommand(const std::vector<std::string>& args)
     if (isJob && (!options.model.empty() || !options.stock.empty() || !options.toolTable.empty()))
         return usageError("--model, --stock and --tool-table are for an NC program; a job brings its own");
 
-    std::optional<kinematics::Machine> machine;
-    if (!options.machineId.empty()) {
-        auto found = kinematics::findMachine(options.machineId, kinematics::defaultMachineDirs());
-        if (!found)
-            return fail(found.error().toString());
-        machine = std::move(found).value();
-    }
+    auto chosen = machineOption(options.machineId);
+    if (!chosen)
+        return fail(chosen.error().toString());
+    const std::optional<kinematics::Machine> machine = std::move(chosen).value();
     std::optional<Input> input = isJob ? loadJobInput(options) : loadNcInput(options, machine ? &*machine : nullptr);
     if (!input || !loadModelAndStock(options, *input))
         return kExitError;

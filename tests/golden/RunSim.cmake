@@ -1,9 +1,11 @@
 # Runs `camwb-cli sim` with ARGS and a JSON report, and checks its exit code (EXPECT_EXIT), a
 # text stderr must hold (EXPECT_STDERR, optional) and report entries: EXPECT_JSON is a list of
 # "path=value" where path is dot-separated (checks.0.kind) and value is compared as text, or
-# "path>number" / "path<number" for numbers.
+# "path>number" / "path<number" for numbers. CHECK_FILES: the test also asked for ${OUT_DIR}/cut.stl
+# and ${OUT_DIR}/samples.csv: the STL must hold triangles (84 bytes + 50 a triangle) and the CSV
+# its header and more than MIN_SAMPLES rows.
 set(report ${OUT_DIR}/report.json)
-file(REMOVE ${report})
+file(REMOVE ${report} ${OUT_DIR}/cut.stl ${OUT_DIR}/samples.csv)
 file(MAKE_DIRECTORY ${OUT_DIR})
 execute_process(COMMAND ${CLI} sim ${ARGS} --report ${report} RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
 if(NOT rc EQUAL EXPECT_EXIT)
@@ -36,3 +38,18 @@ foreach(expect IN LISTS EXPECT_JSON)
     message(FATAL_ERROR "${path} is ${got}, expected less than ${want}")
   endif()
 endforeach()
+if(CHECK_FILES)
+  file(SIZE ${OUT_DIR}/cut.stl stl_bytes)
+  math(EXPR triangles_bytes "${stl_bytes} - 84")
+  math(EXPR remainder "${triangles_bytes} % 50")
+  if(stl_bytes LESS 134 OR NOT remainder EQUAL 0)
+    message(FATAL_ERROR "cut.stl is ${stl_bytes} bytes: not a binary STL with triangles")
+  endif()
+  file(STRINGS ${OUT_DIR}/samples.csv rows)
+  list(LENGTH rows count)
+  list(GET rows 0 header)
+  if(NOT header STREQUAL "time_s,move,line,tip_x,tip_y,tip_z,axis_i,axis_j,axis_k,X,Y,Z,R1_deg,R2_deg,feed_mm_min"
+     OR count LESS_EQUAL MIN_SAMPLES)
+    message(FATAL_ERROR "samples.csv: header '${header}', ${count} rows (more than ${MIN_SAMPLES} expected)")
+  endif()
+endif()

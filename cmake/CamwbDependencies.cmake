@@ -14,7 +14,7 @@ endif()
 find_package(MPI COMPONENTS C)
 find_package(VTK 9.1 REQUIRED COMPONENTS
   CommonCore CommonDataModel CommonColor FiltersCore FiltersSources InteractionStyle
-  RenderingCore RenderingOpenGL2 RenderingAnnotation)
+  RenderingCore RenderingOpenGL2 RenderingAnnotation ChartsCore RenderingContext2D RenderingContextOpenGL2)
 
 # QScintilla for Qt6 ships no CMake config on Debian.
 find_library(QSCINTILLA_LIBRARY NAMES qscintilla2_qt6 REQUIRED)

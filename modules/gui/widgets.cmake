@@ -13,6 +13,10 @@ add_library(camwb_gui_widgets STATIC
   ${_camwb_gui_widgets_dir}/view3d/TaskOverlay.cpp
   ${_camwb_gui_widgets_dir}/view3d/View3D.h
   ${_camwb_gui_widgets_dir}/view3d/View3D.cpp
+  ${_camwb_gui_widgets_dir}/sim/SimOverlay.h
+  ${_camwb_gui_widgets_dir}/sim/SimOverlay.cpp
+  ${_camwb_gui_widgets_dir}/sim/SimChart.h
+  ${_camwb_gui_widgets_dir}/sim/SimChart.cpp
   ${_camwb_gui_widgets_dir}/editor/NcStyles.h
   ${_camwb_gui_widgets_dir}/editor/detail/DialectLexers.h
   ${_camwb_gui_widgets_dir}/editor/WordAddressLexer.cpp
@@ -31,11 +35,13 @@ add_library(camwb_gui_widgets STATIC
   ${_camwb_gui_widgets_dir}/editor/NcEditor.h
   ${_camwb_gui_widgets_dir}/editor/NcEditor.cpp)
 target_include_directories(camwb_gui_widgets PUBLIC ${_camwb_gui_widgets_dir}/.. ${PROJECT_BINARY_DIR}/generated)
+# ChartsCore, RenderingContext2D/ContextOpenGL2: the simulator's chart (vtkChartXY in a context actor).
 # RenderingFreeType: axis labels of the orientation marker (a private dependency of
 # RenderingAnnotation; its target is imported with the components found in CamwbDependencies).
 set(_camwb_gui_vtk_modules
   VTK::CommonCore VTK::CommonDataModel VTK::FiltersCore VTK::InteractionStyle VTK::RenderingCore
-  VTK::RenderingOpenGL2 VTK::RenderingAnnotation VTK::RenderingFreeType VTK::RenderingUI)
+  VTK::RenderingOpenGL2 VTK::RenderingAnnotation VTK::RenderingFreeType VTK::RenderingUI
+  VTK::ChartsCore VTK::RenderingContext2D VTK::RenderingContextOpenGL2)
 target_link_libraries(camwb_gui_widgets
   PUBLIC Qt6::Widgets camwb_toolpath
   PRIVATE Qt6::OpenGL Qt6::OpenGLWidgets camwb_qscintilla ${_camwb_gui_vtk_modules})

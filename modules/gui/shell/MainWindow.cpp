@@ -15,6 +15,10 @@
 #include "gui/shell/Prompter.h"
 #include "gui/shell/ReportView.h"
 #include "gui/shell/Workbench.h"
+#include "gui/sim/SimActions.h"
+#include "gui/sim/SimDock.h"
+#include "gui/sim/SimPlayer.h"
+#include "gui/sim/SimRequest.h"
 #include "gui/tasks/OperationPanel.h"
 #include "gui/view3d/TaskOverlay.h"
 #include "gui/view3d/View3D.h"
@@ -62,6 +66,7 @@ MainWindow::MainWindow(QWidget* parent) :
     m_progress(new QProgressBar(this)),
     m_inspector(new NcInspector(this)),
     m_inspectorPanel(new InspectorPanel(this)),
+    m_simPlayer(new SimPlayer(this)),
     m_viewBanner(new Banner(QStringLiteral("viewBanner"), this)),
     m_ncBanner(new Banner(QStringLiteral("ncBanner"), this))
 {
@@ -90,6 +95,10 @@ MainWindow::MainWindow(QWidget* parent) :
     m_taskDock->hide();
     resizeDocks({jobDock, ncDock}, {330, 470}, Qt::Horizontal);
     resizeDocks({reportDock}, {140}, Qt::Vertical);
+    m_simDock = new SimDock(m_simPlayer, this);
+    m_simDockWidget = addDock(this, tr("Simulator"), QStringLiteral("simDock"), m_simDock, Qt::BottomDockWidgetArea);
+    tabifyDockWidget(reportDock, m_simDockWidget);
+    reportDock->raise();
     resizeDocks({jobDock, modalDock}, {260, 420}, Qt::Vertical);
 
     m_progress->setMaximumWidth(220);
@@ -274,6 +283,7 @@ void MainWindow::registerActions()
     registerNcEditorActions(
         *m_actions, m_editor, this, [this]() -> Prompter& { return *m_prompter; },
         [this] { return m_inspector->sharedMachine(); });
+    setUpSimulator();
 
     add({"Cam.View.Isometric", tr("&Isometric"), view, QKeySequence(Qt::Key_0), true, true},
         [this] { m_view->setViewPreset(View3D::Preset::Isometric); });
@@ -420,6 +430,31 @@ void MainWindow::traceOnMachine(const QString& id)
                                                     : tr("The NC program is traced on the machine %1").arg(id));
 }
 
+// The simulator plays what the editor holds; the job's stock and model come with the job's own
+// posted program only (an NC file opened apart may be for another part).
+void MainWindow::setUpSimulator()
+{
+    m_simPlayer->attach(m_editor, m_view, m_simDock->chart());
+    registerSimulatorActions(
+        *m_actions, m_simPlayer,
+        [this]() -> std::optional<SimRunRequest> {
+            QString why;
+            auto request = simulationRequest(*m_inspector, *m_workbench, m_editorShowsPosted, &why);
+            if (!request) {
+                m_report->append(Workbench::Severity::Error, why);
+                statusBar()->showMessage(why, 8000);
+                return std::nullopt;
+            }
+            m_simDockWidget->show();
+            m_simDockWidget->raise();
+            return request;
+        },
+        [this] { return m_simDock->lineToJumpTo(); });
+    m_simDock->addActions(*m_actions);
+    connect(m_simPlayer, &SimPlayer::message, m_report, &ReportView::append);
+    connect(m_workbench, &Workbench::modelChanged, m_simPlayer, &SimPlayer::clear);
+}
+
 void MainWindow::refreshToolList()
 {
     std::vector<int> hidden;
@@ -522,7 +557,8 @@ void MainWindow::registerDockActions(const QString& viewMenu)
     const std::pair<const char*, const char*> docks[]{{"Cam.View.JobDock", "jobDock"},
                                                       {"Cam.View.NcDock", "ncDock"},
                                                       {"Cam.View.InspectorDock", "modalDock"},
-                                                      {"Cam.View.ReportDock", "reportDock"}};
+                                                      {"Cam.View.ReportDock", "reportDock"},
+                                                      {"Cam.View.SimDock", "simDock"}};
     bool first = true;
     for (const auto& [id, name] : docks) {
         auto* dock = findChild<QDockWidget*>(QLatin1String(name));

@@ -24,6 +24,8 @@ class NcEditor;
 class OperationPanel;
 class Prompter;
 class ReportView;
+class SimDock;
+class SimPlayer;
 class View3D;
 class Workbench;
 
@@ -43,6 +45,8 @@ public:
     JobTree* jobTree() const { return m_jobTree; }
     NcInspector* inspector() const { return m_inspector; }
     InspectorPanel* inspectorPanel() const { return m_inspectorPanel; }
+    SimPlayer* simPlayer() const { return m_simPlayer; }
+    SimDock* simDock() const { return m_simDock; }
     // The open task panel (docked on the right), or nullptr.
     OperationPanel* taskPanel() const { return m_taskPanel; }
     // Asks the user's questions and shows the errors that stop an action (dialogs by default;
@@ -74,6 +78,7 @@ private:
     void registerActions();
     void connectWorkbench();
     void connectInspector();
+    void setUpSimulator();
     void refreshToolList();
     void fillMachineList();
     void traceOnMachine(const QString& id);
@@ -98,6 +103,9 @@ private:
     QProgressBar* m_progress;
     NcInspector* m_inspector;
     InspectorPanel* m_inspectorPanel;
+    SimPlayer* m_simPlayer;
+    SimDock* m_simDock = nullptr;
+    QDockWidget* m_simDockWidget = nullptr;
     QDockWidget* m_taskDock = nullptr;
     OperationPanel* m_taskPanel = nullptr;
     Banner* m_viewBanner;

@@ -1,5 +1,6 @@
 #include "gui/view3d/View3D.h"
 
+#include "gui/sim/SimOverlay.h"
 #include "gui/view3d/TaskOverlay.h"
 #include "gui/view3d/VtkOpenGLWidget.h"
 #include "gui/view3d/detail/ModelActors.h"
@@ -59,6 +60,8 @@ struct View3D::Private {
     vtkNew<vtkAxesActor> axes;
     vtkSmartPointer<vtkActor> modelActor;
     TaskOverlay* overlay = nullptr;
+    SimOverlay* simulation = nullptr;
+    bool simulationShown = false;
     vtkSmartPointer<vtkActor> edgeActor;
     struct ToolActors {
         int tool = 0;
@@ -132,6 +135,8 @@ View3D::View3D(QWidget* parent) : QWidget(parent), d(std::make_unique<Private>()
     d->setupScene();
     d->overlay = new TaskOverlay(
         d->renderer, [this] { d->render(); }, this);
+    d->simulation = new SimOverlay(
+        d->renderer, [this] { d->render(); }, this);
     auto* layout = new QVBoxLayout(this);
     layout->setContentsMargins(0, 0, 0, 0);
 
@@ -143,7 +148,10 @@ View3D::View3D(QWidget* parent) : QWidget(parent), d(std::make_unique<Private>()
         window->SetNumberOfLayers(2);
         window->AddRenderer(d->renderer);
         window->AddRenderer(d->markerRenderer);
-        connect(d->gl, &VtkOpenGLWidget::aboutToRender, this, [this] { d->syncMarker(); });
+        connect(d->gl, &VtkOpenGLWidget::aboutToRender, this, [this] {
+            d->syncMarker();
+            emit frameRendered();
+        });
         d->gl->installEventFilter(this);
         layout->addWidget(d->gl);
     } else {
@@ -229,6 +237,7 @@ void View3D::setModel(const occ::DisplayMesh& mesh)
     }
     if (d->edgeActor)
         d->renderer->AddActor(d->edgeActor);
+    applyVisibility();
     fitAll();
 }
 
@@ -296,6 +305,7 @@ void View3D::showScene()
         }
         d->toolActors.push_back(actors);
     }
+    applyVisibility();
 }
 
 void View3D::clearToolpath()
@@ -337,16 +347,34 @@ void View3D::setToolVisible(int tool, bool visible)
         d->hiddenTools.erase(tool);
     else
         d->hiddenTools.insert(tool);
+    applyVisibility();
+    d->render();
+}
+
+void View3D::applyVisibility()
+{
     for (const Private::ToolActors& actors : d->toolActors) {
-        if (actors.tool != tool)
-            continue;
+        const bool visible = !d->simulationShown && d->hiddenTools.count(actors.tool) == 0;
         if (actors.cut)
             actors.cut->SetVisibility(visible);
         if (actors.rapid)
             actors.rapid->SetVisibility(visible);
     }
+    for (vtkActor* actor : {d->modelActor.Get(), d->edgeActor.Get()})
+        if (actor != nullptr)
+            actor->SetVisibility(!d->simulationShown);
+}
+
+SimOverlay& View3D::simulation() const { return *d->simulation; }
+
+void View3D::setSimulationShown(bool shown)
+{
+    d->simulationShown = shown;
+    applyVisibility();
     d->render();
 }
+
+bool View3D::isSimulationShown() const { return d->simulationShown; }
 
 bool View3D::isToolVisible(int tool) const { return d->hiddenTools.count(tool) == 0; }
 

@@ -29,6 +29,7 @@ class ToolpathPolylines;
 
 namespace camwb::gui {
 
+class SimOverlay;
 class TaskOverlay;
 class ToolpathScene;
 
@@ -87,6 +88,13 @@ public:
     // The task panels' layer: the live preview of an operation and the faces picked for it. A
     // click on the model that picks no segment selects its face there (Ctrl: adds/removes).
     TaskOverlay& overlay() const;
+    // The simulator's layer: tool, travelled path, cut stock, analysis colours (gui/sim).
+    SimOverlay& simulation() const;
+    // While the simulator shows its stock, the model and the backplot are hidden (the stock would
+    // fight the model's surface where it is cut to size); picking segments works all the same.
+    void setSimulationShown(bool shown);
+    bool isSimulationShown() const;
+
     // The model face (1-based) under a widget position, 0 for none. Needs OpenGL.
     int pickFace(const QPointF& widgetPosition) const;
 
@@ -99,6 +107,8 @@ public:
 signals:
     // A left click (without dragging) near a segment: the segment and the record that made it.
     void segmentPicked(int segment, int record);
+    // VTK has just drawn a frame (the simulator counts them for its frame rate).
+    void frameRendered();
 
 protected:
     bool eventFilter(QObject* watched, QEvent* event) override;
@@ -106,6 +116,7 @@ protected:
 private:
     struct Private;
     void showScene();
+    void applyVisibility();
     std::unique_ptr<Private> d;
 };
 

@@ -1,0 +1,266 @@
+#include "gui/sim/SimDock.h"
+
+#include "gui/actions/ActionRegistry.h"
+#include "gui/shell/Banner.h"
+#include "gui/sim/SimChart.h"
+#include "gui/sim/SimPlayer.h"
+
+#include <QAction>
+#include <QCheckBox>
+#include <QComboBox>
+#include <QDoubleSpinBox>
+#include <QFormLayout>
+#include <QHBoxLayout>
+#include <QLabel>
+#include <QProgressBar>
+#include <QPushButton>
+#include <QSlider>
+#include <QSpinBox>
+#include <QToolBar>
+#include <QVBoxLayout>
+
+#include <cmath>
+
+namespace camwb::gui {
+
+namespace {
+
+QString clock(double seconds)
+{
+    const int minutes = static_cast<int>(seconds / 60);
+    return QStringLiteral("%1:%2").arg(minutes).arg(seconds - 60 * minutes, 4, 'f', 1, QLatin1Char('0'));
+}
+
+}  // namespace
+
+SimDock::SimDock(SimPlayer* player, QWidget* parent) :
+    QWidget(parent),
+    m_player(player),
+    m_buttons(new QToolBar(this)),
+    m_speed(new QSlider(Qt::Horizontal, this)),
+    m_speedLabel(new QLabel(this)),
+    m_line(new QSpinBox(this)),
+    m_readout(new QLabel(this)),
+    m_cycle(new QLabel(this)),
+    m_progress(new QProgressBar(this)),
+    m_cancel(new QPushButton(tr("Cancel"), this)),
+    m_banner(new Banner(QStringLiteral("simBanner"), this)),
+    m_quantity(new QComboBox(this)),
+    m_autoLimits(new QCheckBox(tr("Auto"), this)),
+    m_low(new QDoubleSpinBox(this)),
+    m_high(new QDoubleSpinBox(this)),
+    m_deviationLimit(new QDoubleSpinBox(this)),
+    m_results(new QLabel(this)),
+    m_chart(new SimChart(this))
+{
+    setObjectName(QStringLiteral("simDockContent"));
+    m_buttons->setObjectName(QStringLiteral("simToolBar"));
+    m_speed->setObjectName(QStringLiteral("simSpeed"));
+    m_line->setObjectName(QStringLiteral("simLine"));
+    m_readout->setObjectName(QStringLiteral("simReadout"));
+    m_cycle->setObjectName(QStringLiteral("simCycleTime"));
+    m_progress->setObjectName(QStringLiteral("simProgress"));
+    m_cancel->setObjectName(QStringLiteral("simCancel"));
+    m_chart->setObjectName(QStringLiteral("simChart"));
+    m_results->setObjectName(QStringLiteral("simResults"));
+
+    m_speed->setRange(0, 100);
+    m_speed->setValue(50);  // 10x
+    m_speed->setMaximumWidth(160);
+    m_line->setRange(1, 99999999);
+    m_line->setPrefix(tr("line "));
+    m_progress->hide();
+    m_cancel->hide();
+
+    auto* top = new QHBoxLayout;
+    top->addWidget(m_buttons);
+    top->addWidget(m_line);
+    top->addWidget(new QLabel(tr("Speed"), this));
+    top->addWidget(m_speed);
+    top->addWidget(m_speedLabel);
+    top->addStretch(1);
+    auto* status = new QHBoxLayout;
+    status->addWidget(m_readout, 1);
+    status->addWidget(m_cycle);
+    status->addWidget(m_progress);
+    status->addWidget(m_cancel);
+    auto* body = new QHBoxLayout;
+    body->addWidget(makeResults());
+    body->addWidget(m_chart, 1);
+    auto* layout = new QVBoxLayout(this);
+    layout->setContentsMargins(4, 2, 4, 2);
+    layout->addWidget(m_banner);
+    layout->addLayout(top);
+    layout->addLayout(status);
+    layout->addLayout(body, 1);
+
+    auto speed = [this](int value) {
+        m_player->setSpeed(speedOfSlider(value));
+        m_speedLabel->setText(tr("%1×").arg(speedOfSlider(value), 0, 'g', 3));
+    };
+    connect(m_speed, &QSlider::valueChanged, this, speed);
+    speed(m_speed->value());
+    connect(m_cancel, &QPushButton::clicked, m_player, &SimPlayer::cancel);
+    connect(m_player, &SimPlayer::buildStarted, this, [this] {
+        m_progress->setValue(0);
+        m_progress->show();
+        m_cancel->show();
+    });
+    connect(m_player, &SimPlayer::buildProgress, this, [this](int percent) {
+        m_progress->setValue(percent);
+        if (percent < 0) {  // cancelled
+            m_progress->hide();
+            m_cancel->hide();
+        }
+    });
+    connect(m_player, &SimPlayer::ready, this, [this] {
+        m_progress->hide();
+        m_cancel->hide();
+        updateQuantities();
+        updateReadout();
+        updateDeviation();
+    });
+    connect(m_player, &SimPlayer::cleared, this, [this] {
+        updateQuantities();
+        updateReadout();
+        updateDeviation();
+    });
+    connect(m_player, &SimPlayer::positionChanged, this, &SimDock::updateReadout);
+    connect(m_player, &SimPlayer::deviationReady, this, &SimDock::updateDeviation);
+    connect(m_player, &SimPlayer::outOfDateChanged, this, [this](bool outOfDate) {
+        m_banner->setMessage(outOfDate ? tr("Out of date: the program was changed after it was simulated. "
+                                            "Simulate again to see what it does now.")
+                                       : QString());
+    });
+    updateReadout();
+}
+
+QWidget* SimDock::makeResults()
+{
+    auto* box = new QWidget(this);
+    auto* form = new QFormLayout(box);
+    form->setContentsMargins(0, 0, 0, 0);
+    m_quantity->setObjectName(QStringLiteral("simQuantity"));
+    m_autoLimits->setObjectName(QStringLiteral("simAutoLimits"));
+    m_low->setObjectName(QStringLiteral("simLow"));
+    m_high->setObjectName(QStringLiteral("simHigh"));
+    m_deviationLimit->setObjectName(QStringLiteral("simDeviationLimit"));
+    m_autoLimits->setChecked(true);
+    for (QDoubleSpinBox* box : {m_low, m_high}) {
+        box->setRange(-1e9, 1e9);
+        box->setDecimals(3);
+        box->setEnabled(false);
+    }
+    m_deviationLimit->setRange(0.001, 100);
+    m_deviationLimit->setDecimals(3);
+    m_deviationLimit->setSingleStep(0.05);
+    m_deviationLimit->setValue(m_player->deviationLimit());
+    m_deviationLimit->setSuffix(tr(" mm"));
+    auto* limits = new QHBoxLayout;
+    limits->addWidget(m_autoLimits);
+    limits->addWidget(m_low);
+    limits->addWidget(m_high);
+    form->addRow(tr("Colour path by"), m_quantity);
+    form->addRow(tr("Limits"), limits);
+    form->addRow(tr("Deviation ±"), m_deviationLimit);
+    form->addRow(m_results);
+    m_results->setWordWrap(true);
+
+    connect(m_quantity, &QComboBox::currentIndexChanged, this, &SimDock::applyQuantity);
+    connect(m_autoLimits, &QCheckBox::toggled, this, [this](bool autoLimits) {
+        m_low->setEnabled(!autoLimits);
+        m_high->setEnabled(!autoLimits);
+        applyQuantity();
+    });
+    for (QDoubleSpinBox* spin : {m_low, m_high})
+        connect(spin, &QDoubleSpinBox::editingFinished, this, &SimDock::applyQuantity);
+    connect(m_deviationLimit, &QDoubleSpinBox::valueChanged, m_player, &SimPlayer::setDeviationLimit);
+    box->setMaximumWidth(360);
+    return box;
+}
+
+void SimDock::addActions(const ActionRegistry& registry)
+{
+    for (const char* id : {"Cam.Sim.Start", "Cam.Sim.Play", "Cam.Sim.Pause", "Cam.Sim.StepBack", "Cam.Sim.StepForward",
+                           "Cam.Sim.JumpToLine"})
+        if (QAction* action = registry.action(QLatin1String(id)))
+            m_buttons->addAction(action);
+}
+
+int SimDock::lineToJumpTo() const { return m_line->value(); }
+
+double SimDock::speedOfSlider(int value) { return std::pow(10.0, -1.0 + 4.0 * value / 100.0); }
+
+void SimDock::updateReadout()
+{
+    const auto run = m_player->run();
+    if (!run) {
+        m_readout->setText(m_player->isBuilding() ? tr("Simulating…") : tr("No simulation: press Simulate"));
+        m_cycle->clear();
+        return;
+    }
+    const Timeline& timeline = run->timeline;
+    const MovePoint at = m_player->point();
+    const int line = m_player->currentLine();
+    const QString where = line > 0 ? tr("line %1").arg(line) : tr("no line");
+    const QString moves = tr("move %1 of %2").arg(at.move + 1).arg(timeline.moveCount());
+    if (timeline.unit() == Timeline::Unit::Seconds)
+        m_readout->setText(
+            tr("%1 / %2 · %3 · %4").arg(clock(m_player->position()), clock(timeline.total()), where, moves));
+    else
+        m_readout->setText(tr("%1 of %2 mm travelled · %3 · %4")
+                               .arg(m_player->position(), 0, 'f', 1)
+                               .arg(timeline.total(), 0, 'f', 1)
+                               .arg(where, moves));
+    m_cycle->setText(run->cycleSeconds ? tr("Cycle time %1").arg(clock(*run->cycleSeconds))
+                                       : tr("No cycle time (no motion model)"));
+}
+
+void SimDock::updateQuantities()
+{
+    const QSignalBlocker block(m_quantity);
+    m_quantity->clear();
+    m_quantity->addItem(tr("Moves (rapid / feed)"), QString());
+    for (const QString& id : m_player->quantityIds())
+        m_quantity->addItem(m_player->quantityLabel(id), id);
+    m_quantity->setEnabled(m_quantity->count() > 1);
+}
+
+void SimDock::applyQuantity()
+{
+    const QString id = m_quantity->currentData().toString();
+    std::optional<std::pair<double, double>> limits;
+    if (!m_autoLimits->isChecked())
+        limits = std::make_pair(m_low->value(), m_high->value());
+    m_player->showQuantity(id, limits);
+    if (m_autoLimits->isChecked() && !m_player->quantity().isEmpty()) {
+        const QSignalBlocker a(m_low), b(m_high);
+        m_low->setValue(m_player->quantityRange().first);
+        m_high->setValue(m_player->quantityRange().second);
+    }
+}
+
+void SimDock::updateDeviation()
+{
+    const auto deviation = m_player->deviation();
+    const auto run = m_player->run();
+    if (!run || !run->stock) {
+        m_results->setText(run ? tr("No stock: the tool plays over the path only.") : QString());
+        return;
+    }
+    if (!deviation) {
+        m_results->setText(run->hasDesign ? tr("The deviation map shows when the end of the program is cut.")
+                                          : tr("No model to compare the stock with."));
+        return;
+    }
+    auto lineOf = [&run](std::int64_t move) {
+        return move >= 0 ? run->timeline.lineOf(static_cast<std::size_t>(move)) : -1;
+    };
+    m_results->setText(tr("Largest gouge %1 mm (line %2) · largest leftover %3 mm (line %4)")
+                           .arg(deviation->maxGougeMm, 0, 'f', 3)
+                           .arg(lineOf(deviation->gougeMove))
+                           .arg(deviation->maxLeftoverMm, 0, 'f', 3)
+                           .arg(lineOf(deviation->leftoverMove)));
+}
+
+}  // namespace camwb::gui

@@ -1,0 +1,65 @@
+// The Simulator dock: the playback's buttons (the registry's Cam.Sim.* actions), the speed, a
+// read-out of time, line and move with the cycle time, progress and Cancel while a simulation is
+// built, a banner when the program changed after simulating, and the results: the path coloured
+// by an analysed quantity (auto or user limits), the stock's deviation limit with the largest
+// gouge and leftover, and the chart. It only shows and forwards: SimPlayer does the work.
+#pragma once
+
+#include <QWidget>
+
+class QCheckBox;
+class QComboBox;
+class QDoubleSpinBox;
+class QLabel;
+class QProgressBar;
+class QPushButton;
+class QSlider;
+class QSpinBox;
+class QToolBar;
+
+namespace camwb::gui {
+
+class ActionRegistry;
+class Banner;
+class SimChart;
+class SimPlayer;
+
+class SimDock : public QWidget {
+    Q_OBJECT
+public:
+    SimDock(SimPlayer* player, QWidget* parent = nullptr);
+
+    SimChart* chart() const { return m_chart; }
+    // The dock's buttons are the registry's actions (call after registerSimulatorActions).
+    void addActions(const ActionRegistry& registry);
+    int lineToJumpTo() const;
+    // Slider position -> playback speed (machine time per wall time), 0.1x .. 1000x.
+    static double speedOfSlider(int value);
+
+private:
+    QWidget* makeResults();
+    void updateReadout();
+    void updateQuantities();
+    void applyQuantity();
+    void updateDeviation();
+
+    SimPlayer* m_player;
+    QToolBar* m_buttons;
+    QSlider* m_speed;
+    QLabel* m_speedLabel;
+    QSpinBox* m_line;
+    QLabel* m_readout;
+    QLabel* m_cycle;
+    QProgressBar* m_progress;
+    QPushButton* m_cancel;
+    Banner* m_banner;
+    QComboBox* m_quantity;
+    QCheckBox* m_autoLimits;
+    QDoubleSpinBox* m_low;
+    QDoubleSpinBox* m_high;
+    QDoubleSpinBox* m_deviationLimit;
+    QLabel* m_results;
+    SimChart* m_chart;
+};
+
+}  // namespace camwb::gui

@@ -1,0 +1,69 @@
+// What the simulator draws in the 3D view: the tool (cutter, shank, holder as revolved shapes)
+// at its pose, the path travelled so far, the cut stock (plain, or coloured by its deviation from
+// the design model with a colour bar), and the path coloured by an analysed quantity with its
+// colour bar and red markers at axis reversals. Owned by View3D (View3D::simulation()), like the
+// task overlay; VTK stays in the .cpp, so every call also works without OpenGL (it keeps data).
+#pragma once
+
+#include "base/Vec.h"
+#include "gui/sim/RevolvedPart.h"
+#include "gui/sim/Timeline.h"
+
+#include <QObject>
+#include <QString>
+
+#include <functional>
+#include <map>
+#include <memory>
+#include <vector>
+
+class vtkRenderer;
+
+namespace camwb::sim {
+struct MoveList;
+struct TriangleMesh;
+}  // namespace camwb::sim
+
+namespace camwb::gui {
+
+class SimOverlay : public QObject {
+    Q_OBJECT
+public:
+    ~SimOverlay() override;
+
+    // Removes everything the simulator drew.
+    void clear();
+
+    // The path travelled so far along `moves` (kept by the caller while shown): up to `at`.
+    void setPath(const sim::MoveList* moves);
+    void showPathUpTo(const MovePoint& at, const base::Vec3& tip);
+    int pathSegmentCount() const;  // whole moves drawn (the current part-move not counted)
+
+    // Each tool's revolved parts (radius, height above the tip), drawn at the pose given.
+    void setTools(const std::map<int, std::vector<RevolvedPart>>& tools);
+    void showTool(const ToolPose& pose);
+    bool hasToolActor() const;  // a tool is drawn now
+
+    // The stock as cut so far; `deviation` (one value per vertex, mm: + leftover, - gouge) colours
+    // it within +-limitMm and shows its colour bar, else it is drawn plain.
+    void showStock(const sim::TriangleMesh& mesh, const std::vector<float>* deviation = nullptr, double limitMm = 0.1);
+    bool hasStockActor() const;
+    int stockTriangleCount() const;
+    bool showsDeviation() const;
+
+    // The path through `points` coloured by `values` within [low, high] with a titled colour bar,
+    // and red markers at `markers`; replaces the travelled path while shown. Empty points clear it.
+    void showColouredPath(const std::vector<base::Vec3>& points, const std::vector<double>& values, double low,
+                          double high, const QString& title, const std::vector<base::Vec3>& markers);
+    bool showsColouredPath() const;
+    int markerCount() const;
+
+private:
+    friend class View3D;
+    SimOverlay(vtkRenderer* renderer, std::function<void()> render, QObject* parent);
+
+    struct Private;
+    std::unique_ptr<Private> d;
+};
+
+}  // namespace camwb::gui

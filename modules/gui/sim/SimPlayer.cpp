@@ -1,0 +1,356 @@
+#include "gui/sim/SimPlayer.h"
+
+#include "gui/editor/NcEditor.h"
+#include "gui/sim/SimChart.h"
+#include "gui/sim/SimOverlay.h"
+#include "gui/sim/StockAnimation.h"
+#include "gui/view3d/View3D.h"
+
+#include <QFutureWatcher>
+#include <QPointer>
+#include <QTimer>
+#include <QtConcurrent/QtConcurrentRun>
+
+#include <algorithm>
+
+namespace camwb::gui {
+
+namespace {
+
+constexpr int kTickMs = 15;  // up to ~60 playback steps a second; the view coalesces repaints
+
+}  // namespace
+
+SimPlayer::SimPlayer(QObject* parent) : QObject(parent), m_timer(new QTimer(this))
+{
+    m_timer->setInterval(kTickMs);
+    m_timer->setTimerType(Qt::PreciseTimer);
+    connect(m_timer, &QTimer::timeout, this, &SimPlayer::tick);
+}
+
+SimPlayer::~SimPlayer()
+{
+    if (m_cancel)
+        m_cancel->store(true);
+}
+
+void SimPlayer::attach(NcEditor* editor, View3D* view, SimChart* chart)
+{
+    m_editor = editor;
+    m_view = view;
+    m_chart = chart;
+    if (m_editor != nullptr) {
+        connect(m_editor, &NcEditor::cursorLineChanged, this, [this](int line) {
+            if (!m_movingEditor && m_run && !m_outOfDate)
+                jumpToLine(line);
+        });
+        connect(m_editor, &NcEditor::textChanged, this, [this] {
+            if (m_run)
+                markOutOfDate();
+        });
+    }
+    if (m_view != nullptr) {
+        connect(m_view, &View3D::segmentPicked, this, [this](int, int record) {
+            if (m_run && !m_outOfDate && record >= 0)
+                jumpToRecord(static_cast<std::size_t>(record));
+        });
+        connect(m_view, &View3D::frameRendered, this, &SimPlayer::countFrame);
+    }
+    if (m_chart != nullptr)
+        connect(m_chart, &SimChart::timeClicked, this, &SimPlayer::seek);
+}
+
+void SimPlayer::start(SimRunRequest request)
+{
+    if (m_cancel)
+        m_cancel->store(true);
+    auto cancel = std::make_shared<std::atomic<bool>>(false);
+    m_cancel = cancel;
+    const quint64 generation = ++m_generation;
+    m_building = true;
+    emit buildStarted();
+    request.cancel = cancel.get();
+    QPointer<SimPlayer> self(this);
+    request.progress = [self, generation](int percent) {
+        QMetaObject::invokeMethod(
+            self,
+            [self, generation, percent] {
+                if (self && self->m_generation == generation)
+                    emit self->buildProgress(percent);
+            },
+            Qt::QueuedConnection);
+    };
+    auto* watcher = new QFutureWatcher<std::shared_ptr<SimRun>>(this);
+    connect(watcher, &QFutureWatcherBase::finished, this, [this, watcher, generation] {
+        watcher->deleteLater();
+        finishBuild(watcher->result(), generation);
+    });
+    // The cancel flag lives as long as the worker (the request points at it).
+    watcher->setFuture(QtConcurrent::run([request, cancel] { return buildSimRun(request); }));
+}
+
+void SimPlayer::cancel()
+{
+    if (m_cancel)
+        m_cancel->store(true);
+}
+
+void SimPlayer::finishBuild(std::shared_ptr<SimRun> run, quint64 generation)
+{
+    if (generation != m_generation)
+        return;  // a newer simulation was asked for
+    m_building = false;
+    m_cancel = nullptr;
+    if (!run) {
+        emit message(base::Severity::Note, tr("Simulation cancelled"));
+        emit buildProgress(-1);
+        return;
+    }
+    clear();
+    m_run = std::move(run);
+    for (const std::string& note : m_run->notes)
+        emit message(base::Severity::Warning, QString::fromStdString(note));
+    if (m_view != nullptr) {
+        SimOverlay& overlay = m_view->simulation();
+        overlay.setPath(&m_run->moves);
+        overlay.setTools(m_run->toolParts);
+        m_view->setSimulationShown(m_run->stock != nullptr);
+    }
+    if (m_run->stock) {
+        m_stock = std::make_unique<StockAnimation>(m_run);
+        connect(m_stock.get(), &StockAnimation::frameReady, this, &SimPlayer::showStockFrame);
+    }
+    m_position = 0;
+    apply();
+    emit ready();
+}
+
+void SimPlayer::clear()
+{
+    pause();
+    m_stock.reset();
+    m_run = nullptr;
+    m_deviation.reset();
+    m_quantity.clear();
+    m_shownLine = -1;
+    m_position = 0;
+    if (m_outOfDate) {
+        m_outOfDate = false;
+        emit outOfDateChanged(false);
+    }
+    if (m_view != nullptr) {
+        m_view->simulation().clear();
+        m_view->setSimulationShown(false);
+    }
+    if (m_chart != nullptr)
+        m_chart->setSeries({}, {}, {});
+    emit cleared();
+}
+
+void SimPlayer::markOutOfDate()
+{
+    if (m_outOfDate)
+        return;
+    m_outOfDate = true;
+    emit outOfDateChanged(true);
+}
+
+void SimPlayer::play()
+{
+    if (!m_run || m_playing)
+        return;
+    if (atEnd())
+        seek(0);
+    m_playing = true;
+    m_clock.start();
+    m_statsClock.start();
+    m_stats = {};
+    m_stockFrames = 0;
+    m_stockMeshSeconds = 0;
+    m_timer->start();
+    emit playingChanged(true);
+}
+
+void SimPlayer::pause()
+{
+    if (!m_playing)
+        return;
+    m_playing = false;
+    m_timer->stop();
+    emit playingChanged(false);
+}
+
+void SimPlayer::tick()
+{
+    const double elapsed = m_clock.nsecsElapsed() * 1e-9;
+    m_clock.restart();
+    m_position = std::min(m_position + elapsed * m_speed, m_run->timeline.total());
+    apply();
+    if (atEnd())
+        pause();
+}
+
+void SimPlayer::stepForward()
+{
+    if (m_run)
+        seek(m_run->timeline.nextBlock(m_position));
+}
+
+void SimPlayer::stepBack()
+{
+    if (m_run)
+        seek(m_run->timeline.previousBlock(m_position));
+}
+
+// The first run of the line, or of the next line that moves the machine.
+void SimPlayer::jumpToLine(int line)
+{
+    if (!m_run || !m_run->trace)
+        return;
+    const auto& lineRecords = m_run->trace->lineRecords;
+    auto it = std::lower_bound(lineRecords.begin(), lineRecords.end(), std::make_pair(line, std::uint32_t{0}));
+    if (it != lineRecords.end())
+        jumpToRecord(it->second);
+}
+
+void SimPlayer::jumpToRecord(std::size_t record)
+{
+    if (!m_run)
+        return;
+    const std::size_t move = m_run->timeline.firstMoveOfRecord(record);
+    seek(move < m_run->timeline.moveCount() ? m_run->timeline.start(move) : m_run->timeline.total());
+}
+
+void SimPlayer::seek(double position)
+{
+    if (!m_run)
+        return;
+    m_position = std::clamp(position, 0.0, m_run->timeline.total());
+    apply();
+}
+
+bool SimPlayer::atEnd() const { return m_run && m_position >= m_run->timeline.total(); }
+
+MovePoint SimPlayer::point() const { return m_run ? m_run->timeline.pointAt(m_position) : MovePoint{}; }
+
+int SimPlayer::currentLine() const { return m_run ? m_run->timeline.lineOf(point().move) : -1; }
+
+void SimPlayer::setSpeed(double factor) { m_speed = std::max(factor, 1e-3); }
+
+// Everything that follows the position: tool, path, stock, editor, chart.
+void SimPlayer::apply()
+{
+    const MovePoint at = point();
+    const ToolPose pose = m_run->timeline.poseAt(at);
+    if (m_view != nullptr) {
+        m_view->simulation().showTool(pose);
+        m_view->simulation().showPathUpTo(at, pose.tip);
+    }
+    if (m_stock)
+        m_stock->setTarget(at);
+    followEditor(m_run->timeline.lineOf(at.move));
+    if (m_chart != nullptr && m_run->timeline.unit() == Timeline::Unit::Seconds)
+        m_chart->setCursorTime(m_position);
+    emit positionChanged();
+}
+
+void SimPlayer::followEditor(int line)
+{
+    if (m_editor == nullptr || m_outOfDate || line <= 0 || line == m_shownLine)
+        return;
+    m_shownLine = line;
+    m_movingEditor = true;
+    m_editor->gotoLine(line);
+    m_movingEditor = false;
+}
+
+void SimPlayer::showStockFrame()
+{
+    if (!m_stock || m_view == nullptr)
+        return;
+    const std::shared_ptr<const StockFrame> frame = m_stock->frame();
+    if (!frame || !frame->mesh)
+        return;
+    if (frame->deviation) {
+        m_deviation = frame->deviation;
+        emit deviationReady();
+    }
+    const bool atEnd = frame->deviation.has_value();
+    m_view->simulation().showStock(*frame->mesh, atEnd ? &frame->deviation->perVertex : nullptr, m_deviationLimit);
+    if (m_playing) {
+        ++m_stockFrames;
+        m_stockMeshSeconds += frame->meshSeconds;
+    }
+}
+
+bool SimPlayer::stockCaughtUp() const { return !m_stock || m_stock->isCaughtUp(); }
+
+void SimPlayer::countFrame()
+{
+    if (!m_playing)
+        return;
+    ++m_stats.frames;
+    const double seconds = m_statsClock.nsecsElapsed() * 1e-9;
+    if (seconds > 0) {
+        m_stats.renderedFps = m_stats.frames / seconds;
+        m_stats.stockFps = m_stockFrames / seconds;
+        m_stats.meanStockMeshMs = m_stockFrames > 0 ? 1e3 * m_stockMeshSeconds / m_stockFrames : 0;
+    }
+}
+
+QStringList SimPlayer::quantityIds() const
+{
+    QStringList ids;
+    if (m_run && m_run->analysis)
+        for (const SampledQuantity& q : m_run->analysis->quantities)
+            ids << QString::fromStdString(q.id);
+    return ids;
+}
+
+QString SimPlayer::quantityLabel(const QString& id) const
+{
+    if (m_run && m_run->analysis)
+        for (const SampledQuantity& q : m_run->analysis->quantities)
+            if (QString::fromStdString(q.id) == id)
+                return QString::fromStdString(q.label);
+    return {};
+}
+
+void SimPlayer::showQuantity(const QString& id, std::optional<std::pair<double, double>> limits)
+{
+    m_quantity.clear();
+    const SampledQuantity* found = nullptr;
+    if (m_run && m_run->analysis)
+        for (const SampledQuantity& q : m_run->analysis->quantities)
+            if (QString::fromStdString(q.id) == id)
+                found = &q;
+    if (found == nullptr || found->values.empty() || m_view == nullptr) {
+        if (m_view != nullptr)
+            m_view->simulation().showColouredPath({}, {}, 0, 1, {}, {});
+        if (m_chart != nullptr)
+            m_chart->setSeries({}, {}, {});
+        return;
+    }
+    m_quantity = id;
+    const SimAnalysis& analysis = *m_run->analysis;
+    const auto [lo, hi] = std::minmax_element(found->values.begin(), found->values.end());
+    m_range = limits ? *limits : std::make_pair(*lo, *hi);
+    std::vector<base::Vec3> markers;
+    for (std::size_t sample : analysis.reversalSamples)
+        if (sample < analysis.tip.size())
+            markers.push_back(analysis.tip[sample]);
+    const QString label = QString::fromStdString(found->label);
+    m_view->simulation().showColouredPath(analysis.tip, found->values, m_range.first, m_range.second, label, markers);
+    if (m_chart != nullptr) {
+        m_chart->setSeries(analysis.timeSeconds, found->values, label);
+        m_chart->setCursorTime(m_position);
+    }
+}
+
+void SimPlayer::setDeviationLimit(double mm)
+{
+    m_deviationLimit = std::max(mm, 1e-4);
+    showStockFrame();
+}
+
+}  // namespace camwb::gui

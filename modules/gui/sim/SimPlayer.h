@@ -1,0 +1,133 @@
+// The simulator's controller (no widgets): builds a simulation of the traced NC program on a
+// worker thread (progress, cancel), then plays it: play, pause, block steps, jumps to a line or a
+// picked segment, speed. It moves the tool, the travelled path and the cut stock in the 3D view,
+// keeps the editor's cursor on the current block and follows the editor's and the view's picks
+// back, and colours the path and the stock for the results. The dock and the actions call it.
+#pragma once
+
+#include "base/Diagnostic.h"
+#include "gui/sim/SimRun.h"
+#include "sim/Stock.h"
+
+#include <QElapsedTimer>
+#include <QObject>
+#include <QString>
+#include <QStringList>
+
+#include <atomic>
+#include <memory>
+#include <optional>
+
+class QTimer;
+
+namespace camwb::gui {
+
+class NcEditor;
+class SimChart;
+class StockAnimation;
+class View3D;
+
+struct PlaybackStats {
+    double renderedFps = 0;  // frames the view drew per second while playing
+    double stockFps = 0;     // stock meshes shown per second while playing
+    double meanStockMeshMs = 0;
+    int frames = 0;
+};
+
+class SimPlayer : public QObject {
+    Q_OBJECT
+public:
+    explicit SimPlayer(QObject* parent = nullptr);
+    ~SimPlayer() override;
+
+    void attach(NcEditor* editor, View3D* view, SimChart* chart);
+
+    // Simulates what the request's trace says (on a worker); ready() or failed() follow.
+    void start(SimRunRequest request);
+    void cancel();
+    bool isBuilding() const { return m_building; }
+    // Drops the simulation and what it drew.
+    void clear();
+
+    std::shared_ptr<const SimRun> run() const { return m_run; }
+    bool hasRun() const { return m_run != nullptr; }
+    // The program was edited after it was simulated: what plays is not what the editor holds.
+    bool isOutOfDate() const { return m_outOfDate; }
+    void markOutOfDate();
+
+    void play();
+    void pause();
+    bool isPlaying() const { return m_playing; }
+    void stepForward();
+    void stepBack();
+    void jumpToLine(int line);
+    void jumpToRecord(std::size_t record);
+    void seek(double position);
+    double position() const { return m_position; }
+    bool atEnd() const;
+    MovePoint point() const;
+    int currentLine() const;
+    // Playback speed: machine seconds per wall second (a multiple of the machine's speed).
+    void setSpeed(double factor);
+    double speed() const { return m_speed; }
+
+    // Results: the path coloured by an analysed quantity (empty id: by move kind), within limits
+    // (none: its own range), and the stock by its deviation (when the end has been cut).
+    QStringList quantityIds() const;
+    QString quantityLabel(const QString& id) const;
+    void showQuantity(const QString& id, std::optional<std::pair<double, double>> limits = std::nullopt);
+    QString quantity() const { return m_quantity; }
+    std::pair<double, double> quantityRange() const { return m_range; }
+    void setDeviationLimit(double mm);
+    double deviationLimit() const { return m_deviationLimit; }
+    std::optional<sim::Deviation> deviation() const { return m_deviation; }
+    // The stock animation has cut up to the playback position.
+    bool stockCaughtUp() const;
+    PlaybackStats stats() const { return m_stats; }
+
+signals:
+    void buildStarted();
+    void buildProgress(int percent);
+    void ready();
+    void cleared();
+    void positionChanged();
+    void playingChanged(bool playing);
+    void outOfDateChanged(bool outOfDate);
+    void deviationReady();
+    void message(camwb::base::Severity severity, const QString& text);
+
+private:
+    void finishBuild(std::shared_ptr<SimRun> run, quint64 generation);
+    void tick();
+    void apply();
+    void followEditor(int line);
+    void showStockFrame();
+    void countFrame();
+
+    NcEditor* m_editor = nullptr;
+    View3D* m_view = nullptr;
+    SimChart* m_chart = nullptr;
+    QTimer* m_timer;
+    QElapsedTimer m_clock;
+    std::shared_ptr<const SimRun> m_run;
+    std::unique_ptr<StockAnimation> m_stock;
+    std::shared_ptr<std::atomic<bool>> m_cancel;
+    quint64 m_generation = 0;
+    bool m_building = false;
+    bool m_playing = false;
+    bool m_outOfDate = false;
+    bool m_movingEditor = false;
+    double m_position = 0;
+    double m_speed = 10;
+    int m_shownLine = -1;
+    QString m_quantity;
+    std::pair<double, double> m_range{0, 1};
+    double m_deviationLimit = 0.1;
+    std::optional<sim::Deviation> m_deviation;
+    PlaybackStats m_stats;
+    QElapsedTimer m_statsClock;
+    int m_stockFrames = 0;
+    double m_stockMeshSeconds = 0;
+};
+
+}  // namespace camwb::gui

@@ -1,0 +1,56 @@
+#include "gui/sim/SimRequest.h"
+
+#include "gui/inspector/NcInspector.h"
+#include "gui/shell/Workbench.h"
+
+#include <QCoreApplication>
+#include <QFileInfo>
+
+namespace camwb::gui {
+
+namespace {
+
+class Tr {
+    Q_DECLARE_TR_FUNCTIONS(SimulationRequest)
+};
+
+// The model's display triangles, the surface the stock is compared with.
+sim::TriangleMesh designOf(const occ::DisplayMesh& mesh)
+{
+    sim::TriangleMesh design;
+    design.positions = mesh.positions;
+    design.triangles = mesh.triangles;
+    return design;
+}
+
+}  // namespace
+
+std::optional<SimRunRequest> simulationRequest(const NcInspector& inspector, const Workbench& workbench,
+                                               bool editorShowsPostedProgram, QString* why)
+{
+    const auto trace = inspector.trace();
+    if (inspector.isTracing() || !trace) {
+        *why = Tr::tr("Nothing to simulate yet: the NC program is being traced (or none is open).");
+        return std::nullopt;
+    }
+    if (trace->program.empty()) {
+        *why = Tr::tr("Nothing to simulate: the NC program makes no records.");
+        return std::nullopt;
+    }
+    SimRunRequest request;
+    request.trace = trace;
+    request.programName = QFileInfo(inspector.filePath()).fileName().toStdString();
+    request.machine = inspector.sharedMachine();
+    const document::Stock& stock = workbench.job().stock;
+    const bool stockGiven = stock.max.x > stock.min.x && stock.max.y > stock.min.y && stock.max.z > stock.min.z;
+    if (editorShowsPostedProgram && stockGiven) {
+        base::Box3 box;
+        box.add(stock.min);
+        box.add(stock.max);
+        request.stockBox = box;
+        request.design = designOf(workbench.displayMesh());
+    }
+    return request;
+}
+
+}  // namespace camwb::gui

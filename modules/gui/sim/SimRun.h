@@ -1,0 +1,77 @@
+// One simulation as the dock plays it: the NC trace it was made from (lines <-> records), the
+// moves, their times from the motion model, the seed-003 analysis of the sampled motion, and what
+// the stock animation needs (the stock as it starts, the tools' revolved shapes, the design model
+// to compare with). Built on a worker thread by buildSimRun from the modules that own each part
+// (sim, document); the GUI only shows it.
+#pragma once
+
+#include "document/NcTrace.h"
+#include "gui/sim/RevolvedPart.h"
+#include "gui/sim/Timeline.h"
+#include "sim/Moves.h"
+#include "sim/TriangleMesh.h"
+
+#include <atomic>
+#include <functional>
+#include <map>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace camwb::sim {
+class Stock;
+class ToolShape;
+}  // namespace camwb::sim
+
+namespace camwb::gui {
+
+// One analysed quantity of the sampled motion, per sample.
+struct SampledQuantity {
+    std::string id;     // stable: "vx", "tipFeed", ...
+    std::string label;  // shown (the unit included)
+    std::vector<double> values;
+};
+
+struct SimAnalysis {
+    std::vector<double> timeSeconds;  // per sample
+    std::vector<base::Vec3> tip;      // per sample, workpiece frame
+    std::vector<SampledQuantity> quantities;
+    std::vector<std::size_t> reversalSamples;  // samples where an axis reverses
+};
+
+struct SimRun {
+    std::shared_ptr<const document::NcTrace> trace;
+    std::string programName;
+    sim::MoveList moves;
+    Timeline timeline;  // over `moves`; seconds when the motion model timed them
+    std::optional<double> cycleSeconds;
+    std::optional<SimAnalysis> analysis;
+    std::vector<std::string> notes;  // what could not be simulated and why (shown in the report)
+
+    // The stock animation's inputs; without a stock the tool plays over the path only.
+    std::shared_ptr<const sim::Stock> stock;
+    std::map<int, std::shared_ptr<const sim::ToolShape>> toolShapes;
+    std::map<int, std::vector<RevolvedPart>> toolParts;  // for drawing
+    bool hasDesign = false;                              // the stock compares with a model
+
+    SimRun() = default;
+    SimRun(const SimRun&) = delete;
+    SimRun& operator=(const SimRun&) = delete;
+};
+
+struct SimRunRequest {
+    std::shared_ptr<const document::NcTrace> trace;
+    std::string programName;
+    std::shared_ptr<const kinematics::Machine> machine;  // may be null
+    std::optional<base::Box3> stockBox;                  // the job's stock; none: no stock removal
+    sim::TriangleMesh design;                            // the job's model; empty: no comparison
+    double resolutionMm = 0.25;
+    const std::atomic<bool>* cancel = nullptr;
+    std::function<void(int percent)> progress;
+};
+
+// Null when cancelled. Whatever part cannot be made is left out and named in `notes`.
+std::shared_ptr<SimRun> buildSimRun(const SimRunRequest& request);
+
+}  // namespace camwb::gui

@@ -40,8 +40,10 @@ void SimPlayer::attach(NcEditor* editor, View3D* view, SimChart* chart)
     m_view = view;
     m_chart = chart;
     if (m_editor != nullptr) {
+        // The editor may report the line the playback moved it to later (Scintilla's update
+        // notification): that line is where the playback is already, not a jump.
         connect(m_editor, &NcEditor::cursorLineChanged, this, [this](int line) {
-            if (!m_movingEditor && m_run && !m_outOfDate)
+            if (!m_movingEditor && m_run && !m_outOfDate && line != m_shownLine)
                 jumpToLine(line);
         });
         connect(m_editor, &NcEditor::textChanged, this, [this] {

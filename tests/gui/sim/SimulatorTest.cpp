@@ -1,0 +1,329 @@
+// Drives the simulator dock in the real main window: Simulate on the example job's posted program,
+// play to the end, block steps and jumps through the action registry, the editor and the 3D view
+// following and leading the playback, the stock actor and its deviation map, the five-axis
+// example's path coloured by an analysed quantity with reversal markers, cancelling a long build
+// and a program edited after simulating. Runs under Xvfb (GL) and offscreen (no GL).
+#include "QtTestRun.h"
+#include "Shots.h"
+#include "document/NcTrace.h"
+#include "gui/actions/ActionRegistry.h"
+#include "gui/editor/NcEditor.h"
+#include "gui/inspector/NcInspector.h"
+#include "gui/shell/MainWindow.h"
+#include "gui/shell/ReportView.h"
+#include "gui/shell/Workbench.h"
+#include "gui/sim/SimChart.h"
+#include "gui/sim/SimDock.h"
+#include "gui/sim/SimOverlay.h"
+#include "gui/sim/SimPlayer.h"
+#include "gui/view3d/View3D.h"
+
+#include <QAbstractButton>
+#include <QAction>
+#include <QApplication>
+#include <QComboBox>
+#include <QDockWidget>
+#include <QElapsedTimer>
+#include <QFile>
+#include <QLabel>
+#include <QMenuBar>
+#include <QSignalSpy>
+#include <QSpinBox>
+#include <QTemporaryDir>
+#include <QTest>
+#include <QTimer>
+
+using camwb::gui::MainWindow;
+using camwb::gui::SimPlayer;
+using camwb::gui::View3D;
+using camwb::gui::Workbench;
+
+class SimulatorTest : public QObject {
+    Q_OBJECT
+
+private:
+    static bool withGl() { return QGuiApplication::platformName() != QLatin1String("offscreen"); }
+
+    static bool waitForTrace(MainWindow& window)
+    {
+        camwb::gui::NcInspector* inspector = window.inspector();
+        QElapsedTimer waited;
+        waited.start();
+        while ((inspector->isTracing() || !inspector->trace()) && waited.elapsed() < 120000)
+            QTest::qWait(20);
+        return !inspector->isTracing() && inspector->trace();
+    }
+
+    // Opens a job, waits for its post and the trace of the posted program.
+    static void openJob(MainWindow& window, const QString& path)
+    {
+        QSignalSpy posted(&window.workbench(), &Workbench::postFinished);
+        QVERIFY(window.openJob(path));
+        QVERIFY(posted.wait(120000));
+        QCOMPARE(posted.first().first().toBool(), true);
+        QVERIFY(waitForTrace(window));
+    }
+
+    // Simulate through the registry, as the toolbar's button does.
+    static void simulate(MainWindow& window)
+    {
+        QSignalSpy ready(window.simPlayer(), &SimPlayer::ready);
+        QVERIFY(window.actions().trigger(QStringLiteral("Cam.Sim.Start")));
+        QVERIFY(ready.wait(120000));
+        QVERIFY(window.simPlayer()->hasRun());
+    }
+
+    static bool waitUntil(const std::function<bool()>& done, int ms = 120000)
+    {
+        QElapsedTimer waited;
+        waited.start();
+        while (!done() && waited.elapsed() < ms)
+            QTest::qWait(10);
+        return done();
+    }
+
+    static void playToEnd(MainWindow& window, double speed)
+    {
+        SimPlayer* player = window.simPlayer();
+        player->setSpeed(speed);
+        QVERIFY(window.actions().trigger(QStringLiteral("Cam.Sim.Play")));
+        QVERIFY(player->isPlaying());
+        QVERIFY(waitUntil([player] { return !player->isPlaying(); }));
+        QVERIFY(player->atEnd());
+        QVERIFY(waitUntil([player] { return player->stockCaughtUp(); }));
+        QTest::qWait(50);  // the last frame's queued delivery
+    }
+
+    static int movingMoves(const camwb::gui::SimRun& run)
+    {
+        int count = 0;
+        for (const camwb::sim::Move& move : run.moves.moves)
+            count += move.moves() && move.positionKnown ? 1 : 0;
+        return count;
+    }
+
+private slots:
+    void actionsAreInTheRegistryAndTheMenu()
+    {
+        MainWindow window;
+        const QStringList ids = window.actions().ids();
+        for (const char* id : {"Cam.Sim.Start", "Cam.Sim.Play", "Cam.Sim.Pause", "Cam.Sim.StepForward",
+                               "Cam.Sim.StepBack", "Cam.Sim.JumpToLine", "Cam.View.SimDock"})
+            QVERIFY2(ids.contains(QLatin1String(id)), id);
+        bool inMenu = false;
+        for (QAction* menu : window.menuBar()->actions())
+            if (menu->text().remove('&') == QLatin1String("Simulate") && menu->menu() != nullptr)
+                inMenu = menu->menu()->actions().contains(window.actions().action(QStringLiteral("Cam.Sim.Play")));
+        QVERIFY(inMenu);
+        // Nothing to play before a simulation: playback actions are off, Simulate says why.
+        QVERIFY(!window.actions().trigger(QStringLiteral("Cam.Sim.Play")));
+        QVERIFY(!window.actions().trigger(QStringLiteral("Cam.Sim.StepForward")));
+        QVERIFY(window.actions().trigger(QStringLiteral("Cam.Sim.Start")));
+        QVERIFY(!window.simPlayer()->isBuilding());
+        QVERIFY(window.reportView()->toPlainText().contains(QLatin1String("Nothing to simulate")));
+    }
+
+    // Block steps go line by line as a control's single block mode; back returns to the start of
+    // the block, then to the block before.
+    void timelineStepsByBlocks()
+    {
+        camwb::document::NcTraceRequest request;
+        request.text = "G90 G21 G17\nG0 X0 Y0 Z10\nG1 Z0 F100\nG1 X10\nG1 Y10\nG2 X0 Y10 I-5 J0\nG0 Z10\nM30\n";
+        request.path = "steps.ngc";
+        camwb::gui::SimRunRequest simRequest;
+        simRequest.trace = std::make_shared<const camwb::document::NcTrace>(camwb::document::traceNc(request));
+        const auto run = camwb::gui::buildSimRun(simRequest);
+        QVERIFY(run);
+        const camwb::gui::Timeline& timeline = run->timeline;
+        QVERIFY(timeline.total() > 0);
+        QList<int> lines;
+        for (double at = 0; at < timeline.total(); at = timeline.nextBlock(at))
+            lines << timeline.lineOf(timeline.pointAt(at).move);
+        QCOMPARE(lines, (QList<int>{3, 4, 5, 6, 7}));  // the first rapid is from an unknown position
+        const double arc = timeline.previousBlock(timeline.previousBlock(timeline.total()));
+        QCOMPARE(timeline.lineOf(timeline.pointAt(arc).move), 6);
+        // From inside the arc, back goes to its start, not to the block before.
+        const double inside = arc + 0.5 * (timeline.nextBlock(arc) - arc);
+        QCOMPARE(timeline.previousBlock(inside), arc);
+        QCOMPARE(timeline.lineOf(timeline.pointAt(timeline.previousBlock(arc)).move), 5);
+        // The tool at the arc's middle is on the arc (radius 5 about X5 Y10).
+        const auto pose = timeline.poseAt(timeline.pointAt(inside));
+        QVERIFY(pose.known);
+        QVERIFY(std::abs(std::hypot(pose.tip.x - 5, pose.tip.y - 10) - 5) < 0.05);
+    }
+
+    void playsTheExampleJobToTheEnd()
+    {
+        MainWindow window;
+        window.resize(1600, 1000);
+        window.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&window));
+        openJob(window, QStringLiteral(CAMWB_EXAMPLE_JOB));
+        simulate(window);
+        SimPlayer* player = window.simPlayer();
+        const auto run = player->run();
+        QVERIFY(run->moves.moves.size() > 100);
+        QCOMPARE(player->position(), 0.0);
+        QVERIFY(window.findChild<QDockWidget*>(QStringLiteral("simDock"))->isVisible());
+
+        playToEnd(window, 2000);
+        camwb::gui::SimOverlay& overlay = window.view()->simulation();
+        QCOMPARE(overlay.pathSegmentCount(), movingMoves(*run) - 1);  // the last one is the move under way
+        QCOMPARE(window.ncEditor()->currentLine(), player->currentLine());
+        QVERIFY(player->currentLine() > 1);
+        QVERIFY(window.findChild<QLabel*>(QStringLiteral("simReadout"))
+                    ->text()
+                    .contains(QStringLiteral("move %1 of %1").arg(run->moves.moves.size())) ||
+                player->point().move + 1 < run->moves.moves.size());
+        if (withGl())
+            saveShot(&window, QStringLiteral("simulator-example-job.png"));
+    }
+
+    void stepAndJumpThroughTheRegistry()
+    {
+        MainWindow window;
+        window.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&window));
+        openJob(window, QStringLiteral(CAMWB_EXAMPLE_JOB));
+        simulate(window);
+        SimPlayer* player = window.simPlayer();
+        camwb::gui::ActionRegistry& actions = window.actions();
+
+        const int first = player->currentLine();
+        QVERIFY(actions.trigger(QStringLiteral("Cam.Sim.StepForward")));
+        const int second = player->currentLine();
+        QVERIFY2(second > first, qPrintable(QStringLiteral("%1 -> %2").arg(first).arg(second)));
+        QCOMPARE(window.ncEditor()->currentLine(), second);
+        QVERIFY(actions.trigger(QStringLiteral("Cam.Sim.StepForward")));
+        const int third = player->currentLine();
+        QVERIFY(third > second);
+        QVERIFY(actions.trigger(QStringLiteral("Cam.Sim.StepBack")));
+        QCOMPARE(player->currentLine(), second);
+        QVERIFY(actions.trigger(QStringLiteral("Cam.Sim.StepBack")));
+        QCOMPARE(player->currentLine(), first);
+        QCOMPARE(player->position(), 0.0);
+
+        // Jump to a line in the middle of the program: the first run of that line (or of the next
+        // line that moves), and the editor goes there.
+        const auto trace = player->run()->trace;
+        const int target = trace->lineRecords[trace->lineRecords.size() / 2].first;
+        window.simDock()->findChild<QSpinBox*>(QStringLiteral("simLine"))->setValue(target);
+        QVERIFY(actions.trigger(QStringLiteral("Cam.Sim.JumpToLine")));
+        QVERIFY2(player->currentLine() >= target,
+                 qPrintable(QStringLiteral("%1 for %2").arg(player->currentLine()).arg(target)));
+        QCOMPARE(window.ncEditor()->currentLine(), player->currentLine());
+        const double there = player->position();
+        QVERIFY(there > 0);
+
+        // Pause stops the playback where it is.
+        QVERIFY(actions.trigger(QStringLiteral("Cam.Sim.Play")));
+        QVERIFY(waitUntil([&] { return player->position() > there; }, 20000));
+        QVERIFY(actions.trigger(QStringLiteral("Cam.Sim.Pause")));
+        QVERIFY(!player->isPlaying());
+        const double paused = player->position();
+        QVERIFY2(paused > there,
+                 qPrintable(QStringLiteral("%1 -> %2 at %3x").arg(there).arg(paused).arg(player->speed())));
+        QTest::qWait(100);
+        QCOMPARE(player->position(), paused);
+    }
+
+    // Clicking a line in the editor or a segment in the view moves the playback there.
+    void editorAndViewLeadThePlayback()
+    {
+        MainWindow window;
+        window.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&window));
+        openJob(window, QStringLiteral(CAMWB_EXAMPLE_JOB));
+        simulate(window);
+        SimPlayer* player = window.simPlayer();
+        const auto trace = player->run()->trace;
+        const auto [line, record] = trace->lineRecords[trace->lineRecords.size() / 3];
+        window.ncEditor()->gotoLine(line);
+        QCOMPARE(player->currentLine(), line);
+        const auto [otherLine, otherRecord] = trace->lineRecords[2 * trace->lineRecords.size() / 3];
+        emit window.view()->segmentPicked(0, static_cast<int>(otherRecord));
+        QCOMPARE(player->currentLine(), otherLine);
+        QCOMPARE(player->run()->moves.moves[player->point().move].record, otherRecord);
+        Q_UNUSED(record);
+    }
+
+    void editedProgramIsOutOfDate()
+    {
+        QTemporaryDir dir;
+        QFile file(dir.filePath(QStringLiteral("part.ngc")));
+        QVERIFY(file.open(QIODevice::WriteOnly));
+        file.write("G90 G21\nG0 X0 Y0 Z5\nG1 Z-1 F200\nG1 X20\nG1 Y20\nG0 Z5\nM30\n");
+        file.close();
+        MainWindow window;
+        window.show();
+        QVERIFY(window.openNcFile(file.fileName()));
+        QVERIFY(waitForTrace(window));
+        simulate(window);
+        QVERIFY(!window.simPlayer()->isOutOfDate());
+        auto* banner = window.simDock()->findChild<QLabel*>(QStringLiteral("simBanner"));
+        QVERIFY(banner && banner->isHidden());
+        // An NC file opened apart plays without the job's stock.
+        QVERIFY(!window.simPlayer()->run()->stock);
+        window.ncEditor()->replaceText(QStringLiteral("G90 G21\nG0 X0 Y0 Z5\nG1 Z-2 F200\nG1 X20\nM30\n"));
+        QVERIFY(window.simPlayer()->isOutOfDate());
+        QVERIFY(!banner->isHidden());
+        QVERIFY(banner->text().contains(QLatin1String("Out of date")));
+        QVERIFY(waitForTrace(window));
+        simulate(window);
+        QVERIFY(!window.simPlayer()->isOutOfDate());
+        QVERIFY(banner->isHidden());
+    }
+
+    // A long program's simulation is built on a worker and can be cancelled; the GUI keeps
+    // serving events meanwhile (the longest stall is printed).
+    void longBuildCanBeCancelled()
+    {
+        QTemporaryDir dir;
+        QFile file(dir.filePath(QStringLiteral("long.ngc")));
+        QVERIFY(file.open(QIODevice::WriteOnly));
+        file.write("G90 G21\nG0 X0 Y0 Z5\nG1 Z-1 F2000\n");
+        for (int i = 0; i < 200000; ++i)
+            file.write(QStringLiteral("G1 X%1 Y%2\n").arg(i % 100).arg((i / 100) % 50).toLatin1());
+        file.write("M30\n");
+        file.close();
+        MainWindow window;
+        window.show();
+        QVERIFY(window.openNcFile(file.fileName()));
+        QVERIFY(waitForTrace(window));
+        SimPlayer* player = window.simPlayer();
+        QSignalSpy progress(player, &SimPlayer::buildProgress);
+        QVERIFY(window.actions().trigger(QStringLiteral("Cam.Sim.Start")));
+        QVERIFY(player->isBuilding());
+        auto* cancel = window.simDock()->findChild<QWidget*>(QStringLiteral("simCancel"));
+        QVERIFY(cancel && cancel->isVisible());
+        static_cast<QAbstractButton*>(cancel)->click();  // at once: no event runs before it
+        QVERIFY(waitUntil([player] { return !player->isBuilding(); }));
+        QVERIFY(!player->hasRun());
+        QVERIFY(window.reportView()->toPlainText().contains(QLatin1String("Simulation cancelled")));
+
+        // And once more to the end, measuring how long the event loop ever waited.
+        qint64 longestStall = 0;
+        QElapsedTimer tick;
+        QTimer ticker;
+        ticker.setInterval(10);
+        connect(&ticker, &QTimer::timeout, &window, [&] { longestStall = std::max(longestStall, tick.restart()); });
+        tick.start();
+        ticker.start();
+        simulate(window);
+        ticker.stop();
+        qInfo("200000 moves simulated; longest event-loop stall while building %lld ms", longestStall);
+        QCOMPARE(player->run()->timeline.moveCount(), player->run()->moves.moves.size());
+    }
+};
+
+int main(int argc, char** argv)
+{
+    View3D::setDefaultSurfaceFormat();
+    QApplication app(argc, argv);
+    QtTestRun run(argc, argv);
+    SimulatorTest test;
+    run.run(&test);
+    return run.finish();
+}
+
+#include "SimulatorTest.moc"

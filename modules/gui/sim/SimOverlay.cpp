@@ -3,7 +3,6 @@
 #include "gui/view3d/detail/ModelActors.h"
 #include "gui/view3d/detail/ToolpathScene.h"
 #include "sim/Moves.h"
-#include "sim/TriangleMesh.h"
 
 #include <vtkActor.h>
 #include <vtkCellArray.h>
@@ -134,6 +133,9 @@ struct SimOverlay::Private {
     int toolShown = -1;
 
     vtkSmartPointer<vtkActor> stock;
+    vtkSmartPointer<vtkPolyData> stockData;
+    vtkSmartPointer<vtkFloatArray> stockPoints;
+    std::shared_ptr<const std::vector<std::uint32_t>> stockCells;
     vtkNew<vtkLookupTable> deviationTable;
     vtkSmartPointer<vtkScalarBarActor> deviationBar;
     bool deviationShown = false;
@@ -186,6 +188,9 @@ void SimOverlay::clear()
     d->tools.clear();
     d->toolShown = -1;
     d->remove(d->stock);
+    d->stockData = nullptr;
+    d->stockPoints = nullptr;
+    d->stockCells = nullptr;
     d->stockTriangles = 0;
     d->deviationShown = false;
     d->deviationBar->SetVisibility(false);
@@ -320,39 +325,56 @@ void SimOverlay::showTool(const ToolPose& pose)
 
 bool SimOverlay::hasToolActor() const { return d->toolShown >= 0; }
 
-void SimOverlay::showStock(const sim::TriangleMesh& mesh, const std::vector<float>* deviation, double limitMm)
+void SimOverlay::showStock(std::shared_ptr<const std::vector<float>> positions,
+                           std::shared_ptr<const std::vector<std::uint32_t>> triangles,
+                           const std::vector<float>* deviation, double limitMm)
 {
-    vtkNew<vtkPoints> points;
-    vtkNew<vtkFloatArray> coordinates;
-    coordinates->SetNumberOfComponents(3);
-    coordinates->SetNumberOfTuples(static_cast<vtkIdType>(mesh.vertexCount()));
-    std::copy(mesh.positions.begin(), mesh.positions.end(), coordinates->GetPointer(0));
-    points->SetData(coordinates);
-    vtkNew<vtkCellArray> triangles;
-    triangles->AllocateExact(static_cast<vtkIdType>(mesh.triangleCount()),
-                             static_cast<vtkIdType>(mesh.triangles.size()));
-    for (std::size_t t = 0; t + 2 < mesh.triangles.size(); t += 3) {
-        const vtkIdType ids[3]{mesh.triangles[t], mesh.triangles[t + 1], mesh.triangles[t + 2]};
-        triangles->InsertNextCell(3, ids);
+    if (!positions || !triangles)
+        return;
+    const vtkIdType vertices = static_cast<vtkIdType>(positions->size() / 3);
+    const bool sameCells = d->stock && triangles == d->stockCells && d->stockPoints->GetNumberOfTuples() == vertices;
+    if (!sameCells) {
+        d->stockPoints = vtkSmartPointer<vtkFloatArray>::New();
+        d->stockPoints->SetNumberOfComponents(3);
+        d->stockPoints->SetNumberOfTuples(vertices);
     }
-    auto data = vtkSmartPointer<vtkPolyData>::New();
-    data->SetPoints(points);
-    data->SetPolys(triangles);
-    d->deviationShown = deviation != nullptr && deviation->size() == mesh.vertexCount();
+    std::copy(positions->begin(), positions->end(), d->stockPoints->GetPointer(0));
+    d->stockPoints->Modified();
+    vtkPolyData* data = d->stockData;
+    if (!sameCells) {
+        vtkNew<vtkPoints> points;
+        points->SetData(d->stockPoints);
+        vtkNew<vtkCellArray> cells;
+        cells->AllocateExact(static_cast<vtkIdType>(triangles->size() / 3), static_cast<vtkIdType>(triangles->size()));
+        for (std::size_t t = 0; t + 2 < triangles->size(); t += 3) {
+            const vtkIdType ids[3]{(*triangles)[t], (*triangles)[t + 1], (*triangles)[t + 2]};
+            cells->InsertNextCell(3, ids);
+        }
+        d->stockData = vtkSmartPointer<vtkPolyData>::New();
+        d->stockData->SetPoints(points);
+        d->stockData->SetPolys(cells);
+        d->stockCells = std::move(triangles);
+        data = d->stockData;
+    } else {
+        data->GetPoints()->Modified();
+    }
+    d->deviationShown = deviation != nullptr && static_cast<vtkIdType>(deviation->size()) == vertices;
     if (d->deviationShown) {
         vtkNew<vtkFloatArray> values;
         values->SetName("deviation");
-        values->SetNumberOfTuples(static_cast<vtkIdType>(deviation->size()));
+        values->SetNumberOfTuples(vertices);
         std::copy(deviation->begin(), deviation->end(), values->GetPointer(0));
         data->GetPointData()->SetScalars(values);
         fillDeviationTable(d->deviationTable, std::max(limitMm, 1e-6));
+    } else {
+        data->GetPointData()->SetScalars(nullptr);
     }
     if (!d->stock) {
         d->stock = makeActor(data);
         d->stock->GetProperty()->SetColor(kStockColor[0], kStockColor[1], kStockColor[2]);
         d->stock->PickableOff();
         d->add(d->stock);
-    } else {
+    } else if (!sameCells) {
         static_cast<vtkPolyDataMapper*>(d->stock->GetMapper())->SetInputData(data);
     }
     vtkMapper* mapper = d->stock->GetMapper();
@@ -360,7 +382,7 @@ void SimOverlay::showStock(const sim::TriangleMesh& mesh, const std::vector<floa
     mapper->SetLookupTable(d->deviationTable);
     mapper->UseLookupTableScalarRangeOn();
     d->deviationBar->SetVisibility(d->deviationShown);
-    d->stockTriangles = static_cast<int>(mesh.triangleCount());
+    d->stockTriangles = static_cast<int>(d->stockCells->size() / 3);
     d->render();
 }
 

@@ -12,6 +12,8 @@
 #include <QObject>
 #include <QString>
 
+#include <cstdint>
+
 #include <functional>
 #include <map>
 #include <memory>
@@ -21,8 +23,7 @@ class vtkRenderer;
 
 namespace camwb::sim {
 struct MoveList;
-struct TriangleMesh;
-}  // namespace camwb::sim
+}
 
 namespace camwb::gui {
 
@@ -44,9 +45,13 @@ public:
     void showTool(const ToolPose& pose);
     bool hasToolActor() const;  // a tool is drawn now
 
-    // The stock as cut so far; `deviation` (one value per vertex, mm: + leftover, - gouge) colours
-    // it within +-limitMm and shows its colour bar, else it is drawn plain.
-    void showStock(const sim::TriangleMesh& mesh, const std::vector<float>* deviation = nullptr, double limitMm = 0.1);
+    // The stock as cut so far (positions x, y, z per vertex; three indices per triangle);
+    // `deviation` (one value per vertex, mm: + leftover, - gouge) colours it within +-limitMm and
+    // shows its colour bar, else it is drawn plain. Triangles that are the very list shown before
+    // keep the view's cells: only the points go to the GPU again.
+    void showStock(std::shared_ptr<const std::vector<float>> positions,
+                   std::shared_ptr<const std::vector<std::uint32_t>> triangles, const std::vector<float>* deviation,
+                   double limitMm);
     bool hasStockActor() const;
     int stockTriangleCount() const;
     bool showsDeviation() const;

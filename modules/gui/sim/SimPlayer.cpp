@@ -271,14 +271,15 @@ void SimPlayer::showStockFrame()
     if (!m_stock || m_view == nullptr)
         return;
     const std::shared_ptr<const StockFrame> frame = m_stock->frame();
-    if (!frame || !frame->mesh)
+    if (!frame || !frame->positions)
         return;
     if (frame->deviation) {
         m_deviation = frame->deviation;
         emit deviationReady();
     }
     const bool atEnd = frame->deviation.has_value();
-    m_view->simulation().showStock(*frame->mesh, atEnd ? &frame->deviation->perVertex : nullptr, m_deviationLimit);
+    m_view->simulation().showStock(frame->positions, frame->triangles, atEnd ? &frame->deviation->perVertex : nullptr,
+                                   m_deviationLimit);
     if (m_playing) {
         ++m_stockFrames;
         m_stockMeshSeconds += frame->meshSeconds;
@@ -337,14 +338,20 @@ void SimPlayer::showQuantity(const QString& id, std::optional<std::pair<double, 
     const SimAnalysis& analysis = *m_run->analysis;
     const auto [lo, hi] = std::minmax_element(found->values.begin(), found->values.end());
     m_range = limits ? *limits : std::make_pair(*lo, *hi);
+    // Value k belongs to sample firstSample + k: the path drawn through those samples' tips.
+    const std::size_t first = found->firstSample;
+    const std::size_t count =
+        std::min(found->values.size(), analysis.tip.size() - std::min(first, analysis.tip.size()));
+    const std::vector<base::Vec3> points(analysis.tip.begin() + first, analysis.tip.begin() + first + count);
+    const std::vector<double> values(found->values.begin(), found->values.begin() + count);
     std::vector<base::Vec3> markers;
-    for (std::size_t sample : analysis.reversalSamples)
+    for (std::size_t sample : found->reversals)
         if (sample < analysis.tip.size())
             markers.push_back(analysis.tip[sample]);
     const QString label = QString::fromStdString(found->label);
-    m_view->simulation().showColouredPath(analysis.tip, found->values, m_range.first, m_range.second, label, markers);
+    m_view->simulation().showColouredPath(points, values, m_range.first, m_range.second, label, markers);
     if (m_chart != nullptr) {
-        m_chart->setSeries(analysis.timeSeconds, found->values, label);
+        m_chart->setSeries(found->time, found->values, label);
         m_chart->setCursorTime(m_position);
     }
 }

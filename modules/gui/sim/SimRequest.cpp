@@ -49,6 +49,10 @@ std::optional<SimRunRequest> simulationRequest(const NcInspector& inspector, con
         box.add(stock.max);
         request.stockBox = box;
         request.design = designOf(workbench.displayMesh());
+        const toolpath::Toolpath& cl = workbench.toolpath();
+        for (std::size_t i = 0; i < cl.size(); ++i)
+            if (const auto* change = std::get_if<toolpath::ToolChange>(&cl.record(i)))
+                request.tools[change->tool.number] = change->tool;
     }
     return request;
 }

@@ -23,29 +23,35 @@ namespace camwb::sim {
 class Stock;
 class ToolShape;
 }  // namespace camwb::sim
+namespace camwb::kinematics {
+struct Machine;
+}
 
 namespace camwb::gui {
 
-// One analysed quantity of the sampled motion, per sample.
+// One analysed quantity of the sampled motion (sim::analysePath), per sample from firstSample.
 struct SampledQuantity {
-    std::string id;     // stable: "vx", "tipFeed", ...
-    std::string label;  // shown (the unit included)
+    std::string id;     // stable: "vx", "ax", "tipFeed", "omega0", ...
+    std::string label;  // shown, with the unit
+    std::size_t firstSample = 0;
+    std::vector<double> time;
     std::vector<double> values;
+    std::vector<std::size_t> reversals;  // samples where the axis it belongs to reverses (all axes: any)
 };
 
 struct SimAnalysis {
-    std::vector<double> timeSeconds;  // per sample
-    std::vector<base::Vec3> tip;      // per sample, workpiece frame
+    double stepSeconds = 0.003;
+    std::vector<base::Vec3> tip;  // per sample, workpiece frame
     std::vector<SampledQuantity> quantities;
-    std::vector<std::size_t> reversalSamples;  // samples where an axis reverses
 };
 
 struct SimRun {
     std::shared_ptr<const document::NcTrace> trace;
     std::string programName;
     sim::MoveList moves;
-    Timeline timeline;  // over `moves`; seconds when the motion model timed them
-    std::optional<double> cycleSeconds;
+    Timeline timeline;                    // over `moves`; seconds when the motion model timed them
+    std::optional<double> cycleSeconds;   // the motion model's (with accelerations)
+    std::optional<double> simpleSeconds;  // the distance / feed estimate of the program information
     std::optional<SimAnalysis> analysis;
     std::vector<std::string> notes;  // what could not be simulated and why (shown in the report)
 
@@ -63,9 +69,11 @@ struct SimRun {
 struct SimRunRequest {
     std::shared_ptr<const document::NcTrace> trace;
     std::string programName;
-    std::shared_ptr<const kinematics::Machine> machine;  // may be null
+    std::shared_ptr<const kinematics::Machine> machine;  // may be null: then no times, no analysis
     std::optional<base::Box3> stockBox;                  // the job's stock; none: no stock removal
-    sim::TriangleMesh design;                            // the job's model; empty: no comparison
+    // The job's tools by number (its CL's tool changes): the NC's T words name them, give no shape.
+    std::map<int, toolpath::Tool> tools;
+    sim::TriangleMesh design;  // the job's model; empty: no comparison
     double resolutionMm = 0.25;
     const std::atomic<bool>* cancel = nullptr;
     std::function<void(int percent)> progress;

@@ -1,9 +1,11 @@
 #include "gui/sim/StockAnimation.h"
 
 #include "gui/sim/SimRun.h"
+#include "sim/HeightField.h"
 
 #include <algorithm>
 #include <chrono>
+#include <utility>
 
 namespace camwb::gui {
 
@@ -85,7 +87,7 @@ void StockAnimation::work()
         frame->at = m_done;
         frame->cutSeconds = secondsSince(cutStart);
         const auto meshStart = Clock::now();
-        frame->mesh = std::make_shared<const sim::TriangleMesh>(stock->mesh());
+        remesh(*stock, *frame);
         if (m_done == m_end && m_run->hasDesign)
             frame->deviation = stock->compare();
         frame->meshSeconds = secondsSince(meshStart);
@@ -127,6 +129,26 @@ void StockAnimation::restoreBefore(const MovePoint& target, std::unique_ptr<sim:
         m_checkpoints.pop_back();
     stock = m_checkpoints.back().second->clone();
     m_done = {m_checkpoints.back().first, 0.0};
+    m_triangles = nullptr;
+}
+
+// A height field rewrites only the heights of the columns cut since the last frame; any other
+// stock (tri-dexels) is meshed whole.
+void StockAnimation::remesh(sim::Stock& stock, StockFrame& frame)
+{
+    auto* field = dynamic_cast<sim::HeightField*>(&stock);
+    if (field != nullptr && m_triangles) {
+        const sim::ColumnRect changed = field->takeChanged();
+        if (!changed.empty())
+            field->updateMesh(m_mesh, changed);
+    } else {
+        m_mesh = stock.mesh();
+        if (field != nullptr)
+            field->takeChanged();
+        m_triangles = std::make_shared<const std::vector<std::uint32_t>>(m_mesh.triangles);
+    }
+    frame.positions = std::make_shared<const std::vector<float>>(m_mesh.positions);
+    frame.triangles = field != nullptr ? m_triangles : std::exchange(m_triangles, nullptr);
 }
 
 }  // namespace camwb::gui

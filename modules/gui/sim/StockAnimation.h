@@ -20,7 +20,10 @@ namespace camwb::gui {
 struct SimRun;
 
 struct StockFrame {
-    std::shared_ptr<const sim::TriangleMesh> mesh;
+    // The stock's surface; `triangles` is the same object as the frame before's while only the
+    // heights changed (a height field remeshes in place), so the view updates its points only.
+    std::shared_ptr<const std::vector<float>> positions;
+    std::shared_ptr<const std::vector<std::uint32_t>> triangles;
     std::optional<sim::Deviation> deviation;  // at the program's end, with a design model
     MovePoint at;                             // the stock after cutting up to here
     double cutSeconds = 0;                    // worker time for this frame
@@ -47,6 +50,7 @@ private:
     void work();
     bool cutToward(const MovePoint& target, sim::Stock& stock);
     void restoreBefore(const MovePoint& target, std::unique_ptr<sim::Stock>& stock);
+    void remesh(sim::Stock& stock, StockFrame& frame);
 
     std::shared_ptr<const SimRun> m_run;
     MovePoint m_end;
@@ -59,6 +63,8 @@ private:
     bool m_caughtUp = false;
     std::shared_ptr<const StockFrame> m_frame;
     std::vector<std::pair<std::size_t, std::unique_ptr<sim::Stock>>> m_checkpoints;  // worker only
+    sim::TriangleMesh m_mesh;  // worker only: the mesh a height field updates in place
+    std::shared_ptr<const std::vector<std::uint32_t>> m_triangles;  // worker only; null: remesh all
     std::thread m_thread;
 };
 

@@ -16,15 +16,17 @@ base::Vec3 axisBetween(const base::Vec3& a, const base::Vec3& b, double f)
 
 }  // namespace
 
-Timeline::Timeline(const sim::MoveList* moves, std::vector<double> startSeconds, std::vector<double> durationSeconds) :
-    m_moves(moves)
+Timeline::Timeline(const sim::MoveList* moves, const sim::MotionPlan* plan) : m_moves(moves)
 {
     const std::size_t count = moves ? moves->moves.size() : 0;
-    if (startSeconds.size() == count && durationSeconds.size() == count && count > 0) {
+    if (plan != nullptr && plan->moves.size() == count && count > 0) {
         m_unit = Unit::Seconds;
-        m_start = std::move(startSeconds);
-        m_length = std::move(durationSeconds);
-        m_total = m_start.back() + m_length.back();
+        m_planned = plan->moves;
+        for (const sim::PlannedMove& move : m_planned) {
+            m_start.push_back(move.start);
+            m_length.push_back(move.end() - move.start);
+        }
+        m_total = std::max(plan->totalSeconds, m_start.back() + m_length.back());
         return;
     }
     m_start.reserve(count);
@@ -49,15 +51,19 @@ MovePoint Timeline::pointAt(double position) const
     while (move > 0 && m_length[move] == 0 && m_start[move] == position && m_length[move - 1] > 0)
         --move;
     const double length = m_length[move];
-    const double fraction = length > 0 ? std::clamp((position - m_start[move]) / length, 0.0, 1.0) : 1.0;
-    return {move, fraction};
-}
-
-double Timeline::positionOf(const MovePoint& point) const
-{
-    if (point.move >= m_start.size())
-        return m_total;
-    return m_start[point.move] + m_length[point.move] * point.fraction;
+    if (length <= 0)
+        return {move, 1.0};
+    const double local = position - m_start[move];
+    if (m_planned.empty())
+        return {move, std::clamp(local / length, 0.0, 1.0)};
+    // In time: the pause first (dwell, tool change, spindle ramp), then the velocity profile.
+    const sim::PlannedMove& planned = m_planned[move];
+    const double moving = local - planned.pauseSeconds;
+    if (moving <= 0)
+        return {move, 0.0};
+    if (planned.length > 0)
+        return {move, std::clamp(planned.distanceAt(moving) / planned.length, 0.0, 1.0)};
+    return {move, planned.moveSeconds > 0 ? std::clamp(moving / planned.moveSeconds, 0.0, 1.0) : 1.0};
 }
 
 ToolPose Timeline::poseAt(const MovePoint& point) const

@@ -5,6 +5,7 @@
 #pragma once
 
 #include "base/Vec.h"
+#include "sim/MotionPlan.h"
 #include "sim/Moves.h"
 
 #include <cstddef>
@@ -33,9 +34,10 @@ public:
     enum class Unit { Seconds, Millimetres };
 
     Timeline() = default;
-    // `startSeconds` and `durationSeconds`: one per move, from the motion model. Empty: the
-    // timeline runs over the tool's travel (pauses take no room), and says so by its unit.
-    Timeline(const sim::MoveList* moves, std::vector<double> startSeconds, std::vector<double> durationSeconds);
+    // `plan`: the motion model's times of `moves` (the tool moves along each as its velocity
+    // profile says). Null: the timeline runs over the tool's travel (pauses take no room), and
+    // says so by its unit.
+    Timeline(const sim::MoveList* moves, const sim::MotionPlan* plan);
 
     Unit unit() const { return m_unit; }
     double total() const { return m_total; }
@@ -44,7 +46,6 @@ public:
     double end(std::size_t move) const { return m_start[move] + m_length[move]; }
 
     MovePoint pointAt(double position) const;
-    double positionOf(const MovePoint& point) const;
     ToolPose poseAt(const MovePoint& point) const;
 
     // The NC line of each move's record; steps and jumps go by lines. Without it, by records.
@@ -65,6 +66,7 @@ private:
     Unit m_unit = Unit::Millimetres;
     std::vector<double> m_start;
     std::vector<double> m_length;
+    std::vector<sim::PlannedMove> m_planned;  // with a plan: for the distance along a move at a time
     double m_total = 0;
     std::function<int(std::size_t)> m_lineOf;
 };

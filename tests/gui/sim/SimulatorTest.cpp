@@ -21,8 +21,10 @@
 #include <QAbstractButton>
 #include <QAction>
 #include <QApplication>
+#include <QCheckBox>
 #include <QComboBox>
 #include <QDockWidget>
+#include <QDoubleSpinBox>
 #include <QElapsedTimer>
 #include <QFile>
 #include <QLabel>
@@ -175,8 +177,112 @@ private slots:
                     ->text()
                     .contains(QStringLiteral("move %1 of %1").arg(run->moves.moves.size())) ||
                 player->point().move + 1 < run->moves.moves.size());
+
+        // The stock was cut to the end and compared with the model: the deviation map.
+        QVERIFY(overlay.hasStockActor());
+        QVERIFY(overlay.stockTriangleCount() > 1000);
+        QVERIFY(overlay.hasToolActor());
+        QVERIFY(player->deviation().has_value());
+        QVERIFY(overlay.showsDeviation());
+        const auto deviation = *player->deviation();
+        QVERIFY(deviation.leftoverMove >= 0);
+        QVERIFY(
+            window.findChild<QLabel*>(QStringLiteral("simResults"))->text().contains(QLatin1String("Largest gouge")));
+        window.simDock()->findChild<QDoubleSpinBox*>(QStringLiteral("simDeviationLimit"))->setValue(1.5);
+        QCOMPARE(player->deviationLimit(), 1.5);
+        qInfo("example job: cycle time %.1f s (simple estimate %.1f s), %zu moves, largest gouge %.3f mm at move %lld, "
+              "largest leftover %.3f mm at move %lld, stock %d triangles",
+              run->cycleSeconds.value_or(-1), run->simpleSeconds.value_or(-1), run->moves.moves.size(),
+              deviation.maxGougeMm, static_cast<long long>(deviation.gougeMove), deviation.maxLeftoverMm,
+              static_cast<long long>(deviation.leftoverMove), overlay.stockTriangleCount());
         if (withGl())
             saveShot(&window, QStringLiteral("simulator-example-job.png"));
+    }
+
+    // Playing at the machine's speed x10 for a few seconds: the frames the view drew and the stock
+    // meshes it showed per second (printed; a test never asserts a time).
+    void frameRateWhilePlaying()
+    {
+        if (!withGl())
+            return;  // no frames are drawn without OpenGL; the other registration measures
+        MainWindow window;
+        window.resize(1600, 1000);
+        window.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&window));
+        openJob(window, QStringLiteral(CAMWB_EXAMPLE_JOB));
+        simulate(window);
+        SimPlayer* player = window.simPlayer();
+        player->setSpeed(10);
+        QVERIFY(window.actions().trigger(QStringLiteral("Cam.Sim.Play")));
+        qint64 longestStall = 0;
+        QElapsedTimer tick;
+        QTimer ticker;
+        ticker.setInterval(5);
+        connect(&ticker, &QTimer::timeout, &window, [&] { longestStall = std::max(longestStall, tick.restart()); });
+        tick.start();
+        ticker.start();
+        QTest::qWait(5000);
+        ticker.stop();
+        const camwb::gui::PlaybackStats stats = player->stats();
+        QVERIFY(window.actions().trigger(QStringLiteral("Cam.Sim.Pause")));
+        QVERIFY(stats.frames > 0);
+        QVERIFY(window.view()->simulation().hasStockActor());
+        qInfo("playing the example job at 10x: %.1f frames/s drawn, %.1f stock meshes/s shown (worker remesh %.2f ms "
+              "each), %d frames, %d stock triangles, longest event-loop stall %lld ms",
+              stats.renderedFps, stats.stockFps, stats.meanStockMeshMs, stats.frames,
+              window.view()->simulation().stockTriangleCount(), longestStall);
+    }
+
+    // The five-axis example: the path coloured by an axis' velocity with red markers where the
+    // axis reverses, the chart of the same quantity, the stock (tri-dexels) cut by the tilted tool.
+    void fiveAxisReversalAnalysis()
+    {
+        MainWindow window;
+        window.resize(1600, 1000);
+        window.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&window));
+        openJob(window, QStringLiteral(CAMWB_FIVE_AXIS_JOB));
+        simulate(window);
+        SimPlayer* player = window.simPlayer();
+        QVERIFY(player->run()->cycleSeconds.has_value());
+        QVERIFY(player->run()->analysis.has_value());
+        const QStringList ids = player->quantityIds();
+        for (const char* id : {"vx", "ax", "tipFeed", "omega0", "omega1"})
+            QVERIFY2(ids.contains(QLatin1String(id)), id);
+        auto* combo = window.simDock()->findChild<QComboBox*>(QStringLiteral("simQuantity"));
+        QVERIFY(combo && combo->isEnabled());
+        combo->setCurrentIndex(combo->findData(QStringLiteral("vx")));
+        QCOMPARE(player->quantity(), QStringLiteral("vx"));
+        camwb::gui::SimOverlay& overlay = window.view()->simulation();
+        QVERIFY(overlay.showsColouredPath());
+        QVERIFY(overlay.markerCount() > 0);
+        const auto range = player->quantityRange();
+        QVERIFY(range.first < 0 && range.second > 0);  // X goes both ways
+        // User limits replace the automatic range.
+        window.simDock()->findChild<QCheckBox*>(QStringLiteral("simAutoLimits"))->setChecked(false);
+        auto* low = window.simDock()->findChild<QDoubleSpinBox*>(QStringLiteral("simLow"));
+        auto* high = window.simDock()->findChild<QDoubleSpinBox*>(QStringLiteral("simHigh"));
+        low->setValue(-50);
+        high->setValue(50);
+        emit high->editingFinished();
+        QCOMPARE(player->quantityRange(), std::make_pair(-50.0, 50.0));
+        if (withGl())
+            QVERIFY(window.simDock()->chart()->plottedPoints() > 10);
+        else
+            QVERIFY(window.simDock()->findChild<QLabel*>(QStringLiteral("noChartMessage")));
+
+        playToEnd(window, 2000);
+        QVERIFY(overlay.hasStockActor());
+        // The chart's cursor and a click on it follow the playback both ways.
+        QCOMPARE(window.simDock()->chart()->cursorTime(), player->position());
+        emit window.simDock()->chart()->timeClicked(player->run()->timeline.total() / 2);
+        QCOMPARE(player->position(), player->run()->timeline.total() / 2);
+        QCOMPARE(window.simDock()->chart()->cursorTime(), player->position());
+        qInfo("five-axis example: cycle time %.1f s, %zu vx samples, %d X reversals marked, %d stock triangles",
+              player->run()->cycleSeconds.value_or(-1), player->run()->analysis->tip.size(), overlay.markerCount(),
+              overlay.stockTriangleCount());
+        if (withGl())
+            saveShot(&window, QStringLiteral("simulator-five-axis-reversals.png"));
     }
 
     void stepAndJumpThroughTheRegistry()

@@ -430,26 +430,20 @@ void MainWindow::traceOnMachine(const QString& id)
                                                     : tr("The NC program is traced on the machine %1").arg(id));
 }
 
-// The simulator plays what the editor holds; the job's stock and model come with the job's own
-// posted program only (an NC file opened apart may be for another part).
+// The simulator plays what the editor holds (gui/sim/SimRequest.h says with which stock).
 void MainWindow::setUpSimulator()
 {
     m_simPlayer->attach(m_editor, m_view, m_simDock->chart());
-    registerSimulatorActions(
-        *m_actions, m_simPlayer,
-        [this]() -> std::optional<SimRunRequest> {
-            QString why;
-            auto request = simulationRequest(*m_inspector, *m_workbench, m_editorShowsPosted, &why);
-            if (!request) {
-                m_report->append(Workbench::Severity::Error, why);
-                statusBar()->showMessage(why, 8000);
-                return std::nullopt;
-            }
-            m_simDockWidget->show();
-            m_simDockWidget->raise();
-            return request;
-        },
-        [this] { return m_simDock->lineToJumpTo(); });
+    auto request = [this]() -> std::optional<SimRunRequest> {
+        QString why;
+        auto what = simulationRequest(*m_inspector, *m_workbench, m_editorShowsPosted, m_simDock->resolutionMm(), &why);
+        if (!what)
+            m_report->append(Workbench::Severity::Error, why);
+        m_simDockWidget->setVisible(true);
+        m_simDockWidget->raise();
+        return what;
+    };
+    registerSimulatorActions(*m_actions, m_simPlayer, request, [this] { return m_simDock->lineToJumpTo(); });
     m_simDock->addActions(*m_actions);
     connect(m_simPlayer, &SimPlayer::message, m_report, &ReportView::append);
     connect(m_workbench, &Workbench::modelChanged, m_simPlayer, &SimPlayer::clear);

@@ -50,6 +50,7 @@ SimDock::SimDock(SimPlayer* player, QWidget* parent) :
     m_low(new QDoubleSpinBox(this)),
     m_high(new QDoubleSpinBox(this)),
     m_deviationLimit(new QDoubleSpinBox(this)),
+    m_resolution(new QDoubleSpinBox(this)),
     m_results(new QLabel(this)),
     m_chart(new SimChart(this))
 {
@@ -156,6 +157,13 @@ QWidget* SimDock::makeResults()
     m_deviationLimit->setSingleStep(0.05);
     m_deviationLimit->setValue(m_player->deviationLimit());
     m_deviationLimit->setSuffix(tr(" mm"));
+    m_resolution->setObjectName(QStringLiteral("simResolution"));
+    m_resolution->setRange(0.02, 5);
+    m_resolution->setDecimals(2);
+    m_resolution->setSingleStep(0.05);
+    m_resolution->setValue(0.25);
+    m_resolution->setSuffix(tr(" mm"));
+    m_resolution->setToolTip(tr("The stock's cell size for the next simulation"));
     auto* limits = new QHBoxLayout;
     limits->addWidget(m_autoLimits);
     limits->addWidget(m_low);
@@ -163,6 +171,7 @@ QWidget* SimDock::makeResults()
     form->addRow(tr("Colour path by"), m_quantity);
     form->addRow(tr("Limits"), limits);
     form->addRow(tr("Deviation ±"), m_deviationLimit);
+    form->addRow(tr("Stock resolution"), m_resolution);
     form->addRow(m_results);
     m_results->setWordWrap(true);
 
@@ -189,6 +198,8 @@ void SimDock::addActions(const ActionRegistry& registry)
 
 int SimDock::lineToJumpTo() const { return m_line->value(); }
 
+double SimDock::resolutionMm() const { return m_resolution->value(); }
+
 double SimDock::speedOfSlider(int value) { return std::pow(10.0, -1.0 + 4.0 * value / 100.0); }
 
 void SimDock::updateReadout()
@@ -212,8 +223,11 @@ void SimDock::updateReadout()
                                .arg(m_player->position(), 0, 'f', 1)
                                .arg(timeline.total(), 0, 'f', 1)
                                .arg(where, moves));
-    m_cycle->setText(run->cycleSeconds ? tr("Cycle time %1").arg(clock(*run->cycleSeconds))
-                                       : tr("No cycle time (no motion model)"));
+    if (!run->cycleSeconds)
+        m_cycle->setText(tr("No cycle time (no machine)"));
+    else
+        m_cycle->setText(tr("Cycle time %1 (distance / feed estimate %2)")
+                             .arg(clock(*run->cycleSeconds), clock(run->simpleSeconds.value_or(0))));
 }
 
 void SimDock::updateQuantities()
@@ -253,14 +267,13 @@ void SimDock::updateDeviation()
                                           : tr("No model to compare the stock with."));
         return;
     }
-    auto lineOf = [&run](std::int64_t move) {
-        return move >= 0 ? run->timeline.lineOf(static_cast<std::size_t>(move)) : -1;
+    auto place = [&run](double mm, std::int64_t move) {
+        const int line = move >= 0 ? run->timeline.lineOf(static_cast<std::size_t>(move)) : -1;
+        return line > 0 ? tr("%1 mm (line %2)").arg(mm, 0, 'f', 3).arg(line) : tr("%1 mm").arg(mm, 0, 'f', 3);
     };
-    m_results->setText(tr("Largest gouge %1 mm (line %2) · largest leftover %3 mm (line %4)")
-                           .arg(deviation->maxGougeMm, 0, 'f', 3)
-                           .arg(lineOf(deviation->gougeMove))
-                           .arg(deviation->maxLeftoverMm, 0, 'f', 3)
-                           .arg(lineOf(deviation->leftoverMove)));
+    m_results->setText(tr("Largest gouge %1 · largest leftover %2")
+                           .arg(place(deviation->maxGougeMm, deviation->gougeMove),
+                                place(deviation->maxLeftoverMm, deviation->leftoverMove)));
 }
 
 }  // namespace camwb::gui

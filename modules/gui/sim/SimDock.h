@@ -33,6 +33,8 @@ public:
     // The dock's buttons are the registry's actions (call after registerSimulatorActions).
     void addActions(const ActionRegistry& registry);
     int lineToJumpTo() const;
+    // The stock's cell size for the next simulation (finer: truer deviations, more to draw).
+    double resolutionMm() const;
     // Slider position -> playback speed (machine time per wall time), 0.1x .. 1000x.
     static double speedOfSlider(int value);
 
@@ -58,6 +60,7 @@ private:
     QDoubleSpinBox* m_low;
     QDoubleSpinBox* m_high;
     QDoubleSpinBox* m_deviationLimit;
+    QDoubleSpinBox* m_resolution;
     QLabel* m_results;
     SimChart* m_chart;
 };

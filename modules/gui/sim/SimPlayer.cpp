@@ -169,6 +169,8 @@ void SimPlayer::play()
     m_stats = {};
     m_stockFrames = 0;
     m_stockMeshSeconds = 0;
+    m_updates = 0;
+    m_updateSeconds = 0;
     m_timer->start();
     emit playingChanged(true);
 }
@@ -184,10 +186,13 @@ void SimPlayer::pause()
 
 void SimPlayer::tick()
 {
+    QElapsedTimer started;
+    started.start();
     const double elapsed = m_clock.nsecsElapsed() * 1e-9;
     m_clock.restart();
     m_position = std::min(m_position + elapsed * m_speed, m_run->timeline.total());
     apply();
+    countUpdate(started);
     if (atEnd())
         pause();
 }
@@ -270,6 +275,8 @@ void SimPlayer::showStockFrame()
 {
     if (!m_stock || m_view == nullptr)
         return;
+    QElapsedTimer started;
+    started.start();
     const std::shared_ptr<const StockFrame> frame = m_stock->frame();
     if (!frame || !frame->positions)
         return;
@@ -283,7 +290,15 @@ void SimPlayer::showStockFrame()
     if (m_playing) {
         ++m_stockFrames;
         m_stockMeshSeconds += frame->meshSeconds;
+        countUpdate(started);
     }
+}
+
+void SimPlayer::countUpdate(const QElapsedTimer& started)
+{
+    ++m_updates;
+    m_updateSeconds += started.nsecsElapsed() * 1e-9;
+    m_stats.meanUpdateMs = 1e3 * m_updateSeconds / m_updates;
 }
 
 bool SimPlayer::stockCaughtUp() const { return !m_stock || m_stock->isCaughtUp(); }

@@ -28,9 +28,10 @@ class StockAnimation;
 class View3D;
 
 struct PlaybackStats {
-    double renderedFps = 0;  // frames the view drew per second while playing
-    double stockFps = 0;     // stock meshes shown per second while playing
-    double meanStockMeshMs = 0;
+    double renderedFps = 0;      // frames the view drew per second while playing
+    double stockFps = 0;         // stock meshes shown per second while playing
+    double meanStockMeshMs = 0;  // the worker's remesh per stock frame
+    double meanUpdateMs = 0;     // GUI thread per playback step and stock frame, rendering not included
     int frames = 0;
 };
 
@@ -103,6 +104,7 @@ private:
     void followEditor(int line);
     void showStockFrame();
     void countFrame();
+    void countUpdate(const QElapsedTimer& started);
 
     NcEditor* m_editor = nullptr;
     View3D* m_view = nullptr;
@@ -127,6 +129,8 @@ private:
     PlaybackStats m_stats;
     QElapsedTimer m_statsClock;
     int m_stockFrames = 0;
+    int m_updates = 0;
+    double m_updateSeconds = 0;
     double m_stockMeshSeconds = 0;
 };
 

@@ -26,7 +26,7 @@ sim::TriangleMesh designOf(const occ::DisplayMesh& mesh)
 }  // namespace
 
 std::optional<SimRunRequest> simulationRequest(const NcInspector& inspector, const Workbench& workbench,
-                                               bool editorShowsPostedProgram, QString* why)
+                                               bool editorShowsPostedProgram, double resolutionMm, QString* why)
 {
     const auto trace = inspector.trace();
     if (inspector.isTracing() || !trace) {
@@ -39,6 +39,7 @@ std::optional<SimRunRequest> simulationRequest(const NcInspector& inspector, con
     }
     SimRunRequest request;
     request.trace = trace;
+    request.resolutionMm = resolutionMm;
     request.programName = QFileInfo(inspector.filePath()).fileName().toStdString();
     request.machine = inspector.sharedMachine();
     const document::Stock& stock = workbench.job().stock;

@@ -16,6 +16,6 @@ class Workbench;
 
 // nullopt (and `why`) when there is nothing to simulate yet.
 std::optional<SimRunRequest> simulationRequest(const NcInspector& inspector, const Workbench& workbench,
-                                               bool editorShowsPostedProgram, QString* why);
+                                               bool editorShowsPostedProgram, double resolutionMm, QString* why);
 
 }  // namespace camwb::gui

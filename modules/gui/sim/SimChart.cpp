@@ -143,6 +143,19 @@ void SimChart::setSeries(const std::vector<double>& timeSeconds, const std::vect
 
 int SimChart::plottedPoints() const { return d->points; }
 
+void SimChart::setValueLimits(double low, double high)
+{
+    vtkAxis* axis = d->chart->GetAxis(vtkAxis::LEFT);
+    if (low < high) {
+        axis->SetBehavior(vtkAxis::FIXED);
+        axis->SetRange(low, high);
+    } else {
+        axis->SetBehavior(vtkAxis::AUTO);
+        d->chart->RecalculateBounds();
+    }
+    d->render();
+}
+
 void SimChart::Private::placeCursor()
 {
     auto* t = vtkDoubleArray::SafeDownCast(cursor->GetColumn(0));

@@ -23,6 +23,8 @@ public:
     // empty one clears the chart.
     void setSeries(const std::vector<double>& timeSeconds, const std::vector<double>& values, const QString& title);
     int plottedPoints() const;
+    // The value axis from `low` to `high` (the user's limits); low >= high: the series' own range.
+    void setValueLimits(double low, double high);
     void setCursorTime(double seconds);
     double cursorTime() const;
     QImage grabImage();

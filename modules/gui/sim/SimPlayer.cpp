@@ -367,6 +367,7 @@ void SimPlayer::showQuantity(const QString& id, std::optional<std::pair<double, 
     m_view->simulation().showColouredPath(points, values, m_range.first, m_range.second, label, markers);
     if (m_chart != nullptr) {
         m_chart->setSeries(found->time, found->values, label);
+        m_chart->setValueLimits(limits ? m_range.first : 0, limits ? m_range.second : 0);
         m_chart->setCursorTime(m_position);
     }
 }

@@ -25,8 +25,9 @@ StockAnimation::StockAnimation(std::shared_ptr<const SimRun> run, QObject* paren
     m_run(std::move(run))
 {
     m_end = m_run->timeline.pointAt(m_run->timeline.total());
-    // About 64 copies over the program at most: going back costs at most 1/64 of it.
-    m_checkpointEvery = std::max<std::size_t>(64, m_run->moves.moves.size() / 64);
+    // At most 16 copies (a dexel stock's copy is megabytes): going back re-cuts at most 1/16 of
+    // the program, or 64 moves.
+    m_checkpointEvery = std::max<std::size_t>(64, m_run->moves.moves.size() / 16);
     m_thread = std::thread([this] { work(); });
 }
 

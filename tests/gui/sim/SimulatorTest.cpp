@@ -210,6 +210,12 @@ private slots:
         window.show();
         QVERIFY(QTest::qWaitForWindowExposed(&window));
         openJob(window, QStringLiteral(CAMWB_EXAMPLE_JOB));
+        // The floor: a frame of the model and the backplot before simulating.
+        QElapsedTimer before;
+        before.start();
+        for (int i = 0; i < 3; ++i)
+            window.view()->grabImage();
+        const double beforeMs = before.nsecsElapsed() * 1e-6 / 3;
         simulate(window);
         SimPlayer* player = window.simPlayer();
         player->setSpeed(10);
@@ -234,10 +240,10 @@ private slots:
             window.view()->grabImage();
         const double renderMs = render.nsecsElapsed() * 1e-6 / 3;
         qInfo("playing the example job at 10x: %.1f frames/s drawn, %.1f stock meshes/s shown (worker remesh %.2f ms "
-              "each), GUI update %.2f ms per step, one frame rendered alone %.1f ms, %d frames, %d stock triangles, "
-              "longest event-loop stall %lld ms",
-              stats.renderedFps, stats.stockFps, stats.meanStockMeshMs, stats.meanUpdateMs, renderMs, stats.frames,
-              window.view()->simulation().stockTriangleCount(), longestStall);
+              "each), GUI update %.2f ms per step, one frame rendered alone %.1f ms (%.1f ms before simulating), %d "
+              "frames, %d stock triangles, longest event-loop stall %lld ms",
+              stats.renderedFps, stats.stockFps, stats.meanStockMeshMs, stats.meanUpdateMs, renderMs, beforeMs,
+              stats.frames, window.view()->simulation().stockTriangleCount(), longestStall);
     }
 
     // The five-axis example: the path coloured by an axis' velocity with red markers where the
@@ -288,6 +294,16 @@ private slots:
         qInfo("five-axis example: cycle time %.1f s, %zu vx samples, %d X reversals marked, %d stock triangles",
               player->run()->cycleSeconds.value_or(-1), player->run()->analysis->tip.size(), overlay.markerCount(),
               overlay.stockTriangleCount());
+        // The tool tilted on the swarf pass: the middle of its first tilted move.
+        const auto& moves = player->run()->moves.moves;
+        std::size_t tilted = 0;
+        while (tilted < moves.size() && (!moves[tilted].fiveAxis || moves[tilted].fromAxis.z > 0.999))
+            ++tilted;
+        QVERIFY(tilted < moves.size());
+        const auto& timeline = player->run()->timeline;
+        player->seek(0.5 * (timeline.start(tilted) + timeline.end(tilted)));
+        QVERIFY(overlay.hasToolActor());
+        QVERIFY(waitUntil([player] { return player->stockCaughtUp(); }));
         if (withGl())
             saveShot(&window, QStringLiteral("simulator-five-axis-reversals.png"));
     }

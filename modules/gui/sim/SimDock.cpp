@@ -95,9 +95,13 @@ SimDock::SimDock(SimPlayer* player, QWidget* parent) :
     layout->addLayout(status);
     layout->addLayout(body, 1);
 
+    // Without a machine the playback runs over the travel: the speed is then millimetres a second.
     auto speed = [this](int value) {
         m_player->setSpeed(speedOfSlider(value));
-        m_speedLabel->setText(tr("%1×").arg(speedOfSlider(value), 0, 'g', 3));
+        const auto run = m_player->run();
+        const bool travel = run && run->timeline.unit() == Timeline::Unit::Millimetres;
+        m_speedLabel->setText(travel ? tr("%1 mm/s").arg(speedOfSlider(value), 0, 'g', 3)
+                                     : tr("%1×").arg(speedOfSlider(value), 0, 'g', 3));
     };
     connect(m_speed, &QSlider::valueChanged, this, speed);
     speed(m_speed->value());
@@ -114,7 +118,8 @@ SimDock::SimDock(SimPlayer* player, QWidget* parent) :
             m_cancel->hide();
         }
     });
-    connect(m_player, &SimPlayer::ready, this, [this] {
+    connect(m_player, &SimPlayer::ready, this, [this, speed] {
+        speed(m_speed->value());
         m_progress->hide();
         m_cancel->hide();
         updateQuantities();

@@ -187,7 +187,7 @@ private slots:
         const auto deviation = *player->deviation();
         QVERIFY(deviation.leftoverMove >= 0);
         QVERIFY(
-            window.findChild<QLabel*>(QStringLiteral("simResults"))->text().contains(QLatin1String("Largest gouge")));
+            window.findChild<QLabel*>(QStringLiteral("simResults"))->text().contains(QLatin1String("largest gouge")));
         window.simDock()->findChild<QDoubleSpinBox*>(QStringLiteral("simDeviationLimit"))->setValue(1.5);
         QCOMPARE(player->deviationLimit(), 1.5);
         qInfo("example job: cycle time %.1f s (simple estimate %.1f s), %zu moves, largest gouge %.3f mm at move %lld, "

@@ -291,6 +291,17 @@ private slots:
         emit window.simDock()->chart()->timeClicked(player->run()->timeline.total() / 2);
         QCOMPARE(player->position(), player->run()->timeline.total() / 2);
         QCOMPARE(window.simDock()->chart()->cursorTime(), player->position());
+        // A real click on the chart: further right is later.
+        if (withGl()) {
+            QWidget* chartGl = window.simDock()->chart()->findChild<QWidget*>(QStringLiteral("simChartGl"));
+            QVERIFY(chartGl);
+            QTest::mouseClick(chartGl, Qt::LeftButton, {}, QPoint(chartGl->width() / 3, chartGl->height() / 2));
+            const double early = player->position();
+            QTest::mouseClick(chartGl, Qt::LeftButton, {}, QPoint(2 * chartGl->width() / 3, chartGl->height() / 2));
+            const double late = player->position();
+            QVERIFY2(early > 0 && late > early && late < player->run()->timeline.total(),
+                     qPrintable(QStringLiteral("%1, %2").arg(early).arg(late)));
+        }
         qInfo("five-axis example: cycle time %.1f s, %zu vx samples, %d X reversals marked, %d stock triangles",
               player->run()->cycleSeconds.value_or(-1), player->run()->analysis->tip.size(), overlay.markerCount(),
               overlay.stockTriangleCount());

@@ -95,13 +95,9 @@ SimDock::SimDock(SimPlayer* player, QWidget* parent) :
     layout->addLayout(status);
     layout->addLayout(body, 1);
 
-    // Without a machine the playback runs over the travel: the speed is then millimetres a second.
     auto speed = [this](int value) {
         m_player->setSpeed(speedOfSlider(value));
-        const auto run = m_player->run();
-        const bool travel = run && run->timeline.unit() == Timeline::Unit::Millimetres;
-        m_speedLabel->setText(travel ? tr("%1 mm/s").arg(speedOfSlider(value), 0, 'g', 3)
-                                     : tr("%1×").arg(speedOfSlider(value), 0, 'g', 3));
+        m_speedLabel->setText(tr("%1×").arg(speedOfSlider(value), 0, 'g', 3));
     };
     connect(m_speed, &QSlider::valueChanged, this, speed);
     speed(m_speed->value());
@@ -118,8 +114,7 @@ SimDock::SimDock(SimPlayer* player, QWidget* parent) :
             m_cancel->hide();
         }
     });
-    connect(m_player, &SimPlayer::ready, this, [this, speed] {
-        speed(m_speed->value());
+    connect(m_player, &SimPlayer::ready, this, [this] {
         m_progress->hide();
         m_cancel->hide();
         updateQuantities();
@@ -220,19 +215,9 @@ void SimDock::updateReadout()
     const int line = m_player->currentLine();
     const QString where = line > 0 ? tr("line %1").arg(line) : tr("no line");
     const QString moves = tr("move %1 of %2").arg(at.move + 1).arg(timeline.moveCount());
-    if (timeline.unit() == Timeline::Unit::Seconds)
-        m_readout->setText(
-            tr("%1 / %2 · %3 · %4").arg(clock(m_player->position()), clock(timeline.total()), where, moves));
-    else
-        m_readout->setText(tr("%1 of %2 mm travelled · %3 · %4")
-                               .arg(m_player->position(), 0, 'f', 1)
-                               .arg(timeline.total(), 0, 'f', 1)
-                               .arg(where, moves));
-    if (!run->cycleSeconds)
-        m_cycle->setText(tr("No cycle time (no machine)"));
-    else
-        m_cycle->setText(tr("Cycle time %1 (distance / feed estimate %2)")
-                             .arg(clock(*run->cycleSeconds), clock(run->simpleSeconds.value_or(0))));
+    m_readout->setText(tr("%1 / %2 · %3 · %4").arg(clock(m_player->position()), clock(timeline.total()), where, moves));
+    m_cycle->setText(
+        tr("Cycle time %1 (distance / feed estimate %2)").arg(clock(run->cycleSeconds), clock(run->simpleSeconds)));
 }
 
 void SimDock::updateQuantities()

@@ -256,7 +256,7 @@ void SimPlayer::apply()
     if (m_stock)
         m_stock->setTarget(at);
     followEditor(m_run->timeline.lineOf(at.move));
-    if (m_chart != nullptr && m_run->timeline.unit() == Timeline::Unit::Seconds)
+    if (m_chart != nullptr)
         m_chart->setCursorTime(m_position);
     emit positionChanged();
 }
@@ -319,16 +319,16 @@ void SimPlayer::countFrame()
 QStringList SimPlayer::quantityIds() const
 {
     QStringList ids;
-    if (m_run && m_run->analysis)
-        for (const SampledQuantity& q : m_run->analysis->quantities)
+    if (m_run)
+        for (const SampledQuantity& q : m_run->analysis.quantities)
             ids << QString::fromStdString(q.id);
     return ids;
 }
 
 QString SimPlayer::quantityLabel(const QString& id) const
 {
-    if (m_run && m_run->analysis)
-        for (const SampledQuantity& q : m_run->analysis->quantities)
+    if (m_run)
+        for (const SampledQuantity& q : m_run->analysis.quantities)
             if (QString::fromStdString(q.id) == id)
                 return QString::fromStdString(q.label);
     return {};
@@ -338,8 +338,8 @@ void SimPlayer::showQuantity(const QString& id, std::optional<std::pair<double, 
 {
     m_quantity.clear();
     const SampledQuantity* found = nullptr;
-    if (m_run && m_run->analysis)
-        for (const SampledQuantity& q : m_run->analysis->quantities)
+    if (m_run)
+        for (const SampledQuantity& q : m_run->analysis.quantities)
             if (QString::fromStdString(q.id) == id)
                 found = &q;
     if (found == nullptr || found->values.empty() || m_view == nullptr) {
@@ -350,7 +350,7 @@ void SimPlayer::showQuantity(const QString& id, std::optional<std::pair<double, 
         return;
     }
     m_quantity = id;
-    const SimAnalysis& analysis = *m_run->analysis;
+    const SimAnalysis& analysis = m_run->analysis;
     const auto [lo, hi] = std::minmax_element(found->values.begin(), found->values.end());
     m_range = limits ? *limits : std::make_pair(*lo, *hi);
     // Value k belongs to sample firstSample + k: the path drawn through those samples' tips.

@@ -39,25 +39,28 @@ toolpath::Toolpath withJobTools(const toolpath::Toolpath& program, const std::ma
     return sized;
 }
 
-// The motion model's times, the cycle time beside the simple estimate, and the analysis of the
+// The motion plan's times, the cycle time beside the simple estimate, and the analysis of the
 // sampled motion. False when cancelled.
-bool planInTime(const SimRunRequest& request, SimRun& run, const sim::MotionPlan& plan)
+bool planInTime(const SimRunRequest& request, const kinematics::Machine& machine, SimRun& run)
 {
-    const kinematics::Machine& machine = *request.machine;
+    const sim::MotionPlan plan = sim::planMotion(run.moves, machine);
+    if (cancelled(request))
+        return false;
     toolpath::StatsOptions stats;
-    stats.rapidMmPerMin = kinematics::estimateRapidMmPerMin(&machine);
+    stats.rapidMmPerMin = kinematics::estimateRapidMmPerMin(request.machine.get());
     stats.recordsInError = &request.trace->recordsInError;
     const sim::CycleTimes times =
         sim::cycleTimes(run.moves, plan, toolpath::programStats(request.trace->program, stats));
     run.cycleSeconds = times.planned.totalSeconds();
     run.simpleSeconds = times.simpleSeconds;
+    run.timeline = Timeline(&run.moves, plan);
     auto analysis = analyseMotion(run.moves, plan, machine, request.cancel);
     if (!analysis)
         return false;
     run.analysis = std::move(*analysis);
-    if (run.analysis->stepSeconds > 0.003 + 1e-12)
+    if (run.analysis.stepSeconds > 0.003 + 1e-12)
         run.notes.push_back("The path analysis samples every " +
-                            std::to_string(static_cast<int>(run.analysis->stepSeconds * 1e3)) +
+                            std::to_string(static_cast<int>(run.analysis.stepSeconds * 1e3)) +
                             " ms (the program is long; 3 ms would not fit in memory)");
     return true;
 }
@@ -103,16 +106,14 @@ std::shared_ptr<SimRun> buildSimRun(const SimRunRequest& request)
         return nullptr;
     progress(request, 25);
 
-    std::optional<sim::MotionPlan> plan;
-    if (request.machine) {
-        plan = sim::planMotion(run->moves, *request.machine);
-        if (cancelled(request) || !planInTime(request, *run, *plan))
-            return nullptr;
-    } else {
-        run->notes.push_back("No machine: the simulation plays along the path without times (choose the machine "
-                             "in the NC inspector for the cycle time and the path analysis)");
-    }
-    run->timeline = Timeline(&run->moves, plan ? &*plan : nullptr);
+    // Without a machine, the default limits (as camwb-cli sim): a time, said to be a default's.
+    const kinematics::Machine fallback;
+    const kinematics::Machine& machine = request.machine ? *request.machine : fallback;
+    if (!request.machine)
+        run->notes.push_back("No machine chosen: the cycle time and the path analysis assume default axis limits "
+                             "(choose the machine in the NC inspector)");
+    if (!planInTime(request, machine, *run))
+        return nullptr;
     const auto trace = request.trace;
     run->timeline.setLineOfRecord([trace](std::size_t record) { return trace->lineOfRecord(record); });
     progress(request, 70);

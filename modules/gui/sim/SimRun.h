@@ -49,10 +49,10 @@ struct SimRun {
     std::shared_ptr<const document::NcTrace> trace;
     std::string programName;
     sim::MoveList moves;
-    Timeline timeline;                    // over `moves`; seconds when the motion model timed them
-    std::optional<double> cycleSeconds;   // the motion model's (with accelerations)
-    std::optional<double> simpleSeconds;  // the distance / feed estimate of the program information
-    std::optional<SimAnalysis> analysis;
+    Timeline timeline;         // over `moves`, in the motion plan's time
+    double cycleSeconds = 0;   // the motion plan's (with accelerations)
+    double simpleSeconds = 0;  // the distance / feed estimate of the program information
+    SimAnalysis analysis;
     std::vector<std::string> notes;  // what could not be simulated and why (shown in the report)
 
     // The stock animation's inputs; without a stock the tool plays over the path only.
@@ -69,8 +69,9 @@ struct SimRun {
 struct SimRunRequest {
     std::shared_ptr<const document::NcTrace> trace;
     std::string programName;
-    std::shared_ptr<const kinematics::Machine> machine;  // may be null: then no times, no analysis
-    std::optional<base::Box3> stockBox;                  // the job's stock; none: no stock removal
+    // Null: a three-axis machine of the default limits (kinematics::Machine{}), as camwb-cli sim.
+    std::shared_ptr<const kinematics::Machine> machine;
+    std::optional<base::Box3> stockBox;  // the job's stock; none: no stock removal
     // The job's tools by number (its CL's tool changes): the NC's T words name them, give no shape.
     std::map<int, toolpath::Tool> tools;
     sim::TriangleMesh design;  // the job's model; empty: no comparison

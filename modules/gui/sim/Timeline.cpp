@@ -16,27 +16,15 @@ base::Vec3 axisBetween(const base::Vec3& a, const base::Vec3& b, double f)
 
 }  // namespace
 
-Timeline::Timeline(const sim::MoveList* moves, const sim::MotionPlan* plan) : m_moves(moves)
+Timeline::Timeline(const sim::MoveList* moves, const sim::MotionPlan& plan) : m_moves(moves), m_planned(plan.moves)
 {
-    const std::size_t count = moves ? moves->moves.size() : 0;
-    if (plan != nullptr && plan->moves.size() == count && count > 0) {
-        m_unit = Unit::Seconds;
-        m_planned = plan->moves;
-        for (const sim::PlannedMove& move : m_planned) {
-            m_start.push_back(move.start);
-            m_length.push_back(move.end() - move.start);
-        }
-        m_total = std::max(plan->totalSeconds, m_start.back() + m_length.back());
-        return;
+    m_start.reserve(m_planned.size());
+    m_length.reserve(m_planned.size());
+    for (const sim::PlannedMove& move : m_planned) {
+        m_start.push_back(move.start);
+        m_length.push_back(move.end() - move.start);
     }
-    m_start.reserve(count);
-    m_length.reserve(count);
-    for (std::size_t i = 0; i < count; ++i) {
-        const sim::Move& move = moves->moves[i];
-        m_start.push_back(m_total);
-        m_length.push_back(move.moves() && move.positionKnown ? move.lengthMm() : 0.0);
-        m_total += m_length.back();
-    }
+    m_total = m_planned.empty() ? 0.0 : std::max(plan.totalSeconds, m_start.back() + m_length.back());
 }
 
 MovePoint Timeline::pointAt(double position) const
@@ -54,8 +42,6 @@ MovePoint Timeline::pointAt(double position) const
     if (length <= 0)
         return {move, 1.0};
     const double local = position - m_start[move];
-    if (m_planned.empty())
-        return {move, std::clamp(local / length, 0.0, 1.0)};
     // In time: the pause first (dwell, tool change, spindle ramp), then the velocity profile.
     const sim::PlannedMove& planned = m_planned[move];
     const double moving = local - planned.pauseSeconds;

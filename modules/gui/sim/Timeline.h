@@ -1,7 +1,6 @@
-// Where the simulator's playback is: a position along the program (seconds of machine time when
-// the motion model gave each move its time, else millimetres of tool travel), mapped to the move,
-// the tool's pose and the NC line. Plain C++ (no Qt, no VTK): the dock, the 3D overlay and the
-// stock animation all ask it, so stepping and jumping have one definition.
+// Where the simulator's playback is: a position in machine time (the motion plan's seconds),
+// mapped to the move, the tool's pose along its velocity profile and the NC line. Plain C++ (no Qt, no VTK): the dock,
+// the 3D overlay and the stock animation all ask it, so stepping and jumping have one definition.
 #pragma once
 
 #include "base/Vec.h"
@@ -31,15 +30,10 @@ struct ToolPose {
 
 class Timeline {
 public:
-    enum class Unit { Seconds, Millimetres };
-
     Timeline() = default;
-    // `plan`: the motion model's times of `moves` (the tool moves along each as its velocity
-    // profile says). Null: the timeline runs over the tool's travel (pauses take no room), and
-    // says so by its unit.
-    Timeline(const sim::MoveList* moves, const sim::MotionPlan* plan);
+    // `plan`: the motion plan of `moves` (sim::planMotion), one planned move per move.
+    Timeline(const sim::MoveList* moves, const sim::MotionPlan& plan);
 
-    Unit unit() const { return m_unit; }
     double total() const { return m_total; }
     std::size_t moveCount() const { return m_start.size(); }
     double start(std::size_t move) const { return m_start[move]; }
@@ -63,10 +57,9 @@ private:
     std::size_t runStart(std::size_t move) const;
 
     const sim::MoveList* m_moves = nullptr;
-    Unit m_unit = Unit::Millimetres;
     std::vector<double> m_start;
     std::vector<double> m_length;
-    std::vector<sim::PlannedMove> m_planned;  // with a plan: for the distance along a move at a time
+    std::vector<sim::PlannedMove> m_planned;  // the distance along a move at a time
     double m_total = 0;
     std::function<int(std::size_t)> m_lineOf;
 };

@@ -51,6 +51,7 @@ SimDock::SimDock(SimPlayer* player, QWidget* parent) :
     m_high(new QDoubleSpinBox(this)),
     m_deviationLimit(new QDoubleSpinBox(this)),
     m_resolution(new QDoubleSpinBox(this)),
+    m_showTool(new QCheckBox(tr("Tool and holder"), this)),
     m_results(new QLabel(this)),
     m_chart(new SimChart(this))
 {
@@ -72,6 +73,9 @@ SimDock::SimDock(SimPlayer* player, QWidget* parent) :
     m_line->setPrefix(tr("line "));
     m_progress->hide();
     m_cancel->hide();
+    m_showTool->setObjectName(QStringLiteral("simShowTool"));
+    m_showTool->setChecked(true);
+    connect(m_showTool, &QCheckBox::toggled, m_player, &SimPlayer::setToolVisible);
 
     auto* top = new QHBoxLayout;
     top->addWidget(m_buttons);
@@ -79,6 +83,7 @@ SimDock::SimDock(SimPlayer* player, QWidget* parent) :
     top->addWidget(new QLabel(tr("Speed"), this));
     top->addWidget(m_speed);
     top->addWidget(m_speedLabel);
+    top->addWidget(m_showTool);
     top->addStretch(1);
     auto* status = new QHBoxLayout;
     status->addWidget(m_readout, 1);
@@ -172,6 +177,7 @@ QWidget* SimDock::makeResults()
     form->addRow(tr("Limits"), limits);
     form->addRow(tr("Deviation ±"), m_deviationLimit);
     form->addRow(tr("Stock resolution"), m_resolution);
+
     form->addRow(m_results);
     m_results->setWordWrap(true);
 

@@ -61,6 +61,7 @@ private:
     QDoubleSpinBox* m_high;
     QDoubleSpinBox* m_deviationLimit;
     QDoubleSpinBox* m_resolution;
+    QCheckBox* m_showTool;
     QLabel* m_results;
     SimChart* m_chart;
 };

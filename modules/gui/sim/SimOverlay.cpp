@@ -131,6 +131,7 @@ struct SimOverlay::Private {
 
     std::map<int, std::vector<vtkSmartPointer<vtkActor>>> tools;
     int toolShown = -1;
+    bool toolVisible = true;
 
     vtkSmartPointer<vtkActor> stock;
     vtkSmartPointer<vtkPolyData> stockData;
@@ -297,11 +298,10 @@ void SimOverlay::setTools(const std::map<int, std::vector<RevolvedPart>>& tools)
 void SimOverlay::showTool(const ToolPose& pose)
 {
     const int shown = pose.known && d->tools.count(pose.tool) ? pose.tool : -1;
-    if (shown != d->toolShown)
-        for (auto& [number, actors] : d->tools)
-            for (auto& actor : actors)
-                actor->SetVisibility(number == shown);
     d->toolShown = shown;
+    for (auto& [number, actors] : d->tools)
+        for (auto& actor : actors)
+            actor->SetVisibility(number == shown && d->toolVisible);
     if (shown < 0) {
         d->render();
         return;
@@ -324,6 +324,15 @@ void SimOverlay::showTool(const ToolPose& pose)
 }
 
 bool SimOverlay::hasToolActor() const { return d->toolShown >= 0; }
+
+void SimOverlay::setToolVisible(bool visible)
+{
+    d->toolVisible = visible;
+    for (auto& [number, actors] : d->tools)
+        for (auto& actor : actors)
+            actor->SetVisibility(number == d->toolShown && visible);
+    d->render();
+}
 
 void SimOverlay::showStock(std::shared_ptr<const std::vector<float>> positions,
                            std::shared_ptr<const std::vector<std::uint32_t>> triangles,

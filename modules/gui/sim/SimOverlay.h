@@ -43,7 +43,8 @@ public:
     // Each tool's revolved parts (radius, height above the tip), drawn at the pose given.
     void setTools(const std::map<int, std::vector<RevolvedPart>>& tools);
     void showTool(const ToolPose& pose);
-    bool hasToolActor() const;  // a tool is drawn now
+    bool hasToolActor() const;          // a tool stands at a pose now (drawn unless hidden)
+    void setToolVisible(bool visible);  // hides the tool, to see the stock under its holder
 
     // The stock as cut so far (positions x, y, z per vertex; three indices per triangle);
     // `deviation` (one value per vertex, mm: + leftover, - gouge) colours it within +-limitMm and

@@ -372,6 +372,12 @@ void SimPlayer::showQuantity(const QString& id, std::optional<std::pair<double, 
     }
 }
 
+void SimPlayer::setToolVisible(bool visible)
+{
+    if (m_view != nullptr)
+        m_view->simulation().setToolVisible(visible);
+}
+
 void SimPlayer::setDeviationLimit(double mm)
 {
     m_deviationLimit = std::max(mm, 1e-4);

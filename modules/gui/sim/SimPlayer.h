@@ -80,6 +80,7 @@ public:
     QString quantity() const { return m_quantity; }
     std::pair<double, double> quantityRange() const { return m_range; }
     void setDeviationLimit(double mm);
+    void setToolVisible(bool visible);
     double deviationLimit() const { return m_deviationLimit; }
     std::optional<sim::Deviation> deviation() const { return m_deviation; }
     // The stock animation has cut up to the playback position.

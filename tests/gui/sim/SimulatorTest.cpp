@@ -195,6 +195,10 @@ private slots:
               run->cycleSeconds, run->simpleSeconds, run->moves.moves.size(), deviation.maxGougeMm,
               static_cast<long long>(deviation.gougeMove), deviation.maxLeftoverMm,
               static_cast<long long>(deviation.leftoverMove), overlay.stockTriangleCount());
+        // The holder hides the part: off for the picture of the deviation map.
+        window.simDock()->findChild<QCheckBox*>(QStringLiteral("simShowTool"))->setChecked(false);
+        QVERIFY(overlay.hasToolActor());
+        window.view()->fitAll();
         if (withGl())
             saveShot(&window, QStringLiteral("simulator-example-job.png"));
     }
@@ -315,6 +319,7 @@ private slots:
         player->seek(0.5 * (timeline.start(tilted) + timeline.end(tilted)));
         QVERIFY(overlay.hasToolActor());
         QVERIFY(waitUntil([player] { return player->stockCaughtUp(); }));
+        window.view()->fitAll();
         if (withGl())
             saveShot(&window, QStringLiteral("simulator-five-axis-reversals.png"));
     }

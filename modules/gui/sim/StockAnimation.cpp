@@ -3,8 +3,14 @@
 #include "gui/sim/SimRun.h"
 #include "sim/HeightField.h"
 
+#include <QCoreApplication>
+#include <QPointer>
+
 #include <algorithm>
 #include <chrono>
+#include <condition_variable>
+#include <mutex>
+#include <thread>
 #include <utility>
 
 namespace camwb::gui {
@@ -20,103 +26,154 @@ double secondsSince(Clock::time_point start) { return std::chrono::duration<doub
 
 }  // namespace
 
+// What the GUI and the worker share, under the mutex. The worker holds it alive after the
+// animation is gone, until it notices `stop`.
+struct StockAnimation::Shared {
+    std::shared_ptr<const SimRun> run;
+    std::mutex mutex;
+    std::condition_variable wake;
+    MovePoint target;
+    bool stop = false;
+    bool caughtUp = false;
+    std::shared_ptr<const StockFrame> frame;
+};
+
+// The worker's own state: the stock, its copies, where it has cut to and its mesh.
+class StockAnimation::Worker {
+public:
+    Worker(std::shared_ptr<Shared> shared, QPointer<StockAnimation> owner) :
+        m_shared(std::move(shared)),
+        m_owner(std::move(owner)),
+        m_run(*m_shared->run)
+    {
+        m_end = m_run.timeline.pointAt(m_run.timeline.total());
+        // At most 16 copies (a dexel stock's copy is megabytes): going back re-cuts at most 1/16
+        // of the program, or 64 moves.
+        m_checkpointEvery = std::max<std::size_t>(64, m_run.moves.moves.size() / 16);
+    }
+
+    void run();
+
+private:
+    bool cutToward(const MovePoint& target);
+    void restoreBefore(const MovePoint& target);
+    void remesh(StockFrame& frame);
+
+    std::shared_ptr<Shared> m_shared;
+    QPointer<StockAnimation> m_owner;  // read on the GUI thread only
+    const SimRun& m_run;
+    MovePoint m_end;
+    std::size_t m_checkpointEvery = 64;
+    std::unique_ptr<sim::Stock> m_stock;
+    MovePoint m_done;
+    std::vector<std::pair<std::size_t, std::unique_ptr<sim::Stock>>> m_checkpoints;
+    sim::TriangleMesh m_mesh;                                       // a height field updates it in place
+    std::shared_ptr<const std::vector<std::uint32_t>> m_triangles;  // null: remesh all
+};
+
 StockAnimation::StockAnimation(std::shared_ptr<const SimRun> run, QObject* parent) :
     QObject(parent),
-    m_run(std::move(run))
+    m_shared(std::make_shared<Shared>())
 {
-    m_end = m_run->timeline.pointAt(m_run->timeline.total());
-    // At most 16 copies (a dexel stock's copy is megabytes): going back re-cuts at most 1/16 of
-    // the program, or 64 moves.
-    m_checkpointEvery = std::max<std::size_t>(64, m_run->moves.moves.size() / 16);
-    m_thread = std::thread([this] { work(); });
+    m_shared->run = std::move(run);
+    std::thread([worker = std::make_shared<Worker>(m_shared, QPointer<StockAnimation>(this))] {
+        worker->run();
+    }).detach();
 }
 
 StockAnimation::~StockAnimation()
 {
     {
-        std::lock_guard lock(m_mutex);
-        m_stop = true;
+        std::lock_guard lock(m_shared->mutex);
+        m_shared->stop = true;
     }
-    m_wake.notify_all();
-    m_thread.join();
+    m_shared->wake.notify_all();
 }
 
 void StockAnimation::setTarget(const MovePoint& point)
 {
     {
-        std::lock_guard lock(m_mutex);
-        if (point == m_target && m_frame)
+        std::lock_guard lock(m_shared->mutex);
+        if (point == m_shared->target && m_shared->frame)
             return;
-        m_target = point;
-        m_caughtUp = false;
+        m_shared->target = point;
+        m_shared->caughtUp = false;
     }
-    m_wake.notify_all();
+    m_shared->wake.notify_all();
 }
 
 std::shared_ptr<const StockFrame> StockAnimation::frame() const
 {
-    std::lock_guard lock(m_mutex);
-    return m_frame;
+    std::lock_guard lock(m_shared->mutex);
+    return m_shared->frame;
 }
 
 bool StockAnimation::isCaughtUp() const
 {
-    std::lock_guard lock(m_mutex);
-    return m_caughtUp;
+    std::lock_guard lock(m_shared->mutex);
+    return m_shared->caughtUp;
 }
 
-void StockAnimation::work()
+void StockAnimation::Worker::run()
 {
-    std::unique_ptr<sim::Stock> stock = m_run->stock->clone();
-    m_checkpoints.emplace_back(0, stock->clone());
+    m_stock = m_run.stock->clone();
+    m_checkpoints.emplace_back(0, m_stock->clone());
     bool first = true;
     for (;;) {
         MovePoint target;
         {
-            std::unique_lock lock(m_mutex);
-            m_wake.wait(lock, [&] { return m_stop || first || !(m_target == m_done); });
-            if (m_stop)
+            std::unique_lock lock(m_shared->mutex);
+            m_shared->wake.wait(lock, [&] { return m_shared->stop || first || !(m_shared->target == m_done); });
+            if (m_shared->stop)
                 return;
-            target = m_target;
+            target = m_shared->target;
         }
         first = false;
         const auto cutStart = Clock::now();
         if (target < m_done)
-            restoreBefore(target, stock);
-        const bool reached = cutToward(target, *stock);
+            restoreBefore(target);
+        const bool reached = cutToward(target);
         auto frame = std::make_shared<StockFrame>();
         frame->at = m_done;
         frame->cutSeconds = secondsSince(cutStart);
         const auto meshStart = Clock::now();
-        remesh(*stock, *frame);
-        if (m_done == m_end && m_run->hasDesign)
-            frame->deviation = stock->compare();
+        remesh(*frame);
+        if (m_done == m_end && m_run.hasDesign)
+            frame->deviation = m_stock->compare();
         frame->meshSeconds = secondsSince(meshStart);
         {
-            std::lock_guard lock(m_mutex);
-            m_frame = std::move(frame);
-            m_caughtUp = reached && m_target == m_done;
+            std::lock_guard lock(m_shared->mutex);
+            if (m_shared->stop)
+                return;
+            m_shared->frame = std::move(frame);
+            m_shared->caughtUp = reached && m_shared->target == m_done;
         }
+        // Posted to the application: the animation may be gone by the time it runs.
         QMetaObject::invokeMethod(
-            this, [this] { emit frameReady(); }, Qt::QueuedConnection);
+            QCoreApplication::instance(),
+            [owner = m_owner] {
+                if (owner)
+                    emit owner->frameReady();
+            },
+            Qt::QueuedConnection);
     }
 }
 
 // Cuts from where the stock is toward `target`, a frame's budget at a time; true when there.
-bool StockAnimation::cutToward(const MovePoint& target, sim::Stock& stock)
+bool StockAnimation::Worker::cutToward(const MovePoint& target)
 {
     const auto start = Clock::now();
-    const auto& moves = m_run->moves.moves;
+    const auto& moves = m_run.moves.moves;
     while (m_done < target) {
         const std::size_t i = m_done.move;
         const double to = i < target.move ? 1.0 : target.fraction;
         const sim::Move& move = moves[i];
-        auto shape = m_run->toolShapes.find(move.tool);
-        if (move.moves() && move.positionKnown && shape != m_run->toolShapes.end() && to > m_done.fraction)
-            stock.cut(partOf(move, m_done.fraction, to), i, *shape->second);
+        auto shape = m_run.toolShapes.find(move.tool);
+        if (move.moves() && move.positionKnown && shape != m_run.toolShapes.end() && to > m_done.fraction)
+            m_stock->cut(partOf(move, m_done.fraction, to), i, *shape->second);
         m_done = i < target.move ? MovePoint{i + 1, 0.0} : target;
         if (m_done.fraction == 0 && m_done.move % m_checkpointEvery == 0 && m_checkpoints.back().first < m_done.move)
-            m_checkpoints.emplace_back(m_done.move, stock.clone());
+            m_checkpoints.emplace_back(m_done.move, m_stock->clone());
         if (Clock::now() - start > kFrameBudget)
             break;
     }
@@ -124,26 +181,26 @@ bool StockAnimation::cutToward(const MovePoint& target, sim::Stock& stock)
 }
 
 // Back to the last copy at or before `target`.
-void StockAnimation::restoreBefore(const MovePoint& target, std::unique_ptr<sim::Stock>& stock)
+void StockAnimation::Worker::restoreBefore(const MovePoint& target)
 {
     while (m_checkpoints.size() > 1 && m_checkpoints.back().first > target.move)
         m_checkpoints.pop_back();
-    stock = m_checkpoints.back().second->clone();
+    m_stock = m_checkpoints.back().second->clone();
     m_done = {m_checkpoints.back().first, 0.0};
     m_triangles = nullptr;
 }
 
 // A height field rewrites only the heights of the columns cut since the last frame; any other
 // stock (tri-dexels) is meshed whole.
-void StockAnimation::remesh(sim::Stock& stock, StockFrame& frame)
+void StockAnimation::Worker::remesh(StockFrame& frame)
 {
-    auto* field = dynamic_cast<sim::HeightField*>(&stock);
+    auto* field = dynamic_cast<sim::HeightField*>(m_stock.get());
     if (field != nullptr && m_triangles) {
         const sim::ColumnRect changed = field->takeChanged();
         if (!changed.empty())
             field->updateMesh(m_mesh, changed);
     } else {
-        m_mesh = stock.mesh();
+        m_mesh = m_stock->mesh();
         if (field != nullptr)
             field->takeChanged();
         m_triangles = std::make_shared<const std::vector<std::uint32_t>>(m_mesh.triangles);

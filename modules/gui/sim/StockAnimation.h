@@ -9,11 +9,10 @@
 
 #include <QObject>
 
-#include <condition_variable>
+#include <cstdint>
 #include <memory>
-#include <mutex>
 #include <optional>
-#include <thread>
+#include <vector>
 
 namespace camwb::gui {
 
@@ -35,6 +34,7 @@ class StockAnimation : public QObject {
 public:
     // `run` must have a stock.
     explicit StockAnimation(std::shared_ptr<const SimRun> run, QObject* parent = nullptr);
+    // Returns at once: a cut under way finishes on the worker, which then ends by itself.
     ~StockAnimation() override;
 
     void setTarget(const MovePoint& point);
@@ -47,25 +47,9 @@ signals:
     void frameReady();
 
 private:
-    void work();
-    bool cutToward(const MovePoint& target, sim::Stock& stock);
-    void restoreBefore(const MovePoint& target, std::unique_ptr<sim::Stock>& stock);
-    void remesh(sim::Stock& stock, StockFrame& frame);
-
-    std::shared_ptr<const SimRun> m_run;
-    MovePoint m_end;
-    std::size_t m_checkpointEvery = 64;
-    mutable std::mutex m_mutex;
-    std::condition_variable m_wake;
-    MovePoint m_target;
-    MovePoint m_done;  // worker only
-    bool m_stop = false;
-    bool m_caughtUp = false;
-    std::shared_ptr<const StockFrame> m_frame;
-    std::vector<std::pair<std::size_t, std::unique_ptr<sim::Stock>>> m_checkpoints;  // worker only
-    sim::TriangleMesh m_mesh;  // worker only: the mesh a height field updates in place
-    std::shared_ptr<const std::vector<std::uint32_t>> m_triangles;  // worker only; null: remesh all
-    std::thread m_thread;
+    struct Shared;
+    class Worker;
+    std::shared_ptr<Shared> m_shared;
 };
 
 }  // namespace camwb::gui

@@ -32,6 +32,8 @@ constexpr int kToolSides = 32;
 constexpr double kStockColor[3]{0.78, 0.70, 0.55};
 constexpr double kDoneFeedColor[3]{kFeedRgb[0] / 255.0, kFeedRgb[1] / 255.0, kFeedRgb[2] / 255.0};
 constexpr double kMarkerColor[3]{0.9, 0.0, 0.0};
+// Where a check found an error (gouge, rapid in stock, holder): magenta, apart from the reversals.
+constexpr double kFindingColor[3]{0.85, 0.0, 0.85};
 
 vtkSmartPointer<vtkPolyData> emptyLines()
 {
@@ -78,6 +80,27 @@ vtkSmartPointer<vtkPolyData> revolve(const RevolvedPart& part)
     data->SetPoints(points);
     data->SetPolys(quads);
     return data;
+}
+
+// Points drawn as spheres of `sizePx`, on top of nothing in particular (they are not picked).
+vtkSmartPointer<vtkActor> markerActor(const std::vector<base::Vec3>& at, const double color[3], float sizePx)
+{
+    auto data = vtkSmartPointer<vtkPolyData>::New();
+    vtkNew<vtkPoints> points;
+    vtkNew<vtkCellArray> vertices;
+    for (const base::Vec3& p : at) {
+        const vtkIdType id = points->InsertNextPoint(p.x, p.y, p.z);
+        vertices->InsertNextCell(1, &id);
+    }
+    data->SetPoints(points);
+    data->SetVerts(vertices);
+    auto actor = makeActor(data);
+    actor->GetMapper()->ScalarVisibilityOff();
+    actor->GetProperty()->SetColor(color[0], color[1], color[2]);
+    actor->GetProperty()->SetPointSize(sizePx);
+    actor->GetProperty()->SetRenderPointsAsSpheres(true);
+    actor->PickableOff();
+    return actor;
 }
 
 vtkSmartPointer<vtkScalarBarActor> scalarBar(vtkLookupTable* table, double x)
@@ -142,7 +165,8 @@ struct SimOverlay::Private {
     bool deviationShown = false;
     int stockTriangles = 0;
 
-    vtkSmartPointer<vtkActor> coloured, markers;
+    vtkSmartPointer<vtkActor> coloured, markers, findings;
+    int findingCount = 0;
     vtkNew<vtkLookupTable> quantityTable;
     vtkSmartPointer<vtkScalarBarActor> quantityBar;
     int markerCount = 0;
@@ -196,7 +220,7 @@ void SimOverlay::clear()
     d->deviationShown = false;
     d->deviationBar->SetVisibility(false);
     showColouredPath({}, {}, 0, 1, {}, {});
-    d->render();
+    showFindings({});
 }
 
 void SimOverlay::Private::clearPath()
@@ -446,26 +470,25 @@ void SimOverlay::showColouredPath(const std::vector<base::Vec3>& points, const s
     d->quantityBar->SetVisibility(true);
 
     if (!markers.empty()) {
-        auto markerData = vtkSmartPointer<vtkPolyData>::New();
-        vtkNew<vtkPoints> markerPoints;
-        vtkNew<vtkCellArray> vertices;
-        for (const base::Vec3& p : markers) {
-            const vtkIdType id = markerPoints->InsertNextPoint(p.x, p.y, p.z);
-            vertices->InsertNextCell(1, &id);
-        }
-        markerData->SetPoints(markerPoints);
-        markerData->SetVerts(vertices);
-        d->markers = makeActor(markerData);
-        d->markers->GetMapper()->ScalarVisibilityOff();
-        d->markers->GetProperty()->SetColor(kMarkerColor[0], kMarkerColor[1], kMarkerColor[2]);
-        d->markers->GetProperty()->SetPointSize(11.0f);
-        d->markers->GetProperty()->SetRenderPointsAsSpheres(true);
-        d->markers->PickableOff();
+        d->markers = markerActor(markers, kMarkerColor, 11.0f);
         d->add(d->markers);
         d->markerCount = static_cast<int>(markers.size());
     }
     d->render();
 }
+
+void SimOverlay::showFindings(const std::vector<base::Vec3>& at)
+{
+    d->remove(d->findings);
+    d->findingCount = static_cast<int>(at.size());
+    if (!at.empty()) {
+        d->findings = markerActor(at, kFindingColor, 14.0f);
+        d->add(d->findings);
+    }
+    d->render();
+}
+
+int SimOverlay::findingCount() const { return d->findingCount; }
 
 void SimOverlay::Private::showPathActors(bool visible)
 {

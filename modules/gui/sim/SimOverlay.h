@@ -62,6 +62,10 @@ public:
     void showColouredPath(const std::vector<base::Vec3>& points, const std::vector<double>& values, double low,
                           double high, const QString& title, const std::vector<base::Vec3>& markers);
     bool showsColouredPath() const;
+
+    // Magenta markers where the simulation's checks found an error (empty clears).
+    void showFindings(const std::vector<base::Vec3>& at);
+    int findingCount() const;
     int markerCount() const;
 
 private:

@@ -38,6 +38,17 @@ std::vector<Check> machineLimitChecks(const toolpath::Toolpath& program, const k
     return out;
 }
 
+std::unique_ptr<Stock> makeStock(const StockSpec& spec, bool tilts)
+{
+    std::unique_ptr<Stock> stock = spec.box ? makeStock(*spec.box, spec.resolutionMm, tilts)
+                                            : makeStockFromMesh(spec.blank, spec.resolutionMm, tilts);
+    // A stock of cells knows where the model's wall lies only within half a cell: a cut exactly
+    // to the wall may read as that much into it.
+    if (!spec.design.empty())
+        stock->setDesign(spec.design, spec.gougeToleranceMm + 0.5 * stock->resolutionMm());
+    return stock;
+}
+
 SimulationResult simulate(const toolpath::Toolpath& program, const SimulationSetup& setup,
                           const std::vector<bool>& recordsInError)
 {
@@ -50,13 +61,7 @@ SimulationResult simulate(const toolpath::Toolpath& program, const SimulationSet
     result.tilts = anyToolTilts(result.moves);
     Stock* stock = setup.stock;
     if (!stock && setup.stockSpec) {
-        const StockSpec& spec = *setup.stockSpec;
-        result.stock = spec.box ? makeStock(*spec.box, spec.resolutionMm, result.tilts)
-                                : makeStockFromMesh(spec.blank, spec.resolutionMm, result.tilts);
-        // A stock of cells knows where the model's wall lies only within half a cell: a cut
-        // exactly to the wall may read as that much into it.
-        if (!spec.design.empty())
-            result.stock->setDesign(spec.design, spec.gougeToleranceMm + 0.5 * result.stock->resolutionMm());
+        result.stock = makeStock(*setup.stockSpec, result.tilts);
         stock = result.stock.get();
     }
     if (stock) {

@@ -31,6 +31,10 @@ struct StockSpec {
     double gougeToleranceMm = 0.02;  // plus half the resolution (where a cell knows a wall to be)
 };
 
+// The stock `spec` describes, a height field or (`tilts`) tri-dexels, with its design model; what
+// simulate() cuts and what the simulator dock animates.
+std::unique_ptr<Stock> makeStock(const StockSpec& spec, bool tilts);
+
 struct SimulationSetup {
     const kinematics::Machine* machine = nullptr;  // limits and chain; nullptr: none checked
     Stock* stock = nullptr;                        // the caller's stock; else `stockSpec` or none

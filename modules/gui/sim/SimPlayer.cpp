@@ -1,5 +1,6 @@
 #include "gui/sim/SimPlayer.h"
 
+#include "document/Simulate.h"
 #include "gui/editor/NcEditor.h"
 #include "gui/sim/SimChart.h"
 #include "gui/sim/SimOverlay.h"
@@ -122,9 +123,45 @@ void SimPlayer::finishBuild(std::shared_ptr<SimRun> run, quint64 generation)
         m_stock = std::make_unique<StockAnimation>(m_run);
         connect(m_stock.get(), &StockAnimation::frameReady, this, &SimPlayer::showStockFrame);
     }
+    reportChecks();
     m_position = 0;
     apply();
     emit ready();
+}
+
+// The checks into the report as file:line findings (the first 50; air cutting is counted only),
+// and their errors as markers in the view.
+void SimPlayer::reportChecks()
+{
+    constexpr int kReported = 50;
+    int reported = 0, errors = 0, warnings = 0;
+    std::vector<base::Vec3> markers;
+    for (const sim::Check& check : m_run->checks) {
+        errors += check.severity == base::Severity::Error ? 1 : 0;
+        warnings += check.severity == base::Severity::Warning ? 1 : 0;
+        if (check.severity == base::Severity::Error && check.move >= 0)
+            markers.push_back(check.at);
+        if (check.kind == sim::CheckKind::AirCutting || reported++ >= kReported)
+            continue;
+        const document::RecordPlace place = document::placeOfRecord(*m_run->trace, check.record);
+        emit message(check.severity, QString::fromStdString(base::formatDiagnostic(
+                                         {check.severity, place.file, place.line, 0, check.message})));
+    }
+    if (m_view != nullptr)
+        m_view->simulation().showFindings(markers);
+    emit message(errors > 0 ? base::Severity::Error : base::Severity::Note,
+                 tr("Simulated %1: cycle time %2 s, %3 errors, %4 warnings")
+                     .arg(QString::fromStdString(m_run->programName))
+                     .arg(m_run->cycleSeconds, 0, 'f', 1)
+                     .arg(errors)
+                     .arg(warnings));
+}
+
+std::optional<sim::Deviation> SimPlayer::deviation() const
+{
+    if (m_deviation)
+        return m_deviation;
+    return m_run ? m_run->deviation : std::nullopt;
 }
 
 void SimPlayer::clear()

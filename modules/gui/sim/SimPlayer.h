@@ -82,7 +82,9 @@ public:
     void setDeviationLimit(double mm);
     void setToolVisible(bool visible);
     double deviationLimit() const { return m_deviationLimit; }
-    std::optional<sim::Deviation> deviation() const { return m_deviation; }
+    // The stock's deviation at the program's end: the animation's once it got there, else the
+    // full run's (nullopt without a model to compare with).
+    std::optional<sim::Deviation> deviation() const;
     // The stock animation has cut up to the playback position.
     bool stockCaughtUp() const;
     PlaybackStats stats() const { return m_stats; }
@@ -100,6 +102,7 @@ signals:
 
 private:
     void finishBuild(std::shared_ptr<SimRun> run, quint64 generation);
+    void reportChecks();
     void tick();
     void apply();
     void followEditor(int line);

@@ -14,15 +14,6 @@ class Tr {
     Q_DECLARE_TR_FUNCTIONS(SimulationRequest)
 };
 
-// The model's display triangles, the surface the stock is compared with.
-sim::TriangleMesh designOf(const occ::DisplayMesh& mesh)
-{
-    sim::TriangleMesh design;
-    design.positions = mesh.positions;
-    design.triangles = mesh.triangles;
-    return design;
-}
-
 }  // namespace
 
 std::optional<SimRunRequest> simulationRequest(const NcInspector& inspector, const Workbench& workbench,
@@ -49,7 +40,8 @@ std::optional<SimRunRequest> simulationRequest(const NcInspector& inspector, con
         box.add(stock.min);
         box.add(stock.max);
         request.stockBox = box;
-        request.design = designOf(workbench.displayMesh());
+        if (!workbench.model().empty())
+            request.model = workbench.model();
         const toolpath::Toolpath& cl = workbench.toolpath();
         for (std::size_t i = 0; i < cl.size(); ++i)
             if (const auto* change = std::get_if<toolpath::ToolChange>(&cl.record(i)))

@@ -1,9 +1,10 @@
 #include "gui/sim/SimRun.h"
 
+#include "document/Simulate.h"
 #include "gui/sim/SimAnalysis.h"
 #include "kinematics/Machine.h"
-#include "sim/MakeStock.h"
 #include "sim/MotionPlan.h"
+#include "sim/Simulation.h"
 #include "sim/Stock.h"
 #include "sim/ToolShape.h"
 #include "toolpath/ProgramStats.h"
@@ -12,9 +13,6 @@
 namespace camwb::gui {
 
 namespace {
-
-// A cut deeper than this into the model is a gouge (the stock's resolution adds its own).
-constexpr double kGougeToleranceMm = 0.01;
 
 bool cancelled(const SimRunRequest& request) { return request.cancel && request.cancel->load(); }
 
@@ -65,21 +63,12 @@ bool planInTime(const SimRunRequest& request, const kinematics::Machine& machine
     return true;
 }
 
-void makeStock(const SimRunRequest& request, SimRun& run)
+// The tools' shapes (to cut with) and revolved outlines (to draw).
+void shapeTools(SimRun& run)
 {
-    std::unique_ptr<sim::Stock> stock =
-        sim::makeStock(*request.stockBox, request.resolutionMm, sim::anyToolTilts(run.moves));
-    if (!request.design.empty()) {
-        stock->setDesign(request.design, kGougeToleranceMm);
-        run.hasDesign = true;
-    }
-    run.stock = std::move(stock);
     for (const auto& [number, tool] : run.moves.tools) {
-        if (tool.diameterMm <= 0) {
-            run.notes.push_back("Tool " + std::to_string(number) +
-                                " has no diameter: its moves are played but cut nothing");
-            continue;
-        }
+        if (tool.diameterMm <= 0)
+            continue;  // the checks say so (no-tool-shape)
         auto shape = std::make_shared<const sim::ToolShape>(tool);
         run.toolParts[number] = revolvedParts(*shape);
         run.toolShapes[number] = std::move(shape);
@@ -95,19 +84,42 @@ std::shared_ptr<SimRun> buildSimRun(const SimRunRequest& request)
     run->programName = request.programName;
     if (!request.trace)
         return run;
-    progress(request, 5);
-    sim::MoveOptions options;
-    if (request.machine)
-        options.chain = &request.machine->kinematics;
+    progress(request, 2);
     const toolpath::Toolpath program =
         request.tools.empty() ? request.trace->program : withJobTools(request.trace->program, request.tools);
-    run->moves = sim::buildMoves(program, options, request.trace->recordsInError);
-    if (cancelled(request))
+
+    // The whole program through the stock first: the checks and the end's deviation, as
+    // camwb-cli sim reports them. The dock then animates a stock of the same kind.
+    std::optional<sim::StockSpec> spec;
+    if (request.stockBox) {
+        spec.emplace();
+        spec->box = *request.stockBox;
+        spec->resolutionMm = request.resolutionMm;
+        if (request.model) {
+            spec->design = document::designMesh(*request.model);
+            run->hasDesign = !spec->design.empty();
+        }
+    }
+    sim::SimulationSetup setup;
+    setup.machine = request.machine.get();
+    setup.stockSpec = spec ? &*spec : nullptr;
+    setup.cancel = request.cancel;
+    setup.progress = [&request](double fraction) { progress(request, 5 + static_cast<int>(60 * fraction)); };
+    sim::SimulationResult result = sim::simulate(program, setup, request.trace->recordsInError);
+    if (result.cancelled || cancelled(request))
         return nullptr;
-    progress(request, 25);
+    run->moves = std::move(result.moves);
+    run->checks = std::move(result.checks);
+    if (result.cut && run->hasDesign)
+        run->deviation = result.deviation;
+    if (spec) {
+        run->stock = sim::makeStock(*spec, result.tilts);
+        shapeTools(*run);
+    }
+    progress(request, 70);
 
     // Without a machine, the default limits (as camwb-cli sim): a time, said to be a default's.
-    const kinematics::Machine fallback;
+    const kinematics::Machine fallback = kinematics::defaultLimitsMachine();
     const kinematics::Machine& machine = request.machine ? *request.machine : fallback;
     if (!request.machine)
         run->notes.push_back("No machine chosen: the cycle time and the path analysis assume default axis limits "
@@ -116,12 +128,6 @@ std::shared_ptr<SimRun> buildSimRun(const SimRunRequest& request)
         return nullptr;
     const auto trace = request.trace;
     run->timeline.setLineOfRecord([trace](std::size_t record) { return trace->lineOfRecord(record); });
-    progress(request, 70);
-
-    if (request.stockBox)
-        makeStock(request, *run);
-    if (cancelled(request))
-        return nullptr;
     progress(request, 100);
     return run;
 }

@@ -8,8 +8,10 @@
 #include "document/NcTrace.h"
 #include "gui/sim/RevolvedPart.h"
 #include "gui/sim/Timeline.h"
+#include "occ/Model.h"
+#include "sim/Checks.h"
 #include "sim/Moves.h"
-#include "sim/TriangleMesh.h"
+#include "sim/Stock.h"
 
 #include <atomic>
 #include <functional>
@@ -20,9 +22,8 @@
 #include <vector>
 
 namespace camwb::sim {
-class Stock;
 class ToolShape;
-}  // namespace camwb::sim
+}
 namespace camwb::kinematics {
 struct Machine;
 }
@@ -54,6 +55,10 @@ struct SimRun {
     double simpleSeconds = 0;  // the distance / feed estimate of the program information
     SimAnalysis analysis;
     std::vector<std::string> notes;  // what could not be simulated and why (shown in the report)
+    // What sim::simulate found, block by block (the same checks as camwb-cli sim), and the
+    // largest gouge and leftover at the program's end.
+    std::vector<sim::Check> checks;
+    std::optional<sim::Deviation> deviation;
 
     // The stock animation's inputs; without a stock the tool plays over the path only.
     std::shared_ptr<const sim::Stock> stock;
@@ -74,7 +79,7 @@ struct SimRunRequest {
     std::optional<base::Box3> stockBox;  // the job's stock; none: no stock removal
     // The job's tools by number (its CL's tool changes): the NC's T words name them, give no shape.
     std::map<int, toolpath::Tool> tools;
-    sim::TriangleMesh design;  // the job's model; empty: no comparison
+    std::optional<occ::Model> model;  // the job's: compared with (document::designMesh)
     double resolutionMm = 0.25;
     const std::atomic<bool>* cancel = nullptr;
     std::function<void(int percent)> progress;

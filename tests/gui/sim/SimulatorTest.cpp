@@ -188,6 +188,10 @@ private slots:
         QVERIFY(deviation.leftoverMove >= 0);
         QVERIFY(
             window.findChild<QLabel*>(QStringLiteral("simResults"))->text().contains(QLatin1String("largest gouge")));
+        // The checks of the whole run went to the report (the example job is clean).
+        QVERIFY(window.reportView()->toPlainText().contains(
+            QLatin1String("Simulated example-block.mpf: cycle time 469.8 s, 0 errors, 0 warnings")));
+        QCOMPARE(overlay.findingCount(), 0);
         window.simDock()->findChild<QDoubleSpinBox*>(QStringLiteral("simDeviationLimit"))->setValue(1.5);
         QCOMPARE(player->deviationLimit(), 1.5);
         qInfo("example job: cycle time %.1f s (simple estimate %.1f s), %zu moves, largest gouge %.3f mm at move %lld, "
@@ -306,6 +310,8 @@ private slots:
             QVERIFY2(early > 0 && late > early && late < player->run()->timeline.total(),
                      qPrintable(QStringLiteral("%1, %2").arg(early).arg(late)));
         }
+        const QString report = window.reportView()->toPlainText();
+        qInfo("five-axis report: %s", qPrintable(report.mid(report.lastIndexOf(QLatin1String("Traced")))));
         qInfo("five-axis example: cycle time %.1f s, %zu vx samples, %d X reversals marked, %d stock triangles",
               player->run()->cycleSeconds, player->run()->analysis.tip.size(), overlay.markerCount(),
               overlay.stockTriangleCount());

@@ -267,9 +267,10 @@ void SimDock::updateDeviation()
         const int line = move >= 0 ? run->timeline.lineOf(static_cast<std::size_t>(move)) : -1;
         return line > 0 ? tr("%1 mm (line %2)").arg(mm, 0, 'f', 3).arg(line) : tr("%1 mm").arg(mm, 0, 'f', 3);
     };
-    m_results->setText(tr("At the program's end: largest gouge %1 · largest leftover %2")
+    m_results->setText(tr("At the program's end: largest gouge %1 · largest leftover %2 · %3 mm beside the part")
                            .arg(place(deviation->maxGougeMm, deviation->gougeMove),
-                                place(deviation->maxLeftoverMm, deviation->leftoverMove)));
+                                place(deviation->maxLeftoverMm, deviation->leftoverMove))
+                           .arg(deviation->maxOutsideMm, 0, 'f', 3));
 }
 
 }  // namespace camwb::gui

@@ -164,6 +164,52 @@
     </message>
 </context>
 <context>
+    <name>SimulationRequest</name>
+    <message>
+        <source>Nothing to simulate yet: the NC program is being traced (or none is open).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Nothing to simulate: the NC program makes no records.</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>SimulatorActions</name>
+    <message>
+        <source>&amp;Simulate</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Simulate the NC program in the editor: the machine&apos;s motion, the stock cut, the analysis</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Play</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>P&amp;ause</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Step &amp;Back</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>S&amp;tep Block</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Jump to Line</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Move the playback to the first run of the line given beside the button</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
     <name>camwb::gui::CompareDialog</name>
     <message>
         <source>Compare NC Programs</source>
@@ -1115,6 +1161,10 @@ CAM and post-processor workbench.</source>
         <source>New &amp;Swarf (five-axis)…</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <source>Simulator</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>camwb::gui::ModalStatePanel</name>
@@ -1826,6 +1876,135 @@ Save them first?</source>
     </message>
     <message>
         <source>error: </source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>camwb::gui::SimChart</name>
+    <message>
+        <source>Chart unavailable: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>camwb::gui::SimDock</name>
+    <message>
+        <source>Cancel</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Auto</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Tool and holder</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>line </source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Speed</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1×</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Out of date: the program was changed after it was simulated. Simulate again to see what it does now.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source> mm</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The stock&apos;s cell size for the next simulation</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Colour path by</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Limits</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Deviation ±</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Stock resolution</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Simulating…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>No simulation: press Simulate</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>line %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>no line</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>move %1 of %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 / %2 · %3 · %4</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Cycle time %1 (distance / feed estimate %2)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Moves (rapid / feed)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>No stock: the tool plays over the path only.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The deviation map shows when the end of the program is cut.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>No model to compare the stock with.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 mm (line %2)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 mm</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>At the program&apos;s end: largest gouge %1 · largest leftover %2 · %3 mm beside the part</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>camwb::gui::SimPlayer</name>
+    <message>
+        <source>Simulation cancelled</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Simulated %1: cycle time %2 s, %3 errors, %4 warnings</source>
         <translation type="unfinished"></translation>
     </message>
 </context>

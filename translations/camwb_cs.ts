@@ -167,46 +167,46 @@
     <name>SimulationRequest</name>
     <message>
         <source>Nothing to simulate yet: the NC program is being traced (or none is open).</source>
-        <translation type="unfinished"></translation>
+        <translation>Zatím není co simulovat: NC program se právě trasuje (nebo žádný není otevřen).</translation>
     </message>
     <message>
         <source>Nothing to simulate: the NC program makes no records.</source>
-        <translation type="unfinished"></translation>
+        <translation>Není co simulovat: NC program nevytváří žádné záznamy.</translation>
     </message>
 </context>
 <context>
     <name>SimulatorActions</name>
     <message>
         <source>&amp;Simulate</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Simulovat</translation>
     </message>
     <message>
         <source>Simulate the NC program in the editor: the machine&apos;s motion, the stock cut, the analysis</source>
-        <translation type="unfinished"></translation>
+        <translation>Simulovat NC program v editoru: pohyb stroje, obrábění polotovaru, analýza</translation>
     </message>
     <message>
         <source>&amp;Play</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Přehrát</translation>
     </message>
     <message>
         <source>P&amp;ause</source>
-        <translation type="unfinished"></translation>
+        <translation>Po&amp;zastavit</translation>
     </message>
     <message>
         <source>Step &amp;Back</source>
-        <translation type="unfinished"></translation>
+        <translation>Krok &amp;zpět</translation>
     </message>
     <message>
         <source>S&amp;tep Block</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Krok o blok</translation>
     </message>
     <message>
         <source>&amp;Jump to Line</source>
-        <translation type="unfinished"></translation>
+        <translation>Přejít na ř&amp;ádek</translation>
     </message>
     <message>
         <source>Move the playback to the first run of the line given beside the button</source>
-        <translation type="unfinished"></translation>
+        <translation>Přesunout přehrávání na první provedení řádku zadaného vedle tlačítka</translation>
     </message>
 </context>
 <context>
@@ -1163,7 +1163,7 @@ CAM and post-processor workbench.</source>
     </message>
     <message>
         <source>Simulator</source>
-        <translation type="unfinished"></translation>
+        <translation>Simulátor</translation>
     </message>
 </context>
 <context>
@@ -1266,7 +1266,7 @@ CAM and post-processor workbench.</source>
     </message>
     <message>
         <source>line %1</source>
-        <translation type="unfinished"></translation>
+        <translation type="unfinished">řádek %1</translation>
     </message>
     <message>
         <source>, runs %1 times (first run shown)</source>
@@ -1519,7 +1519,7 @@ Save them first?</source>
     </message>
     <message>
         <source>Cancel</source>
-        <translation type="unfinished"></translation>
+        <translation type="unfinished">Zrušit</translation>
     </message>
     <message>
         <source>Stop computing the preview (the operation stays as edited)</source>
@@ -1738,7 +1738,7 @@ Save them first?</source>
     </message>
     <message>
         <source>%1 mm</source>
-        <translation type="unfinished"></translation>
+        <translation type="unfinished">%1 mm</translation>
     </message>
     <message>
         <source>Rapid length</source>
@@ -1883,129 +1883,129 @@ Save them first?</source>
     <name>camwb::gui::SimChart</name>
     <message>
         <source>Chart unavailable: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Graf není k dispozici: %1</translation>
     </message>
 </context>
 <context>
     <name>camwb::gui::SimDock</name>
     <message>
         <source>Cancel</source>
-        <translation type="unfinished"></translation>
+        <translation>Zrušit</translation>
     </message>
     <message>
         <source>Auto</source>
-        <translation type="unfinished"></translation>
+        <translation>Auto</translation>
     </message>
     <message>
         <source>Tool and holder</source>
-        <translation type="unfinished"></translation>
+        <translation>Nástroj a držák</translation>
     </message>
     <message>
         <source>line </source>
-        <translation type="unfinished"></translation>
+        <translation>řádek </translation>
     </message>
     <message>
         <source>Speed</source>
-        <translation type="unfinished"></translation>
+        <translation>Rychlost</translation>
     </message>
     <message>
         <source>%1×</source>
-        <translation type="unfinished"></translation>
+        <translation>%1×</translation>
     </message>
     <message>
         <source>Out of date: the program was changed after it was simulated. Simulate again to see what it does now.</source>
-        <translation type="unfinished"></translation>
+        <translation>Zastaralé: program byl po simulaci změněn. Simulujte znovu, abyste viděli, co dělá nyní.</translation>
     </message>
     <message>
         <source> mm</source>
-        <translation type="unfinished"></translation>
+        <translation> mm</translation>
     </message>
     <message>
         <source>The stock&apos;s cell size for the next simulation</source>
-        <translation type="unfinished"></translation>
+        <translation>Velikost buňky polotovaru pro příští simulaci</translation>
     </message>
     <message>
         <source>Colour path by</source>
-        <translation type="unfinished"></translation>
+        <translation>Barvit dráhu podle</translation>
     </message>
     <message>
         <source>Limits</source>
-        <translation type="unfinished"></translation>
+        <translation>Meze</translation>
     </message>
     <message>
         <source>Deviation ±</source>
-        <translation type="unfinished"></translation>
+        <translation>Odchylka ±</translation>
     </message>
     <message>
         <source>Stock resolution</source>
-        <translation type="unfinished"></translation>
+        <translation>Rozlišení polotovaru</translation>
     </message>
     <message>
         <source>Simulating…</source>
-        <translation type="unfinished"></translation>
+        <translation>Simuluje se…</translation>
     </message>
     <message>
         <source>No simulation: press Simulate</source>
-        <translation type="unfinished"></translation>
+        <translation>Žádná simulace: stiskněte Simulovat</translation>
     </message>
     <message>
         <source>line %1</source>
-        <translation type="unfinished"></translation>
+        <translation>řádek %1</translation>
     </message>
     <message>
         <source>no line</source>
-        <translation type="unfinished"></translation>
+        <translation>bez řádku</translation>
     </message>
     <message>
         <source>move %1 of %2</source>
-        <translation type="unfinished"></translation>
+        <translation>pohyb %1 z %2</translation>
     </message>
     <message>
         <source>%1 / %2 · %3 · %4</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 / %2 · %3 · %4</translation>
     </message>
     <message>
         <source>Cycle time %1 (distance / feed estimate %2)</source>
-        <translation type="unfinished"></translation>
+        <translation>Čas cyklu %1 (odhad z dráhy a posuvu %2)</translation>
     </message>
     <message>
         <source>Moves (rapid / feed)</source>
-        <translation type="unfinished"></translation>
+        <translation>Pohyby (rychloposuv / posuv)</translation>
     </message>
     <message>
         <source>No stock: the tool plays over the path only.</source>
-        <translation type="unfinished"></translation>
+        <translation>Bez polotovaru: nástroj se přehrává jen po dráze.</translation>
     </message>
     <message>
         <source>The deviation map shows when the end of the program is cut.</source>
-        <translation type="unfinished"></translation>
+        <translation>Mapa odchylek se zobrazí po obrobení konce programu.</translation>
     </message>
     <message>
         <source>No model to compare the stock with.</source>
-        <translation type="unfinished"></translation>
+        <translation>Žádný model, se kterým by se polotovar porovnal.</translation>
     </message>
     <message>
         <source>%1 mm (line %2)</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 mm (řádek %2)</translation>
     </message>
     <message>
         <source>%1 mm</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 mm</translation>
     </message>
     <message>
         <source>At the program&apos;s end: largest gouge %1 · largest leftover %2 · %3 mm beside the part</source>
-        <translation type="unfinished"></translation>
+        <translation>Na konci programu: největší podříznutí %1 · největší zbytek %2 · %3 mm vedle dílce</translation>
     </message>
 </context>
 <context>
     <name>camwb::gui::SimPlayer</name>
     <message>
         <source>Simulation cancelled</source>
-        <translation type="unfinished"></translation>
+        <translation>Simulace zrušena</translation>
     </message>
     <message>
         <source>Simulated %1: cycle time %2 s, %3 errors, %4 warnings</source>
-        <translation type="unfinished"></translation>
+        <translation>Simulováno %1: čas cyklu %2 s, chyby: %3, varování: %4</translation>
     </message>
 </context>
 <context>

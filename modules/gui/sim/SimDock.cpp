@@ -190,7 +190,7 @@ QWidget* SimDock::makeResults()
     for (QDoubleSpinBox* spin : {m_low, m_high})
         connect(spin, &QDoubleSpinBox::editingFinished, this, &SimDock::applyQuantity);
     connect(m_deviationLimit, &QDoubleSpinBox::valueChanged, m_player, &SimPlayer::setDeviationLimit);
-    box->setMaximumWidth(360);
+    box->setMaximumWidth(440);
     return box;
 }
 

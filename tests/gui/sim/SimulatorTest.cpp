@@ -27,8 +27,10 @@
 #include <QDoubleSpinBox>
 #include <QElapsedTimer>
 #include <QFile>
+#include <QFileInfo>
 #include <QLabel>
 #include <QMenuBar>
+#include <QRegularExpression>
 #include <QSignalSpy>
 #include <QSpinBox>
 #include <QTemporaryDir>
@@ -205,6 +207,62 @@ private slots:
         window.view()->fitAll();
         if (withGl())
             saveShot(&window, QStringLiteral("simulator-example-job.png"));
+    }
+
+    // A pocket cut 0.5 mm below its floor: the simulation finds the gouge at the pocket's blocks,
+    // marks it in the view, and the deviation map goes red there.
+    void gougingPocketLightsUpAtItsBlock()
+    {
+        QTemporaryDir dir;
+        QFile source(QStringLiteral(CAMWB_EXAMPLE_JOB));
+        QVERIFY(source.open(QIODevice::ReadOnly));
+        QByteArray job = source.readAll();
+        const QByteArray folder = QFileInfo(QStringLiteral(CAMWB_EXAMPLE_JOB)).absolutePath().toUtf8() + "/";
+        job.replace("\"model\": \"", "\"model\": \"" + folder);
+        const QByteArray pocketHeights = R"("heights": {"clearance": 25.0, "safe": 18.0},
+      "params": {"pattern": "offset")";
+        QVERIFY(job.contains(pocketHeights));
+        job.replace(pocketHeights, R"("heights": {"clearance": 25.0, "safe": 18.0, "final": 9.5},
+      "params": {"pattern": "offset")");
+        QFile file(dir.filePath(QStringLiteral("gouging.camwb")));
+        QVERIFY(file.open(QIODevice::WriteOnly));
+        file.write(job);
+        file.close();
+
+        MainWindow window;
+        window.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&window));
+        openJob(window, file.fileName());
+        simulate(window);
+        SimPlayer* player = window.simPlayer();
+        const QStringList lines = window.ncEditor()->text().split(QLatin1Char('\n'));
+        const int pocketFrom =
+            static_cast<int>(lines.indexOf(QRegularExpression(QStringLiteral(".*;Pocket with island")))) + 1;
+        const int pocketTo =
+            static_cast<int>(lines.indexOf(QRegularExpression(QStringLiteral(".*;Through hole D10")))) + 1;
+        QVERIFY(pocketFrom > 0 && pocketTo > pocketFrom);
+        int gouges = 0;
+        for (const camwb::sim::Check& check : player->run()->checks) {
+            if (check.kind != camwb::sim::CheckKind::Gouge)
+                continue;
+            ++gouges;
+            const int line = player->run()->trace->lineOfRecord(static_cast<std::size_t>(check.record));
+            QVERIFY2(line > pocketFrom && line < pocketTo, qPrintable(QString::number(line)));
+            QVERIFY(check.valueMm > 0.3 && check.valueMm < 0.8);
+        }
+        QVERIFY(gouges > 0);
+        QVERIFY(window.view()->simulation().findingCount() >= gouges);
+        QVERIFY(window.reportView()->toPlainText().contains(
+            QRegularExpression(QStringLiteral("gouging\\.mpf:\\d+: error: gouge"))));
+        const auto deviation = player->deviation();
+        QVERIFY(deviation && deviation->maxGougeMm > 0.3);
+        playToEnd(window, 2000);
+        QVERIFY(window.view()->simulation().showsDeviation());
+        QVERIFY(player->deviation()->maxGougeMm > 0.3);  // the animated stock agrees with the full run
+        window.simDock()->findChild<QCheckBox*>(QStringLiteral("simShowTool"))->setChecked(false);
+        window.view()->setViewPreset(View3D::Preset::Top);
+        if (withGl())
+            saveShot(&window, QStringLiteral("simulator-gouging-pocket.png"));
     }
 
     // Playing at the machine's speed x10 for a few seconds: the frames the view drew and the stock

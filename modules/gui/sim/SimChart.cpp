@@ -180,8 +180,6 @@ void SimChart::setCursorTime(double seconds)
 
 double SimChart::cursorTime() const { return d->cursorTime; }
 
-QImage SimChart::grabImage() { return d->gl != nullptr ? d->gl->grabFramebuffer() : QImage(); }
-
 // A click picks a time; the rest of the mouse stays with the chart (no camera to turn here).
 bool SimChart::eventFilter(QObject* watched, QEvent* event)
 {

@@ -3,7 +3,6 @@
 // playback to go to that time. Without OpenGL it shows a message instead, like the 3D view.
 #pragma once
 
-#include <QImage>
 #include <QString>
 #include <QWidget>
 
@@ -27,7 +26,6 @@ public:
     void setValueLimits(double low, double high);
     void setCursorTime(double seconds);
     double cursorTime() const;
-    QImage grabImage();
 
 signals:
     void timeClicked(double seconds);

@@ -380,7 +380,7 @@ void HeightField::cutTilted(const Move& move, std::size_t moveIndex, const ToolS
     for (int p = 0; p <= poses; ++p) {
         const double t = double(p) / poses;
         const Vec3 tip = move.from + (move.to - move.from) * t;
-        const Vec3 axis = (move.fromAxis * (1 - t) + move.toAxis * t).normalized();
+        const Vec3 axis = move.axisAt(t);
         const Vec3 end = tip + axis * tool.totalLengthMm();
         const int i0 = std::max(0, int(std::floor((std::min(tip.x, end.x) - reach - m_box.min.x) / m_dx)));
         const int i1 = std::min(m_nx - 1, int(std::floor((std::max(tip.x, end.x) + reach - m_box.min.x) / m_dx)));

@@ -29,9 +29,7 @@ kinematics::ToolPose toolAt(const Move& move, double u)
 {
     kinematics::ToolPose pose;
     pose.tip = move.from + (move.to - move.from) * u;
-    const Vec3 axis = move.fromAxis * (1 - u) + move.toAxis * u;
-    // Opposite ends have no even turn between them; keep the start's axis rather than invent one.
-    pose.axis = axis.length() > 1e-12 ? axis.normalized() : move.fromAxis;
+    pose.axis = move.axisAt(u);
     return pose;
 }
 

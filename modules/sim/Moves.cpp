@@ -20,6 +20,7 @@ namespace {
 constexpr double kMaxArcStepDeg = 10;
 constexpr int kMaxPiecesPerArc = 200000;
 constexpr int kMaxJointPieces = 4096;
+constexpr double kPi = 3.14159265358979323846;
 
 double& rotaryOf(toolpath::RotaryAxes& r, const std::string& axis)
 {
@@ -84,6 +85,7 @@ public:
         else
             m_local.forget();  // a partly known point cannot be carried into a turned frame
         m_plane = plane;
+        turnTo(plane.zAxis);
     }
 
 private:
@@ -153,9 +155,9 @@ private:
 
     void straight(const Vec3& to, AxisMask axes, MoveKind kind, double feed)
     {
+        turnTo(m_plane.zAxis);
         const std::optional<Vec3> from = m_local.point();
         m_local.moveTo(to, axes);
-        leaveFiveAxis();
         const std::optional<Vec3> end = m_local.point();
         if (!end)
             return;
@@ -168,8 +170,28 @@ private:
         push(*from, *end, kind, feed, 1.0, false);
     }
 
-    // A three-axis move after five-axis ones: the tool stands along the plane's axis again.
-    void leaveFiveAxis() { m_axis = m_plane.zAxis; }
+    // The tool's axis becomes `axis` (a new working plane, or three-axis moves after five-axis
+    // ones). The machine turns its rotary axes for that before the next move; where the tool is
+    // known that turn is a move of its own, about the standing tip, so that its time and its
+    // axis speeds count (a jump would be an infinite speed). The rotary positions are unknown
+    // from there until a move gives them again.
+    void turnTo(const Vec3& axis)
+    {
+        const Vec3 to = axis.normalized();
+        if (m_axis.angleTo(to) < 1e-9)
+            return;
+        const std::optional<Vec3> p = m_local.point();
+        if (p && !m_inError) {
+            Move m = base(MoveKind::Rapid);
+            m.from = m.to = m_plane.toWorkpiece(*p);
+            m.toAxis = to;
+            m.fiveAxis = true;
+            m.toMachine = {};
+            m_out.moves.push_back(m);
+        }
+        m_axis = to;
+        m_machine = {};
+    }
 
     void splitJoint(const toolpath::ToolAxisMove& m, Move piece, const Vec3& fromTip);
 
@@ -192,8 +214,8 @@ private:
 
 void MoveBuilder::arc(const toolpath::Arc& a)
 {
+    turnTo(m_plane.zAxis);
     const std::optional<Vec3> from = m_local.point();
-    leaveFiveAxis();
     if (!from) {
         m_local.moveTo(a.to, AxisMask{});
         ++m_out.movesFromUnknownPosition;
@@ -328,6 +350,15 @@ void MoveBuilder::splitJoint(const toolpath::ToolAxisMove& m, Move piece, const 
 }
 
 }  // namespace
+
+Vec3 Move::axisAt(double u) const
+{
+    const double angle = fromAxis.angleTo(toAxis);
+    if (angle < 1e-12 || angle > kPi - 1e-9)
+        return fromAxis;
+    const double s = std::sin(angle);
+    return fromAxis * (std::sin((1 - u) * angle) / s) + toAxis * (std::sin(u * angle) / s);
+}
 
 const toolpath::Tool* MoveList::tool(int number) const
 {

@@ -34,7 +34,9 @@ enum class MoveKind : std::uint8_t {
 // straight from `from` to `to` and the tool axis turns evenly from `fromAxis` to `toAxis` (a
 // control's tool-tip control), unless `jointInterpolated`: then the machine moves its axes
 // evenly from `fromMachine` to `toMachine` and MoveList has split the move so that the tip's
-// curve stays within the chord tolerance of its pieces.
+// curve stays within the chord tolerance of its pieces. Where the tool's axis changes between two
+// moves (a new working plane, three-axis moves after five-axis ones), MoveList puts a turn about
+// the standing tip between them: a Rapid with from == to, so its time and axis speeds count.
 struct Move {
     Vec3 from;
     Vec3 to;
@@ -55,6 +57,9 @@ struct Move {
     toolpath::RotaryAxes toMachine{};
 
     double lengthMm() const { return base::distance(from, to); }
+    // The tool axis at `u` (0..1) of the move: turned evenly (the angle grows with u) from
+    // fromAxis to toAxis. Opposite ends have no even turn between them: fromAxis, not a guess.
+    Vec3 axisAt(double u) const;
     bool moves() const { return kind == MoveKind::Rapid || kind == MoveKind::Feed; }
 };
 

@@ -104,7 +104,7 @@ CutResult TriDexel::cut(const Move& move, std::size_t moveIndex, const ToolShape
     for (int p = 0; p <= poses; ++p) {
         const double t = double(p) / poses;
         const Vec3 tip = move.from + (move.to - move.from) * t;
-        const Vec3 axis = (move.fromAxis * (1 - t) + move.toAxis * t).normalized();
+        const Vec3 axis = move.axisAt(t);
         base::Box3 reach;  // the cutter's box: its axis segment grown by the radius
         reach.add(tip);
         reach.add(tip + axis * tool.fluteLengthMm());

@@ -193,3 +193,48 @@ TEST(SimMoves, JointInterpolatedMovesFollowTheTipsCurve)
     EXPECT_NEAR(list.moves.back().to.x, 50, 1e-9);
     EXPECT_NEAR(list.moves.back().to.y, 0, 1e-9);
 }
+
+TEST(SimMoves, ANewToolAxisIsATurnAboutTheStandingTip)
+{
+    // After a move, a tilted plane: the machine turns the tool before the next move, and that
+    // turn is a move of its own (no jump of the axis between two moves), its rotary positions
+    // unknown (the move after it gives none either).
+    Toolpath p;
+    p.add(Rapid{{0, 0, 50}});
+    ToolAxisMove tilted;
+    tilted.tip = {0, 0, 50};
+    tilted.axis = {0, 0, 1};
+    tilted.machine.known = RotaryAxes::kB | RotaryAxes::kC;
+    WorkingPlane plane;
+    plane.xAxis = {0, 0, -1};
+    plane.zAxis = {1, 0, 0};
+    p.add(tilted);
+    p.add(plane);
+    p.add(Rapid{{0, 0, 60}});
+    const sim::MoveList list = sim::buildMoves(p);
+    ASSERT_EQ(list.moves.size(), 2u);
+    const sim::Move& turn = list.moves[0];
+    EXPECT_EQ(turn.kind, MoveKind::Rapid);
+    EXPECT_EQ(turn.from, turn.to);
+    EXPECT_NEAR(turn.fromAxis.z, 1, 1e-12);
+    EXPECT_NEAR(turn.toAxis.x, 1, 1e-12);
+    EXPECT_EQ(turn.toMachine.known, 0);
+    EXPECT_EQ(turn.record, 2u);
+    const sim::Move& after = list.moves[1];
+    EXPECT_NEAR(after.fromAxis.x, 1, 1e-12);  // continues from the turned axis
+    EXPECT_EQ(after.fromMachine.known, 0);
+    EXPECT_NEAR(after.to.x, 60, 1e-12);  // along the plane's Z, which is the workpiece's X
+}
+
+TEST(SimMoves, TheToolAxisTurnsEvenly)
+{
+    sim::Move m;
+    m.fromAxis = {0, 0, 1};
+    m.toAxis = {std::sin(1.2), 0, std::cos(1.2)};  // 1.2 rad apart
+    for (double u : {0.0, 0.1, 0.5, 0.9, 1.0}) {
+        EXPECT_NEAR(m.axisAt(u).angleTo(m.fromAxis), 1.2 * u, 1e-12);
+        EXPECT_NEAR(m.axisAt(u).length(), 1, 1e-12);
+    }
+    m.toAxis = {0, 0, -1};  // opposite: no even turn, the start's axis
+    EXPECT_EQ(m.axisAt(0.5), m.fromAxis);
+}

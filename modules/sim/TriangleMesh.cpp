@@ -26,36 +26,29 @@ double TriangleMesh::volumeMm3() const
     return sixTimes / 6;
 }
 
-namespace {
-
-void putFloat(std::string& out, float value)
-{
-    char bytes[4];
-    std::memcpy(bytes, &value, 4);  // STL is little-endian, as every machine this builds on
-    out.append(bytes, 4);
-}
-
-}  // namespace
-
+// Binary STL: an 80-byte header, the count, then 50 bytes a triangle (normal, three corners as
+// little-endian floats, two attribute bytes). The buffer is sized once and filled in place: a
+// cut stock at 0.1 mm has over a million triangles.
 base::Status writeStl(const TriangleMesh& mesh, const std::string& path, const std::string& header)
 {
-    std::string out(80, ' ');
+    const std::size_t count = mesh.triangleCount();
+    std::string out(84 + 50 * count, '\0');
+    std::fill_n(out.begin(), 80, ' ');
     std::copy_n(header.begin(), std::min<std::size_t>(header.size(), 80), out.begin());
-    const auto count = static_cast<std::uint32_t>(mesh.triangleCount());
-    char countBytes[4];
-    std::memcpy(countBytes, &count, 4);
-    out.append(countBytes, 4);
-    out.reserve(out.size() + std::size_t(count) * 50);
-    for (std::size_t t = 0; t < mesh.triangleCount(); ++t) {
-        const base::Vec3 a = mesh.vertex(mesh.triangles[3 * t]), b = mesh.vertex(mesh.triangles[3 * t + 1]),
-                         c = mesh.vertex(mesh.triangles[3 * t + 2]);
+    const auto count32 = static_cast<std::uint32_t>(count);
+    std::memcpy(&out[80], &count32, 4);  // STL is little-endian, as every machine this builds on
+    char* at = &out[84];
+    for (std::size_t t = 0; t < count; ++t, at += 50) {
+        const float* corner[3];
+        for (int k = 0; k < 3; ++k)
+            corner[k] = &mesh.positions[3 * std::size_t(mesh.triangles[3 * t + k])];
+        const base::Vec3 a{corner[0][0], corner[0][1], corner[0][2]}, b{corner[1][0], corner[1][1], corner[1][2]},
+            c{corner[2][0], corner[2][1], corner[2][2]};
         const base::Vec3 n = (b - a).cross(c - a).normalized();
-        for (const base::Vec3& v : {n, a, b, c}) {
-            putFloat(out, float(v.x));
-            putFloat(out, float(v.y));
-            putFloat(out, float(v.z));
-        }
-        out.append(2, '\0');
+        const float normal[3] = {float(n.x), float(n.y), float(n.z)};
+        std::memcpy(at, normal, 12);
+        for (int k = 0; k < 3; ++k)
+            std::memcpy(at + 12 + 12 * k, corner[k], 12);
     }
     return base::writeFileAtomically(path, out);
 }

@@ -17,14 +17,6 @@ namespace {
 
 constexpr double kPi = 3.14159265358979323846;
 
-base::Box3 box(Vec3 lo, Vec3 hi)
-{
-    base::Box3 b;
-    b.add(lo);
-    b.add(hi);
-    return b;
-}
-
 // The column nearest to (x, y).
 std::pair<int, int> at(const HeightField& f, double x, double y)
 {

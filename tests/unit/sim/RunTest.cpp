@@ -7,6 +7,8 @@
 #include "sim/Simulation.h"
 #include "sim/StockRun.h"
 
+#include "StockTestUtil.h"
+
 #include "toolpath/Toolpath.h"
 
 #include <gtest/gtest.h>
@@ -16,22 +18,9 @@
 using namespace camwb;
 using namespace camwb::toolpath;
 using sim::CheckKind;
+using sim::test::boxMesh;
 
 namespace {
-
-// A closed box, triangles facing out.
-sim::TriangleMesh boxMesh(const base::Vec3& lo, const base::Vec3& hi)
-{
-    sim::TriangleMesh mesh;
-    for (int c = 0; c < 8; ++c) {
-        mesh.positions.push_back(float((c & 1) ? hi.x : lo.x));
-        mesh.positions.push_back(float((c & 2) ? hi.y : lo.y));
-        mesh.positions.push_back(float((c & 4) ? hi.z : lo.z));
-    }
-    mesh.triangles = {0, 2, 1, 1, 2, 3, 4, 5, 6, 5, 7, 6, 0, 1, 4, 1, 5, 4,
-                      2, 6, 3, 3, 6, 7, 0, 4, 2, 2, 4, 6, 1, 3, 5, 3, 7, 5};
-    return mesh;
-}
 
 Tool flat10(double stickOut = 40, bool centreCutting = true)
 {

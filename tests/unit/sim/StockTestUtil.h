@@ -37,6 +37,15 @@ inline Move makeMove(Vec3 from, Vec3 to, MoveKind kind = MoveKind::Feed)
     return m;
 }
 
+// The box from `lo` to `hi`.
+inline base::Box3 box(Vec3 lo, Vec3 hi)
+{
+    base::Box3 b;
+    b.add(lo);
+    b.add(hi);
+    return b;
+}
+
 // A closed box, outward-facing.
 inline TriangleMesh boxMesh(Vec3 lo, Vec3 hi)
 {

@@ -19,14 +19,6 @@ namespace {
 
 constexpr double kPi = 3.14159265358979323846;
 
-base::Box3 box(Vec3 lo, Vec3 hi)
-{
-    base::Box3 b;
-    b.add(lo);
-    b.add(hi);
-    return b;
-}
-
 double zTop(const TriDexel& s, int i, int j) { return s.spans(2, i, j).empty() ? -1 : s.spans(2, i, j).back().hi; }
 
 }  // namespace

@@ -50,6 +50,7 @@ struct SimOptions {
     // A trace the control recorded (TNCscope CSV), and how far its Z is above the tool tip.
     std::string measured;
     double measuredZOffsetMm = 0;
+    bool analysis = false;  // seed 003's analysis of the simulated motion
 };
 
 std::optional<double> positive(const std::string& text)
@@ -70,6 +71,10 @@ std::string parseSimOptions(const std::vector<std::string>& args, SimOptions& op
             "--model",         "--stock",          "--tolerance",    "--sample-ms", "--tool-table",
             "--stock-profile", "--design-profile", "--insert-width", "--measured",  "--measured-z-offset"};
         const bool takesValue = kTakesValue.count(arg) > 0;
+        if (arg == "--analysis") {
+            options.analysis = true;
+            continue;
+        }
         if (!takesValue) {
             if (!arg.empty() && arg[0] == '-')
                 return "unknown option '" + arg + "'";
@@ -360,6 +365,27 @@ int simCommand(const std::vector<std::string>& args)
                       << mm(result.deviation.maxOutsideMm) << " mm thick\n";
     }
 
+    // Seed 003's analysis of the planned motion needs its samples at once: bounded, so that a
+    // program of many hours asks for a coarser step instead of all the memory.
+    std::optional<nlohmann::json> analysis;
+    if (options.analysis) {
+        constexpr double kMaxSamples = 5e6;
+        const double samples = plan.totalSeconds / (options.sampleMs / 1000);
+        if (samples > kMaxSamples)
+            return fail("--analysis: " + base::formatFixed(plan.totalSeconds, 0) + " s at " +
+                        base::formatFixed(options.sampleMs, 1) +
+                        " ms is over 5 million samples; give a larger --sample-ms");
+        sim::SampleOptions sampling;
+        sampling.stepSeconds = options.sampleMs / 1000;
+        sim::Trace trace;
+        for (const sim::MotionSample& s : sim::sampleMotion(result.moves, plan, planMachine, sampling))
+            trace.push_back(s.at);
+        analysis = analysisReport(trace, planMachine.kinematics);
+        std::cout << "reversals of the planned motion:";
+        for (const auto& [axis, times] : (*analysis)["reversals"].items())
+            std::cout << " " << axis << " " << times.size();
+        std::cout << "\n";
+    }
     std::optional<nlohmann::json> measured;
     if (!options.measured.empty()) {
         auto read = measuredReport(options.measured, planMachine, result.moves, options.measuredZOffsetMm);
@@ -478,6 +504,8 @@ int simCommand(const std::vector<std::string>& args)
         report["checks"] = checks;
         if (measured)
             report["measured"] = *measured;
+        if (analysis)
+            report["analysis"] = *analysis;
         const std::string text = report.dump(2) + "\n";
         if (options.report == "-")
             std::cout << text;

@@ -1,7 +1,7 @@
 // camwb-cli sim --measured: a trace the control recorded (TNCscope CSV, seed 003), carried onto
 // the workpiece through the machine's chain and set beside the program: how far the actual tip
 // followed the nominal one, how far it strayed from the programmed path, and the seed-003
-// analysis of the actual motion (axis reversals, the tip's feed).
+// analysis of the actual motion (axis reversals, the tip's feed), as of the simulated motion.
 #include "SimMeasured.h"
 
 #include "sim/MeasuredTrace.h"
@@ -24,6 +24,28 @@ nlohmann::json extreme(const std::vector<double>& values, const sim::Trace& trac
 
 }  // namespace
 
+nlohmann::json analysisReport(const sim::Trace& trace, const kinematics::KinematicChain& chain)
+{
+    nlohmann::json report;
+    const bool rotaries = chain.fiveAxis();
+    const sim::PathAnalysis analysis = sim::analysePath(trace, rotaries);
+    nlohmann::json reversals;
+    const char* linear[] = {"X", "Y", "Z"};
+    for (int axis = 0; axis < 5; ++axis) {
+        if (axis >= 3 && !rotaries)
+            break;
+        const std::string name = axis < 3 ? linear[axis] : chain.joints[axis - 3].axis;
+        nlohmann::json times = nlohmann::json::array();
+        for (std::size_t sample : analysis.reversals[axis])
+            times.push_back(trace[sample].time);
+        reversals[name] = times;
+    }
+    report["reversals"] = reversals;
+    const std::vector<double>& feed = analysis.tipFeed.value;
+    report["maxTipFeedMmPerMin"] = feed.empty() ? 0.0 : *std::max_element(feed.begin(), feed.end()) * 60;
+    return report;
+}
+
 base::Result<nlohmann::json> measuredReport(const std::string& path, const kinematics::Machine& machine,
                                             const sim::MoveList& program, double spindleFaceToTipMm)
 {
@@ -39,22 +61,7 @@ base::Result<nlohmann::json> measuredReport(const std::string& path, const kinem
     report["seconds"] = actual.empty() ? 0.0 : actual.back().time - actual.front().time;
     report["maxFollowingDeviation"] = extreme(sim::deviationDistance(nominal, actual), actual);
     report["maxDistanceToProgram"] = extreme(sim::distanceToPath(actual, program), actual);
-    const bool rotaries = machine.kinematics.fiveAxis();
-    const sim::PathAnalysis analysis = sim::analysePath(actual, rotaries);
-    nlohmann::json reversals;
-    const char* linear[] = {"X", "Y", "Z"};
-    for (int axis = 0; axis < 5; ++axis) {
-        if (axis >= 3 && !rotaries)
-            break;
-        const std::string name = axis < 3 ? linear[axis] : machine.kinematics.joints[axis - 3].axis;
-        nlohmann::json times = nlohmann::json::array();
-        for (std::size_t sample : analysis.reversals[axis])
-            times.push_back(actual[sample].time);
-        reversals[name] = times;
-    }
-    report["reversals"] = reversals;
-    const std::vector<double>& feed = analysis.tipFeed.value;
-    report["maxTipFeedMmPerMin"] = feed.empty() ? 0.0 : *std::max_element(feed.begin(), feed.end()) * 60;
+    report.update(analysisReport(actual, machine.kinematics));
     return report;
 }
 

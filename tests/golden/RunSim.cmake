@@ -1,7 +1,7 @@
 # Runs `camwb-cli sim` with ARGS and a JSON report, and checks its exit code (EXPECT_EXIT), a
 # text stderr must hold (EXPECT_STDERR, optional) and report entries: EXPECT_JSON is a list of
 # "path=value" where path is dot-separated (checks.0.kind) and value is compared as text, or
-# "path>number" / "path<number" for numbers. CHECK_FILES: the test also asked for ${OUT_DIR}/cut.stl
+# "path>number" / "path<number" for numbers, "path!" for an entry the report must not have. CHECK_FILES: the test also asked for ${OUT_DIR}/cut.stl
 # and ${OUT_DIR}/samples.csv: the STL must hold triangles (84 bytes + 50 a triangle) and the CSV
 # its header and more than MIN_SAMPLES rows.
 set(report ${OUT_DIR}/report.json)
@@ -19,6 +19,14 @@ if(DEFINED EXPECT_STDERR)
 endif()
 file(READ ${report} json)
 foreach(expect IN LISTS EXPECT_JSON)
+  if(expect MATCHES "^([^=<>!]+)!$")  # "path!": the report has no such entry
+    string(REPLACE "." ";" keys ${CMAKE_MATCH_1})
+    string(JSON got ERROR_VARIABLE error GET "${json}" ${keys})
+    if(NOT error)
+      message(FATAL_ERROR "report has ${CMAKE_MATCH_1} = '${got}', expected none")
+    endif()
+    continue()
+  endif()
   if(NOT expect MATCHES "^([^=<>]+)([=<>])(.*)$")
     message(FATAL_ERROR "bad expectation '${expect}'")
   endif()

@@ -123,6 +123,9 @@ std::string parseSimOptions(const std::vector<std::string>& args, SimOptions& op
     }
     if (options.input.empty())
         return "sim needs a job (.camwb) or an NC program";
+    const bool job = std::filesystem::path(options.input).extension() == ".camwb";
+    if (!options.stl.empty() && !job && options.stock.empty() && options.model.empty())
+        return "--stl needs a stock: a job's, or --stock or --model for an NC program";
     const bool turning = !options.stockProfile.empty();
     if (!turning && (!options.designProfile.empty() || options.insertWidthMm > 0))
         return "--design-profile and --insert-width need --stock-profile (a turning simulation)";

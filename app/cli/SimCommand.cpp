@@ -207,7 +207,7 @@ std::optional<Input> loadNcInput(const SimOptions& options, const kinematics::Ma
     input.trace = document::traceNc(request);
     input.program = input.trace->program;
     if (request.tools)
-        document::sizeTools(input.program, *request.tools);
+        document::sizeTools(input.program, document::toolsOf(*request.tools));
     input.recordsInError = input.trace->recordsInError;
     input.diagnostics = input.trace->result.diagnostics;
     return input;

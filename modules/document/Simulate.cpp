@@ -36,18 +36,28 @@ base::Box3 jobStockBox(const Job& job, const occ::Model& model)
     return designMesh(model).bounds();
 }
 
-void sizeTools(toolpath::Toolpath& program, const nc::ToolTable& table)
+void sizeTools(toolpath::Toolpath& program, const std::map<int, toolpath::Tool>& tools)
 {
     for (std::size_t i = 0; i < program.size(); ++i) {
         auto* change = std::get_if<toolpath::ToolChange>(&program.record(i));
         if (!change || change->tool.diameterMm > 0)
             continue;
-        if (const nc::ToolTableEntry* entry = table.find(change->tool.number)) {
-            change->tool.diameterMm = entry->diameterMm;
-            if (change->tool.lengthMm <= 0)
-                change->tool.lengthMm = entry->lengthMm;
-        }
+        if (const auto it = tools.find(change->tool.number); it != tools.end())
+            change->tool = it->second;
     }
+}
+
+std::map<int, toolpath::Tool> toolsOf(const nc::ToolTable& table)
+{
+    std::map<int, toolpath::Tool> tools;
+    for (const auto& [number, entry] : table.tools()) {
+        toolpath::Tool& tool = tools[number];
+        tool.number = number;
+        tool.name = entry.comment;
+        tool.diameterMm = entry.diameterMm;
+        tool.lengthMm = entry.lengthMm;
+    }
+    return tools;
 }
 
 RecordPlace placeOfRecord(const NcTrace& trace, std::int64_t record)

@@ -8,7 +8,9 @@
 #include "document/Job.h"
 #include "kinematics/Machine.h"
 #include "sim/TriangleMesh.h"
+#include "toolpath/ClRecords.h"
 
+#include <map>
 #include <memory>
 #include <optional>
 #include <string>
@@ -38,8 +40,12 @@ base::Result<std::optional<kinematics::Machine>> jobMachine(const Job& job);
 base::Box3 jobStockBox(const Job& job, const occ::Model& model);
 
 // NC programs name their tools but rarely size them: the tool changes of `program` without a
-// diameter take the table's diameter and length (flat end mills: the table says no more).
-void sizeTools(toolpath::Toolpath& program, const nc::ToolTable& table);
+// diameter take the tool of that number from `tools` (the job's tools for its posted program,
+// or a tool table's).
+void sizeTools(toolpath::Toolpath& program, const std::map<int, toolpath::Tool>& tools);
+// A tool table's tools: flat end mills of its diameters, sticking out its lengths (the table
+// says no more).
+std::map<int, toolpath::Tool> toolsOf(const nc::ToolTable& table);
 
 // Where a record of a program came from, for a check's file:line: the NC file and line of a
 // traced program, or the job file and the operation (by name) of a job's CL.

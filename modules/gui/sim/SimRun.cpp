@@ -22,21 +22,6 @@ void progress(const SimRunRequest& request, int percent)
         request.progress(percent);
 }
 
-// The program with each tool change given the job's tool of that number where the NC gives no
-// diameter (a posted program calls T1 and means the job's tool 1).
-toolpath::Toolpath withJobTools(const toolpath::Toolpath& program, const std::map<int, toolpath::Tool>& tools)
-{
-    toolpath::Toolpath sized = program;
-    for (std::size_t i = 0; i < sized.size(); ++i) {
-        auto* change = std::get_if<toolpath::ToolChange>(&sized.record(i));
-        if (change == nullptr || change->tool.diameterMm > 0)
-            continue;
-        if (auto it = tools.find(change->tool.number); it != tools.end())
-            change->tool = it->second;
-    }
-    return sized;
-}
-
 // The motion plan's times, the cycle time beside the simple estimate, and the analysis of the
 // sampled motion. False when cancelled.
 bool planInTime(const SimRunRequest& request, const kinematics::Machine& machine, SimRun& run)
@@ -85,8 +70,8 @@ std::shared_ptr<SimRun> buildSimRun(const SimRunRequest& request)
     if (!request.trace)
         return run;
     progress(request, 2);
-    const toolpath::Toolpath program =
-        request.tools.empty() ? request.trace->program : withJobTools(request.trace->program, request.tools);
+    toolpath::Toolpath program = request.trace->program;
+    document::sizeTools(program, request.tools);  // a posted program's T1 means the job's tool 1
 
     // The whole program through the stock first: the checks and the end's deviation, as
     // camwb-cli sim reports them. The dock then animates a stock of the same kind.

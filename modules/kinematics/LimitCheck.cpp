@@ -143,11 +143,10 @@ Vec3 LimitCheck::linearAxes(const ToolAxisMove& r) const
         return r.tip;
     std::array<double, 2> deg{};
     for (int j = 0; j < 2; ++j) {
-        const std::string& axis = chain.joints[j].axis;
-        const unsigned char bit = axis == "A" ? RotaryAxes::kA : axis == "B" ? RotaryAxes::kB : RotaryAxes::kC;
-        if (!r.machine.has(bit))
+        const std::optional<double> angle = r.machine.of(chain.joints[j].axis);
+        if (!angle)
             return r.tip;
-        deg[j] = bit == RotaryAxes::kA ? r.machine.aDeg : bit == RotaryAxes::kB ? r.machine.bDeg : r.machine.cDeg;
+        deg[j] = *angle;
     }
     return linearAxesFor(chain, r.tip, deg);
 }

@@ -192,27 +192,9 @@ toolpath::RotaryAxes FiveAxisState::machineAxes() const
     toolpath::RotaryAxes r;
     if (!m_chain)
         return r;
-    for (std::size_t i = 0; i < m_chain->joints.size() && i < 2; ++i) {
-        if (!m_angles.known[i] || m_chain->joints[i].axis.size() != 1)
-            continue;
-        const double deg = m_angles.deg[i];
-        switch (m_chain->joints[i].axis[0]) {
-        case 'A':
-            r.aDeg = deg;
-            r.known |= toolpath::RotaryAxes::kA;
-            break;
-        case 'B':
-            r.bDeg = deg;
-            r.known |= toolpath::RotaryAxes::kB;
-            break;
-        case 'C':
-            r.cDeg = deg;
-            r.known |= toolpath::RotaryAxes::kC;
-            break;
-        default:
-            break;
-        }
-    }
+    for (std::size_t i = 0; i < m_chain->joints.size() && i < 2; ++i)
+        if (m_angles.known[i])
+            r.set(m_chain->joints[i].axis, m_angles.deg[i]);
     return r;
 }
 

@@ -7,19 +7,6 @@ namespace camwb::sim {
 
 namespace {
 
-bool rotaryOf(const toolpath::RotaryAxes& r, const std::string& axis, double& deg)
-{
-    if (axis == "A" && r.has(toolpath::RotaryAxes::kA))
-        deg = r.aDeg;
-    else if (axis == "B" && r.has(toolpath::RotaryAxes::kB))
-        deg = r.bDeg;
-    else if (axis == "C" && r.has(toolpath::RotaryAxes::kC))
-        deg = r.cDeg;
-    else
-        return false;
-    return true;
-}
-
 // `deg` moved by whole turns to lie nearest `near`: an endless C goes the short way from where it is.
 double nearestTurn(double deg, double near) { return deg + 360.0 * std::round((near - deg) / 360.0); }
 
@@ -39,9 +26,12 @@ bool knownRotaries(const kinematics::KinematicChain& chain, const Move& move, bo
     if (!chain.fiveAxis())
         return false;
     const toolpath::RotaryAxes& r = end ? move.toMachine : move.fromMachine;
-    for (int j = 0; j < 2; ++j)
-        if (!rotaryOf(r, chain.joints[j].axis, rotaryDeg[j]))
+    for (int j = 0; j < 2; ++j) {
+        const std::optional<double> deg = r.of(chain.joints[j].axis);
+        if (!deg)
             return false;
+        rotaryDeg[j] = *deg;
+    }
     return true;
 }
 

@@ -22,18 +22,6 @@ constexpr int kMaxPiecesPerArc = 200000;
 constexpr int kMaxJointPieces = 4096;
 constexpr double kPi = 3.14159265358979323846;
 
-double& rotaryOf(toolpath::RotaryAxes& r, const std::string& axis)
-{
-    return axis == "A" ? r.aDeg : axis == "B" ? r.bDeg : r.cDeg;
-}
-
-bool knowsRotary(const toolpath::RotaryAxes& r, const std::string& axis)
-{
-    return r.has(axis == "A"   ? toolpath::RotaryAxes::kA
-                 : axis == "B" ? toolpath::RotaryAxes::kB
-                               : toolpath::RotaryAxes::kC);
-}
-
 // Follows the records as a control would, turning motion into Moves.
 class MoveBuilder : public toolpath::MachineSink {
 public:
@@ -295,7 +283,7 @@ void MoveBuilder::splitJoint(const toolpath::ToolAxisMove& m, Move piece, const 
     piece.jointInterpolated = true;
     const bool known = chain && chain->fiveAxis() &&
                        std::all_of(chain->joints.begin(), chain->joints.end(), [&](const kinematics::RotaryJoint& j) {
-                           return knowsRotary(piece.fromMachine, j.axis) && knowsRotary(piece.toMachine, j.axis);
+                           return piece.fromMachine.of(j.axis) && piece.toMachine.of(j.axis);
                        });
     if (!known) {
         m_out.moves.push_back(piece);  // straight: nothing here knows how the tip curves
@@ -303,8 +291,8 @@ void MoveBuilder::splitJoint(const toolpath::ToolAxisMove& m, Move piece, const 
     }
     kinematics::MachinePose a, b;
     for (int i = 0; i < 2; ++i) {
-        a.rotaryDeg[i] = rotaryOf(piece.fromMachine, chain->joints[i].axis);
-        b.rotaryDeg[i] = rotaryOf(piece.toMachine, chain->joints[i].axis);
+        a.rotaryDeg[i] = *piece.fromMachine.of(chain->joints[i].axis);
+        b.rotaryDeg[i] = *piece.toMachine.of(chain->joints[i].axis);
     }
     a.linear = kinematics::linearAxesFor(*chain, fromTip, a.rotaryDeg, m_toolLengthMm);
     b.linear = kinematics::linearAxesFor(*chain, m.tip, b.rotaryDeg, m_toolLengthMm);
@@ -342,8 +330,8 @@ void MoveBuilder::splitJoint(const toolpath::ToolAxisMove& m, Move piece, const 
             const std::string& axis = chain->joints[j].axis;
             const double from = a.rotaryDeg[j] + (b.rotaryDeg[j] - a.rotaryDeg[j]) * double(i) / pieces;
             const double to = a.rotaryDeg[j] + (b.rotaryDeg[j] - a.rotaryDeg[j]) * double(i + 1) / pieces;
-            rotaryOf(p.fromMachine, axis) = from;
-            rotaryOf(p.toMachine, axis) = to;
+            p.fromMachine.set(axis, from);
+            p.toMachine.set(axis, to);
         }
         m_out.moves.push_back(p);
     }

@@ -4,6 +4,7 @@
 
 #include "base/Vec.h"
 
+#include <optional>
 #include <string>
 #include <utility>
 #include <variant>
@@ -150,6 +151,32 @@ struct RotaryAxes {
     unsigned char known = 0;  // kA | kB | kC
 
     bool has(unsigned char axis) const { return (known & axis) != 0; }
+
+    // The bit of machine axis "A", "B" or "C" (a kinematic chain's joint names); 0 for any other.
+    static unsigned char bitOf(const std::string& axis)
+    {
+        return axis == "A" ? kA : axis == "B" ? kB : axis == "C" ? kC : 0;
+    }
+    // The position of machine axis `axis`, where it is known.
+    std::optional<double> of(const std::string& axis) const
+    {
+        const unsigned char bit = bitOf(axis);
+        if (bit == 0 || !has(bit))
+            return std::nullopt;
+        return bit == kA ? aDeg : bit == kB ? bDeg : cDeg;
+    }
+    // Machine axis `axis` known at `deg`; a name other than A, B or C changes nothing.
+    void set(const std::string& axis, double deg)
+    {
+        const unsigned char bit = bitOf(axis);
+        if (bit == kA)
+            aDeg = deg;
+        else if (bit == kB)
+            bDeg = deg;
+        else if (bit == kC)
+            cDeg = deg;
+        known |= bit;
+    }
 };
 
 // Five-axis move: tool tip and unit tool vector (from tip towards spindle), both in the workpiece

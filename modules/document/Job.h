@@ -20,6 +20,14 @@ namespace camwb::document {
 struct Stock {
     base::Vec3 min;
     base::Vec3 max;
+
+    // The box, when the job gives one (min below max on every axis); none for a job without stock.
+    std::optional<base::Box3> box() const
+    {
+        if (!(max.x > min.x && max.y > min.y && max.z > min.z))
+            return std::nullopt;
+        return base::Box3{min, max, false};
+    }
 };
 
 // What an operation cuts, as references into the loaded model (indices are stable for a file:

@@ -79,9 +79,7 @@ post::JobFacts jobFacts(const Job& job)
 {
     post::JobFacts facts;
     facts.name = job.name;
-    const base::Vec3 &lo = job.stock.min, &hi = job.stock.max;
-    if (hi.x > lo.x && hi.y > lo.y && hi.z > lo.z)
-        facts.stock = base::Box3{lo, hi, false};
+    facts.stock = job.stock.box();
     return facts;
 }
 

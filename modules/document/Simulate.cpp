@@ -30,9 +30,8 @@ base::Result<std::optional<kinematics::Machine>> jobMachine(const Job& job)
 
 base::Box3 jobStockBox(const Job& job, const occ::Model& model)
 {
-    const base::Vec3 &lo = job.stock.min, &hi = job.stock.max;
-    if (hi.x > lo.x && hi.y > lo.y && hi.z > lo.z)
-        return base::Box3{lo, hi, false};
+    if (const std::optional<base::Box3> box = job.stock.box())
+        return *box;
     return designMesh(model).bounds();
 }
 

@@ -33,13 +33,9 @@ std::optional<SimRunRequest> simulationRequest(const NcInspector& inspector, con
     request.resolutionMm = resolutionMm;
     request.programName = QFileInfo(inspector.filePath()).fileName().toStdString();
     request.machine = inspector.sharedMachine();
-    const document::Stock& stock = workbench.job().stock;
-    const bool stockGiven = stock.max.x > stock.min.x && stock.max.y > stock.min.y && stock.max.z > stock.min.z;
-    if (editorShowsPostedProgram && stockGiven) {
-        base::Box3 box;
-        box.add(stock.min);
-        box.add(stock.max);
-        request.stockBox = box;
+    const std::optional<base::Box3> stockBox = workbench.job().stock.box();
+    if (editorShowsPostedProgram && stockBox) {
+        request.stockBox = stockBox;
         if (!workbench.model().empty())
             request.model = workbench.model();
         const toolpath::Toolpath& cl = workbench.toolpath();

@@ -196,6 +196,7 @@ std::optional<Input> loadNcInput(const SimOptions& options, const kinematics::Ma
     request.path = options.input;
     if (machine)
         request.machine = std::make_shared<const kinematics::Machine>(*machine);
+    request.checkLimits = false;  // sim::simulate checks them, as errors with the other checks
     if (!options.toolTable.empty()) {
         auto table = nc::readToolTable(options.toolTable);
         if (!table) {
@@ -321,12 +322,6 @@ int simCommand(const std::vector<std::string>& args)
         result.deviation.maxGougeMm = turned->maxGougeMm;
         result.deviation.gougeAt = {turned->maxGougeAt.y, 0, turned->maxGougeAt.x};
     }
-    // The interpreter checked the same limits on the same records (as warnings): say each once.
-    std::erase_if(input->diagnostics, [&](const base::Diagnostic& d) {
-        return std::any_of(result.checks.begin(), result.checks.end(), [&](const sim::Check& c) {
-            return c.kind == sim::CheckKind::MachineLimit && c.message == d.message;
-        });
-    });
     printDiagnostics(input->diagnostics);
 
     // Time.

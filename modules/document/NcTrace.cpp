@@ -87,6 +87,7 @@ NcTrace traceNc(const NcTraceRequest& request)
     options.fileName = request.path;
     options.cancel = request.cancel;
     options.machine = request.machine.get();
+    options.checkLimits = request.checkLimits;
     options.toolTable = request.tools.get();
     if (!request.path.empty())
         options.resolveProgram = nc::resolverBeside(request.path, trace.dialect);

@@ -85,6 +85,7 @@ struct NcTraceRequest {
     std::optional<nc::Dialect> dialect;  // nullopt: nc::guessDialect
     // Checked against its limits (kinematics::LimitCheck) as posting checks CL, when set.
     std::shared_ptr<const kinematics::Machine> machine;
+    bool checkLimits = true;  // false: the machine reads the program, the caller checks its limits
     // Tool sizes for cutter compensation where the program gives none (the job's tools).
     std::shared_ptr<const nc::ToolTable> tools;
     const std::atomic<bool>* cancel = nullptr;

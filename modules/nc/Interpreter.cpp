@@ -72,7 +72,7 @@ InterpretResult interpretDialect(std::string_view text, const InterpretOptions& 
 
 InterpretResult interpret(std::string_view text, const InterpretOptions& options, toolpath::MachineSink& sink)
 {
-    if (!options.machine)
+    if (!options.machine || !options.checkLimits)
         return interpretDialect(text, options, sink);
     // The same check the post kernel makes, on what the control would do, whatever the dialect.
     kinematics::LimitCheck check(*options.machine, sink);

@@ -60,7 +60,10 @@ struct InterpretOptions {
     std::string fileName;                          // for diagnostics; empty = "<input>"
     ProgramResolver resolveProgram;                // empty: calls to other programs are errors
     const kinematics::Machine* machine = nullptr;  // kinematics::LimitCheck on what the program does, when set
-    const ToolTable* toolTable = nullptr;          // tool radii for cutter compensation (the program's own data first)
+    // False: the machine's chain reads the program but its limits are checked by the caller (the
+    // simulator checks them on the same records as errors of its own).
+    bool checkLimits = true;
+    const ToolTable* toolTable = nullptr;  // tool radii for cutter compensation (the program's own data first)
     // Where the tool is when the program starts, when the caller knows it (rs274 starts at the
     // origin). None (the default): every axis is unknown until the program gives it in absolute
     // terms, as on the control; moves carry the known axes only until then (nc/KnownAxes.h).

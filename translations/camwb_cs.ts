@@ -5,162 +5,162 @@
     <name>NcEditorActions</name>
     <message>
         <source>Removed %1 block number(s)</source>
-        <translation type="unfinished"></translation>
+        <translation>Odstraněno čísel bloků: %1</translation>
     </message>
     <message>
         <source>Numbered %1 block(s)</source>
-        <translation type="unfinished"></translation>
+        <translation>Očíslováno bloků: %1</translation>
     </message>
     <message>
         <source>, %1 jump target(s) follow their blocks</source>
-        <translation type="unfinished"></translation>
+        <translation>, cíle skoků (%1) následují své bloky</translation>
     </message>
     <message>
         <source>; line %1: %2</source>
-        <translation type="unfinished"></translation>
+        <translation>; řádek %1: %2</translation>
     </message>
     <message>
         <source>; %1</source>
-        <translation type="unfinished"></translation>
+        <translation>; %1</translation>
     </message>
     <message>
         <source> (and %1 more note(s))</source>
-        <translation type="unfinished"></translation>
+        <translation> (a další poznámky: %1)</translation>
     </message>
     <message>
         <source>&amp;NC</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;NC</translation>
     </message>
     <message>
         <source>&amp;Find…</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Najít…</translation>
     </message>
     <message>
         <source>Find text in the NC program</source>
-        <translation type="unfinished"></translation>
+        <translation>Najít text v NC programu</translation>
     </message>
     <message>
         <source>&amp;Go to Block…</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Přejít na blok…</translation>
     </message>
     <message>
         <source>Jump to the block with a given number</source>
-        <translation type="unfinished"></translation>
+        <translation>Přejít na blok se zadaným číslem</translation>
     </message>
     <message>
         <source>Go to Block</source>
-        <translation type="unfinished"></translation>
+        <translation>Přejít na blok</translation>
     </message>
     <message>
         <source>Block number:</source>
-        <translation type="unfinished"></translation>
+        <translation>Číslo bloku:</translation>
     </message>
     <message>
         <source>No block number %1 in the program</source>
-        <translation type="unfinished"></translation>
+        <translation>V programu není blok číslo %1</translation>
     </message>
     <message>
         <source>&amp;Renumber Blocks…</source>
-        <translation type="unfinished"></translation>
+        <translation>Př&amp;ečíslovat bloky…</translation>
     </message>
     <message>
         <source>Renumber the blocks of the NC program (one undo step)</source>
-        <translation type="unfinished"></translation>
+        <translation>Přečíslovat bloky NC programu (jeden krok zpět)</translation>
     </message>
     <message>
         <source>The NC program is read-only</source>
-        <translation type="unfinished"></translation>
+        <translation>NC program je jen pro čtení</translation>
     </message>
     <message>
         <source>Re&amp;move Block Numbers</source>
-        <translation type="unfinished"></translation>
+        <translation>Odstranit čísla &amp;bloků</translation>
     </message>
     <message>
         <source>Remove the N numbers (blocks a GOTO jumps to keep theirs)</source>
-        <translation type="unfinished"></translation>
+        <translation>Odstranit čísla N (bloky, na které skáče GOTO, si je ponechají)</translation>
     </message>
     <message>
         <source>&amp;Compare with File…</source>
-        <translation type="unfinished"></translation>
+        <translation>Po&amp;rovnat se souborem…</translation>
     </message>
     <message>
         <source>Compare the NC program with another file side by side</source>
-        <translation type="unfinished"></translation>
+        <translation>Porovnat NC program s jiným souborem vedle sebe</translation>
     </message>
     <message>
         <source>Current program</source>
-        <translation type="unfinished"></translation>
+        <translation>Aktuální program</translation>
     </message>
     <message>
         <source>%1 (in the editor)</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 (v editoru)</translation>
     </message>
     <message>
         <source>Program &amp;Information…</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Informace o programu…</translation>
     </message>
     <message>
         <source>Extents, path lengths and machining time of the NC program</source>
-        <translation type="unfinished"></translation>
+        <translation>Rozměry, délky drah a čas obrábění NC programu</translation>
     </message>
     <message>
         <source>Compare with File</source>
-        <translation type="unfinished"></translation>
+        <translation>Porovnat se souborem</translation>
     </message>
     <message>
         <source>NC programs (*.mpf *.spf *.MPF *.SPF *.h *.H *.nc *.ngc *.tap *.iso *.cnc *.txt);;All files (*)</source>
-        <translation type="unfinished"></translation>
+        <translation>NC programy (*.mpf *.spf *.MPF *.SPF *.h *.H *.nc *.ngc *.tap *.iso *.cnc *.txt);;Všechny soubory (*)</translation>
     </message>
     <message>
         <source>Cannot read %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Nelze přečíst %1</translation>
     </message>
 </context>
 <context>
     <name>NcLexer</name>
     <message>
         <source>Default</source>
-        <translation type="unfinished"></translation>
+        <translation>Výchozí</translation>
     </message>
     <message>
         <source>Comment</source>
-        <translation type="unfinished"></translation>
+        <translation>Komentář</translation>
     </message>
     <message>
         <source>Block number</source>
-        <translation type="unfinished"></translation>
+        <translation>Číslo bloku</translation>
     </message>
     <message>
         <source>G word</source>
-        <translation type="unfinished"></translation>
+        <translation>Slovo G</translation>
     </message>
     <message>
         <source>M word</source>
-        <translation type="unfinished"></translation>
+        <translation>Slovo M</translation>
     </message>
     <message>
         <source>Axis word</source>
-        <translation type="unfinished"></translation>
+        <translation>Slovo osy</translation>
     </message>
     <message>
         <source>Feed, speed, tool</source>
-        <translation type="unfinished"></translation>
+        <translation>Posuv, otáčky, nástroj</translation>
     </message>
     <message>
         <source>Keyword or cycle</source>
-        <translation type="unfinished"></translation>
+        <translation>Klíčové slovo nebo cyklus</translation>
     </message>
     <message>
         <source>Number</source>
-        <translation type="unfinished"></translation>
+        <translation>Číslo</translation>
     </message>
     <message>
         <source>String</source>
-        <translation type="unfinished"></translation>
+        <translation>Řetězec</translation>
     </message>
     <message>
         <source>Parameter</source>
-        <translation type="unfinished"></translation>
+        <translation>Parametr</translation>
     </message>
 </context>
 <context>
@@ -178,7 +178,7 @@
     <name>SimulatorActions</name>
     <message>
         <source>&amp;Simulate</source>
-        <translation>&amp;Simulovat</translation>
+        <translation>Si&amp;mulovat</translation>
     </message>
     <message>
         <source>Simulate the NC program in the editor: the machine&apos;s motion, the stock cut, the analysis</source>
@@ -190,7 +190,7 @@
     </message>
     <message>
         <source>P&amp;ause</source>
-        <translation>Po&amp;zastavit</translation>
+        <translation>Pozastav&amp;it</translation>
     </message>
     <message>
         <source>Step &amp;Back</source>
@@ -213,953 +213,955 @@
     <name>camwb::gui::CompareDialog</name>
     <message>
         <source>Compare NC Programs</source>
-        <translation type="unfinished"></translation>
+        <translation>Porovnat NC programy</translation>
     </message>
     <message>
         <source>Open &amp;Left…</source>
-        <translation type="unfinished"></translation>
+        <translation>Otevřít &amp;levý…</translation>
     </message>
     <message>
         <source>Open &amp;Right…</source>
-        <translation type="unfinished"></translation>
+        <translation>Otevřít &amp;pravý…</translation>
     </message>
     <message>
         <source>Ignore block &amp;numbers</source>
-        <translation type="unfinished"></translation>
+        <translation>Ignorovat čísla &amp;bloků</translation>
     </message>
     <message>
         <source>Ignore &amp;blanks</source>
-        <translation type="unfinished"></translation>
+        <translation>Ignorovat &amp;mezery</translation>
     </message>
     <message>
         <source>&amp;Previous Difference</source>
-        <translation type="unfinished"></translation>
+        <translation>Př&amp;edchozí rozdíl</translation>
     </message>
     <message>
         <source>Ne&amp;xt Difference</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Další rozdíl</translation>
     </message>
     <message>
         <source>Cannot read %1: %2</source>
-        <translation type="unfinished"></translation>
+        <translation>Nelze přečíst %1: %2</translation>
     </message>
     <message>
         <source>Open Left NC Program</source>
-        <translation type="unfinished"></translation>
+        <translation>Otevřít levý NC program</translation>
     </message>
     <message>
         <source>Open Right NC Program</source>
-        <translation type="unfinished"></translation>
+        <translation>Otevřít pravý NC program</translation>
     </message>
     <message>
         <source>NC programs (*.mpf *.spf *.MPF *.SPF *.h *.H *.nc *.ngc *.tap *.iso *.cnc *.txt);;All files (*)</source>
-        <translation type="unfinished"></translation>
+        <translation>NC programy (*.mpf *.spf *.MPF *.SPF *.h *.H *.nc *.ngc *.tap *.iso *.cnc *.txt);;Všechny soubory (*)</translation>
     </message>
     <message>
         <source>Open two programs to compare</source>
-        <translation type="unfinished"></translation>
+        <translation>Otevřete dva programy k porovnání</translation>
     </message>
     <message>
         <source>The programs are identical</source>
-        <translation type="unfinished"></translation>
+        <translation>Programy jsou shodné</translation>
     </message>
     <message numerus="yes">
         <source>%n difference(s)</source>
-        <translation type="unfinished">
-            <numerusform></numerusform>
-            <numerusform></numerusform>
-            <numerusform></numerusform>
+        <translation>
+            <numerusform>%n rozdíl</numerusform>
+            <numerusform>%n rozdíly</numerusform>
+            <numerusform>%n rozdílů</numerusform>
         </translation>
     </message>
     <message>
         <source>Difference %1 of %2</source>
-        <translation type="unfinished"></translation>
+        <translation>Rozdíl %1 z %2</translation>
     </message>
     <message>
         <source>Open a program on the right to compare</source>
-        <translation type="unfinished"></translation>
+        <translation>Otevřete program vpravo k porovnání</translation>
     </message>
     <message>
         <source>Open a program on the left to compare</source>
-        <translation type="unfinished"></translation>
+        <translation>Otevřete program vlevo k porovnání</translation>
     </message>
 </context>
 <context>
     <name>camwb::gui::ContourPanel</name>
     <message>
         <source>Side</source>
-        <translation type="unfinished"></translation>
+        <translation>Strana</translation>
     </message>
     <message>
         <source>Outside</source>
-        <translation type="unfinished"></translation>
+        <translation>Vně</translation>
     </message>
     <message>
         <source>Inside</source>
-        <translation type="unfinished"></translation>
+        <translation>Uvnitř</translation>
     </message>
     <message>
         <source>On the contour</source>
-        <translation type="unfinished"></translation>
+        <translation>Na kontuře</translation>
     </message>
     <message>
         <source>Left (open chains)</source>
-        <translation type="unfinished"></translation>
+        <translation>Vlevo (otevřené řetězce)</translation>
     </message>
     <message>
         <source>Right (open chains)</source>
-        <translation type="unfinished"></translation>
+        <translation>Vpravo (otevřené řetězce)</translation>
     </message>
     <message>
         <source>Climb milling</source>
-        <translation type="unfinished"></translation>
+        <translation>Sousledné frézování</translation>
     </message>
     <message>
         <source>Radial stock</source>
-        <translation type="unfinished"></translation>
+        <translation>Radiální přídavek</translation>
     </message>
     <message>
         <source>Axial stock</source>
-        <translation type="unfinished"></translation>
+        <translation>Axiální přídavek</translation>
     </message>
     <message>
         <source>Step-down (0 = one level)</source>
-        <translation type="unfinished"></translation>
+        <translation>Hloubka záběru (0 = jedna úroveň)</translation>
     </message>
     <message>
         <source>Radial passes</source>
-        <translation type="unfinished"></translation>
+        <translation>Radiální průchody</translation>
     </message>
     <message>
         <source>Radial stepover</source>
-        <translation type="unfinished"></translation>
+        <translation>Radiální krok</translation>
     </message>
     <message>
         <source>None</source>
-        <translation type="unfinished"></translation>
+        <translation>Žádné</translation>
     </message>
     <message>
         <source>Arc</source>
-        <translation type="unfinished"></translation>
+        <translation>Oblouk</translation>
     </message>
     <message>
         <source>Line</source>
-        <translation type="unfinished"></translation>
+        <translation>Přímka</translation>
     </message>
     <message>
         <source>Lead-in</source>
-        <translation type="unfinished"></translation>
+        <translation>Najetí</translation>
     </message>
     <message>
         <source>Lead-out</source>
-        <translation type="unfinished"></translation>
+        <translation>Odjetí</translation>
     </message>
     <message>
         <source>Lead radius / length</source>
-        <translation type="unfinished"></translation>
+        <translation>Poloměr / délka najetí</translation>
     </message>
     <message>
         <source>Entry</source>
-        <translation type="unfinished"></translation>
+        <translation>Zanoření</translation>
     </message>
     <message>
         <source>Plunge</source>
-        <translation type="unfinished"></translation>
+        <translation>Kolmo</translation>
     </message>
     <message>
         <source>Ramp</source>
-        <translation type="unfinished"></translation>
+        <translation>Rampa</translation>
     </message>
     <message>
         <source>Helix</source>
-        <translation type="unfinished"></translation>
+        <translation>Šroubovice</translation>
     </message>
     <message>
         <source>Ramp angle</source>
-        <translation type="unfinished"></translation>
+        <translation>Úhel rampy</translation>
     </message>
     <message>
         <source> °</source>
-        <translation type="unfinished"></translation>
+        <translation> °</translation>
     </message>
     <message>
         <source>Helix diameter (0 = tool)</source>
-        <translation type="unfinished"></translation>
+        <translation>Průměr šroubovice (0 = nástroj)</translation>
     </message>
     <message>
         <source>Helix pitch</source>
-        <translation type="unfinished"></translation>
+        <translation>Stoupání šroubovice</translation>
     </message>
     <message>
         <source>Tabs</source>
-        <translation type="unfinished"></translation>
+        <translation>Můstky</translation>
     </message>
     <message>
         <source>Tab width</source>
-        <translation type="unfinished"></translation>
+        <translation>Šířka můstku</translation>
     </message>
     <message>
         <source>Tab height</source>
-        <translation type="unfinished"></translation>
+        <translation>Výška můstku</translation>
     </message>
     <message>
         <source>Output</source>
-        <translation type="unfinished"></translation>
+        <translation>Výstup</translation>
     </message>
     <message>
         <source>Tool centre path</source>
-        <translation type="unfinished"></translation>
+        <translation>Dráha středu nástroje</translation>
     </message>
     <message>
         <source>Contour, G41/G42</source>
-        <translation type="unfinished"></translation>
+        <translation>Kontura, G41/G42</translation>
     </message>
     <message>
         <source>Tolerance</source>
-        <translation type="unfinished"></translation>
+        <translation>Tolerance</translation>
     </message>
 </context>
 <context>
     <name>camwb::gui::DrillPanel</name>
     <message>
         <source>Cycle</source>
-        <translation type="unfinished"></translation>
+        <translation>Cyklus</translation>
     </message>
     <message>
         <source>Drill</source>
-        <translation type="unfinished"></translation>
+        <translation>Vrtání</translation>
     </message>
     <message>
         <source>Drill with dwell</source>
-        <translation type="unfinished"></translation>
+        <translation>Vrtání s prodlevou</translation>
     </message>
     <message>
         <source>Peck (full retract)</source>
-        <translation type="unfinished"></translation>
+        <translation>Hluboké vrtání (úplný výjezd)</translation>
     </message>
     <message>
         <source>Chip breaking</source>
-        <translation type="unfinished"></translation>
+        <translation>Lámání třísky</translation>
     </message>
     <message>
         <source>Peck depth</source>
-        <translation type="unfinished"></translation>
+        <translation>Hloubka přísuvu</translation>
     </message>
     <message>
         <source>Dwell</source>
-        <translation type="unfinished"></translation>
+        <translation>Prodleva</translation>
     </message>
     <message>
         <source> s</source>
-        <translation type="unfinished"></translation>
+        <translation> s</translation>
     </message>
     <message>
         <source>Depths from each hole</source>
-        <translation type="unfinished"></translation>
+        <translation>Hloubky podle každé díry</translation>
     </message>
     <message>
         <source>Each hole from its top to its bottom; unchecked: the start and final Z of the heights</source>
-        <translation type="unfinished"></translation>
+        <translation>Každá díra od svého vrcholu ke dnu; nezaškrtnuto: počáteční a koncové Z z výšek</translation>
     </message>
     <message>
         <source>Retract to clearance (G98)</source>
-        <translation type="unfinished"></translation>
+        <translation>Výjezd na Z přejezdu (G98)</translation>
     </message>
     <message>
         <source>Between holes; unchecked: to the safe plane (R, G99)</source>
-        <translation type="unfinished"></translation>
+        <translation>Mezi dírami; nezaškrtnuto: do bezpečné roviny (R, G99)</translation>
     </message>
     <message>
         <source>Keep the listed order</source>
-        <translation type="unfinished"></translation>
+        <translation>Zachovat pořadí seznamu</translation>
     </message>
     <message>
         <source>Unchecked: the order that shortens the rapids</source>
-        <translation type="unfinished"></translation>
+        <translation>Nezaškrtnuto: pořadí, které zkracuje rychloposuvy</translation>
     </message>
     <message>
         <source>Depth at full diameter</source>
-        <translation type="unfinished"></translation>
+        <translation>Hloubka na plný průměr</translation>
     </message>
     <message>
         <source>The final depth is where the drill has its full diameter: the tip goes deeper by the point length</source>
-        <translation type="unfinished"></translation>
+        <translation>Konečná hloubka je tam, kde má vrták plný průměr: špička jde hlouběji o délku špičky</translation>
     </message>
     <message>
         <source>Breakthrough</source>
-        <translation type="unfinished"></translation>
+        <translation>Přesah průvrtu</translation>
     </message>
 </context>
 <context>
     <name>camwb::gui::GeometryList</name>
     <message>
         <source>Add selected faces</source>
-        <translation type="unfinished"></translation>
+        <translation>Přidat vybrané plochy</translation>
     </message>
     <message>
         <source>Click faces in the 3D view (Ctrl+click for several), then add them here. For holes, click the hole&apos;s wall.</source>
-        <translation type="unfinished"></translation>
+        <translation>Klikněte na plochy ve 3D pohledu (Ctrl+klik pro více), pak je přidejte sem. U děr klikněte na stěnu díry.</translation>
     </message>
     <message>
         <source>Remove</source>
-        <translation type="unfinished"></translation>
+        <translation>Odebrat</translation>
     </message>
     <message>
         <source>Face</source>
-        <translation type="unfinished"></translation>
+        <translation>Plocha</translation>
     </message>
     <message>
         <source>Edge</source>
-        <translation type="unfinished"></translation>
+        <translation>Hrana</translation>
     </message>
     <message>
         <source>Hole (face)</source>
-        <translation type="unfinished"></translation>
+        <translation>Díra (plocha)</translation>
     </message>
     <message>
         <source>Add</source>
-        <translation type="unfinished"></translation>
+        <translation>Přidat</translation>
     </message>
     <message>
         <source>This operation takes no %1.</source>
-        <translation type="unfinished"></translation>
+        <translation>Tato operace nepřijímá %1.</translation>
     </message>
     <message>
         <source>faces</source>
-        <translation type="unfinished"></translation>
+        <translation>plochy</translation>
     </message>
     <message>
         <source>edges</source>
-        <translation type="unfinished"></translation>
+        <translation>hrany</translation>
     </message>
     <message>
         <source>holes</source>
-        <translation type="unfinished"></translation>
+        <translation>díry</translation>
     </message>
     <message>
         <source>The model has no face %1.</source>
-        <translation type="unfinished"></translation>
+        <translation>Model nemá plochu %1.</translation>
     </message>
     <message>
         <source>The model has no edge %1.</source>
-        <translation type="unfinished"></translation>
+        <translation>Model nemá hranu %1.</translation>
     </message>
     <message>
         <source>Face %1 is not the wall of a vertical cylindrical hole.</source>
-        <translation type="unfinished"></translation>
+        <translation>Plocha %1 není stěnou svislé válcové díry.</translation>
     </message>
     <message>
         <source>Already in the list.</source>
-        <translation type="unfinished"></translation>
+        <translation>Už je v seznamu.</translation>
     </message>
     <message>
         <source>face %1: %2</source>
-        <translation type="unfinished"></translation>
+        <translation>plocha %1: %2</translation>
     </message>
     <message>
         <source>Face %1 (not in the model)</source>
-        <translation type="unfinished"></translation>
+        <translation>Plocha %1 (není v modelu)</translation>
     </message>
     <message>
         <source>Face %1 — not planar</source>
-        <translation type="unfinished"></translation>
+        <translation>Plocha %1 — není rovinná</translation>
     </message>
     <message>
         <source>Face %1 — planar, Z %2, %3 mm²</source>
-        <translation type="unfinished"></translation>
+        <translation>Plocha %1 — rovinná, Z %2, %3 mm²</translation>
     </message>
     <message>
         <source>Edge %1 (not in the model)</source>
-        <translation type="unfinished"></translation>
+        <translation>Hrana %1 (není v modelu)</translation>
     </message>
     <message>
         <source>Edge %1 — %2, %3 mm</source>
-        <translation type="unfinished"></translation>
+        <translation>Hrana %1 — %2, %3 mm</translation>
     </message>
     <message>
         <source>Hole %1 — Ø%2 at (%3, %4), Z %5 → %6%7</source>
-        <translation type="unfinished"></translation>
+        <translation>Díra %1 — Ø%2 v (%3, %4), Z %5 → %6%7</translation>
     </message>
     <message>
         <source>, through</source>
-        <translation type="unfinished"></translation>
+        <translation>, průchozí</translation>
     </message>
     <message>
         <source>Hole %1 (not a hole of the model)</source>
-        <translation type="unfinished"></translation>
+        <translation>Díra %1 (není dírou modelu)</translation>
     </message>
     <message>
         <source>Face %1 — planar, normal (%2, %3, %4), %5 mm²</source>
-        <translation type="unfinished"></translation>
+        <translation>Plocha %1 — rovinná, normála (%2, %3, %4), %5 mm²</translation>
     </message>
     <message>
         <source>Face %1 — %2, ruled, drive edge %3, %4 mm²</source>
-        <translation type="unfinished"></translation>
+        <translation>Plocha %1 — %2, přímková, řídicí hrana %3, %4 mm²</translation>
     </message>
 </context>
 <context>
     <name>camwb::gui::HeightsBox</name>
     <message>
         <source>Clearance Z</source>
-        <translation type="unfinished"></translation>
+        <translation>Z přejezdu</translation>
     </message>
     <message>
         <source>Safe Z</source>
-        <translation type="unfinished"></translation>
+        <translation>Bezpečné Z</translation>
     </message>
     <message>
         <source>Start Z</source>
-        <translation type="unfinished"></translation>
+        <translation>Počáteční Z</translation>
     </message>
     <message>
         <source>Final Z</source>
-        <translation type="unfinished"></translation>
+        <translation>Koncové Z</translation>
     </message>
     <message>
         <source>auto</source>
-        <translation type="unfinished"></translation>
+        <translation>auto</translation>
     </message>
     <message>
         <source>Derived from the model and the stock; uncheck to set it</source>
-        <translation type="unfinished"></translation>
+        <translation>Odvozeno z modelu a polotovaru; zrušte zaškrtnutí pro ruční zadání</translation>
     </message>
 </context>
 <context>
     <name>camwb::gui::HelixPanel</name>
     <message>
         <source>Pitch per turn</source>
-        <translation type="unfinished"></translation>
+        <translation>Stoupání na otáčku</translation>
     </message>
     <message>
         <source>Climb milling</source>
-        <translation type="unfinished"></translation>
+        <translation>Sousledné frézování</translation>
     </message>
     <message>
         <source>Depths from each hole</source>
-        <translation type="unfinished"></translation>
+        <translation>Hloubky podle každé díry</translation>
     </message>
     <message>
         <source>Each hole from its top to its bottom; unchecked: the start and final Z of the heights</source>
-        <translation type="unfinished"></translation>
+        <translation>Každá díra od svého vrcholu ke dnu; nezaškrtnuto: počáteční a koncové Z z výšek</translation>
     </message>
     <message>
         <source>Breakthrough</source>
-        <translation type="unfinished"></translation>
+        <translation>Přesah průvrtu</translation>
     </message>
     <message>
         <source>Radial stock</source>
-        <translation type="unfinished"></translation>
+        <translation>Radiální přídavek</translation>
     </message>
     <message>
         <source>Finishing circle</source>
-        <translation type="unfinished"></translation>
+        <translation>Dokončovací kruh</translation>
     </message>
     <message>
         <source>Tolerance</source>
-        <translation type="unfinished"></translation>
+        <translation>Tolerance</translation>
     </message>
 </context>
 <context>
     <name>camwb::gui::InspectorPanel</name>
     <message>
         <source>Automatic</source>
-        <translation type="unfinished"></translation>
+        <translation>Automaticky</translation>
     </message>
     <message>
         <source>SINUMERIK</source>
-        <translation type="unfinished"></translation>
+        <translation>SINUMERIK</translation>
     </message>
     <message>
         <source>Heidenhain Klartext</source>
-        <translation type="unfinished"></translation>
+        <translation>Heidenhain Klartext</translation>
     </message>
     <message>
         <source>ISO (LinuxCNC, Fanuc)</source>
-        <translation type="unfinished"></translation>
+        <translation>ISO (LinuxCNC, Fanuc)</translation>
     </message>
     <message>
         <source>NC program (traced)</source>
-        <translation type="unfinished"></translation>
+        <translation>NC program (trasovaný)</translation>
     </message>
     <message>
         <source>Operations&apos; toolpath</source>
-        <translation type="unfinished"></translation>
+        <translation>Dráhy nástroje operací</translation>
     </message>
     <message>
         <source>Dialect</source>
-        <translation type="unfinished"></translation>
+        <translation>Dialekt</translation>
     </message>
     <message>
         <source>3D shows</source>
-        <translation type="unfinished"></translation>
+        <translation>3D zobrazuje</translation>
     </message>
     <message>
         <source>Tools</source>
-        <translation type="unfinished"></translation>
+        <translation>Nástroje</translation>
     </message>
     <message>
         <source>T%1</source>
-        <translation type="unfinished"></translation>
+        <translation>T%1</translation>
     </message>
     <message>
         <source>before the first tool</source>
-        <translation type="unfinished"></translation>
+        <translation>před prvním nástrojem</translation>
     </message>
     <message>
         <source>Machine</source>
-        <translation type="unfinished"></translation>
+        <translation>Stroj</translation>
     </message>
     <message>
         <source>The machine the program is traced on: its limits are checked, and five-axis NC (M128, TRAORI, B and C words) is read through its kinematics</source>
-        <translation type="unfinished"></translation>
+        <translation>Stroj, na kterém se program trasuje: kontrolují se jeho meze a pětiosé NC (M128, TRAORI, slova B a C) se čte přes jeho kinematiku</translation>
     </message>
     <message>
         <source>None: no limits checked, three axes</source>
-        <translation type="unfinished"></translation>
+        <translation>Žádný: bez kontroly mezí, tři osy</translation>
     </message>
     <message>
         <source>%1 (%2)</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 (%2)</translation>
     </message>
 </context>
 <context>
     <name>camwb::gui::JobTree</name>
     <message>
         <source>Item</source>
-        <translation type="unfinished"></translation>
+        <translation>Položka</translation>
     </message>
     <message>
         <source>Value</source>
-        <translation type="unfinished"></translation>
+        <translation>Hodnota</translation>
     </message>
     <message>
         <source>Job</source>
-        <translation type="unfinished"></translation>
+        <translation>Úloha</translation>
     </message>
     <message>
         <source>Model</source>
-        <translation type="unfinished"></translation>
+        <translation>Model</translation>
     </message>
     <message>
         <source>(none)</source>
-        <translation type="unfinished"></translation>
+        <translation>(žádný)</translation>
     </message>
     <message>
         <source>Faces</source>
-        <translation type="unfinished"></translation>
+        <translation>Plochy</translation>
     </message>
     <message>
         <source>Stock</source>
-        <translation type="unfinished"></translation>
+        <translation>Polotovar</translation>
     </message>
     <message>
         <source>Min</source>
-        <translation type="unfinished"></translation>
+        <translation>Min</translation>
     </message>
     <message>
         <source>Max</source>
-        <translation type="unfinished"></translation>
+        <translation>Max</translation>
     </message>
     <message>
         <source>Work offset</source>
-        <translation type="unfinished"></translation>
+        <translation>Nulový bod obrobku</translation>
     </message>
     <message>
         <source>Post</source>
-        <translation type="unfinished"></translation>
+        <translation>Postprocesor</translation>
     </message>
     <message>
         <source>Tools</source>
-        <translation type="unfinished"></translation>
+        <translation>Nástroje</translation>
     </message>
     <message>
         <source>%1, Ø%2 mm, S%3, F%4</source>
-        <translation type="unfinished"></translation>
+        <translation>%1, Ø%2 mm, S%3, F%4</translation>
     </message>
     <message>
         <source>Operations</source>
-        <translation type="unfinished"></translation>
+        <translation>Operace</translation>
     </message>
     <message>
         <source>faces %1</source>
-        <translation type="unfinished"></translation>
+        <translation>plochy %1</translation>
     </message>
     <message>
         <source>edges %1</source>
-        <translation type="unfinished"></translation>
+        <translation>hrany %1</translation>
     </message>
     <message>
         <source>holes %1</source>
-        <translation type="unfinished"></translation>
+        <translation>díry %1</translation>
     </message>
     <message>
         <source>no geometry</source>
-        <translation type="unfinished"></translation>
+        <translation>bez geometrie</translation>
     </message>
     <message>
         <source>%1, T%2, %3</source>
-        <translation type="unfinished"></translation>
+        <translation>%1, T%2, %3</translation>
     </message>
     <message>
         <source>Error</source>
-        <translation type="unfinished"></translation>
+        <translation>Chyba</translation>
     </message>
     <message>
         <source>not loaded: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>nenačteno: %1</translation>
     </message>
 </context>
 <context>
     <name>camwb::gui::MainWindow</name>
     <message>
         <source>Job</source>
-        <translation type="unfinished"></translation>
+        <translation>Úloha</translation>
     </message>
     <message>
         <source>NC program</source>
-        <translation type="unfinished"></translation>
+        <translation>NC program</translation>
     </message>
     <message>
         <source>Report</source>
-        <translation type="unfinished"></translation>
+        <translation>Protokol</translation>
     </message>
     <message>
         <source>Main</source>
-        <translation type="unfinished"></translation>
+        <translation>Hlavní</translation>
     </message>
     <message>
         <source>3D view unavailable: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>3D pohled není k dispozici: %1</translation>
     </message>
     <message>
         <source>&amp;File</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Soubor</translation>
     </message>
     <message>
         <source>&amp;Edit</source>
-        <translation type="unfinished"></translation>
+        <translation>Úpr&amp;avy</translation>
     </message>
     <message>
         <source>&amp;Operation</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Operace</translation>
     </message>
     <message>
         <source>&amp;Job</source>
-        <translation type="unfinished"></translation>
+        <translation>Ú&amp;loha</translation>
     </message>
     <message>
         <source>&amp;View</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Zobrazit</translation>
     </message>
     <message>
         <source>&amp;Help</source>
-        <translation type="unfinished"></translation>
+        <translation>Nápo&amp;věda</translation>
     </message>
     <message>
         <source>&amp;Open Job…</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Otevřít úlohu…</translation>
     </message>
     <message>
         <source>Open job</source>
-        <translation type="unfinished"></translation>
+        <translation>Otevřít úlohu</translation>
     </message>
     <message>
         <source>CAM Workbench jobs (*.camwb)</source>
-        <translation type="unfinished"></translation>
+        <translation>Úlohy CAM Workbench (*.camwb)</translation>
     </message>
     <message>
         <source>&amp;Save Job</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Uložit úlohu</translation>
     </message>
     <message>
         <source>Save Job &amp;As…</source>
-        <translation type="unfinished"></translation>
+        <translation>Uložit úlohu &amp;jako…</translation>
     </message>
     <message>
         <source>Save job</source>
-        <translation type="unfinished"></translation>
+        <translation>Uložit úlohu</translation>
     </message>
     <message>
         <source>&amp;Import Model…</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Importovat model…</translation>
     </message>
     <message>
         <source>Import model</source>
-        <translation type="unfinished"></translation>
+        <translation>Importovat model</translation>
     </message>
     <message>
         <source>Models (*.step *.stp *.iges *.igs *.brep *.brp *.stl);;All files (*)</source>
-        <translation type="unfinished"></translation>
+        <translation>Modely (*.step *.stp *.iges *.igs *.brep *.brp *.stl);;Všechny soubory (*)</translation>
     </message>
     <message>
         <source>&amp;Quit</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Konec</translation>
     </message>
     <message>
         <source>&amp;Undo</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Zpět</translation>
     </message>
     <message>
         <source>&amp;Redo</source>
-        <translation type="unfinished"></translation>
+        <translation>Z&amp;novu</translation>
     </message>
     <message>
         <source>&amp;Undo %1</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Zpět: %1</translation>
     </message>
     <message>
         <source>&amp;Redo %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Z&amp;novu: %1</translation>
     </message>
     <message>
         <source>New &amp;Profile</source>
-        <translation type="unfinished"></translation>
+        <translation>Nový &amp;profil</translation>
     </message>
     <message>
         <source>&amp;Edit Operation…</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Upravit operaci…</translation>
     </message>
     <message>
         <source>&amp;Delete Operation</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Smazat operaci</translation>
     </message>
     <message>
         <source>&amp;Post</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Postprocesovat</translation>
     </message>
     <message>
         <source>&amp;Save NC Program…</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Uložit NC program…</translation>
     </message>
     <message>
         <source>Save NC program</source>
-        <translation type="unfinished"></translation>
+        <translation>Uložit NC program</translation>
     </message>
     <message>
         <source>NC programs (*.%1);;All files (*)</source>
-        <translation type="unfinished"></translation>
+        <translation>NC programy (*.%1);;Všechny soubory (*)</translation>
     </message>
     <message>
         <source>&amp;Isometric</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Izometrie</translation>
     </message>
     <message>
         <source>&amp;Top</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Shora</translation>
     </message>
     <message>
         <source>&amp;Front</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Zepředu</translation>
     </message>
     <message>
         <source>&amp;Right</source>
-        <translation type="unfinished"></translation>
+        <translation>Z&amp;prava</translation>
     </message>
     <message>
         <source>Fit &amp;All</source>
-        <translation type="unfinished"></translation>
+        <translation>Zobrazit &amp;vše</translation>
     </message>
     <message>
         <source>&amp;About CAM Workbench</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;O aplikaci CAM Workbench</translation>
     </message>
     <message>
         <source>About CAM Workbench</source>
-        <translation type="unfinished"></translation>
+        <translation>O aplikaci CAM Workbench</translation>
     </message>
     <message>
         <source>CAM Workbench %1
 CAM and post-processor workbench.</source>
-        <translation type="unfinished"></translation>
+        <translation>CAM Workbench %1
+Pracoviště pro CAM a postprocesory.</translation>
     </message>
     <message>
         <source>Working…</source>
-        <translation type="unfinished"></translation>
+        <translation>Pracuje se…</translation>
     </message>
     <message>
         <source>Ready</source>
-        <translation type="unfinished"></translation>
+        <translation>Připraveno</translation>
     </message>
     <message>
         <source>Untitled</source>
-        <translation type="unfinished"></translation>
+        <translation>Bez názvu</translation>
     </message>
     <message>
         <source>%1%2 — CAM Workbench</source>
-        <translation type="unfinished"></translation>
+        <translation>%1%2 — CAM Workbench</translation>
     </message>
     <message>
         <source>Unsaved changes</source>
-        <translation type="unfinished"></translation>
+        <translation>Neuložené změny</translation>
     </message>
     <message>
         <source>NC inspector</source>
-        <translation type="unfinished"></translation>
+        <translation>NC inspektor</translation>
     </message>
     <message>
         <source>Opened NC program %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Otevřen NC program %1</translation>
     </message>
     <message>
         <source>&amp;NC</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;NC</translation>
     </message>
     <message>
         <source>&amp;Open NC Program…</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Otevřít NC program…</translation>
     </message>
     <message>
         <source>Open NC program</source>
-        <translation type="unfinished"></translation>
+        <translation>Otevřít NC program</translation>
     </message>
     <message>
         <source>NC programs (*.mpf *.spf *.nc *.ngc *.tap *.h *.iso *.cnc *.txt);;All files (*)</source>
-        <translation type="unfinished"></translation>
+        <translation>NC programy (*.mpf *.spf *.nc *.ngc *.tap *.h *.iso *.cnc *.txt);;Všechny soubory (*)</translation>
     </message>
     <message>
         <source>&amp;Trace NC Program</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Trasovat NC program</translation>
     </message>
     <message>
         <source>posted</source>
-        <translation type="unfinished"></translation>
+        <translation>postprocesováno</translation>
     </message>
     <message>
         <source>Tracing the NC program…</source>
-        <translation type="unfinished"></translation>
+        <translation>Trasuje se NC program…</translation>
     </message>
     <message>
         <source>Segment from the called program %1; the editor shows its call.</source>
-        <translation type="unfinished"></translation>
+        <translation>Úsek z volaného programu %1; editor ukazuje jeho volání.</translation>
     </message>
     <message>
         <source>Task</source>
-        <translation type="unfinished"></translation>
+        <translation>Úkol</translation>
     </message>
     <message>
         <source>New &amp;Contour…</source>
-        <translation type="unfinished"></translation>
+        <translation>Nová &amp;kontura…</translation>
     </message>
     <message>
         <source>New P&amp;ocket…</source>
-        <translation type="unfinished"></translation>
+        <translation>Nová ka&amp;psa…</translation>
     </message>
     <message>
         <source>New &amp;Helix…</source>
-        <translation type="unfinished"></translation>
+        <translation>Nová šroubovi&amp;ce…</translation>
     </message>
     <message>
         <source>New &amp;Drilling…</source>
-        <translation type="unfinished"></translation>
+        <translation>Nové &amp;vrtání…</translation>
     </message>
     <message>
         <source>Task: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Úkol: %1</translation>
     </message>
     <message>
         <source>Select an operation in the job tree first.</source>
-        <translation type="unfinished"></translation>
+        <translation>Nejprve vyberte operaci ve stromu úlohy.</translation>
     </message>
     <message>
         <source>The job&apos;s model is not loaded: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Model úlohy není načten: %1</translation>
     </message>
     <message>
         <source>New operation</source>
-        <translation type="unfinished"></translation>
+        <translation>Nová operace</translation>
     </message>
     <message>
         <source>Unapplied changes</source>
-        <translation type="unfinished"></translation>
+        <translation>Nepoužité změny</translation>
     </message>
     <message>
         <source>The task panel of &quot;%1&quot; has changes that are not applied.</source>
-        <translation type="unfinished"></translation>
+        <translation>Panel úkolu „%1“ má změny, které nebyly použity.</translation>
     </message>
     <message>
         <source>Apply</source>
-        <translation type="unfinished"></translation>
+        <translation>Použít</translation>
     </message>
     <message>
         <source>Discard</source>
-        <translation type="unfinished"></translation>
+        <translation>Zahodit</translation>
     </message>
     <message>
         <source>The job has changes that are not saved. Save them?</source>
-        <translation type="unfinished"></translation>
+        <translation>Úloha má neuložené změny. Uložit je?</translation>
     </message>
     <message>
         <source>No NC program: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Žádný NC program: %1</translation>
     </message>
     <message>
         <source>Out of date — the last post failed; this is the previous program and it cannot be saved:
 %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Zastaralé — poslední postprocesování selhalo; toto je předchozí program a nelze jej uložit:
+%1</translation>
     </message>
     <message numerus="yes">
         <source> (and %n more, see the job tree)</source>
-        <translation type="unfinished">
-            <numerusform></numerusform>
-            <numerusform></numerusform>
-            <numerusform></numerusform>
+        <translation>
+            <numerusform> (a %n další, viz strom úlohy)</numerusform>
+            <numerusform> (a %n další, viz strom úlohy)</numerusform>
+            <numerusform> (a %n dalších, viz strom úlohy)</numerusform>
         </translation>
     </message>
     <message>
         <source>Opening the job %1 replaces them with its program.</source>
-        <translation type="unfinished"></translation>
+        <translation>Otevření úlohy %1 je nahradí jejím programem.</translation>
     </message>
     <message>
         <source>Opening %1 replaces them.</source>
-        <translation type="unfinished"></translation>
+        <translation>Otevření %1 je nahradí.</translation>
     </message>
     <message>
         <source>Opening another job replaces them with its program.</source>
-        <translation type="unfinished"></translation>
+        <translation>Otevření jiné úlohy je nahradí jejím programem.</translation>
     </message>
     <message>
         <source>Posting the job replaces them with its program.</source>
-        <translation type="unfinished"></translation>
+        <translation>Postprocesování úlohy je nahradí jejím programem.</translation>
     </message>
     <message>
         <source>&amp;Save NC File</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Uložit NC soubor</translation>
     </message>
     <message>
         <source>The job&apos;s program, posted again, replaces them.</source>
-        <translation type="unfinished"></translation>
+        <translation>Program úlohy, znovu postprocesovaný, je nahradí.</translation>
     </message>
     <message>
         <source>The editor keeps the unsaved edits of %1; the job&apos;s new program is not shown (Post shows it).</source>
-        <translation type="unfinished"></translation>
+        <translation>Editor ponechává neuložené úpravy %1; nový program úlohy se nezobrazí (zobrazí jej Postprocesovat).</translation>
     </message>
     <message>
         <source>NC program — %1</source>
-        <translation type="unfinished"></translation>
+        <translation>NC program — %1</translation>
     </message>
     <message>
         <source> (out of date)</source>
-        <translation type="unfinished"></translation>
+        <translation> (zastaralý)</translation>
     </message>
     <message>
         <source>Closing the window loses them.</source>
-        <translation type="unfinished"></translation>
+        <translation>Zavřením okna se ztratí.</translation>
     </message>
     <message>
         <source>Machine</source>
-        <translation type="unfinished"></translation>
+        <translation>Stroj</translation>
     </message>
     <message>
         <source>The NC program is traced without a machine</source>
-        <translation type="unfinished"></translation>
+        <translation>NC program se trasuje bez stroje</translation>
     </message>
     <message>
         <source>The NC program is traced on the machine %1</source>
-        <translation type="unfinished"></translation>
+        <translation>NC program se trasuje na stroji %1</translation>
     </message>
     <message>
         <source>New &amp;Swarf (five-axis)…</source>
-        <translation type="unfinished"></translation>
+        <translation>Nové obrábění &amp;bokem (pětiosé)…</translation>
     </message>
     <message>
         <source>Simulator</source>
@@ -1170,643 +1172,646 @@ CAM and post-processor workbench.</source>
     <name>camwb::gui::ModalStatePanel</name>
     <message>
         <source>unknown (no move yet)</source>
-        <translation type="unfinished"></translation>
+        <translation>neznámý (zatím bez pohybu)</translation>
     </message>
     <message>
         <source>stopped (M5)</source>
-        <translation type="unfinished"></translation>
+        <translation>stojí (M5)</translation>
     </message>
     <message>
         <source>CW (M3)</source>
-        <translation type="unfinished"></translation>
+        <translation>vpravo (M3)</translation>
     </message>
     <message>
         <source>CCW (M4)</source>
-        <translation type="unfinished"></translation>
+        <translation>vlevo (M4)</translation>
     </message>
     <message>
         <source>%1 m/min constant surface speed, %2</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 m/min konstantní řezná rychlost, %2</translation>
     </message>
     <message>
         <source>%1 rpm %2</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 ot/min %2</translation>
     </message>
     <message>
         <source>off (M9)</source>
-        <translation type="unfinished"></translation>
+        <translation>vypnuto (M9)</translation>
     </message>
     <message>
         <source>flood (M8)</source>
-        <translation type="unfinished"></translation>
+        <translation>kapalina (M8)</translation>
     </message>
     <message>
         <source>mist (M7)</source>
-        <translation type="unfinished"></translation>
+        <translation>mlha (M7)</translation>
     </message>
     <message>
         <source>through tool</source>
-        <translation type="unfinished"></translation>
+        <translation>středem nástroje</translation>
     </message>
     <message>
         <source>Block</source>
-        <translation type="unfinished"></translation>
+        <translation>Blok</translation>
     </message>
     <message>
         <source>Move</source>
-        <translation type="unfinished"></translation>
+        <translation>Pohyb</translation>
     </message>
     <message>
         <source>Tool</source>
-        <translation type="unfinished"></translation>
+        <translation>Nástroj</translation>
     </message>
     <message>
         <source>Feed</source>
-        <translation type="unfinished"></translation>
+        <translation>Posuv</translation>
     </message>
     <message>
         <source>Spindle</source>
-        <translation type="unfinished"></translation>
+        <translation>Vřeteno</translation>
     </message>
     <message>
         <source>Coolant</source>
-        <translation type="unfinished"></translation>
+        <translation>Chlazení</translation>
     </message>
     <message>
         <source>Work offset</source>
-        <translation type="unfinished"></translation>
+        <translation>Nulový bod</translation>
     </message>
     <message>
         <source>Compensation</source>
-        <translation type="unfinished"></translation>
+        <translation>Korekce</translation>
     </message>
     <message>
         <source>Plane</source>
-        <translation type="unfinished"></translation>
+        <translation>Rovina</translation>
     </message>
     <message>
         <source>Units</source>
-        <translation type="unfinished"></translation>
+        <translation>Jednotky</translation>
     </message>
     <message>
         <source>Abs/inc</source>
-        <translation type="unfinished"></translation>
+        <translation>Abs/přír</translation>
     </message>
     <message>
         <source>Before</source>
-        <translation type="unfinished"></translation>
+        <translation>Před</translation>
     </message>
     <message>
         <source>After</source>
-        <translation type="unfinished"></translation>
+        <translation>Po</translation>
     </message>
     <message>
         <source>No NC program traced yet.</source>
-        <translation type="unfinished"></translation>
+        <translation>Zatím nebyl trasován žádný NC program.</translation>
     </message>
     <message>
         <source>line %1</source>
-        <translation type="unfinished">řádek %1</translation>
+        <translation>řádek %1</translation>
     </message>
     <message>
         <source>, runs %1 times (first run shown)</source>
-        <translation type="unfinished"></translation>
+        <translation>, provede se %1krát (zobrazeno první provedení)</translation>
     </message>
     <message>
         <source>no motion</source>
-        <translation type="unfinished"></translation>
+        <translation>bez pohybu</translation>
     </message>
     <message>
         <source>none called yet</source>
-        <translation type="unfinished"></translation>
+        <translation>zatím žádný nevolán</translation>
     </message>
     <message>
         <source>%1 (G%2)</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 (G%2)</translation>
     </message>
     <message>
         <source>none in the trace (control default)</source>
-        <translation type="unfinished"></translation>
+        <translation>není v trase (výchozí řízení)</translation>
     </message>
     <message>
         <source>%1, from the last arc</source>
-        <translation type="unfinished"></translation>
+        <translation>%1, z posledního oblouku</translation>
     </message>
     <message>
         <source>no arc yet (not in the trace)</source>
-        <translation type="unfinished"></translation>
+        <translation>zatím žádný oblouk (není v trase)</translation>
     </message>
     <message>
         <source>mm (inch programs converted)</source>
-        <translation type="unfinished"></translation>
+        <translation>mm (palcové programy převedeny)</translation>
     </message>
     <message>
         <source>not in the trace; positions absolute</source>
-        <translation type="unfinished"></translation>
+        <translation>není v trase; polohy absolutně</translation>
     </message>
     <message numerus="yes">
         <source>%n diagnostic(s) in this program.</source>
-        <translation type="unfinished">
-            <numerusform></numerusform>
-            <numerusform></numerusform>
-            <numerusform></numerusform>
+        <translation>
+            <numerusform>%n hlášení v tomto programu.</numerusform>
+            <numerusform>%n hlášení v tomto programu.</numerusform>
+            <numerusform>%n hlášení v tomto programu.</numerusform>
         </translation>
     </message>
     <message>
         <source>%1 mm/min (%2)</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 mm/min (%2)</translation>
     </message>
     <message>
         <source>%1 mm/rev (%2)</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 mm/ot (%2)</translation>
     </message>
     <message>
         <source>%1 1/min (%2)</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 1/min (%2)</translation>
     </message>
     <message>
         <source>off</source>
-        <translation type="unfinished"></translation>
+        <translation>vypnuto</translation>
     </message>
     <message>
         <source>left of the contour</source>
-        <translation type="unfinished"></translation>
+        <translation>vlevo od kontury</translation>
     </message>
     <message>
         <source>right of the contour</source>
-        <translation type="unfinished"></translation>
+        <translation>vpravo od kontury</translation>
     </message>
     <message>
         <source>%1 (absolute)</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 (absolutně)</translation>
     </message>
     <message>
         <source>%1 (incremental)</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 (přírůstkově)</translation>
     </message>
     <message>
         <source>%1 (absolute and incremental words)</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 (absolutní i přírůstková slova)</translation>
     </message>
     <message>
         <source>%1 (absolute or incremental per coordinate)</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 (absolutně nebo přírůstkově podle souřadnice)</translation>
     </message>
     <message>
         <source>%1 (inch; positions shown in mm)</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 (palce; polohy zobrazeny v mm)</translation>
     </message>
     <message>
         <source>%1 (mm)</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 (mm)</translation>
     </message>
     <message>
         <source>none programmed (control default)</source>
-        <translation type="unfinished"></translation>
+        <translation>žádná programována (výchozí řízení)</translation>
     </message>
     <message>
         <source>%1 (five-axis move)</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 (pětiosý pohyb)</translation>
     </message>
     <message>
         <source>%1 (3-axis move)</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 (tříosý pohyb)</translation>
     </message>
     <message>
         <source>none known (trace with a five-axis machine)</source>
-        <translation type="unfinished"></translation>
+        <translation>neznámé (trasujte s pětiosým strojem)</translation>
     </message>
     <message>
         <source>Tool axis</source>
-        <translation type="unfinished"></translation>
+        <translation>Osa nástroje</translation>
     </message>
     <message>
         <source>Rotary axes</source>
-        <translation type="unfinished"></translation>
+        <translation>Rotační osy</translation>
     </message>
 </context>
 <context>
     <name>camwb::gui::NcDocument</name>
     <message>
         <source>Save NC program</source>
-        <translation type="unfinished"></translation>
+        <translation>Uložit NC program</translation>
     </message>
     <message>
         <source>NC programs (*.mpf *.spf *.nc *.ngc *.tap *.h *.iso *.cnc *.txt);;All files (*)</source>
-        <translation type="unfinished"></translation>
+        <translation>NC programy (*.mpf *.spf *.nc *.ngc *.tap *.h *.iso *.cnc *.txt);;Všechny soubory (*)</translation>
     </message>
     <message>
         <source>Saved NC program %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Uložen NC program %1</translation>
     </message>
     <message>
         <source>The NC program</source>
-        <translation type="unfinished"></translation>
+        <translation>NC program</translation>
     </message>
     <message>
         <source>Unsaved NC edits</source>
-        <translation type="unfinished"></translation>
+        <translation>Neuložené úpravy NC</translation>
     </message>
     <message>
         <source>%1 has edits that are not saved. %2
 
 Save them first?</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 má neuložené úpravy. %2
+
+Nejprve je uložit?</translation>
     </message>
 </context>
 <context>
     <name>camwb::gui::NcEditor</name>
     <message>
         <source>column %1: </source>
-        <translation type="unfinished"></translation>
+        <translation>sloupec %1: </translation>
     </message>
 </context>
 <context>
     <name>camwb::gui::NcFindBar</name>
     <message>
         <source>Find:</source>
-        <translation type="unfinished"></translation>
+        <translation>Najít:</translation>
     </message>
     <message>
         <source>Previous</source>
-        <translation type="unfinished"></translation>
+        <translation>Předchozí</translation>
     </message>
     <message>
         <source>Find the previous match (Shift+Enter)</source>
-        <translation type="unfinished"></translation>
+        <translation>Najít předchozí výskyt (Shift+Enter)</translation>
     </message>
     <message>
         <source>Next</source>
-        <translation type="unfinished"></translation>
+        <translation>Další</translation>
     </message>
     <message>
         <source>Find the next match (Enter)</source>
-        <translation type="unfinished"></translation>
+        <translation>Najít další výskyt (Enter)</translation>
     </message>
     <message>
         <source>Match case</source>
-        <translation type="unfinished"></translation>
+        <translation>Rozlišovat velikost</translation>
     </message>
     <message>
         <source>Whole words</source>
-        <translation type="unfinished"></translation>
+        <translation>Celá slova</translation>
     </message>
     <message>
         <source>Close the find bar (Escape)</source>
-        <translation type="unfinished"></translation>
+        <translation>Zavřít panel hledání (Escape)</translation>
     </message>
     <message>
         <source>Not found</source>
-        <translation type="unfinished"></translation>
+        <translation>Nenalezeno</translation>
     </message>
 </context>
 <context>
     <name>camwb::gui::NcInspector</name>
     <message>
         <source>Tracing the NC program…</source>
-        <translation type="unfinished"></translation>
+        <translation>Trasuje se NC program…</translation>
     </message>
     <message>
         <source>NC program</source>
-        <translation type="unfinished"></translation>
+        <translation>NC program</translation>
     </message>
     <message>
         <source>%1: %2 more diagnostics not listed</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: dalších %2 hlášení neuvedeno</translation>
     </message>
     <message>
         <source> (guessed)</source>
-        <translation type="unfinished"></translation>
+        <translation> (odhadnuto)</translation>
     </message>
     <message>
         <source>, %1 five-axis moves</source>
-        <translation type="unfinished"></translation>
+        <translation>, pětiosé pohyby: %1</translation>
     </message>
     <message>
         <source>Traced %1 as %2%3: %4 blocks, %5 lines, %6 arcs, %7 rapids, %8 cycles%9 in %10 ms</source>
-        <translation type="unfinished"></translation>
+        <translation>Trasováno %1 jako %2%3: bloky %4, přímky %5, oblouky %6, rychloposuvy %7, cykly %8%9 za %10 ms</translation>
     </message>
 </context>
 <context>
     <name>camwb::gui::OperationPanel</name>
     <message>
         <source>Contour</source>
-        <translation type="unfinished"></translation>
+        <translation>Kontura</translation>
     </message>
     <message>
         <source>Pocket</source>
-        <translation type="unfinished"></translation>
+        <translation>Kapsa</translation>
     </message>
     <message>
         <source>Helix</source>
-        <translation type="unfinished"></translation>
+        <translation>Šroubovice</translation>
     </message>
     <message>
         <source>Drilling</source>
-        <translation type="unfinished"></translation>
+        <translation>Vrtání</translation>
     </message>
     <message>
         <source>new operation</source>
-        <translation type="unfinished"></translation>
+        <translation>nová operace</translation>
     </message>
     <message>
         <source>operation %1</source>
-        <translation type="unfinished"></translation>
+        <translation>operace %1</translation>
     </message>
     <message>
         <source>Preview pending…</source>
-        <translation type="unfinished"></translation>
+        <translation>Náhled čeká…</translation>
     </message>
     <message>
         <source>Cancel</source>
-        <translation type="unfinished">Zrušit</translation>
+        <translation>Zrušit</translation>
     </message>
     <message>
         <source>Stop computing the preview (the operation stays as edited)</source>
-        <translation type="unfinished"></translation>
+        <translation>Zastavit výpočet náhledu (operace zůstane, jak byla upravena)</translation>
     </message>
     <message>
         <source>Preview</source>
-        <translation type="unfinished"></translation>
+        <translation>Náhled</translation>
     </message>
     <message>
         <source>Name</source>
-        <translation type="unfinished"></translation>
+        <translation>Název</translation>
     </message>
     <message>
         <source>T%1 %2 (Ø%3 mm)</source>
-        <translation type="unfinished"></translation>
+        <translation>T%1 %2 (Ø%3 mm)</translation>
     </message>
     <message>
         <source>Tool</source>
-        <translation type="unfinished"></translation>
+        <translation>Nástroj</translation>
     </message>
     <message>
         <source>Operation</source>
-        <translation type="unfinished"></translation>
+        <translation>Operace</translation>
     </message>
     <message>
         <source>Geometry</source>
-        <translation type="unfinished"></translation>
+        <translation>Geometrie</translation>
     </message>
     <message>
         <source>Parameters</source>
-        <translation type="unfinished"></translation>
+        <translation>Parametry</translation>
     </message>
     <message>
         <source>Heights</source>
-        <translation type="unfinished"></translation>
+        <translation>Výšky</translation>
     </message>
     <message>
         <source>Preview cancelled; change a parameter to compute it again.</source>
-        <translation type="unfinished"></translation>
+        <translation>Náhled zrušen; pro nový výpočet změňte parametr.</translation>
     </message>
     <message>
         <source>Computing…</source>
-        <translation type="unfinished"></translation>
+        <translation>Počítá se…</translation>
     </message>
     <message>
         <source>%1 lines, %2 arcs, %3 helices, %4 cycles</source>
-        <translation type="unfinished"></translation>
+        <translation>přímky %1, oblouky %2, šroubovice %3, cykly %4</translation>
     </message>
     <message>
         <source> (%1 rapids; %2 ms)</source>
-        <translation type="unfinished"></translation>
+        <translation> (rychloposuvy %1; %2 ms)</translation>
     </message>
     <message>
         <source>Warning: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Varování: %1</translation>
     </message>
     <message>
         <source>Not applied: this operation cannot be made. Change it, or Cancel.
 %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Nepoužito: tuto operaci nelze vytvořit. Změňte ji, nebo zvolte Zrušit.
+%1</translation>
     </message>
     <message>
         <source>Working plane (3+2)</source>
-        <translation type="unfinished"></translation>
+        <translation>Pracovní rovina (3+2)</translation>
     </message>
     <message>
         <source>Swarf (simultaneous five-axis)</source>
-        <translation type="unfinished"></translation>
+        <translation>Obrábění bokem (simultánní pětiosé)</translation>
     </message>
 </context>
 <context>
     <name>camwb::gui::PocketPanel</name>
     <message>
         <source>Pattern</source>
-        <translation type="unfinished"></translation>
+        <translation>Strategie</translation>
     </message>
     <message>
         <source>Offset (spiral inward)</source>
-        <translation type="unfinished"></translation>
+        <translation>Ekvidistanta (spirála dovnitř)</translation>
     </message>
     <message>
         <source>Zig-zag</source>
-        <translation type="unfinished"></translation>
+        <translation>Cik-cak</translation>
     </message>
     <message>
         <source>Zig-zag angle</source>
-        <translation type="unfinished"></translation>
+        <translation>Úhel cik-cak</translation>
     </message>
     <message>
         <source> °</source>
-        <translation type="unfinished"></translation>
+        <translation> °</translation>
     </message>
     <message>
         <source>Stepover</source>
-        <translation type="unfinished"></translation>
+        <translation>Boční krok</translation>
     </message>
     <message>
         <source> % of Ø</source>
-        <translation type="unfinished"></translation>
+        <translation> % z Ø</translation>
     </message>
     <message>
         <source>Stepover (mm, 0 = use %)</source>
-        <translation type="unfinished"></translation>
+        <translation>Boční krok (mm, 0 = použít %)</translation>
     </message>
     <message>
         <source>Step-down (0 = one level)</source>
-        <translation type="unfinished"></translation>
+        <translation>Hloubka záběru (0 = jedna úroveň)</translation>
     </message>
     <message>
         <source>Wall stock</source>
-        <translation type="unfinished"></translation>
+        <translation>Přídavek na stěnách</translation>
     </message>
     <message>
         <source>Floor stock</source>
-        <translation type="unfinished"></translation>
+        <translation>Přídavek na dně</translation>
     </message>
     <message>
         <source>Finish walls</source>
-        <translation type="unfinished"></translation>
+        <translation>Dokončit stěny</translation>
     </message>
     <message>
         <source>Finish floor</source>
-        <translation type="unfinished"></translation>
+        <translation>Dokončit dno</translation>
     </message>
     <message>
         <source>Climb milling</source>
-        <translation type="unfinished"></translation>
+        <translation>Sousledné frézování</translation>
     </message>
     <message>
         <source>Entry</source>
-        <translation type="unfinished"></translation>
+        <translation>Zanoření</translation>
     </message>
     <message>
         <source>Helix</source>
-        <translation type="unfinished"></translation>
+        <translation>Šroubovice</translation>
     </message>
     <message>
         <source>Ramp</source>
-        <translation type="unfinished"></translation>
+        <translation>Rampa</translation>
     </message>
     <message>
         <source>Plunge</source>
-        <translation type="unfinished"></translation>
+        <translation>Kolmo</translation>
     </message>
     <message>
         <source>Helix diameter (0 = 90 % Ø)</source>
-        <translation type="unfinished"></translation>
+        <translation>Průměr šroubovice (0 = 90 % Ø)</translation>
     </message>
     <message>
         <source>Helix pitch</source>
-        <translation type="unfinished"></translation>
+        <translation>Stoupání šroubovice</translation>
     </message>
     <message>
         <source>Ramp angle</source>
-        <translation type="unfinished"></translation>
+        <translation>Úhel rampy</translation>
     </message>
     <message>
         <source>Tolerance</source>
-        <translation type="unfinished"></translation>
+        <translation>Tolerance</translation>
     </message>
 </context>
 <context>
     <name>camwb::gui::ProgramInfoDialog</name>
     <message>
         <source>%1 s</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 s</translation>
     </message>
     <message>
         <source>Program Information</source>
-        <translation type="unfinished"></translation>
+        <translation>Informace o programu</translation>
     </message>
     <message>
         <source> mm/min</source>
-        <translation type="unfinished"></translation>
+        <translation> mm/min</translation>
     </message>
     <message>
         <source>Rapid rate the time estimate assumes (the machine&apos;s, when it says)</source>
-        <translation type="unfinished"></translation>
+        <translation>Rychloposuv, se kterým počítá odhad času (strojový, pokud jej stroj uvádí)</translation>
     </message>
     <message>
         <source>Rapid rate:</source>
-        <translation type="unfinished"></translation>
+        <translation>Rychloposuv:</translation>
     </message>
     <message>
         <source>Interpreting the program…</source>
-        <translation type="unfinished"></translation>
+        <translation>Interpretuje se program…</translation>
     </message>
     <message>
         <source>%1 blocks interpreted, %2 diagnostic(s).</source>
-        <translation type="unfinished"></translation>
+        <translation>Interpretováno bloků: %1, hlášení: %2.</translation>
     </message>
     <message>
         <source>Extents (mm)</source>
-        <translation type="unfinished"></translation>
+        <translation>Rozměry (mm)</translation>
     </message>
     <message>
         <source>Cutting</source>
-        <translation type="unfinished"></translation>
+        <translation>Řezání</translation>
     </message>
     <message>
         <source>Rapid</source>
-        <translation type="unfinished"></translation>
+        <translation>Rychloposuv</translation>
     </message>
     <message>
         <source>All</source>
-        <translation type="unfinished"></translation>
+        <translation>Vše</translation>
     </message>
     <message>
         <source>Motion</source>
-        <translation type="unfinished"></translation>
+        <translation>Pohyb</translation>
     </message>
     <message>
         <source>Feed length</source>
-        <translation type="unfinished"></translation>
+        <translation>Délka posuvu</translation>
     </message>
     <message>
         <source>%1 mm</source>
-        <translation type="unfinished">%1 mm</translation>
+        <translation>%1 mm</translation>
     </message>
     <message>
         <source>Rapid length</source>
-        <translation type="unfinished"></translation>
+        <translation>Délka rychloposuvu</translation>
     </message>
     <message>
         <source>Feed time</source>
-        <translation type="unfinished"></translation>
+        <translation>Čas posuvu</translation>
     </message>
     <message>
         <source>Rapid time (at %1 mm/min)</source>
-        <translation type="unfinished"></translation>
+        <translation>Čas rychloposuvu (při %1 mm/min)</translation>
     </message>
     <message>
         <source>Dwell time</source>
-        <translation type="unfinished"></translation>
+        <translation>Čas prodlev</translation>
     </message>
     <message>
         <source>Rapids / feed moves / arcs</source>
-        <translation type="unfinished"></translation>
+        <translation>Rychloposuvy / posuvy / oblouky</translation>
     </message>
     <message>
         <source>Cycle holes</source>
-        <translation type="unfinished"></translation>
+        <translation>Díry cyklů</translation>
     </message>
     <message>
         <source>Tool changes</source>
-        <translation type="unfinished"></translation>
+        <translation>Výměny nástroje</translation>
     </message>
     <message>
         <source>Feed moves without a usable feed (not timed)</source>
-        <translation type="unfinished"></translation>
+        <translation>Pohyby bez použitelného posuvu (nečasováno)</translation>
     </message>
     <message>
         <source>Per tool</source>
-        <translation type="unfinished"></translation>
+        <translation>Podle nástroje</translation>
     </message>
     <message>
         <source>Tool</source>
-        <translation type="unfinished"></translation>
+        <translation>Nástroj</translation>
     </message>
     <message>
         <source>Feed length (mm)</source>
-        <translation type="unfinished"></translation>
+        <translation>Délka posuvu (mm)</translation>
     </message>
     <message>
         <source>Rapid length (mm)</source>
-        <translation type="unfinished"></translation>
+        <translation>Délka rychloposuvu (mm)</translation>
     </message>
     <message>
         <source>Z min (cutting)</source>
-        <translation type="unfinished"></translation>
+        <translation>Z min (řezání)</translation>
     </message>
     <message>
         <source>(none)</source>
-        <translation type="unfinished"></translation>
+        <translation>(žádný)</translation>
     </message>
     <message>
         <source>Diagnostics</source>
-        <translation type="unfinished"></translation>
+        <translation>Hlášení</translation>
     </message>
     <message>
         <source>… and %1 more</source>
-        <translation type="unfinished"></translation>
+        <translation>… a dalších %1</translation>
     </message>
     <message>
         <source>%1 blocks interpreted; %2 error(s), %3 other diagnostic(s): the figures cover what could be interpreted; %4 move(s) of blocks with an error are left out.</source>
-        <translation type="unfinished"></translation>
+        <translation>Interpretováno bloků: %1; chyby: %2, jiná hlášení: %3: údaje pokrývají, co šlo interpretovat; vynechané pohyby bloků s chybou: %4.</translation>
     </message>
     <message>
         <source>Estimate from distance and feed</source>
@@ -1833,50 +1838,50 @@ Save them first?</source>
     <name>camwb::gui::RenumberDialog</name>
     <message>
         <source>Renumber Blocks</source>
-        <translation type="unfinished"></translation>
+        <translation>Přečíslovat bloky</translation>
     </message>
     <message>
         <source>&amp;Start at:</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Začít od:</translation>
     </message>
     <message>
         <source>S&amp;tep:</source>
-        <translation type="unfinished"></translation>
+        <translation>Kr&amp;ok:</translation>
     </message>
     <message>
         <source>Number &amp;comment-only lines</source>
-        <translation type="unfinished"></translation>
+        <translation>Číslovat řádky jen s &amp;komentářem</translation>
     </message>
     <message>
         <source>Number &amp;empty lines</source>
-        <translation type="unfinished"></translation>
+        <translation>Číslovat &amp;prázdné řádky</translation>
     </message>
     <message>
         <source>&amp;Keep existing numbers, number only blocks without one</source>
-        <translation type="unfinished"></translation>
+        <translation>Po&amp;nechat stávající čísla, číslovat jen bloky bez čísla</translation>
     </message>
     <message>
         <source>Renumber &amp;only blocks that have a number</source>
-        <translation type="unfinished"></translation>
+        <translation>Přečíslovat &amp;jen bloky, které mají číslo</translation>
     </message>
     <message>
         <source>Heidenhain Klartext blocks are always numbered 0, 1, 2, … on every line (continuation lines excepted).</source>
-        <translation type="unfinished"></translation>
+        <translation>Bloky Heidenhain Klartext se vždy číslují 0, 1, 2, … na každém řádku (kromě pokračovacích řádků).</translation>
     </message>
     <message>
         <source>Jump targets (GOTOF N100, GOTO 100) follow their blocks. Labels, comments and strings are left as they are.</source>
-        <translation type="unfinished"></translation>
+        <translation>Cíle skoků (GOTOF N100, GOTO 100) následují své bloky. Návěští, komentáře a řetězce zůstávají beze změny.</translation>
     </message>
 </context>
 <context>
     <name>camwb::gui::ReportView</name>
     <message>
         <source>warning: </source>
-        <translation type="unfinished"></translation>
+        <translation>varování: </translation>
     </message>
     <message>
         <source>error: </source>
-        <translation type="unfinished"></translation>
+        <translation>chyba: </translation>
     </message>
 </context>
 <context>
@@ -2012,249 +2017,254 @@ Save them first?</source>
     <name>camwb::gui::SwarfPanel</name>
     <message>
         <source>Climb milling</source>
-        <translation type="unfinished"></translation>
+        <translation>Sousledné frézování</translation>
     </message>
     <message>
         <source>Axial offset</source>
-        <translation type="unfinished"></translation>
+        <translation>Axiální posunutí</translation>
     </message>
     <message>
         <source>The tool tip above (+) or below (−) the face&apos;s bottom edge, along the tool axis</source>
-        <translation type="unfinished"></translation>
+        <translation>Špička nástroje nad (+) nebo pod (−) spodní hranou plochy, ve směru osy nástroje</translation>
     </message>
     <message>
         <source>Radial stock</source>
-        <translation type="unfinished"></translation>
+        <translation>Radiální přídavek</translation>
     </message>
     <message>
         <source>Radial passes</source>
-        <translation type="unfinished"></translation>
+        <translation>Radiální průchody</translation>
     </message>
     <message>
         <source>Radial stepover</source>
-        <translation type="unfinished"></translation>
+        <translation>Radiální krok</translation>
     </message>
     <message>
         <source>Chord tolerance</source>
-        <translation type="unfinished"></translation>
+        <translation>Tolerance tětivy</translation>
     </message>
     <message>
         <source>Angle tolerance</source>
-        <translation type="unfinished"></translation>
+        <translation>Úhlová tolerance</translation>
     </message>
     <message>
         <source>The most the tool axis turns from one point to the next</source>
-        <translation type="unfinished"></translation>
+        <translation>Největší pootočení osy nástroje mezi dvěma body</translation>
     </message>
     <message>
         <source>Gouge tolerance</source>
-        <translation type="unfinished"></translation>
+        <translation>Tolerance podříznutí</translation>
     </message>
     <message>
         <source>How deep the tool may enter the model before the operation fails</source>
-        <translation type="unfinished"></translation>
+        <translation>Jak hluboko smí nástroj vniknout do modelu, než operace selže</translation>
     </message>
 </context>
 <context>
     <name>camwb::gui::View3D</name>
     <message>
         <source>3D view unavailable: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>3D pohled není k dispozici: %1</translation>
     </message>
     <message>
         <source>OpenGL is disabled (CAMWB_NO_OPENGL=1)</source>
-        <translation type="unfinished"></translation>
+        <translation>OpenGL je vypnuto (CAMWB_NO_OPENGL=1)</translation>
     </message>
     <message>
         <source>no GUI application</source>
-        <translation type="unfinished"></translation>
+        <translation>žádná GUI aplikace</translation>
     </message>
     <message>
         <source>the &apos;%1&apos; platform has no OpenGL display</source>
-        <translation type="unfinished"></translation>
+        <translation>platforma &apos;%1&apos; nemá displej OpenGL</translation>
     </message>
     <message>
         <source>cannot create an offscreen OpenGL surface</source>
-        <translation type="unfinished"></translation>
+        <translation>nelze vytvořit offscreen plochu OpenGL</translation>
     </message>
     <message>
         <source>cannot create an OpenGL 3.2 core context</source>
-        <translation type="unfinished"></translation>
+        <translation>nelze vytvořit kontext OpenGL 3.2 core</translation>
     </message>
     <message>
         <source>cannot make an OpenGL 3.2 core context current</source>
-        <translation type="unfinished"></translation>
+        <translation>nelze aktivovat kontext OpenGL 3.2 core</translation>
     </message>
     <message>
         <source>only OpenGL ES is available</source>
-        <translation type="unfinished"></translation>
+        <translation>k dispozici je jen OpenGL ES</translation>
     </message>
     <message>
         <source>OpenGL %1.%2 found, 3.2 needed</source>
-        <translation type="unfinished"></translation>
+        <translation>nalezeno OpenGL %1.%2, potřeba 3.2</translation>
     </message>
 </context>
 <context>
     <name>camwb::gui::Workbench</name>
     <message>
         <source>Opened job %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Otevřena úloha %1</translation>
     </message>
     <message>
         <source>Saved job %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Uložena úloha %1</translation>
     </message>
     <message>
         <source>There is no NC program to save; post the job first.</source>
-        <translation type="unfinished"></translation>
+        <translation>Není žádný NC program k uložení; nejprve úlohu postprocesujte.</translation>
     </message>
     <message>
         <source>Wrote NC program %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Zapsán NC program %1</translation>
     </message>
     <message>
         <source>Busy; import the model again when the current work has finished.</source>
-        <translation type="unfinished"></translation>
+        <translation>Zaneprázdněno; importujte model znovu, až současná práce skončí.</translation>
     </message>
     <message>
         <source>Importing %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Importuje se %1</translation>
     </message>
     <message>
         <source>Imported %1 (%2 faces)</source>
-        <translation type="unfinished"></translation>
+        <translation>Importováno %1 (ploch: %2)</translation>
     </message>
     <message>
         <source>Loading model</source>
-        <translation type="unfinished"></translation>
+        <translation>Načítá se model</translation>
     </message>
     <message>
         <source>Toolpath: %1 lines, %2 arcs, %3 rapids</source>
-        <translation type="unfinished"></translation>
+        <translation>Dráha nástroje: přímky %1, oblouky %2, rychloposuvy %3</translation>
     </message>
     <message>
         <source>Posted %1 lines with %2</source>
-        <translation type="unfinished"></translation>
+        <translation>Postprocesováno řádků: %1 pomocí %2</translation>
     </message>
     <message>
         <source>Open job</source>
-        <translation type="unfinished"></translation>
+        <translation>Otevřít úlohu</translation>
     </message>
     <message>
         <source>Save job</source>
-        <translation type="unfinished"></translation>
+        <translation>Uložit úlohu</translation>
     </message>
     <message>
         <source>Save NC program</source>
-        <translation type="unfinished"></translation>
+        <translation>Uložit NC program</translation>
     </message>
     <message>
         <source>The NC program is out of date and was not saved: %1
 Fix the job and post it again.</source>
-        <translation type="unfinished"></translation>
+        <translation>NC program je zastaralý a nebyl uložen: %1
+Opravte úlohu a znovu ji postprocesujte.</translation>
     </message>
     <message>
         <source>Import model</source>
-        <translation type="unfinished"></translation>
+        <translation>Importovat model</translation>
     </message>
     <message numerus="yes">
         <source>The previous model is not loaded, so the references of the %n operation(s) cannot be checked against %1. Keep them with their face, edge and hole numbers (check each operation), or delete them?</source>
-        <translation type="unfinished">
-            <numerusform></numerusform>
-            <numerusform></numerusform>
-            <numerusform></numerusform>
+        <translation>
+            <numerusform>Předchozí model není načten, takže odkazy %n operace nelze ověřit vůči %1. Ponechat je s čísly ploch, hran a děr (zkontrolujte každou operaci), nebo je smazat?</numerusform>
+            <numerusform>Předchozí model není načten, takže odkazy %n operací nelze ověřit vůči %1. Ponechat je s čísly ploch, hran a děr (zkontrolujte každou operaci), nebo je smazat?</numerusform>
+            <numerusform>Předchozí model není načten, takže odkazy %n operací nelze ověřit vůči %1. Ponechat je s čísly ploch, hran a děr (zkontrolujte každou operaci), nebo je smazat?</numerusform>
         </translation>
     </message>
     <message>
         <source>Keep the operations</source>
-        <translation type="unfinished"></translation>
+        <translation>Ponechat operace</translation>
     </message>
     <message>
         <source>Delete the operations</source>
-        <translation type="unfinished"></translation>
+        <translation>Smazat operace</translation>
     </message>
     <message>
         <source>These references of the operations are not in %1:
 %2
 
 Keep the operations without them (they are marked until you choose new geometry in their task panels), or delete the operations that lost references?</source>
-        <translation type="unfinished"></translation>
+        <translation>Tyto odkazy operací nejsou v %1:
+%2
+
+Ponechat operace bez nich (zůstanou označené, dokud v jejich panelech úkolu nezvolíte novou geometrii), nebo smazat operace, které odkazy ztratily?</translation>
     </message>
     <message>
         <source>Delete those operations</source>
-        <translation type="unfinished"></translation>
+        <translation>Smazat tyto operace</translation>
     </message>
     <message>
         <source>Import of %1 cancelled; the job is unchanged.</source>
-        <translation type="unfinished"></translation>
+        <translation>Import %1 zrušen; úloha je beze změny.</translation>
     </message>
     <message numerus="yes">
         <source>Deleted %n operation(s) that lost references.</source>
-        <translation type="unfinished">
-            <numerusform></numerusform>
-            <numerusform></numerusform>
-            <numerusform></numerusform>
+        <translation>
+            <numerusform>Smazána %n operace, která ztratila odkazy.</numerusform>
+            <numerusform>Smazány %n operace, které ztratily odkazy.</numerusform>
+            <numerusform>Smazáno %n operací, které ztratily odkazy.</numerusform>
         </translation>
     </message>
     <message>
         <source>Kept the operations; these references are not in the new model:
 %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Operace ponechány; tyto odkazy nejsou v novém modelu:
+%1</translation>
     </message>
     <message>
         <source>Post</source>
-        <translation type="unfinished"></translation>
+        <translation>Postprocesor</translation>
     </message>
     <message>
         <source>unresolved: the model is not loaded (%1)</source>
-        <translation type="unfinished"></translation>
+        <translation>nevyřešeno: model není načten (%1)</translation>
     </message>
     <message>
         <source>The job is being computed; save the NC program when the post has finished.</source>
-        <translation type="unfinished"></translation>
+        <translation>Úloha se počítá; NC program uložte, až postprocesování skončí.</translation>
     </message>
 </context>
 <context>
     <name>camwb::gui::WorkingPlaneBox</name>
     <message>
         <source>Flat (tool along Z)</source>
-        <translation type="unfinished"></translation>
+        <translation>Vodorovná (nástroj v ose Z)</translation>
     </message>
     <message>
         <source>Along a face&apos;s normal</source>
-        <translation type="unfinished"></translation>
+        <translation>Podle normály plochy</translation>
     </message>
     <message>
         <source>Spatial angles</source>
-        <translation type="unfinished"></translation>
+        <translation>Prostorové úhly</translation>
     </message>
     <message>
         <source>3+2: the plane the operation is computed in; the post tilts the machine to it. Flat drilling turns to each hole&apos;s own axis.</source>
-        <translation type="unfinished"></translation>
+        <translation>3+2: rovina, ve které se operace počítá; postprocesor do ní natočí stroj. Při volbě Vodorovná se vrtání natáčí do vlastní osy každé díry.</translation>
     </message>
     <message>
         <source>Plane</source>
-        <translation type="unfinished"></translation>
+        <translation>Rovina</translation>
     </message>
     <message>
         <source>The planar face whose outward normal the tool follows</source>
-        <translation type="unfinished"></translation>
+        <translation>Rovinná plocha, jejíž vnější normálu nástroj sleduje</translation>
     </message>
     <message>
         <source>Face</source>
-        <translation type="unfinished"></translation>
+        <translation>Plocha</translation>
     </message>
     <message>
         <source>A (about X)</source>
-        <translation type="unfinished"></translation>
+        <translation>A (kolem X)</translation>
     </message>
     <message>
         <source>B (about Y)</source>
-        <translation type="unfinished"></translation>
+        <translation>B (kolem Y)</translation>
     </message>
     <message>
         <source>C (about Z)</source>
-        <translation type="unfinished"></translation>
+        <translation>C (kolem Z)</translation>
     </message>
 </context>
 </TS>

@@ -324,7 +324,7 @@
     </message>
     <message>
         <source>Step-down (0 = one level)</source>
-        <translation>Hloubka záběru (0 = jedna úroveň)</translation>
+        <translation>Přísuv Z (0 = najednou)</translation>
     </message>
     <message>
         <source>Radial passes</source>
@@ -384,7 +384,7 @@
     </message>
     <message>
         <source>Helix diameter (0 = tool)</source>
-        <translation>Průměr šroubovice (0 = nástroj)</translation>
+        <translation>Ø šroubovice (0 = nástroj)</translation>
     </message>
     <message>
         <source>Helix pitch</source>
@@ -494,7 +494,7 @@
     <name>camwb::gui::GeometryList</name>
     <message>
         <source>Add selected faces</source>
-        <translation>Přidat vybrané plochy</translation>
+        <translation>Přidat výběr</translation>
     </message>
     <message>
         <source>Click faces in the 3D view (Ctrl+click for several), then add them here. For holes, click the hole&apos;s wall.</source>
@@ -1161,7 +1161,7 @@ Pracoviště pro CAM a postprocesory.</translation>
     </message>
     <message>
         <source>New &amp;Swarf (five-axis)…</source>
-        <translation>Nové obrábění &amp;bokem (pětiosé)…</translation>
+        <translation>Nové obrábění &amp;bokem (5osé)…</translation>
     </message>
     <message>
         <source>Simulator</source>
@@ -1364,19 +1364,19 @@ Pracoviště pro CAM a postprocesory.</translation>
     </message>
     <message>
         <source>none programmed (control default)</source>
-        <translation>žádná programována (výchozí řízení)</translation>
+        <translation>neprogramováno (výchozí řízení)</translation>
     </message>
     <message>
         <source>%1 (five-axis move)</source>
-        <translation>%1 (pětiosý pohyb)</translation>
+        <translation>%1 (5osý pohyb)</translation>
     </message>
     <message>
         <source>%1 (3-axis move)</source>
-        <translation>%1 (tříosý pohyb)</translation>
+        <translation>%1 (3osý pohyb)</translation>
     </message>
     <message>
         <source>none known (trace with a five-axis machine)</source>
-        <translation>neznámé (trasujte s pětiosým strojem)</translation>
+        <translation>neznámé (trasujte s 5osým strojem)</translation>
     </message>
     <message>
         <source>Tool axis</source>
@@ -1593,7 +1593,7 @@ Nejprve je uložit?</translation>
     </message>
     <message>
         <source>Swarf (simultaneous five-axis)</source>
-        <translation>Obrábění bokem (simultánní pětiosé)</translation>
+        <translation>Obrábění bokem (simultánní 5osé)</translation>
     </message>
 </context>
 <context>
@@ -1628,11 +1628,11 @@ Nejprve je uložit?</translation>
     </message>
     <message>
         <source>Stepover (mm, 0 = use %)</source>
-        <translation>Boční krok (mm, 0 = použít %)</translation>
+        <translation>Boční krok (mm, 0 = v %)</translation>
     </message>
     <message>
         <source>Step-down (0 = one level)</source>
-        <translation>Hloubka záběru (0 = jedna úroveň)</translation>
+        <translation>Přísuv Z (0 = najednou)</translation>
     </message>
     <message>
         <source>Wall stock</source>
@@ -1672,7 +1672,7 @@ Nejprve je uložit?</translation>
     </message>
     <message>
         <source>Helix diameter (0 = 90 % Ø)</source>
-        <translation>Průměr šroubovice (0 = 90 % Ø)</translation>
+        <translation>Ø šroubovice (0 = 90 % Ø)</translation>
     </message>
     <message>
         <source>Helix pitch</source>
@@ -2228,7 +2228,7 @@ Ponechat operace bez nich (zůstanou označené, dokud v jejich panelech úkolu 
     <name>camwb::gui::WorkingPlaneBox</name>
     <message>
         <source>Flat (tool along Z)</source>
-        <translation>Vodorovná (nástroj v ose Z)</translation>
+        <translation>Vodorovná (osa Z)</translation>
     </message>
     <message>
         <source>Along a face&apos;s normal</source>

@@ -435,7 +435,7 @@
     </message>
     <message>
         <source>Peck (full retract)</source>
-        <translation>Hluboké vrtání (úplný výjezd)</translation>
+        <translation>Hluboké vrtání (výjezd)</translation>
     </message>
     <message>
         <source>Chip breaking</source>

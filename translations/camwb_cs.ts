@@ -1449,7 +1449,7 @@ Nejprve je uložit?</translation>
     </message>
     <message>
         <source>Match case</source>
-        <translation>Rozlišovat velikost</translation>
+        <translation>Rozlišovat velikost písmen</translation>
     </message>
     <message>
         <source>Whole words</source>

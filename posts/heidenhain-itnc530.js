@@ -24,6 +24,7 @@ var post = {
     extension: "h",
     machine: "mas-mcvl1000",
     machines: ["mas-mcvl1000", "mas-mcvl1000-nikken-guaranteed"],
+    controls: ["heidenhain-itnc530"],
     capabilities: {
         arcPlanes: ["XY", "ZX", "YZ"],
         // CP IPA IZ in the working plane only: the iTNC 530 manual allows a helix about another main

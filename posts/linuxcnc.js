@@ -22,6 +22,7 @@ var post = {
     description: "LinuxCNC 2.9 (RS274NGC), 3-axis mill, mm",
     vendor: "LinuxCNC",
     extension: "ngc",
+    controls: ["linuxcnc"],
     capabilities: {
         arcPlanes: ["XY", "ZX", "YZ"],  // arcs in other planes reach the post as lines
         helicalArcs: true,

@@ -15,6 +15,7 @@ var post = {
     extension: "mpf",
     machine: "emco-concept-mill-105",
     machines: ["emco-concept-mill-105"],
+    controls: ["sinumerik-828d"],
     capabilities: {
         arcPlanes: ["XY", "ZX", "YZ"],
         helicalArcs: true,

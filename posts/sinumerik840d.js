@@ -22,6 +22,7 @@ var post = {
     vendor: "Siemens / DMG MORI",
     extension: "mpf",
     machine: "dmu50-840d",
+    controls: ["sinumerik-840d"],
     capabilities: {
         arcPlanes: ["XY", "ZX", "YZ"],
         helicalArcs: true,

@@ -64,6 +64,7 @@ struct PostInfo {
     std::vector<PropertyDef> properties;
     std::vector<std::string> machines;  // machine ids the post accepts; empty: any
     std::string defaultMachine;         // used when the job or the command line names none
+    std::vector<std::string> controls;  // controls it writes for ("sinumerik-828d"); empty: any
 
     const PropertyDef* property(const std::string& name) const;
 };

@@ -217,6 +217,14 @@ base::Status ScriptRun::readDeclarations(const std::string& source, PostInfo& in
     } else if (!machines.isUndefined()) {
         return declError("post.machines must be an array of machine ids", "machines");
     }
+    // Which controls the post writes for (kinematics::Machine::control): a GUI offers the post for
+    // the machines with one of them.
+    if (const QJSValue controls = m_post.property("controls"); controls.isArray()) {
+        for (int i = 0; i < controls.property("length").toInt(); ++i)
+            info.controls.push_back(str(controls.property(static_cast<quint32>(i))));
+    } else if (!controls.isUndefined()) {
+        return declError("post.controls must be an array of control names", "controls");
+    }
     info.defaultMachine = text(m_post, "machine");
     if (!info.defaultMachine.empty() && !info.machines.empty() &&
         std::find(info.machines.begin(), info.machines.end(), info.defaultMachine) == info.machines.end())

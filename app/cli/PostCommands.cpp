@@ -62,6 +62,7 @@ int showPost(const post::PostEntry& entry, const post::PostInfo& info)
     std::cout << "  extension:  " << info.extension << "\n";
     std::cout << "  machines:   " << (info.machines.empty() ? "any" : joined(info.machines))
               << (info.defaultMachine.empty() ? "" : " (default " + info.defaultMachine + ")") << "\n";
+    std::cout << "  controls:   " << (info.controls.empty() ? "any" : joined(info.controls)) << "\n";
     std::cout << "  arcs:       planes " << joined(caps.arcPlanes) << ", helical "
               << (caps.helicalPlanes.empty() ? "none" : joined(caps.helicalPlanes)) << ", at most "
               << number(caps.maxArcSweepDeg) << " deg per block, " << (caps.arcRadiusWords ? "radius" : "centre")

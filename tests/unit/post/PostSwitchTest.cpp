@@ -116,7 +116,7 @@ TEST(PostSwitch, ATypeChangeDropsEvenAValueTheNewTypeWouldAccept)
     moved = switchPost(values, from, to, true);
     EXPECT_EQ(moved.kept, (std::map<std::string, std::string>{{"numbers", "false"}}));
     ASSERT_EQ(moved.dropped.size(), 2u);
-    EXPECT_EQ(moved.dropped[1].reason, "to does not take 'text' per operation");
+    EXPECT_EQ(moved.dropped[0].reason, "to does not take 'text' per operation");
 
     // Without the old post's definitions (it could not be loaded) the new post alone decides.
     moved = switchPost(values, PostInfo{}, to);

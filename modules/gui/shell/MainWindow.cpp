@@ -20,6 +20,7 @@
 #include "gui/sim/SimPlayer.h"
 #include "gui/sim/SimRequest.h"
 #include "gui/tasks/OperationPanel.h"
+#include "gui/tasks/PostSettingsPanel.h"
 #include "gui/view3d/TaskOverlay.h"
 #include "gui/view3d/View3D.h"
 #include "kinematics/Machine.h"
@@ -262,6 +263,8 @@ void MainWindow::registerActions()
         if (!path.isEmpty())
             m_workbench->saveNc(path);
     });
+
+    registerPostSettingsActions(*m_actions, m_workbench, this);
 
     const QString nc = tr("&NC");
     add({"Cam.Nc.Open", tr("&Open NC Program…"), nc, QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_O), true}, [this] {

@@ -14,8 +14,10 @@
 #include <QObject>
 #include <QString>
 
+#include <map>
 #include <memory>
 #include <optional>
+#include <string>
 #include <vector>
 
 namespace camwb::gui {
@@ -86,6 +88,15 @@ public:
     // Replaces the operation as one undoable step ("Edit <name>"); unchanged operations add none.
     void updateOperation(int index, const document::Operation& operation);
     void removeOperation(int index);
+    // The job's post property values (text by name: the non-default ones) as one undoable step
+    // ("Post properties"); the same values add none. Defined in WorkbenchPost.cpp.
+    void setPostProperties(const std::map<std::string, std::string>& values);
+    // The job's post (and machine, when given) as one undoable step ("Post"): the property values
+    // the new post takes are kept (post::switchPost, operations' own values too), the dropped ones
+    // are reported by name; `values`, when given, replace the kept ones. A machine the new post
+    // does not drive gives way to its default (reported). False, reported, when it cannot load.
+    bool setPost(const std::string& postId, const std::optional<std::string>& machineId = {},
+                 const std::optional<std::map<std::string, std::string>>& values = {});
     void undo();
     void redo();
 

@@ -20,6 +20,8 @@
 #include <QElapsedTimer>
 #include <QLabel>
 #include <QLineEdit>
+#include <QMenu>
+#include <QMenuBar>
 #include <QSignalSpy>
 #include <QSpinBox>
 #include <QTest>
@@ -191,8 +193,17 @@ private slots:
         QVERIFY(defaultNc.contains(QLatin1String("\nN20 ")));
         QVERIFY(!defaultNc.contains(QLatin1String("\nN15 ")));
         const std::size_t steps = workbench.document().undoStack().count();
+        QMenu* jobMenu = nullptr;
+        for (QAction* menu : window.menuBar()->actions())
+            if (menu->text() == QLatin1String("&Job"))
+                jobMenu = menu->menu();
+        QVERIFY(jobMenu &&
+                jobMenu->actions().contains(window.actions().action(QStringLiteral("Cam.Job.PostSettings"))));
 
+        QElapsedTimer opening;  // printed, not asserted: the panel loads every post's declarations
+        opening.start();
         PostSettingsPanel* panel = openPanel(window);
+        qInfo("post settings panel opened in %lld ms", static_cast<long long>(opening.elapsed()));
         QVERIFY(panel);
         // The example's machine (the EMCO, SINUMERIK 828D) is served by the 828D post alone.
         QCOMPARE(panel->offeredPosts(), QStringList{QStringLiteral("sinumerik828d-emco")});

@@ -10,7 +10,10 @@
 
 #include "base/Vec.h"
 
+#include <QCoreApplication>
+
 #include <map>
+#include <memory>
 #include <optional>
 #include <ostream>
 #include <string>
@@ -57,18 +60,22 @@ int postToFile(const post::PostProcessor& post, const toolpath::Toolpath& toolpa
 struct ComputedJob {
     document::Job job;
     toolpath::Toolpath program;
-    document::ProgramReport report;  // warnings (their file: the job's) and motion counts, per operation
+    document::ProgramReport report;   // warnings (their file: the job's) and motion counts, per operation
+    std::optional<occ::Model> model;  // the model it was computed on
 };
 // Loads the job and its model and computes the program; on an error, reports it (fail()) and
 // returns nothing. The warnings are left to the caller to print.
 std::optional<ComputedJob> computeJobFile(const std::string& path);
 
-int runCommand(const std::vector<std::string>& args);    // camwb-cli run <job> -o <file>
-int postsCommand(const std::vector<std::string>& args);  // camwb-cli posts [<id>]
-int postCommand(const std::vector<std::string>& args);   // camwb-cli post <input> --post <id> ...
-int ncCommand(const std::vector<std::string>& args);     // camwb-cli nc trace <file> ...
-int clCommand(const std::vector<std::string>& args);     // camwb-cli cl <job> [-o <file>]
-int simCommand(const std::vector<std::string>& args);    // camwb-cli sim <job|program> ...
+int runCommand(const std::vector<std::string>& args);         // camwb-cli run <job> -o <file>
+int postsCommand(const std::vector<std::string>& args);       // camwb-cli posts [<id>]
+int postCommand(const std::vector<std::string>& args);        // camwb-cli post <input> --post <id> ...
+int ncCommand(const std::vector<std::string>& args);          // camwb-cli nc trace <file> ...
+int clCommand(const std::vector<std::string>& args);          // camwb-cli cl <job> [-o <file>]
+int simCommand(const std::vector<std::string>& args);         // camwb-cli sim <job|program> ...
+int setupSheetCommand(const std::vector<std::string>& args);  // camwb-cli setup-sheet <job> -o <html> ...
+// The application setup-sheet needs (a QGuiApplication, offscreen unless QT_QPA_PLATFORM says).
+std::unique_ptr<QCoreApplication> sheetApplication(int& argc, char** argv);
 
 // The machine `--machine <id>` names (an id or a machine file); none when `id` is empty.
 base::Result<std::optional<kinematics::Machine>> machineOption(const std::string& id);

@@ -28,6 +28,8 @@ void printUsage(std::ostream& out)
            "                      [--model <part>] [--stock x0,y0,z0,x1,y1,z1|<blank file>] [--tool-table FILE]\n"
            "                      [--stock-profile x0,z0,x1,z1|<X,Z file> --insert-width mm [--design-profile ...]]\n"
            "                      [--measured <trace.csv> [--measured-z-offset mm]] [--analysis]\n"
+           "       camwb-cli setup-sheet <job.camwb> -o <sheet.html> [--pdf <sheet.pdf>] [--machine <id>]\n"
+           "                      [--no-sim] [--margin mm]\n"
            "\n"
            "run:   loads the job and its model, recomputes every operation, posts the program with\n"
            "       the job's post, machine and post properties and writes the NC file.\n"
@@ -65,6 +67,11 @@ void printUsage(std::ostream& out)
            "       X Y Z and the two rotaries) through the machine's chain onto the workpiece: how far the\n"
            "       actual tip followed the nominal one and strayed from the program, and each axis' reversals.\n"
            "       --analysis adds the same analysis of the planned motion (reversals, the tip's top feed).\n"
+           "setup-sheet: writes the operator's setup sheet: the tools with the stick-out each needs (its\n"
+           "       deepest tip below the stock or model top plus --margin, default 2 mm), stock and work\n"
+           "       zero, machine and post, each operation's tool, feeds, heights, time and picture, and\n"
+           "       what the simulator found (unless --no-sim); pictures in <sheet>-images/ beside it,\n"
+           "       optionally a PDF. Nothing is replaced unless everything was written.\n"
            "\n"
            "Posts are looked up in --post-path folders, $CAMWB_POST_PATH, ~/.local/share/camwb/posts\n"
            "and the built-in folders, in that order: a user's post overrides a built-in one.\n"
@@ -198,6 +205,7 @@ std::optional<ComputedJob> computeJobFile(const std::string& path)
         warning.file = path;
     computed.job = std::move(job).value();
     computed.program = std::move(program).value();
+    computed.model = std::move(model).value();
     return computed;
 }
 

@@ -249,16 +249,6 @@ bool loadModelAndStock(const SimOptions& options, Input& input)
     return true;
 }
 
-// A resolution that keeps the stock near a million columns when the user gives none.
-double defaultResolution(const base::Box3& box)
-{
-    const double area = (box.max.x - box.min.x) * (box.max.y - box.min.y);
-    double r = 0.1;
-    while (area / (r * r) > 4e6)
-        r *= 2;
-    return r;
-}
-
 std::string mm(double value) { return base::formatFixed(value, 3); }
 
 nlohmann::json point(const base::Vec3& p) { return {p.x, p.y, p.z}; }
@@ -309,7 +299,8 @@ int simCommand(const std::vector<std::string>& args)
         spec.emplace();
         spec->box = input->stockBox;
         spec->blank = input->stockMesh;
-        spec->resolutionMm = options.resolutionMm > 0 ? options.resolutionMm : defaultResolution(stockBounds);
+        spec->resolutionMm =
+            options.resolutionMm > 0 ? options.resolutionMm : document::defaultStockResolution(stockBounds);
         spec->design = input->design;
         spec->gougeToleranceMm = options.toleranceMm;
     }

@@ -9,8 +9,11 @@
 int main(int argc, char** argv)
 {
     using namespace camwb::cli;
-    // QJSEngine (post scripts) needs a core application object; nothing here needs a display.
-    QCoreApplication app(argc, argv);
+    // QJSEngine (post scripts) needs a core application object; nothing here needs a display
+    // (setup-sheet's fonts and pictures need a GUI one, on the offscreen platform).
+    const bool sheet = argc > 1 && std::string(argv[1]) == "setup-sheet";
+    const std::unique_ptr<QCoreApplication> app =
+        sheet ? sheetApplication(argc, argv) : std::make_unique<QCoreApplication>(argc, argv);
     const std::vector<std::string> args(argv + 1, argv + argc);
 
     if (args.empty() || args[0] == "--help" || args[0] == "-h") {
@@ -34,5 +37,7 @@ int main(int argc, char** argv)
         return ncCommand(rest);
     if (args[0] == "sim")
         return simCommand(rest);
+    if (args[0] == "setup-sheet")
+        return setupSheetCommand(rest);
     return usageError("unknown command '" + args[0] + "'");
 }

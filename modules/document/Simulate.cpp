@@ -28,6 +28,15 @@ base::Result<std::optional<kinematics::Machine>> jobMachine(const Job& job)
     return post::machineForPost(post.value().info(), job.machineId, kinematics::defaultMachineDirs());
 }
 
+double defaultStockResolution(const base::Box3& box)
+{
+    const double area = (box.max.x - box.min.x) * (box.max.y - box.min.y);
+    double r = 0.1;
+    while (area / (r * r) > 4e6)
+        r *= 2;
+    return r;
+}
+
 base::Box3 jobStockBox(const Job& job, const occ::Model& model)
 {
     if (const std::optional<base::Box3> box = job.stock.box())

@@ -36,6 +36,10 @@ sim::TriangleMesh designMesh(const occ::Model& model, double deflectionMm = 0.01
 // The machine a job runs on: the job's own, else its post's default; none when neither names one.
 base::Result<std::optional<kinematics::Machine>> jobMachine(const Job& job);
 
+// A stock resolution that keeps the stock near a million columns, for a simulation whose user
+// gives none (camwb-cli sim, the setup sheet).
+double defaultStockResolution(const base::Box3& box);
+
 // The job's stock box; a job without one (min == max) takes the model's bounds.
 base::Box3 jobStockBox(const Job& job, const occ::Model& model);
 

@@ -2,6 +2,7 @@
 #  - project headers: only from the module itself and the modules below it (design.md §2);
 #  - OCCT headers: only in modules/occ sources and its private detail/ headers, never in a public header;
 #  - VTK and QScintilla: only in modules/gui, never in a gui header outside view3d/ and editor/ internals;
+#  - sheet: QtGui only (no widgets), so camwb-cli draws the setup sheet headless;
 #  - Qt: not at all in the kernels (base, geom, toolpath, kinematics, sim, ops, occ, nc, document); in post only in .cpp files.
 cmake_minimum_required(VERSION 3.25)
 set(allowed_base base)
@@ -14,7 +15,8 @@ set(allowed_ops base geom toolpath kinematics sim ops)
 set(allowed_post base geom toolpath kinematics sim post)
 set(allowed_nc base geom toolpath kinematics sim nc)
 set(allowed_document base geom toolpath kinematics sim occ ops post nc document)
-set(allowed_gui base geom toolpath kinematics sim occ ops post nc document gui)
+set(allowed_sheet base geom toolpath kinematics sim occ ops post nc document sheet)
+set(allowed_gui base geom toolpath kinematics sim occ ops post nc document sheet gui)
 set(qt_free base geom toolpath kinematics sim ops occ nc document)
 
 file(GLOB occt_headers RELATIVE ${OCCT_INCLUDE_DIR} ${OCCT_INCLUDE_DIR}/*.hxx)
@@ -31,7 +33,7 @@ foreach(file IN LISTS files)
   foreach(line IN LISTS includes)
     string(REGEX REPLACE "^[ \t]*#[ \t]*include[ \t]*[<\"]([^>\"]+)[>\"].*" "\\1" header "${line}")
     # Project headers "<module>/<...>".
-    if(header MATCHES "^(base|geom|toolpath|kinematics|sim|occ|ops|post|nc|document|gui)/")
+    if(header MATCHES "^(base|geom|toolpath|kinematics|sim|occ|ops|post|nc|document|sheet|gui)/")
       string(REGEX MATCH "^[^/]+" target "${header}")
       if(NOT target IN_LIST allowed_${module})
         string(APPEND violations "modules/${file}: ${module} may not include ${header}\n")
@@ -58,6 +60,10 @@ foreach(file IN LISTS files)
         string(APPEND violations "modules/${file}: Qt header ${header} in the Qt-free module ${module}\n")
       elseif(module STREQUAL "post" AND file MATCHES "\\.h$" AND NOT file MATCHES "^post/detail/")
         string(APPEND violations "modules/${file}: Qt header ${header} in a public post header\n")
+      elseif(file MATCHES "^sheet/SheetHtml")
+        string(APPEND violations "modules/${file}: Qt header ${header} in the sheet's Qt-free HTML writer\n")
+      elseif(module STREQUAL "sheet" AND header MATCHES "^(QtWidgets/|QApplication$|QWidget$|QDialog$|QMainWindow$|QFileDialog$|QMessageBox$)")
+        string(APPEND violations "modules/${file}: widget header ${header} in sheet (QtGui only)\n")
       endif()
     endif()
   endforeach()

@@ -1,0 +1,220 @@
+#include "document/SetupSheet.h"
+
+#include "document/JobPipeline.h"
+#include "document/OperationGeometry.h"
+#include "document/Simulate.h"
+#include "occ/Model.h"
+#include "sim/MotionPlan.h"
+#include "sim/Simulation.h"
+#include "toolpath/ProgramStats.h"
+#include "toolpath/Toolpath.h"
+
+#include <algorithm>
+#include <filesystem>
+#include <map>
+
+namespace camwb::document {
+
+namespace {
+
+constexpr std::size_t kFindingsShown = 5;
+
+// The highest point of `box` along `axis` (towards the spindle).
+double highestAlong(const base::Box3& box, const base::Vec3& axis)
+{
+    double top = -1e300;
+    for (const base::Vec3& corner : base::boxCorners(box.min, box.max))
+        top = std::max(top, corner.dot(axis));
+    return top;
+}
+
+SheetOperation sheetOperation(const Job& job, const Operation& op, const occ::Model& model)
+{
+    SheetOperation out;
+    out.name = op.name();
+    out.kind = kindLabel(op.kind());
+    out.toolNumber = op.toolNumber;
+    if (const ops::ToolController* tc = job.tool(op.toolNumber)) {
+        out.spindleRpm = tc->spindleRpm;
+        out.cuttingFeed = tc->cuttingFeedMmPerMin;
+        out.plungeFeed = tc->plungeFeedMmPerMin;
+        out.rampFeed = tc->rampFeed();
+    }
+    // The heights the job computed the operation with (the program does not keep them).
+    if (auto geometry = resolveGeometry(op, model))
+        out.heights = resolveHeights(op, geometry.value(), model, job.stock);
+    if (const auto* contour = std::get_if<ops::ContourParams>(&op.params))
+        out.stepDownMm = contour->stepDownMm;
+    else if (const auto* pocket = std::get_if<ops::PocketParams>(&op.params))
+        out.stepDownMm = pocket->stepDownMm;
+    return out;
+}
+
+SheetVerification verification(const sim::SimulationResult& result, double resolutionMm, const Job& job,
+                               const std::string& jobPath, const toolpath::Toolpath& program)
+{
+    SheetVerification out;
+    out.run = true;
+    out.resolutionMm = resolutionMm;
+    out.maxGougeMm = result.deviation.maxGougeMm;
+    for (const sim::Check& check : result.checks) {
+        if (check.severity == base::Severity::Warning)
+            ++out.warnings;
+        if (check.severity != base::Severity::Error)
+            continue;
+        switch (check.kind) {
+        case sim::CheckKind::Gouge:
+            ++out.gouges;
+            break;
+        case sim::CheckKind::HolderCollision:
+            ++out.holderCollisions;
+            break;
+        case sim::CheckKind::RapidInStock:
+            ++out.rapidsInStock;
+            break;
+        case sim::CheckKind::MachineLimit:
+            ++out.machineLimits;
+            break;
+        default:
+            ++out.otherErrors;
+            break;
+        }
+        if (out.firstFindings.size() < kFindingsShown) {
+            const RecordPlace place = placeOfRecord(job, jobPath, program, check.record);
+            out.firstFindings.push_back(place.operation.empty() ? check.message
+                                                                : place.operation + ": " + check.message);
+        }
+    }
+    return out;
+}
+
+std::vector<std::pair<std::string, std::string>> changedProperties(const Job& job, const post::PostInfo& info)
+{
+    std::vector<std::pair<std::string, std::string>> out;
+    for (const auto& [name, value] : job.postProperties) {
+        const post::PropertyDef* def = info.property(name);
+        if (!def || def->defaultValue != value)
+            out.emplace_back(name, value);
+    }
+    return out;
+}
+
+}  // namespace
+
+std::string workOffsetName(int offset)
+{
+    if (offset >= 1 && offset <= 6)
+        return "G5" + std::to_string(3 + offset);
+    return "offset " + std::to_string(offset);
+}
+
+std::optional<double> requiredStickOut(const sim::MoveList& moves, int tool, const base::Box3& clear, double marginMm)
+{
+    std::optional<double> deepest;
+    for (const sim::Move& move : moves.moves) {
+        if (move.tool != tool || !move.moves() || !move.positionKnown)
+            continue;
+        for (const auto& [tip, axis] : {std::pair{move.from, move.fromAxis}, std::pair{move.to, move.toAxis}}) {
+            const double depth = std::max(0.0, highestAlong(clear, axis) - tip.dot(axis));
+            deepest = std::max(deepest.value_or(0.0), depth);
+        }
+    }
+    if (!deepest)
+        return std::nullopt;
+    return *deepest + marginMm;
+}
+
+base::Result<SetupSheet> collectSetupSheet(const Job& job, const std::string& jobPath, const occ::Model& model,
+                                           const toolpath::Toolpath& program, const SheetOptions& options)
+{
+    SetupSheet sheet;
+    sheet.jobName = job.name;
+    const post::PostContext context = post::PostContext::fromEnvironment(job.name);
+    sheet.created = post::formatDateUtc(context.dateEpochSeconds);
+    sheet.user = context.user;
+    sheet.version = context.version;
+    sheet.jobFile = std::filesystem::path(jobPath).filename().string();
+    sheet.modelFile = std::filesystem::path(job.modelPath).filename().string();
+    sheet.stock = job.stock.box();
+    sheet.modelBounds = base::Box3{model.boundsMin(), model.boundsMax(), false};
+    sheet.workOffset = job.workOffset;
+    sheet.stickOutMarginMm = options.stickOutMarginMm;
+
+    auto post = loadJobPost(job, options.postDirs);
+    if (!post)
+        return post.error();
+    const post::PostInfo& info = post.value().info();
+    sheet.postId = info.id;
+    sheet.postDescription = info.description;
+    sheet.postProperties = changedProperties(job, info);
+    sheet.ncFile = std::filesystem::path(jobPath).stem().string() + "." + info.extension;
+
+    std::optional<kinematics::Machine> machine = options.machine;
+    if (!machine) {
+        auto found = jobMachine(job);
+        if (!found)
+            return found.error();
+        machine = std::move(found).value();
+    }
+    if (machine) {
+        sheet.machineId = machine->id;
+        sheet.machineName = machine->name;
+    }
+
+    // The moves: simulated against the stock and model when asked, else only built.
+    const base::Box3 stockBox = jobStockBox(job, model);
+    sim::SimulationResult simulated;
+    if (options.simulate) {
+        sim::StockSpec spec;
+        spec.box = stockBox;
+        spec.resolutionMm = defaultStockResolution(stockBox);
+        spec.design = designMesh(model);
+        sim::SimulationSetup setup;
+        setup.machine = machine ? &*machine : nullptr;
+        setup.stockSpec = &spec;
+        simulated = sim::simulate(program, setup);
+        sheet.verification = verification(simulated, spec.resolutionMm, job, jobPath, program);
+    } else {
+        simulated.moves = sim::buildMoves(program);
+    }
+    const sim::MoveList& moves = simulated.moves;
+
+    // Time: planned with the machine's accelerations, per operation by where each move came from.
+    const kinematics::Machine planMachine = machine ? *machine : kinematics::defaultLimitsMachine();
+    const sim::MotionPlan plan = sim::planMotion(moves, planMachine);
+    toolpath::StatsOptions statsOptions;
+    statsOptions.rapidMmPerMin = kinematics::estimateRapidMmPerMin(machine ? &*machine : nullptr);
+    const toolpath::ProgramStats stats = toolpath::programStats(program, statsOptions);
+    sheet.cycleSeconds = plan.totalSeconds;
+    sheet.simpleSeconds = stats.totals.totalSeconds();
+    sheet.rapidLengthMm = stats.totals.rapidLengthMm;
+    sheet.feedLengthMm = stats.totals.feedLengthMm;
+
+    for (const Operation& op : job.operations)
+        sheet.operations.push_back(sheetOperation(job, op, model));
+    for (std::size_t k = 0; k < moves.moves.size() && k < plan.moves.size(); ++k) {
+        const int index = program.source(moves.moves[k].record).operationIndex;
+        if (index >= 0 && index < static_cast<int>(sheet.operations.size()))
+            sheet.operations[index].seconds += plan.moves[k].end() - plan.moves[k].start;
+    }
+
+    // Tools by number, with the stick-out their moves need over the stock and the model.
+    base::Box3 clear = stockBox;
+    clear.add(sheet.modelBounds.min);
+    clear.add(sheet.modelBounds.max);
+    std::map<int, SheetTool> tools;
+    for (const ops::ToolController& tc : job.tools) {
+        SheetTool& tool = tools[tc.tool.number];
+        tool.controller = tc;
+        tool.stickOutMm = requiredStickOut(moves, tc.tool.number, clear, options.stickOutMarginMm);
+        tool.tooShort = tool.stickOutMm && tc.tool.lengthMm > 0 && tc.tool.lengthMm < *tool.stickOutMm;
+    }
+    for (const Operation& op : job.operations)
+        if (auto it = tools.find(op.toolNumber); it != tools.end())
+            it->second.operations.push_back(op.name());
+    for (auto& [number, tool] : tools)
+        sheet.tools.push_back(std::move(tool));
+    return sheet;
+}
+
+}  // namespace camwb::document

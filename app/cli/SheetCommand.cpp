@@ -72,6 +72,18 @@ std::string parseSheetOptions(const std::vector<std::string>& args, SheetCommand
     return {};
 }
 
+QtMessageHandler g_previousHandler = nullptr;
+
+// The offscreen platform's note that XDG_RUNTIME_DIR is not set (it falls back to a folder of
+// its own) says nothing about the sheet; stderr stays for the command's own messages.
+void dropRuntimeDirNote(QtMsgType type, const QMessageLogContext& context, const QString& message)
+{
+    if (type == QtWarningMsg && message.startsWith(QStringLiteral("QStandardPaths: XDG_RUNTIME_DIR not set")))
+        return;
+    if (g_previousHandler)
+        g_previousHandler(type, context, message);
+}
+
 }  // namespace
 
 std::unique_ptr<QCoreApplication> sheetApplication(int& argc, char** argv)
@@ -79,6 +91,7 @@ std::unique_ptr<QCoreApplication> sheetApplication(int& argc, char** argv)
     // Fonts and images need a GUI application, a display does not: offscreen unless told otherwise.
     if (!std::getenv("QT_QPA_PLATFORM"))
         setenv("QT_QPA_PLATFORM", "offscreen", 1);
+    g_previousHandler = qInstallMessageHandler(dropRuntimeDirNote);
     return std::make_unique<QGuiApplication>(argc, argv);
 }
 

@@ -12,7 +12,7 @@ packages=(
   libocct-data-exchange-dev libocct-ocaf-dev
   libeigen3-dev libvtk9-dev libqscintilla2-qt6-dev libpolyclipping-dev nlohmann-json3-dev
   libgtest-dev libgmock-dev libbenchmark-dev clang-14 libclang-rt-14-dev
-  xvfb xauth libgl1-mesa-dri libglx-mesa0 fonts-dejavu-core
+  xvfb xauth libgl1-mesa-dri libglx-mesa0 fonts-dejavu-core poppler-utils
 )
 if [[ "${1:-}" == "--external" ]]; then
   packages+=(freecad linuxcnc-uspace)

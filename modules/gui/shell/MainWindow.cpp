@@ -14,6 +14,7 @@
 #include "gui/shell/NewOperation.h"
 #include "gui/shell/Prompter.h"
 #include "gui/shell/ReportView.h"
+#include "gui/shell/SetupSheetActions.h"
 #include "gui/shell/Workbench.h"
 #include "gui/sim/SimActions.h"
 #include "gui/sim/SimDock.h"
@@ -263,6 +264,9 @@ void MainWindow::registerActions()
         if (!path.isEmpty())
             m_workbench->saveNc(path);
     });
+    registerSetupSheetActions(
+        *m_actions, jobMenu, m_workbench, [this]() -> Prompter& { return *m_prompter; },
+        [this] { return m_view->grabImage(); });
 
     registerPostSettingsActions(*m_actions, m_workbench, this);
 

@@ -12,6 +12,7 @@ using document::SetupSheet;
 using document::workOffsetName;
 
 std::string mm(double value) { return base::formatFixed(value, 3); }
+std::string signedMm(double value) { return (value >= 0 ? "+" : "") + mm(value); }
 std::string fixed1(double value) { return base::formatFixed(value, 1); }
 std::string whole(double value) { return base::formatFixed(value, 0); }
 
@@ -69,7 +70,7 @@ std::string toolTable(const SetupSheet& sheet)
         const toolpath::Tool& tool = t.controller.tool;
         std::string stickOut = t.stickOutMm ? mm(*t.stickOutMm) : std::string("not used");
         if (t.tooShort)
-            stickOut += " (longer than the tool: " + mm(tool.lengthMm) + ")";
+            stickOut += " - TOOL TOO SHORT (" + mm(tool.lengthMm) + " overall)";
         std::string users;
         for (const std::string& op : t.operations)
             users += (users.empty() ? "" : ", ") + op;
@@ -91,10 +92,12 @@ std::string stockTable(const SetupSheet& sheet)
         rows.push_back({"Stock box (from, to)", vec(s.min) + "  to  " + vec(s.max)});
         rows.push_back({"Stock size (X \u00d7 Y \u00d7 Z)", mm(s.max.x - s.min.x) + " \u00d7 " + mm(s.max.y - s.min.y) +
                                                                 " \u00d7 " + mm(s.max.z - s.min.z) + " mm"});
-        // Where the program zero lies, measured from the corner the operator touches off.
-        rows.push_back({"Program zero (X0 Y0 Z0)", "from the stock's front left bottom corner: X " + mm(-s.min.x) +
-                                                       "  Y " + mm(-s.min.y) + "  Z " + mm(-s.min.z) +
-                                                       " mm; stock top at Z " + mm(s.max.z)});
+        // Where the program zero lies, measured from what the operator touches off: the stock's
+        // front left corner and its top.
+        rows.push_back({"Program zero X0 Y0", signedMm(-s.min.x) + " / " + signedMm(-s.min.y) +
+                                                  " mm from the stock's front left corner (X min, Y min)"});
+        const std::string belowTop = s.max.z >= 0 ? mm(s.max.z) + " mm below" : mm(-s.max.z) + " mm above";
+        rows.push_back({"Program zero Z0", belowTop + " the stock top (the stock bottom is at Z " + mm(s.min.z) + ")"});
     } else {
         rows.push_back({"Stock", "none given: the model's bounds"});
     }

@@ -90,6 +90,14 @@ TEST(SetupSheet, ExampleJobToolsOperationsAndTimes)
     }
     // Every move but the work offset's belongs to an operation.
     EXPECT_NEAR(sum, sheet->cycleSeconds, 1e-6);
+    EXPECT_FALSE(sheet->tools[0].tooShort);
+
+    // A T1 of 7 mm cannot stick out the 8 mm its contour needs.
+    job.value().tools[0].tool.lengthMm = 7;
+    auto shortTool = collectSetupSheet(job.value(), path, model.value(), program.value(), options);
+    ASSERT_TRUE(shortTool);
+    EXPECT_TRUE(shortTool->tools[0].tooShort);
+    EXPECT_FALSE(shortTool->tools[1].tooShort);
 }
 
 }  // namespace

@@ -197,7 +197,8 @@ std::string sheetHtml(const SetupSheet& sheet, const SheetImages& images)
     out += summary(sheet);
     out += "<h2>Tools</h2>\n<p>Minimum stick-out: from the holder face to the tool tip, the deepest the tip goes "
            "below the highest point the holder must clear (stock or model top) plus " +
-           mm(sheet.stickOutMarginMm) + " mm.</p>\n";
+           mm(sheet.stickOutMarginMm) +
+           " mm; for a tilted tool, below the highest corner of the stock along its axis.</p>\n";
     out += toolTable(sheet);
     out += "<h2>Stock and work zero</h2>\n" + stockTable(sheet);
     out += image(images.part,

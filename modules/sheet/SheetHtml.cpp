@@ -178,6 +178,7 @@ std::string escapeHtml(const std::string& text)
 
 std::string formatDuration(double seconds)
 {
+    seconds = std::round(seconds * 10) / 10;  // as shown, so that 119.97 s is not "1 min 60.0 s"
     if (seconds < 60)
         return base::formatFixed(seconds, 1) + " s";
     const double minutes = std::floor(seconds / 60);

@@ -7,6 +7,8 @@
 // --screenshot the picture waits for the panel's preview.
 #include "camwb_version.h"
 #include "gui/shell/MainWindow.h"
+#include "gui/shell/Preferences.h"
+#include "gui/shell/Session.h"
 #include "gui/shell/Workbench.h"
 #include "gui/tasks/OperationPanel.h"
 #include "gui/tasks/PreviewRunner.h"
@@ -52,10 +54,13 @@ struct CommandLine {
         QCoreApplication::setApplicationName(QStringLiteral("CAM Workbench"));
         QCoreApplication::setApplicationVersion(QStringLiteral(CAMWB_VERSION));
         QCoreApplication::setOrganizationName(QStringLiteral("camwb"));
-        if (qtTranslator.load(QLocale(), QStringLiteral("qtbase"), QStringLiteral("_"),
+        // The language of the preferences (System: the user's locale); a change applies at the next start.
+        const QLocale locale = camwb::gui::uiLocale(camwb::gui::Preferences::load().language);
+        QLocale::setDefault(locale);
+        if (qtTranslator.load(locale, QStringLiteral("qtbase"), QStringLiteral("_"),
                               QLibraryInfo::path(QLibraryInfo::TranslationsPath)))
             QCoreApplication::installTranslator(&qtTranslator);
-        if (appTranslator.load(QLocale(), QStringLiteral("camwb"), QStringLiteral("_"), QStringLiteral(":/i18n")))
+        if (appTranslator.load(locale, QStringLiteral("camwb"), QStringLiteral("_"), QStringLiteral(":/i18n")))
             QCoreApplication::installTranslator(&appTranslator);
         parser.setApplicationDescription(QStringLiteral("CAM and post-processor workbench"));
         parser.addHelpOption();
@@ -106,7 +111,9 @@ int main(int argc, char** argv)
     window.show();
     const QStringList jobs = parser.positionalArguments();
     if (!jobs.isEmpty())
-        window.openJob(jobs.first());
+        window.openJob(jobs.first());    // offers to recover its autosave when there is a newer one
+    else if (!parser.isSet(screenshot))  // a picture taken unattended must not wait for an answer
+        window.session().offerRecoveryAtStart();
 
     const int operation = parser.value(editOperation).toInt();
     if (operation > 0) {

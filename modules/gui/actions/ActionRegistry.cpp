@@ -5,6 +5,8 @@
 #include <QMenuBar>
 #include <QToolBar>
 
+#include <algorithm>
+
 namespace camwb::gui {
 
 ActionRegistry::ActionRegistry(QObject* parent) : QObject(parent) {}
@@ -52,6 +54,17 @@ bool ActionRegistry::trigger(const QString& id)
         return false;
     a->trigger();
     return true;
+}
+
+void ActionRegistry::moveBefore(const QString& id, const QString& beforeId)
+{
+    auto byId = [](const QString& wanted) { return [&wanted](const Entry& e) { return e.spec.id == wanted; }; };
+    auto moved = std::find_if(m_entries.begin(), m_entries.end(), byId(id));
+    if (moved == m_entries.end() || std::none_of(m_entries.begin(), m_entries.end(), byId(beforeId)))
+        return;
+    Entry entry = *moved;
+    m_entries.erase(moved);
+    m_entries.insert(std::find_if(m_entries.begin(), m_entries.end(), byId(beforeId)), entry);
 }
 
 void ActionRegistry::buildMenus(QMenuBar* menuBar) const

@@ -38,6 +38,9 @@ public:
     // Registers an action made elsewhere (a dock's show/hide action) for the menus and by id; it
     // keeps its own text and owner.
     QAction* adopt(const ActionSpec& spec, QAction* action);
+    // Puts `id` just before `beforeId` in the menus and the toolbar (an action registered later
+    // by its own file that belongs higher in a menu, as New above Open). Unknown ids: no-op.
+    void moveBefore(const QString& id, const QString& beforeId);
     QAction* action(const QString& id) const;  // nullptr when unknown
     QStringList ids() const;                   // in registration order
     // Triggers an enabled action by id; false when unknown or disabled.

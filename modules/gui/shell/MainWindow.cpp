@@ -13,7 +13,9 @@
 #include "gui/shell/NcDocument.h"
 #include "gui/shell/NewOperation.h"
 #include "gui/shell/Prompter.h"
+#include "gui/shell/RecentFiles.h"
 #include "gui/shell/ReportView.h"
+#include "gui/shell/Session.h"
 #include "gui/shell/SetupSheetActions.h"
 #include "gui/shell/Workbench.h"
 #include "gui/sim/SimActions.h"
@@ -142,8 +144,8 @@ bool MainWindow::openJob(const QString& path)
     if (!m_ncDocument->mayReplace(
             tr("Opening the job %1 replaces them with its program.").arg(QFileInfo(path).fileName())))
         return false;
-    closeTaskPanel();  // its operation belongs to the job being replaced
-    return m_workbench->openJob(path);
+    closeTaskPanel();                 // its operation belongs to the job being replaced
+    return m_session->openJob(path);  // offers to recover a newer autosave first
 }
 
 bool MainWindow::openNcFile(const QString& path)
@@ -161,6 +163,7 @@ bool MainWindow::openNcFile(const QString& path)
     showProgramState();
     m_inspector->loadProgram(QString::fromStdString(text.value()), QFileInfo(path).absoluteFilePath());
     m_ncDocument->openedFile(path);
+    m_session->recentFiles().add(path);
     m_report->append(Workbench::Severity::Note, tr("Opened NC program %1").arg(path));
     return true;
 }
@@ -302,6 +305,7 @@ void MainWindow::registerActions()
         [this] { m_view->setViewPreset(View3D::Preset::Right); });
     add({"Cam.View.FitAll", tr("Fit &All"), view, QKeySequence(Qt::Key_F), true}, [this] { m_view->fitAll(); });
     registerDockActions(view);
+    m_session = new Session(*this);
 
     add({"Cam.Help.About", tr("&About CAM Workbench"), help}, [this] {
         QMessageBox::about(

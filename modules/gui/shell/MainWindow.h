@@ -25,6 +25,7 @@ class OperationPanel;
 class Prompter;
 class ReportView;
 class SimDock;
+class Session;
 class SimPlayer;
 class View3D;
 class Workbench;
@@ -70,6 +71,11 @@ public:
     // Closes the open task panel; with unapplied changes the user is asked first: Apply (refused
     // when the operation cannot be made), Discard, or Cancel (false: the panel stays).
     bool settleTaskPanel();
+    // When the job has unsaved changes, asks whether to save them: false when the user cancels
+    // (or the save did not happen), true when saved or discarded.
+    bool confirmDiscard();
+    // New job, recent files, autosave and recovery, preferences (gui/shell/Session.h).
+    Session& session() const { return *m_session; }
 
 protected:
     void closeEvent(QCloseEvent* event) override;
@@ -86,7 +92,6 @@ private:
     void openTaskPanel(int index, const document::Operation& operation,
                        const std::optional<ops::ToolController>& newTool);
     void closeTaskPanel();
-    bool confirmDiscard();
     void registerDockActions(const QString& viewMenu);
     void showProgramState();
     void updateNcDockTitle();
@@ -108,6 +113,7 @@ private:
     QDockWidget* m_simDockWidget = nullptr;
     QDockWidget* m_taskDock = nullptr;
     OperationPanel* m_taskPanel = nullptr;
+    Session* m_session = nullptr;
     Banner* m_viewBanner;
     Banner* m_ncBanner;
     bool m_editorShowsPosted = false;  // the editor holds the job's posted program (not an opened file)

@@ -96,17 +96,22 @@ bool Workbench::openJob(const QString& path)
         fail(tr("Open job"), qs(job.error().toString()));
         return false;
     }
+    setJob(std::move(job.value()), path);
+    report(Severity::Note, tr("Opened job %1").arg(path));
+    return true;
+}
+
+void Workbench::setJob(document::Job job, const QString& path)
+{
     ++m_generation;  // a compute of the previous job still running is not applied
     m_suppressRecompute = true;
-    m_document.reset(std::move(job.value()), path.toStdString());
+    m_document.reset(std::move(job), path.toStdString());
     m_suppressRecompute = false;
     // Nothing of the previous job may stay on screen or be computed on: its model, toolpath and
     // NC go now, not when (or if) this job's model has loaded.
     clearDerived();
-    report(Severity::Note, tr("Opened job %1").arg(path));
     m_showComputeFailure = true;
     startCompute();
-    return true;
 }
 
 void Workbench::clearDerived()

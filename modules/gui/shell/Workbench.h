@@ -64,6 +64,9 @@ public:
     // the previous job (model, toolpath, NC), then loads its model and computes + posts in the
     // background (modelChanged, toolpathChanged, ncChanged, postFinished).
     bool openJob(const QString& path);
+    // Replaces the job as openJob does with one already read: `path` is where it saves (empty for
+    // a new, untitled job); the undo history starts empty.
+    void setJob(document::Job job, const QString& path);
     bool saveJob(const QString& path);
     // Loads a model in the background with progress. The operations are kept: their references
     // are looked up on the new model (document/ReferenceRemap.h); when some are not found the

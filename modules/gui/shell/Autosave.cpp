@@ -27,8 +27,8 @@ qint64 writerPid(const QString& fileName)
 
 bool processRuns(qint64 pid)
 {
-    return pid > 0 && pid != QCoreApplication::applicationPid() &&
-           QFileInfo::exists(QStringLiteral("/proc/%1").arg(pid));
+    return pid > 0 &&
+           (pid == QCoreApplication::applicationPid() || QFileInfo::exists(QStringLiteral("/proc/%1").arg(pid)));
 }
 
 }  // namespace

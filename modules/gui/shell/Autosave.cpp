@@ -4,6 +4,7 @@
 #include "gui/shell/Workbench.h"
 
 #include <QCoreApplication>
+#include <QCryptographicHash>
 #include <QDateTime>
 #include <QDir>
 #include <QFile>
@@ -18,17 +19,36 @@ namespace {
 
 const QString kSuffix = QStringLiteral(".autosave");
 
-// "untitled-<time>-<pid>.camwb.autosave": the pid tells a running window's file from an orphan.
+// "<name>-<pid>.camwb.autosave": the pid tells a running window's file from a crash's.
 qint64 writerPid(const QString& fileName)
 {
-    const QStringList parts = fileName.section(QLatin1Char('.'), 0, 0).split(QLatin1Char('-'));
-    return parts.size() == 4 ? parts[3].toLongLong() : 0;
+    return fileName.chopped(kSuffix.size() + 6).section(QLatin1Char('-'), -1).toLongLong();
 }
 
 bool processRuns(qint64 pid)
 {
     return pid > 0 &&
            (pid == QCoreApplication::applicationPid() || QFileInfo::exists(QStringLiteral("/proc/%1").arg(pid)));
+}
+
+// The side files matching `pattern` in `folder` that no running CAM Workbench writes, newest first.
+QStringList orphans(const QString& folder, const QString& pattern)
+{
+    QStringList found;
+    for (const QFileInfo& file : QDir(folder).entryInfoList({pattern}, QDir::Files, QDir::Time))
+        if (!processRuns(writerPid(file.fileName())))
+            found << file.absoluteFilePath();
+    return found;
+}
+
+// The job's name to be recognised by a person, a hash of its full path to tell apart jobs of the
+// same name in different folders.
+QString sideStem(const QString& jobPath)
+{
+    const QFileInfo job(jobPath);
+    const QByteArray hash =
+        QCryptographicHash::hash(QDir::cleanPath(job.absoluteFilePath()).toUtf8(), QCryptographicHash::Sha1).toHex();
+    return job.completeBaseName() + QLatin1Char('-') + QString::fromLatin1(hash.left(12));
 }
 
 }  // namespace
@@ -50,42 +70,35 @@ Autosaver::Autosaver(Workbench& workbench, QObject* parent) : QObject(parent), m
 
 Autosaver::~Autosaver() { removeOwned(); }
 
-QString Autosaver::sidePathFor(const QString& jobPath) { return jobPath + kSuffix; }
+QString Autosaver::sidePathFor(const QString& jobPath, qint64 pid)
+{
+    return autosaveFolder() + QStringLiteral("/%1-%2.camwb%3")
+                                  .arg(sideStem(jobPath))
+                                  .arg(pid > 0 ? pid : QCoreApplication::applicationPid())
+                                  .arg(kSuffix);
+}
 
-QString Autosaver::untitledFolder()
+QString Autosaver::autosaveFolder()
 {
     return QStandardPaths::writableLocation(QStandardPaths::AppDataLocation) + QStringLiteral("/autosave");
 }
 
-QStringList Autosaver::orphanedUntitled()
-{
-    const QFileInfoList files =
-        QDir(untitledFolder()).entryInfoList({QStringLiteral("untitled-*.camwb") + kSuffix}, QDir::Files, QDir::Time);
-    QStringList orphans;
-    for (const QFileInfo& file : files)
-        if (!processRuns(writerPid(file.fileName())))
-            orphans << file.absoluteFilePath();
-    return orphans;
-}
+QString Autosaver::untitledFolder() { return autosaveFolder() + QStringLiteral("/untitled"); }
+
+QStringList Autosaver::orphanedUntitled() { return orphans(untitledFolder(), QStringLiteral("untitled-*") + kSuffix); }
 
 QString Autosaver::newerAutosave(const QString& jobPath)
 {
-    const QFileInfo side(sidePathFor(jobPath));
+    const QStringList found = orphans(autosaveFolder(), sideStem(jobPath) + QStringLiteral("-*.camwb") + kSuffix);
     const QFileInfo job(jobPath);
-    if (!side.exists() || (job.exists() && side.lastModified() < job.lastModified()))
+    if (found.isEmpty() || (job.exists() && QFileInfo(found.first()).lastModified() < job.lastModified()))
         return {};
-    return side.absoluteFilePath();
+    return found.first();
 }
 
 void Autosaver::setIntervalSeconds(int seconds) { m_interval.setInterval(std::max(seconds, 1) * 1000); }
 
-void Autosaver::adopt(const QString& sidePath)
-{
-    if (m_workbench.document().path().empty())
-        m_untitled = sidePath;
-    m_side = sidePath;
-    m_owned = true;
-}
+void Autosaver::adopt(const QString& sidePath) { m_inherited = sidePath; }
 
 QString Autosaver::currentSidePath() const
 {
@@ -128,6 +141,8 @@ void Autosaver::writeNow()
     m_failed = false;
     m_owned = true;
     m_pending = false;
+    if (!m_inherited.isEmpty())  // the edits it held are in this window's file now
+        QFile::remove(std::exchange(m_inherited, QString()));
     emit written(m_side);
 }
 
@@ -135,6 +150,8 @@ void Autosaver::removeOwned()
 {
     if (std::exchange(m_owned, false))
         QFile::remove(m_side);
+    if (!m_inherited.isEmpty())
+        QFile::remove(std::exchange(m_inherited, QString()));
 }
 
 }  // namespace camwb::gui

@@ -10,6 +10,7 @@
 #include "gui/inspector/NcInspector.h"
 #include "gui/shell/Banner.h"
 #include "gui/shell/JobTree.h"
+#include "gui/shell/KeyboardFocus.h"
 #include "gui/shell/NcDocument.h"
 #include "gui/shell/NewOperation.h"
 #include "gui/shell/Prompter.h"
@@ -305,6 +306,7 @@ void MainWindow::registerActions()
         [this] { m_view->setViewPreset(View3D::Preset::Right); });
     add({"Cam.View.FitAll", tr("Fit &All"), view, QKeySequence(Qt::Key_F), true}, [this] { m_view->fitAll(); });
     registerDockActions(view);
+    registerFocusActions(*m_actions, *this, view);
     m_session = new Session(*this);
 
     add({"Cam.Help.About", tr("&About CAM Workbench"), help}, [this] {

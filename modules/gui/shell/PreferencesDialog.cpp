@@ -53,6 +53,7 @@ PreferencesDialog::PreferencesDialog(const Preferences& current, Prompter& promp
 {
     setObjectName(QStringLiteral("preferencesDialog"));
     setWindowTitle(tr("Preferences"));
+    setMinimumWidth(520);  // room for a tool library path
 
     m_units->addItem(tr("Millimetres (mm)"), static_cast<int>(LengthUnit::Millimetre));
     m_units->addItem(tr("Inches (in)"), static_cast<int>(LengthUnit::Inch));

@@ -8,10 +8,13 @@
 #include "QtTestRun.h"
 #include "document/JobFile.h"
 #include "gui/actions/ActionRegistry.h"
+#include "gui/editor/NcEditor.h"
 #include "gui/shell/Autosave.h"
 #include "gui/shell/Preferences.h"
 #include "gui/shell/PreferencesDialog.h"
 #include "gui/shell/RecentFiles.h"
+#include "gui/shell/ReportView.h"
+#include "gui/tasks/OperationPanel.h"
 #include "gui/view3d/View3D.h"
 
 #include <QAction>
@@ -58,6 +61,13 @@ int workOffsetOnDisk(const QString& path)
 void editWorkOffset(MainWindow& window)
 {
     window.workbench().document().edit("Work offset G55", [](camwb::document::Job& job) { job.workOffset = 2; });
+}
+
+// The side file a window that is no longer running left (no process has this pid on Linux).
+QString crashedSidePath(const QString& job)
+{
+    QDir().mkpath(Autosaver::autosaveFolder());
+    return Autosaver::sidePathFor(job, 999999999);
 }
 
 QStringList menuTexts(QMenu* menu)
@@ -217,6 +227,40 @@ private slots:
         QVERIFY(window.windowTitle().startsWith(QObject::tr("Untitled") + QStringLiteral(" — ")));
     }
 
+    // Alt+1 … Alt+4 put the keyboard into the job tree, the task panel (when one is open), the NC
+    // editor and the report; F2 then opens the selected operation from the tree.
+    void keysReachTheJobTreeAndThePanels()
+    {
+        QTemporaryDir dir;
+        MainWindow window;
+        ScriptedPrompter* prompter = openExample(window, dir);
+        QVERIFY(prompter);
+        window.activateWindow();
+        QVERIFY(QTest::qWaitForWindowActive(&window));
+        auto focusedIn = [](QWidget* widget) {
+            QWidget* focus = QApplication::focusWidget();
+            return focus != nullptr && (focus == widget || widget->isAncestorOf(focus));
+        };
+        QCOMPARE(window.actions().action(QStringLiteral("Cam.View.GoToJobTree"))->shortcut(),
+                 QKeySequence(Qt::ALT | Qt::Key_1));
+        QTest::keyClick(&window, Qt::Key_1, Qt::AltModifier);
+        QVERIFY(focusedIn(window.jobTree()));
+        QVERIFY(window.actions().trigger(QStringLiteral("Cam.View.GoToTask")));  // none open: says so
+        QVERIFY(focusedIn(window.jobTree()));
+        QVERIFY(window.actions().trigger(QStringLiteral("Cam.View.GoToNc")));
+        QVERIFY(focusedIn(window.ncEditor()));
+        QVERIFY(window.actions().trigger(QStringLiteral("Cam.View.GoToReport")));
+        QVERIFY(focusedIn(window.reportView()));
+
+        window.editOperation(0);
+        QVERIFY(window.taskPanel());
+        QVERIFY(window.actions().trigger(QStringLiteral("Cam.View.GoToJobTree")));
+        QVERIFY(window.actions().trigger(QStringLiteral("Cam.View.GoToTask")));
+        QVERIFY(focusedIn(window.taskPanel()));
+        // Closed before the window goes: ~OperationPanel clears its preview in the 3D view.
+        QVERIFY(window.settleTaskPanel());
+    }
+
     void recentFilesKeepTheNewestEightOnce()
     {
         camwb::gui::RecentFiles recent;
@@ -303,6 +347,10 @@ private slots:
         QVERIFY(waitForFile(untitled));
         QCOMPARE(workOffsetOnDisk(untitled), 2);
         QVERIFY(Autosaver::orphanedUntitled().isEmpty());  // this window's, not an orphan
+        prompter.answers = {Prompter::Answer::Cancel};
+        QVERIFY(!window->close());  // close asks to save; Cancel keeps the window and the side file
+        QCOMPARE(prompter.questions.size(), 1);
+        QVERIFY(QFile::exists(untitled));
         prompter.answers = {Prompter::Answer::Discard};
         QVERIFY(window->close());
         window.reset();
@@ -315,7 +363,6 @@ private slots:
     {
         QTemporaryDir dir;
         const QString job = copyExample(dir);
-        const QString side = Autosaver::sidePathFor(job);
         QProcess child;
         child.setProcessChannelMode(QProcess::ForwardedErrorChannel);
         child.start(QCoreApplication::applicationFilePath(), {QStringLiteral("--autosave-child"), job});
@@ -326,9 +373,12 @@ private slots:
                child.state() == QProcess::Running)
             child.waitForReadyRead(200);
         QCOMPARE(child.state(), QProcess::Running);
+        const QString side = Autosaver::sidePathFor(job, child.processId());
+        QVERIFY(QFile::exists(side));
+        QVERIFY(Autosaver::newerAutosave(job).isEmpty());  // a running window's file is not a crash's
         child.kill();
         QVERIFY(child.waitForFinished());
-        QVERIFY(QFile::exists(side));
+        QCOMPARE(Autosaver::newerAutosave(job), side);
         QCOMPARE(workOffsetOnDisk(job), 1);
 
         {
@@ -365,7 +415,7 @@ private slots:
     {
         QTemporaryDir dir;
         const QString job = copyExample(dir);
-        const QString side = Autosaver::sidePathFor(job);
+        const QString side = crashedSidePath(job);
         QVERIFY(writeFile(side, readFile(job).toUtf8()));
         MainWindow window;
         ScriptedPrompter& prompter = scripted(window);
@@ -382,7 +432,7 @@ private slots:
         QTemporaryDir dir;
         const QString job = copyExample(dir);
         const QByteArray saved = readFile(job).toUtf8();
-        const QString side = Autosaver::sidePathFor(job);
+        const QString side = crashedSidePath(job);
         QVERIFY(writeFile(side, "{\"format\": \"camwb-job\", \"version\": 5, \"name\": "));
         MainWindow window;
         ScriptedPrompter& prompter = scripted(window);

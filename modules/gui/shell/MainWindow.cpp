@@ -307,7 +307,7 @@ void MainWindow::registerActions()
     add({"Cam.View.FitAll", tr("Fit &All"), view, QKeySequence(Qt::Key_F), true}, [this] { m_view->fitAll(); });
     registerDockActions(view);
     registerFocusActions(*m_actions, *this, view);
-    m_session = new Session(*this);
+    m_session = new Session(*this, file, edit);
 
     add({"Cam.Help.About", tr("&About CAM Workbench"), help}, [this] {
         QMessageBox::about(

@@ -29,7 +29,7 @@ QString when(const QString& path) { return QLocale().toString(QFileInfo(path).la
 
 }  // namespace
 
-Session::Session(MainWindow& window) :
+Session::Session(MainWindow& window, const QString& fileMenu, const QString& editMenu) :
     QObject(&window),
     m_window(window),
     m_preferences(Preferences::load()),
@@ -40,13 +40,12 @@ Session::Session(MainWindow& window) :
     connect(m_autosaver, &Autosaver::message, window.reportView(), &ReportView::append);
     connect(m_recent, &RecentFiles::openRequested, this, &Session::openRecent);
     trackRecentJobs();
-    registerActions();
+    registerActions(fileMenu, editMenu);
 }
 
-void Session::registerActions()
+void Session::registerActions(const QString& file, const QString& edit)
 {
     ActionRegistry& actions = m_window.actions();
-    const QString file = tr("&File"), edit = tr("&Edit");
     QAction* newJob = actions.add({QStringLiteral("Cam.File.New"), tr("&New Job"), file, QKeySequence::New, true});
     connect(newJob, &QAction::triggered, this, &Session::newJob);
     actions.moveBefore(QStringLiteral("Cam.File.New"), QStringLiteral("Cam.File.Open"));

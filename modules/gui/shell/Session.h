@@ -17,8 +17,9 @@ class RecentFiles;
 class Session : public QObject {
     Q_OBJECT
 public:
-    // Registers Cam.File.New, Cam.File.OpenRecent and Cam.Edit.Preferences in `window`'s registry.
-    explicit Session(MainWindow& window);
+    // Registers Cam.File.New, Cam.File.OpenRecent and Cam.Edit.Preferences in `window`'s registry,
+    // in the menus titled `fileMenu` and `editMenu` (the window's own, translated titles).
+    Session(MainWindow& window, const QString& fileMenu, const QString& editMenu);
 
     RecentFiles& recentFiles() { return *m_recent; }
     Autosaver& autosaver() { return *m_autosaver; }
@@ -41,7 +42,7 @@ signals:
     void preferencesChanged(const camwb::gui::Preferences& preferences);
 
 private:
-    void registerActions();
+    void registerActions(const QString& file, const QString& edit);
     void trackRecentJobs();
     enum class Choice { Recovered, Declined, Cancelled };
     Choice offerRecovery(const QString& sidePath, const QString& jobPath);

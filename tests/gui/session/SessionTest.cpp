@@ -30,6 +30,7 @@
 #include <QSettings>
 #include <QSpinBox>
 #include <QTimer>
+#include <QTranslator>
 
 #include <cstdio>
 
@@ -85,6 +86,22 @@ QMenu* topMenu(MainWindow& window, const QString& title)
             return action->menu();
     return nullptr;
 }
+
+// Gives the main window's File and Edit menus other titles, as a translation does.
+class MenuTitleTranslator : public QTranslator {
+public:
+    bool isEmpty() const override { return false; }
+    QString translate(const char* context, const char* source, const char*, int) const override
+    {
+        if (qstrcmp(context, "camwb::gui::MainWindow") != 0)
+            return {};
+        if (qstrcmp(source, "&File") == 0)
+            return QStringLiteral("&Fichier");
+        if (qstrcmp(source, "&Edit") == 0)
+            return QStringLiteral("É&dition");
+        return {};
+    }
+};
 
 // The child of recoveryAfterTheProcessIsKilled: opens the job, makes the edit, waits for its
 // autosave and stays until it is killed.
@@ -259,6 +276,28 @@ private slots:
         QVERIFY(focusedIn(window.taskPanel()));
         // Closed before the window goes: ~OperationPanel clears its preview in the 3D view.
         QVERIFY(window.settleTaskPanel());
+    }
+
+    // Translated, the window's own menu titles differ from English: the session's actions must
+    // join those menus, not open an English "File" and "Edit" beside them.
+    void sessionActionsJoinTheTranslatedMenus()
+    {
+        MenuTitleTranslator translator;
+        QCoreApplication::installTranslator(&translator);
+        QStringList titles;
+        QMenu* file = nullptr;
+        {
+            MainWindow window;
+            for (QAction* action : window.menuBar()->actions())
+                titles << action->text();
+            file = topMenu(window, QStringLiteral("&Fichier"));
+            QVERIFY(file && file->actions().contains(window.actions().action(QStringLiteral("Cam.File.New"))));
+            QMenu* edit = topMenu(window, QStringLiteral("É&dition"));
+            QVERIFY(edit && edit->actions().contains(window.actions().action(QStringLiteral("Cam.Edit.Preferences"))));
+        }
+        QCoreApplication::removeTranslator(&translator);
+        QVERIFY2(!titles.contains(QStringLiteral("&File")) && !titles.contains(QStringLiteral("&Edit")),
+                 qPrintable(titles.join(QLatin1Char('|'))));
     }
 
     void recentFilesKeepTheNewestEightOnce()

@@ -37,6 +37,10 @@ int clCommand(const std::vector<std::string>& args)
     for (std::size_t i = 0; i < report.counts.size(); ++i) {
         const document::Operation& op = computed->job.operations[i];
         const ops::MotionCounts& c = report.counts[i];
+        if (!op.enabled) {
+            std::cerr << "camwb-cli: " << document::kindLabel(op.kind()) << " \"" << op.name() << "\": disabled\n";
+            continue;
+        }
         std::cerr << "camwb-cli: " << document::kindLabel(op.kind()) << " \"" << op.name() << "\": " << c.lines
                   << " lines, " << c.arcs << " arcs, " << c.helices << " helices, " << c.cycles << " cycles, "
                   << c.rapids << " rapids\n";

@@ -72,6 +72,9 @@ struct Operation {
     // The operation's own values of post properties the post takes per operation (the iTNC's
     // tcpm), as text over the job's: they ride on its CL section (SectionBegin::postProperties).
     std::map<std::string, std::string> postProperties;
+    // A disabled operation stays in the job but is neither computed nor posted (the user keeps
+    // it for later); the others keep their indices, so messages still name the right one.
+    bool enabled = true;
 
     OperationKind kind() const { return static_cast<OperationKind>(params.index()); }
     const std::string& name() const;

@@ -126,7 +126,10 @@ std::string serializeJob(const Job& job)
     const bool swarf = std::any_of(job.operations.begin(), job.operations.end(), [](const Operation& op) {
         return op.kind() == OperationKind::Swarf || !op.postProperties.empty();
     });
-    root["version"] = swarf ? kJobFormatVersion : planes ? 4 : 3;
+    // Version 6: a disabled operation (an older reader would post it).
+    const bool disabled =
+        std::any_of(job.operations.begin(), job.operations.end(), [](const Operation& op) { return !op.enabled; });
+    root["version"] = disabled ? 6 : swarf ? 5 : planes ? 4 : 3;
     root["name"] = job.name;
     root["model"] = job.modelPath;
     root["stock"] = {{"min", {job.stock.min.x, job.stock.min.y, job.stock.min.z}},

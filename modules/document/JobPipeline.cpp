@@ -26,6 +26,13 @@ base::Result<toolpath::Toolpath> computeProgram(const Job& job, const occ::Model
 
     for (std::size_t i = 0; i < job.operations.size(); ++i) {
         const int index = static_cast<int>(i);
+        if (!job.operations[i].enabled) {
+            // Skipped, not removed: the others keep their job indices (messages, sources, the
+            // NC line -> operation map); the next tool change compares with the last posted tool.
+            if (report)
+                report->counts.emplace_back();
+            continue;
+        }
         // Each operation reports its own 0..1 as a slice of the whole.
         ops::Progress slice{nullptr, progress.cancel};
         if (progress.report)

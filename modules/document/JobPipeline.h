@@ -20,14 +20,14 @@ base::Result<occ::Model> loadJobModel(const Job& job, const occ::ProgressFn& pro
 
 // The whole program: work offset, then per operation its section with the tool change and
 // spindle start inserted after SectionBegin when the tool differs from the previous one.
-// The first failing operation's error is returned.
+// Disabled operations are skipped (no section, no tool change). The first failing operation's error is returned.
 struct OperationFailure {
     int operation = 0;  // index in the job
     std::string message;
 };
 struct ProgramReport {
     std::vector<base::Diagnostic> warnings;  // each names its operation: "pocket \"P\": ..."
-    std::vector<ops::MotionCounts> counts;   // per operation, in job order
+    std::vector<ops::MotionCounts> counts;   // per operation, in job order (zero: disabled)
     // Set by the caller: compute the operations after a failing one too, so that `failures`
     // names every operation that cannot be made (the GUI marks each one), not only the first.
     bool allFailures = false;

@@ -192,11 +192,9 @@ base::Result<SetupSheet> collectSetupSheet(const Job& job, const std::string& jo
 
     for (const Operation& op : job.operations)
         sheet.operations.push_back(sheetOperation(job, op, model));
-    for (std::size_t k = 0; k < moves.moves.size() && k < plan.moves.size(); ++k) {
-        const int index = program.source(moves.moves[k].record).operationIndex;
+    for (const auto& [index, seconds] : sim::secondsPerOperation(program, moves, plan))
         if (index >= 0 && index < static_cast<int>(sheet.operations.size()))
-            sheet.operations[index].seconds += plan.moves[k].end() - plan.moves[k].start;
-    }
+            sheet.operations[static_cast<std::size_t>(index)].seconds = seconds;
 
     // Tools by number, with the stick-out their moves need over the stock and the model.
     base::Box3 clear = stockBox;

@@ -295,4 +295,16 @@ CycleTimes cycleTimes(const MoveList& list, const MotionPlan& plan, const toolpa
     return c;
 }
 
+std::map<int, double> secondsPerOperation(const toolpath::Toolpath& program, const MoveList& moves,
+                                          const MotionPlan& plan)
+{
+    std::map<int, double> seconds;
+    for (std::size_t i = 0; i < moves.moves.size() && i < plan.moves.size(); ++i) {
+        const std::uint32_t record = moves.moves[i].record;
+        const int operation = record < program.size() ? program.source(record).operationIndex : -1;
+        seconds[operation] += plan.moves[i].pauseSeconds + plan.moves[i].moveSeconds;
+    }
+    return seconds;
+}
+
 }  // namespace camwb::sim

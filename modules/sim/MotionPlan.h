@@ -77,4 +77,10 @@ struct CycleTimes {
 
 CycleTimes cycleTimes(const MoveList& moves, const MotionPlan& plan, const toolpath::ProgramStats& simple);
 
+// Planned seconds by job operation: each move counts for the operation of the CL record it came
+// from (toolpath::SourceRef::operationIndex; -1: none), so a tool change the pipeline inserted
+// counts for the operation it was inserted for. `moves` is buildMoves(program).
+std::map<int, double> secondsPerOperation(const toolpath::Toolpath& program, const MoveList& moves,
+                                          const MotionPlan& plan);
+
 }  // namespace camwb::sim

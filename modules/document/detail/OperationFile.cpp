@@ -170,6 +170,8 @@ Operation readOperation(const Json& o, const std::string& where)
         op.plane = readWorkingPlane(*plane, where + ".workingPlane");
     if (const Json* properties = optionalMember(o, "postProperties", where))
         op.postProperties = readPostProperties(*properties, where + ".postProperties");
+    if (optionalMember(o, "enabled", where))
+        op.enabled = boolean(o, "enabled", where);
     return op;
 }
 
@@ -209,6 +211,8 @@ ojson writeOperation(const Operation& op)
         out["workingPlane"] = {{"a", op.plane.aDeg}, {"b", op.plane.bDeg}, {"c", op.plane.cDeg}};
     if (!op.postProperties.empty())
         out["postProperties"] = op.postProperties;
+    if (!op.enabled)
+        out["enabled"] = false;
     return out;
 }
 

@@ -31,9 +31,7 @@ struct ProgramInfoDialog::Result {
     QString machineName;      // empty: the default limits
 };
 
-namespace {
-
-QString duration(double seconds)
+QString formatDuration(double seconds)
 {
     if (seconds < 60)
         return ProgramInfoDialog::tr("%1 s").arg(seconds, 0, 'f', 1);
@@ -45,6 +43,8 @@ QString duration(double seconds)
         return QStringLiteral("%1:%2:%3").arg(h).arg(m, 2, 10, QLatin1Char('0')).arg(s, 2, 10, QLatin1Char('0'));
     return QStringLiteral("%1:%2").arg(m).arg(s, 2, 10, QLatin1Char('0'));
 }
+
+namespace {
 
 QString mm(double value) { return QString::number(value, 'f', 3); }
 
@@ -205,15 +205,15 @@ void ProgramInfoDialog::render()
     };
     row(tr("Feed length"), tr("%1 mm").arg(mm(s.totals.feedLengthMm)));
     row(tr("Rapid length"), tr("%1 mm").arg(mm(s.totals.rapidLengthMm)));
-    row(tr("Feed time"), duration(s.totals.feedSeconds));
-    row(tr("Rapid time (at %1 mm/min)").arg(s.rapidMmPerMin, 0, 'f', 0), duration(s.totals.rapidSeconds));
-    row(tr("Dwell time"), duration(s.totals.dwellSeconds));
-    row(tr("Estimate from distance and feed"), duration(s.totals.totalSeconds()));
+    row(tr("Feed time"), formatDuration(s.totals.feedSeconds));
+    row(tr("Rapid time (at %1 mm/min)").arg(s.rapidMmPerMin, 0, 'f', 0), formatDuration(s.totals.rapidSeconds));
+    row(tr("Dwell time"), formatDuration(s.totals.dwellSeconds));
+    row(tr("Estimate from distance and feed"), formatDuration(s.totals.totalSeconds()));
     const sim::CycleTimes& planned = m_result->planned;
     row(m_result->machineName.isEmpty()
             ? tr("<b>Cycle time with accelerations</b> (no machine chosen: default limits)")
             : tr("<b>Cycle time with accelerations</b> (%1)").arg(m_result->machineName.toHtmlEscaped()),
-        QStringLiteral("<b>%1</b>").arg(duration(planned.planned.totalSeconds())));
+        QStringLiteral("<b>%1</b>").arg(formatDuration(planned.planned.totalSeconds())));
     row(tr("Rapids / feed moves / arcs"), QStringLiteral("%1 / %2 / %3").arg(s.rapids).arg(s.feedMoves).arg(s.arcs));
     row(tr("Cycle holes"), QString::number(s.cycleHoles));
     row(tr("Tool changes"), QString::number(s.toolChanges));
@@ -228,13 +228,14 @@ void ProgramInfoDialog::render()
                      tr("Time with accelerations"), tr("Z min (cutting)"));
     for (const toolpath::ToolStats& t : s.tools) {
         const auto plannedTool = planned.plannedPerTool.find(t.toolNumber);
-        html += QStringLiteral("<tr><td>%1</td><td align=right>%2</td><td align=right>%3</td><td align=right>%4</td>"
-                               "<td align=right>%5</td><td align=right>%6</td></tr>")
-                    .arg(t.toolNumber == 0 ? tr("(none)") : QStringLiteral("T%1").arg(t.toolNumber),
-                         mm(t.totals.feedLengthMm), mm(t.totals.rapidLengthMm), duration(t.totals.totalSeconds()),
-                         plannedTool == planned.plannedPerTool.end() ? QStringLiteral("—")
-                                                                     : duration(plannedTool->second.totalSeconds()),
-                         t.totals.cuttingExtents.empty ? QStringLiteral("—") : mm(t.totals.cuttingExtents.min.z));
+        html +=
+            QStringLiteral("<tr><td>%1</td><td align=right>%2</td><td align=right>%3</td><td align=right>%4</td>"
+                           "<td align=right>%5</td><td align=right>%6</td></tr>")
+                .arg(t.toolNumber == 0 ? tr("(none)") : QStringLiteral("T%1").arg(t.toolNumber),
+                     mm(t.totals.feedLengthMm), mm(t.totals.rapidLengthMm), formatDuration(t.totals.totalSeconds()),
+                     plannedTool == planned.plannedPerTool.end() ? QStringLiteral("—")
+                                                                 : formatDuration(plannedTool->second.totalSeconds()),
+                     t.totals.cuttingExtents.empty ? QStringLiteral("—") : mm(t.totals.cuttingExtents.min.z));
     }
     html += QStringLiteral("</table>");
     if (!ir.diagnostics.empty()) {

@@ -24,6 +24,9 @@ struct Machine;
 
 namespace camwb::gui {
 
+// A time as the program information shows it: "12.5 s", "4:07", "1:02:03" (also the job tree's).
+QString formatDuration(double seconds);
+
 class ProgramInfoDialog : public QDialog {
     Q_OBJECT
 

@@ -253,6 +253,7 @@ void MainWindow::registerActions()
         [this, selected] { editOperation(selected()); });
     add({"Cam.Op.Delete", tr("&Delete Operation"), operation, QKeySequence::Delete},
         [this, selected] { m_workbench->removeOperation(selected()); });
+    m_jobTree->registerActions(*m_actions, operation);
 
     add({"Cam.Job.Post", tr("&Post"), jobMenu, QKeySequence(Qt::Key_F9), true, true}, [this] {
         if (m_ncDocument->mayReplace(tr("Posting the job replaces them with its program.")))

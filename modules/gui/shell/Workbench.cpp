@@ -8,6 +8,7 @@
 #include "gui/shell/Prompter.h"
 #include "kinematics/Machine.h"
 #include "post/PostRegistry.h"
+#include "sim/MotionPlan.h"
 
 #include <QFileInfo>
 #include <QFutureWatcher>
@@ -51,6 +52,22 @@ nc::ToolTable toolTableOf(const document::Job& job)
     return table;
 }
 
+// Planned seconds of each operation of `program` on `machine` (by job index; -1: not in it), as
+// the program information plans the whole program: the job tree shows them.
+std::vector<double> plannedOperationSeconds(const toolpath::Toolpath& program, std::size_t operations,
+                                            const kinematics::Machine& machine)
+{
+    sim::MoveOptions options;
+    if (machine.kinematics.fiveAxis())
+        options.chain = &machine.kinematics;
+    const sim::MoveList moves = sim::buildMoves(program, options);
+    std::vector<double> seconds(operations, -1.0);
+    for (const auto& [operation, s] : sim::secondsPerOperation(program, moves, sim::planMotion(moves, machine)))
+        if (operation >= 0 && operation < static_cast<int>(operations))
+            seconds[static_cast<std::size_t>(operation)] = s;
+    return seconds;
+}
+
 }  // namespace
 
 // What a background compute brings back; empty optionals mean "unchanged".
@@ -63,9 +80,11 @@ struct Workbench::ComputeOutcome {
     std::string ncExtension;
     std::shared_ptr<const kinematics::Machine> machine;  // what the post checked the program against
     std::shared_ptr<const nc::ToolTable> tools;          // the job's tools, as the program was posted
+    std::shared_ptr<const post::PostInfo> postInfo;      // the post it was posted with
     std::vector<base::Diagnostic> warnings;              // the operations' (left corners, helix fallbacks, ...)
     std::vector<std::string> errors;
     std::vector<document::OperationFailure> failures;  // every operation that cannot be made
+    std::vector<double> operationSeconds;              // planned, by operation index
     bool modelFailed = false;                          // the job's model could not be read
     int generation = 0;
     std::optional<document::RemappedOperations> remap;  // import: the operations on the new model
@@ -74,6 +93,7 @@ struct Workbench::ComputeOutcome {
 Workbench::Workbench(QObject* parent) : QObject(parent)
 {
     m_document.setChangedListener([this] {
+        m_operationSeconds.clear();  // by the old indices; the compute this change starts fills them
         emit jobChanged();
         if (!m_suppressRecompute)
             startCompute();
@@ -124,6 +144,7 @@ void Workbench::clearDerived()
     m_programProblem.clear();
     m_modelProblem.clear();
     m_operationProblems.clear();
+    m_operationSeconds.clear();
     emit modelChanged();
     emit toolpathChanged();
     emit ncChanged();
@@ -320,6 +341,53 @@ void Workbench::removeOperation(int index)
                     [&](document::Job& j) { j.operations.erase(j.operations.begin() + index); });
 }
 
+void Workbench::moveOperation(int from, int to)
+{
+    const int count = static_cast<int>(job().operations.size());
+    if (from < 0 || from >= count || to < 0 || to >= count || from == to)
+        return;
+    m_document.edit("Move " + job().operations[from].name(), [&](document::Job& j) {
+        document::Operation moved = std::move(j.operations[from]);
+        j.operations.erase(j.operations.begin() + from);
+        j.operations.insert(j.operations.begin() + to, std::move(moved));
+    });
+}
+
+void Workbench::setOperationEnabled(int index, bool enabled)
+{
+    if (index < 0 || index >= static_cast<int>(job().operations.size()) || job().operations[index].enabled == enabled)
+        return;
+    m_document.edit((enabled ? "Enable " : "Disable ") + job().operations[index].name(),
+                    [&](document::Job& j) { j.operations[index].enabled = enabled; });
+}
+
+void Workbench::duplicateOperation(int index)
+{
+    if (index < 0 || index >= static_cast<int>(job().operations.size()))
+        return;
+    document::Operation copy = job().operations[index];
+    copy.setName(copy.name() + " (copy)");
+    m_document.edit("Duplicate " + job().operations[index].name(),
+                    [&](document::Job& j) { j.operations.insert(j.operations.begin() + index + 1, copy); });
+}
+
+void Workbench::renameOperation(int index, const QString& name)
+{
+    const std::string text = name.trimmed().toStdString();
+    if (index < 0 || index >= static_cast<int>(job().operations.size()) || text.empty() ||
+        text == job().operations[index].name())
+        return;
+    m_document.edit("Rename " + job().operations[index].name(),
+                    [&](document::Job& j) { j.operations[index].setName(text); });
+}
+
+double Workbench::operationSeconds(int index) const
+{
+    return index >= 0 && index < static_cast<int>(m_operationSeconds.size())
+               ? m_operationSeconds[static_cast<std::size_t>(index)]
+               : -1.0;
+}
+
 void Workbench::undo() { m_document.undo(); }
 void Workbench::redo() { m_document.redo(); }
 
@@ -380,6 +448,7 @@ void Workbench::startCompute()
             return outcome;
         }
         outcome->ncExtension = post->info().extension;
+        outcome->postInfo = std::make_shared<const post::PostInfo>(post->info());
         post::PostContext context = post::PostContext::fromEnvironment(programName);
         context.outputName = programName;  // Save NC File proposes the job's name
         auto options = document::jobRunOptions(job, post.value(), context, kinematics::defaultMachineDirs());
@@ -389,6 +458,9 @@ void Workbench::startCompute()
         }
         if (options->machine)
             outcome->machine = std::make_shared<const kinematics::Machine>(*options->machine);
+        outcome->operationSeconds =
+            plannedOperationSeconds(program.value(), job.operations.size(),
+                                    options->machine ? *options->machine : kinematics::defaultLimitsMachine());
         outcome->tools = std::make_shared<const nc::ToolTable>(toolTableOf(job));
         auto nc = post->run(program.value(), options.value());
         if (!nc) {
@@ -442,6 +514,7 @@ void Workbench::finishCompute(const std::shared_ptr<ComputeOutcome>& outcome)
         m_ncExtension = qs(outcome->ncExtension);
         m_machine = outcome->machine;
         m_tools = outcome->tools;
+        m_postInfo = outcome->postInfo;
         for (const base::Diagnostic& m : outcome->nc->messages)
             report(m.severity, qs(base::formatDiagnostic(m)));
         report(Severity::Note, tr("Posted %1 lines with %2").arg(m_nc.count('\n')).arg(qs(job().postId)));
@@ -469,6 +542,7 @@ void Workbench::applyProblems(const ComputeOutcome& outcome)
     m_programProblem = errors.join(QLatin1Char('\n'));
     m_modelProblem = outcome.modelFailed ? m_programProblem : QString();
     m_operationProblems.assign(job().operations.size(), QString());
+    m_operationSeconds = outcome.operationSeconds;
     for (QString& problem : m_operationProblems)
         problem = outcome.modelFailed ? tr("unresolved: the model is not loaded (%1)").arg(m_modelProblem) : QString();
     for (const document::OperationFailure& f : outcome.failures)

@@ -55,6 +55,9 @@ public:
     std::shared_ptr<const kinematics::Machine> machine() const { return m_machine; }
     // The job's tools as the last posted program was made with them: what its T and D words mean.
     std::shared_ptr<const nc::ToolTable> toolTable() const { return m_tools; }
+    // The post the last program was posted with (its properties and their defaults); nullptr
+    // before the first post.
+    std::shared_ptr<const post::PostInfo> postInfo() const { return m_postInfo; }
     // Why operation `index` cannot be made as the job stands (empty when it can or is untried).
     QString operationProblem(int index) const;
     // Why the job's model is not loaded (empty when it is, or the job has none).
@@ -100,6 +103,17 @@ public:
     // does not drive gives way to its default (reported). False, reported, when it cannot load.
     bool setPost(const std::string& postId, const std::optional<std::string>& machineId = {},
                  const std::optional<std::map<std::string, std::string>>& values = {});
+    // The job tree's edits, one undoable step each; out-of-range indices and no-ops add none.
+    // Moves operation `from` to position `to` (the order is the program's order; tool changes
+    // follow it when the job is computed).
+    void moveOperation(int from, int to);
+    void setOperationEnabled(int index, bool enabled);
+    // Inserts a copy ("<name> (copy)") right after the operation.
+    void duplicateOperation(int index);
+    void renameOperation(int index, const QString& name);
+    // Seconds operation `index` takes on the machine (planned motion) in the last program; < 0
+    // when unknown (not computed, disabled, failed).
+    double operationSeconds(int index) const;
     void undo();
     void redo();
 
@@ -139,8 +153,10 @@ private:
     QString m_programProblem;
     std::shared_ptr<const kinematics::Machine> m_machine;
     std::shared_ptr<const nc::ToolTable> m_tools;
+    std::shared_ptr<const post::PostInfo> m_postInfo;
     QString m_modelProblem;
     std::vector<QString> m_operationProblems;  // by operation index, from the last compute
+    std::vector<double> m_operationSeconds;    // by operation index, from the last compute
     Prompter* m_prompter = nullptr;
     bool m_busy = false;
     bool m_recomputePending = false;

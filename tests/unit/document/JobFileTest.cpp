@@ -189,6 +189,25 @@ TEST(JobFile, ToolExtrasAreOptional)
     EXPECT_NE(notText.error().message.find("holder"), std::string::npos) << notText.error().message;
 }
 
+TEST(JobFile, DisabledOperationIsKeptAndNeedsVersionSix)
+{
+    auto job = document::parseJob(validText(), "job.camwb");
+    ASSERT_TRUE(job.ok()) << job.error().toString();
+    EXPECT_TRUE(job->operations[1].enabled);
+    EXPECT_EQ(document::serializeJob(job.value()).find("\"enabled\""), std::string::npos) << "written only when off";
+    job->operations[1].enabled = false;
+    const std::string text = document::serializeJob(job.value());
+    EXPECT_NE(text.find("\"version\": 6"), std::string::npos);
+    EXPECT_NE(text.find("\"enabled\": false"), std::string::npos);
+    auto back = document::parseJob(text, "job.camwb");
+    ASSERT_TRUE(back.ok()) << back.error().toString();
+    EXPECT_FALSE(back->operations[1].enabled);
+    EXPECT_TRUE(back->operations[0].enabled);
+    EXPECT_EQ(document::serializeJob(back.value()), text);
+    const base::Error e = parseError(replaced(text, "\"enabled\": false", "\"enabled\": \"no\""));
+    EXPECT_NE(e.message.find("enabled"), std::string::npos) << e.message;
+}
+
 TEST(JobFile, MalformedJsonNamesLineAndColumn)
 {
     const base::Error e = parseError("{\n  \"format\": \"camwb-job\",\n  \"version\": 1 2\n}\n");

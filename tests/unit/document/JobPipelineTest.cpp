@@ -4,6 +4,8 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 using namespace camwb;
 
 namespace {
@@ -173,4 +175,53 @@ TEST(JobPipeline, EveryOperationThatCannotBeMadeIsNamedWhenAsked)
     EXPECT_EQ(all.failures[1].operation, 2);
     EXPECT_NE(all.failures[1].message.find("no tool number 99"), std::string::npos) << all.failures[1].message;
     EXPECT_EQ(all.counts.size(), j.operations.size());
+}
+
+TEST(JobPipeline, DisabledOperationIsNeitherComputedNorPosted)
+{
+    auto job = document::loadJob(kExampleJob);
+    ASSERT_TRUE(job.ok());
+    auto model = document::loadJobModel(job.value());
+    ASSERT_TRUE(model.ok());
+    document::Job j = job.value();
+    // The pocket (T2) off: the helix after it (T2 too) must now change to T2 itself.
+    ASSERT_GE(j.operations.size(), 3u);
+    ASSERT_EQ(j.operations[1].toolNumber, j.operations[2].toolNumber);
+    ASSERT_NE(j.operations[0].toolNumber, j.operations[1].toolNumber);
+    j.operations[1].enabled = false;
+    j.operations[1].toolNumber = 99;  // not even its tool is looked at
+    document::ProgramReport report;
+    auto program = document::computeProgram(j, model.value(), {}, &report);
+    ASSERT_TRUE(program.ok()) << program.error().toString();
+    ASSERT_EQ(report.counts.size(), j.operations.size());
+    EXPECT_EQ(report.counts[1].lines + report.counts[1].arcs + report.counts[1].rapids, 0u);
+
+    std::vector<int> sectionOps, toolChanges;
+    for (std::size_t r = 0; r < program->size(); ++r) {
+        const toolpath::Record& record = program->record(r);
+        EXPECT_NE(program->source(r).operationIndex, 1);
+        if (const auto* begin = std::get_if<toolpath::SectionBegin>(&record)) {
+            EXPECT_NE(begin->operationName, j.operations[1].name());
+            sectionOps.push_back(program->source(r).operationIndex);
+        }
+        if (const auto* change = std::get_if<toolpath::ToolChange>(&record))
+            toolChanges.push_back(change->tool.number);
+    }
+    ASSERT_GE(sectionOps.size(), 3u);
+    EXPECT_EQ(sectionOps[0], 0);
+    EXPECT_EQ(sectionOps[1], 2) << "the operations after it keep their job indices";
+    ASSERT_GE(toolChanges.size(), 2u);
+    EXPECT_EQ(toolChanges[1], j.operations[2].toolNumber);
+
+    // Posted: no line of the NC comes from it, and its name is nowhere in the program.
+    auto post = document::loadJobPost(j, post::defaultPostDirs());
+    ASSERT_TRUE(post.ok()) << post.error().toString();
+    auto options = document::jobRunOptions(j, post.value(), {}, kinematics::defaultMachineDirs());
+    ASSERT_TRUE(options.ok()) << options.error().toString();
+    auto nc = post->run(program.value(), options.value());
+    ASSERT_TRUE(nc.ok()) << nc.error().toString();
+    EXPECT_EQ(nc->text.find(j.operations[1].name()), std::string::npos);
+    EXPECT_NE(nc->text.find(j.operations[2].name()), std::string::npos);
+    EXPECT_EQ(std::count(nc->lineOperation.begin(), nc->lineOperation.end(), 1), 0);
+    EXPECT_GT(std::count(nc->lineOperation.begin(), nc->lineOperation.end(), 2), 0);
 }

@@ -187,6 +187,32 @@ TEST(MotionPlan, CycleTimesPerToolAndSectionAddUpToTheTotal)
     EXPECT_EQ(c.simplePerTool.size(), 2u);
 }
 
+TEST(MotionPlan, SecondsPerOperationFollowTheRecordsSources)
+{
+    toolpath::Toolpath p;
+    toolpath::Tool t1;
+    t1.number = 1;
+    p.add(toolpath::Rapid{{0, 0, 30}});  // before any operation: from where, then a move
+    p.add(toolpath::Rapid{{0, 0, 20}});
+    p.add(toolpath::SectionBegin{"Face", "profile", 1}, {3, 0});
+    p.add(toolpath::ToolChange{t1}, {3, -1});
+    p.add(toolpath::Rapid{{0, 0, 10}}, {3, 1});
+    p.add(toolpath::Linear{{40, 0, 10}, 1200}, {3, 2});
+    p.add(toolpath::SectionEnd{}, {3, 3});
+    p.add(toolpath::SectionBegin{"Other", "profile", 1}, {5, 0});
+    p.add(toolpath::Linear{{40, 30, 10}, 600}, {5, 1});
+    p.add(toolpath::SectionEnd{}, {5, 2});
+    const sim::MoveList list = sim::buildMoves(p);
+    const kinematics::Machine m = machine3();
+    const sim::MotionPlan plan = sim::planMotion(list, m);
+    const std::map<int, double> seconds = sim::secondsPerOperation(p, list, plan);
+    ASSERT_EQ(seconds.size(), 3u);
+    EXPECT_NEAR(seconds.at(-1) + seconds.at(3) + seconds.at(5), plan.totalSeconds, 1e-9);
+    EXPECT_GE(seconds.at(3), m.toolChangeSeconds) << "the tool change counts for its operation";
+    EXPECT_GT(seconds.at(5), 30.0 / 10.0) << "30 mm at 10 mm/s, and some acceleration";
+    EXPECT_LT(seconds.at(-1), m.toolChangeSeconds);
+}
+
 TEST(MotionSamples, FixedStepSamplesFollowThePlan)
 {
     sim::MoveList list;

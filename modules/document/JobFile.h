@@ -15,8 +15,9 @@ namespace camwb::document {
 // own "postProperties". Versions 1-4 are still read (their "profile" becomes an outside contour);
 // writing gives 5 when the job has a swarf operation or an operation's own post properties, else 4
 // when an operation has a working plane, else 3, so that a CAM Workbench that knows neither
-// refuses a job it would compute otherwise.
-inline constexpr int kJobFormatVersion = 5;
+// refuses a job it would compute otherwise. Version 6 added the job's stock "material" and a
+// tool's "cuttingData" (per material, from a tool library); written only when one is given.
+inline constexpr int kJobFormatVersion = 6;
 
 // In memory a job's model path is absolute; in the file it is relative to the job file's folder.
 // loadJob resolves it, saveJob makes it relative again, so jobs can be moved with their models.

@@ -2,14 +2,13 @@
 // with "type", "unit", "geometry" (DC diameter, NOF flutes, LCF flute length, OAL overall length,
 // RE corner radius, SIG point angle), "post-process" (number) and "start-values"."presets": the
 // cutting data per material (v_c, f_z, n, v_f, v_f_plunge, v_f_ramp), which we keep.
-#include "base/AtomicFile.h"
 #include "base/JsonRead.h"
-#include "document/ToolLibraryImport.h"
+#include "document/detail/FusionTools.h"
 
 #include <filesystem>
 #include <numbers>
 
-namespace camwb::document {
+namespace camwb::document::detail {
 
 using nlohmann::json;
 using namespace base::jsonread;
@@ -136,6 +135,8 @@ ops::ToolController readFusionTool(const json& t, int index, const Units& u, con
     return tc;
 }
 
+}  // namespace
+
 ImportedTools readFusionLibrary(const json& root, const std::string& path)
 {
     ImportedTools out;
@@ -155,23 +156,4 @@ ImportedTools readFusionLibrary(const json& root, const std::string& path)
     return out;
 }
 
-}  // namespace
-
-base::Result<ImportedTools> importFusionLibrary(const std::string& path)
-{
-    auto content = base::readTextFile(path);
-    if (!content)
-        return content.error();
-    if (content.value().rfind("PK", 0) == 0)
-        return base::makeError("a zipped Fusion 360 .tools file: unzip it and import the tools.json inside", path);
-    auto root = parse(content.value(), path);
-    if (!root)
-        return root.error();
-    try {
-        return readFusionLibrary(root.value(), path);
-    } catch (const JsonFieldError& e) {
-        return base::makeError(e.message, path);
-    }
-}
-
-}  // namespace camwb::document
+}  // namespace camwb::document::detail

@@ -2,9 +2,11 @@
 
 #include "base/AtomicFile.h"
 #include "base/JsonRead.h"
+#include "document/detail/FusionTools.h"
 
 #include <cstdlib>
 #include <filesystem>
+#include <utility>
 
 namespace camwb::document {
 
@@ -151,21 +153,44 @@ ImportedTools readFreeCadLibrary(const json& root, const std::string& path)
     return out;
 }
 
-}  // namespace
-
-base::Result<ImportedTools> importFreeCadLibrary(const std::string& path)
+// The file's text and its JSON; errors name the file (and line and column of malformed JSON).
+base::Result<std::pair<std::string, json>> readJsonFile(const std::string& path)
 {
     auto content = base::readTextFile(path);
     if (!content)
         return content.error();
+    // Fusion's .tools is a zip holding the JSON: say what to do rather than "malformed JSON".
+    if (content.value().rfind("PK", 0) == 0)
+        return base::makeError("a zipped Fusion 360 .tools file: unzip it and import the tools.json inside", path);
     auto root = parse(content.value(), path);
     if (!root)
         return root.error();
+    return std::pair{std::move(content.value()), std::move(root.value())};
+}
+
+// Runs a reader that throws JsonFieldError, turning that into an error naming the file.
+template <class Reader> base::Result<ImportedTools> importWith(const std::string& path, Reader read)
+{
+    auto file = readJsonFile(path);
+    if (!file)
+        return file.error();
     try {
-        return readFreeCadLibrary(root.value(), path);
+        return read(file->second, path);
     } catch (const JsonFieldError& e) {
         return base::makeError(e.message, path);
     }
+}
+
+}  // namespace
+
+base::Result<ImportedTools> importFreeCadLibrary(const std::string& path)
+{
+    return importWith(path, readFreeCadLibrary);
+}
+
+base::Result<ImportedTools> importFusionLibrary(const std::string& path)
+{
+    return importWith(path, detail::readFusionLibrary);
 }
 
 base::Result<ImportedTools> importToolLibrary(const std::string& path)
@@ -175,15 +200,12 @@ base::Result<ImportedTools> importToolLibrary(const std::string& path)
         return importFreeCadLibrary(path);
     if (ext == ".tools")
         return importFusionLibrary(path);
-    auto content = base::readTextFile(path);
-    if (!content)
-        return content.error();
-    auto root = parse(content.value(), path);
-    if (!root)
-        return root.error();
-    if (root.value().is_object() && root.value().contains("data"))
+    auto file = readJsonFile(path);
+    if (!file)
+        return file.error();
+    if (file->second.is_object() && file->second.contains("data"))
         return importFusionLibrary(path);
-    auto ours = parseToolLibrary(content.value(), path);
+    auto ours = parseToolLibrary(file->first, path);
     if (!ours)
         return ours.error();
     return ImportedTools{std::move(ours.value()), {}};

@@ -22,6 +22,7 @@
 #include "gui/sim/SimRequest.h"
 #include "gui/tasks/OperationPanel.h"
 #include "gui/tasks/PostSettingsPanel.h"
+#include "gui/tools/ToolActions.h"
 #include "gui/view3d/TaskOverlay.h"
 #include "gui/view3d/View3D.h"
 #include "kinematics/Machine.h"
@@ -302,6 +303,8 @@ void MainWindow::registerActions()
         [this] { m_view->setViewPreset(View3D::Preset::Right); });
     add({"Cam.View.FitAll", tr("Fit &All"), view, QKeySequence(Qt::Key_F), true}, [this] { m_view->fitAll(); });
     registerDockActions(view);
+    registerToolActions(
+        *m_actions, *m_workbench, [this]() -> Prompter& { return *m_prompter; }, this);
 
     add({"Cam.Help.About", tr("&About CAM Workbench"), help}, [this] {
         QMessageBox::about(

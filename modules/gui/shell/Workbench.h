@@ -97,6 +97,15 @@ public:
     // does not drive gives way to its default (reported). False, reported, when it cannot load.
     bool setPost(const std::string& postId, const std::optional<std::string>& machineId = {},
                  const std::optional<std::map<std::string, std::string>>& values = {});
+    // Copies tools (from a tool library) into the job as one undoable step; a number the job has
+    // already gets the next free one, and the report says so.
+    void addTools(const std::vector<ops::ToolController>& tools);
+    // Sets the job's tools' speeds and feeds (tool `number`, 0: all with cutting data for the
+    // job's material) from their cutting data, clamped to machine(); one undoable step. False,
+    // the job unchanged and the reason shown, when nothing could be computed.
+    bool computeFeeds(int number = 0);
+    // The stock material the cutting data is chosen by; one undoable step.
+    void setMaterial(const std::string& material);
     void undo();
     void redo();
 

@@ -342,6 +342,17 @@ bool Workbench::computeFeeds(int number)
     return true;
 }
 
+void Workbench::updateTool(int index, const ops::ToolController& tool)
+{
+    if (index < 0 || index >= static_cast<int>(job().tools.size()))
+        return;
+    document::Job edited = job();
+    edited.tools[index] = tool;
+    if (document::serializeJob(edited) == document::serializeJob(job()))
+        return;
+    m_document.edit("Edit tool " + tool.tool.name, [&](document::Job& j) { j = edited; });
+}
+
 void Workbench::setMaterial(const std::string& material)
 {
     if (material != job().material)

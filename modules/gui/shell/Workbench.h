@@ -104,6 +104,9 @@ public:
     // job's material) from their cutting data, clamped to machine(); one undoable step. False,
     // the job unchanged and the reason shown, when nothing could be computed.
     bool computeFeeds(int number = 0);
+    // Replaces the job's tool at `index` (speeds and feeds edited by hand); one undoable step,
+    // none when nothing changed.
+    void updateTool(int index, const ops::ToolController& tool);
     // The stock material the cutting data is chosen by; one undoable step.
     void setMaterial(const std::string& material);
     void undo();

@@ -17,6 +17,7 @@
 #include <QPushButton>
 #include <QSortFilterProxyModel>
 #include <QSplitter>
+#include <QTabWidget>
 #include <QTableView>
 #include <QVBoxLayout>
 
@@ -106,7 +107,7 @@ void ToolLibraryDialog::buildUi()
     m_tools->horizontalHeader()->setSectionResizeMode(ToolTableModel::Name, QHeaderView::Stretch);
     m_tools->resizeColumnsToContents();
 
-    auto* cuttingBox = new QGroupBox(tr("Cutting data of the current tool"), this);
+    auto* cuttingBox = new QGroupBox(tr("Cutting data of the current library tool"), this);
     auto* cuttingLayout = new QVBoxLayout(cuttingBox);
     m_cutting = new CuttingDataModel(this);
     m_cuttingView = new QTableView(cuttingBox);
@@ -123,8 +124,22 @@ void ToolLibraryDialog::buildUi()
     cuttingButtons->addStretch();
     cuttingLayout->addLayout(cuttingButtons);
 
+    // The job's tools beside the library's: their computed speeds and feeds, edited in place.
+    m_jobTools = new QTableView(this);
+    m_jobTools->setObjectName(QStringLiteral("jobToolTable"));
+    m_jobTools->setModel(new JobToolsModel(m_workbench, this));
+    m_jobTools->verticalHeader()->hide();
+    m_jobTools->setSelectionBehavior(QAbstractItemView::SelectRows);
+    m_jobTools->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
+    m_jobTools->horizontalHeader()->setSectionResizeMode(JobToolsModel::Name, QHeaderView::Stretch);
+    m_jobTools->verticalHeader()->setDefaultSectionSize(fontMetrics().height() + 8);
+    m_tabs = new QTabWidget(this);
+    m_tabs->setObjectName(QStringLiteral("toolTabs"));
+    m_tabs->addTab(m_tools, tr("Library"));
+    m_tabs->addTab(m_jobTools, tr("Job Tools"));
+
     auto* splitter = new QSplitter(Qt::Vertical, this);
-    splitter->addWidget(m_tools);
+    splitter->addWidget(m_tabs);
     splitter->addWidget(cuttingBox);
     splitter->setStretchFactor(0, 2);
     splitter->setStretchFactor(1, 1);
@@ -164,6 +179,10 @@ void ToolLibraryDialog::buildUi()
     m_status->setText(tr("Library: %1").arg(m_path));
     layout->addWidget(m_status);
 
+    // The cutting data below belongs to the library's tools: not shown beside the job's.
+    connect(m_tabs, &QTabWidget::currentChanged, cuttingBox,
+            [this, cuttingBox](int tab) { cuttingBox->setVisible(m_tabs->widget(tab) == m_tools); });
+    connect(&m_workbench, &Workbench::jobChanged, this, &ToolLibraryDialog::refreshMaterials);
     connect(m_filter, &QLineEdit::textChanged, m_proxy, &QSortFilterProxyModel::setFilterFixedString);
     connect(m_model, &ToolTableModel::edited, this, &ToolLibraryDialog::markModified);
     connect(m_cutting, &CuttingDataModel::edited, this, [this] {

@@ -1,7 +1,8 @@
 // The tool library dialog: the user's library as a table (filter, add, edit in place, duplicate,
 // delete), each tool's cutting data per material, import from FreeCAD (.fctl) and Fusion 360
-// (.tools/.json), export to our format, "Add to Job" (copies, one undo step) and the job's stock
-// material. A library file that cannot be read is reported and never saved over.
+// (.tools/.json), export to our format, "Add to Job" (copies, one undo step), the job's stock
+// material and the job's tools' speeds and feeds (computed, then editable). A library file that
+// cannot be read is reported and never saved over.
 #pragma once
 
 #include "document/ToolLibrary.h"
@@ -13,6 +14,7 @@ class QComboBox;
 class QLabel;
 class QLineEdit;
 class QSortFilterProxyModel;
+class QTabWidget;
 class QTableView;
 
 namespace camwb::gui {
@@ -37,6 +39,8 @@ public:
     bool canSave() const { return m_canSave; }
     bool isModified() const { return m_modified; }
     QTableView* toolView() const { return m_tools; }
+    // The job's tools with their speeds and feeds (editable).
+    QTableView* jobToolView() const { return m_jobTools; }
     // Selects the library's rows (indices into library().tools), as the user would.
     void selectTools(const QList<int>& rows);
     QList<int> selectedTools() const;
@@ -71,6 +75,8 @@ private:
     CuttingDataModel* m_cutting = nullptr;
     QTableView* m_tools = nullptr;
     QTableView* m_cuttingView = nullptr;
+    QTableView* m_jobTools = nullptr;
+    QTabWidget* m_tabs = nullptr;
     QLineEdit* m_filter = nullptr;
     QComboBox* m_material = nullptr;
     QLabel* m_status = nullptr;

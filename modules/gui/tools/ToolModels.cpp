@@ -1,5 +1,7 @@
 #include "gui/tools/ToolModels.h"
 
+#include "gui/shell/Workbench.h"
+
 namespace camwb::gui {
 
 namespace {
@@ -162,6 +164,108 @@ void ToolTableModel::reload()
 {
     beginResetModel();
     endResetModel();
+}
+
+JobToolsModel::JobToolsModel(Workbench& workbench, QObject* parent) :
+    QAbstractTableModel(parent),
+    m_workbench(&workbench)
+{
+    auto reset = [this] {
+        beginResetModel();
+        endResetModel();
+    };
+    connect(&workbench, &Workbench::jobChanged, this, reset);
+    connect(&workbench, &QObject::destroyed, this, reset);
+}
+
+int JobToolsModel::rowCount(const QModelIndex& parent) const
+{
+    return parent.isValid() || !workbench() ? 0 : static_cast<int>(workbench()->job().tools.size());
+}
+
+int JobToolsModel::columnCount(const QModelIndex& parent) const { return parent.isValid() ? 0 : ColumnCount; }
+
+QVariant JobToolsModel::data(const QModelIndex& index, int role) const
+{
+    if (!index.isValid() || !workbench() || (role != Qt::DisplayRole && role != Qt::EditRole))
+        return {};
+    const ops::ToolController& tc = workbench()->job().tools[index.row()];
+    switch (index.column()) {
+    case Number:
+        return tc.tool.number;
+    case Name:
+        return QString::fromStdString(tc.tool.name);
+    case Diameter:
+        return tc.tool.diameterMm;
+    case Flutes:
+        return tc.tool.flutes;
+    case Rpm:
+        return tc.spindleRpm;
+    case CuttingFeed:
+        return tc.cuttingFeedMmPerMin;
+    case PlungeFeed:
+        return tc.plungeFeedMmPerMin;
+    case RampFeed:
+        return tc.rampFeedMmPerMin;
+    case Materials: {
+        QStringList materials;
+        for (const ops::CuttingData& c : tc.cuttingData)
+            materials << QString::fromStdString(c.material);
+        return materials.join(QStringLiteral(", "));
+    }
+    default:
+        return {};
+    }
+}
+
+QVariant JobToolsModel::headerData(int section, Qt::Orientation orientation, int role) const
+{
+    if (orientation != Qt::Horizontal || role != Qt::DisplayRole)
+        return QAbstractTableModel::headerData(section, orientation, role);
+    switch (section) {
+    case Number:
+        return tr("T");
+    case Name:
+        return tr("Name");
+    case Diameter:
+        return tr("D (mm)");
+    case Flutes:
+        return tr("Flutes");
+    case Rpm:
+        return tr("Spindle (rpm)");
+    case CuttingFeed:
+        return tr("Feed (mm/min)");
+    case PlungeFeed:
+        return tr("Plunge (mm/min)");
+    case RampFeed:
+        return tr("Ramp (mm/min)");
+    case Materials:
+        return tr("Cutting data for");
+    default:
+        return {};
+    }
+}
+
+Qt::ItemFlags JobToolsModel::flags(const QModelIndex& index) const
+{
+    const bool editable = index.column() >= Rpm && index.column() <= RampFeed;
+    return QAbstractTableModel::flags(index) | (editable ? Qt::ItemIsEditable : Qt::NoItemFlags);
+}
+
+bool JobToolsModel::setData(const QModelIndex& index, const QVariant& value, int role)
+{
+    if (!index.isValid() || !m_workbench || role != Qt::EditRole)
+        return false;
+    ops::ToolController tc = m_workbench->job().tools[index.row()];
+    double* field = index.column() == Rpm           ? &tc.spindleRpm
+                    : index.column() == CuttingFeed ? &tc.cuttingFeedMmPerMin
+                    : index.column() == PlungeFeed  ? &tc.plungeFeedMmPerMin
+                    : index.column() == RampFeed    ? &tc.rampFeedMmPerMin
+                                                    : nullptr;
+    if (!field || !toNumber(value, 0, *field))
+        return false;
+    m_workbench->updateTool(index.row(), tc);  // the job's change resets the model
+    return true;
 }
 
 CuttingDataModel::CuttingDataModel(QObject* parent) : QAbstractTableModel(parent) {}

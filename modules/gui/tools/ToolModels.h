@@ -6,6 +6,7 @@
 #include "ops/OpCommon.h"
 
 #include <QAbstractTableModel>
+#include <QPointer>
 
 #include <vector>
 
@@ -45,6 +46,30 @@ signals:
 
 private:
     std::vector<ops::ToolController>* m_tools;
+};
+
+class Workbench;
+
+// The job's tools with their speeds and feeds, which the user may edit after computing them
+// (each edit one undo step through the workbench); follows the job.
+class JobToolsModel : public QAbstractTableModel {
+    Q_OBJECT
+public:
+    enum Column { Number, Name, Diameter, Flutes, Rpm, CuttingFeed, PlungeFeed, RampFeed, Materials, ColumnCount };
+
+    explicit JobToolsModel(Workbench& workbench, QObject* parent = nullptr);
+
+    int rowCount(const QModelIndex& parent = {}) const override;
+    int columnCount(const QModelIndex& parent = {}) const override;
+    QVariant data(const QModelIndex& index, int role) const override;
+    QVariant headerData(int section, Qt::Orientation orientation, int role) const override;
+    Qt::ItemFlags flags(const QModelIndex& index) const override;
+    bool setData(const QModelIndex& index, const QVariant& value, int role) override;
+
+private:
+    // The window may destroy the workbench before this dialog's model: then the model is empty.
+    const Workbench* workbench() const { return m_workbench.data(); }
+    QPointer<Workbench> m_workbench;
 };
 
 class CuttingDataModel : public QAbstractTableModel {

@@ -13,6 +13,7 @@
 #include "gui/shell/Workbench.h"
 #include "gui/tools/ToolActions.h"
 #include "gui/tools/ToolLibraryDialog.h"
+#include "gui/tools/ToolModels.h"
 #include "gui/view3d/View3D.h"
 
 #include <QApplication>
@@ -23,6 +24,7 @@
 #include <QPushButton>
 #include <QSignalSpy>
 #include <QStandardPaths>
+#include <QTabWidget>
 #include <QTableView>
 #include <QTemporaryDir>
 #include <QTest>
@@ -147,6 +149,20 @@ private slots:
         const QString said = messages(messageSpy).join('\n');
         QVERIFY2(said.contains(QStringLiteral("spindle maximum")), qPrintable(said));
         QVERIFY2(said.contains(QStringLiteral("left as it was")), qPrintable(said));  // the job's own tools
+
+        // The computed values stay editable in the job tools table: one undo step per edit.
+        auto* tabs = dialog->findChild<QTabWidget*>(QStringLiteral("toolTabs"));
+        QVERIFY(tabs);
+        tabs->setCurrentWidget(dialog->jobToolView());
+        QAbstractItemModel* jobTools = dialog->jobToolView()->model();
+        QCOMPARE(jobTools->rowCount(), 4);
+        QCOMPARE(jobTools->data(jobTools->index(3, camwb::gui::JobToolsModel::Rpm)).toDouble(), 5000.0);
+        saveShot(dialog, QStringLiteral("tool-library-job-tools.png"));
+        QVERIFY(jobTools->setData(jobTools->index(3, camwb::gui::JobToolsModel::Rpm), QStringLiteral("4500")));
+        QCOMPARE(window.workbench().job().tool(5)->spindleRpm, 4500.0);
+        QVERIFY(!jobTools->setData(jobTools->index(3, camwb::gui::JobToolsModel::Rpm), QStringLiteral("fast")));
+        QVERIFY(window.actions().trigger(QStringLiteral("Cam.Edit.Undo")));
+        QCOMPARE(window.workbench().job().tool(5)->spindleRpm, 5000.0);
 
         QVERIFY(window.actions().trigger(QStringLiteral("Cam.Edit.Undo")));
         QCOMPARE(window.workbench().job().tool(5)->spindleRpm, 0.0);

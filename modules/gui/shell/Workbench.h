@@ -98,7 +98,7 @@ public:
     bool setPost(const std::string& postId, const std::optional<std::string>& machineId = {},
                  const std::optional<std::map<std::string, std::string>>& values = {});
     // Copies tools (from a tool library) into the job as one undoable step; a number the job has
-    // already gets the next free one, and the report says so.
+    // already gets the next free one, and the report says so. These four: gui/tools/WorkbenchTools.cpp.
     void addTools(const std::vector<ops::ToolController>& tools);
     // Sets the job's tools' speeds and feeds (tool `number`, 0: all with cutting data for the
     // job's material) from their cutting data, clamped to machine(); one undoable step. False,

@@ -24,6 +24,7 @@ file(GLOB post_includes CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/posts/include/*.
 install(FILES ${post_includes} DESTINATION ${CMAKE_INSTALL_DATADIR}/camwb/posts/include)
 install(DIRECTORY ${PROJECT_SOURCE_DIR}/resources/machines/ DESTINATION ${CMAKE_INSTALL_DATADIR}/camwb/machines
         FILES_MATCHING PATTERN "*.json")
+install(FILES ${PROJECT_SOURCE_DIR}/resources/tools/default.camwb-tools.json DESTINATION ${CMAKE_INSTALL_DATADIR}/camwb/tools)
 install(FILES ${PROJECT_SOURCE_DIR}/resources/examples/example-block.camwb
               ${PROJECT_SOURCE_DIR}/resources/examples/example-block.step
         DESTINATION ${CMAKE_INSTALL_DATADIR}/camwb/examples)

@@ -96,6 +96,7 @@ struct Job {
     std::string postId = "sinumerik828d-emco";
     std::map<std::string, std::string> postProperties;  // values as text, by property name
     std::string machineId;                              // empty: the post's default machine
+    std::string material;  // the stock material tools' cutting data is chosen by; empty: none given
 
     const ops::ToolController* tool(int number) const;
 };

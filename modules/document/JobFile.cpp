@@ -3,6 +3,7 @@
 #include "base/AtomicFile.h"
 #include "base/JsonRead.h"
 #include "document/detail/OperationFile.h"
+#include "document/detail/ToolFile.h"
 
 #include <algorithm>
 #include <filesystem>
@@ -15,31 +16,6 @@ using nlohmann::json;
 namespace {
 
 using namespace base::jsonread;
-
-ops::ToolController readTool(const json& t, const std::string& where)
-{
-    ops::ToolController tc;
-    tc.tool.number = integer(t, "number", where);
-    tc.tool.name = text(t, "name", where);
-    tc.tool.kind = text(t, "kind", where);
-    tc.tool.diameterMm = number(t, "diameter", where);
-    tc.tool.cornerRadiusMm = number(t, "cornerRadius", where);
-    tc.tool.fluteLengthMm = number(t, "fluteLength", where);
-    tc.tool.lengthMm = number(t, "length", where);
-    tc.tool.flutes = integer(t, "flutes", where);
-    tc.spindleRpm = number(t, "spindleRpm", where);
-    tc.cuttingFeedMmPerMin = number(t, "cuttingFeed", where);
-    tc.plungeFeedMmPerMin = number(t, "plungeFeed", where);
-    if (optionalMember(t, "rampFeed", where))
-        tc.rampFeedMmPerMin = number(t, "rampFeed", where);
-    if (optionalMember(t, "pointAngle", where))
-        tc.tool.pointAngleDeg = number(t, "pointAngle", where);
-    if (optionalMember(t, "centreCutting", where))
-        tc.tool.centreCutting = boolean(t, "centreCutting", where);
-    if (optionalMember(t, "holder", where))
-        tc.tool.holder = text(t, "holder", where);
-    return tc;
-}
 
 Job readJob(const json& root)
 {
@@ -66,6 +42,8 @@ Job readJob(const json& root)
     job.postId = text(root, "post", where);
     if (optionalMember(root, "machine", where))
         job.machineId = text(root, "machine", where);
+    if (optionalMember(root, "material", where))
+        job.material = text(root, "material", where);
     if (const Json* properties = optionalMember(root, "postProperties", where))
         job.postProperties = detail::readPostProperties(*properties, where + ".postProperties");
 
@@ -73,7 +51,7 @@ Job readJob(const json& root)
     if (!tools.is_array())
         throw JsonFieldError{where + ".tools: expected an array"};
     for (std::size_t i = 0; i < tools.size(); ++i)
-        job.tools.push_back(readTool(tools[i], where + ".tools[" + std::to_string(i) + "]"));
+        job.tools.push_back(detail::readTool(tools[i], where + ".tools[" + std::to_string(i) + "]", true));
 
     const json& operations = member(root, "operations", where);
     if (!operations.is_array())
@@ -126,10 +104,14 @@ std::string serializeJob(const Job& job)
     const bool swarf = std::any_of(job.operations.begin(), job.operations.end(), [](const Operation& op) {
         return op.kind() == OperationKind::Swarf || !op.postProperties.empty();
     });
-    // Version 6: a disabled operation (an older reader would post it).
+    // Version 6: a disabled operation (an older reader would post it), a stock material or tools'
+    // cutting data (an older reader would drop them on save).
     const bool disabled =
         std::any_of(job.operations.begin(), job.operations.end(), [](const Operation& op) { return !op.enabled; });
-    root["version"] = disabled ? 6 : swarf ? 5 : planes ? 4 : 3;
+    const bool cuttingData =
+        !job.material.empty() ||
+        std::any_of(job.tools.begin(), job.tools.end(), [](const auto& tc) { return !tc.cuttingData.empty(); });
+    root["version"] = disabled || cuttingData ? 6 : swarf ? 5 : planes ? 4 : 3;
     root["name"] = job.name;
     root["model"] = job.modelPath;
     root["stock"] = {{"min", {job.stock.min.x, job.stock.min.y, job.stock.min.z}},
@@ -140,30 +122,11 @@ std::string serializeJob(const Job& job)
         root["machine"] = job.machineId;
     if (!job.postProperties.empty())
         root["postProperties"] = job.postProperties;
+    if (!job.material.empty())
+        root["material"] = job.material;
     root["tools"] = ojson::array();
-    for (const ops::ToolController& tc : job.tools) {
-        ojson tool = {{"number", tc.tool.number},
-                      {"name", tc.tool.name},
-                      {"kind", tc.tool.kind},
-                      {"diameter", tc.tool.diameterMm},
-                      {"cornerRadius", tc.tool.cornerRadiusMm},
-                      {"fluteLength", tc.tool.fluteLengthMm},
-                      {"length", tc.tool.lengthMm},
-                      {"flutes", tc.tool.flutes},
-                      {"spindleRpm", tc.spindleRpm},
-                      {"cuttingFeed", tc.cuttingFeedMmPerMin},
-                      {"plungeFeed", tc.plungeFeedMmPerMin}};
-        // Written only when set, so tools that do not use them read as before.
-        if (tc.rampFeedMmPerMin > 0)
-            tool["rampFeed"] = tc.rampFeedMmPerMin;
-        if (tc.tool.pointAngleDeg > 0)
-            tool["pointAngle"] = tc.tool.pointAngleDeg;
-        if (!tc.tool.centreCutting)
-            tool["centreCutting"] = false;
-        if (!tc.tool.holder.empty())
-            tool["holder"] = tc.tool.holder;
-        root["tools"].push_back(tool);
-    }
+    for (const ops::ToolController& tc : job.tools)
+        root["tools"].push_back(detail::writeTool(tc));
     root["operations"] = ojson::array();
     for (const Operation& op : job.operations)
         root["operations"].push_back(detail::writeOperation(op));

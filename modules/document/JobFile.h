@@ -12,10 +12,12 @@ namespace camwb::document {
 // Version 2 added the optional "machine" and "postProperties"; version 3 the operation kinds
 // (contour, pocket, helix, drill) with geometry references, height overrides and parameters;
 // version 4 an operation's "workingPlane" (3+2); version 5 the swarf operation and an operation's
-// own "postProperties"; version 6 an operation's "enabled": false. Versions 1-4 are still read (their "profile" becomes
-// an outside contour); writing gives 6 when an operation is disabled, else 5 when the job has a swarf operation or an
-// operation's own post properties, else 4 when an operation has a working plane, else 3, so that a CAM Workbench that
-// knows neither refuses a job it would compute otherwise.
+// own "postProperties"; version 6 an operation's "enabled": false, the job's stock "material" and a
+// tool's "cuttingData" (per material, from a tool library). Versions 1-4 are still read (their
+// "profile" becomes an outside contour); writing gives 6 when one of version 6's fields is used,
+// else 5 when the job has a swarf operation or an operation's own post properties, else 4 when an
+// operation has a working plane, else 3, so that a CAM Workbench that knows neither refuses a job
+// it would compute otherwise.
 inline constexpr int kJobFormatVersion = 6;
 
 // In memory a job's model path is absolute; in the file it is relative to the job file's folder.

@@ -16,6 +16,18 @@
 
 namespace camwb::ops {
 
+// A tool's cutting data for one work material, as a tool library gives it (textbook or the maker's
+// values): the cutting speed and feed per tooth the spindle speed and feeds are computed from
+// (document/CuttingData.h). Plunge and ramp feeds as fractions of the cutting feed; 0 = not given.
+struct CuttingData {
+    std::string material;  // "aluminium", "steel", ...: matched to the job's stock material
+    double vcMPerMin = 0;  // cutting speed
+    double fzMm = 0;       // feed per tooth
+    double plungeFraction = 0;
+    double rampFraction = 0;
+    bool operator==(const CuttingData&) const = default;
+};
+
 struct ToolController {
     toolpath::Tool tool;
     double spindleRpm = 0;
@@ -23,6 +35,9 @@ struct ToolController {
     double plungeFeedMmPerMin = 0;
     double rampFeedMmPerMin = 0;  // 0 = the cutting feed
     double rampFeed() const { return rampFeedMmPerMin > 0 ? rampFeedMmPerMin : cuttingFeedMmPerMin; }
+    // Carried with the tool (copied from a library into the job) so that its feeds and speeds can
+    // be computed again for another material; the operations never read it.
+    std::vector<CuttingData> cuttingData{};
 };
 
 // A feed as an operation chooses it for a move: the value and which of its section's feeds it is,

@@ -25,6 +25,7 @@
 #include "gui/sim/SimRequest.h"
 #include "gui/tasks/OperationPanel.h"
 #include "gui/tasks/PostSettingsPanel.h"
+#include "gui/tools/ToolActions.h"
 #include "gui/view3d/TaskOverlay.h"
 #include "gui/view3d/View3D.h"
 #include "kinematics/Machine.h"
@@ -309,6 +310,8 @@ void MainWindow::registerActions()
     registerDockActions(view);
     registerFocusActions(*m_actions, *this, view);
     m_session = new Session(*this, file, edit);
+    registerToolActions(
+        *m_actions, *m_workbench, [this]() -> Prompter& { return *m_prompter; }, this);
 
     add({"Cam.Help.About", tr("&About CAM Workbench"), help}, [this] {
         QMessageBox::about(

@@ -114,6 +114,18 @@ public:
     // Seconds operation `index` takes on the machine (planned motion) in the last program; < 0
     // when unknown (not computed, disabled, failed).
     double operationSeconds(int index) const;
+    // Copies tools (from a tool library) into the job as one undoable step; a number the job has
+    // already gets the next free one, and the report says so. These four: gui/tools/WorkbenchTools.cpp.
+    void addTools(const std::vector<ops::ToolController>& tools);
+    // Sets the job's tools' speeds and feeds (tool `number`, 0: all with cutting data for the
+    // job's material) from their cutting data, clamped to machine(); one undoable step. False,
+    // the job unchanged and the reason shown, when nothing could be computed.
+    bool computeFeeds(int number = 0);
+    // Replaces the job's tool at `index` (speeds and feeds edited by hand); one undoable step,
+    // none when nothing changed.
+    void updateTool(int index, const ops::ToolController& tool);
+    // The stock material the cutting data is chosen by; one undoable step.
+    void setMaterial(const std::string& material);
     void undo();
     void redo();
 

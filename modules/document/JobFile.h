@@ -15,8 +15,10 @@ namespace camwb::document {
 // own "postProperties". Versions 1-4 are still read (their "profile" becomes an outside contour);
 // writing gives 5 when the job has a swarf operation or an operation's own post properties, else 4
 // when an operation has a working plane, else 3, so that a CAM Workbench that knows neither
-// refuses a job it would compute otherwise.
-inline constexpr int kJobFormatVersion = 5;
+// refuses a job it would compute otherwise. Version 6 adds optional job setup fields: the stock's
+// "shape" and "fromModel" rule, the work "origin" and the default NC "output" (name, folder);
+// written as 6 only when one of them is used.
+inline constexpr int kJobFormatVersion = 6;
 
 // In memory a job's model path is absolute; in the file it is relative to the job file's folder.
 // loadJob resolves it, saveJob makes it relative again, so jobs can be moved with their models.
@@ -31,5 +33,10 @@ std::string serializeJob(const Job& job);
 std::string absoluteModelPath(const std::string& modelPath, const std::string& jobPath);
 // `modelPath` made relative to the folder of `jobPath`.
 std::string relativeModelPath(const std::string& modelPath, const std::string& jobPath);
+
+// Where the job's NC program goes by default: outputName in outputFolder (relative to the folder
+// of `jobPath`, or absolute), with `.extension` added when the name has none. Empty when the job
+// names no output.
+std::string jobOutputPath(const Job& job, const std::string& jobPath, const std::string& extension);
 
 }  // namespace camwb::document

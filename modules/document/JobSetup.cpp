@@ -29,6 +29,21 @@ base::Vec3 stockAnchor(const Stock& stock, StockAnchor anchor)
     return {cx, cy, lo.z};
 }
 
+void moveOrigin(Job& job, const base::Vec3& origin)
+{
+    const base::Vec3 delta = origin - job.origin;
+    job.origin = origin;
+    if (!job.stock.fromModel) {
+        job.stock.min = job.stock.min - delta;
+        job.stock.max = job.stock.max - delta;
+    }
+    for (Operation& op : job.operations)
+        for (std::optional<double>* z :
+             {&op.heights.clearanceZ, &op.heights.safeZ, &op.heights.startZ, &op.heights.finalZ})
+            if (z->has_value())
+                **z -= delta.z;
+}
+
 std::vector<std::string> travelShortfalls(const kinematics::Machine& machine, const Stock& stock)
 {
     std::vector<std::string> out;

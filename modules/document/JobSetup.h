@@ -18,6 +18,11 @@ enum class StockAnchor { TopFrontLeft, BottomFrontLeft, TopCentre, Centre, Botto
 // The anchor on the stock's resolved box, in work coordinates.
 base::Vec3 stockAnchor(const Stock& stock, StockAnchor anchor);
 
+// Moves the job's program zero to `origin` (model file coordinates) and keeps everything where it
+// is on the part: an explicit stock and the operations' height overrides (work coordinates) shift
+// by the difference. A "from model" stock is resolved again by whoever reloads the model.
+void moveOrigin(Job& job, const base::Vec3& origin);
+
 // One line per linear axis (X, Y, Z) whose travel is shorter than the stock's size along it,
 // e.g. "Y: stock 420 mm, travel 400 mm". Empty when it fits, or when there is no stock box.
 // Axes the machine does not have are not checked (a lathe has no Y).

@@ -34,14 +34,14 @@ std::string postedNc(const Job& job, const occ::Model& model)
     return out ? out->text : std::string();
 }
 
-// Every X word of the program's motion lines, in order.
-std::vector<double> xWords(const std::string& nc)
+// Every value of the address `letter` (X, Z) in the program, in order.
+std::vector<double> words(const std::string& nc, char letter)
 {
-    std::vector<double> xs;
-    const std::regex word(R"((?:^|\s)X(-?[0-9]*\.?[0-9]+))");
+    std::vector<double> values;
+    const std::regex word(std::string(R"((?:^|\s))") + letter + R"((-?[0-9]*\.?[0-9]+)(?=\s|$))");
     for (std::sregex_iterator it(nc.begin(), nc.end(), word), end; it != end; ++it)
-        xs.push_back(std::stod((*it)[1].str()));
-    return xs;
+        values.push_back(std::stod((*it)[1].str()));
+    return values;
 }
 
 }  // namespace
@@ -138,27 +138,31 @@ TEST(JobSetup, OriginKeepsFaceAndEdgeIndices)
     }
 }
 
-// The origin is the program zero: the posted NC's X words move by -origin.x. The pocket is left
-// out: its finishing pass picks where it enters the rings from the coordinates, so a shifted
-// pocket may start its wall and island rings in another order (a path as good, not the same).
+// The origin is the program zero: the posted NC's X and Z words move by -origin (moveOrigin keeps
+// the stock and the height overrides where they are on the part). The pocket is left out: its
+// finishing pass picks where it enters the rings from the coordinates, so a shifted pocket may
+// start its wall and island rings in another order (a path as good, not the same).
 TEST(JobSetup, OriginShiftsThePostedProgram)
 {
     Job job = example().job;
     std::erase_if(job.operations,
                   [](const document::Operation& op) { return op.kind() == document::OperationKind::Pocket; });
     ASSERT_EQ(job.operations.size(), 3u);
-    const std::vector<double> before = xWords(postedNc(job, example().model));
+    const std::string before = postedNc(job, example().model);
     Job shifted = job;
-    shifted.origin = {10, 0, 0};
-    shifted.stock.min.x -= 10;  // stock coordinates are work coordinates
-    shifted.stock.max.x -= 10;
+    document::moveOrigin(shifted, {10, 0, 5});
+    EXPECT_EQ(shifted.stock.min.x, job.stock.min.x - 10);
+    EXPECT_EQ(shifted.operations[0].heights.clearanceZ, *job.operations[0].heights.clearanceZ - 5);
     auto model = document::loadJobModel(shifted);
     ASSERT_TRUE(model) << model.error().toString();
-    const std::vector<double> after = xWords(postedNc(shifted, model.value()));
-    ASSERT_GT(before.size(), 10u);
-    ASSERT_EQ(after.size(), before.size());
-    for (std::size_t i = 0; i < before.size(); ++i)
-        EXPECT_NEAR(after[i], before[i] - 10, 1e-3) << "X word " << i;
+    const std::string after = postedNc(shifted, model.value());
+    for (const auto& [letter, shift] : {std::pair{'X', 10.0}, std::pair{'Z', 5.0}}) {
+        const std::vector<double> was = words(before, letter), is = words(after, letter);
+        ASSERT_GT(was.size(), 10u);
+        ASSERT_EQ(is.size(), was.size()) << letter;
+        for (std::size_t i = 0; i < was.size(); ++i)
+            EXPECT_NEAR(is[i], was[i] - shift, 1e-3) << letter << " word " << i;
+    }
 }
 
 TEST(JobSetup, OutputPathIsRelativeToTheJobFile)

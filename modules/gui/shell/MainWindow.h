@@ -18,6 +18,7 @@ class ActionRegistry;
 class Banner;
 class InspectorPanel;
 class NcInspector;
+class JobSetupPanel;
 class JobTree;
 class NcDocument;
 class NcEditor;
@@ -70,6 +71,9 @@ public:
     // Closes the open task panel; with unapplied changes the user is asked first: Apply (refused
     // when the operation cannot be made), Discard, or Cancel (false: the panel stays).
     bool settleTaskPanel();
+    // Opens the job setup task panel (gui/tasks/JobSetupPanel.h) after settling an open panel.
+    void editJobSetup();
+    JobSetupPanel* jobSetupPanel() const { return m_jobSetupPanel; }
 
 protected:
     void closeEvent(QCloseEvent* event) override;
@@ -108,6 +112,8 @@ private:
     QDockWidget* m_simDockWidget = nullptr;
     QDockWidget* m_taskDock = nullptr;
     OperationPanel* m_taskPanel = nullptr;
+    JobSetupPanel* m_jobSetupPanel = nullptr;
+    bool m_importingFromSetup = false;  // the setup panel's Import: it stays open
     Banner* m_viewBanner;
     Banner* m_ncBanner;
     bool m_editorShowsPosted = false;  // the editor holds the job's posted program (not an opened file)

@@ -35,6 +35,9 @@ public:
     document::JobDocument& document() { return m_document; }
     const document::Job& job() const { return m_document.job(); }
     const occ::Model& model() const { return m_model; }
+    // The job origin model() is moved by (it is in work coordinates; its file's coordinates are
+    // model() + modelOrigin()).
+    const base::Vec3& modelOrigin() const { return m_modelOrigin; }
     const occ::DisplayMesh& displayMesh() const { return m_mesh; }
     const toolpath::Toolpath& toolpath() const { return m_toolpath; }
     const QString& ncText() const { return m_nc; }
@@ -97,6 +100,11 @@ public:
     // does not drive gives way to its default (reported). False, reported, when it cannot load.
     bool setPost(const std::string& postId, const std::optional<std::string>& machineId = {},
                  const std::optional<std::map<std::string, std::string>>& values = {});
+    // The job setup panel's OK: the stock, work origin and offset, machine, post and output of
+    // `setup` become the job's as one undoable step ("Job setup"); a "from model" stock is resolved
+    // against the loaded model in the new origin's coordinates, and the operations' height
+    // overrides move with the origin (document::moveOrigin). Unchanged setups add no step.
+    void setJobSetup(const document::Job& setup);
     void undo();
     void redo();
 
@@ -128,7 +136,8 @@ private:
 
     document::JobDocument m_document;
     occ::Model m_model;
-    std::string m_modelPath;  // the file m_model came from
+    std::string m_modelPath;   // the file m_model came from
+    base::Vec3 m_modelOrigin;  // the job origin m_model is moved by (m_model is in work coordinates)
     occ::DisplayMesh m_mesh;
     toolpath::Toolpath m_toolpath;
     QString m_nc;

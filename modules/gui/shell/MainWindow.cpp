@@ -525,7 +525,7 @@ void MainWindow::editJobSetup()
     if (!settleTaskPanel())
         return;
     closeTaskPanel();
-    m_jobSetupPanel = new JobSetupPanel(*m_workbench, m_taskDock);
+    m_jobSetupPanel = new JobSetupPanel(*m_workbench, &m_view->overlay(), m_taskDock);
     connect(m_jobSetupPanel, &JobSetupPanel::closed, this, &MainWindow::closeTaskPanel);
     connect(m_jobSetupPanel, &JobSetupPanel::importRequested, this, [this] {
         // The setup panel stays open over an import: it holds no references into the model.

@@ -2,6 +2,7 @@
 
 #include "document/JobSetup.h"
 #include "gui/shell/Workbench.h"
+#include "gui/view3d/TaskOverlay.h"
 #include "kinematics/Machine.h"
 #include "post/PostRegistry.h"
 
@@ -10,13 +11,18 @@
 #include <QDoubleSpinBox>
 #include <QFileInfo>
 #include <QFormLayout>
+#include <QGridLayout>
 #include <QGroupBox>
 #include <QHBoxLayout>
 #include <QLabel>
 #include <QLineEdit>
 #include <QPushButton>
 #include <QScrollArea>
+#include <QScrollBar>
 #include <QVBoxLayout>
+
+#include <cmath>
+#include <iterator>
 
 namespace camwb::gui {
 
@@ -47,25 +53,37 @@ void showVec3(const std::array<QDoubleSpinBox*, 3>& fields, const base::Vec3& v)
     fields[2]->setValue(v.z);
 }
 
-QWidget* row(const std::array<QDoubleSpinBox*, 3>& fields)
+// Columns of X, Y, Z fields under their titles, one row per axis: narrow enough for the dock.
+QWidget* axisGrid(const std::vector<std::pair<QString, std::array<QDoubleSpinBox*, 3>>>& columns)
 {
     auto* widget = new QWidget;
-    auto* layout = new QHBoxLayout(widget);
-    layout->setContentsMargins(0, 0, 0, 0);
-    for (QDoubleSpinBox* field : fields)
-        layout->addWidget(field);
+    auto* grid = new QGridLayout(widget);
+    grid->setContentsMargins(0, 0, 0, 0);
+    const char* axes[] = {"X", "Y", "Z"};
+    for (int c = 0; c < static_cast<int>(columns.size()); ++c) {
+        const auto& [title, fields] = columns[static_cast<std::size_t>(c)];
+        if (!title.isEmpty())
+            grid->addWidget(new QLabel(title), 0, c + 1);
+        for (int a = 0; a < 3; ++a)
+            grid->addWidget(fields[static_cast<std::size_t>(a)], a + 1, c + 1);
+    }
+    for (int a = 0; a < 3; ++a)
+        grid->addWidget(new QLabel(QLatin1String(axes[a])), a + 1, 0);
     return widget;
 }
 
 // Origin choices after "typed": the stock points of document::stockAnchor, in this order.
 constexpr StockAnchor kAnchors[] = {StockAnchor::TopFrontLeft, StockAnchor::BottomFrontLeft, StockAnchor::TopCentre,
                                     StockAnchor::Centre, StockAnchor::BottomCentre};
+// Then the face picked in the 3D view (its level as Z0).
+constexpr int kPickedFace = 1 + static_cast<int>(std::size(kAnchors));
 
 }  // namespace
 
-JobSetupPanel::JobSetupPanel(Workbench& workbench, QWidget* parent) :
+JobSetupPanel::JobSetupPanel(Workbench& workbench, TaskOverlay* overlay, QWidget* parent) :
     QWidget(parent),
     m_workbench(workbench),
+    m_overlay(overlay),
     m_setup(workbench.job())
 {
     setObjectName(QStringLiteral("jobSetupPanel"));
@@ -97,6 +115,8 @@ JobSetupPanel::JobSetupPanel(Workbench& workbench, QWidget* parent) :
     scroll->setWidgetResizable(true);
     scroll->setFrameShape(QFrame::NoFrame);
     scroll->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
+    // The dock grows to the panel's rows instead of cutting them off on the right.
+    scroll->setMinimumWidth(content->minimumSizeHint().width() + scroll->verticalScrollBar()->sizeHint().width());
     outer->addWidget(scroll, 1);
 
     // A model imported while the panel is open: a "from model" stock follows it.
@@ -118,7 +138,7 @@ JobSetupPanel::Vec3Fields JobSetupPanel::vec3Fields(const char* objectName, doub
         spin->setObjectName(QString::fromLatin1(objectName) + QLatin1String(axes[i]));
         spin->setRange(min, max);
         spin->setDecimals(3);
-        spin->setPrefix(QLatin1String(axes[i]) + QLatin1Char(' '));
+        spin->setToolTip(tr("mm"));
         spin->setKeyboardTracking(false);  // one change per value typed, not per digit
         fields[static_cast<std::size_t>(i)] = spin;
     }
@@ -160,19 +180,11 @@ QWidget* JobSetupPanel::buildStock()
 
     m_below = vec3Fields("stockBelow", 0, 1000);
     m_above = vec3Fields("stockAbove", 0, 1000);
-    m_offsetRows = new QWidget;
-    auto* offsets = new QFormLayout(m_offsetRows);
-    offsets->setContentsMargins(0, 0, 0, 0);
-    offsets->addRow(tr("Below"), row(m_below));
-    offsets->addRow(tr("Above"), row(m_above));
+    m_offsetRows = axisGrid({{tr("Below min (mm)"), m_below}, {tr("Above max (mm)"), m_above}});
     form->addRow(m_offsetRows);
-    m_min = vec3Fields("stockMin", -100000, 100000);
-    m_max = vec3Fields("stockMax", -100000, 100000);
-    m_explicitRows = new QWidget;
-    auto* explicitForm = new QFormLayout(m_explicitRows);
-    explicitForm->setContentsMargins(0, 0, 0, 0);
-    explicitForm->addRow(tr("Min"), row(m_min));
-    explicitForm->addRow(tr("Max"), row(m_max));
+    m_min = vec3Fields("stockMin", -10000, 10000);
+    m_max = vec3Fields("stockMax", -10000, 10000);
+    m_explicitRows = axisGrid({{tr("Min (mm)"), m_min}, {tr("Max (mm)"), m_max}});
     form->addRow(m_explicitRows);
     m_stockSummary = new QLabel;
     m_stockSummary->setObjectName(QStringLiteral("stockSummary"));
@@ -199,10 +211,16 @@ QWidget* JobSetupPanel::buildWcs()
     m_originAnchor->addItem(tr("Stock: top centre"));
     m_originAnchor->addItem(tr("Stock: centre"));
     m_originAnchor->addItem(tr("Stock: bottom centre"));
+    m_originAnchor->addItem(tr("Z0 on the face picked in the view"));
     m_originAnchor->setToolTip(tr("Program zero: a point of the stock (it follows the stock), or typed"));
     form->addRow(tr("Origin at"), m_originAnchor);
-    m_origin = vec3Fields("origin", -100000, 100000);
-    form->addRow(tr("Origin"), row(m_origin));
+    m_origin = vec3Fields("origin", -10000, 10000);
+    form->addRow(tr("Origin"), axisGrid({{QString(), m_origin}}));
+    m_originNote = new QLabel;
+    m_originNote->setObjectName(QStringLiteral("originNote"));
+    m_originNote->setWordWrap(true);
+    m_originNote->hide();
+    form->addRow(m_originNote);
     m_workOffset = new QComboBox;
     m_workOffset->setObjectName(QStringLiteral("workOffset"));
     for (int i = 1; i <= 6; ++i)
@@ -214,9 +232,18 @@ QWidget* JobSetupPanel::buildWcs()
     connect(m_originAnchor, &QComboBox::currentIndexChanged, this, [this](int index) {
         if (m_showing || index <= 0)
             return;
+        if (index == kPickedFace) {
+            originOnPickedFace();
+            return;
+        }
         moveOrigin(document::stockAnchor(m_setup.stock, kAnchors[index - 1]));
         showValues();
     });
+    if (m_overlay != nullptr)
+        connect(m_overlay, &TaskOverlay::selectionChanged, this, [this] {
+            if (m_originAnchor->currentIndex() == kPickedFace)
+                originOnPickedFace();
+        });
     for (QDoubleSpinBox* spin : m_origin)
         connect(spin, &QDoubleSpinBox::valueChanged, this, &JobSetupPanel::originEdited);
     connect(m_workOffset, &QComboBox::currentIndexChanged, this, [this] {
@@ -338,8 +365,25 @@ void JobSetupPanel::stockEdited()
         }
     }
     // An origin on a stock point follows the stock.
-    if (const int anchor = m_originAnchor->currentIndex(); anchor > 0)
+    if (const int anchor = m_originAnchor->currentIndex(); anchor > 0 && anchor < kPickedFace)
         moveOrigin(document::stockAnchor(stock, kAnchors[anchor - 1]));
+    showValues();
+}
+
+// Z0 at the level of the flat horizontal face picked in the 3D view; X and Y stay.
+void JobSetupPanel::originOnPickedFace()
+{
+    const std::vector<int> faces = m_overlay ? m_overlay->selectedFaces() : std::vector<int>{};
+    const occ::FaceInfo face = faces.empty() ? occ::FaceInfo{} : m_workbench.model().face(faces.back());
+    const bool level = face.index > 0 && face.planar && std::abs(std::abs(face.normal.z) - 1) < 1e-9;
+    m_originNote->setText(level ? tr("Z0 on face %1").arg(face.index)
+                                : tr("Pick a flat horizontal face of the model in the 3D view."));
+    m_originNote->show();
+    if (!level)
+        return;
+    // The model is shown in the coordinates of the origin it was loaded with.
+    const double z = face.planeZ + m_workbench.modelOrigin().z;
+    moveOrigin({0, 0, z - m_setup.origin.z});
     showValues();
 }
 

@@ -1,8 +1,8 @@
 // The job setup task panel (docked like the operations' panels): the job's model (Import), stock
 // (box from the model's bounds with offsets, explicit box, or cylinder), work coordinate system
-// (origin on a stock corner/centre or typed, G54…G59), machine (its travels checked against the
-// stock), post (with a slot for the post properties form), and the NC output's name and folder.
-// It edits a copy of the job; OK applies it as one undoable step, Cancel changes nothing.
+// (origin on a stock corner/centre, Z0 on a face picked in the view, or typed; G54…G59), machine (its travels checked
+// against the stock), post (with a slot for the post properties form), and the NC output's name and folder. It edits a
+// copy of the job; OK applies it as one undoable step, Cancel changes nothing.
 #pragma once
 
 #include "base/Vec.h"
@@ -19,12 +19,14 @@ class QLineEdit;
 
 namespace camwb::gui {
 
+class TaskOverlay;
 class Workbench;
 
 class JobSetupPanel : public QWidget {
     Q_OBJECT
 public:
-    explicit JobSetupPanel(Workbench& workbench, QWidget* parent = nullptr);
+    // `overlay` (may be null) offers the face picked in the 3D view as the origin's Z level.
+    JobSetupPanel(Workbench& workbench, TaskOverlay* overlay, QWidget* parent = nullptr);
 
     // The job as OK would make it (only its setup fields differ from the Workbench's job).
     const document::Job& setup() const { return m_setup; }
@@ -60,9 +62,11 @@ private:
     void resolveStock();
     void showValues();  // writes m_setup into the fields (signals blocked)
     void checkTravels();
+    void originOnPickedFace();
     void finish();
 
     Workbench& m_workbench;
+    TaskOverlay* m_overlay;
     document::Job m_original;
     document::Job m_setup;
     bool m_showing = false;  // showValues() is writing the fields
@@ -77,6 +81,7 @@ private:
     QLabel* m_stockSummary = nullptr;
     QComboBox* m_originAnchor = nullptr;
     Vec3Fields m_origin{};
+    QLabel* m_originNote = nullptr;
     QComboBox* m_workOffset = nullptr;
     QComboBox* m_machine = nullptr;
     QLabel* m_travelWarning = nullptr;

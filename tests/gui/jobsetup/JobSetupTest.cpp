@@ -11,6 +11,7 @@
 #include "gui/shell/MainWindow.h"
 #include "gui/shell/Workbench.h"
 #include "gui/tasks/JobSetupPanel.h"
+#include "gui/view3d/TaskOverlay.h"
 #include "gui/view3d/View3D.h"
 
 #include <QAbstractButton>
@@ -129,7 +130,8 @@ private slots:
         QVERIFY(!child<QLabel>(panel, "travelWarning")->isVisible());
         QCOMPARE(window.workbench().document().undoStack().count(), undoSteps);  // nothing applied yet
         QTest::qWait(200);
-        saveShot(&window, QStringLiteral("jobsetup-panel.png"));
+        saveShot(&window,
+                 withGl() ? QStringLiteral("jobsetup-panel.png") : QStringLiteral("jobsetup-panel-offscreen.png"));
 
         QSignalSpy posted(&window.workbench(), &Workbench::postFinished);
         child<QAbstractButton>(panel, "okButton")->click();
@@ -216,6 +218,27 @@ private slots:
         QCOMPARE(window.workbench().job().workOffset, 4);
         QCOMPARE(window.workbench().document().undoStack().count(), undoSteps + 1);
         waitIdle(window);
+    }
+
+    void originOnAFacePickedInTheView()
+    {
+        MainWindow window;
+        window.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&window));
+        openExample(window);
+        JobSetupPanel* panel = openPanel(window);
+        QVERIFY(panel);
+        auto* anchor = child<QComboBox>(panel, "originAnchor");
+        anchor->setCurrentIndex(anchor->count() - 1);  // Z0 on the picked face: none picked yet
+        QVERIFY(!panel->hasUnappliedChanges());
+        QVERIFY(child<QLabel>(panel, "originNote")->text().contains(QStringLiteral("Pick")));
+        const camwb::occ::Model& model = window.workbench().model();
+        const int top = model.topPlanarFace();
+        QVERIFY(top > 0);
+        window.view()->overlay().setSelectedFaces({top});  // as a click on the face does
+        QCOMPARE(panel->setup().origin, (camwb::base::Vec3{0, 0, model.face(top).planeZ}));
+        QVERIFY(panel->hasUnappliedChanges());
+        panel->reject();
     }
 
     void stockBeyondTheTravelsIsWarned()

@@ -4,6 +4,7 @@
 #include "gui/shell/Workbench.h"
 #include "gui/view3d/TaskOverlay.h"
 #include "kinematics/Machine.h"
+#include "post/PostProcessor.h"
 #include "post/PostRegistry.h"
 
 #include <QComboBox>
@@ -19,6 +20,7 @@
 #include <QPushButton>
 #include <QScrollArea>
 #include <QScrollBar>
+#include <QStandardItemModel>
 #include <QVBoxLayout>
 
 #include <cmath>
@@ -277,6 +279,7 @@ QWidget* JobSetupPanel::buildMachine()
             return;
         m_setup.machineId = index <= 0 ? std::string() : m_machine->currentText().toStdString();
         checkTravels();
+        filterPosts();
     });
     return widget;
 }
@@ -288,11 +291,27 @@ QWidget* JobSetupPanel::buildPost()
     layout->setContentsMargins(0, 0, 0, 0);
     m_post = new QComboBox;
     m_post->setObjectName(QStringLiteral("post"));
-    for (const post::PostEntry& entry : post::listPosts(post::defaultPostDirs()))
-        m_post->addItem(qs(entry.id));
+    for (const post::PostEntry& entry : post::listPosts(post::defaultPostDirs())) {
+        // The post's own description and the machines it posts for (empty: any).
+        QStringList machines;
+        QString description;
+        if (auto loaded = post::PostProcessor::load(entry.path)) {
+            for (const std::string& id : loaded->info().machines)
+                machines << qs(id);
+            description = qs(loaded->info().description);
+        }
+        m_post->addItem(qs(entry.id), machines);
+        m_post->setItemData(m_post->count() - 1, description, Qt::ToolTipRole);
+    }
     if (m_post->findText(qs(m_setup.postId)) < 0)
-        m_post->addItem(qs(m_setup.postId));
+        m_post->addItem(qs(m_setup.postId), QStringList());
+    m_postWarning = new QLabel;
+    m_postWarning->setObjectName(QStringLiteral("postWarning"));
+    m_postWarning->setWordWrap(true);
+    m_postWarning->setStyleSheet(QStringLiteral("color: #b00020;"));
+    m_postWarning->hide();
     layout->addWidget(m_post);
+    layout->addWidget(m_postWarning);
     // The post properties form (another part of the job workflow) goes here.
     m_postPropertiesSlot = new QWidget;
     m_postPropertiesSlot->setObjectName(QStringLiteral("postPropertiesSlot"));
@@ -302,6 +321,7 @@ QWidget* JobSetupPanel::buildPost()
     connect(m_post, &QComboBox::currentIndexChanged, this, [this] {
         if (!m_showing)
             m_setup.postId = m_post->currentText().toStdString();
+        filterPosts();
     });
     return widget;
 }
@@ -438,6 +458,27 @@ void JobSetupPanel::showValues()
     m_post->setCurrentIndex(std::max(0, m_post->findText(qs(m_setup.postId))));
     m_showing = false;
     checkTravels();
+    filterPosts();
+}
+
+// Posts that name the machines they post for and not the chosen one are greyed out; the chosen
+// post, when it is one of them, is warned about (posting would fail).
+void JobSetupPanel::filterPosts()
+{
+    auto* model = qobject_cast<QStandardItemModel*>(m_post->model());
+    const QString machine = qs(m_setup.machineId);
+    auto serves = [&](int index) {
+        const QStringList machines = m_post->itemData(index).toStringList();
+        return machine.isEmpty() || machines.isEmpty() || machines.contains(machine);
+    };
+    for (int i = 0; model != nullptr && i < m_post->count(); ++i)
+        model->item(i)->setEnabled(serves(i) || i == m_post->currentIndex());
+    const bool ok = serves(m_post->currentIndex());
+    m_postWarning->setText(
+        ok ? QString()
+           : tr("%1 posts only for %2, not for %3.")
+                 .arg(m_post->currentText(), m_post->currentData().toStringList().join(QStringLiteral(", ")), machine));
+    m_postWarning->setVisible(!ok);
 }
 
 void JobSetupPanel::checkTravels()

@@ -63,6 +63,7 @@ private:
     void showValues();  // writes m_setup into the fields (signals blocked)
     void checkTravels();
     void originOnPickedFace();
+    void filterPosts();
     void finish();
 
     Workbench& m_workbench;
@@ -86,6 +87,7 @@ private:
     QComboBox* m_machine = nullptr;
     QLabel* m_travelWarning = nullptr;
     QComboBox* m_post = nullptr;
+    QLabel* m_postWarning = nullptr;
     QWidget* m_postPropertiesSlot = nullptr;
     QLineEdit* m_outputName = nullptr;
     QLineEdit* m_outputFolder = nullptr;

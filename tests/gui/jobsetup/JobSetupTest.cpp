@@ -17,12 +17,15 @@
 #include <QAbstractButton>
 #include <QApplication>
 #include <QComboBox>
+#include <QDir>
 #include <QDoubleSpinBox>
 #include <QElapsedTimer>
+#include <QFileInfo>
 #include <QGuiApplication>
 #include <QLabel>
 #include <QLineEdit>
 #include <QSignalSpy>
+#include <QStandardItemModel>
 #include <QTest>
 
 using camwb::gui::JobSetupPanel;
@@ -220,6 +223,33 @@ private slots:
         waitIdle(window);
     }
 
+    // The panel's Import runs Cam.File.ImportModel and stays open (it holds no model references),
+    // its unapplied changes kept; a "from model" stock follows the new model.
+    void importKeepsThePanelOpen()
+    {
+        MainWindow window;
+        window.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&window));
+        openExample(window);
+        JobSetupPanel* panel = openPanel(window);
+        QVERIFY(panel);
+        child<QComboBox>(panel, "stockSize")->setCurrentIndex(0);
+        setSpin(panel, QStringLiteral("stockAboveZ"), 3);
+        QVERIFY(panel->hasUnappliedChanges());
+        m_prompter->files.push_back(
+            QFileInfo(QStringLiteral(CAMWB_EXAMPLE_JOB)).dir().filePath(QStringLiteral("example-block.step")));
+        QSignalSpy imported(&window.workbench(), &Workbench::modelImportFinished);
+        child<QAbstractButton>(panel, "importModelButton")->click();
+        QVERIFY(imported.count() > 0 || imported.wait(120000));
+        QCOMPARE(imported.takeFirst().at(0).toBool(), true);
+        QVERIFY(m_prompter->questions.isEmpty());
+        QCOMPARE(window.jobSetupPanel(), panel);
+        QVERIFY(panel->hasUnappliedChanges());
+        QCOMPARE(panel->setup().stock.max.z, window.workbench().model().boundsMax().z + 3);
+        waitIdle(window);
+        panel->reject();
+    }
+
     void originOnAFacePickedInTheView()
     {
         MainWindow window;
@@ -257,6 +287,18 @@ private slots:
         QVERIFY(!warning->isHidden());
         QVERIFY2(warning->text().contains(QStringLiteral("X: stock")), qPrintable(warning->text()));
         QVERIFY(!warning->text().contains(QStringLiteral("Y: stock")));
+        // The example's post (EMCO) does not post for this machine: greyed out and warned about.
+        auto* postWarning = child<QLabel>(panel, "postWarning");
+        QVERIFY(!postWarning->isHidden());
+        QVERIFY2(postWarning->text().contains(QStringLiteral("emco-concept-mill-105")),
+                 qPrintable(postWarning->text()));
+        QVERIFY(chooseText(panel, "post", QStringLiteral("heidenhain-itnc530")));
+        QVERIFY(postWarning->isHidden());
+        auto* posts = child<QComboBox>(panel, "post");
+        const auto* items = qobject_cast<const QStandardItemModel*>(posts->model());
+        QVERIFY(items);
+        QVERIFY(!items->item(posts->findText(QStringLiteral("sinumerik828d-emco")))->isEnabled());
+        QVERIFY(items->item(posts->findText(QStringLiteral("linuxcnc")))->isEnabled());
         panel->reject();
     }
 };

@@ -323,7 +323,7 @@ void Workbench::removeOperation(int index)
                     [&](document::Job& j) { j.operations.erase(j.operations.begin() + index); });
 }
 
-void Workbench::setJobSetup(const document::Job& setup)
+bool Workbench::setJobSetup(const document::Job& setup)
 {
     document::Stock stock = setup.stock;
     if (!m_model.empty()) {
@@ -331,20 +331,23 @@ void Workbench::setJobSetup(const document::Job& setup)
         const base::Vec3 shift = m_modelOrigin - setup.origin;
         stock.resolve(m_model.boundsMin() + shift, m_model.boundsMax() + shift);
     }
-    const document::Job& job = this->job();
-    if (stock == job.stock && setup.origin == job.origin && setup.workOffset == job.workOffset &&
-        setup.machineId == job.machineId && setup.postId == job.postId && setup.outputName == job.outputName &&
-        setup.outputFolder == job.outputFolder)
-        return;
-    m_document.edit("Job setup", [&](document::Job& j) {
-        document::moveOrigin(j, setup.origin);  // the operations' height overrides stay on the part
-        j.stock = stock;
-        j.workOffset = setup.workOffset;
-        j.machineId = setup.machineId;
-        j.postId = setup.postId;
-        j.outputName = setup.outputName;
-        j.outputFolder = setup.outputFolder;
-    });
+    document::Job edited = job();
+    std::vector<QString> notes;
+    // Another post keeps the property values it takes, as Post Settings does (setPost).
+    if (setup.postId != edited.postId && !switchPostIn(edited, setup.postId, setup.machineId, std::nullopt, notes))
+        return false;
+    document::moveOrigin(edited, setup.origin);  // the operations' height overrides stay on the part
+    edited.stock = stock;
+    edited.workOffset = setup.workOffset;
+    edited.machineId = setup.machineId;
+    edited.outputName = setup.outputName;
+    edited.outputFolder = setup.outputFolder;
+    if (document::serializeJob(edited) == document::serializeJob(job()))
+        return true;  // no empty undo step
+    m_document.edit("Job setup", [&](document::Job& j) { j = edited; });
+    for (const QString& note : notes)
+        report(Severity::Warning, note);
+    return true;
 }
 
 void Workbench::undo() { m_document.undo(); }

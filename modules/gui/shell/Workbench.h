@@ -103,8 +103,10 @@ public:
     // The job setup panel's OK: the stock, work origin and offset, machine, post and output of
     // `setup` become the job's as one undoable step ("Job setup"); a "from model" stock is resolved
     // against the loaded model in the new origin's coordinates, and the operations' height
-    // overrides move with the origin (document::moveOrigin). Unchanged setups add no step.
-    void setJobSetup(const document::Job& setup);
+    // overrides move with the origin (document::moveOrigin); another post keeps the property
+    // values it takes (as setPost). Unchanged setups add no step. False (shown) when the post
+    // cannot be loaded: nothing changes.
+    bool setJobSetup(const document::Job& setup);
     void undo();
     void redo();
 
@@ -127,6 +129,11 @@ private:
     void startCompute();
     void finishCompute(const std::shared_ptr<ComputeOutcome>& outcome);
     void applyProblems(const ComputeOutcome& outcome);
+    // setPost's rule on `edited` (a copy of the job): its post becomes `postId`, keeping the property
+    // values the new post takes (dropped ones added to `notes`) and a machine it drives. False
+    // (shown) when the post cannot be loaded. Defined in WorkbenchPost.cpp.
+    bool switchPostIn(document::Job& edited, const std::string& postId, const std::optional<std::string>& machineId,
+                      const std::optional<std::map<std::string, std::string>>& values, std::vector<QString>& notes);
     void finishImport(const std::string& file, const std::shared_ptr<ComputeOutcome>& outcome);
     void clearDerived();
     void setBusy(bool busy);

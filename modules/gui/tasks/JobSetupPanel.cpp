@@ -6,6 +6,7 @@
 #include "kinematics/Machine.h"
 #include "post/PostProcessor.h"
 #include "post/PostRegistry.h"
+#include "post/PostSwitch.h"
 
 #include <QComboBox>
 #include <QDialogButtonBox>
@@ -292,19 +293,19 @@ QWidget* JobSetupPanel::buildPost()
     m_post = new QComboBox;
     m_post->setObjectName(QStringLiteral("post"));
     for (const post::PostEntry& entry : post::listPosts(post::defaultPostDirs())) {
-        // The post's own description and the machines it posts for (empty: any).
-        QStringList machines;
-        QString description;
-        if (auto loaded = post::PostProcessor::load(entry.path)) {
-            for (const std::string& id : loaded->info().machines)
-                machines << qs(id);
-            description = qs(loaded->info().description);
-        }
-        m_post->addItem(qs(entry.id), machines);
-        m_post->setItemData(m_post->count() - 1, description, Qt::ToolTipRole);
+        // The post's own declarations: the machines and controls it serves, its description.
+        post::PostInfo info;
+        info.id = entry.id;
+        if (auto loaded = post::PostProcessor::load(entry.path))
+            info = loaded->info();
+        m_post->addItem(qs(entry.id));
+        m_post->setItemData(m_post->count() - 1, qs(info.description), Qt::ToolTipRole);
+        m_postInfos.push_back(std::move(info));
     }
-    if (m_post->findText(qs(m_setup.postId)) < 0)
-        m_post->addItem(qs(m_setup.postId), QStringList());
+    if (m_post->findText(qs(m_setup.postId)) < 0) {
+        m_post->addItem(qs(m_setup.postId));
+        m_postInfos.emplace_back().id = m_setup.postId;
+    }
     m_postWarning = new QLabel;
     m_postWarning->setObjectName(QStringLiteral("postWarning"));
     m_postWarning->setWordWrap(true);
@@ -466,18 +467,15 @@ void JobSetupPanel::showValues()
 void JobSetupPanel::filterPosts()
 {
     auto* model = qobject_cast<QStandardItemModel*>(m_post->model());
-    const QString machine = qs(m_setup.machineId);
-    auto serves = [&](int index) {
-        const QStringList machines = m_post->itemData(index).toStringList();
-        return machine.isEmpty() || machines.isEmpty() || machines.contains(machine);
+    auto serves = [this](int index) {
+        return !m_chosenMachine || index < 0 || index >= static_cast<int>(m_postInfos.size()) ||
+               post::servesMachine(m_postInfos[static_cast<std::size_t>(index)], *m_chosenMachine);
     };
     for (int i = 0; model != nullptr && i < m_post->count(); ++i)
         model->item(i)->setEnabled(serves(i) || i == m_post->currentIndex());
     const bool ok = serves(m_post->currentIndex());
     m_postWarning->setText(
-        ok ? QString()
-           : tr("%1 posts only for %2, not for %3.")
-                 .arg(m_post->currentText(), m_post->currentData().toStringList().join(QStringLiteral(", ")), machine));
+        ok ? QString() : tr("%1 does not post for the machine %2.").arg(m_post->currentText(), qs(m_setup.machineId)));
     m_postWarning->setVisible(!ok);
 }
 
@@ -485,14 +483,17 @@ void JobSetupPanel::checkTravels()
 {
     QStringList problems;
     const QString path = m_machine->currentData().toString();
+    m_chosenMachine.reset();
     if (!path.isEmpty()) {
         auto machine = kinematics::loadMachine(path.toStdString());
         if (!machine)
             problems << qs(machine.error().toString());
         else
-            for (const std::string& shortfall : document::travelShortfalls(machine.value(), m_setup.stock))
-                problems << qs(shortfall);
+            m_chosenMachine = std::move(machine).value();
     }
+    if (m_chosenMachine)
+        for (const std::string& shortfall : document::travelShortfalls(*m_chosenMachine, m_setup.stock))
+            problems << qs(shortfall);
     m_travelWarning->setText(problems.isEmpty()
                                  ? QString()
                                  : tr("The stock does not fit the machine's travels:\n%1").arg(problems.join('\n')));
@@ -511,7 +512,8 @@ bool JobSetupPanel::accept()
 {
     if (m_finished)
         return true;
-    m_workbench.setJobSetup(m_setup);
+    if (!m_workbench.setJobSetup(m_setup))
+        return false;  // the post cannot be loaded (shown): the panel stays
     finish();
     return true;
 }

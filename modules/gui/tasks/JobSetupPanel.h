@@ -7,10 +7,14 @@
 
 #include "base/Vec.h"
 #include "document/Job.h"
+#include "kinematics/Machine.h"
+#include "post/PostInfo.h"
 
 #include <QWidget>
 
 #include <array>
+#include <optional>
+#include <vector>
 
 class QComboBox;
 class QDoubleSpinBox;
@@ -88,6 +92,8 @@ private:
     QLabel* m_travelWarning = nullptr;
     QComboBox* m_post = nullptr;
     QLabel* m_postWarning = nullptr;
+    std::vector<post::PostInfo> m_postInfos;             // by m_post's index
+    std::optional<kinematics::Machine> m_chosenMachine;  // the machine chosen (none: the post's default)
     QWidget* m_postPropertiesSlot = nullptr;
     QLineEdit* m_outputName = nullptr;
     QLineEdit* m_outputFolder = nullptr;

@@ -290,15 +290,14 @@ private slots:
         // The example's post (EMCO) does not post for this machine: greyed out and warned about.
         auto* postWarning = child<QLabel>(panel, "postWarning");
         QVERIFY(!postWarning->isHidden());
-        QVERIFY2(postWarning->text().contains(QStringLiteral("emco-concept-mill-105")),
-                 qPrintable(postWarning->text()));
+        QVERIFY2(postWarning->text().contains(QStringLiteral("sinumerik828d-emco")), qPrintable(postWarning->text()));
         QVERIFY(chooseText(panel, "post", QStringLiteral("heidenhain-itnc530")));
         QVERIFY(postWarning->isHidden());
         auto* posts = child<QComboBox>(panel, "post");
         const auto* items = qobject_cast<const QStandardItemModel*>(posts->model());
         QVERIFY(items);
         QVERIFY(!items->item(posts->findText(QStringLiteral("sinumerik828d-emco")))->isEnabled());
-        QVERIFY(items->item(posts->findText(QStringLiteral("linuxcnc")))->isEnabled());
+        QVERIFY(items->item(posts->findText(QStringLiteral("heidenhain-itnc530")))->isEnabled());
         panel->reject();
     }
 };

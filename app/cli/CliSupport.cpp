@@ -195,6 +195,7 @@ std::optional<ComputedJob> computeJobFile(const std::string& path)
         fail(model.error().toString());
         return std::nullopt;
     }
+    document::resolveJobStock(job.value(), model.value());  // as the Workbench does after a load
     ComputedJob computed;
     auto program = document::computeProgram(job.value(), model.value(), {}, &computed.report);
     if (!program) {

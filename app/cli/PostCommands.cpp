@@ -187,6 +187,7 @@ int postCommand(const std::vector<std::string>& args)
     std::string postId = options.postId, machineId = options.machineId;
     std::map<std::string, std::string> properties;
     post::JobFacts jobFacts;
+    document::Job jobOutput;  // the job's default output (name, folder), when posting a job
     if (format->job) {
         std::optional<ComputedJob> computed = computeJobFile(input);
         if (!computed)
@@ -198,6 +199,8 @@ int postCommand(const std::vector<std::string>& args)
         machineId = machineId.empty() ? job.machineId : machineId;
         properties = job.postProperties;
         jobFacts = document::jobFacts(job);
+        jobOutput.outputName = job.outputName;
+        jobOutput.outputFolder = job.outputFolder;
     } else {
         auto imported = toolpath::readClFile(input, format->cl);
         if (!imported)
@@ -220,8 +223,11 @@ int postCommand(const std::vector<std::string>& args)
     if (!machine)
         return fail(machine.error().toString());
 
-    const std::string output =
-        options.output.empty() ? fs::path(input).replace_extension(post->info().extension).string() : options.output;
+    std::string output = options.output;
+    if (output.empty())
+        output = document::jobOutputPath(jobOutput, input, post->info().extension);
+    if (output.empty())
+        output = fs::path(input).replace_extension(post->info().extension).string();
     std::error_code ec;
     if (fs::equivalent(output, input, ec))
         return fail("the output " + output + " would overwrite the input; give -o <output file>");

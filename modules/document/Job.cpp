@@ -1,5 +1,7 @@
 #include "document/Job.h"
 
+#include <algorithm>
+
 namespace camwb::document {
 
 const ops::ToolController* Job::tool(int number) const
@@ -38,5 +40,26 @@ const char* kindName(OperationKind kind)
 }
 
 const char* kindLabel(OperationKind kind) { return kind == OperationKind::Drill ? "drilling" : kindName(kind); }
+
+}  // namespace camwb::document
+
+namespace camwb::document {
+
+void Stock::resolve(const base::Vec3& modelMin, const base::Vec3& modelMax)
+{
+    if (!fromModel)
+        return;
+    min = modelMin - fromModel->below;
+    max = modelMax + fromModel->above;
+    if (shape != Shape::Cylinder)
+        return;
+    // Round stock about the grown box's centre; its bounding box is square in XY.
+    const double diameter = std::max(max.x - min.x, max.y - min.y);
+    const double cx = (min.x + max.x) / 2, cy = (min.y + max.y) / 2;
+    min.x = cx - diameter / 2;
+    max.x = cx + diameter / 2;
+    min.y = cy - diameter / 2;
+    max.y = cy + diameter / 2;
+}
 
 }  // namespace camwb::document

@@ -17,9 +17,31 @@
 
 namespace camwb::document {
 
+// The rule "stock = the model's bounds grown by these offsets" (mm, each >= 0 in use): `below`
+// is taken off the minimum corner, `above` added to the maximum corner, per axis.
+struct StockFromModel {
+    base::Vec3 below;
+    base::Vec3 above;
+
+    bool operator==(const StockFromModel&) const = default;
+};
+
+// The raw material, in work coordinates (the model moved by -Job::origin). min/max are always the
+// resolved bounding box every consumer uses; a cylinder stands along Z inside it (diameter = its
+// x size = its y size). With `fromModel` set, min/max are recomputed from the model's bounds
+// whenever the model is (re)loaded (resolve), so the GUI and camwb-cli post the same stock.
 struct Stock {
+    enum class Shape { Box, Cylinder };
     base::Vec3 min;
     base::Vec3 max;
+    Shape shape = Shape::Box;
+    std::optional<StockFromModel> fromModel;
+
+    bool operator==(const Stock&) const = default;
+
+    // Sets min/max from the model's bounds (work coordinates) when `fromModel` is set; a cylinder
+    // takes the larger of the grown x and y sizes as its diameter, about the bounds' centre.
+    void resolve(const base::Vec3& modelMin, const base::Vec3& modelMax);
 
     // The box, when the job gives one (min below max on every axis); none for a job without stock.
     std::optional<base::Box3> box() const
@@ -97,6 +119,14 @@ struct Job {
     std::map<std::string, std::string> postProperties;  // values as text, by property name
     std::string machineId;                              // empty: the post's default machine
     std::string material;  // the stock material tools' cutting data is chosen by; empty: none given
+    // Program zero, in the model file's coordinates: the model (and so every operation, toolpath
+    // and the NC) is worked on moved by -origin. Stock coordinates are work coordinates.
+    base::Vec3 origin;
+    // Where the NC program goes by default (Save NC Program, `camwb-cli run` without -o):
+    // file name (the post's extension added when it has none) in a folder relative to the job
+    // file (empty: the job file's folder). Empty name: no default.
+    std::string outputName;
+    std::string outputFolder;
 
     const ops::ToolController* tool(int number) const;
 };

@@ -17,6 +17,36 @@ namespace {
 
 using namespace base::jsonread;
 
+// Version 6: the stock's shape and "from model" rule (besides its resolved min/max).
+void readStockRule(const json& stock, Stock& out, const std::string& where)
+{
+    if (optionalMember(stock, "shape", where)) {
+        const std::string shape = text(stock, "shape", where);
+        if (shape != "box" && shape != "cylinder")
+            throw JsonFieldError{where + ".shape: expected \"box\" or \"cylinder\""};
+        out.shape = shape == "cylinder" ? Stock::Shape::Cylinder : Stock::Shape::Box;
+    }
+    if (const json* rule = optionalMember(stock, "fromModel", where)) {
+        StockFromModel fromModel;
+        fromModel.below = vec3(*rule, "below", where + ".fromModel");
+        fromModel.above = vec3(*rule, "above", where + ".fromModel");
+        out.fromModel = fromModel;
+    }
+}
+
+// Version 6: the work origin and the default NC output.
+void readSetup(const json& root, Job& job, const std::string& where)
+{
+    if (optionalMember(root, "origin", where))
+        job.origin = vec3(root, "origin", where);
+    if (const json* output = optionalMember(root, "output", where)) {
+        if (optionalMember(*output, "name", where + ".output"))
+            job.outputName = text(*output, "name", where + ".output");
+        if (optionalMember(*output, "folder", where + ".output"))
+            job.outputFolder = text(*output, "folder", where + ".output");
+    }
+}
+
 Job readJob(const json& root)
 {
     const std::string where = "job";
@@ -36,6 +66,7 @@ Job readJob(const json& root)
     const json& stock = member(root, "stock", where);
     job.stock.min = vec3(stock, "min", where + ".stock");
     job.stock.max = vec3(stock, "max", where + ".stock");
+    readStockRule(stock, job.stock, where + ".stock");
     job.workOffset = integer(root, "workOffset", where);
     if (job.workOffset < 1 || job.workOffset > 99)
         throw JsonFieldError{where + ".workOffset: expected 1..99"};
@@ -46,6 +77,7 @@ Job readJob(const json& root)
         job.material = text(root, "material", where);
     if (const Json* properties = optionalMember(root, "postProperties", where))
         job.postProperties = detail::readPostProperties(*properties, where + ".postProperties");
+    readSetup(root, job, where);
 
     const json& tools = member(root, "tools", where);
     if (!tools.is_array())
@@ -64,6 +96,37 @@ Job readJob(const json& root)
         job.operations.push_back(std::move(op));
     }
     return job;
+}
+
+// Version 6 fields are written only when they differ from their defaults, so older jobs stay
+// readable by older CAM Workbenches.
+bool usesSetupFields(const Job& job)
+{
+    return job.stock.shape != Stock::Shape::Box || job.stock.fromModel || !(job.origin == base::Vec3{}) ||
+           !job.outputName.empty() || !job.outputFolder.empty();
+}
+
+void writeStockRule(const Stock& stock, nlohmann::ordered_json& out)
+{
+    if (stock.shape == Stock::Shape::Cylinder)
+        out["shape"] = "cylinder";
+    if (stock.fromModel)
+        out["fromModel"] = {{"below", {stock.fromModel->below.x, stock.fromModel->below.y, stock.fromModel->below.z}},
+                            {"above", {stock.fromModel->above.x, stock.fromModel->above.y, stock.fromModel->above.z}}};
+}
+
+void writeSetup(const Job& job, nlohmann::ordered_json& root)
+{
+    if (!(job.origin == base::Vec3{}))
+        root["origin"] = {job.origin.x, job.origin.y, job.origin.z};
+    if (job.outputName.empty() && job.outputFolder.empty())
+        return;
+    nlohmann::ordered_json output = nlohmann::ordered_json::object();
+    if (!job.outputName.empty())
+        output["name"] = job.outputName;
+    if (!job.outputFolder.empty())
+        output["folder"] = job.outputFolder;
+    root["output"] = output;
 }
 
 }  // namespace
@@ -111,11 +174,12 @@ std::string serializeJob(const Job& job)
     const bool cuttingData =
         !job.material.empty() ||
         std::any_of(job.tools.begin(), job.tools.end(), [](const auto& tc) { return !tc.cuttingData.empty(); });
-    root["version"] = disabled || cuttingData ? 6 : swarf ? 5 : planes ? 4 : 3;
+    root["version"] = disabled || cuttingData || usesSetupFields(job) ? 6 : swarf ? 5 : planes ? 4 : 3;
     root["name"] = job.name;
     root["model"] = job.modelPath;
     root["stock"] = {{"min", {job.stock.min.x, job.stock.min.y, job.stock.min.z}},
                      {"max", {job.stock.max.x, job.stock.max.y, job.stock.max.z}}};
+    writeStockRule(job.stock, root["stock"]);
     root["workOffset"] = job.workOffset;
     root["post"] = job.postId;
     if (!job.machineId.empty())
@@ -124,6 +188,7 @@ std::string serializeJob(const Job& job)
         root["postProperties"] = job.postProperties;
     if (!job.material.empty())
         root["material"] = job.material;
+    writeSetup(job, root);
     root["tools"] = ojson::array();
     for (const ops::ToolController& tc : job.tools)
         root["tools"].push_back(detail::writeTool(tc));
@@ -154,6 +219,17 @@ std::string relativeModelPath(const std::string& modelPath, const std::string& j
     const fs::path base = fs::absolute(jobPath).parent_path();
     const fs::path relative = fs::absolute(modelPath).lexically_normal().lexically_relative(base);
     return relative.empty() ? modelPath : relative.generic_string();
+}
+
+std::string jobOutputPath(const Job& job, const std::string& jobPath, const std::string& extension)
+{
+    if (job.outputName.empty())
+        return {};
+    fs::path name(job.outputName);
+    if (!name.has_extension() && !extension.empty())
+        name += "." + extension;
+    const fs::path folder = absoluteModelPath(job.outputFolder.empty() ? "." : job.outputFolder, jobPath);
+    return (folder / name).lexically_normal().string();
 }
 
 }  // namespace camwb::document

@@ -12,12 +12,13 @@ namespace camwb::document {
 // Version 2 added the optional "machine" and "postProperties"; version 3 the operation kinds
 // (contour, pocket, helix, drill) with geometry references, height overrides and parameters;
 // version 4 an operation's "workingPlane" (3+2); version 5 the swarf operation and an operation's
-// own "postProperties"; version 6 an operation's "enabled": false, the job's stock "material" and a
-// tool's "cuttingData" (per material, from a tool library). Versions 1-4 are still read (their
-// "profile" becomes an outside contour); writing gives 6 when one of version 6's fields is used,
-// else 5 when the job has a swarf operation or an operation's own post properties, else 4 when an
-// operation has a working plane, else 3, so that a CAM Workbench that knows neither refuses a job
-// it would compute otherwise.
+// own "postProperties"; version 6 an operation's "enabled": false, the job's stock "material", a
+// tool's "cuttingData" (per material, from a tool library), the stock's "shape" and "fromModel"
+// rule, the work "origin" and the default NC "output" (name, folder). Versions 1-4 are still read
+// (their "profile" becomes an outside contour); writing gives 6 when one of version 6's fields is
+// used, else 5 when the job has a swarf operation or an operation's own post properties, else 4
+// when an operation has a working plane, else 3, so that a CAM Workbench that knows neither
+// refuses a job it would compute otherwise.
 inline constexpr int kJobFormatVersion = 6;
 
 // In memory a job's model path is absolute; in the file it is relative to the job file's folder.
@@ -33,5 +34,10 @@ std::string serializeJob(const Job& job);
 std::string absoluteModelPath(const std::string& modelPath, const std::string& jobPath);
 // `modelPath` made relative to the folder of `jobPath`.
 std::string relativeModelPath(const std::string& modelPath, const std::string& jobPath);
+
+// Where the job's NC program goes by default: outputName in outputFolder (relative to the folder
+// of `jobPath`, or absolute), with `.extension` added when the name has none. Empty when the job
+// names no output.
+std::string jobOutputPath(const Job& job, const std::string& jobPath, const std::string& extension);
 
 }  // namespace camwb::document

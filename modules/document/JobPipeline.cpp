@@ -12,7 +12,20 @@ base::Result<occ::Model> loadJobModel(const Job& job, const occ::ProgressFn& pro
 {
     if (job.modelPath.empty())
         return base::makeError("the job has no model");
-    return occ::Model::load(job.modelPath, progress);
+    auto model = occ::Model::load(job.modelPath, progress);
+    if (!model || job.origin == base::Vec3{})
+        return model;
+    if (!model->hasBRep())
+        return base::makeError("a mesh (STL) model cannot be moved to a work origin; use the model's zero",
+                               job.modelPath);
+    // Translated, not turned: faces and edges keep their indices (inFrame moves the same shape).
+    return model->inFrame(job.origin, {1, 0, 0}, {0, 0, 1});
+}
+
+void resolveJobStock(Job& job, const occ::Model& model)
+{
+    if (!model.empty())
+        job.stock.resolve(model.boundsMin(), model.boundsMax());
 }
 
 base::Result<toolpath::Toolpath> computeProgram(const Job& job, const occ::Model& model, const ops::Progress& progress,

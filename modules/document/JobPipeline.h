@@ -16,7 +16,10 @@
 
 namespace camwb::document {
 
+// The job's model in work coordinates: moved by -job.origin (face and edge indices unchanged).
 base::Result<occ::Model> loadJobModel(const Job& job, const occ::ProgressFn& progress = {});
+// Re-resolves a "from model" stock from `model` (as loadJobModel gives it) after a (re)load.
+void resolveJobStock(Job& job, const occ::Model& model);
 
 // The whole program: work offset, then per operation its section with the tool change and
 // spindle start inserted after SectionBegin when the tool differs from the previous one.

@@ -118,7 +118,10 @@ Stock stockInFrame(const Stock& stock, const toolpath::WorkingPlane& plane)
     base::Box3 box;
     for (const base::Vec3& corner : base::boxCorners(stock.min, stock.max))
         box.add(plane.toLocal(corner));
-    return {box.min, box.max};
+    Stock framed;  // the box the tilted stock fills in the plane's frame
+    framed.min = box.min;
+    framed.max = box.max;
+    return framed;
 }
 
 ops::OpResult joinPlanes(std::vector<ops::OpResult> parts, const std::vector<PlaneGroup>& groups, int operationIndex)

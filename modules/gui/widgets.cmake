@@ -9,6 +9,8 @@ add_library(camwb_gui_widgets STATIC
   ${_camwb_gui_widgets_dir}/view3d/VtkOpenGLWidget.cpp
   ${_camwb_gui_widgets_dir}/view3d/detail/ModelActors.h
   ${_camwb_gui_widgets_dir}/view3d/ModelActors.cpp
+  ${_camwb_gui_widgets_dir}/view3d/detail/SetupActors.h
+  ${_camwb_gui_widgets_dir}/view3d/SetupActors.cpp
   ${_camwb_gui_widgets_dir}/view3d/TaskOverlay.h
   ${_camwb_gui_widgets_dir}/view3d/TaskOverlay.cpp
   ${_camwb_gui_widgets_dir}/view3d/View3D.h

@@ -2,6 +2,7 @@
 
 #include "base/AtomicFile.h"
 #include "camwb_version.h"
+#include "document/JobFile.h"
 #include "gui/actions/ActionRegistry.h"
 #include "gui/editor/NcEditor.h"
 #include "gui/editor/NcEditorActions.h"
@@ -23,6 +24,8 @@
 #include "gui/sim/SimDock.h"
 #include "gui/sim/SimPlayer.h"
 #include "gui/sim/SimRequest.h"
+#include "gui/tasks/JobSetupActions.h"
+#include "gui/tasks/JobSetupPanel.h"
 #include "gui/tasks/OperationPanel.h"
 #include "gui/tasks/PostSettingsPanel.h"
 #include "gui/tools/ToolActions.h"
@@ -37,6 +40,7 @@
 #include <QMenuBar>
 #include <QMessageBox>
 #include <QProgressBar>
+#include <QScopedValueRollback>
 #include <QStatusBar>
 #include <QToolBar>
 
@@ -256,6 +260,7 @@ void MainWindow::registerActions()
         [this, selected] { m_workbench->removeOperation(selected()); });
     m_jobTree->registerActions(*m_actions, operation);
 
+    registerJobSetupActions(*m_actions, [this] { editJobSetup(); });
     add({"Cam.Job.Post", tr("&Post"), jobMenu, QKeySequence(Qt::Key_F9), true, true}, [this] {
         if (m_ncDocument->mayReplace(tr("Posting the job replaces them with its program.")))
             m_workbench->post();
@@ -264,8 +269,12 @@ void MainWindow::registerActions()
         if (!m_workbench->ncSavable())  // out of date or none: says why, asks for no file name
             return;
         const QString suffix = m_workbench->ncExtension();
-        const QString base = QFileInfo(QString::fromStdString(m_workbench->document().path())).completeBaseName();
-        const QString path = m_prompter->saveFileName(tr("Save NC program"), base + '.' + suffix,
+        const std::string jobPath = m_workbench->document().path();
+        QString suggested = QFileInfo(QString::fromStdString(jobPath)).completeBaseName() + '.' + suffix;
+        if (const std::string own = document::jobOutputPath(m_workbench->job(), jobPath, suffix.toStdString());
+            !own.empty() && !jobPath.empty())
+            suggested = QString::fromStdString(own);  // the job's own output (job setup panel)
+        const QString path = m_prompter->saveFileName(tr("Save NC program"), suggested,
                                                       tr("NC programs (*.%1);;All files (*)").arg(suffix));
         if (!path.isEmpty())
             m_workbench->saveNc(path);
@@ -361,6 +370,7 @@ void MainWindow::connectWorkbench()
     connect(m_ncDocument, &NcDocument::titleChanged, this, &MainWindow::updateNcDockTitle);
     connect(m_workbench, &Workbench::programStateChanged, this, &MainWindow::showProgramState);
     connect(m_workbench, &Workbench::jobChanged, this, &MainWindow::updateTitle);
+    showJobSetupInView(*m_workbench, *m_view);
     connect(m_workbench, &Workbench::busyChanged, this, [this](bool busy) {
         m_progress->setVisible(busy);
         m_progress->setValue(0);
@@ -520,8 +530,33 @@ void MainWindow::openTaskPanel(int index, const document::Operation& operation,
     m_taskDock->raise();
 }
 
+void MainWindow::editJobSetup()
+{
+    if (!settleTaskPanel())
+        return;
+    closeTaskPanel();
+    m_jobSetupPanel = new JobSetupPanel(*m_workbench, &m_view->overlay(), m_taskDock);
+    connect(m_jobSetupPanel, &JobSetupPanel::closed, this, &MainWindow::closeTaskPanel);
+    connect(m_jobSetupPanel, &JobSetupPanel::importRequested, this, [this] {
+        // The setup panel stays open over an import: it holds no references into the model.
+        const QScopedValueRollback keep(m_importingFromSetup, true);
+        m_actions->trigger(QStringLiteral("Cam.File.ImportModel"));
+    });
+    m_taskDock->setWidget(m_jobSetupPanel);
+    m_taskDock->setWindowTitle(tr("Task: Job setup"));
+    m_taskDock->show();
+    m_taskDock->raise();
+}
+
 void MainWindow::closeTaskPanel()
 {
+    if (m_jobSetupPanel != nullptr) {
+        JobSetupPanel* setup = std::exchange(m_jobSetupPanel, nullptr);
+        setup->reject();  // no-op after OK or Cancel
+        m_taskDock->hide();
+        m_taskDock->setWidget(new QWidget(m_taskDock));
+        setup->deleteLater();
+    }
     if (m_taskPanel == nullptr)
         return;
     OperationPanel* panel = std::exchange(m_taskPanel, nullptr);
@@ -533,6 +568,18 @@ void MainWindow::closeTaskPanel()
 
 bool MainWindow::settleTaskPanel()
 {
+    if (m_jobSetupPanel != nullptr && !m_importingFromSetup) {
+        if (m_jobSetupPanel->hasUnappliedChanges()) {
+            const Prompter::Answer answer =
+                m_prompter->ask({tr("Unapplied changes"), tr("The job setup panel has changes that are not applied."),
+                                 tr("Apply"), tr("Discard")});
+            if (answer == Prompter::Answer::Cancel)
+                return false;
+            if (answer == Prompter::Answer::Accept)
+                m_jobSetupPanel->accept();
+        }
+        closeTaskPanel();
+    }
     if (m_taskPanel == nullptr)
         return true;
     if (m_taskPanel->hasUnappliedChanges()) {

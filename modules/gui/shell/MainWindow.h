@@ -18,6 +18,7 @@ class ActionRegistry;
 class Banner;
 class InspectorPanel;
 class NcInspector;
+class JobSetupPanel;
 class JobTree;
 class NcDocument;
 class NcEditor;
@@ -76,6 +77,9 @@ public:
     bool confirmDiscard();
     // New job, recent files, autosave and recovery, preferences (gui/shell/Session.h).
     Session& session() const { return *m_session; }
+    // Opens the job setup task panel (gui/tasks/JobSetupPanel.h) after settling an open panel.
+    void editJobSetup();
+    JobSetupPanel* jobSetupPanel() const { return m_jobSetupPanel; }
 
 protected:
     void closeEvent(QCloseEvent* event) override;
@@ -114,6 +118,8 @@ private:
     QDockWidget* m_taskDock = nullptr;
     OperationPanel* m_taskPanel = nullptr;
     Session* m_session = nullptr;
+    JobSetupPanel* m_jobSetupPanel = nullptr;
+    bool m_importingFromSetup = false;  // the setup panel's Import: it stays open
     Banner* m_viewBanner;
     Banner* m_ncBanner;
     bool m_editorShowsPosted = false;  // the editor holds the job's posted program (not an opened file)

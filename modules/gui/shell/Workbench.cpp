@@ -3,6 +3,7 @@
 #include "base/AtomicFile.h"
 #include "document/JobFile.h"
 #include "document/JobPipeline.h"
+#include "document/JobSetup.h"
 #include "document/ReferenceRemap.h"
 #include "gui/shell/NewOperation.h"
 #include "gui/shell/Prompter.h"
@@ -74,6 +75,7 @@ std::vector<double> plannedOperationSeconds(const toolpath::Toolpath& program, s
 struct Workbench::ComputeOutcome {
     std::optional<occ::Model> model;
     std::string modelPath;
+    base::Vec3 modelOrigin;  // the job origin the model was moved by
     occ::DisplayMesh mesh;
     std::optional<toolpath::Toolpath> toolpath;
     std::optional<post::PostOutput> nc;
@@ -216,9 +218,11 @@ void Workbench::importModel(const QString& path)
         setBusy(false);
         finishImport(file, outcome);
     });
-    watcher->setFuture(QtConcurrent::run([file, progress, previous = m_model, operations = job().operations] {
+    document::Job target = job();  // the new model in the job's work coordinates
+    target.modelPath = file;
+    watcher->setFuture(QtConcurrent::run([target, progress, previous = m_model, operations = job().operations] {
         auto outcome = std::make_shared<ComputeOutcome>();
-        auto model = occ::Model::load(file, progress);
+        auto model = document::loadJobModel(target, progress);
         if (!model) {
             outcome->errors.push_back(model.error().toString());
             return outcome;
@@ -287,6 +291,7 @@ void Workbench::finishImport(const std::string& file, const std::shared_ptr<Comp
 
     m_model = std::move(*outcome->model);
     m_modelPath = file;
+    m_modelOrigin = job().origin;
     m_mesh = std::move(outcome->mesh);
     m_modelProblem.clear();
     emit modelChanged();
@@ -295,8 +300,11 @@ void Workbench::finishImport(const std::string& file, const std::shared_ptr<Comp
     const bool hadModel = !job().modelPath.empty();
     m_document.edit("Import model", [&](document::Job& j) {
         j.modelPath = file;
-        if (!hadModel)
-            j.stock = {lo, hi};
+        if (!hadModel && !j.stock.fromModel) {
+            j.stock.min = lo;
+            j.stock.max = hi;
+        }
+        j.stock.resolve(lo, hi);  // a "from model" stock follows the new model
         j.operations = kept;
     });
     emit modelImportFinished(true);
@@ -388,6 +396,33 @@ double Workbench::operationSeconds(int index) const
                : -1.0;
 }
 
+bool Workbench::setJobSetup(const document::Job& setup)
+{
+    document::Stock stock = setup.stock;
+    if (!m_model.empty()) {
+        // m_model is in the coordinates of m_modelOrigin; the stock is in those of setup.origin.
+        const base::Vec3 shift = m_modelOrigin - setup.origin;
+        stock.resolve(m_model.boundsMin() + shift, m_model.boundsMax() + shift);
+    }
+    document::Job edited = job();
+    std::vector<QString> notes;
+    // Another post keeps the property values it takes, as Post Settings does (setPost).
+    if (setup.postId != edited.postId && !switchPostIn(edited, setup.postId, setup.machineId, std::nullopt, notes))
+        return false;
+    document::moveOrigin(edited, setup.origin);  // the operations' height overrides stay on the part
+    edited.stock = stock;
+    edited.workOffset = setup.workOffset;
+    edited.machineId = setup.machineId;
+    edited.outputName = setup.outputName;
+    edited.outputFolder = setup.outputFolder;
+    if (document::serializeJob(edited) == document::serializeJob(job()))
+        return true;  // no empty undo step
+    m_document.edit("Job setup", [&](document::Job& j) { j = edited; });
+    for (const QString& note : notes)
+        report(Severity::Warning, note);
+    return true;
+}
+
 void Workbench::undo() { m_document.undo(); }
 void Workbench::redo() { m_document.redo(); }
 
@@ -400,7 +435,8 @@ void Workbench::startCompute()
     setBusy(true);
     const document::Job job = this->job();
     const occ::Model model = m_model;
-    const bool reloadModel = job.modelPath != m_modelPath;
+    // The model is held in work coordinates: a moved origin reloads it too.
+    const bool reloadModel = job.modelPath != m_modelPath || !(job.origin == m_modelOrigin);
     auto progress = progressReporter(this, tr("Loading model"));
     const std::string programName = QFileInfo(qs(m_document.path())).completeBaseName().toStdString();
     const int generation = m_generation;
@@ -428,10 +464,14 @@ void Workbench::startCompute()
             outcome->mesh = current.mesh();
             outcome->model = current;
             outcome->modelPath = job.modelPath;
+            outcome->modelOrigin = job.origin;
         }
+        // A "from model" stock follows the model as loaded, as camwb-cli's pipeline does.
+        document::Job resolved = job;
+        document::resolveJobStock(resolved, current);
         document::ProgramReport report;
         report.allFailures = true;  // the job tree marks every operation that cannot be made
-        auto program = document::computeProgram(job, current, {}, &report);
+        auto program = document::computeProgram(resolved, current, {}, &report);
         outcome->warnings = std::move(report.warnings);
         outcome->failures = std::move(report.failures);
         if (!program) {
@@ -451,7 +491,7 @@ void Workbench::startCompute()
         outcome->postInfo = std::make_shared<const post::PostInfo>(post->info());
         post::PostContext context = post::PostContext::fromEnvironment(programName);
         context.outputName = programName;  // Save NC File proposes the job's name
-        auto options = document::jobRunOptions(job, post.value(), context, kinematics::defaultMachineDirs());
+        auto options = document::jobRunOptions(resolved, post.value(), context, kinematics::defaultMachineDirs());
         if (!options) {
             outcome->errors.push_back(options.error().toString());
             return outcome;
@@ -495,6 +535,7 @@ void Workbench::finishCompute(const std::shared_ptr<ComputeOutcome>& outcome)
     if (outcome->model) {
         m_model = std::move(*outcome->model);
         m_modelPath = outcome->modelPath;
+        m_modelOrigin = outcome->modelOrigin;
         m_mesh = std::move(outcome->mesh);
         emit modelChanged();
     }

@@ -35,6 +35,9 @@ public:
     document::JobDocument& document() { return m_document; }
     const document::Job& job() const { return m_document.job(); }
     const occ::Model& model() const { return m_model; }
+    // The job origin model() is moved by (it is in work coordinates; its file's coordinates are
+    // model() + modelOrigin()).
+    const base::Vec3& modelOrigin() const { return m_modelOrigin; }
     const occ::DisplayMesh& displayMesh() const { return m_mesh; }
     const toolpath::Toolpath& toolpath() const { return m_toolpath; }
     const QString& ncText() const { return m_nc; }
@@ -126,6 +129,13 @@ public:
     void updateTool(int index, const ops::ToolController& tool);
     // The stock material the cutting data is chosen by; one undoable step.
     void setMaterial(const std::string& material);
+    // The job setup panel's OK: the stock, work origin and offset, machine, post and output of
+    // `setup` become the job's as one undoable step ("Job setup"); a "from model" stock is resolved
+    // against the loaded model in the new origin's coordinates, and the operations' height
+    // overrides move with the origin (document::moveOrigin); another post keeps the property
+    // values it takes (as setPost). Unchanged setups add no step. False (shown) when the post
+    // cannot be loaded: nothing changes.
+    bool setJobSetup(const document::Job& setup);
     void undo();
     void redo();
 
@@ -148,6 +158,11 @@ private:
     void startCompute();
     void finishCompute(const std::shared_ptr<ComputeOutcome>& outcome);
     void applyProblems(const ComputeOutcome& outcome);
+    // setPost's rule on `edited` (a copy of the job): its post becomes `postId`, keeping the property
+    // values the new post takes (dropped ones added to `notes`) and a machine it drives. False
+    // (shown) when the post cannot be loaded. Defined in WorkbenchPost.cpp.
+    bool switchPostIn(document::Job& edited, const std::string& postId, const std::optional<std::string>& machineId,
+                      const std::optional<std::map<std::string, std::string>>& values, std::vector<QString>& notes);
     void finishImport(const std::string& file, const std::shared_ptr<ComputeOutcome>& outcome);
     void clearDerived();
     void setBusy(bool busy);
@@ -157,7 +172,8 @@ private:
 
     document::JobDocument m_document;
     occ::Model m_model;
-    std::string m_modelPath;  // the file m_model came from
+    std::string m_modelPath;   // the file m_model came from
+    base::Vec3 m_modelOrigin;  // the job origin m_model is moved by (m_model is in work coordinates)
     occ::DisplayMesh m_mesh;
     toolpath::Toolpath m_toolpath;
     QString m_nc;

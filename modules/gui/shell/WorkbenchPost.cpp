@@ -37,6 +37,23 @@ void Workbench::setPostProperties(const std::map<std::string, std::string>& valu
 bool Workbench::setPost(const std::string& postId, const std::optional<std::string>& machineId,
                         const std::optional<std::map<std::string, std::string>>& values)
 {
+    document::Job edited = job();
+    std::vector<QString> notes;
+    if (!switchPostIn(edited, postId, machineId, values, notes))
+        return false;
+    if (document::serializeJob(edited) == document::serializeJob(job()))
+        return true;  // no empty undo step
+    m_document.edit("Post", [&](document::Job& j) { j = edited; });
+    for (const QString& note : notes)
+        report(Severity::Warning, note);
+    return true;
+}
+
+bool Workbench::switchPostIn(document::Job& edited, const std::string& postId,
+                             const std::optional<std::string>& machineId,
+                             const std::optional<std::map<std::string, std::string>>& values,
+                             std::vector<QString>& notes)
+{
     auto target = loadPostInfo(postId);
     if (!target) {
         fail(tr("Post"), tr("The post %1 cannot be used: %2").arg(q(postId), q(target.error().toString())));
@@ -45,15 +62,13 @@ bool Workbench::setPost(const std::string& postId, const std::optional<std::stri
     const post::PostInfo& to = target.value();
     // A current post that no longer loads has no definitions to compare types with: the new post decides.
     post::PostInfo from;
-    from.id = job().postId;
-    if (auto current = loadPostInfo(job().postId))
+    from.id = edited.postId;
+    if (auto current = loadPostInfo(edited.postId))
         from = std::move(current).value();
 
-    document::Job edited = job();
+    const post::PostSwitch moved = post::switchPost(edited.postProperties, from, to);
     edited.postId = postId;
-    const post::PostSwitch moved = post::switchPost(job().postProperties, from, to);
     edited.postProperties = values ? *values : moved.kept;
-    std::vector<QString> notes;
     for (const post::DroppedProperty& dropped : moved.dropped)
         if (!values || !values->count(dropped.name))
             notes.push_back(tr("Post %1 does not keep property %2 = %3: %4")
@@ -78,11 +93,6 @@ bool Workbench::setPost(const std::string& postId, const std::optional<std::stri
             edited.machineId.clear();
         }
     }
-    if (document::serializeJob(edited) == document::serializeJob(job()))
-        return true;  // no empty undo step
-    m_document.edit("Post", [&](document::Job& j) { j = edited; });
-    for (const QString& note : notes)
-        report(Severity::Warning, note);
     return true;
 }
 

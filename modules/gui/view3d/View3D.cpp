@@ -4,6 +4,7 @@
 #include "gui/view3d/TaskOverlay.h"
 #include "gui/view3d/VtkOpenGLWidget.h"
 #include "gui/view3d/detail/ModelActors.h"
+#include "gui/view3d/detail/SetupActors.h"
 #include "gui/view3d/detail/ToolpathScene.h"
 #include "occ/DisplayMesh.h"
 #include "toolpath/Toolpath.h"
@@ -63,6 +64,8 @@ struct View3D::Private {
     SimOverlay* simulation = nullptr;
     bool simulationShown = false;
     vtkSmartPointer<vtkActor> edgeActor;
+    vtkSmartPointer<vtkActor> stockActor;
+    vtkSmartPointer<vtkAxesActor> workAxes;
     struct ToolActors {
         int tool = 0;
         vtkSmartPointer<vtkActor> cut;
@@ -325,6 +328,31 @@ void View3D::clearToolpath()
     d->render();
 }
 
+void View3D::setJobSetup(const std::optional<base::Box3>& stock, bool cylinder)
+{
+    if (d->stockActor)
+        d->renderer->RemoveActor(d->stockActor);
+    if (d->workAxes)
+        d->renderer->RemoveActor(d->workAxes);
+    d->stockActor = stock ? makeStockActor(*stock, cylinder) : nullptr;
+    // Axes a third of the stock's largest size long (20 mm without stock): seen, not in the way.
+    double length = 20;
+    if (stock) {
+        const base::Vec3 size = stock->max - stock->min;
+        length = std::max({size.x, size.y, size.z}) / 3;
+    }
+    d->workAxes = makeWorkAxes(length);
+    if (d->stockActor)
+        d->renderer->AddActor(d->stockActor);  // translucent: VTK draws it after the opaque model
+    d->renderer->AddActor(d->workAxes);
+    applyVisibility();
+    d->render();
+}
+
+bool View3D::hasStockActor() const { return d->stockActor != nullptr; }
+
+bool View3D::hasWorkAxes() const { return d->workAxes != nullptr; }
+
 bool View3D::hasModelActor() const { return d->modelActor != nullptr || d->edgeActor != nullptr; }
 
 bool View3D::hasToolpathActor() const { return !d->toolActors.empty(); }
@@ -360,7 +388,8 @@ void View3D::applyVisibility()
         if (actors.rapid)
             actors.rapid->SetVisibility(visible);
     }
-    for (vtkActor* actor : {d->modelActor.Get(), d->edgeActor.Get()})
+    // The simulator shows its own stock: the job's translucent one would hide the cut.
+    for (vtkActor* actor : {d->modelActor.Get(), d->edgeActor.Get(), d->stockActor.Get()})
         if (actor != nullptr)
             actor->SetVisibility(!d->simulationShown);
 }

@@ -64,6 +64,12 @@ public:
     void setPreparedToolpath(std::shared_ptr<const ToolpathScene> scene);
     void clearModel();
     void clearToolpath();
+    // The job's stock, translucent (a box, or a cylinder along Z inside `stock`), and the work
+    // coordinate system's axes at the origin: the view shows work coordinates. No stock: only
+    // the axes. Replaces what was shown.
+    void setJobSetup(const std::optional<base::Box3>& stock, bool cylinder);
+    bool hasStockActor() const;
+    bool hasWorkAxes() const;
     bool hasModelActor() const;
     bool hasToolpathActor() const;
     int toolpathSegmentCount() const;  // line segments in the toolpath polydata (rapid + cutting)

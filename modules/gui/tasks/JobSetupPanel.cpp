@@ -1,0 +1,533 @@
+#include "gui/tasks/JobSetupPanel.h"
+
+#include "document/JobSetup.h"
+#include "gui/shell/Workbench.h"
+#include "gui/view3d/TaskOverlay.h"
+#include "kinematics/Machine.h"
+#include "post/PostProcessor.h"
+#include "post/PostRegistry.h"
+#include "post/PostSwitch.h"
+
+#include <QComboBox>
+#include <QDialogButtonBox>
+#include <QDoubleSpinBox>
+#include <QFileInfo>
+#include <QFormLayout>
+#include <QGridLayout>
+#include <QGroupBox>
+#include <QHBoxLayout>
+#include <QLabel>
+#include <QLineEdit>
+#include <QPushButton>
+#include <QScrollArea>
+#include <QScrollBar>
+#include <QStandardItemModel>
+#include <QVBoxLayout>
+
+#include <cmath>
+#include <iterator>
+
+namespace camwb::gui {
+
+namespace {
+
+using document::StockAnchor;
+
+QString qs(const std::string& s) { return QString::fromStdString(s); }
+
+QGroupBox* group(const QString& title, QWidget* content)
+{
+    auto* box = new QGroupBox(title);
+    auto* layout = new QVBoxLayout(box);
+    layout->setContentsMargins(6, 6, 6, 6);
+    layout->addWidget(content);
+    return box;
+}
+
+base::Vec3 valueOf(const std::array<QDoubleSpinBox*, 3>& fields)
+{
+    return {fields[0]->value(), fields[1]->value(), fields[2]->value()};
+}
+
+void showVec3(const std::array<QDoubleSpinBox*, 3>& fields, const base::Vec3& v)
+{
+    fields[0]->setValue(v.x);
+    fields[1]->setValue(v.y);
+    fields[2]->setValue(v.z);
+}
+
+// Columns of X, Y, Z fields under their titles, one row per axis: narrow enough for the dock.
+QWidget* axisGrid(const std::vector<std::pair<QString, std::array<QDoubleSpinBox*, 3>>>& columns)
+{
+    auto* widget = new QWidget;
+    auto* grid = new QGridLayout(widget);
+    grid->setContentsMargins(0, 0, 0, 0);
+    const char* axes[] = {"X", "Y", "Z"};
+    for (int c = 0; c < static_cast<int>(columns.size()); ++c) {
+        const auto& [title, fields] = columns[static_cast<std::size_t>(c)];
+        if (!title.isEmpty())
+            grid->addWidget(new QLabel(title), 0, c + 1);
+        for (int a = 0; a < 3; ++a)
+            grid->addWidget(fields[static_cast<std::size_t>(a)], a + 1, c + 1);
+    }
+    for (int a = 0; a < 3; ++a)
+        grid->addWidget(new QLabel(QLatin1String(axes[a])), a + 1, 0);
+    return widget;
+}
+
+// Origin choices after "typed": the stock points of document::stockAnchor, in this order.
+constexpr StockAnchor kAnchors[] = {StockAnchor::TopFrontLeft, StockAnchor::BottomFrontLeft, StockAnchor::TopCentre,
+                                    StockAnchor::Centre, StockAnchor::BottomCentre};
+// Then the face picked in the 3D view (its level as Z0).
+constexpr int kPickedFace = 1 + static_cast<int>(std::size(kAnchors));
+
+}  // namespace
+
+JobSetupPanel::JobSetupPanel(Workbench& workbench, TaskOverlay* overlay, QWidget* parent) :
+    QWidget(parent),
+    m_workbench(workbench),
+    m_overlay(overlay),
+    m_setup(workbench.job())
+{
+    setObjectName(QStringLiteral("jobSetupPanel"));
+    resolveStock();
+    m_original = m_setup;
+
+    auto* outer = new QVBoxLayout(this);
+    outer->setContentsMargins(4, 4, 4, 4);
+    outer->addWidget(new QLabel(QStringLiteral("<b>%1</b>").arg(tr("Job setup"))));
+    auto* buttons = new QDialogButtonBox(QDialogButtonBox::Ok | QDialogButtonBox::Cancel, this);
+    buttons->button(QDialogButtonBox::Ok)->setObjectName(QStringLiteral("okButton"));
+    buttons->button(QDialogButtonBox::Cancel)->setObjectName(QStringLiteral("cancelButton"));
+    connect(buttons, &QDialogButtonBox::accepted, this, &JobSetupPanel::accept);
+    connect(buttons, &QDialogButtonBox::rejected, this, &JobSetupPanel::reject);
+    outer->addWidget(buttons);
+
+    auto* content = new QWidget;
+    auto* column = new QVBoxLayout(content);
+    column->setContentsMargins(0, 0, 0, 0);
+    column->addWidget(group(tr("Model"), buildModel()));
+    column->addWidget(group(tr("Stock"), buildStock()));
+    column->addWidget(group(tr("Work coordinate system"), buildWcs()));
+    column->addWidget(group(tr("Machine"), buildMachine()));
+    column->addWidget(group(tr("Post"), buildPost()));
+    column->addWidget(group(tr("Output"), buildOutput()));
+    column->addStretch(1);
+    auto* scroll = new QScrollArea(this);
+    scroll->setWidget(content);
+    scroll->setWidgetResizable(true);
+    scroll->setFrameShape(QFrame::NoFrame);
+    scroll->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
+    // The dock grows to the panel's rows instead of cutting them off on the right.
+    scroll->setMinimumWidth(content->minimumSizeHint().width() + scroll->verticalScrollBar()->sizeHint().width());
+    outer->addWidget(scroll, 1);
+
+    // A model imported while the panel is open: a "from model" stock follows it.
+    connect(&m_workbench, &Workbench::modelChanged, this, [this] {
+        const std::string& path = m_workbench.job().modelPath;
+        m_modelLabel->setText(path.empty() ? tr("No model") : QFileInfo(qs(path)).fileName());
+        resolveStock();
+        showValues();
+    });
+    showValues();
+}
+
+JobSetupPanel::Vec3Fields JobSetupPanel::vec3Fields(const char* objectName, double min, double max)
+{
+    Vec3Fields fields{};
+    const char* axes[] = {"X", "Y", "Z"};
+    for (int i = 0; i < 3; ++i) {
+        auto* spin = new QDoubleSpinBox;
+        spin->setObjectName(QString::fromLatin1(objectName) + QLatin1String(axes[i]));
+        spin->setRange(min, max);
+        spin->setDecimals(3);
+        spin->setToolTip(tr("mm"));
+        spin->setKeyboardTracking(false);  // one change per value typed, not per digit
+        fields[static_cast<std::size_t>(i)] = spin;
+    }
+    return fields;
+}
+
+QWidget* JobSetupPanel::buildModel()
+{
+    auto* widget = new QWidget;
+    auto* layout = new QHBoxLayout(widget);
+    layout->setContentsMargins(0, 0, 0, 0);
+    const std::string& path = m_setup.modelPath;
+    m_modelLabel = new QLabel(path.empty() ? tr("No model") : QFileInfo(qs(path)).fileName());
+    m_modelLabel->setObjectName(QStringLiteral("modelLabel"));
+    m_modelLabel->setToolTip(qs(path));
+    auto* import = new QPushButton(tr("Import…"));
+    import->setObjectName(QStringLiteral("importModelButton"));
+    import->setToolTip(tr("Import a STEP, IGES, BREP or STL model as the job's model"));
+    connect(import, &QPushButton::clicked, this, &JobSetupPanel::importRequested);
+    layout->addWidget(m_modelLabel, 1);
+    layout->addWidget(import);
+    return widget;
+}
+
+QWidget* JobSetupPanel::buildStock()
+{
+    auto* widget = new QWidget;
+    auto* form = new QFormLayout(widget);
+    m_stockShape = new QComboBox;
+    m_stockShape->setObjectName(QStringLiteral("stockShape"));
+    m_stockShape->addItem(tr("Box"));
+    m_stockShape->addItem(tr("Cylinder (along Z)"));
+    form->addRow(tr("Shape"), m_stockShape);
+    m_stockSize = new QComboBox;
+    m_stockSize->setObjectName(QStringLiteral("stockSize"));
+    m_stockSize->addItem(tr("Model bounds + offsets"));
+    m_stockSize->addItem(tr("Explicit size"));
+    form->addRow(tr("Size"), m_stockSize);
+
+    m_below = vec3Fields("stockBelow", 0, 1000);
+    m_above = vec3Fields("stockAbove", 0, 1000);
+    m_offsetRows = axisGrid({{tr("Below min (mm)"), m_below}, {tr("Above max (mm)"), m_above}});
+    form->addRow(m_offsetRows);
+    m_min = vec3Fields("stockMin", -10000, 10000);
+    m_max = vec3Fields("stockMax", -10000, 10000);
+    m_explicitRows = axisGrid({{tr("Min (mm)"), m_min}, {tr("Max (mm)"), m_max}});
+    form->addRow(m_explicitRows);
+    m_stockSummary = new QLabel;
+    m_stockSummary->setObjectName(QStringLiteral("stockSummary"));
+    m_stockSummary->setWordWrap(true);
+    form->addRow(m_stockSummary);
+
+    connect(m_stockShape, &QComboBox::currentIndexChanged, this, &JobSetupPanel::stockEdited);
+    connect(m_stockSize, &QComboBox::currentIndexChanged, this, &JobSetupPanel::stockEdited);
+    for (const Vec3Fields* fields : {&m_below, &m_above, &m_min, &m_max})
+        for (QDoubleSpinBox* spin : *fields)
+            connect(spin, &QDoubleSpinBox::valueChanged, this, &JobSetupPanel::stockEdited);
+    return widget;
+}
+
+QWidget* JobSetupPanel::buildWcs()
+{
+    auto* widget = new QWidget;
+    auto* form = new QFormLayout(widget);
+    m_originAnchor = new QComboBox;
+    m_originAnchor->setObjectName(QStringLiteral("originAnchor"));
+    m_originAnchor->addItem(tr("Typed (model coordinates)"));
+    m_originAnchor->addItem(tr("Stock: top front left corner"));
+    m_originAnchor->addItem(tr("Stock: bottom front left corner"));
+    m_originAnchor->addItem(tr("Stock: top centre"));
+    m_originAnchor->addItem(tr("Stock: centre"));
+    m_originAnchor->addItem(tr("Stock: bottom centre"));
+    m_originAnchor->addItem(tr("Z0 on the face picked in the view"));
+    m_originAnchor->setToolTip(tr("Program zero: a point of the stock (it follows the stock), or typed"));
+    form->addRow(tr("Origin at"), m_originAnchor);
+    m_origin = vec3Fields("origin", -10000, 10000);
+    form->addRow(tr("Origin"), axisGrid({{QString(), m_origin}}));
+    m_originNote = new QLabel;
+    m_originNote->setObjectName(QStringLiteral("originNote"));
+    m_originNote->setWordWrap(true);
+    m_originNote->hide();
+    form->addRow(m_originNote);
+    m_workOffset = new QComboBox;
+    m_workOffset->setObjectName(QStringLiteral("workOffset"));
+    for (int i = 1; i <= 6; ++i)
+        m_workOffset->addItem(QStringLiteral("G%1").arg(53 + i), i);
+    if (m_setup.workOffset > 6)
+        m_workOffset->addItem(tr("Offset %1").arg(m_setup.workOffset), m_setup.workOffset);
+    form->addRow(tr("Work offset"), m_workOffset);
+
+    connect(m_originAnchor, &QComboBox::currentIndexChanged, this, [this](int index) {
+        if (m_showing || index <= 0)
+            return;
+        if (index == kPickedFace) {
+            originOnPickedFace();
+            return;
+        }
+        moveOrigin(document::stockAnchor(m_setup.stock, kAnchors[index - 1]));
+        showValues();
+    });
+    if (m_overlay != nullptr)
+        connect(m_overlay, &TaskOverlay::selectionChanged, this, [this] {
+            if (m_originAnchor->currentIndex() == kPickedFace)
+                originOnPickedFace();
+        });
+    for (QDoubleSpinBox* spin : m_origin)
+        connect(spin, &QDoubleSpinBox::valueChanged, this, &JobSetupPanel::originEdited);
+    connect(m_workOffset, &QComboBox::currentIndexChanged, this, [this] {
+        if (!m_showing)
+            m_setup.workOffset = m_workOffset->currentData().toInt();
+    });
+    return widget;
+}
+
+QWidget* JobSetupPanel::buildMachine()
+{
+    auto* widget = new QWidget;
+    auto* layout = new QVBoxLayout(widget);
+    layout->setContentsMargins(0, 0, 0, 0);
+    m_machine = new QComboBox;
+    m_machine->setObjectName(QStringLiteral("machine"));
+    m_machine->addItem(tr("The post's default machine"), QString());
+    for (const base::DataFile& file : kinematics::listMachineFiles())
+        m_machine->addItem(qs(file.id), qs(file.path));
+    if (!m_setup.machineId.empty() && m_machine->findText(qs(m_setup.machineId)) < 0)
+        m_machine->addItem(qs(m_setup.machineId), qs(m_setup.machineId));
+    m_travelWarning = new QLabel;
+    m_travelWarning->setObjectName(QStringLiteral("travelWarning"));
+    m_travelWarning->setWordWrap(true);
+    m_travelWarning->setStyleSheet(QStringLiteral("color: #b00020;"));
+    m_travelWarning->hide();
+    layout->addWidget(m_machine);
+    layout->addWidget(m_travelWarning);
+    connect(m_machine, &QComboBox::currentIndexChanged, this, [this](int index) {
+        if (m_showing)
+            return;
+        m_setup.machineId = index <= 0 ? std::string() : m_machine->currentText().toStdString();
+        checkTravels();
+        filterPosts();
+    });
+    return widget;
+}
+
+QWidget* JobSetupPanel::buildPost()
+{
+    auto* widget = new QWidget;
+    auto* layout = new QVBoxLayout(widget);
+    layout->setContentsMargins(0, 0, 0, 0);
+    m_post = new QComboBox;
+    m_post->setObjectName(QStringLiteral("post"));
+    for (const post::PostEntry& entry : post::listPosts(post::defaultPostDirs())) {
+        // The post's own declarations: the machines and controls it serves, its description.
+        post::PostInfo info;
+        info.id = entry.id;
+        if (auto loaded = post::PostProcessor::load(entry.path))
+            info = loaded->info();
+        m_post->addItem(qs(entry.id));
+        m_post->setItemData(m_post->count() - 1, qs(info.description), Qt::ToolTipRole);
+        m_postInfos.push_back(std::move(info));
+    }
+    if (m_post->findText(qs(m_setup.postId)) < 0) {
+        m_post->addItem(qs(m_setup.postId));
+        m_postInfos.emplace_back().id = m_setup.postId;
+    }
+    m_postWarning = new QLabel;
+    m_postWarning->setObjectName(QStringLiteral("postWarning"));
+    m_postWarning->setWordWrap(true);
+    m_postWarning->setStyleSheet(QStringLiteral("color: #b00020;"));
+    m_postWarning->hide();
+    layout->addWidget(m_post);
+    layout->addWidget(m_postWarning);
+    // The post properties form (another part of the job workflow) goes here.
+    m_postPropertiesSlot = new QWidget;
+    m_postPropertiesSlot->setObjectName(QStringLiteral("postPropertiesSlot"));
+    auto* slotLayout = new QVBoxLayout(m_postPropertiesSlot);
+    slotLayout->setContentsMargins(0, 0, 0, 0);
+    layout->addWidget(m_postPropertiesSlot);
+    connect(m_post, &QComboBox::currentIndexChanged, this, [this] {
+        if (!m_showing)
+            m_setup.postId = m_post->currentText().toStdString();
+        filterPosts();
+    });
+    return widget;
+}
+
+QWidget* JobSetupPanel::buildOutput()
+{
+    auto* widget = new QWidget;
+    auto* form = new QFormLayout(widget);
+    m_outputName = new QLineEdit(qs(m_setup.outputName));
+    m_outputName->setObjectName(QStringLiteral("outputName"));
+    m_outputName->setPlaceholderText(tr("the job file's name"));
+    m_outputName->setToolTip(tr("The NC program's file name; the post's extension is added when it has none"));
+    m_outputFolder = new QLineEdit(qs(m_setup.outputFolder));
+    m_outputFolder->setObjectName(QStringLiteral("outputFolder"));
+    m_outputFolder->setPlaceholderText(tr("the job file's folder"));
+    m_outputFolder->setToolTip(tr("Relative to the job file's folder, or absolute"));
+    form->addRow(tr("File name"), m_outputName);
+    form->addRow(tr("Folder"), m_outputFolder);
+    connect(m_outputName, &QLineEdit::textChanged, this,
+            [this](const QString& text) { m_setup.outputName = text.trimmed().toStdString(); });
+    connect(m_outputFolder, &QLineEdit::textChanged, this,
+            [this](const QString& text) { m_setup.outputFolder = text.trimmed().toStdString(); });
+    return widget;
+}
+
+bool JobSetupPanel::modelBounds(base::Vec3& min, base::Vec3& max) const
+{
+    const occ::Model& model = m_workbench.model();
+    if (model.empty())
+        return false;
+    min = model.boundsMin() + m_workbench.modelOrigin();
+    max = model.boundsMax() + m_workbench.modelOrigin();
+    return true;
+}
+
+void JobSetupPanel::resolveStock()
+{
+    base::Vec3 min, max;
+    if (modelBounds(min, max))
+        m_setup.stock.resolve(min - m_setup.origin, max - m_setup.origin);
+}
+
+void JobSetupPanel::stockEdited()
+{
+    if (m_showing)
+        return;
+    document::Stock& stock = m_setup.stock;
+    stock.shape = m_stockShape->currentIndex() == 1 ? document::Stock::Shape::Cylinder : document::Stock::Shape::Box;
+    if (m_stockSize->currentIndex() == 0) {
+        stock.fromModel = document::StockFromModel{valueOf(m_below), valueOf(m_above)};
+        resolveStock();
+    } else {
+        stock.fromModel.reset();
+        stock.min = valueOf(m_min);
+        stock.max = valueOf(m_max);
+        if (stock.shape == document::Stock::Shape::Cylinder) {
+            // Round: the diameter is the x size, about the y centre.
+            const double cy = (stock.min.y + stock.max.y) / 2, r = (stock.max.x - stock.min.x) / 2;
+            stock.min.y = cy - r;
+            stock.max.y = cy + r;
+        }
+    }
+    // An origin on a stock point follows the stock.
+    if (const int anchor = m_originAnchor->currentIndex(); anchor > 0 && anchor < kPickedFace)
+        moveOrigin(document::stockAnchor(stock, kAnchors[anchor - 1]));
+    showValues();
+}
+
+// Z0 at the level of the flat horizontal face picked in the 3D view; X and Y stay.
+void JobSetupPanel::originOnPickedFace()
+{
+    const std::vector<int> faces = m_overlay ? m_overlay->selectedFaces() : std::vector<int>{};
+    const occ::FaceInfo face = faces.empty() ? occ::FaceInfo{} : m_workbench.model().face(faces.back());
+    const bool level = face.index > 0 && face.planar && std::abs(std::abs(face.normal.z) - 1) < 1e-9;
+    m_originNote->setText(level ? tr("Z0 on face %1").arg(face.index)
+                                : tr("Pick a flat horizontal face of the model in the 3D view."));
+    m_originNote->show();
+    if (!level)
+        return;
+    // The model is shown in the coordinates of the origin it was loaded with.
+    const double z = face.planeZ + m_workbench.modelOrigin().z;
+    moveOrigin({0, 0, z - m_setup.origin.z});
+    showValues();
+}
+
+void JobSetupPanel::originEdited()
+{
+    if (m_showing)
+        return;
+    moveOrigin(valueOf(m_origin) - m_setup.origin);
+    m_showing = true;
+    m_originAnchor->setCurrentIndex(0);  // typed
+    m_showing = false;
+    showValues();
+}
+
+void JobSetupPanel::moveOrigin(const base::Vec3& delta)
+{
+    document::moveOrigin(m_setup, m_setup.origin + delta);
+    resolveStock();  // a "from model" stock in the new coordinates
+}
+
+void JobSetupPanel::showValues()
+{
+    m_showing = true;
+    const document::Stock& stock = m_setup.stock;
+    const bool fromModel = stock.fromModel.has_value();
+    m_stockShape->setCurrentIndex(stock.shape == document::Stock::Shape::Cylinder ? 1 : 0);
+    m_stockSize->setCurrentIndex(fromModel ? 0 : 1);
+    if (fromModel) {
+        showVec3(m_below, stock.fromModel->below);
+        showVec3(m_above, stock.fromModel->above);
+    }
+    showVec3(m_min, stock.min);
+    showVec3(m_max, stock.max);
+    m_offsetRows->setVisible(fromModel);
+    m_explicitRows->setVisible(!fromModel);
+    const base::Vec3 size = stock.max - stock.min;
+    m_stockSummary->setText(stock.shape == document::Stock::Shape::Cylinder ? tr("Ø%1 × %2 mm, from Z %3 to %4")
+                                                                                  .arg(size.x, 0, 'g', 6)
+                                                                                  .arg(size.z, 0, 'g', 6)
+                                                                                  .arg(stock.min.z)
+                                                                                  .arg(stock.max.z)
+                                                                            : tr("%1 × %2 × %3 mm, from (%4, %5, %6)")
+                                                                                  .arg(size.x, 0, 'g', 6)
+                                                                                  .arg(size.y, 0, 'g', 6)
+                                                                                  .arg(size.z, 0, 'g', 6)
+                                                                                  .arg(stock.min.x)
+                                                                                  .arg(stock.min.y)
+                                                                                  .arg(stock.min.z));
+    showVec3(m_origin, m_setup.origin);
+    m_workOffset->setCurrentIndex(std::max(0, m_workOffset->findData(m_setup.workOffset)));
+    m_machine->setCurrentIndex(m_setup.machineId.empty() ? 0 : std::max(0, m_machine->findText(qs(m_setup.machineId))));
+    m_post->setCurrentIndex(std::max(0, m_post->findText(qs(m_setup.postId))));
+    m_showing = false;
+    checkTravels();
+    filterPosts();
+}
+
+// Posts that name the machines they post for and not the chosen one are greyed out; the chosen
+// post, when it is one of them, is warned about (posting would fail).
+void JobSetupPanel::filterPosts()
+{
+    auto* model = qobject_cast<QStandardItemModel*>(m_post->model());
+    auto serves = [this](int index) {
+        return !m_chosenMachine || index < 0 || index >= static_cast<int>(m_postInfos.size()) ||
+               post::servesMachine(m_postInfos[static_cast<std::size_t>(index)], *m_chosenMachine);
+    };
+    for (int i = 0; model != nullptr && i < m_post->count(); ++i)
+        model->item(i)->setEnabled(serves(i) || i == m_post->currentIndex());
+    const bool ok = serves(m_post->currentIndex());
+    m_postWarning->setText(
+        ok ? QString() : tr("%1 does not post for the machine %2.").arg(m_post->currentText(), qs(m_setup.machineId)));
+    m_postWarning->setVisible(!ok);
+}
+
+void JobSetupPanel::checkTravels()
+{
+    QStringList problems;
+    const QString path = m_machine->currentData().toString();
+    m_chosenMachine.reset();
+    if (!path.isEmpty()) {
+        auto machine = kinematics::loadMachine(path.toStdString());
+        if (!machine)
+            problems << qs(machine.error().toString());
+        else
+            m_chosenMachine = std::move(machine).value();
+    }
+    if (m_chosenMachine)
+        for (const std::string& shortfall : document::travelShortfalls(*m_chosenMachine, m_setup.stock))
+            problems << qs(shortfall);
+    m_travelWarning->setText(problems.isEmpty()
+                                 ? QString()
+                                 : tr("The stock does not fit the machine's travels:\n%1").arg(problems.join('\n')));
+    m_travelWarning->setVisible(!problems.isEmpty());
+}
+
+bool JobSetupPanel::hasUnappliedChanges() const
+{
+    const document::Job& a = m_setup;
+    const document::Job& b = m_original;
+    return !(a.stock == b.stock && a.origin == b.origin && a.workOffset == b.workOffset && a.machineId == b.machineId &&
+             a.postId == b.postId && a.outputName == b.outputName && a.outputFolder == b.outputFolder);
+}
+
+bool JobSetupPanel::accept()
+{
+    if (m_finished)
+        return true;
+    if (!m_workbench.setJobSetup(m_setup))
+        return false;  // the post cannot be loaded (shown): the panel stays
+    finish();
+    return true;
+}
+
+void JobSetupPanel::reject()
+{
+    if (!m_finished)
+        finish();
+}
+
+void JobSetupPanel::finish()
+{
+    m_finished = true;
+    emit closed();
+}
+
+}  // namespace camwb::gui

@@ -1,0 +1,102 @@
+// The job setup task panel (docked like the operations' panels): the job's model (Import), stock
+// (box from the model's bounds with offsets, explicit box, or cylinder), work coordinate system
+// (origin on a stock corner/centre, Z0 on a face picked in the view, or typed; G54…G59), machine (its travels checked
+// against the stock), post (with a slot for the post properties form), and the NC output's name and folder. It edits a
+// copy of the job; OK applies it as one undoable step, Cancel changes nothing.
+#pragma once
+
+#include "base/Vec.h"
+#include "document/Job.h"
+#include "kinematics/Machine.h"
+#include "post/PostInfo.h"
+
+#include <QWidget>
+
+#include <array>
+#include <optional>
+#include <vector>
+
+class QComboBox;
+class QDoubleSpinBox;
+class QLabel;
+class QLineEdit;
+
+namespace camwb::gui {
+
+class TaskOverlay;
+class Workbench;
+
+class JobSetupPanel : public QWidget {
+    Q_OBJECT
+public:
+    // `overlay` (may be null) offers the face picked in the 3D view as the origin's Z level.
+    JobSetupPanel(Workbench& workbench, TaskOverlay* overlay, QWidget* parent = nullptr);
+
+    // The job as OK would make it (only its setup fields differ from the Workbench's job).
+    const document::Job& setup() const { return m_setup; }
+    // Where another panel part (the post properties form) puts its widgets: an empty QWidget
+    // with a QVBoxLayout, objectName "postPropertiesSlot".
+    QWidget* postPropertiesSlot() const { return m_postPropertiesSlot; }
+
+    bool accept();  // OK: applies (one undo step, none when nothing changed) and closes
+    void reject();  // Cancel: changes nothing and closes
+    bool hasUnappliedChanges() const;
+
+signals:
+    void closed();
+    void importRequested();  // the Import button: the window runs Cam.File.ImportModel
+
+private:
+    using Vec3Fields = std::array<QDoubleSpinBox*, 3>;
+
+    QWidget* buildModel();
+    QWidget* buildStock();
+    QWidget* buildWcs();
+    QWidget* buildMachine();
+    QWidget* buildPost();
+    QWidget* buildOutput();
+    Vec3Fields vec3Fields(const char* objectName, double min, double max);
+
+    // The model's bounds in the coordinates of the file (the origin not applied); none without a model.
+    bool modelBounds(base::Vec3& min, base::Vec3& max) const;
+    void stockEdited();
+    void originEdited();
+    // Moves the origin by `delta` (model coordinates): an explicit stock stays where it is.
+    void moveOrigin(const base::Vec3& delta);
+    void resolveStock();
+    void showValues();  // writes m_setup into the fields (signals blocked)
+    void checkTravels();
+    void originOnPickedFace();
+    void filterPosts();
+    void finish();
+
+    Workbench& m_workbench;
+    TaskOverlay* m_overlay;
+    document::Job m_original;
+    document::Job m_setup;
+    bool m_showing = false;  // showValues() is writing the fields
+    bool m_finished = false;
+
+    QLabel* m_modelLabel = nullptr;
+    QComboBox* m_stockShape = nullptr;
+    QComboBox* m_stockSize = nullptr;
+    Vec3Fields m_below{}, m_above{}, m_min{}, m_max{};
+    QWidget* m_offsetRows = nullptr;
+    QWidget* m_explicitRows = nullptr;
+    QLabel* m_stockSummary = nullptr;
+    QComboBox* m_originAnchor = nullptr;
+    Vec3Fields m_origin{};
+    QLabel* m_originNote = nullptr;
+    QComboBox* m_workOffset = nullptr;
+    QComboBox* m_machine = nullptr;
+    QLabel* m_travelWarning = nullptr;
+    QComboBox* m_post = nullptr;
+    QLabel* m_postWarning = nullptr;
+    std::vector<post::PostInfo> m_postInfos;             // by m_post's index
+    std::optional<kinematics::Machine> m_chosenMachine;  // the machine chosen (none: the post's default)
+    QWidget* m_postPropertiesSlot = nullptr;
+    QLineEdit* m_outputName = nullptr;
+    QLineEdit* m_outputFolder = nullptr;
+};
+
+}  // namespace camwb::gui

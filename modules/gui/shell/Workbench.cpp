@@ -406,9 +406,12 @@ bool Workbench::setJobSetup(const document::Job& setup)
     }
     document::Job edited = job();
     std::vector<QString> notes;
-    // Another post keeps the property values it takes, as Post Settings does (setPost).
-    if (setup.postId != edited.postId && !switchPostIn(edited, setup.postId, setup.machineId, std::nullopt, notes))
+    // The panel's form already holds the values the (new) post takes; operations' own values
+    // follow the post as Post Settings does (setPost), and what is dropped is reported.
+    if (setup.postId != edited.postId &&
+        !switchPostIn(edited, setup.postId, setup.machineId, setup.postProperties, notes))
         return false;
+    edited.postProperties = setup.postProperties;
     document::moveOrigin(edited, setup.origin);  // the operations' height overrides stay on the part
     edited.stock = stock;
     edited.workOffset = setup.workOffset;

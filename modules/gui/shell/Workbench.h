@@ -129,7 +129,7 @@ public:
     void updateTool(int index, const ops::ToolController& tool);
     // The stock material the cutting data is chosen by; one undoable step.
     void setMaterial(const std::string& material);
-    // The job setup panel's OK: the stock, work origin and offset, machine, post and output of
+    // The job setup panel's OK: the stock, work origin and offset, machine, post, post properties and output of
     // `setup` become the job's as one undoable step ("Job setup"); a "from model" stock is resolved
     // against the loaded model in the new origin's coordinates, and the operations' height
     // overrides move with the origin (document::moveOrigin); another post keeps the property

@@ -2,6 +2,7 @@
 
 #include "document/JobSetup.h"
 #include "gui/shell/Workbench.h"
+#include "gui/tasks/PostPropertiesForm.h"
 #include "gui/view3d/TaskOverlay.h"
 #include "kinematics/Machine.h"
 #include "post/PostProcessor.h"
@@ -313,15 +314,25 @@ QWidget* JobSetupPanel::buildPost()
     m_postWarning->hide();
     layout->addWidget(m_post);
     layout->addWidget(m_postWarning);
-    // The post properties form (another part of the job workflow) goes here.
+    // The post's properties, as Post Settings shows them; a change of post keeps the values the
+    // new post takes (post::switchPost) and says which it drops.
     m_postPropertiesSlot = new QWidget;
     m_postPropertiesSlot->setObjectName(QStringLiteral("postPropertiesSlot"));
     auto* slotLayout = new QVBoxLayout(m_postPropertiesSlot);
     slotLayout->setContentsMargins(0, 0, 0, 0);
+    m_postDropped = new QLabel;
+    m_postDropped->setObjectName(QStringLiteral("postDropped"));
+    m_postDropped->setWordWrap(true);
+    m_postDropped->hide();
+    slotLayout->addWidget(m_postDropped);
+    m_postProperties = new PostPropertiesForm;
+    slotLayout->addWidget(m_postProperties);
     layout->addWidget(m_postPropertiesSlot);
+    connect(m_postProperties, &PostPropertiesForm::changed, this,
+            [this] { m_setup.postProperties = m_postProperties->values(); });
     connect(m_post, &QComboBox::currentIndexChanged, this, [this] {
         if (!m_showing)
-            m_setup.postId = m_post->currentText().toStdString();
+            switchPostTo(m_post->currentIndex());
         filterPosts();
     });
     return widget;
@@ -456,10 +467,35 @@ void JobSetupPanel::showValues()
     showVec3(m_origin, m_setup.origin);
     m_workOffset->setCurrentIndex(std::max(0, m_workOffset->findData(m_setup.workOffset)));
     m_machine->setCurrentIndex(m_setup.machineId.empty() ? 0 : std::max(0, m_machine->findText(qs(m_setup.machineId))));
-    m_post->setCurrentIndex(std::max(0, m_post->findText(qs(m_setup.postId))));
+    const int postIndex = std::max(0, m_post->findText(qs(m_setup.postId)));
+    m_post->setCurrentIndex(postIndex);
+    if (postIndex < static_cast<int>(m_postInfos.size()))
+        m_postProperties->setPost(m_postInfos[static_cast<std::size_t>(postIndex)], m_setup.postProperties);
     m_showing = false;
     checkTravels();
     filterPosts();
+}
+
+// The form follows the post chosen; values the new post does not take are dropped, and listed.
+void JobSetupPanel::switchPostTo(int index)
+{
+    if (index < 0 || index >= static_cast<int>(m_postInfos.size()))
+        return;
+    const post::PostInfo& to = m_postInfos[static_cast<std::size_t>(index)];
+    const post::PostInfo* from = nullptr;
+    for (const post::PostInfo& info : m_postInfos)
+        if (info.id == m_setup.postId)
+            from = &info;
+    const post::PostSwitch moved = post::switchPost(m_setup.postProperties, from ? *from : post::PostInfo{}, to);
+    m_setup.postId = to.id;
+    m_setup.postProperties = moved.kept;
+    QStringList dropped;
+    for (const post::DroppedProperty& property : moved.dropped)
+        dropped << tr("%1 = %2 (%3)").arg(qs(property.name), qs(property.value), qs(property.reason));
+    m_postDropped->setText(dropped.isEmpty() ? QString()
+                                             : tr("Dropped with the change of post:\n%1").arg(dropped.join('\n')));
+    m_postDropped->setVisible(!dropped.isEmpty());
+    m_postProperties->setPost(to, m_setup.postProperties);
 }
 
 // Posts that name the machines they post for and not the chosen one are greyed out; the chosen
@@ -505,7 +541,8 @@ bool JobSetupPanel::hasUnappliedChanges() const
     const document::Job& a = m_setup;
     const document::Job& b = m_original;
     return !(a.stock == b.stock && a.origin == b.origin && a.workOffset == b.workOffset && a.machineId == b.machineId &&
-             a.postId == b.postId && a.outputName == b.outputName && a.outputFolder == b.outputFolder);
+             a.postId == b.postId && a.postProperties == b.postProperties && a.outputName == b.outputName &&
+             a.outputFolder == b.outputFolder);
 }
 
 bool JobSetupPanel::accept()

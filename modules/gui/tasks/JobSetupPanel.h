@@ -1,7 +1,7 @@
 // The job setup task panel (docked like the operations' panels): the job's model (Import), stock
 // (box from the model's bounds with offsets, explicit box, or cylinder), work coordinate system
 // (origin on a stock corner/centre, Z0 on a face picked in the view, or typed; G54…G59), machine (its travels checked
-// against the stock), post (with a slot for the post properties form), and the NC output's name and folder. It edits a
+// against the stock), post and its properties (PostPropertiesForm), and the NC output's name and folder. It edits a
 // copy of the job; OK applies it as one undoable step, Cancel changes nothing.
 #pragma once
 
@@ -23,6 +23,7 @@ class QLineEdit;
 
 namespace camwb::gui {
 
+class PostPropertiesForm;
 class TaskOverlay;
 class Workbench;
 
@@ -34,9 +35,8 @@ public:
 
     // The job as OK would make it (only its setup fields differ from the Workbench's job).
     const document::Job& setup() const { return m_setup; }
-    // Where another panel part (the post properties form) puts its widgets: an empty QWidget
-    // with a QVBoxLayout, objectName "postPropertiesSlot".
-    QWidget* postPropertiesSlot() const { return m_postPropertiesSlot; }
+    // The post's properties form (the same as Post Settings'), inside "postPropertiesSlot".
+    PostPropertiesForm* postProperties() const { return m_postProperties; }
 
     bool accept();  // OK: applies (one undo step, none when nothing changed) and closes
     void reject();  // Cancel: changes nothing and closes
@@ -67,6 +67,7 @@ private:
     void showValues();  // writes m_setup into the fields (signals blocked)
     void checkTravels();
     void originOnPickedFace();
+    void switchPostTo(int index);
     void filterPosts();
     void finish();
 
@@ -95,6 +96,8 @@ private:
     std::vector<post::PostInfo> m_postInfos;             // by m_post's index
     std::optional<kinematics::Machine> m_chosenMachine;  // the machine chosen (none: the post's default)
     QWidget* m_postPropertiesSlot = nullptr;
+    QLabel* m_postDropped = nullptr;
+    PostPropertiesForm* m_postProperties = nullptr;
     QLineEdit* m_outputName = nullptr;
     QLineEdit* m_outputFolder = nullptr;
 };

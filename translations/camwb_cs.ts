@@ -2,6 +2,21 @@
 <!DOCTYPE TS>
 <TS version="2.1" language="cs_CZ">
 <context>
+    <name>JobSetupActions</name>
+    <message>
+        <source>Job &amp;Setup…</source>
+        <translation>&amp;Nastavení úlohy…</translation>
+    </message>
+    <message>
+        <source>&amp;Job</source>
+        <translation>Ú&amp;loha</translation>
+    </message>
+    <message>
+        <source>Model, stock, work coordinates, machine, post and output</source>
+        <translation>Model, polotovar, souřadnice obrobku, stroj, postprocesor a výstup</translation>
+    </message>
+</context>
+<context>
     <name>NcEditorActions</name>
     <message>
         <source>Removed %1 block number(s)</source>
@@ -164,6 +179,83 @@
     </message>
 </context>
 <context>
+    <name>PostSettingsActions</name>
+    <message>
+        <source>Post &amp;&amp; &amp;Properties…</source>
+        <translation>Postprocesor a &amp;vlastnosti…</translation>
+    </message>
+    <message>
+        <source>&amp;Job</source>
+        <translation>Ú&amp;loha</translation>
+    </message>
+    <message>
+        <source>Choose the job&apos;s post and set its properties</source>
+        <translation>Zvolit postprocesor úlohy a nastavit jeho vlastnosti</translation>
+    </message>
+</context>
+<context>
+    <name>QObject</name>
+    <message>
+        <source>Go to &amp;Job Tree</source>
+        <translation>Přejít na strom ú&amp;lohy</translation>
+    </message>
+    <message>
+        <source>Go to Tas&amp;k Panel</source>
+        <translation>Přejít na panel ú&amp;kolu</translation>
+    </message>
+    <message>
+        <source>No task panel is open.</source>
+        <translation>Není otevřen žádný panel úkolu.</translation>
+    </message>
+    <message>
+        <source>Go to &amp;NC Program</source>
+        <translation>Přejít na &amp;NC program</translation>
+    </message>
+    <message>
+        <source>Go to Re&amp;port</source>
+        <translation>Přejít na pr&amp;otokol</translation>
+    </message>
+    <message>
+        <source>Go to 3D &amp;View</source>
+        <translation>Přejít na &amp;3D pohled</translation>
+    </message>
+    <message>
+        <source>%1 (not found)</source>
+        <translation>%1 (nenalezeno)</translation>
+    </message>
+</context>
+<context>
+    <name>SetupSheetActions</name>
+    <message>
+        <source>Setup &amp;Sheet…</source>
+        <translation>&amp;Seřizovací list…</translation>
+    </message>
+    <message>
+        <source>Write the setup sheet of the job for the operator: HTML and PDF</source>
+        <translation>Vytvořit seřizovací list úlohy pro obsluhu stroje: HTML a PDF</translation>
+    </message>
+    <message>
+        <source>Save setup sheet</source>
+        <translation>Uložit seřizovací list</translation>
+    </message>
+    <message>
+        <source>Setup sheets (*.html);;All files (*)</source>
+        <translation>Seřizovací listy (*.html);;Všechny soubory (*)</translation>
+    </message>
+    <message>
+        <source>Setup sheet</source>
+        <translation>Seřizovací list</translation>
+    </message>
+    <message>
+        <source>The setup sheet was not written: %1</source>
+        <translation>Seřizovací list nebyl zapsán: %1</translation>
+    </message>
+    <message>
+        <source>Setup sheet written: %1</source>
+        <translation>Zapsán seřizovací list: %1</translation>
+    </message>
+</context>
+<context>
     <name>SimulationRequest</name>
     <message>
         <source>Nothing to simulate yet: the NC program is being traced (or none is open).</source>
@@ -207,6 +299,36 @@
     <message>
         <source>Move the playback to the first run of the line given beside the button</source>
         <translation>Přesunout přehrávání na první provedení řádku zadaného vedle tlačítka</translation>
+    </message>
+</context>
+<context>
+    <name>ToolActions</name>
+    <message>
+        <source>&amp;Tools</source>
+        <translation>Nás&amp;troje</translation>
+    </message>
+    <message>
+        <source>Tool &amp;Library…</source>
+        <translation>&amp;Knihovna nástrojů…</translation>
+    </message>
+    <message>
+        <source>The tool library: add its tools to the job, import, export</source>
+        <translation>Knihovna nástrojů: přidat její nástroje do úlohy, import, export</translation>
+    </message>
+    <message>
+        <source>Compute &amp;Feeds and Speeds</source>
+        <translation>&amp;Vypočítat řezné podmínky</translation>
+    </message>
+    <message>
+        <source>Set the job&apos;s tools&apos; spindle speed and feeds from their cutting data and the job&apos;s stock material</source>
+        <translation>Nastavit otáčky vřetena a posuvy nástrojů úlohy podle jejich řezných dat a materiálu polotovaru úlohy</translation>
+    </message>
+</context>
+<context>
+    <name>camwb::gui::Autosaver</name>
+    <message>
+        <source>Autosave failed: %1</source>
+        <translation>Automatické uložení selhalo: %1</translation>
     </message>
 </context>
 <context>
@@ -417,6 +539,33 @@
     <message>
         <source>Tolerance</source>
         <translation>Tolerance</translation>
+    </message>
+</context>
+<context>
+    <name>camwb::gui::CuttingDataModel</name>
+    <message>
+        <source>aluminium</source>
+        <translation>hliník</translation>
+    </message>
+    <message>
+        <source>Material</source>
+        <translation>Materiál</translation>
+    </message>
+    <message>
+        <source>vc (m/min)</source>
+        <translation>vc (m/min)</translation>
+    </message>
+    <message>
+        <source>fz (mm/tooth)</source>
+        <translation>fz (mm/zub)</translation>
+    </message>
+    <message>
+        <source>Plunge (× feed)</source>
+        <translation>Zanoření (× posuv)</translation>
+    </message>
+    <message>
+        <source>Ramp (× feed)</source>
+        <translation>Rampa (× posuv)</translation>
     </message>
 </context>
 <context>
@@ -723,6 +872,244 @@
     </message>
 </context>
 <context>
+    <name>camwb::gui::JobSetupPanel</name>
+    <message>
+        <source>Job setup</source>
+        <translation>Nastavení úlohy</translation>
+    </message>
+    <message>
+        <source>Model</source>
+        <translation>Model</translation>
+    </message>
+    <message>
+        <source>Stock</source>
+        <translation>Polotovar</translation>
+    </message>
+    <message>
+        <source>Work coordinate system</source>
+        <translation>Souřadný systém obrobku</translation>
+    </message>
+    <message>
+        <source>Machine</source>
+        <translation>Stroj</translation>
+    </message>
+    <message>
+        <source>Post</source>
+        <translation>Postprocesor</translation>
+    </message>
+    <message>
+        <source>Output</source>
+        <translation>Výstup</translation>
+    </message>
+    <message>
+        <source>No model</source>
+        <translation>Žádný model</translation>
+    </message>
+    <message>
+        <source>mm</source>
+        <translation>mm</translation>
+    </message>
+    <message>
+        <source>Import…</source>
+        <translation>Importovat…</translation>
+    </message>
+    <message>
+        <source>Import a STEP, IGES, BREP or STL model as the job&apos;s model</source>
+        <translation>Importovat model STEP, IGES, BREP nebo STL jako model úlohy</translation>
+    </message>
+    <message>
+        <source>Box</source>
+        <translation>Kvádr</translation>
+    </message>
+    <message>
+        <source>Cylinder (along Z)</source>
+        <translation>Válec (v ose Z)</translation>
+    </message>
+    <message>
+        <source>Shape</source>
+        <translation>Tvar</translation>
+    </message>
+    <message>
+        <source>Model bounds + offsets</source>
+        <translation>Obálka modelu + přídavky</translation>
+    </message>
+    <message>
+        <source>Explicit size</source>
+        <translation>Zadané rozměry</translation>
+    </message>
+    <message>
+        <source>Size</source>
+        <translation>Rozměry</translation>
+    </message>
+    <message>
+        <source>Below min (mm)</source>
+        <translation>Pod minimem (mm)</translation>
+    </message>
+    <message>
+        <source>Above max (mm)</source>
+        <translation>Nad maximem (mm)</translation>
+    </message>
+    <message>
+        <source>Min (mm)</source>
+        <translation>Min (mm)</translation>
+    </message>
+    <message>
+        <source>Max (mm)</source>
+        <translation>Max (mm)</translation>
+    </message>
+    <message>
+        <source>Typed (model coordinates)</source>
+        <translation>Zadaný (souřadnice modelu)</translation>
+    </message>
+    <message>
+        <source>Stock: top front left corner</source>
+        <translation>Polotovar: horní přední levý roh</translation>
+    </message>
+    <message>
+        <source>Stock: bottom front left corner</source>
+        <translation>Polotovar: spodní přední levý roh</translation>
+    </message>
+    <message>
+        <source>Stock: top centre</source>
+        <translation>Polotovar: střed horní plochy</translation>
+    </message>
+    <message>
+        <source>Stock: centre</source>
+        <translation>Polotovar: střed</translation>
+    </message>
+    <message>
+        <source>Stock: bottom centre</source>
+        <translation>Polotovar: střed spodní plochy</translation>
+    </message>
+    <message>
+        <source>Z0 on the face picked in the view</source>
+        <translation>Z0 na ploše vybrané v pohledu</translation>
+    </message>
+    <message>
+        <source>Program zero: a point of the stock (it follows the stock), or typed</source>
+        <translation>Nulový bod programu: bod polotovaru (posouvá se s polotovarem), nebo zadaný ručně</translation>
+    </message>
+    <message>
+        <source>Origin at</source>
+        <translation>Počátek v</translation>
+    </message>
+    <message>
+        <source>Origin</source>
+        <translation>Počátek</translation>
+    </message>
+    <message>
+        <source>Offset %1</source>
+        <translation>Nulový bod %1</translation>
+    </message>
+    <message>
+        <source>Work offset</source>
+        <translation>Nulový bod obrobku</translation>
+    </message>
+    <message>
+        <source>The post&apos;s default machine</source>
+        <translation>Výchozí stroj postprocesoru</translation>
+    </message>
+    <message>
+        <source>the job file&apos;s name</source>
+        <translation>název souboru úlohy</translation>
+    </message>
+    <message>
+        <source>The NC program&apos;s file name; the post&apos;s extension is added when it has none</source>
+        <translation>Název souboru NC programu; přípona postprocesoru se přidá, pokud žádnou nemá</translation>
+    </message>
+    <message>
+        <source>the job file&apos;s folder</source>
+        <translation>složka souboru úlohy</translation>
+    </message>
+    <message>
+        <source>Relative to the job file&apos;s folder, or absolute</source>
+        <translation>Relativně ke složce souboru úlohy, nebo absolutně</translation>
+    </message>
+    <message>
+        <source>File name</source>
+        <translation>Název souboru</translation>
+    </message>
+    <message>
+        <source>Folder</source>
+        <translation>Složka</translation>
+    </message>
+    <message>
+        <source>Z0 on face %1</source>
+        <translation>Z0 na ploše %1</translation>
+    </message>
+    <message>
+        <source>Pick a flat horizontal face of the model in the 3D view.</source>
+        <translation>Vyberte ve 3D pohledu rovinnou vodorovnou plochu modelu.</translation>
+    </message>
+    <message>
+        <source>Ø%1 × %2 mm, from Z %3 to %4</source>
+        <translation>Ø%1 × %2 mm, od Z %3 do %4</translation>
+    </message>
+    <message>
+        <source>%1 × %2 × %3 mm, from (%4, %5, %6)</source>
+        <translation>%1 × %2 × %3 mm, od (%4, %5, %6)</translation>
+    </message>
+    <message>
+        <source>%1 = %2 (%3)</source>
+        <translation>%1 = %2 (%3)</translation>
+    </message>
+    <message>
+        <source>Dropped with the change of post:
+%1</source>
+        <translation>Vypuštěno při změně postprocesoru:
+%1</translation>
+    </message>
+    <message>
+        <source>%1 does not post for the machine %2.</source>
+        <translation>%1 nepostprocesuje pro stroj %2.</translation>
+    </message>
+    <message>
+        <source>The stock does not fit the machine&apos;s travels:
+%1</source>
+        <translation>Polotovar se nevejde do pojezdů stroje:
+%1</translation>
+    </message>
+</context>
+<context>
+    <name>camwb::gui::JobToolsModel</name>
+    <message>
+        <source>T</source>
+        <translation>T</translation>
+    </message>
+    <message>
+        <source>Name</source>
+        <translation>Název</translation>
+    </message>
+    <message>
+        <source>D (mm)</source>
+        <translation>D (mm)</translation>
+    </message>
+    <message>
+        <source>Flutes</source>
+        <translation>Břity</translation>
+    </message>
+    <message>
+        <source>Spindle (rpm)</source>
+        <translation>Vřeteno (ot/min)</translation>
+    </message>
+    <message>
+        <source>Feed (mm/min)</source>
+        <translation>Posuv (mm/min)</translation>
+    </message>
+    <message>
+        <source>Plunge (mm/min)</source>
+        <translation>Zanoření (mm/min)</translation>
+    </message>
+    <message>
+        <source>Ramp (mm/min)</source>
+        <translation>Rampa (mm/min)</translation>
+    </message>
+    <message>
+        <source>Cutting data for</source>
+        <translation>Řezná data pro</translation>
+    </message>
+</context>
+<context>
     <name>camwb::gui::JobTree</name>
     <message>
         <source>Item</source>
@@ -773,10 +1160,6 @@
         <translation>Nástroje</translation>
     </message>
     <message>
-        <source>%1, Ø%2 mm, S%3, F%4</source>
-        <translation>%1, Ø%2 mm, S%3, F%4</translation>
-    </message>
-    <message>
         <source>Operations</source>
         <translation>Operace</translation>
     </message>
@@ -797,16 +1180,80 @@
         <translation>bez geometrie</translation>
     </message>
     <message>
-        <source>%1, T%2, %3</source>
-        <translation>%1, T%2, %3</translation>
-    </message>
-    <message>
         <source>Error</source>
         <translation>Chyba</translation>
     </message>
     <message>
         <source>not loaded: %1</source>
         <translation>nenačteno: %1</translation>
+    </message>
+    <message>
+        <source>box %1 × %2 × %3 mm</source>
+        <translation>kvádr %1 × %2 × %3 mm</translation>
+    </message>
+    <message>
+        <source>(not posted yet)</source>
+        <translation>(zatím nepostprocesováno)</translation>
+    </message>
+    <message>
+        <source>Machine</source>
+        <translation>Stroj</translation>
+    </message>
+    <message>
+        <source>post default: %1</source>
+        <translation>výchozí dle postprocesoru: %1</translation>
+    </message>
+    <message>
+        <source>%1, Ø%2 mm</source>
+        <translation>%1, Ø%2 mm</translation>
+    </message>
+    <message>
+        <source>, holder %1</source>
+        <translation>, držák %1</translation>
+    </message>
+    <message>
+        <source>S%1, F%2 mm/min</source>
+        <translation>S%1, F%2 mm/min</translation>
+    </message>
+    <message>
+        <source>(disabled)</source>
+        <translation>(vypnuto)</translation>
+    </message>
+    <message>
+        <source>Posted; uncheck to leave it out of the program</source>
+        <translation>Postprocesuje se; zrušením zaškrtnutí se vynechá z programu</translation>
+    </message>
+    <message>
+        <source>Disabled: not computed and not posted</source>
+        <translation>Vypnuto: nepočítá se ani nepostprocesuje</translation>
+    </message>
+    <message>
+        <source>T%1 %2, Ø%3 mm</source>
+        <translation>T%1 %2, Ø%3 mm</translation>
+    </message>
+    <message>
+        <source>Disa&amp;ble Operation</source>
+        <translation>Vypnou&amp;t operaci</translation>
+    </message>
+    <message>
+        <source>D&amp;uplicate Operation</source>
+        <translation>&amp;Duplikovat operaci</translation>
+    </message>
+    <message>
+        <source>&amp;Rename Operation</source>
+        <translation>Přej&amp;menovat operaci</translation>
+    </message>
+    <message>
+        <source>Move Operation &amp;Up</source>
+        <translation>Posunout operaci &amp;nahoru</translation>
+    </message>
+    <message>
+        <source>Move Operation Do&amp;wn</source>
+        <translation>Posunout operaci do&amp;lů</translation>
+    </message>
+    <message>
+        <source>&amp;Enable Operation</source>
+        <translation>Zapnou&amp;t operaci</translation>
     </message>
 </context>
 <context>
@@ -1166,6 +1613,14 @@ Pracoviště pro CAM a postprocesory.</translation>
     <message>
         <source>Simulator</source>
         <translation>Simulátor</translation>
+    </message>
+    <message>
+        <source>Task: Job setup</source>
+        <translation>Úkol: Nastavení úlohy</translation>
+    </message>
+    <message>
+        <source>The job setup panel has changes that are not applied.</source>
+        <translation>Panel nastavení úlohy obsahuje změny, které nebyly použity.</translation>
     </message>
 </context>
 <context>
@@ -1688,6 +2143,159 @@ Nejprve je uložit?</translation>
     </message>
 </context>
 <context>
+    <name>camwb::gui::PostPropertiesForm</name>
+    <message>
+        <source>This post has no properties.</source>
+        <translation>Tento postprocesor nemá žádné vlastnosti.</translation>
+    </message>
+    <message>
+        <source>&lt;b&gt;Defaults for operations&lt;/b&gt; (an operation may set its own)</source>
+        <translation>&lt;b&gt;Výchozí hodnoty pro operace&lt;/b&gt; (operace může nastavit vlastní)</translation>
+    </message>
+    <message>
+        <source>(empty)</source>
+        <translation>(prázdné)</translation>
+    </message>
+    <message>
+        <source>(default: %1)</source>
+        <translation>(výchozí: %1)</translation>
+    </message>
+    <message>
+        <source>Reset</source>
+        <translation>Obnovit</translation>
+    </message>
+    <message>
+        <source>Reset %1 to its default, %2</source>
+        <translation>Vrátit %1 na výchozí hodnotu, %2</translation>
+    </message>
+</context>
+<context>
+    <name>camwb::gui::PostSettingsPanel</name>
+    <message>
+        <source>Post and Properties</source>
+        <translation>Postprocesor a vlastnosti</translation>
+    </message>
+    <message>
+        <source>Machine:</source>
+        <translation>Stroj:</translation>
+    </message>
+    <message>
+        <source>&amp;Post:</source>
+        <translation>&amp;Postprocesor:</translation>
+    </message>
+    <message>
+        <source>Show &amp;all posts, not only those for the job&apos;s machine</source>
+        <translation>Zobrazit &amp;všechny postprocesory, nejen ty pro stroj úlohy</translation>
+    </message>
+    <message>
+        <source>The job&apos;s post %1 cannot be loaded: choose another.</source>
+        <translation>Postprocesor úlohy %1 nelze načíst: zvolte jiný.</translation>
+    </message>
+    <message>
+        <source> (not for this machine)</source>
+        <translation> (ne pro tento stroj)</translation>
+    </message>
+    <message>
+        <source>%1 = %2 is dropped: %3</source>
+        <translation>%1 = %2 je vypuštěno: %3</translation>
+    </message>
+    <message>
+        <source>none (the post&apos;s machine limits are not checked)</source>
+        <translation>žádný (limity stroje postprocesoru se nekontrolují)</translation>
+    </message>
+    <message>
+        <source> (control %1)</source>
+        <translation> (řídicí systém %1)</translation>
+    </message>
+    <message>
+        <source> (the post&apos;s default machine)</source>
+        <translation> (výchozí stroj postprocesoru)</translation>
+    </message>
+</context>
+<context>
+    <name>camwb::gui::PreferencesDialog</name>
+    <message>
+        <source>The language changes when CAM Workbench is started again.</source>
+        <translation>Jazyk se změní po novém spuštění CAM Workbench.</translation>
+    </message>
+    <message>
+        <source>Preferences</source>
+        <translation>Předvolby</translation>
+    </message>
+    <message>
+        <source>Millimetres (mm)</source>
+        <translation>Milimetry (mm)</translation>
+    </message>
+    <message>
+        <source>Inches (in)</source>
+        <translation>Palce (in)</translation>
+    </message>
+    <message>
+        <source>How lengths are shown. Jobs and NC programs keep their own units.</source>
+        <translation>Jak se zobrazují délky. Úlohy a NC programy si ponechávají vlastní jednotky.</translation>
+    </message>
+    <message>
+        <source>The library in the user&apos;s data folder</source>
+        <translation>Knihovna ve složce uživatelských dat</translation>
+    </message>
+    <message>
+        <source>System</source>
+        <translation>Systém</translation>
+    </message>
+    <message>
+        <source> s</source>
+        <translation> s</translation>
+    </message>
+    <message>
+        <source>How often unsaved changes are written to a side file for recovery after a crash.</source>
+        <translation>Jak často se neuložené změny zapisují do vedlejšího souboru pro obnovu po pádu.</translation>
+    </message>
+    <message>
+        <source>&amp;Display units:</source>
+        <translation>&amp;Jednotky zobrazení:</translation>
+    </message>
+    <message>
+        <source>Default &amp;post:</source>
+        <translation>Výchozí &amp;postprocesor:</translation>
+    </message>
+    <message>
+        <source>Default &amp;machine:</source>
+        <translation>Výchozí &amp;stroj:</translation>
+    </message>
+    <message>
+        <source>&amp;Tool library:</source>
+        <translation>&amp;Knihovna nástrojů:</translation>
+    </message>
+    <message>
+        <source>&amp;Language:</source>
+        <translation>Ja&amp;zyk:</translation>
+    </message>
+    <message>
+        <source>&amp;Autosave every:</source>
+        <translation>&amp;Automaticky ukládat každých:</translation>
+    </message>
+    <message>
+        <source>&amp;Browse…</source>
+        <translation>Pro&amp;cházet…</translation>
+    </message>
+    <message>
+        <source>Tool library</source>
+        <translation>Knihovna nástrojů</translation>
+    </message>
+    <message>
+        <source>Tool libraries (*.json);;All files (*)</source>
+        <translation>Knihovny nástrojů (*.json);;Všechny soubory (*)</translation>
+    </message>
+    <message>
+        <source>(the built-in default)</source>
+        <translation>(vestavěná výchozí)</translation>
+    </message>
+    <message>
+        <source>(the post&apos;s default machine)</source>
+        <translation>(výchozí stroj postprocesoru)</translation>
+    </message>
+</context>
+<context>
     <name>camwb::gui::ProgramInfoDialog</name>
     <message>
         <source>%1 s</source>
@@ -1835,6 +2443,21 @@ Nejprve je uložit?</translation>
     </message>
 </context>
 <context>
+    <name>camwb::gui::RecentFiles</name>
+    <message>
+        <source>%1 (missing)</source>
+        <translation>%1 (chybí)</translation>
+    </message>
+    <message>
+        <source>No recent files</source>
+        <translation>Žádné nedávné soubory</translation>
+    </message>
+    <message>
+        <source>&amp;Clear Recent Files</source>
+        <translation>&amp;Vymazat nedávné soubory</translation>
+    </message>
+</context>
+<context>
     <name>camwb::gui::RenumberDialog</name>
     <message>
         <source>Renumber Blocks</source>
@@ -1882,6 +2505,85 @@ Nejprve je uložit?</translation>
     <message>
         <source>error: </source>
         <translation>chyba: </translation>
+    </message>
+</context>
+<context>
+    <name>camwb::gui::Session</name>
+    <message>
+        <source>&amp;New Job</source>
+        <translation>&amp;Nová úloha</translation>
+    </message>
+    <message>
+        <source>Open &amp;Recent</source>
+        <translation>Otevřít ne&amp;dávné</translation>
+    </message>
+    <message>
+        <source>&amp;Preferences…</source>
+        <translation>&amp;Předvolby…</translation>
+    </message>
+    <message>
+        <source>An untitled job has changes that were autosaved on %1 and never saved: CAM Workbench may have stopped. Recover them?</source>
+        <translation>Nepojmenovaná úloha má změny, které byly automaticky uloženy %1 a nikdy nebyly uloženy: CAM Workbench se mohl neočekávaně ukončit. Obnovit je?</translation>
+    </message>
+    <message>
+        <source>The job %1 has changes that were autosaved on %2 and not saved: CAM Workbench may have stopped. Recover them?</source>
+        <translation>Úloha %1 má změny, které byly automaticky uloženy %2 a nebyly uloženy: CAM Workbench se mohl neočekávaně ukončit. Obnovit je?</translation>
+    </message>
+    <message>
+        <source>Recover unsaved changes</source>
+        <translation>Obnovit neuložené změny</translation>
+    </message>
+    <message>
+        <source>Recover</source>
+        <translation>Obnovit</translation>
+    </message>
+    <message>
+        <source>Discard</source>
+        <translation>Zahodit</translation>
+    </message>
+    <message>
+        <source>Discarded the autosaved changes %1</source>
+        <translation>Zahozeny automaticky uložené změny %1</translation>
+    </message>
+    <message>
+        <source>The autosaved changes cannot be read: %1
+The file is kept as %2.</source>
+        <translation>Automaticky uložené změny nelze načíst: %1
+Soubor je ponechán jako %2.</translation>
+    </message>
+    <message>
+        <source>
+The job %1 is opened as it was saved.</source>
+        <translation>
+Úloha %1 je otevřena tak, jak byla uložena.</translation>
+    </message>
+    <message>
+        <source>Recover Autosaved Changes</source>
+        <translation>Obnovit automaticky uložené změny</translation>
+    </message>
+    <message>
+        <source>Recovered the autosaved changes %1</source>
+        <translation>Obnoveny automaticky uložené změny %1</translation>
+    </message>
+    <message>
+        <source>A new job replaces them with its program.</source>
+        <translation>Nová úloha je nahradí svým programem.</translation>
+    </message>
+    <message>
+        <source>New job</source>
+        <translation>Nová úloha</translation>
+    </message>
+    <message>
+        <source>Open Recent</source>
+        <translation>Otevřít nedávné</translation>
+    </message>
+    <message>
+        <source>%1 does not exist any more; it is removed from the recent files.</source>
+        <translation>%1 již neexistuje; je odstraněn ze seznamu nedávných souborů.</translation>
+    </message>
+    <message>
+        <source>The language changes when CAM Workbench is started again.</source>
+        <translation>Jazyk se změní po novém spuštění CAM Workbench.</translation>
     </message>
 </context>
 <context>
@@ -2061,6 +2763,216 @@ Nejprve je uložit?</translation>
     </message>
 </context>
 <context>
+    <name>camwb::gui::ToolLibraryDialog</name>
+    <message>
+        <source>Tool Library</source>
+        <translation>Knihovna nástrojů</translation>
+    </message>
+    <message>
+        <source>Tool library</source>
+        <translation>Knihovna nástrojů</translation>
+    </message>
+    <message>
+        <source>The tool library cannot be read, so it is shown empty and will not be saved over (the file is left as it is; use Export to save tools elsewhere):
+%1</source>
+        <translation>Knihovnu nástrojů nelze načíst, proto se zobrazí prázdná a nebude přepsána (soubor zůstane beze změny; k uložení nástrojů jinam použijte Exportovat):
+%1</translation>
+    </message>
+    <message>
+        <source>The default tool library cannot be read:
+%1</source>
+        <translation>Výchozí knihovnu nástrojů nelze načíst:
+%1</translation>
+    </message>
+    <message>
+        <source>Filter tools by name, kind or holder</source>
+        <translation>Filtrovat nástroje podle názvu, druhu nebo držáku</translation>
+    </message>
+    <message>
+        <source>Cutting data of the current library tool</source>
+        <translation>Řezná data aktuálního nástroje knihovny</translation>
+    </message>
+    <message>
+        <source>Add Material</source>
+        <translation>Přidat materiál</translation>
+    </message>
+    <message>
+        <source>Remove Material</source>
+        <translation>Odebrat materiál</translation>
+    </message>
+    <message>
+        <source>Library</source>
+        <translation>Knihovna</translation>
+    </message>
+    <message>
+        <source>Job Tools</source>
+        <translation>Nástroje úlohy</translation>
+    </message>
+    <message>
+        <source>&amp;Add</source>
+        <translation>&amp;Přidat</translation>
+    </message>
+    <message>
+        <source>D&amp;uplicate</source>
+        <translation>&amp;Duplikovat</translation>
+    </message>
+    <message>
+        <source>&amp;Delete</source>
+        <translation>&amp;Smazat</translation>
+    </message>
+    <message>
+        <source>&amp;Import…</source>
+        <translation>&amp;Importovat…</translation>
+    </message>
+    <message>
+        <source>&amp;Export…</source>
+        <translation>&amp;Exportovat…</translation>
+    </message>
+    <message>
+        <source>Add to &amp;Job</source>
+        <translation>Přidat do ú&amp;lohy</translation>
+    </message>
+    <message>
+        <source>Copy the selected tools into the job (a taken number gets the next free one)</source>
+        <translation>Zkopírovat vybrané nástroje do úlohy (obsazené číslo dostane další volné)</translation>
+    </message>
+    <message>
+        <source>Job stock material:</source>
+        <translation>Materiál polotovaru úlohy:</translation>
+    </message>
+    <message>
+        <source>The material the job&apos;s tools&apos; feeds and speeds are computed for</source>
+        <translation>Materiál, pro který se počítají posuvy a otáčky nástrojů úlohy</translation>
+    </message>
+    <message>
+        <source>&amp;Compute Feeds and Speeds</source>
+        <translation>&amp;Vypočítat řezné podmínky</translation>
+    </message>
+    <message>
+        <source>Set the job&apos;s tools&apos; spindle speed and feeds from their cutting data</source>
+        <translation>Nastavit otáčky vřetena a posuvy nástrojů úlohy podle jejich řezných dat</translation>
+    </message>
+    <message>
+        <source>&amp;Save</source>
+        <translation>&amp;Uložit</translation>
+    </message>
+    <message>
+        <source>Close</source>
+        <translation>Zavřít</translation>
+    </message>
+    <message>
+        <source>Library: %1</source>
+        <translation>Knihovna: %1</translation>
+    </message>
+    <message>
+        <source>Import tools</source>
+        <translation>Importovat nástroje</translation>
+    </message>
+    <message>
+        <source>Tool libraries (*.fctl *.tools *.json);;FreeCAD ToolBit libraries (*.fctl);;Fusion 360 tool libraries (*.tools *.json)</source>
+        <translation>Knihovny nástrojů (*.fctl *.tools *.json);;Knihovny ToolBit FreeCAD (*.fctl);;Knihovny nástrojů Fusion 360 (*.tools *.json)</translation>
+    </message>
+    <message>
+        <source>Export tools</source>
+        <translation>Exportovat nástroje</translation>
+    </message>
+    <message>
+        <source>CAM Workbench tool libraries (*.json)</source>
+        <translation>Knihovny nástrojů CAM Workbench (*.json)</translation>
+    </message>
+    <message>
+        <source>New end mill D6</source>
+        <translation>Nová stopková fréza D6</translation>
+    </message>
+    <message>
+        <source> (copy)</source>
+        <translation> (kopie)</translation>
+    </message>
+    <message numerus="yes">
+        <source>Imported %n tool(s) from %1.</source>
+        <translation>
+            <numerusform>Importován %n nástroj z %1.</numerusform>
+            <numerusform>Importovány %n nástroje z %1.</numerusform>
+            <numerusform>Importováno %n nástrojů z %1.</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>Exported %n tool(s) to %1.</source>
+        <translation>
+            <numerusform>Exportován %n nástroj do %1.</numerusform>
+            <numerusform>Exportovány %n nástroje do %1.</numerusform>
+            <numerusform>Exportováno %n nástrojů do %1.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Select the tools to add to the job.</source>
+        <translation>Vyberte nástroje, které se mají přidat do úlohy.</translation>
+    </message>
+    <message numerus="yes">
+        <source>Added %n tool(s) to the job.</source>
+        <translation>
+            <numerusform>Do úlohy přidán %n nástroj.</numerusform>
+            <numerusform>Do úlohy přidány %n nástroje.</numerusform>
+            <numerusform>Do úlohy přidáno %n nástrojů.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Save tool library</source>
+        <translation>Uložit knihovnu nástrojů</translation>
+    </message>
+    <message>
+        <source>Saved %1.</source>
+        <translation>Uloženo %1.</translation>
+    </message>
+    <message>
+        <source>Save the changes to the tool library?</source>
+        <translation>Uložit změny v knihovně nástrojů?</translation>
+    </message>
+</context>
+<context>
+    <name>camwb::gui::ToolTableModel</name>
+    <message>
+        <source>T</source>
+        <translation>T</translation>
+    </message>
+    <message>
+        <source>Name</source>
+        <translation>Název</translation>
+    </message>
+    <message>
+        <source>Kind</source>
+        <translation>Druh</translation>
+    </message>
+    <message>
+        <source>D (mm)</source>
+        <translation>D (mm)</translation>
+    </message>
+    <message>
+        <source>R (mm)</source>
+        <translation>R (mm)</translation>
+    </message>
+    <message>
+        <source>Flute (mm)</source>
+        <translation>Délka břitu (mm)</translation>
+    </message>
+    <message>
+        <source>Length (mm)</source>
+        <translation>Délka (mm)</translation>
+    </message>
+    <message>
+        <source>Flutes</source>
+        <translation>Břity</translation>
+    </message>
+    <message>
+        <source>Point (°)</source>
+        <translation>Úhel špičky (°)</translation>
+    </message>
+    <message>
+        <source>Holder</source>
+        <translation>Držák</translation>
+    </message>
+</context>
+<context>
     <name>camwb::gui::View3D</name>
     <message>
         <source>3D view unavailable: %1</source>
@@ -2222,6 +3134,26 @@ Ponechat operace bez nich (zůstanou označené, dokud v jejich panelech úkolu 
     <message>
         <source>The job is being computed; save the NC program when the post has finished.</source>
         <translation>Úloha se počítá; NC program uložte, až postprocesování skončí.</translation>
+    </message>
+    <message>
+        <source>The post %1 cannot be used: %2</source>
+        <translation>Postprocesor %1 nelze použít: %2</translation>
+    </message>
+    <message>
+        <source>Post %1 does not keep property %2 = %3: %4</source>
+        <translation>Postprocesor %1 neponechá vlastnost %2 = %3: %4</translation>
+    </message>
+    <message>
+        <source>Operation %1 loses its property %2 = %3: %4</source>
+        <translation>Operace %1 ztrácí vlastnost %2 = %3: %4</translation>
+    </message>
+    <message>
+        <source>Post %1 does not drive machine %2: the job now uses the post&apos;s default machine%3</source>
+        <translation>Postprocesor %1 neovládá stroj %2: úloha nyní používá výchozí stroj postprocesoru%3</translation>
+    </message>
+    <message>
+        <source>Compute feeds and speeds</source>
+        <translation>Vypočítat řezné podmínky</translation>
     </message>
 </context>
 <context>

@@ -32,7 +32,10 @@ SheetOperation sheetOperation(const Job& job, const Operation& op, const occ::Mo
 {
     SheetOperation out;
     out.name = op.name();
-    out.kind = kindLabel(op.kind());
+    // A disabled operation stays in the list (its number is its place in the job) but says it is
+    // not in the program, so the operator does not look for it on the control.
+    out.kind =
+        op.enabled ? std::string(kindLabel(op.kind())) : std::string(kindLabel(op.kind())) + " (disabled: not posted)";
     out.toolNumber = op.toolNumber;
     if (const ops::ToolController* tc = job.tool(op.toolNumber)) {
         out.spindleRpm = tc->spindleRpm;
@@ -208,7 +211,7 @@ base::Result<SetupSheet> collectSetupSheet(const Job& job, const std::string& jo
         tool.tooShort = tool.stickOutMm && tc.tool.lengthMm > 0 && tc.tool.lengthMm < *tool.stickOutMm;
     }
     for (const Operation& op : job.operations)
-        if (auto it = tools.find(op.toolNumber); it != tools.end())
+        if (auto it = tools.find(op.toolNumber); op.enabled && it != tools.end())
             it->second.operations.push_back(op.name());
     for (auto& [number, tool] : tools)
         sheet.tools.push_back(std::move(tool));

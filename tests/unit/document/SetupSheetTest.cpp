@@ -98,6 +98,17 @@ TEST(SetupSheet, ExampleJobToolsOperationsAndTimes)
     ASSERT_TRUE(shortTool);
     EXPECT_TRUE(shortTool->tools[0].tooShort);
     EXPECT_FALSE(shortTool->tools[1].tooShort);
+
+    // A disabled operation is listed as not posted, takes no time and is not a use of its tool.
+    job.value().operations[1].enabled = false;
+    auto withoutPocket = computeProgram(job.value(), model.value());
+    ASSERT_TRUE(withoutPocket);
+    auto disabled = collectSetupSheet(job.value(), path, model.value(), withoutPocket.value(), options);
+    ASSERT_TRUE(disabled);
+    ASSERT_EQ(disabled->operations.size(), 4u);
+    EXPECT_NE(disabled->operations[1].kind.find("disabled: not posted"), std::string::npos);
+    EXPECT_EQ(disabled->operations[1].seconds, 0);
+    EXPECT_EQ(disabled->tools[1].operations.size(), 1u);
 }
 
 }  // namespace

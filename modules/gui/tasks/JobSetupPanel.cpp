@@ -23,6 +23,7 @@
 #include <QScrollArea>
 #include <QScrollBar>
 #include <QStandardItemModel>
+#include <QTimer>
 #include <QVBoxLayout>
 
 #include <cmath>
@@ -119,8 +120,7 @@ JobSetupPanel::JobSetupPanel(Workbench& workbench, TaskOverlay* overlay, QWidget
     scroll->setWidgetResizable(true);
     scroll->setFrameShape(QFrame::NoFrame);
     scroll->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
-    // The dock grows to the panel's rows instead of cutting them off on the right.
-    scroll->setMinimumWidth(content->minimumSizeHint().width() + scroll->verticalScrollBar()->sizeHint().width());
+    m_scroll = scroll;
     outer->addWidget(scroll, 1);
 
     // A model imported while the panel is open: a "from model" stock follows it.
@@ -131,6 +131,17 @@ JobSetupPanel::JobSetupPanel(Workbench& workbench, TaskOverlay* overlay, QWidget
         showValues();
     });
     showValues();
+}
+
+// The dock grows to the panel's rows (the post's properties included) instead of cutting them off
+// on the right. Queued: the form's rows, just made, give their sizes once the layouts have run.
+void JobSetupPanel::fitWidth() { QTimer::singleShot(0, this, &JobSetupPanel::fitWidthNow); }
+
+void JobSetupPanel::fitWidthNow()
+{
+    QWidget* content = m_scroll->widget();
+    content->ensurePolished();
+    m_scroll->setMinimumWidth(content->minimumSizeHint().width() + m_scroll->verticalScrollBar()->sizeHint().width());
 }
 
 JobSetupPanel::Vec3Fields JobSetupPanel::vec3Fields(const char* objectName, double min, double max)
@@ -326,6 +337,7 @@ QWidget* JobSetupPanel::buildPost()
     m_postDropped->hide();
     slotLayout->addWidget(m_postDropped);
     m_postProperties = new PostPropertiesForm;
+    m_postProperties->setCompact(true);
     slotLayout->addWidget(m_postProperties);
     layout->addWidget(m_postPropertiesSlot);
     connect(m_postProperties, &PostPropertiesForm::changed, this,
@@ -472,6 +484,7 @@ void JobSetupPanel::showValues()
     if (postIndex < static_cast<int>(m_postInfos.size()))
         m_postProperties->setPost(m_postInfos[static_cast<std::size_t>(postIndex)], m_setup.postProperties);
     m_showing = false;
+    fitWidth();
     checkTravels();
     filterPosts();
 }
@@ -496,6 +509,7 @@ void JobSetupPanel::switchPostTo(int index)
                                              : tr("Dropped with the change of post:\n%1").arg(dropped.join('\n')));
     m_postDropped->setVisible(!dropped.isEmpty());
     m_postProperties->setPost(to, m_setup.postProperties);
+    fitWidth();
 }
 
 // Posts that name the machines they post for and not the chosen one are greyed out; the chosen

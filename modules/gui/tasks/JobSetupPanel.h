@@ -20,6 +20,7 @@ class QComboBox;
 class QDoubleSpinBox;
 class QLabel;
 class QLineEdit;
+class QScrollArea;
 
 namespace camwb::gui {
 
@@ -68,6 +69,8 @@ private:
     void checkTravels();
     void originOnPickedFace();
     void switchPostTo(int index);
+    void fitWidth();
+    void fitWidthNow();
     void filterPosts();
     void finish();
 
@@ -95,6 +98,7 @@ private:
     QLabel* m_postWarning = nullptr;
     std::vector<post::PostInfo> m_postInfos;             // by m_post's index
     std::optional<kinematics::Machine> m_chosenMachine;  // the machine chosen (none: the post's default)
+    QScrollArea* m_scroll = nullptr;
     QWidget* m_postPropertiesSlot = nullptr;
     QLabel* m_postDropped = nullptr;
     PostPropertiesForm* m_postProperties = nullptr;

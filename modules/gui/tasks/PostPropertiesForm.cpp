@@ -87,8 +87,10 @@ void PostPropertiesForm::addRow(const post::PropertyDef& def, const std::string&
     Row row;
     row.def = &def;
     const QString tip = q(def.description).isEmpty() ? q(def.name) : q(def.description);
-    const QString fullTip =
+    QString fullTip =
         QStringLiteral("%1\n\n%2 (%3%4)").arg(tip, q(def.name), q(post::propertyTypeName(def.type)), rangeText(def));
+    if (m_compact)  // no column for the default: it is in the tooltip and on the reset button's
+        fullTip += QLatin1Char('\n') + tr("(default: %1)").arg(q(def.defaultValue));
     row.label = new QLabel(q(def.title.empty() ? def.name : def.title), this);
     row.label->setToolTip(fullTip);
 
@@ -135,9 +137,12 @@ void PostPropertiesForm::addRow(const post::PropertyDef& def, const std::string&
     row.editor->setToolTip(fullTip);
     row.label->setBuddy(row.editor);
 
-    auto* hint = new QLabel(tr("(default: %1)").arg(q(def.defaultValue)), this);
-    hint->setObjectName(QStringLiteral("defaultHint"));
-    hint->setEnabled(false);  // greyed: a hint, not a value
+    QLabel* hint = nullptr;
+    if (!m_compact) {
+        hint = new QLabel(tr("(default: %1)").arg(q(def.defaultValue)), this);
+        hint->setObjectName(QStringLiteral("defaultHint"));
+        hint->setEnabled(false);  // greyed: a hint, not a value
+    }
 
     row.reset = new QToolButton(this);
     row.reset->setObjectName(QStringLiteral("reset.") + q(def.name));
@@ -147,8 +152,9 @@ void PostPropertiesForm::addRow(const post::PropertyDef& def, const std::string&
 
     m_grid->addWidget(row.label, gridRow, 0);
     m_grid->addWidget(row.editor, gridRow, 1);
-    m_grid->addWidget(hint, gridRow, 2);
-    m_grid->addWidget(row.reset, gridRow, 3);
+    if (hint != nullptr)
+        m_grid->addWidget(hint, gridRow, 2);
+    m_grid->addWidget(row.reset, gridRow, hint != nullptr ? 3 : 2);
     m_rows.push_back(row);
     show(m_rows.back(), value);
 }

@@ -28,6 +28,9 @@ public:
     // postProperties); a name the post lacks or a value it refuses shows the default instead.
     void setPost(const post::PostInfo& info, const std::map<std::string, std::string>& values);
     const post::PostInfo& post() const { return m_info; }
+    // Compact (for a narrow task panel): no column with each default, which goes into the
+    // tooltip instead. Takes effect at the next setPost.
+    void setCompact(bool compact) { m_compact = compact; }
     // The values that differ from their defaults, as canonical text by name (the job's map).
     std::map<std::string, std::string> values() const;
     // What the form shows for `name`, as canonical text (empty for an unknown name).
@@ -56,7 +59,8 @@ private:
     std::vector<Row> m_rows;
     QGridLayout* m_grid = nullptr;
     QLabel* m_empty = nullptr;
-    bool m_showing = false;  // setting editors: their signals are not the user's edits
+    bool m_showing = false;
+    bool m_compact = false;  // setting editors: their signals are not the user's edits
 };
 
 }  // namespace camwb::gui

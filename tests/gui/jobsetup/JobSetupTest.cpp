@@ -14,6 +14,7 @@
 #include "gui/view3d/TaskOverlay.h"
 #include "gui/view3d/View3D.h"
 
+#include "gui/tasks/PostPropertiesForm.h"
 #include <QAbstractButton>
 #include <QApplication>
 #include <QComboBox>
@@ -24,6 +25,7 @@
 #include <QGuiApplication>
 #include <QLabel>
 #include <QLineEdit>
+#include <QScrollArea>
 #include <QSignalSpy>
 #include <QStandardItemModel>
 #include <QTest>
@@ -133,6 +135,8 @@ private slots:
         QVERIFY(!child<QLabel>(panel, "travelWarning")->isVisible());
         QCOMPARE(window.workbench().document().undoStack().count(), undoSteps);  // nothing applied yet
         QTest::qWait(200);
+        // The dock is as wide as the rows, the post's properties included: nothing cut off on the right.
+        QVERIFY(panel->findChild<QScrollArea*>()->minimumWidth() > panel->postProperties()->minimumSizeHint().width());
         saveShot(&window,
                  withGl() ? QStringLiteral("jobsetup-panel.png") : QStringLiteral("jobsetup-panel-offscreen.png"));
 

@@ -245,7 +245,7 @@ int main(int argc, char** argv)
 {
     camwb::gui::View3D::setDefaultSurfaceFormat();
     QApplication app(argc, argv);
-    QStandardPaths::setTestModeEnabled(true);  // the user's library goes to a test folder
+    // The user's library goes to the test's own data folder (XDG_DATA_HOME, set per test and platform).
     QtTestRun run(argc, argv);
     ToolLibraryTest test;
     run.run(&test);

@@ -33,6 +33,7 @@
 
 using camwb::gui::JobSetupPanel;
 using camwb::gui::MainWindow;
+using camwb::gui::Prompter;
 using camwb::gui::ToolLibraryDialog;
 using camwb::gui::Workbench;
 
@@ -181,6 +182,41 @@ private slots:
         QVERIFY(!wb.document().undoStack().canUndo());
         QCOMPARE(jobText(window), empty);
         waitIdle(window);
+    }
+
+    // A job file cut off in the middle: a message naming the file and line, the job being edited
+    // (with its unsaved edit) kept as it was, the broken file untouched.
+    void corruptJobIsReportedAndLosesNothing()
+    {
+        QTemporaryDir dir;
+        MainWindow window;
+        auto owned = std::make_unique<ScriptedPrompter>();
+        ScriptedPrompter* prompter = owned.get();
+        window.setPrompter(std::move(owned));
+        Workbench& wb = window.workbench();
+        QSignalSpy imported(&wb, &Workbench::modelImportFinished);
+        prompter->files = {QStringLiteral(CAMWB_EXAMPLE_STEP)};
+        QVERIFY(window.actions().trigger(QStringLiteral("Cam.File.ImportModel")));
+        QVERIFY(imported.count() > 0 || imported.wait(120000));
+        waitIdle(window);
+        const std::string edited = jobText(window);
+        QVERIFY(wb.document().isModified());
+
+        const QString broken = dir.filePath(QStringLiteral("broken.camwb"));
+        const QByteArray text = "{\n  \"format\": \"camwb-job\",\n  \"version\": 6,\n  \"name\": \"cut";
+        {
+            QFile file(broken);
+            QVERIFY(file.open(QIODevice::WriteOnly));
+            file.write(text);
+        }
+        prompter->answers = {Prompter::Answer::Discard};  // the unsaved edit: the open is asked about
+        QVERIFY(!window.openJob(broken));
+        QVERIFY2(!prompter->errors.isEmpty(), "no message");
+        QVERIFY2(prompter->errors.last().contains(QStringLiteral("broken.camwb:4")),
+                 qPrintable(prompter->errors.last()));
+        QCOMPARE(jobText(window), edited);
+        QVERIFY(wb.document().isModified());
+        QCOMPARE(readFile(broken), text);
     }
 };
 

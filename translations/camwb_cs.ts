@@ -998,10 +998,6 @@
         <translation>Počátek</translation>
     </message>
     <message>
-        <source>Offset %1</source>
-        <translation>Nulový bod %1</translation>
-    </message>
-    <message>
         <source>Work offset</source>
         <translation>Nulový bod obrobku</translation>
     </message>

@@ -62,4 +62,24 @@ void Stock::resolve(const base::Vec3& modelMin, const base::Vec3& modelMax)
     max.y = cy + diameter / 2;
 }
 
+std::string workOffsetName(int offset, const std::string& postId)
+{
+    const std::string n = std::to_string(offset);
+    if (postId.rfind("sinumerik", 0) == 0) {
+        if (offset >= 1 && offset <= 4)
+            return "G" + std::to_string(53 + offset);
+        if (offset >= 5 && offset <= 99)
+            return "G" + std::to_string(500 + offset);
+    } else if (postId.rfind("heidenhain", 0) == 0) {
+        if (offset >= 1)
+            return "preset " + n;
+    } else {
+        if (offset >= 1 && offset <= 6)
+            return "G" + std::to_string(53 + offset);
+        if (offset >= 7 && offset <= 9)
+            return "G59." + std::to_string(offset - 6);
+    }
+    return "offset " + n;
+}
+
 }  // namespace camwb::document

@@ -103,6 +103,11 @@ struct Operation {
     void setName(const std::string& name);
 };
 
+// What the operator sets work offset `offset` (1-based) as on the control the post `postId`
+// writes for, as the bundled posts write it: SINUMERIK G54..G57 then G505..G599, Heidenhain the
+// preset number, ISO (LinuxCNC and others) G54..G59 then G59.1..G59.3; "offset N" past those.
+std::string workOffsetName(int offset, const std::string& postId);
+
 // "contour", "pocket", "helix", "drill", "swarf": the operation's type in the file.
 const char* kindName(OperationKind kind);
 // The word messages name it by, as the operations do: "contour", "pocket", "helix", "drilling".

@@ -104,13 +104,6 @@ std::vector<std::pair<std::string, std::string>> changedProperties(const Job& jo
 
 }  // namespace
 
-std::string workOffsetName(int offset)
-{
-    if (offset >= 1 && offset <= 6)
-        return "G5" + std::to_string(3 + offset);
-    return "offset " + std::to_string(offset);
-}
-
 std::optional<double> requiredStickOut(const sim::MoveList& moves, int tool, const base::Box3& clear, double marginMm)
 {
     std::optional<double> deepest;

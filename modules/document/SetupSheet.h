@@ -95,7 +95,4 @@ base::Result<SetupSheet> collectSetupSheet(const Job& job, const std::string& jo
 // plus `marginMm`. None when the tool makes no move.
 std::optional<double> requiredStickOut(const sim::MoveList& moves, int tool, const base::Box3& clear, double marginMm);
 
-// "G54" .. "G59" for offsets 1..6 (the ISO names posts write), else "offset N".
-std::string workOffsetName(int offset);
-
 }  // namespace camwb::document

@@ -53,7 +53,8 @@ std::string summary(const SetupSheet& sheet)
         {"Machine",
          sheet.machineId.empty() ? "none given (default limits)" : sheet.machineName + " (" + sheet.machineId + ")"},
         {"Post", sheet.postDescription + " (" + sheet.postId + ")"},
-        {"Work offset", workOffsetName(sheet.workOffset) + " (work offset " + std::to_string(sheet.workOffset) + ")"},
+        {"Work offset",
+         workOffsetName(sheet.workOffset, sheet.postId) + " (work offset " + std::to_string(sheet.workOffset) + ")"},
         {"Cycle time", formatDuration(sheet.cycleSeconds) + " planned on the machine (distance/feed estimate " +
                            formatDuration(sheet.simpleSeconds) + ")"},
         {"Path length", "rapid " + fixed1(sheet.rapidLengthMm) + " mm, feed " + fixed1(sheet.feedLengthMm) + " mm"},
@@ -102,7 +103,8 @@ std::string stockTable(const SetupSheet& sheet)
         rows.push_back({"Stock", "none given: the model's bounds"});
     }
     rows.push_back({"Model bounds (from, to)", vec(model.min) + "  to  " + vec(model.max)});
-    rows.push_back({"Work offset", workOffsetName(sheet.workOffset) + ": set it to the program zero above"});
+    rows.push_back(
+        {"Work offset", workOffsetName(sheet.workOffset, sheet.postId) + ": set it to the program zero above"});
     return table({"Item", "Value"}, rows);
 }
 

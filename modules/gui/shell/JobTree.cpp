@@ -188,7 +188,8 @@ void JobTree::addSetupItems(QTreeWidgetItem* jobItem)
     new QTreeWidgetItem(
         stock,
         {tr("Max"), QStringLiteral("%1, %2, %3").arg(mm(job.stock.max.x), mm(job.stock.max.y), mm(job.stock.max.z))});
-    row(jobItem, ItemKind::Wcs, tr("Work offset"), QStringLiteral("G%1").arg(53 + job.workOffset));
+    row(jobItem, ItemKind::Wcs, tr("Work offset"),
+        QString::fromStdString(document::workOffsetName(job.workOffset, job.postId)));
 
     // The job's machine, else the one its post chose for the last program.
     const auto machine = m_workbench.machine();

@@ -239,9 +239,10 @@ QWidget* JobSetupPanel::buildWcs()
     m_workOffset = new QComboBox;
     m_workOffset->setObjectName(QStringLiteral("workOffset"));
     for (int i = 1; i <= 6; ++i)
-        m_workOffset->addItem(QStringLiteral("G%1").arg(53 + i), i);
+        m_workOffset->addItem(QString(), i);
     if (m_setup.workOffset > 6)
-        m_workOffset->addItem(tr("Offset %1").arg(m_setup.workOffset), m_setup.workOffset);
+        m_workOffset->addItem(QString(), m_setup.workOffset);
+    nameWorkOffsets();
     form->addRow(tr("Work offset"), m_workOffset);
 
     connect(m_originAnchor, &QComboBox::currentIndexChanged, this, [this](int index) {
@@ -512,10 +513,18 @@ void JobSetupPanel::switchPostTo(int index)
     fitWidth();
 }
 
+// Each offset by the name the chosen post gives it in the NC (SINUMERIK's fifth is G505, not G58).
+void JobSetupPanel::nameWorkOffsets()
+{
+    for (int i = 0; i < m_workOffset->count(); ++i)
+        m_workOffset->setItemText(i, qs(document::workOffsetName(m_workOffset->itemData(i).toInt(), m_setup.postId)));
+}
+
 // Posts that name the machines they post for and not the chosen one are greyed out; the chosen
 // post, when it is one of them, is warned about (posting would fail).
 void JobSetupPanel::filterPosts()
 {
+    nameWorkOffsets();
     auto* model = qobject_cast<QStandardItemModel*>(m_post->model());
     auto serves = [this](int index) {
         return !m_chosenMachine || index < 0 || index >= static_cast<int>(m_postInfos.size()) ||

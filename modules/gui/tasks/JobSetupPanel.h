@@ -71,6 +71,7 @@ private:
     void switchPostTo(int index);
     void fitWidth();
     void fitWidthNow();
+    void nameWorkOffsets();
     void filterPosts();
     void finish();
 

@@ -55,9 +55,15 @@ TEST(SetupSheet, StickOutIsTheDeepestTipBelowTheClearanceBoxPlusTheMargin)
 
 TEST(SetupSheet, WorkOffsetNames)
 {
-    EXPECT_EQ(workOffsetName(1), "G54");
-    EXPECT_EQ(workOffsetName(6), "G59");
-    EXPECT_EQ(workOffsetName(7), "offset 7");
+    // As the bundled posts write them: the operator sets the offset the NC calls.
+    EXPECT_EQ(workOffsetName(1, "sinumerik828d-emco"), "G54");
+    EXPECT_EQ(workOffsetName(4, "sinumerik840d"), "G57");
+    EXPECT_EQ(workOffsetName(5, "sinumerik828d-emco"), "G505");
+    EXPECT_EQ(workOffsetName(99, "sinumerik840d"), "G599");
+    EXPECT_EQ(workOffsetName(2, "heidenhain-itnc530"), "preset 2");
+    EXPECT_EQ(workOffsetName(6, "linuxcnc"), "G59");
+    EXPECT_EQ(workOffsetName(7, "linuxcnc"), "G59.1");
+    EXPECT_EQ(workOffsetName(10, "linuxcnc"), "offset 10");
 }
 
 TEST(SetupSheet, ExampleJobToolsOperationsAndTimes)

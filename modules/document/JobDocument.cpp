@@ -39,6 +39,14 @@ void JobDocument::edit(const std::string& text, const std::function<void(Job&)>&
     m_undo.push(std::make_unique<JobSnapshotCommand>(*this, text, m_job, std::move(after)));
 }
 
+bool JobDocument::replace(const std::string& text, Job after)
+{
+    if (serializeJob(after) == serializeJob(m_job))
+        return false;
+    m_undo.push(std::make_unique<JobSnapshotCommand>(*this, text, m_job, std::move(after)));
+    return true;
+}
+
 void JobDocument::undo() { m_undo.undo(); }
 void JobDocument::redo() { m_undo.redo(); }
 

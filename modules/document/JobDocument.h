@@ -22,6 +22,9 @@ public:
     void reset(Job job, std::string path);
     // One undoable edit named `text`; `change` modifies a copy of the job.
     void edit(const std::string& text, const std::function<void(Job&)>& change);
+    // `after` as one undoable edit named `text`, unless it is the job as it is (as the file would
+    // hold it): then no step, and false. For edits built on a copy (OK of a panel, a switch of post).
+    bool replace(const std::string& text, Job after);
     void undo();
     void redo();
     // Writes atomically; on success the path becomes `path` and the document is clean.

@@ -336,9 +336,7 @@ void Workbench::updateOperation(int index, const document::Operation& operation)
         return;
     document::Job edited = job();
     edited.operations[index] = operation;
-    if (document::serializeJob(edited) == document::serializeJob(job()))
-        return;  // OK without a change: no empty undo step
-    m_document.edit("Edit " + operation.name(), [&](document::Job& j) { j.operations[index] = operation; });
+    m_document.replace("Edit " + operation.name(), std::move(edited));  // OK without a change: no step
 }
 
 void Workbench::removeOperation(int index)
@@ -418,9 +416,8 @@ bool Workbench::setJobSetup(const document::Job& setup)
     edited.machineId = setup.machineId;
     edited.outputName = setup.outputName;
     edited.outputFolder = setup.outputFolder;
-    if (document::serializeJob(edited) == document::serializeJob(job()))
+    if (!m_document.replace("Job setup", std::move(edited)))
         return true;  // no empty undo step
-    m_document.edit("Job setup", [&](document::Job& j) { j = edited; });
     for (const QString& note : notes)
         report(Severity::Warning, note);
     return true;

@@ -41,9 +41,8 @@ bool Workbench::setPost(const std::string& postId, const std::optional<std::stri
     std::vector<QString> notes;
     if (!switchPostIn(edited, postId, machineId, values, notes))
         return false;
-    if (document::serializeJob(edited) == document::serializeJob(job()))
+    if (!m_document.replace("Post", std::move(edited)))
         return true;  // no empty undo step
-    m_document.edit("Post", [&](document::Job& j) { j = edited; });
     for (const QString& note : notes)
         report(Severity::Warning, note);
     return true;

@@ -2,7 +2,6 @@
 // computing their speeds and feeds from their cutting data and editing them by hand, each one
 // undoable step. The kernel does the work (document/ToolLibrary.h, document/CuttingData.h).
 #include "document/CuttingData.h"
-#include "document/JobFile.h"
 #include "document/ToolLibrary.h"
 #include "gui/shell/Workbench.h"
 #include "kinematics/Machine.h"
@@ -46,9 +45,7 @@ void Workbench::updateTool(int index, const ops::ToolController& tool)
         return;
     document::Job edited = job();
     edited.tools[index] = tool;
-    if (document::serializeJob(edited) == document::serializeJob(job()))
-        return;
-    m_document.edit("Edit tool " + tool.tool.name, [&](document::Job& j) { j = edited; });
+    m_document.replace("Edit tool " + tool.tool.name, std::move(edited));
 }
 
 void Workbench::setMaterial(const std::string& material)

@@ -89,6 +89,24 @@ TEST(JobDocument, EveryEditIsOneUndoableStepAndNotifies)
     EXPECT_EQ(notifications, 6);
 }
 
+TEST(JobDocument, ReplaceWithTheSameJobAddsNoStep)
+{
+    JobDocument doc;
+    Job job;
+    job.name = "A";
+    doc.reset(job, "");
+    EXPECT_FALSE(doc.replace("same", job));
+    EXPECT_EQ(doc.undoStack().count(), 0u);
+    EXPECT_FALSE(doc.isModified());
+    job.workOffset = 2;
+    EXPECT_TRUE(doc.replace("offset", job));
+    EXPECT_EQ(doc.undoStack().count(), 1u);
+    EXPECT_EQ(doc.undoStack().undoText(), "offset");
+    EXPECT_EQ(doc.job().workOffset, 2);
+    doc.undo();
+    EXPECT_EQ(doc.job().workOffset, 1);
+}
+
 TEST(JobDocument, SaveMakesCleanAndFailedSaveKeepsState)
 {
     const auto dir = std::filesystem::temp_directory_path() / "camwb-jobdoc-test";

@@ -47,6 +47,33 @@ std::vector<std::vector<base::Vec2>> clipperOffset(const std::vector<base::Vec2>
     return result;
 }
 
+std::vector<std::vector<base::Vec2>> clipperUnion(const std::vector<std::vector<base::Vec2>>& polygons)
+{
+    ClipperLib::Paths paths;
+    paths.reserve(polygons.size());
+    for (const std::vector<base::Vec2>& polygon : polygons) {
+        ClipperLib::Path& path = paths.emplace_back();
+        path.reserve(polygon.size());
+        for (const base::Vec2& p : polygon)
+            path.push_back(toClipper(p));
+        // Nonzero fill counts orientation: every piece counter-clockwise so that none cancels another.
+        if (!ClipperLib::Orientation(path))
+            ClipperLib::ReversePath(path);
+    }
+    ClipperLib::Clipper clipper;
+    clipper.AddPaths(paths, ClipperLib::ptSubject, true);
+    ClipperLib::Paths solution;
+    clipper.Execute(ClipperLib::ctUnion, solution, ClipperLib::pftNonZero, ClipperLib::pftNonZero);
+    std::vector<std::vector<base::Vec2>> result;
+    for (const ClipperLib::Path& out : solution) {
+        std::vector<base::Vec2>& poly = result.emplace_back();
+        poly.reserve(out.size());
+        for (const ClipperLib::IntPoint& p : out)
+            poly.push_back(fromClipper(p));
+    }
+    return result;
+}
+
 double polygonArea(const std::vector<base::Vec2>& polygon)
 {
     double twice = 0;

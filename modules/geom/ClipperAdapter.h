@@ -19,6 +19,11 @@ inline constexpr double kClipperScale = 1e6;
 std::vector<std::vector<base::Vec2>> clipperOffset(const std::vector<base::Vec2>& polygon, double delta,
                                                    double arcTolerance);
 
+// The union of closed polygons (either orientation, nonzero fill: overlapping ones merge), as
+// outer boundaries counter-clockwise and holes clockwise; polygons are exact to Clipper's 1 nm grid.
+// The silhouette of many small pieces (projected triangles) in one sweep.
+std::vector<std::vector<base::Vec2>> clipperUnion(const std::vector<std::vector<base::Vec2>>& polygons);
+
 // Signed shoelace area (mm^2) of a closed polygon: positive for counter-clockwise. Computed in
 // doubles, not on the integer grid, so it does not carry Clipper's rounding.
 double polygonArea(const std::vector<base::Vec2>& polygon);

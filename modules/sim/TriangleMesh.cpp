@@ -3,7 +3,9 @@
 #include "base/AtomicFile.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstring>
+#include <unordered_map>
 
 namespace camwb::sim {
 
@@ -51,6 +53,48 @@ base::Status writeStl(const TriangleMesh& mesh, const std::string& path, const s
             std::memcpy(at + 12 + 12 * k, corner[k], 12);
     }
     return base::writeFileAtomically(path, out);
+}
+
+TriangleMesh weldVertices(const TriangleMesh& mesh, double toleranceMm)
+{
+    // Each vertex joins a kept vertex within the tolerance in its own or a neighbouring grid cell
+    // (two copies of one point can fall on either side of a cell boundary), else is kept itself.
+    const double cell = std::max(toleranceMm, 1e-9);
+    auto key = [](long long i, long long j, long long k) {
+        return static_cast<std::uint64_t>(i * 73856093LL ^ j * 19349663LL ^ k * 83492791LL);
+    };
+    std::unordered_multimap<std::uint64_t, std::uint32_t> cells;
+    TriangleMesh out;
+    std::vector<std::uint32_t> newIndex(mesh.vertexCount());
+    for (std::size_t v = 0; v < mesh.vertexCount(); ++v) {
+        const base::Vec3 p = mesh.vertex(v);
+        const long long ci = std::llround(p.x / cell), cj = std::llround(p.y / cell), ck = std::llround(p.z / cell);
+        std::int64_t found = -1;
+        for (long long di = -1; di <= 1 && found < 0; ++di)
+            for (long long dj = -1; dj <= 1 && found < 0; ++dj)
+                for (long long dk = -1; dk <= 1 && found < 0; ++dk) {
+                    auto [first, last] = cells.equal_range(key(ci + di, cj + dj, ck + dk));
+                    for (auto it = first; it != last; ++it)
+                        if (base::distance(out.vertex(it->second), p) <= toleranceMm) {
+                            found = it->second;
+                            break;
+                        }
+                }
+        if (found < 0) {
+            found = static_cast<std::int64_t>(out.vertexCount());
+            out.positions.insert(out.positions.end(),
+                                 {mesh.positions[3 * v], mesh.positions[3 * v + 1], mesh.positions[3 * v + 2]});
+            cells.emplace(key(ci, cj, ck), static_cast<std::uint32_t>(found));
+        }
+        newIndex[v] = static_cast<std::uint32_t>(found);
+    }
+    for (std::size_t t = 0; t < mesh.triangleCount(); ++t) {
+        const std::uint32_t a = newIndex[mesh.triangles[3 * t]], b = newIndex[mesh.triangles[3 * t + 1]],
+                            c = newIndex[mesh.triangles[3 * t + 2]];
+        if (a != b && b != c && a != c)  // a sliver whose corners merged has no area left
+            out.triangles.insert(out.triangles.end(), {a, b, c});
+    }
+    return out;
 }
 
 }  // namespace camwb::sim

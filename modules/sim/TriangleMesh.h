@@ -24,6 +24,11 @@ struct TriangleMesh {
     double volumeMm3() const;
 };
 
+// The mesh with vertices closer than `toleranceMm` (on a grid of that size) made one: OCCT meshes
+// each face on its own, so a model's mesh repeats the vertices along every edge; welded, the
+// triangles of neighbouring faces share them and a section can follow the surface across edges.
+TriangleMesh weldVertices(const TriangleMesh& mesh, double toleranceMm = 1e-5);
+
 // Binary STL, written atomically (nothing half-written on failure).
 // (Reading STL is occ's: a model or a stock from a mesh file comes through occ::Model.)
 base::Status writeStl(const TriangleMesh& mesh, const std::string& path, const std::string& header = "camwb");

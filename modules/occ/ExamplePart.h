@@ -23,4 +23,14 @@ base::Status writeExamplePart(const std::string& stepPath);
 // boss 10 x 8 x 3 mm on the -X face 12 mm towards +Y.
 base::Status writeFiveAxisExamplePart(const std::string& stepPath);
 
+// The three-axis mould teaching part (the 3D pocket and finishing example): a 100 x 80 x 30 mm
+// block (corner at the origin, top at Z 30) with a cavity whose opening at the top is 80 x 60 mm
+// from (10, 10) to (90, 70), corners R12; its walls drafted 10 degrees inwards (the corners cones)
+// down to a flat floor at Z 10, the floor edge rounded R3. At the -X end a shelf with a flat top at
+// Z 20: its wall faces +X, at X 28 on top, drafted 10 degrees; the edges where the shelf meets the
+// walls and the floor rounded R3, its top edge at X 28 sharp. On the floor a spherical dome (sphere
+// R20 about (60, 40, -4)) rises to Z 16, its foot rounded R2 into the floor. No undercut: no face
+// but the bottom looks down. Written like the others (fixed header, same file every time).
+base::Status writeMouldExamplePart(const std::string& stepPath);
+
 }  // namespace camwb::occ

@@ -19,6 +19,22 @@ namespace {
 constexpr double kPi = 3.14159265358979323846;
 constexpr double kDraft = 10 * kPi / 180;  // every cavity wall against the vertical
 constexpr double kTopZ = 30, kShelfZ = 20, kFloorZ = 10;
+constexpr double kShelfX = 28;  // the shelf's wall on its top
+
+// `shape` with the edges `pick` takes (given the edge's end points) rounded to `radius`.
+template <typename Pick> TopoDS_Shape filletEdges(const TopoDS_Shape& shape, double radius, Pick pick, const char* what)
+{
+    BRepFilletAPI_MakeFillet fillet(shape);
+    for (TopExp_Explorer it(shape, TopAbs_EDGE); it.More(); it.Next()) {
+        const TopoDS_Edge& edge = TopoDS::Edge(it.Current());
+        if (pick(BRep_Tool::Pnt(TopExp::FirstVertex(edge)), BRep_Tool::Pnt(TopExp::LastVertex(edge))))
+            fillet.Add(radius, edge);  // the explorer meets each edge twice; Add ignores repeats
+    }
+    fillet.Build();
+    if (!fillet.IsDone())
+        throw Standard_Failure((std::string("rounding ") + what + " failed").c_str());
+    return fillet.Shape();
+}
 
 // The cavity's volume without the shelf: the opening 80 x 60 mm with corners R12 at the top, its
 // walls drafted inwards going down (neutral plane at the top) to the floor, the floor edge rounded
@@ -40,28 +56,19 @@ TopoDS_Shape cavityVolume()
     draft.Build();
     if (!draft.IsDone())
         throw Standard_Failure("drafting the cavity walls failed");
-    const TopoDS_Shape drafted = draft.Shape();
-    BRepFilletAPI_MakeFillet fillet(drafted);
-    for (TopExp_Explorer it(drafted, TopAbs_EDGE); it.More(); it.Next()) {
-        const TopoDS_Edge& edge = TopoDS::Edge(it.Current());
-        const gp_Pnt a = BRep_Tool::Pnt(TopExp::FirstVertex(edge));
-        const gp_Pnt b = BRep_Tool::Pnt(TopExp::LastVertex(edge));
-        if (std::abs(a.Z() - kFloorZ) < 1e-6 && std::abs(b.Z() - kFloorZ) < 1e-6)
-            fillet.Add(3, edge);
-    }
-    fillet.Build();
-    if (!fillet.IsDone())
-        throw Standard_Failure("rounding the cavity floor failed");
-    return fillet.Shape();
+    const auto onFloor = [](const gp_Pnt& a, const gp_Pnt& b) {
+        return std::abs(a.Z() - kFloorZ) < 1e-6 && std::abs(b.Z() - kFloorZ) < 1e-6;
+    };
+    return filletEdges(draft.Shape(), 3, onFloor, "the cavity floor");
 }
 
 // The shelf left standing at the cavity's -X end: its top at Z 20, its wall facing +X at X 28 on
-// the top and drafted like the cavity walls; a prism along Y through the whole block.
+// its top and drafted like the cavity walls; a prism along Y through the whole block.
 TopoDS_Shape shelfVolume()
 {
     const double below = kFloorZ - 1;  // reaches into the floor's material
-    const double foot = 28 + (kShelfZ - below) * std::tan(kDraft);
-    BRepBuilderAPI_MakePolygon outline(gp_Pnt(-1, -1, below), gp_Pnt(foot, -1, below), gp_Pnt(28, -1, kShelfZ),
+    const double foot = kShelfX + (kShelfZ - below) * std::tan(kDraft);
+    BRepBuilderAPI_MakePolygon outline(gp_Pnt(-1, -1, below), gp_Pnt(foot, -1, below), gp_Pnt(kShelfX, -1, kShelfZ),
                                        gp_Pnt(-1, -1, kShelfZ), true);
     const TopoDS_Face profile = BRepBuilderAPI_MakeFace(outline.Wire(), true).Face();
     return BRepPrimAPI_MakePrism(profile, gp_Vec(0, 82, 0)).Shape();
@@ -73,22 +80,14 @@ TopoDS_Shape shelfVolume()
 TopoDS_Shape roundShelfEdges(const TopoDS_Shape& removed)
 {
     const auto onShelfWall = [](const gp_Pnt& p) {
-        return std::abs(p.X() - (28 + (kShelfZ - p.Z()) * std::tan(kDraft))) < 1e-6;
+        return std::abs(p.X() - (kShelfX + (kShelfZ - p.Z()) * std::tan(kDraft))) < 1e-6;
     };
-    BRepFilletAPI_MakeFillet fillet(removed);
-    for (TopExp_Explorer it(removed, TopAbs_EDGE); it.More(); it.Next()) {
-        const TopoDS_Edge& edge = TopoDS::Edge(it.Current());
-        const gp_Pnt a = BRep_Tool::Pnt(TopExp::FirstVertex(edge));
-        const gp_Pnt b = BRep_Tool::Pnt(TopExp::LastVertex(edge));
+    const auto meetsTheCavity = [&](const gp_Pnt& a, const gp_Pnt& b) {
         const bool onShelfTop = std::abs(a.Z() - kShelfZ) < 1e-6 && std::abs(b.Z() - kShelfZ) < 1e-6;
         const bool topEdge = onShelfTop && onShelfWall(a) && onShelfWall(b);
-        if (!topEdge && (onShelfTop || (onShelfWall(a) && onShelfWall(b))))
-            fillet.Add(3, edge);
-    }
-    fillet.Build();
-    if (!fillet.IsDone())
-        throw Standard_Failure("rounding the shelf's edges failed");
-    return fillet.Shape();
+        return !topEdge && (onShelfTop || (onShelfWall(a) && onShelfWall(b)));
+    };
+    return filletEdges(removed, 3, meetsTheCavity, "the shelf's edges");
 }
 
 TopoDS_Shape buildMouldPart()
@@ -101,16 +100,10 @@ TopoDS_Shape buildMouldPart()
     const TopoDS_Shape block = BRepPrimAPI_MakeBox(gp_Pnt(0, 0, 0), gp_Pnt(100, 80, kTopZ)).Shape();
     const TopoDS_Shape part = cut(block, removed, "the cavity");
     // The dome's foot rounded R2 into the floor (the circle where the sphere meets Z 10).
-    BRepFilletAPI_MakeFillet fillet(part);
-    for (TopExp_Explorer it(part, TopAbs_EDGE); it.More(); it.Next()) {
-        const gp_Pnt a = BRep_Tool::Pnt(TopExp::FirstVertex(TopoDS::Edge(it.Current())));
-        if (std::abs(a.Z() - kFloorZ) < 1e-6 && std::abs(a.Distance(domeCentre) - 20) < 1e-6)
-            fillet.Add(2, TopoDS::Edge(it.Current()));
-    }
-    fillet.Build();
-    if (!fillet.IsDone())
-        throw Standard_Failure("rounding the dome's foot failed");
-    return fillet.Shape();
+    const auto domeFoot = [&](const gp_Pnt& a, const gp_Pnt&) {
+        return std::abs(a.Z() - kFloorZ) < 1e-6 && std::abs(a.Distance(domeCentre) - 20) < 1e-6;
+    };
+    return filletEdges(part, 2, domeFoot, "the dome's foot");
 }
 
 }  // namespace

@@ -175,7 +175,8 @@ TEST(MeshSlicer, BrokenTrianglesAreIgnored)
     // A fin: a triangle hanging off an edge that the level crosses (three triangles at one edge,
     // band 10 spans Z 0 to 1.56) down to the bottom pole. The section stays finite, whatever it is.
     mesh.triangles.insert(mesh.triangles.end(), {mesh.triangles[3 * 760 + 1], mesh.triangles[3 * 760 + 2], 0});
-    for (const auto& loop : sliceMesh(mesh, {1.5})[0].loops)
+    const std::vector<MeshSection> withFin = sliceMesh(mesh, {1.5});
+    for (const auto& loop : withFin[0].loops)
         for (const base::Vec2 p : loop)
             EXPECT_TRUE(std::isfinite(p.x) && std::isfinite(p.y));
 }

@@ -106,16 +106,50 @@ sim::TriangleMesh withoutTriangles(const sim::TriangleMesh& mesh, std::size_t fi
 
 double oneSidedDistance(const Loops& from, const Loops& to)
 {
+    // The segments of `to` in a grid of cells about as large as a segment is long on average, so
+    // that a point looks at the cells around it ring by ring until no nearer segment can remain.
+    struct Seg {
+        base::Vec2 a, b;
+    };
+    std::vector<Seg> segs;
+    base::Vec2 lo{std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity()}, hi = -lo;
+    for (const auto& loop : to)
+        for (std::size_t i = 0; i < loop.size(); ++i) {
+            segs.push_back({loop[i], loop[(i + 1) % loop.size()]});
+            lo = {std::min(lo.x, loop[i].x), std::min(lo.y, loop[i].y)};
+            hi = {std::max(hi.x, loop[i].x), std::max(hi.y, loop[i].y)};
+        }
+    if (segs.empty())
+        return from.empty() || from.front().empty() ? 0.0 : std::numeric_limits<double>::infinity();
+    const double cell = std::max({perimeter(to) / segs.size(), (hi.x - lo.x + hi.y - lo.y) / 2048, 1e-6});
+    const int nx = int((hi.x - lo.x) / cell) + 1, ny = int((hi.y - lo.y) / cell) + 1;
+    std::vector<std::vector<std::uint32_t>> grid(std::size_t(nx) * ny);
+    auto cellOf = [&](double v, double origin, int n) { return std::clamp(int((v - origin) / cell), 0, n - 1); };
+    for (std::size_t i = 0; i < segs.size(); ++i)
+        for (int x = cellOf(std::min(segs[i].a.x, segs[i].b.x), lo.x, nx);
+             x <= cellOf(std::max(segs[i].a.x, segs[i].b.x), lo.x, nx); ++x)
+            for (int y = cellOf(std::min(segs[i].a.y, segs[i].b.y), lo.y, ny);
+                 y <= cellOf(std::max(segs[i].a.y, segs[i].b.y), lo.y, ny); ++y)
+                grid[std::size_t(y) * nx + x].push_back(std::uint32_t(i));
     double worst = 0;
-    for (const auto& loop : from) {
+    for (const auto& loop : from)
         for (const base::Vec2 p : loop) {
+            const int cx = cellOf(p.x, lo.x, nx), cy = cellOf(p.y, lo.y, ny);
+            // Cells outside the grid hold nothing; a point outside it is that much farther away.
+            const double outside =
+                std::hypot(std::max({lo.x - p.x, p.x - hi.x, 0.0}), std::max({lo.y - p.y, p.y - hi.y, 0.0}));
             double nearest = std::numeric_limits<double>::infinity();
-            for (const auto& other : to)
-                for (std::size_t i = 0; i < other.size(); ++i)
-                    nearest = std::min(nearest, pointToSegment(p, other[i], other[(i + 1) % other.size()]));
+            for (int ring = 0; ring <= std::max(nx, ny) && nearest > std::max(outside, (ring - 1) * cell); ++ring)
+                for (int y = cy - ring; y <= cy + ring; ++y)
+                    for (int x = cx - ring; x <= cx + ring; ++x) {
+                        if (x < 0 || y < 0 || x >= nx || y >= ny ||
+                            (std::abs(x - cx) != ring && std::abs(y - cy) != ring))
+                            continue;
+                        for (const std::uint32_t i : grid[std::size_t(y) * nx + x])
+                            nearest = std::min(nearest, pointToSegment(p, segs[i].a, segs[i].b));
+                    }
             worst = std::max(worst, nearest);
         }
-    }
     return worst;
 }
 

@@ -195,6 +195,13 @@ TEST(MeshSlicer, FlatLevelsAreTheUpwardFloors)
     EXPECT_EQ(flatLevels(mesh, 0.5, 400), (std::vector<double>{10}));
     EXPECT_TRUE(flatLevels(test::sphereMesh({}, 10, 40, 80)).empty());
     EXPECT_EQ(flatLevels(mesh, 80), (std::vector<double>{10, 25})) << "a steep wall spans more than the tolerance";
+    // A sliver tilted 2 degrees: within the Z tolerance (87 nm high) but not horizontal.
+    sim::TriangleMesh sliver;
+    sliver.positions = {0, 0, 5, 10, 0, 5, 0, 0.0025f, float(5 + 0.0025 * std::tan(2 * kPi / 180))};
+    sliver.triangles = {0, 1, 2};
+    EXPECT_TRUE(flatLevels(sliver).empty());
+    ASSERT_EQ(flatLevels(sliver, 3).size(), 1u);
+    EXPECT_NEAR(flatLevels(sliver, 3)[0], 5, 1e-4);
 }
 
 }  // namespace

@@ -31,7 +31,7 @@ doc = json.load(open(sys.argv[1]))
 scale = {'ms': 1e-3, 'us': 1e-6, 'ns': 1e-9, 's': 1.0}
 rows = {}
 for b in doc['benchmarks']:
-    name = b['run_name'].split('/')[0]
+    name = b['run_name'].split('/real_time')[0].split('/iterations')[0]
     if b.get('run_type') == 'iteration':
         rows.setdefault(name, {'cpu': [], 'wall': [], 'counters': b})
         rows[name]['cpu'].append(b['cpu_time'] * scale[b['time_unit']])

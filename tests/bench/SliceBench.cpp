@@ -1,6 +1,6 @@
 // Slicing speed (issue 16): a 100-level stack over a part, ops::surface::sliceMesh of its
 // tessellation (0.01 mm) for all levels in one pass against OCCT's exact section per level
-// (occ::Model::sectionLoops, BRepAlgoAPI_Section), with the meshing as its own row. The part:
+// (occ::Model::sectionLoops, BRepAlgoAPI_Section), with the meshing (and welding) as its own row. The part:
 // $CAMWB_SLICE_PART, else resources/examples/example-mould.step where it exists, else the five-axis
 // example. `--agreement` prints the largest distance between the two sections over the stack
 // instead (scripts/bench-slicing.sh runs both; figures in docs/benchmarks.md). Never asserted.
@@ -50,7 +50,7 @@ const occ::Model& part()
 
 const sim::TriangleMesh& partMesh()
 {
-    static const sim::TriangleMesh mesh = document::designMesh(part(), kTolerance);
+    static const sim::TriangleMesh mesh = sim::weldVertices(document::designMesh(part(), kTolerance));
     return mesh;
 }
 
@@ -71,7 +71,8 @@ std::vector<double> stack()
     return levels;
 }
 
-// Meshing alone: a fresh copy of the part each time (a model keeps its triangulation).
+// Meshing alone, welded as the 3D operations take it: a fresh copy of the part each time (a model
+// keeps its triangulation).
 void BM_MeshPart(benchmark::State& state)
 {
     std::size_t triangles = 0;
@@ -79,7 +80,7 @@ void BM_MeshPart(benchmark::State& state)
         state.PauseTiming();
         base::Result<occ::Model> fresh = occ::Model::load(partPath());
         state.ResumeTiming();
-        triangles = document::designMesh(fresh.value(), kTolerance).triangleCount();
+        triangles = sim::weldVertices(document::designMesh(fresh.value(), kTolerance)).triangleCount();
     }
     state.counters["triangles"] = double(triangles);
 }

@@ -1,14 +1,12 @@
 // Mesh slicing in one sweep: triangles sorted by their lowest Z once, levels swept upwards with
 // the set of triangles that span the current level. Each spanning triangle gives one segment whose
 // ends are keyed by the mesh edge they lie on, so that loops chain by integer keys, not by
-// comparing coordinates. Vertices are welded first: OCCT meshes every face on its own, so a vertex
-// on an edge between two faces comes once per face (bit-identical positions).
+// comparing coordinates (the mesh welded by the caller: sim::weldVertices).
 #include "ops/surface/MeshSlicer.h"
 
 #include "geom/RegionOps.h"
 
 #include <algorithm>
-#include <bit>
 #include <cmath>
 #include <cstdint>
 #include <numeric>
@@ -17,7 +15,7 @@ namespace camwb::ops::surface {
 
 namespace {
 
-using Key = std::uint64_t;  // an undirected mesh edge: (smaller welded index << 32) | larger
+using Key = std::uint64_t;  // an undirected mesh edge: (smaller vertex index << 32) | larger
 
 // One crossing of a level by a triangle, from where the surface goes down through the level to
 // where it comes up (travelling so, the material lies on the left).
@@ -26,36 +24,12 @@ struct Crossing {
     base::Vec2 start;
 };
 
-// The welded index of every vertex: vertices at bit-identical positions (-0 taken as +0) share
-// the smallest index among them.
-std::vector<std::uint32_t> weldVertices(const sim::TriangleMesh& mesh)
-{
-    const std::size_t n = mesh.vertexCount();
-    auto bits = [&](std::size_t v, int c) { return std::bit_cast<std::uint32_t>(mesh.positions[3 * v + c] + 0.0f); };
-    std::vector<std::uint32_t> order(n);
-    std::iota(order.begin(), order.end(), 0u);
-    std::sort(order.begin(), order.end(), [&](std::uint32_t a, std::uint32_t b) {
-        for (int c = 0; c < 3; ++c)
-            if (bits(a, c) != bits(b, c))
-                return bits(a, c) < bits(b, c);
-        return a < b;
-    });
-    std::vector<std::uint32_t> weld(n);
-    for (std::size_t i = 0; i < n; ++i) {
-        const std::uint32_t v = order[i];
-        const bool same = i > 0 && bits(v, 0) == bits(order[i - 1], 0) && bits(v, 1) == bits(order[i - 1], 1) &&
-                          bits(v, 2) == bits(order[i - 1], 2);
-        weld[v] = same ? weld[order[i - 1]] : v;
-    }
-    return weld;
-}
-
 Key edgeKey(std::uint32_t a, std::uint32_t b) { return a < b ? (Key(a) << 32) | b : (Key(b) << 32) | a; }
 
-// What a sweep needs of the mesh: welded triangles (dropping those with a repeated index or an
-// index out of range) and each one's Z range.
+// What a sweep needs of the mesh: its triangles (dropping those with a repeated index, an index
+// out of range or a non-finite Z) and each one's Z range.
 struct SweepMesh {
-    std::vector<std::uint32_t> tris;  // welded vertex indices, three per triangle
+    std::vector<std::uint32_t> tris;  // vertex indices, three per triangle
     std::vector<float> zMin, zMax;
     std::vector<std::uint32_t> byZMin;  // triangles in ascending zMin
 };
@@ -63,13 +37,12 @@ struct SweepMesh {
 SweepMesh prepare(const sim::TriangleMesh& mesh)
 {
     SweepMesh s;
-    const std::vector<std::uint32_t> weld = weldVertices(mesh);
     const std::size_t n = mesh.vertexCount();
     for (std::size_t t = 0; t < mesh.triangleCount(); ++t) {
         const std::uint32_t* v = &mesh.triangles[3 * t];
         if (v[0] >= n || v[1] >= n || v[2] >= n)
             continue;
-        const std::uint32_t a = weld[v[0]], b = weld[v[1]], c = weld[v[2]];
+        const std::uint32_t a = v[0], b = v[1], c = v[2];
         if (a == b || b == c || c == a)
             continue;
         const float za = mesh.positions[3 * a + 2], zb = mesh.positions[3 * b + 2], zc = mesh.positions[3 * c + 2];
@@ -116,9 +89,9 @@ Crossing crossTriangle(const sim::TriangleMesh& mesh, const std::uint32_t* v, do
 }
 
 // Chains the crossings into closed loops: each crossing's `to` edge is the `from` edge of the
-// next. A chain that finds no successor (an open or non-manifold mesh) is dropped whole, so a
-// hole in the mesh loses that loop rather than giving an open one.
-std::vector<std::vector<base::Vec2>> chainLoops(std::vector<Crossing>& crossings)
+// next. A chain that finds no successor (an open or non-manifold mesh) is dropped whole and
+// counted, so a hole in the mesh loses that loop rather than giving an open one.
+std::vector<std::vector<base::Vec2>> chainLoops(std::vector<Crossing>& crossings, std::size_t& openChains)
 {
     std::sort(crossings.begin(), crossings.end(), [](const Crossing& a, const Crossing& b) { return a.from < b.from; });
     std::vector<char> used(crossings.size(), 0);
@@ -152,7 +125,9 @@ std::vector<std::vector<base::Vec2>> chainLoops(std::vector<Crossing>& crossings
         }
         if (closed && loop.size() > 1 && loop.back() == loop.front())
             loop.pop_back();
-        if (closed && loop.size() >= 3)
+        if (!closed)
+            ++openChains;
+        else if (loop.size() >= 3)
             loops.push_back(std::move(loop));
     }
     return loops;
@@ -185,7 +160,7 @@ std::vector<MeshSection> sliceMesh(const sim::TriangleMesh& mesh, const std::vec
         crossings.clear();
         for (const std::uint32_t t : active)
             crossings.push_back(crossTriangle(mesh, &s.tris[3 * std::size_t(t)], z));
-        sections[level].loops = chainLoops(crossings);
+        sections[level].loops = chainLoops(crossings, sections[level].openChains);
     }
     return sections;
 }

@@ -35,11 +35,17 @@ TEST(MeshSlicer, SphereSectionsAreInscribedCirclesOfTheExactRadius)
     const double radius = 10;
     const int segments = 96;
     for (const bool soup : {false, true}) {
+        // A soup (every triangle with its own vertices, as an STL) slices once welded.
         const sim::TriangleMesh mesh = test::sphereMesh({1, 2, 3}, radius, 48, segments, soup);
+        if (soup) {
+            const std::vector<MeshSection> unwelded = sliceMesh(mesh, {3.5});
+            EXPECT_TRUE(unwelded[0].loops.empty());
+            EXPECT_EQ(unwelded[0].openChains, 2u * segments) << "every crossing a chain of its own";
+        }
         std::vector<double> levels;
         for (double z = -9.5; z < 9.6; z += 0.73)
             levels.push_back(3 + z);
-        const std::vector<MeshSection> sections = sliceMesh(mesh, levels);
+        const std::vector<MeshSection> sections = sliceMesh(soup ? sim::weldVertices(mesh) : mesh, levels);
         ASSERT_EQ(sections.size(), levels.size());
         for (const MeshSection& s : sections) {
             ASSERT_EQ(s.loops.size(), 1u) << "z " << s.z << (soup ? " (soup)" : "");
@@ -156,7 +162,9 @@ TEST(MeshSlicer, OpenMeshDropsOnlyTheLoopsThroughItsGap)
     const std::vector<MeshSection> s = sliceMesh(open, {-5, (bandLow + bandHigh) / 2, 9});
     EXPECT_EQ(s[0].loops.size(), 1u);
     EXPECT_TRUE(s[1].loops.empty()) << "the loop through the gap does not close: dropped";
+    EXPECT_GE(s[1].openChains, 1u) << "and counted (a broken loop may count as two pieces)";
     EXPECT_EQ(s[2].loops.size(), 1u);
+    EXPECT_EQ(s[0].openChains + s[2].openChains, 0u);
     EXPECT_EQ(s[0].loops, sliceMesh(closed, {-5})[0].loops);
 }
 

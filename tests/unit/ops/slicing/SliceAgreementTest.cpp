@@ -39,6 +39,12 @@ const occ::Model& exampleBlock()
     return model;
 }
 
+// The model's mesh as the 3D operations slice it: welded across the faces' edges.
+sim::TriangleMesh weldedMesh(const occ::Model& model)
+{
+    return sim::weldVertices(document::designMesh(model, kDeflection));
+}
+
 const occ::Model& fiveAxisPart()
 {
     static const occ::Model model = [] {
@@ -59,8 +65,7 @@ const occ::Model& fiveAxisPart()
 double expectAgreement(const occ::Model& model, const std::vector<double>& levels,
                        const std::function<double(double)>& allowed, double exactOffset = 0)
 {
-    const sim::TriangleMesh mesh = document::designMesh(model, kDeflection);
-    const std::vector<MeshSection> sections = sliceMesh(mesh, levels);
+    const std::vector<MeshSection> sections = sliceMesh(weldedMesh(model), levels);
     double worst = 0;
     for (const MeshSection& s : sections) {
         const base::Result<Loops> exact = model.sectionLoops(s.z + exactOffset, kExactChord);
@@ -69,6 +74,7 @@ double expectAgreement(const occ::Model& model, const std::vector<double>& level
             continue;
         }
         EXPECT_EQ(s.loops.size(), exact.value().size()) << "z " << s.z;
+        EXPECT_EQ(s.openChains, 0u) << "z " << s.z;
         const double d = test::hausdorff(s.loops, exact.value());
         worst = std::max(worst, d);
         EXPECT_LE(d, allowed(s.z)) << "z " << s.z;
@@ -113,7 +119,7 @@ TEST(SliceAgreement, LevelsOnTheBlocksFloorsAreTakenJustAboveThem)
     // has the floors' faces in it; a micron above, the walls only.
     expectAgreement(
         exampleBlock(), {7, 10}, [](double) { return kDeflection + kExactChord + 1e-4; }, 1e-6);
-    const std::vector<MeshSection> s = sliceMesh(document::designMesh(exampleBlock(), kDeflection), {15, 10, 0});
+    const std::vector<MeshSection> s = sliceMesh(weldedMesh(exampleBlock()), {15, 10, 0});
     EXPECT_TRUE(s[0].loops.empty()) << "nothing above the top";
     // At Z 10: the outline, the pocket (a hole), the island in it, the through hole and four blind holes.
     EXPECT_EQ(s[1].loops.size(), 8u);

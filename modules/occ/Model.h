@@ -97,6 +97,12 @@ public:
     // STL models return their own triangles and no edges; linearDeflectionMm is ignored for them.
     DisplayMesh mesh(double linearDeflectionMm = 0.05) const;
 
+    // The exact section of the solid by the plane at `z` (ModelSection.cpp, BRepAlgoAPI_Section):
+    // closed loops in XY (last point not repeated), edges discretised within toleranceMm, outer
+    // loops counter-clockwise and holes clockwise. Slow (a Boolean per call): the reference the mesh
+    // slicer is checked against. Errors: an STL model, OCCT failing, edges that do not close.
+    base::Result<std::vector<std::vector<base::Vec2>>> sectionLoops(double z, double toleranceMm) const;
+
     base::Vec3 boundsMin() const;
     base::Vec3 boundsMax() const;
 

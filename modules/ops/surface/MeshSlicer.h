@@ -17,10 +17,15 @@ namespace camwb::ops::surface {
 struct MeshSection {
     double z = 0;
     std::vector<std::vector<base::Vec2>> loops;
+    // Pieces of chains of crossings that did not close (an open, broken or unwelded mesh): left out of
+    // `loops`, so material is missing from the section. Callers that rely on it must say so.
+    std::size_t openChains = 0;
 };
 
 // The sections at `levels` (any order; returned in the same order). A level through a vertex or
 // along a horizontal face is taken as infinitesimally above it, so each crossing is counted once.
+// Loops follow the mesh's vertex indices: the mesh must be welded (sim::weldVertices; OCCT's mesh
+// repeats the vertices along every edge between faces), else its sections break at those edges.
 std::vector<MeshSection> sliceMesh(const sim::TriangleMesh& mesh, const std::vector<double>& levels);
 
 // A section as regions (outer loop with holes), loops within `toleranceMm`.

@@ -30,7 +30,7 @@ double facetContact(const CutterProfile& profile, Vec2 c, const P3& a, const P3&
     if (std::abs(nz) <= 1e-12 * std::max(nxy, 1e-300))
         return -kInf;  // vertical: its edges and vertices stand for it
     // z = a.z + gx (x - a.x) + gy (y - a.y) on the plane; it rises along (gx, gy).
-    const double gx = -nx / nz, gy = -ny / nz, g = std::hypot(gx, gy);
+    const double gx = -nx / nz, gy = -ny / nz, g = std::sqrt(gx * gx + gy * gy);
     const double r = profile.planeContact(g);
     const double px = c.x + (g > 0 ? gx / g * r : 0), py = c.y + (g > 0 ? gy / g * r : 0);
     // Inside the triangle (in XY)?
@@ -43,7 +43,8 @@ double facetContact(const CutterProfile& profile, Vec2 c, const P3& a, const P3&
 
 double vertexContact(const CutterProfile& profile, Vec2 c, const P3& p)
 {
-    return p.z - profile.height(std::hypot(p.x - c.x, p.y - c.y));
+    const double dx = p.x - c.x, dy = p.y - c.y;
+    return p.z - profile.height(std::sqrt(dx * dx + dy * dy));  // std::hypot is several times slower
 }
 
 // The highest tip from the edge a-b. Along the edge, z(t) - height(|xy(t) - c|) is concave (a
@@ -51,6 +52,8 @@ double vertexContact(const CutterProfile& profile, Vec2 c, const P3& p)
 // has a single best point: closed forms for the flat and the sphere, a golden-section search else.
 double edgeContact(const CutterProfile& profile, Vec2 c, const P3& a, const P3& b, double best)
 {
+    if (std::max(a.z, b.z) - profile.lowest() <= best)
+        return -kInf;
     const double dx = b.x - a.x, dy = b.y - a.y, dz = b.z - a.z;
     const double l2 = dx * dx + dy * dy;
     if (l2 < 1e-18)
@@ -68,7 +71,8 @@ double edgeContact(const CutterProfile& profile, Vec2 c, const P3& a, const P3& 
     if (std::max(a.z + dz * t0, a.z + dz * t1) - profile.lowest() <= best)
         return -kInf;
     auto at = [&](double t) {
-        const double d = std::min(R, std::hypot(wx + dx * t, wy + dy * t));
+        const double ex = wx + dx * t, ey = wy + dy * t;
+        const double d = std::min(R, std::sqrt(ex * ex + ey * ey));
         return a.z + dz * t - profile.height(d);
     };
     if (profile.isFlat())

@@ -36,7 +36,7 @@ private:
     {
         const double dx = std::max({0.0, box[0] - c.x, c.x - box[2]});
         const double dy = std::max({0.0, box[1] - c.y, c.y - box[3]});
-        return std::hypot(dx, dy);
+        return std::sqrt(dx * dx + dy * dy);  // not std::hypot: this is the hot loop
     }
 
     std::vector<float> m_tris;
@@ -62,10 +62,9 @@ void TriangleGrid::visit(base::Vec2 c, double radius, const Height& height, cons
             if (d <= radius)
                 cells.emplace_back(m_cellBox[5 * k] - height(d), k);
         }
-    std::sort(cells.begin(), cells.end(), [](const auto& a, const auto& b) { return a.first > b.first; });
-    for (const auto& [bound, k] : cells) {
-        if (bound <= best)
-            break;
+    // The most promising cell first, alone: it usually sets `best` so high that only a few of the
+    // others are left to sort.
+    auto visitCell = [&](double bound, int k) {
         const double drop = m_cellBox[5 * k] - bound;  // height() at the cell's box
         const int ci = k % m_nx, cj = k / m_nx;
         for (std::uint32_t n = m_start[k]; n < m_start[k + 1]; ++n) {
@@ -80,7 +79,18 @@ void TriangleGrid::visit(base::Vec2 c, double radius, const Height& height, cons
             if (d <= radius && t[9] - height(d) > best)
                 triangle(id);
         }
-    }
+    };
+    if (cells.empty())
+        return;
+    auto first =
+        std::max_element(cells.begin(), cells.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+    std::iter_swap(first, cells.begin());
+    visitCell(cells.front().first, cells.front().second);
+    const auto last =
+        std::partition(cells.begin() + 1, cells.end(), [&](const auto& cell) { return cell.first > best; });
+    std::sort(cells.begin() + 1, last, [](const auto& a, const auto& b) { return a.first > b.first; });
+    for (auto it = cells.begin() + 1; it != last && it->first > best; ++it)
+        visitCell(it->first, it->second);
 }
 
 }  // namespace camwb::ops::surface

@@ -4,12 +4,14 @@
 // on a dome, the slope limit keeps the cut off the steep part and on the shallow part; the
 // parameters' errors.
 #include "ops/ParallelOp.h"
+#include "PathCheck.h"
 #include "sim/HeightField.h"
 #include "sim/Moves.h"
-#include "PathCheck.h"
 
 #include <gtest/gtest.h>
 
+#include <map>
+#include <numbers>
 #include <random>
 
 namespace camwb::ops {
@@ -195,6 +197,46 @@ TEST(ParallelOp, OneWayCutsAllGoTheSameWay)
     const toolpath::Toolpath& path = result.value().toolpath;
     EXPECT_TRUE(std::holds_alternative<toolpath::SectionBegin>(path.records().front()));
     EXPECT_TRUE(std::holds_alternative<toolpath::SectionEnd>(path.records().back()));
+}
+
+TEST(ParallelOp, AngledLinesEndAtTheAreasEdge)
+{
+    const sim::TriangleMesh mesh = test::gridMesh([](double x, double) { return 0.05 * x; }, -5, 25, -5, 15, 6);
+    ParallelParams p = paramsFor(1);
+    p.angleDeg = 30;
+    const auto result = computeParallel(inputFor(mesh, 0, 20, 0, 10), p, controller(tool("ball", 4)), 0);
+    ASSERT_TRUE(result) << result.error().message;
+    const double a = 30 * std::numbers::pi / 180;
+    const base::Vec2 u{std::cos(a), std::sin(a)}, v{-u.y, u.x};
+    // The cut moves along the lines, grouped by line; each line's extent against the box's.
+    std::map<long, std::pair<double, double>> lines;
+    for (const test::Segment& s : test::feedMoves(result.value().toolpath)) {
+        const base::Vec2 d{s.b.x - s.a.x, s.b.y - s.a.y};
+        if (d.length() < 1e-6 || std::abs(d.x * u.y - d.y * u.x) > 1e-6 * d.length())
+            continue;
+        for (const base::Vec3& q : {s.a, s.b}) {
+            const base::Vec2 xy{q.x, q.y};
+            auto [it, added] = lines.try_emplace(std::lround(xy.dot(v) * 1e4), xy.dot(u), xy.dot(u));
+            it->second = {std::min(it->second.first, xy.dot(u)), std::max(it->second.second, xy.dot(u))};
+        }
+    }
+    int checked = 0;
+    for (const auto& [key, extent] : lines) {
+        // Where the line at this v enters and leaves [0, 20] x [0, 10].
+        double lo = -1e9, hi = 1e9;
+        const double vv = key / 1e4;
+        for (int axis = 0; axis < 2; ++axis) {
+            const double o = axis == 0 ? v.x * vv : v.y * vv, du = axis == 0 ? u.x : u.y, max = axis == 0 ? 20 : 10;
+            const double t0 = (0 - o) / du, t1 = (max - o) / du;
+            lo = std::max(lo, std::min(t0, t1)), hi = std::min(hi, std::max(t0, t1));
+        }
+        if (hi - lo < 1)
+            continue;
+        EXPECT_NEAR(extent.first, lo, 1e-4) << vv;
+        EXPECT_NEAR(extent.second, hi, 1e-4) << vv;
+        ++checked;
+    }
+    EXPECT_GE(checked, 8);
 }
 
 TEST(ParallelOp, ParameterErrors)

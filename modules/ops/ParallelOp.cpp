@@ -6,7 +6,10 @@
 #include "ops/surface/CutLine.h"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
+#include <functional>
+#include <thread>
 
 namespace camwb::ops {
 
@@ -68,6 +71,55 @@ std::vector<Vec3> surfaceLink(const surface::DropCutter& cutter, const ParallelG
     return surface::refineCut(cutter, points, tolerance);
 }
 
+// The cuts of one line, from its first sample to its last: each run of cutting samples with the
+// points where the line crosses the area's edge, refined and thinned.
+std::vector<Cut> lineCuts(const ParallelGrid& grid, const surface::DropCutter& cutter, const ParallelParams& params,
+                          int line)
+{
+    std::vector<Cut> out;
+    for (const ParallelGrid::Run& run : grid.cutRuns(line)) {
+        Cut dense;
+        // Where the model is not under the tool at the edge, the run ends at its last sample.
+        auto edgePoint = [&](const std::optional<base::Vec2>& p) {
+            if (const double z = p ? cutter.dropZ(*p) : 0; p && std::isfinite(z))
+                dense.push_back({p->x, p->y, z});
+        };
+        edgePoint(run.before);
+        for (int m = run.from; m <= run.to; ++m)
+            if (const Vec3 q = grid.point(line, m);
+                dense.empty() || std::hypot(q.x - dense.back().x, q.y - dense.back().y) > 1e-6)
+                dense.push_back(q);
+        if (run.after && std::hypot(run.after->x - dense.back().x, run.after->y - dense.back().y) > 1e-6)
+            edgePoint(run.after);
+        if (dense.size() >= 2)
+            out.push_back(surface::thinCut(surface::refineCut(cutter, dense, params.toleranceMm), params.toleranceMm));
+    }
+    return out;
+}
+
+// Runs work(line) for every line on all cores; `step` (the fraction done, called on this thread
+// only) false stops it. False when stopped.
+bool forEachLine(int lines, const std::function<void(int)>& work, const std::function<bool(double)>& step)
+{
+    std::atomic<int> next{0}, done{0};
+    std::atomic<bool> stop{false};
+    auto worker = [&](bool reports) {
+        for (int line; !stop && (line = next++) < lines;) {
+            work(line);
+            const int finished = ++done;
+            if (reports && !step(double(finished) / lines))
+                stop = true;
+        }
+    };
+    std::vector<std::thread> pool;
+    for (unsigned i = 1; i < std::max(1u, std::thread::hardware_concurrency()); ++i)
+        pool.emplace_back(worker, false);
+    worker(true);
+    for (std::thread& t : pool)
+        t.join();
+    return !stop;
+}
+
 }  // namespace
 
 base::Result<OpResult> computeParallel(const SurfaceInput& input, const ParallelParams& params,
@@ -86,29 +138,14 @@ base::Result<OpResult> computeParallel(const SurfaceInput& input, const Parallel
                                  fmt(grid.topZ()) + " (with the stock to leave)");
 
     // The cuts line by line, every other line reversed when zig-zag.
+    std::vector<std::vector<Cut>> byLine(grid.lines());
+    if (!forEachLine(
+            grid.lines(), [&](int line) { byLine[line] = lineCuts(grid, cutter, params, line); },
+            [&](double f) { return progress.step(0.9 + 0.1 * f); }))
+        return cancelledError(what);
     std::vector<Cut> cuts;
     for (int line = 0; line < grid.lines(); ++line) {
-        std::vector<Cut> onLine;
-        for (const ParallelGrid::Run& run : grid.cutRuns(line)) {
-            Cut dense;
-            // The line's ends at the area's edge, dropped; where the model is not under the tool
-            // there, the run ends at its last sample.
-            auto edgePoint = [&](const std::optional<base::Vec2>& p) {
-                if (p && (*p - base::Vec2{dense.empty() ? grid.point(line, run.from).x : dense.back().x,
-                                          dense.empty() ? grid.point(line, run.from).y : dense.back().y})
-                                 .length() > 1e-6)
-                    if (const double z = cutter.dropZ(*p); std::isfinite(z))
-                        dense.push_back({p->x, p->y, z});
-            };
-            edgePoint(run.before);
-            for (int m = run.from; m <= run.to; ++m)
-                dense.push_back(grid.point(line, m));
-            edgePoint(run.after);
-            if (dense.size() < 2)
-                continue;
-            onLine.push_back(
-                surface::thinCut(surface::refineCut(cutter, dense, params.toleranceMm), params.toleranceMm));
-        }
+        std::vector<Cut>& onLine = byLine[line];
         if (params.zigZag && line % 2 == 1) {
             std::reverse(onLine.begin(), onLine.end());
             for (Cut& cut : onLine)
@@ -116,8 +153,6 @@ base::Result<OpResult> computeParallel(const SurfaceInput& input, const Parallel
         }
         for (Cut& cut : onLine)
             cuts.push_back(std::move(cut));
-        if (!progress.step(0.9 + 0.1 * (line + 1) / grid.lines()))
-            return cancelledError(what);
     }
 
     OpResult result;

@@ -10,6 +10,7 @@
 
 #include <gtest/gtest.h>
 
+#include <atomic>
 #include <map>
 #include <numbers>
 #include <random>
@@ -237,6 +238,16 @@ TEST(ParallelOp, AngledLinesEndAtTheAreasEdge)
         ++checked;
     }
     EXPECT_GE(checked, 8);
+}
+
+TEST(ParallelOp, CancelledGivesNothing)
+{
+    const sim::TriangleMesh mesh = test::gridMesh([](double, double) { return 0.0; }, 0, 10, 0, 10, 2);
+    std::atomic<bool> cancel{true};
+    const auto result = computeParallel(inputFor(mesh, 0, 10, 0, 10), paramsFor(1), controller(tool("ball", 6)), 0,
+                                        Progress{{}, &cancel});
+    ASSERT_FALSE(result);
+    EXPECT_EQ(result.error().message, "parallel \"Parallel\": cancelled");
 }
 
 TEST(ParallelOp, ParameterErrors)

@@ -59,7 +59,8 @@ void BM_DropCutterIndex(benchmark::State& state)
 }
 BENCHMARK(BM_DropCutterIndex)->Arg(1)->Unit(benchmark::kMillisecond)->UseRealTime();
 
-// 40 000 points on a 0.5 x 0.5 mm grid over the model (ball: range 0 = 1, flat 0), threads range 1.
+// 40 000 points on a 0.5 x 0.5 mm grid over the model (ball: range 0 = 1, flat 0), threads range 1
+// (0: all cores).
 void BM_DropCutterPoints(benchmark::State& state)
 {
     const ops::surface::DropCutter cutter(model(), tool(state.range(0) != 0));
@@ -77,6 +78,8 @@ BENCHMARK(BM_DropCutterPoints)
     ->Args({1, 2})
     ->Args({0, 1})
     ->Args({0, 2})
+    ->Args({1, 0})  // threads 0: all cores
+    ->Args({0, 0})
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime();
 

@@ -5,6 +5,7 @@
 // parameters' errors.
 #include "ops/ParallelOp.h"
 #include "PathCheck.h"
+#include "geom/Region.h"
 #include "sim/HeightField.h"
 #include "sim/Moves.h"
 
@@ -238,6 +239,37 @@ TEST(ParallelOp, AngledLinesEndAtTheAreasEdge)
         ++checked;
     }
     EXPECT_GE(checked, 8);
+}
+
+TEST(ParallelOp, StaysInTheBoundary)
+{
+    // A round boundary of radius 8 round (10, 10) on a tilted plane over a 20 x 20 stock.
+    const sim::TriangleMesh mesh =
+        test::gridMesh([](double x, double y) { return 0.1 * x - 0.05 * y; }, -5, 25, -5, 25, 6);
+    SurfaceInput in = inputFor(mesh, 0, 20, 0, 20);
+    geom::Region circle;
+    circle.outer.segments = {geom::Segment::arc({18, 10}, {2, 10}, {10, 10}, true),
+                             geom::Segment::arc({2, 10}, {18, 10}, {10, 10}, true)};
+    in.boundary = {circle};
+    ParallelParams p = paramsFor(1);
+    p.angleDeg = 20;
+    const auto result = computeParallel(in, p, controller(tool("ball", 4)), 0);
+    ASSERT_TRUE(result) << result.error().message;
+    const std::vector<test::Segment> feeds = test::feedMoves(result.value().toolpath);
+    ASSERT_FALSE(feeds.empty());
+    for (const test::Segment& s : feeds)
+        for (const base::Vec3& q : {s.a, s.b})
+            EXPECT_LE(std::hypot(q.x - 10, q.y - 10), 8 + 1e-5) << q.x << ", " << q.y;
+    // and it covers the disc (the lines end on its edge)
+    for (double x = 3; x <= 17; x += 0.9)
+        for (double y = 3; y <= 17; y += 0.9) {
+            if (std::hypot(x - 10, y - 10) > 7)
+                continue;
+            double nearest = 1e9;
+            for (const test::Segment& s : feeds)
+                nearest = std::min(nearest, test::distanceToSegmentXY({x, y}, s));
+            EXPECT_LE(nearest, 0.5 + 1e-6) << x << ", " << y;
+        }
 }
 
 TEST(ParallelOp, CancelledGivesNothing)

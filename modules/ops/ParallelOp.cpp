@@ -170,8 +170,9 @@ base::Result<OpResult> computeParallel(const SurfaceInput& input, const Parallel
                 link = surfaceLink(cutter, grid, a, b, maxSlope, params.toleranceMm);
         }
         if (!link.empty()) {
-            for (const Vec3& p : surface::thinCut(link, params.toleranceMm))
-                out.feed(p, cutting);
+            const std::vector<Vec3> thin = surface::thinCut(link, params.toleranceMm);
+            for (std::size_t k = 1; k < thin.size(); ++k)  // thin[0] is where the tool is
+                out.feed(thin[k], cutting);
         } else {
             if (i == 0)
                 out.rapid({cut.front().x, cut.front().y, h.clearanceZ});

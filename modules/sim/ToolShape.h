@@ -53,6 +53,8 @@ public:
     double totalLengthMm() const;     // tip to the holder's top
     double boundingRadiusMm() const;  // the widest of cutter, shank and holder
     bool flatBottomed() const { return m_coneSlope == 0 && m_corner == 0; }
+    double cornerRadiusMm() const { return m_corner; }  // ball: the radius; flat and pointed: 0
+    double coneSlope() const { return m_coneSlope; }    // pointed: radius per height of the point; else 0
 
     // Height of the cutter's lower surface above the tip at radial distance d (the z-map's view of
     // the tool); +infinity beyond the cutter's radius. Non-decreasing and convex in d for every

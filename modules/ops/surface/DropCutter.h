@@ -24,8 +24,9 @@ public:
     // The lowest tip height at `xy` at which the tool touches no triangle; `floorZ` where the tool
     // meets none there.
     double dropZ(base::Vec2 xy, double floorZ = -std::numeric_limits<double>::infinity()) const;
-    // Many points at once, spread over the available cores; same results as dropZ one by one.
-    std::vector<double> dropZ(const std::vector<base::Vec2>& points, double floorZ) const;
+    // Many points at once, spread over `threads` threads (0: all cores); same results as dropZ one
+    // by one.
+    std::vector<double> dropZ(const std::vector<base::Vec2>& points, double floorZ, int threads = 0) const;
 
 private:
     struct Index;

@@ -18,6 +18,10 @@ struct ToolCentreSettings {
     double sideStockMm = 0;
     double bottomStockMm = 0;
     double toleranceMm = 0.01;
+    // Height of the bands in which material near the tip is grown by the tool's radius at the band's
+    // top: the tool may stand up to this much higher than it must. 0: max(tolerance, H / 40), H the
+    // height where the cutter reaches its full radius (a ball's radius, a bull-nose's corner).
+    double bandMm = 0;
 };
 
 // Built once per operation (the model's material sorted by height), asked per level.

@@ -1,0 +1,208 @@
+// Waterline: per level, the boundary of the obstacle ToolCentreRegions gives (where the tool just
+// touches the model grown by the stock) is the contour. Its points are kept where the wall is
+// steep: the contour a little higher (dz) lies within dz / tan(minSlope) inward of them (on a wall
+// of slope a the contour moves dz / tan(a) per dz, for the tool-centre surface as for the model).
+// Each steep run is cut in the milling direction, entered and left by a short lead where it stays
+// clear, retracting to the safe height between runs.
+#include "ops/WaterlineOp.h"
+
+#include "base/NumberFormat.h"
+#include "geom/RegionIndex.h"
+#include "geom/RegionOps.h"
+#include "ops/pocket/PathWriter.h"
+#include "ops/surface/ToolCentre.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+namespace camwb::ops {
+
+namespace {
+
+using base::Vec2;
+constexpr double kPi = std::numbers::pi;
+
+std::string fmt(double v) { return base::NumberFormat{4, true}.format(v); }
+
+base::Status check(const std::string& what, const SurfaceInput& in, const WaterlineParams& p, const ToolController& tc)
+{
+    if (base::Status s = checkToolController(what, tc); !s)
+        return s;
+    if (base::Status s = checkHeights(what, p.heights); !s)
+        return s;
+    if (!in.model || in.model->empty())
+        return opError(what, "no model to finish (the part's mesh is empty)");
+    if (in.boundary.empty() &&
+        (in.stock.empty || !(in.stock.max.x > in.stock.min.x) || !(in.stock.max.y > in.stock.min.y)))
+        return opError(what, "no boundary and no stock box: nowhere to finish");
+    if (!(p.scallopMm > 0))
+        return opError(what, "scallop height must be positive, got " + fmt(p.scallopMm) + " mm");
+    if (!(p.maxStepDownMm > 0))
+        return opError(what, "largest step-down must be positive, got " + fmt(p.maxStepDownMm) + " mm");
+    if (!(p.minSlopeDeg >= 0) || p.minSlopeDeg >= 90)
+        return opError(what, "slope limit must be in [0, 90) degrees, got " + fmt(p.minSlopeDeg));
+    if (!(p.stockMm >= 0))
+        return opError(what, "stock to leave must not be negative, got " + fmt(p.stockMm) + " mm");
+    if (!(p.toleranceMm > 0) || p.toleranceMm > 1)
+        return opError(what, "tolerance must be in (0, 1] mm, got " + fmt(p.toleranceMm) + " mm");
+    return base::Status::success();
+}
+
+// The vertical step between contours that keeps the scallop on walls at the slope limit (the
+// flattest walls cut; steeper ones get less) below h. A round cutter (ball, bull-nose corner of
+// radius c) leaves c - sqrt(c^2 - (w/2)^2) between passes w apart along the wall, w = step / sin(a);
+// a flat end leaves a stair step * cos(a). Below 5 degrees the wall is taken as 5 degrees.
+double stepFor(const WaterlineParams& p, const toolpath::Tool& tool)
+{
+    const double a = std::max(p.minSlopeDeg, 5.0) * kPi / 180, h = p.scallopMm;
+    const double c = tool.kind == "ball" ? tool.diameterMm / 2 : tool.cornerRadiusMm;
+    double step = h / std::cos(a);
+    if (c > h)
+        step = 2 * std::sin(a) * std::sqrt(c * c - (c - h) * (c - h));
+    return std::min(step, p.maxStepDownMm);
+}
+
+std::vector<double> levelsOf(const WaterlineParams& p, const toolpath::Tool& tool)
+{
+    std::vector<double> levels{p.heights.startZ};
+    for (double z : stepDownLevels(p.heights.startZ, p.heights.finalZ, stepFor(p, tool)))
+        levels.push_back(z);
+    return levels;
+}
+
+std::vector<geom::Region> areaOf(const SurfaceInput& in)
+{
+    if (!in.boundary.empty())
+        return in.boundary;
+    const Vec2 a{in.stock.min.x, in.stock.min.y}, b{in.stock.max.x, in.stock.min.y};
+    const Vec2 c{in.stock.max.x, in.stock.max.y}, d{in.stock.min.x, in.stock.max.y};
+    geom::Region box;
+    box.outer.segments = {geom::Segment::line(a, b), geom::Segment::line(b, c), geom::Segment::line(c, d),
+                          geom::Segment::line(d, a)};
+    return {box};
+}
+
+struct Contour {
+    std::vector<Vec2> points;
+    bool closed = false;
+};
+
+// The runs of each obstacle loop (material on its left) that lie on steep walls, in the loop's
+// direction; a loop steep all round stays closed.
+std::vector<Contour> steepRuns(const std::vector<geom::Region>& obstacle, const geom::RegionIndex& higher, double reach,
+                               double tol)
+{
+    std::vector<Contour> out;
+    const auto runsOf = [&](const geom::Profile& loop) {
+        const std::vector<Vec2> pts = geom::discretize(loop, tol / 8);
+        const std::size_t n = pts.size();
+        if (n < 3)
+            return;
+        std::vector<char> steep(n);
+        for (std::size_t i = 0; i < n; ++i) {
+            const Vec2 t = pts[(i + 1) % n] - pts[(i + n - 1) % n];
+            const double len = std::hypot(t.x, t.y);
+            const Vec2 inward = len > 0 ? Vec2{-t.y / len, t.x / len} : Vec2{0, 0};
+            steep[i] = std::isinf(reach) || !higher.contains(pts[i] + inward * reach);
+        }
+        if (std::all_of(steep.begin(), steep.end(), [](char s) { return s; })) {
+            out.push_back({pts, true});
+            return;
+        }
+        // Start after a shallow point so that no run wraps round the loop's start.
+        std::size_t first = 0;
+        while (steep[first])
+            ++first;
+        Contour run;
+        for (std::size_t k = 1; k <= n; ++k) {
+            const std::size_t i = (first + k) % n;
+            if (steep[i]) {
+                run.points.push_back(pts[i]);
+                continue;
+            }
+            if (run.points.size() >= 2)
+                out.push_back(run);
+            run.points.clear();
+        }
+    };
+    for (const geom::Region& region : obstacle) {
+        runsOf(region.outer);
+        for (const geom::Profile& hole : region.holes)
+            runsOf(hole);
+    }
+    return out;
+}
+
+}  // namespace
+
+base::Result<OpResult> computeWaterline(const SurfaceInput& input, const WaterlineParams& params,
+                                        const ToolController& tc, int operationIndex, const Progress& progress)
+{
+    const std::string what = "waterline \"" + params.name + "\"";
+    if (base::Status s = check(what, input, params, tc); !s)
+        return s.error();
+    const double tol = params.toleranceMm;
+    const surface::ToolCentreRegions centres(*input.model, tc.tool, {params.stockMm, params.stockMm, tol});
+    const std::vector<geom::Region> area = areaOf(input);
+    const std::vector<double> levels = levelsOf(params, tc.tool);
+    const double dz = std::max(0.05, 5 * tol);
+    const double reach = params.minSlopeDeg > 0 ? dz / std::tan(params.minSlopeDeg * kPi / 180) : INFINITY;
+    const double lead = std::min(tc.tool.diameterMm / 4, 2.0);
+    const Feed finishing = feedOf(tc, toolpath::FeedKind::Finishing);
+    const Feed plunge = feedOf(tc, toolpath::FeedKind::Plunge);
+
+    OpResult result;
+    pocket::PathWriter out(result.toolpath, operationIndex);
+    out.add(sectionBegin(params.name, "waterline", tc, {toolpath::FeedKind::Finishing}));
+    for (std::size_t l = 0; l < levels.size(); ++l) {
+        const double z = levels[l];
+        const std::vector<geom::Region> obstacle = centres.obstacle(z);
+        const std::vector<geom::Region> higherObstacle = centres.obstacle(z + dz);
+        const geom::RegionIndex higher(higherObstacle);
+        const std::vector<geom::Region> free = centres.at(z, geom::offsetRegions(area, tc.tool.diameterMm, tol));
+        const geom::RegionIndex freeIndex(free);
+        for (Contour& c : steepRuns(obstacle, higher, reach, tol)) {
+            // Material on the left as found; climb milling keeps it on the right.
+            if (params.climb)
+                std::reverse(c.points.begin(), c.points.end());
+            if (c.closed)
+                c.points.push_back(c.points.front());
+            std::vector<std::vector<Vec2>> pieces = geom::clipPolylines({c.points}, area, tol);
+            for (const std::vector<Vec2>& piece : pieces) {
+                if (piece.size() < 2)
+                    continue;
+                // Leads off the material (to the left of travel in climb, right otherwise) where clear.
+                const auto leadPoint = [&](Vec2 at, Vec2 dir) {
+                    const double len = std::hypot(dir.x, dir.y);
+                    const double side = params.climb ? 1 : -1;
+                    const Vec2 q = at + Vec2{-dir.y, dir.x} * (side * lead / len);
+                    return len > 0 && freeIndex.segmentInside(at, q) ? q : at;
+                };
+                const Vec2 in = leadPoint(piece.front(), piece[1] - piece[0]);
+                const Vec2 outP = leadPoint(piece.back(), piece.back() - piece[piece.size() - 2]);
+                if (out.hasPosition())
+                    out.rapid({out.position().x, out.position().y, params.heights.safeZ});
+                else
+                    out.rapid({in.x, in.y, params.heights.clearanceZ});
+                out.rapid({in.x, in.y, params.heights.safeZ});
+                out.feed({in.x, in.y, z}, plunge);
+                for (const Vec2& p : piece)
+                    out.feed({p.x, p.y, z}, finishing);
+                out.feed({outP.x, outP.y, z}, finishing);
+            }
+        }
+        if (!progress.step(double(l + 1) / double(levels.size())))
+            return cancelledError(what);
+    }
+    if (out.hasPosition())
+        out.rapid({out.position().x, out.position().y, params.heights.clearanceZ});
+    else
+        result.warn(what + ": no wall steeper than " + fmt(params.minSlopeDeg) + " degrees between " +
+                    fmt(params.heights.startZ) + " and " + fmt(params.heights.finalZ) + ": nothing to cut");
+    out.add(toolpath::SectionEnd{});
+    result.counts = countMotions(result.toolpath);
+    return result;
+}
+
+}  // namespace camwb::ops

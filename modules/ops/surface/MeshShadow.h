@@ -1,0 +1,49 @@
+// The model's material seen from above, by height: the upward-facing triangles of a closed mesh
+// sorted into height slabs, so that the XY projection of everything above a height (the shadow)
+// and of a horizontal slice band are quick to get. Every vertical line through the solid above h
+// leaves it through an upward triangle above h, so the union of those triangles' parts above h,
+// projected, is exactly the material's projection above h. Clipper integer paths (1 nm units).
+#pragma once
+
+#include "geom/Region.h"
+#include "sim/TriangleMesh.h"
+
+#include <polyclipping/clipper.hpp>
+
+#include <array>
+#include <vector>
+
+namespace camwb::ops::surface {
+
+class MeshShadow {
+public:
+    explicit MeshShadow(const sim::TriangleMesh& model);
+
+    // Projection of the upward triangles' parts with lo <= z <= hi (lo may be -inf, hi +inf), as
+    // positive (counter-clockwise) polygons, not united.
+    ClipperLib::Paths band(double lo, double hi) const;
+    // The united projection of all material at or above h.
+    ClipperLib::Paths above(double h) const;
+    double top() const { return m_top; }
+    double bottom() const { return m_bottom; }
+
+private:
+    using Tri = std::array<base::Vec3, 3>;
+    int slabOf(double z) const;                // slab index (0: the highest), clamped
+    std::vector<Tri> m_tris;                   // upward-facing
+    std::vector<std::vector<int>> m_slabs;     // triangles overlapping each slab
+    std::vector<ClipperLib::Paths> m_shadows;  // m_shadows[j]: united projection above slab j's bottom
+    double m_top = 0, m_bottom = 0, m_slab = 1;
+};
+
+// Regions <-> Clipper paths: loops discretised with chord error `chord` (outer loops counter-
+// clockwise, holes clockwise); a PolyTree's contours fitted back to lines and arcs within `fit`.
+ClipperLib::Paths toPaths(const std::vector<geom::Region>& regions, double chord);
+std::vector<geom::Region> toRegions(const ClipperLib::Paths& paths, double fit);
+ClipperLib::Paths unitePaths(const ClipperLib::Paths& a, const ClipperLib::Paths& b = {});
+ClipperLib::Paths clipPaths(const ClipperLib::Paths& a, const ClipperLib::Paths& b, ClipperLib::ClipType type);
+// Grows positive polygons by `delta` mm with round joins whose chords lie outside the true offset
+// (so the result contains the exact offset), united.
+ClipperLib::Paths growPaths(const ClipperLib::Paths& paths, double delta, double chord);
+
+}  // namespace camwb::ops::surface

@@ -1,0 +1,56 @@
+#include "ops/surface/RestMaterial.h"
+
+#include "ops/surface/MeshShadow.h"
+#include "sim/StockRun.h"
+
+#include "geom/ClipperAdapter.h"
+
+#include <cmath>
+
+namespace camwb::ops::surface {
+
+std::vector<geom::Region> restRegion(const sim::HeightField& rest, double level, double reach,
+                                     const std::vector<geom::Region>& toolCentre, double tolerance)
+{
+    // Each row's runs of columns still above the level, as rectangles of their cells.
+    const base::Box3 box = rest.bounds();
+    const double dx = (box.max.x - box.min.x) / rest.columnsX(), dy = (box.max.y - box.min.y) / rest.columnsY();
+    const auto at = [](double x, double y) {
+        return ClipperLib::IntPoint{ClipperLib::cInt(std::llround(x * geom::kClipperScale)),
+                                    ClipperLib::cInt(std::llround(y * geom::kClipperScale))};
+    };
+    ClipperLib::Paths cells;
+    for (int j = 0; j < rest.columnsY(); ++j) {
+        for (int i = 0; i < rest.columnsX();) {
+            if (!(rest.top(i, j) > level + tolerance)) {
+                ++i;
+                continue;
+            }
+            const int first = i;
+            while (i < rest.columnsX() && rest.top(i, j) > level + tolerance)
+                ++i;
+            const double x0 = rest.columnX(first) - dx / 2, x1 = rest.columnX(i - 1) + dx / 2;
+            const double y0 = rest.columnY(j) - dy / 2, y1 = rest.columnY(j) + dy / 2;
+            cells.push_back({at(x0, y0), at(x1, y0), at(x1, y1), at(x0, y1)});
+        }
+    }
+    if (cells.empty())
+        return {};
+    const ClipperLib::Paths near = growPaths(unitePaths(cells), reach + tolerance, tolerance / 4);
+    return toRegions(clipPaths(toPaths(toolCentre, tolerance / 4), near, ClipperLib::ctIntersection), tolerance / 2);
+}
+
+StockFigures simulateOn(const sim::HeightField& rest, const toolpath::Toolpath& section, const toolpath::Tool& tool)
+{
+    toolpath::Toolpath program;
+    program.add(toolpath::ToolChange{tool});
+    program.add(toolpath::Spindle{1000, true});
+    program.append(section);
+    const sim::MoveList moves = sim::buildMoves(program);
+    sim::HeightField stock(rest);
+    sim::StockRun run(moves, stock);
+    run.cutTo(moves.moves.size());
+    return {run.cuttingMm(), run.airCuttingMm(), run.removedMm3()};
+}
+
+}  // namespace camwb::ops::surface

@@ -1,0 +1,86 @@
+// The obstacle at a level, tip at z (zt = z - bottom stock): material above zt + H (H: the height
+// where the tool reaches its full radius; 0 for a flat end mill) grown by the full radius, and
+// the material within [zt, zt + H] in thin bands, each grown by the tool's radius at the band's
+// top (never less than at any point of the band, so never a gouge). The error is on the safe
+// side: the tool may stand up to one band (max(tolerance, H / 40): 0.075 mm for a 6 mm ball)
+// higher than it must (each band costs an offset and a union per level: 40 bounds the time). Every
+// offset is grown by the fit and chord errors so that the regions handed back stay clear.
+#include "ops/surface/ToolCentre.h"
+
+#include "ops/surface/MeshShadow.h"
+#include "sim/ToolShape.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace camwb::ops::surface {
+
+struct ToolCentreRegions::Data {
+    Data(const sim::TriangleMesh& model, const toolpath::Tool& tool, const ToolCentreSettings& s) :
+        shadow(model),
+        shape(tool),
+        settings(s)
+    {
+    }
+    MeshShadow shadow;
+    sim::ToolShape shape;
+    ToolCentreSettings settings;
+    double radius = 0, fullHeight = 0, band = 0;
+
+    double tol() const { return std::max(settings.toleranceMm, 1e-4); }
+    // The tool's radius at height dz (>= 0) above its tip.
+    double reach(double dz) const { return dz >= fullHeight ? radius : std::min(radius, shape.profileRadius(dz)); }
+    ClipperLib::Paths obstacle(double z) const;
+};
+
+ToolCentreRegions::ToolCentreRegions(const sim::TriangleMesh& model, const toolpath::Tool& tool,
+                                     const ToolCentreSettings& settings) :
+    m_data(std::make_unique<Data>(model, tool, settings))
+{
+    Data& d = *m_data;
+    d.radius = d.shape.radiusMm();
+    if (!d.shape.flatBottomed()) {
+        // The lowest height where the cutter is at its full radius (ball: R, bull-nose: its corner).
+        double lo = 0, hi = std::max(d.shape.fluteLengthMm(), d.radius);
+        for (int i = 0; i < 60; ++i) {
+            const double mid = (lo + hi) / 2;
+            (d.shape.profileRadius(mid) >= d.radius - 1e-9 ? hi : lo) = mid;
+        }
+        d.fullHeight = hi;
+    }
+    d.band = settings.bandMm > 0 ? std::max(settings.bandMm, 1e-4) : std::max(d.tol(), d.fullHeight / 40);
+}
+
+ToolCentreRegions::~ToolCentreRegions() = default;
+
+ClipperLib::Paths ToolCentreRegions::Data::obstacle(double z) const
+{
+    // Material closer above the tip than a quarter tolerance does not count: a flat floor exactly at
+    // the tip's level (floats of a tessellation) is touched, not cut.
+    const double tip = z - settings.bottomStockMm;
+    const double ignore = tol() / 4, chord = tol() / 4, fit = tol() / 2;
+    const double grow = settings.sideStockMm + fit;
+    ClipperLib::Paths all = growPaths(shadow.above(tip + std::max(fullHeight, ignore)), radius + grow, chord);
+    for (double lo = tip; lo < tip + fullHeight; lo += band) {
+        const double hi = std::min(lo + band, tip + fullHeight);
+        ClipperLib::Paths pieces = shadow.band(std::max(lo, tip + ignore), hi);
+        if (pieces.empty())
+            continue;
+        ClipperLib::Paths grown = growPaths(pieces, reach(hi - tip) + grow, chord);
+        all.insert(all.end(), grown.begin(), grown.end());
+    }
+    return unitePaths(all);
+}
+
+std::vector<geom::Region> ToolCentreRegions::at(double z, const std::vector<geom::Region>& area) const
+{
+    const double tol = m_data->tol();
+    return toRegions(clipPaths(toPaths(area, tol / 4), m_data->obstacle(z), ClipperLib::ctDifference), tol / 2);
+}
+
+std::vector<geom::Region> ToolCentreRegions::obstacle(double z) const
+{
+    return toRegions(m_data->obstacle(z), m_data->tol() / 2);
+}
+
+}  // namespace camwb::ops::surface

@@ -104,7 +104,7 @@ std::vector<Contour> steepRuns(const std::vector<geom::Region>& obstacle, const 
             const Vec2 t = pts[(i + 1) % n] - pts[(i + n - 1) % n];
             const double len = std::hypot(t.x, t.y);
             const Vec2 inward = len > 0 ? Vec2{-t.y / len, t.x / len} : Vec2{0, 0};
-            steep[i] = std::isinf(reach) || !higher.contains(pts[i] + inward * reach);
+            steep[i] = std::isinf(reach) || higher.contains(pts[i] + inward * reach);
         }
         if (std::all_of(steep.begin(), steep.end(), [](char s) { return s; })) {
             out.push_back({pts, true});
@@ -143,24 +143,29 @@ base::Result<OpResult> computeWaterline(const SurfaceInput& input, const Waterli
     if (base::Status s = check(what, input, params, tc); !s)
         return s.error();
     const double tol = params.toleranceMm;
-    const surface::ToolCentreRegions centres(*input.model, tc.tool, {params.stockMm, params.stockMm, tol});
+    // Bands of the tolerance: a contour stands at most that much off the wall (finishing).
+    const surface::ToolCentreRegions centres(*input.model, tc.tool, {params.stockMm, params.stockMm, tol, tol});
+    // The contour a little higher only tells steep from shallow: the default (coarser) bands do.
+    const surface::ToolCentreRegions coarse(*input.model, tc.tool, {params.stockMm, params.stockMm, tol});
     const std::vector<geom::Region> area = areaOf(input);
     const std::vector<double> levels = levelsOf(params, tc.tool);
-    const double dz = std::max(0.05, 5 * tol);
+    const std::vector<geom::Region> grownArea = geom::offsetRegions(area, tc.tool.diameterMm, tol);
+    const double dz = std::max(0.25, 10 * tol);
     const double reach = params.minSlopeDeg > 0 ? dz / std::tan(params.minSlopeDeg * kPi / 180) : INFINITY;
     const double lead = std::min(tc.tool.diameterMm / 4, 2.0);
     const Feed finishing = feedOf(tc, toolpath::FeedKind::Finishing);
     const Feed plunge = feedOf(tc, toolpath::FeedKind::Plunge);
+    const Feed exit = feedOf(tc, toolpath::FeedKind::Exit);
 
     OpResult result;
     pocket::PathWriter out(result.toolpath, operationIndex);
-    out.add(sectionBegin(params.name, "waterline", tc, {toolpath::FeedKind::Finishing}));
+    out.add(sectionBegin(params.name, "waterline", tc, {toolpath::FeedKind::Finishing, toolpath::FeedKind::Exit}));
     for (std::size_t l = 0; l < levels.size(); ++l) {
         const double z = levels[l];
         const std::vector<geom::Region> obstacle = centres.obstacle(z);
-        const std::vector<geom::Region> higherObstacle = centres.obstacle(z + dz);
+        const std::vector<geom::Region> higherObstacle = coarse.obstacle(z + dz);
         const geom::RegionIndex higher(higherObstacle);
-        const std::vector<geom::Region> free = centres.at(z, geom::offsetRegions(area, tc.tool.diameterMm, tol));
+        const std::vector<geom::Region> free = geom::subtract(grownArea, obstacle, tol);
         const geom::RegionIndex freeIndex(free);
         for (Contour& c : steepRuns(obstacle, higher, reach, tol)) {
             // Material on the left as found; climb milling keeps it on the right.
@@ -189,7 +194,7 @@ base::Result<OpResult> computeWaterline(const SurfaceInput& input, const Waterli
                 out.feed({in.x, in.y, z}, plunge);
                 for (const Vec2& p : piece)
                     out.feed({p.x, p.y, z}, finishing);
-                out.feed({outP.x, outP.y, z}, finishing);
+                out.feed({outP.x, outP.y, z}, exit);
             }
         }
         if (!progress.step(double(l + 1) / double(levels.size())))

@@ -5,6 +5,7 @@
 
 #include "geom/ClipperAdapter.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace camwb::ops::surface {
@@ -36,8 +37,18 @@ std::vector<geom::Region> restRegion(const sim::HeightField& rest, double level,
     }
     if (cells.empty())
         return {};
-    const ClipperLib::Paths near = growPaths(unitePaths(cells), reach + tolerance, tolerance / 4);
-    return toRegions(clipPaths(toPaths(toolCentre, tolerance / 4), near, ClipperLib::ctIntersection), tolerance / 2);
+    // Only material the tool can reach at this level counts: columns over the part (its walls,
+    // with the stock left on them) stand above the level too, but lie outside the footprint of
+    // the tool-centre region (less a column's half diagonal, so that a cell the footprint only
+    // grazes at the wall's stock does not count).
+    const ClipperLib::Paths centre = toPaths(toolCentre, tolerance / 4);
+    const double margin = 0.75 * std::max(dx, dy) + tolerance;
+    const ClipperLib::Paths reachable = growPaths(centre, std::max(reach - margin, tolerance), tolerance / 4);
+    const ClipperLib::Paths material = clipPaths(unitePaths(cells), reachable, ClipperLib::ctIntersection);
+    if (material.empty())
+        return {};
+    const ClipperLib::Paths near = growPaths(material, reach + tolerance, tolerance / 4);
+    return toRegions(clipPaths(centre, near, ClipperLib::ctIntersection), tolerance / 2);
 }
 
 StockFigures simulateOn(const sim::HeightField& rest, const toolpath::Toolpath& section, const toolpath::Tool& tool)

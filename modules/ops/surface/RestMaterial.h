@@ -11,7 +11,8 @@
 namespace camwb::ops::surface {
 
 // The part of `toolCentre` within `reach` (the tool radius) of a column whose top is above
-// `level` + `tolerance`: where the tool centre must go to cut what is left at this level.
+// `level` + `tolerance` and that the tool can reach from `toolCentre` at all (not the part's own
+// walls): where the tool centre must go to cut what is left at this level.
 std::vector<geom::Region> restRegion(const sim::HeightField& rest, double level, double reach,
                                      const std::vector<geom::Region>& toolCentre, double tolerance);
 

@@ -2,8 +2,9 @@
 // where the tool reaches its full radius; 0 for a flat end mill) grown by the full radius, and
 // the material within [zt, zt + H] in thin bands, each grown by the tool's radius at the band's
 // top (never less than at any point of the band, so never a gouge). The error is on the safe
-// side: the tool may stand up to one band (max(tolerance, H / 40): 0.075 mm for a 6 mm ball)
-// higher than it must (each band costs an offset and a union per level: 40 bounds the time). Every
+// side: the tool may stand up to one band (max(tolerance, H / 40): 0.075 mm for a 6 mm ball,
+// ToolCentreSettings::bandMm for finishing) off the model along the contact normal (each band costs
+// an offset and a union per level: 40 bounds the time). Every
 // offset is grown by the fit and chord errors so that the regions handed back stay clear.
 #include "ops/surface/ToolCentre.h"
 
@@ -31,6 +32,16 @@ struct ToolCentreRegions::Data {
     // The tool's radius at height dz (>= 0) above its tip.
     double reach(double dz) const { return dz >= fullHeight ? radius : std::min(radius, shape.profileRadius(dz)); }
     ClipperLib::Paths obstacle(double z) const;
+    // The band's height from dz: material in it stands at most `band` off the tool along the
+    // normal where the cutter would touch it (a vertical lift t moves the cutter t cos(a) off a
+    // contact whose normal is a from the axis, and the cutter's slope there is tan(a) = dz/dr), so
+    // bands thicken as the cutter steepens towards its full radius (at most 20 times).
+    double bandAt(double dz) const
+    {
+        const double h = 1e-3, slope = (reach(dz + h) - reach(dz)) / h;  // dr/dz
+        const double cosA = slope / std::sqrt(slope * slope + 1);
+        return band / std::max(cosA, 0.05);
+    }
 };
 
 ToolCentreRegions::ToolCentreRegions(const sim::TriangleMesh& model, const toolpath::Tool& tool,
@@ -60,16 +71,26 @@ ClipperLib::Paths ToolCentreRegions::Data::obstacle(double z) const
     const double tip = z - settings.bottomStockMm;
     const double ignore = tol() / 4, chord = tol() / 4, fit = tol() / 2;
     const double grow = settings.sideStockMm + fit;
-    ClipperLib::Paths all = growPaths(shadow.above(tip + std::max(fullHeight, ignore)), radius + grow, chord);
-    for (double lo = tip; lo < tip + fullHeight; lo += band) {
-        const double hi = std::min(lo + band, tip + fullHeight);
+    std::vector<ClipperLib::Paths> parts{
+        growPaths(shadow.above(tip + std::max(fullHeight, ignore)), radius + grow, chord)};
+    for (double lo = tip, hi = tip; lo < tip + fullHeight; lo = hi) {
+        hi = std::min(lo + bandAt(lo - tip), tip + fullHeight);
         ClipperLib::Paths pieces = shadow.band(std::max(lo, tip + ignore), hi);
         if (pieces.empty())
             continue;
-        ClipperLib::Paths grown = growPaths(pieces, reach(hi - tip) + grow, chord);
-        all.insert(all.end(), grown.begin(), grown.end());
+        parts.push_back(growPaths(pieces, reach(hi - tip) + grow, chord));
     }
-    return unitePaths(all);
+    // United in pairs: the bands' grown rings overlap their neighbours almost wholly, and one
+    // union of them all would cross every ring with every other.
+    while (parts.size() > 1) {
+        std::vector<ClipperLib::Paths> merged;
+        for (std::size_t i = 0; i + 1 < parts.size(); i += 2)
+            merged.push_back(unitePaths(parts[i], parts[i + 1]));
+        if (parts.size() % 2)
+            merged.push_back(std::move(parts.back()));
+        parts = std::move(merged);
+    }
+    return unitePaths(parts.front());
 }
 
 std::vector<geom::Region> ToolCentreRegions::at(double z, const std::vector<geom::Region>& area) const

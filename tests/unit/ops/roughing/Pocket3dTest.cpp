@@ -107,7 +107,11 @@ TEST(Pocket3d, FlatRoughingOfRandomPartsNeitherGougesNorLeavesWhatTheToolReaches
     for (int trial = 0; trial < 3; ++trial) {
         SCOPED_TRACE("part " + std::to_string(trial));
         const Part part = makePart(randomPart(rng), {20});
-        const Pocket3dParams p = roughParams();
+        // Offset rings at half the diameter, zig-zag at 70 % and rings at 90 % (clean-up needed).
+        Pocket3dParams p = roughParams();
+        p.pattern = trial == 1 ? PocketPattern::ZigZag : PocketPattern::Offset;
+        p.zigZagAngleDeg = 30;
+        p.stepoverPercent = trial == 0 ? 50 : trial == 1 ? 70 : 90;
         const ToolController tc = toolController("flat", 8);
         const OpResult r = rough(part, p, tc);
         ASSERT_FALSE(r.toolpath.empty());
@@ -115,6 +119,23 @@ TEST(Pocket3d, FlatRoughingOfRandomPartsNeitherGougesNorLeavesWhatTheToolReaches
         const StockCheck cut = cutThrough(r.toolpath, tc.tool, part.mesh, part.input.stock, 0.25);
         EXPECT_LE(cut.maxGougeMm, 0.02);
         EXPECT_EQ(missedColumns(*cut.stock, 4, p, part.input.stock), 0);
+    }
+}
+
+TEST(Pocket3d, ALevelJustBelowAnUnlistedFloorKeepsTheBallOnIt)
+{
+    // The floor at 12.05 is not among the flat levels; the 1 mm steps put a level at 12, 0.05 mm
+    // below it: the ball must stay on the floor, not sink 0.05 mm into it (the bands near the tip).
+    const Part part = makePart(draftedCavity(7.95, 10, 4, 0), {20});
+    Pocket3dParams p = roughParams(12);
+    p.stepDownMm = 1;
+    p.sideStockMm = 0;
+    p.bottomStockMm = 0;
+    for (const auto& [kind, corner] : {std::pair{std::string("ball"), 0.0}, {std::string("bull"), 1.0}}) {
+        SCOPED_TRACE(kind);
+        const ToolController tc = toolController(kind, 6, corner);
+        const OpResult r = rough(part, p, tc);
+        EXPECT_LE(deepestPenetration(r.toolpath, tc.tool, part.mesh, 0, 0), kTol);
     }
 }
 

@@ -1,0 +1,151 @@
+// Waterline on a sphere standing out of a plate, judged against the analytic answer: every
+// contour's ball centre lies on the sphere grown by the tool radius (within the tolerance), the
+// scallop between neighbouring contours (the two balls' crossing nearest the sphere's centre)
+// stays below the requested height, contours run only where the sphere is steeper than the slope
+// limit and cover all of it; the tool's shape against the mesh; the parameter errors.
+#include "ops/WaterlineOp.h"
+
+#include "RoughingTestUtil.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <map>
+#include <numbers>
+
+namespace camwb::ops {
+namespace {
+
+using namespace test;
+
+constexpr double kSphereR = 15, kCentreZ = 3, kPlate = 5;
+
+struct Contours {
+    std::map<double, std::vector<base::Vec3>> byLevel;  // finishing moves' end points by Z
+};
+
+Contours contoursOf(const OpResult& r)
+{
+    Contours c;
+    for (const toolpath::Record& rec : r.toolpath.records())
+        if (const auto* l = std::get_if<toolpath::Linear>(&rec); l && l->feedKind == toolpath::FeedKind::Finishing)
+            c.byLevel[std::round(l->to.z * 1e6) / 1e6].push_back(l->to);
+    return c;
+}
+
+WaterlineParams sphereParams()
+{
+    WaterlineParams p;
+    p.heights = {30, 25, 17.5, kPlate + 0.5};
+    p.scallopMm = 0.02;
+    p.maxStepDownMm = 1;
+    p.minSlopeDeg = 30;
+    p.toleranceMm = 0.02;
+    return p;
+}
+
+TEST(Waterline, SphereContoursTouchItLeaveAtMostTheScallopAndOnlyOnSteepWalls)
+{
+    const sim::TriangleMesh mesh = heightMesh(sphereOnPlate(kPlate, kSphereR, kCentreZ), 0, 0, 60, 50, 100, 0);
+    SurfaceInput input;
+    input.model = &mesh;
+    input.stock = box3({0, 0, 0}, {60, 50, 20});
+    const ToolController tc = toolController("ball", 6);
+    const double R = 3;
+    const WaterlineParams p = sphereParams();
+    base::Result<OpResult> r = computeWaterline(input, p, tc, 0);
+    ASSERT_TRUE(r.ok()) << r.error().message;
+    EXPECT_LE(deepestPenetration(r.value().toolpath, tc.tool, mesh, 0, 0), p.toleranceMm);
+
+    // Per level: the contour's distance from the axis (mean), its spread, and the slope there.
+    struct Level {
+        double z, rho, slopeDeg;
+    };
+    std::vector<Level> levels;
+    for (const auto& [z, pts] : contoursOf(r.value()).byLevel) {
+        double lo = 1e9, hi = 0, sum = 0;
+        for (const base::Vec3& q : pts) {
+            const double rho = std::hypot(q.x - 30, q.y - 25);
+            lo = std::min(lo, rho), hi = std::max(hi, rho), sum += rho;
+        }
+        const double rho = sum / pts.size();
+        // The ball's centre on the grown sphere: rho^2 + (z + R - centre)^2 = (15 + 3)^2, within the
+        // tolerance and the margins kept for fitting (1.75 tolerance along the normal, more across
+        // on shallower walls) and the facets' sagitta.
+        const double expected = std::sqrt(std::pow(kSphereR + R, 2) - std::pow(z + R - kCentreZ, 2));
+        const double slope = std::acos((z + R - kCentreZ) / (kSphereR + R));
+        EXPECT_NEAR(rho, expected, 1.75 * p.toleranceMm / std::sin(slope) + 0.005) << "level " << z;
+        EXPECT_LT(hi - lo, 0.12) << "level " << z;
+        // Steep or shallow is told from the contour 0.25 mm higher on coarser bands: a few degrees.
+        EXPECT_GE(slope * 180 / std::numbers::pi, p.minSlopeDeg - 5) << "a contour on a shallow part, level " << z;
+        levels.push_back({z, rho, slope * 180 / std::numbers::pi});
+    }
+    ASSERT_GE(levels.size(), 10u);
+    // All of the steep band is covered: from the slope limit down to the lowest level.
+    EXPECT_LT(levels.back().slopeDeg, p.minSlopeDeg + 3);
+    EXPECT_LT(levels.front().z, p.heights.finalZ + 0.5);
+    // Scallop between neighbours: the balls' centres c1, c2 lie on a circle round the sphere's
+    // centre, so their crossing nearest to it is on the bisector through it.
+    for (std::size_t i = 1; i < levels.size(); ++i) {
+        const base::Vec2 c1{levels[i - 1].rho, levels[i - 1].z + R - kCentreZ};
+        const base::Vec2 c2{levels[i].rho, levels[i].z + R - kCentreZ};
+        const double a = std::hypot(c1.x - c2.x, c1.y - c2.y) / 2;
+        ASSERT_LT(a, R);
+        const double mid = std::hypot((c1.x + c2.x) / 2, (c1.y + c2.y) / 2);
+        // Above the sphere the two balls actually touch (the contours' own stand-off is judged
+        // above, against the exact radius).
+        const double touched = (std::hypot(c1.x, c1.y) + std::hypot(c2.x, c2.y)) / 2 - R;
+        const double scallop = mid - std::sqrt(R * R - a * a) - touched;
+        EXPECT_LE(scallop, p.scallopMm) << "between levels " << levels[i - 1].z << " and " << levels[i].z;
+    }
+}
+
+TEST(Waterline, FlatToolStepsDownByTheStairItLeaves)
+{
+    const sim::TriangleMesh mesh = heightMesh(draftedCavity(8, 20, 4, 0), 0, 0, 60, 50, 100, 0);
+    SurfaceInput input;
+    input.model = &mesh;
+    input.stock = box3({0, 0, 0}, {60, 50, 21});
+    const ToolController tc = toolController("flat", 6);
+    WaterlineParams p;
+    p.heights = {30, 25, 19.5, 12.5};
+    p.scallopMm = 0.05;
+    p.minSlopeDeg = 45;
+    base::Result<OpResult> r = computeWaterline(input, p, tc, 0);
+    ASSERT_TRUE(r.ok()) << r.error().message;
+    EXPECT_LE(deepestPenetration(r.value().toolpath, tc.tool, mesh, 0, 0), p.toleranceMm);
+    const Contours c = contoursOf(r.value());
+    ASSERT_GE(c.byLevel.size(), 2u);
+    // On a wall 70 degrees from horizontal the stair is step * cos(45) at the slope limit.
+    double prev = NAN;
+    for (const auto& [z, pts] : c.byLevel) {
+        if (!std::isnan(prev))
+            EXPECT_LE((z - prev) * std::cos(std::numbers::pi / 4), p.scallopMm + 1e-6);
+        prev = z;
+    }
+}
+
+TEST(Waterline, ParameterErrorsAreClear)
+{
+    const sim::TriangleMesh mesh = heightMesh(sphereOnPlate(kPlate, 10, kCentreZ), 0, 0, 60, 50, 40, 0);
+    const ToolController tc = toolController("ball", 6);
+    const auto error = [&](const std::function<void(WaterlineParams&, SurfaceInput&)>& change) {
+        WaterlineParams p = sphereParams();
+        SurfaceInput input;
+        input.model = &mesh;
+        input.stock = box3({0, 0, 0}, {60, 50, 20});
+        change(p, input);
+        base::Result<OpResult> r = computeWaterline(input, p, tc, 0);
+        return r.ok() ? std::string("(no error)") : r.error().message;
+    };
+    EXPECT_NE(error([](auto& p, auto&) { p.scallopMm = 0; }).find("scallop height must be positive"),
+              std::string::npos);
+    EXPECT_NE(error([](auto& p, auto&) { p.maxStepDownMm = -1; }).find("step-down"), std::string::npos);
+    EXPECT_NE(error([](auto& p, auto&) { p.minSlopeDeg = 90; }).find("slope limit"), std::string::npos);
+    EXPECT_NE(error([](auto& p, auto&) { p.stockMm = -0.1; }).find("must not be negative"), std::string::npos);
+    EXPECT_NE(error([](auto&, auto& in) { in.model = nullptr; }).find("waterline \"Waterline\": no model"),
+              std::string::npos);
+}
+
+}  // namespace
+}  // namespace camwb::ops

@@ -81,6 +81,17 @@ TEST(Waterline, SphereContoursTouchItLeaveAtMostTheScallopAndOnlyOnSteepWalls)
         levels.push_back({z, rho, slope * 180 / std::numbers::pi});
     }
     ASSERT_GE(levels.size(), 10u);
+    // Climb milling round a boss: material on the right, so clockwise seen from above.
+    double turning = 0;
+    base::Vec2 prev{NAN, NAN};
+    for (const toolpath::Record& rec : r.value().toolpath.records())
+        if (const auto* l = std::get_if<toolpath::Linear>(&rec); l && l->feedKind == toolpath::FeedKind::Finishing) {
+            const base::Vec2 at{l->to.x - 30, l->to.y - 25};
+            if (!std::isnan(prev.x))
+                turning += prev.cross(at);
+            prev = at;
+        }
+    EXPECT_LT(turning, 0);
     // All of the steep band is covered: from the slope limit down to the lowest level.
     EXPECT_LT(levels.back().slopeDeg, p.minSlopeDeg + 3);
     EXPECT_LT(levels.front().z, p.heights.finalZ + 0.5);

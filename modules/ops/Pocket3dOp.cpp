@@ -55,11 +55,8 @@ base::Status check(const std::string& what, const SurfaceInput& in, const Pocket
         return s;
     if (base::Status s = checkCuttingLength(what, p.heights, tc.tool); !s)
         return s;
-    if (!in.model || in.model->empty())
-        return opError(what, "no model to rough (the part's mesh is empty)");
-    if (in.boundary.empty() &&
-        (in.stock.empty || !(in.stock.max.x > in.stock.min.x) || !(in.stock.max.y > in.stock.min.y)))
-        return opError(what, "no boundary and no stock box: nowhere to clear");
+    if (base::Status s = surface::checkSurfaceInput(what, in, "rough"); !s)
+        return s;
     const double d = tc.tool.diameterMm;
     const double stepover = p.stepover(d);
     if (!(stepover > 0) || stepover > d + 1e-9)
@@ -101,18 +98,6 @@ std::vector<double> levelsOf(const SurfaceInput& in, const Pocket3dParams& p)
         out.push_back(z);
     }
     return out;
-}
-
-std::vector<geom::Region> areaOf(const SurfaceInput& in)
-{
-    if (!in.boundary.empty())
-        return in.boundary;
-    const geom::Vec2 a{in.stock.min.x, in.stock.min.y}, b{in.stock.max.x, in.stock.min.y};
-    const geom::Vec2 c{in.stock.max.x, in.stock.max.y}, d{in.stock.min.x, in.stock.max.y};
-    geom::Region box;
-    box.outer.segments = {geom::Segment::line(a, b), geom::Segment::line(b, c), geom::Segment::line(c, d),
-                          geom::Segment::line(d, a)};
-    return {box};
 }
 
 EntrySettings entrySettings(const Pocket3dParams& p, const ToolController& tc)
@@ -178,7 +163,7 @@ base::Result<OpResult> computePocket3d(const SurfaceInput& input, const Pocket3d
     const surface::ToolCentreRegions centres(*input.model, tc.tool, {params.sideStockMm, params.bottomStockMm, tol});
     if (!progress.step(0.05))
         return cancelledError(what);
-    const std::vector<geom::Region> area = areaOf(input);
+    const std::vector<geom::Region> area = surface::toolCentreArea(input);
     const std::vector<double> levels = levelsOf(input, params);
 
     OpResult result;

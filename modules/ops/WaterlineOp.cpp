@@ -31,11 +31,8 @@ base::Status check(const std::string& what, const SurfaceInput& in, const Waterl
         return s;
     if (base::Status s = checkHeights(what, p.heights); !s)
         return s;
-    if (!in.model || in.model->empty())
-        return opError(what, "no model to finish (the part's mesh is empty)");
-    if (in.boundary.empty() &&
-        (in.stock.empty || !(in.stock.max.x > in.stock.min.x) || !(in.stock.max.y > in.stock.min.y)))
-        return opError(what, "no boundary and no stock box: nowhere to finish");
+    if (base::Status s = surface::checkSurfaceInput(what, in, "finish"); !s)
+        return s;
     if (!(p.scallopMm > 0))
         return opError(what, "scallop height must be positive, got " + fmt(p.scallopMm) + " mm");
     if (!(p.maxStepDownMm > 0))
@@ -69,18 +66,6 @@ std::vector<double> levelsOf(const WaterlineParams& p, const toolpath::Tool& too
     for (double z : stepDownLevels(p.heights.startZ, p.heights.finalZ, stepFor(p, tool)))
         levels.push_back(z);
     return levels;
-}
-
-std::vector<geom::Region> areaOf(const SurfaceInput& in)
-{
-    if (!in.boundary.empty())
-        return in.boundary;
-    const Vec2 a{in.stock.min.x, in.stock.min.y}, b{in.stock.max.x, in.stock.min.y};
-    const Vec2 c{in.stock.max.x, in.stock.max.y}, d{in.stock.min.x, in.stock.max.y};
-    geom::Region box;
-    box.outer.segments = {geom::Segment::line(a, b), geom::Segment::line(b, c), geom::Segment::line(c, d),
-                          geom::Segment::line(d, a)};
-    return {box};
 }
 
 struct Contour {
@@ -147,7 +132,7 @@ base::Result<OpResult> computeWaterline(const SurfaceInput& input, const Waterli
     const surface::ToolCentreRegions centres(*input.model, tc.tool, {params.stockMm, params.stockMm, tol, tol});
     // The contour a little higher only tells steep from shallow: the default (coarser) bands do.
     const surface::ToolCentreRegions coarse(*input.model, tc.tool, {params.stockMm, params.stockMm, tol});
-    const std::vector<geom::Region> area = areaOf(input);
+    const std::vector<geom::Region> area = surface::toolCentreArea(input);
     const std::vector<double> levels = levelsOf(params, tc.tool);
     const std::vector<geom::Region> grownArea = geom::offsetRegions(area, tc.tool.diameterMm, tol);
     const double dz = std::max(0.25, 10 * tol);

@@ -104,4 +104,26 @@ std::vector<geom::Region> ToolCentreRegions::obstacle(double z) const
     return toRegions(m_data->obstacle(z), m_data->tol() / 2);
 }
 
+std::vector<geom::Region> toolCentreArea(const SurfaceInput& in)
+{
+    if (!in.boundary.empty())
+        return in.boundary;
+    const base::Vec2 a{in.stock.min.x, in.stock.min.y}, b{in.stock.max.x, in.stock.min.y};
+    const base::Vec2 c{in.stock.max.x, in.stock.max.y}, d{in.stock.min.x, in.stock.max.y};
+    geom::Region box;
+    box.outer.segments = {geom::Segment::line(a, b), geom::Segment::line(b, c), geom::Segment::line(c, d),
+                          geom::Segment::line(d, a)};
+    return {box};
+}
+
+base::Status checkSurfaceInput(const std::string& what, const SurfaceInput& in, const std::string& verb)
+{
+    if (!in.model || in.model->empty())
+        return opError(what, "no model to " + verb + " (the part's mesh is empty)");
+    const bool box = !in.stock.empty && in.stock.max.x > in.stock.min.x && in.stock.max.y > in.stock.min.y;
+    if (in.boundary.empty() && !box)
+        return opError(what, "no boundary and no stock box: nowhere to " + verb);
+    return base::Status::success();
+}
+
 }  // namespace camwb::ops::surface

@@ -6,6 +6,8 @@
 #pragma once
 
 #include "geom/Region.h"
+#include "ops/OpCommon.h"
+#include "ops/surface/SurfaceInput.h"
 #include "sim/TriangleMesh.h"
 #include "toolpath/ClRecords.h"
 
@@ -40,5 +42,10 @@ private:
     struct Data;
     std::unique_ptr<Data> m_data;
 };
+
+// Where the tool centre may go: the boundary, else the stock box seen from above.
+std::vector<geom::Region> toolCentreArea(const SurfaceInput& input);
+// The model and the area are there ("3D pocket \"P\": no model to rough ..."; `verb`: "rough").
+base::Status checkSurfaceInput(const std::string& what, const SurfaceInput& input, const std::string& verb);
 
 }  // namespace camwb::ops::surface

@@ -10,6 +10,7 @@
 #include "ops/pocket/Cleanup.h"
 #include "ops/pocket/Patterns.h"
 #include "ops/pocket/Program.h"
+#include "ops/surface/Levels.h"
 #include "ops/surface/RestMaterial.h"
 #include "ops/surface/ToolCentre.h"
 
@@ -172,17 +173,24 @@ base::Result<OpResult> computePocket3d(const SurfaceInput& input, const Pocket3d
     LevelWriter writer{params, tc, entrySettings(params, tc), out};
     double top = params.heights.startZ;
     int cleared = 0;
+    // The levels' regions on all cores, then each level cleared in order.
+    std::vector<std::vector<geom::Region>> regions(levels.size());
+    const auto regionAt = [&](std::size_t i) {
+        regions[i] = centres.at(levels[i], area);
+        if (params.restMachining && !regions[i].empty())
+            regions[i] = surface::restRegion(*input.restStock, levels[i], tc.tool.diameterMm / 2, regions[i], tol);
+    };
+    if (!surface::forEachLevel(levels.size(), regionAt, progress, 0.05, 0.6))
+        return cancelledError(what);
     for (std::size_t i = 0; i < levels.size(); ++i) {
-        std::vector<geom::Region> region = centres.at(levels[i], area);
-        if (params.restMachining && !region.empty())
-            region = surface::restRegion(*input.restStock, levels[i], tc.tool.diameterMm / 2, region, tol);
+        const std::vector<geom::Region>& region = regions[i];
         if (!region.empty()) {
             if (!writer.write(region, top, levels[i], progress))
                 return cancelledError(what);
             top = levels[i];
             ++cleared;
         }
-        if (!progress.step(0.05 + 0.9 * double(i + 1) / double(levels.size())))
+        if (!progress.step(0.6 + 0.35 * double(i + 1) / double(levels.size())))
             return cancelledError(what);
     }
     if (cleared == 0 && !params.restMachining)

@@ -10,6 +10,7 @@
 #include "geom/RegionIndex.h"
 #include "geom/RegionOps.h"
 #include "ops/pocket/PathWriter.h"
+#include "ops/surface/Levels.h"
 #include "ops/surface/ToolCentre.h"
 
 #include <algorithm>
@@ -142,48 +143,60 @@ base::Result<OpResult> computeWaterline(const SurfaceInput& input, const Waterli
     const Feed plunge = feedOf(tc, toolpath::FeedKind::Plunge);
     const Feed exit = feedOf(tc, toolpath::FeedKind::Exit);
 
-    OpResult result;
-    pocket::PathWriter out(result.toolpath, operationIndex);
-    out.add(sectionBegin(params.name, "waterline", tc, {toolpath::FeedKind::Finishing, toolpath::FeedKind::Exit}));
-    for (std::size_t l = 0; l < levels.size(); ++l) {
+    // Each level's passes on all cores (they depend only on the model), then written in order.
+    struct Pass {
+        std::vector<Vec2> points;
+        Vec2 in, out;  // lead in and out: off the material where that stays clear, else the ends
+    };
+    std::vector<std::vector<Pass>> passes(levels.size());
+    const auto passesAt = [&](std::size_t l) {
         const double z = levels[l];
         const std::vector<geom::Region> obstacle = centres.obstacle(z);
         const std::vector<geom::Region> higherObstacle = coarse.obstacle(z + dz);
         const geom::RegionIndex higher(higherObstacle);
         const std::vector<geom::Region> free = geom::subtract(grownArea, obstacle, tol);
         const geom::RegionIndex freeIndex(free);
+        // Leads off the material (to the left of travel in climb, right otherwise) where clear.
+        const auto leadPoint = [&](Vec2 at, Vec2 dir) {
+            const double len = std::hypot(dir.x, dir.y);
+            const double side = params.climb ? 1 : -1;
+            const Vec2 q = at + Vec2{-dir.y, dir.x} * (side * lead / len);
+            return len > 0 && freeIndex.segmentInside(at, q) ? q : at;
+        };
         for (Contour& c : steepRuns(obstacle, higher, reach, tol)) {
             // Material on the left as found; climb milling keeps it on the right.
             if (params.climb)
                 std::reverse(c.points.begin(), c.points.end());
             if (c.closed)
                 c.points.push_back(c.points.front());
-            std::vector<std::vector<Vec2>> pieces = geom::clipPolylines({c.points}, area, tol);
-            for (const std::vector<Vec2>& piece : pieces) {
+            for (std::vector<Vec2>& piece : geom::clipPolylines({c.points}, area, tol)) {
                 if (piece.size() < 2)
                     continue;
-                // Leads off the material (to the left of travel in climb, right otherwise) where clear.
-                const auto leadPoint = [&](Vec2 at, Vec2 dir) {
-                    const double len = std::hypot(dir.x, dir.y);
-                    const double side = params.climb ? 1 : -1;
-                    const Vec2 q = at + Vec2{-dir.y, dir.x} * (side * lead / len);
-                    return len > 0 && freeIndex.segmentInside(at, q) ? q : at;
-                };
                 const Vec2 in = leadPoint(piece.front(), piece[1] - piece[0]);
-                const Vec2 outP = leadPoint(piece.back(), piece.back() - piece[piece.size() - 2]);
-                if (out.hasPosition())
-                    out.rapid({out.position().x, out.position().y, params.heights.safeZ});
-                else
-                    out.rapid({in.x, in.y, params.heights.clearanceZ});
-                out.rapid({in.x, in.y, params.heights.safeZ});
-                out.feed({in.x, in.y, z}, plunge);
-                for (const Vec2& p : piece)
-                    out.feed({p.x, p.y, z}, finishing);
-                out.feed({outP.x, outP.y, z}, exit);
+                const Vec2 out = leadPoint(piece.back(), piece.back() - piece[piece.size() - 2]);
+                passes[l].push_back({std::move(piece), in, out});
             }
         }
-        if (!progress.step(double(l + 1) / double(levels.size())))
-            return cancelledError(what);
+    };
+    if (!surface::forEachLevel(levels.size(), passesAt, progress, 0, 0.95))
+        return cancelledError(what);
+
+    OpResult result;
+    pocket::PathWriter out(result.toolpath, operationIndex);
+    out.add(sectionBegin(params.name, "waterline", tc, {toolpath::FeedKind::Finishing, toolpath::FeedKind::Exit}));
+    for (std::size_t l = 0; l < levels.size(); ++l) {
+        const double z = levels[l];
+        for (const Pass& pass : passes[l]) {
+            if (out.hasPosition())
+                out.rapid({out.position().x, out.position().y, params.heights.safeZ});
+            else
+                out.rapid({pass.in.x, pass.in.y, params.heights.clearanceZ});
+            out.rapid({pass.in.x, pass.in.y, params.heights.safeZ});
+            out.feed({pass.in.x, pass.in.y, z}, plunge);
+            for (const Vec2& p : pass.points)
+                out.feed({p.x, p.y, z}, finishing);
+            out.feed({pass.out.x, pass.out.y, z}, exit);
+        }
     }
     if (out.hasPosition())
         out.rapid({out.position().x, out.position().y, params.heights.clearanceZ});

@@ -9,6 +9,7 @@
 
 #include <gtest/gtest.h>
 
+#include <atomic>
 #include <cmath>
 #include <numbers>
 #include <set>
@@ -224,6 +225,34 @@ TEST(Pocket3d, RestRoughingAfterABigToolCutsLittleAirAndReachesTheCorners)
     EXPECT_EQ(missedColumns(*afterRest.stock, 2, p, part.input.stock), 0);
     EXPECT_LT(afterRest.airMm, 0.25 * afterFull.airMm) << afterRest.airMm << " vs " << afterFull.airMm;
     EXPECT_LT(afterRest.cuttingMm + afterRest.airMm, 0.5 * (afterFull.cuttingMm + afterFull.airMm));
+}
+
+TEST(Pocket3d, TheToolCentreStaysInTheBoundaryAndCancellingGivesNothing)
+{
+    Part part = makePart(draftedCavity(6, 10, 3, 1), {20, 14});
+    geom::Region box;
+    const geom::Vec2 a{15, 12}, b{45, 12}, c{45, 38}, d{15, 38};
+    box.outer.segments = {geom::Segment::line(a, b), geom::Segment::line(b, c), geom::Segment::line(c, d),
+                          geom::Segment::line(d, a)};
+    part.input.boundary = {box};
+    const Pocket3dParams p = roughParams(13);
+    const ToolController tc = toolController("flat", 6);
+    const OpResult r = rough(part, p, tc);
+    int points = 0;
+    for (const toolpath::Record& rec : r.toolpath.records())
+        if (const auto* l = std::get_if<toolpath::Linear>(&rec)) {
+            EXPECT_TRUE(box.contains(l->to.xy()) || box.distanceToBoundary(l->to.xy()) < 1e-6)
+                << l->to.x << " " << l->to.y;
+            ++points;
+        }
+    EXPECT_GT(points, 20);
+
+    std::atomic<bool> cancel{true};
+    SurfaceInput input = part.input;
+    input.model = &part.mesh;
+    base::Result<OpResult> cancelled = computePocket3d(input, p, tc, 0, Progress{{}, &cancel});
+    ASSERT_FALSE(cancelled.ok());
+    EXPECT_NE(cancelled.error().message.find("cancelled"), std::string::npos);
 }
 
 TEST(Pocket3d, ParameterErrorsAreClear)

@@ -3,13 +3,11 @@
 #include "base/NumberFormat.h"
 #include "ops/ParallelGrid.h"
 #include "ops/pocket/PathWriter.h"
+#include "ops/surface/AllCores.h"
 #include "ops/surface/CutLine.h"
 
 #include <algorithm>
-#include <atomic>
 #include <cmath>
-#include <functional>
-#include <thread>
 
 namespace camwb::ops {
 
@@ -97,29 +95,6 @@ std::vector<Cut> lineCuts(const ParallelGrid& grid, const surface::DropCutter& c
     return out;
 }
 
-// Runs work(line) for every line on all cores; `step` (the fraction done, called on this thread
-// only) false stops it. False when stopped.
-bool forEachLine(int lines, const std::function<void(int)>& work, const std::function<bool(double)>& step)
-{
-    std::atomic<int> next{0}, done{0};
-    std::atomic<bool> stop{false};
-    auto worker = [&](bool reports) {
-        for (int line; !stop && (line = next++) < lines;) {
-            work(line);
-            const int finished = ++done;
-            if (reports && !step(double(finished) / lines))
-                stop = true;
-        }
-    };
-    std::vector<std::thread> pool;
-    for (unsigned i = 1; i < std::max(1u, std::thread::hardware_concurrency()); ++i)
-        pool.emplace_back(worker, false);
-    worker(true);
-    for (std::thread& t : pool)
-        t.join();
-    return !stop;
-}
-
 }  // namespace
 
 base::Result<OpResult> computeParallel(const SurfaceInput& input, const ParallelParams& params,
@@ -139,9 +114,8 @@ base::Result<OpResult> computeParallel(const SurfaceInput& input, const Parallel
 
     // The cuts line by line, every other line reversed when zig-zag.
     std::vector<std::vector<Cut>> byLine(grid.lines());
-    if (!forEachLine(
-            grid.lines(), [&](int line) { byLine[line] = lineCuts(grid, cutter, params, line); },
-            [&](double f) { return progress.step(0.9 + 0.1 * f); }))
+    const auto lineAt = [&](std::size_t line) { byLine[line] = lineCuts(grid, cutter, params, int(line)); };
+    if (!surface::forEachOnAllCores(std::size_t(grid.lines()), lineAt, progress, 0.9, 1.0))
         return cancelledError(what);
     std::vector<Cut> cuts;
     for (int line = 0; line < grid.lines(); ++line) {

@@ -10,7 +10,7 @@
 #include "ops/pocket/Cleanup.h"
 #include "ops/pocket/Patterns.h"
 #include "ops/pocket/Program.h"
-#include "ops/surface/Levels.h"
+#include "ops/surface/AllCores.h"
 #include "ops/surface/RestMaterial.h"
 #include "ops/surface/ToolCentre.h"
 
@@ -180,7 +180,7 @@ base::Result<OpResult> computePocket3d(const SurfaceInput& input, const Pocket3d
         if (params.restMachining && !regions[i].empty())
             regions[i] = surface::restRegion(*input.restStock, levels[i], tc.tool.diameterMm / 2, regions[i], tol);
     };
-    if (!surface::forEachLevel(levels.size(), regionAt, progress, 0.05, 0.6))
+    if (!surface::forEachOnAllCores(levels.size(), regionAt, progress, 0.05, 0.6))
         return cancelledError(what);
     for (std::size_t i = 0; i < levels.size(); ++i) {
         const std::vector<geom::Region>& region = regions[i];

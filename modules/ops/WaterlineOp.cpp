@@ -10,7 +10,7 @@
 #include "geom/RegionIndex.h"
 #include "geom/RegionOps.h"
 #include "ops/pocket/PathWriter.h"
-#include "ops/surface/Levels.h"
+#include "ops/surface/AllCores.h"
 #include "ops/surface/ToolCentre.h"
 
 #include <algorithm>
@@ -178,7 +178,7 @@ base::Result<OpResult> computeWaterline(const SurfaceInput& input, const Waterli
             }
         }
     };
-    if (!surface::forEachLevel(levels.size(), passesAt, progress, 0, 0.95))
+    if (!surface::forEachOnAllCores(levels.size(), passesAt, progress, 0, 0.95))
         return cancelledError(what);
 
     OpResult result;

@@ -1,4 +1,4 @@
 # The 3D pocket (z-level roughing, Pocket3dOp.h) and waterline finishing (WaterlineOp.h) with the
 # tool-centre regions they share (surface/ToolCentre.h, surface/MeshShadow.h) and rest material.
-set(OPS_PART_SOURCES surface/Levels.cpp surface/MeshShadow.cpp surface/ToolCentre.cpp surface/RestMaterial.cpp Pocket3dOp.cpp
+set(OPS_PART_SOURCES surface/AllCores.cpp surface/MeshShadow.cpp surface/ToolCentre.cpp surface/RestMaterial.cpp Pocket3dOp.cpp
                      WaterlineOp.cpp)

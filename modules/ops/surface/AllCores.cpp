@@ -1,4 +1,4 @@
-#include "ops/surface/Levels.h"
+#include "ops/surface/AllCores.h"
 
 #include <algorithm>
 #include <atomic>
@@ -7,8 +7,8 @@
 
 namespace camwb::ops::surface {
 
-bool forEachLevel(std::size_t count, const std::function<void(std::size_t)>& work, const Progress& progress,
-                  double from, double to)
+bool forEachOnAllCores(std::size_t count, const std::function<void(std::size_t)>& work, const Progress& progress,
+                       double from, double to)
 {
     std::atomic<std::size_t> next{0}, done{0};
     std::atomic<bool> stop{false};

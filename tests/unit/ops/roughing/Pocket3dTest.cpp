@@ -119,6 +119,7 @@ TEST(Pocket3d, FlatRoughingOfRandomPartsNeitherGougesNorLeavesWhatTheToolReaches
         EXPECT_LE(deepestPenetration(r.toolpath, tc.tool, part.mesh, p.sideStockMm, p.bottomStockMm), kTol);
         const StockCheck cut = cutThrough(r.toolpath, tc.tool, part.mesh, part.input.stock, 0.25);
         EXPECT_LE(cut.maxGougeMm, 0.02);
+        EXPECT_EQ(cut.rapidsInStock, 0);
         EXPECT_EQ(missedColumns(*cut.stock, 4, p, part.input.stock), 0);
     }
 }
@@ -154,6 +155,7 @@ TEST(Pocket3d, BallAndBullNoseRoughingNeverGougesTheModel)
         EXPECT_LE(deepestPenetration(r.toolpath, tc.tool, part.mesh, 0, 0), kTol - 0.2);  // the stock is left
         const StockCheck cut = cutThrough(r.toolpath, tc.tool, part.mesh, part.input.stock, 0.25);
         EXPECT_LE(cut.maxGougeMm, 0.02);
+        EXPECT_EQ(cut.rapidsInStock, 0);
     }
 }
 
@@ -169,6 +171,7 @@ TEST(Pocket3d, ASphereIsRoughedWithoutGougeAndCloseToItsShape)
     EXPECT_LE(deepestPenetration(r.toolpath, tc.tool, part.mesh, 0, p.bottomStockMm), kTol);
     const StockCheck cut = cutThrough(r.toolpath, tc.tool, part.mesh, part.input.stock, 0.25);
     EXPECT_LE(cut.maxGougeMm, 0.02);
+    EXPECT_EQ(cut.rapidsInStock, 0);
 }
 
 TEST(Pocket3d, LevelsLandExactlyOnTheFlatFloors)
@@ -222,6 +225,7 @@ TEST(Pocket3d, RestRoughingAfterABigToolCutsLittleAirAndReachesTheCorners)
     const StockCheck afterRest = cutThrough(rest.toolpath, small.tool, part.mesh, {}, 0.25, afterBig.stock.get());
     const StockCheck afterFull = cutThrough(full.toolpath, small.tool, part.mesh, {}, 0.25, afterBig.stock.get());
     EXPECT_LE(afterRest.maxGougeMm, 0.02);
+    EXPECT_EQ(afterRest.rapidsInStock, 0);
     EXPECT_EQ(missedColumns(*afterRest.stock, 2, p, part.input.stock), 0);
     EXPECT_LT(afterRest.airMm, 0.25 * afterFull.airMm) << afterRest.airMm << " vs " << afterFull.airMm;
     EXPECT_LT(afterRest.cuttingMm + afterRest.airMm, 0.5 * (afterFull.cuttingMm + afterFull.airMm));

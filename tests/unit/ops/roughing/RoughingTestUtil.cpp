@@ -167,6 +167,8 @@ StockCheck cutThrough(const toolpath::Toolpath& section, const toolpath::Tool& t
     out.maxGougeMm = out.stock->compare().maxGougeMm;
     out.airMm = run.airCuttingMm();
     out.cuttingMm = run.cuttingMm();
+    for (const sim::Check& check : run.checks())
+        out.rapidsInStock += check.kind == sim::CheckKind::RapidInStock;
     return out;
 }
 

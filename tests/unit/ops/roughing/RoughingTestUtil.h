@@ -39,6 +39,7 @@ struct StockCheck {
     double maxGougeMm = 0;
     std::unique_ptr<sim::HeightField> stock;  // as the toolpath left it, with the design set
     double airMm = 0, cuttingMm = 0;
+    int rapidsInStock = 0;  // rapids that removed material (an error in the simulator)
 };
 // Cuts the section (with its tool) through a z-map of `box` (from `start` when given).
 StockCheck cutThrough(const toolpath::Toolpath& section, const toolpath::Tool& tool, const sim::TriangleMesh& model,

@@ -35,11 +35,22 @@ const char* kindName(OperationKind kind)
         return "drill";
     case OperationKind::Swarf:
         return "swarf";
+    case OperationKind::Pocket3d:
+        return "pocket3d";
+    case OperationKind::Waterline:
+        return "waterline";
+    case OperationKind::Parallel:
+        return "parallel";
     }
     return "operation";
 }
 
-const char* kindLabel(OperationKind kind) { return kind == OperationKind::Drill ? "drilling" : kindName(kind); }
+const char* kindLabel(OperationKind kind)
+{
+    if (kind == OperationKind::Drill)
+        return "drilling";
+    return kind == OperationKind::Pocket3d ? "3D pocket" : kindName(kind);
+}
 
 }  // namespace camwb::document
 

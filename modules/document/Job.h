@@ -6,8 +6,11 @@
 #include "ops/ContourOp.h"
 #include "ops/DrillOp.h"
 #include "ops/HelixOp.h"
+#include "ops/ParallelOp.h"
+#include "ops/Pocket3dOp.h"
 #include "ops/PocketOp.h"
 #include "ops/SwarfOp.h"
+#include "ops/WaterlineOp.h"
 
 #include <map>
 #include <optional>
@@ -79,9 +82,13 @@ struct WorkingPlaneSpec {
     bool operator==(const WorkingPlaneSpec&) const = default;
 };
 
-enum class OperationKind { Contour, Pocket, Helix, Drill, Swarf };
-using OperationParams =
-    std::variant<ops::ContourParams, ops::PocketParams, ops::HelixParams, ops::DrillParams, ops::SwarfParams>;
+// Pocket3d, Waterline and Parallel are the 3D operations: they cut the model's surface as a mesh
+// (the selected faces, if any, bound the area) rather than planar faces and edges.
+enum class OperationKind { Contour, Pocket, Helix, Drill, Swarf, Pocket3d, Waterline, Parallel };
+using OperationParams = std::variant<ops::ContourParams, ops::PocketParams, ops::HelixParams, ops::DrillParams,
+                                     ops::SwarfParams, ops::Pocket3dParams, ops::WaterlineParams, ops::ParallelParams>;
+// The 3D operations (Pocket3d, Waterline, Parallel).
+inline bool isSurfaceKind(OperationKind kind) { return kind >= OperationKind::Pocket3d; }
 
 // One operation of the job. `params.heights` is filled from `heights` and the model on compute;
 // what is stored in the file is the overrides, so derived heights follow model changes.
@@ -108,9 +115,11 @@ struct Operation {
 // preset number, ISO (LinuxCNC and others) G54..G59 then G59.1..G59.3; "offset N" past those.
 std::string workOffsetName(int offset, const std::string& postId);
 
-// "contour", "pocket", "helix", "drill", "swarf": the operation's type in the file.
+// "contour", "pocket", "helix", "drill", "swarf", "pocket3d", "waterline", "parallel": the
+// operation's type in the file.
 const char* kindName(OperationKind kind);
-// The word messages name it by, as the operations do: "contour", "pocket", "helix", "drilling".
+// The word messages name it by, as the operations do: "contour", "pocket", "helix", "drilling",
+// "3D pocket", "waterline", "parallel".
 const char* kindLabel(OperationKind kind);
 
 struct Job {

@@ -174,7 +174,10 @@ std::string serializeJob(const Job& job)
     const bool cuttingData =
         !job.material.empty() ||
         std::any_of(job.tools.begin(), job.tools.end(), [](const auto& tc) { return !tc.cuttingData.empty(); });
-    root["version"] = disabled || cuttingData || usesSetupFields(job) ? 6 : swarf ? 5 : planes ? 4 : 3;
+    // Version 7: a 3D operation (pocket3d, waterline, parallel).
+    const bool surface = std::any_of(job.operations.begin(), job.operations.end(),
+                                     [](const Operation& op) { return isSurfaceKind(op.kind()); });
+    root["version"] = surface ? 7 : disabled || cuttingData || usesSetupFields(job) ? 6 : swarf ? 5 : planes ? 4 : 3;
     root["name"] = job.name;
     root["model"] = job.modelPath;
     root["stock"] = {{"min", {job.stock.min.x, job.stock.min.y, job.stock.min.z}},

@@ -1,6 +1,7 @@
 #include "document/OperationGeometry.h"
 
 #include "document/detail/OperationPlanes.h"
+#include "document/detail/SurfaceOperation.h"
 #include "document/detail/SwarfOperation.h"
 
 #include <algorithm>
@@ -104,6 +105,16 @@ base::Result<OperationGeometry> resolveGeometry(const Operation& op, const occ::
             return refError(op, "drives along one edge of its face, or its lowest edge when none is selected");
         return OperationGeometry{};
     }
+    if (isSurfaceKind(kind)) {
+        // The model's surface is the geometry; selected faces (any shape) bound the area.
+        if (!op.geometry.edges.empty())
+            return refError(op, "works on faces (the area to cut) or the whole model; edges are not supported");
+        for (int face : op.geometry.faces)
+            if (face < 1 || face > model.faceCount())
+                return refError(op, "face " + std::to_string(face) + " is not in the model (it has " +
+                                        std::to_string(model.faceCount()) + " faces)");
+        return OperationGeometry{};
+    }
 
     const double tolerance = toleranceOf(op);
     OperationGeometry geometry;
@@ -175,6 +186,10 @@ ops::Heights resolveHeights(const Operation& op, const OperationGeometry& geomet
         break;
     case OperationKind::Swarf:
         break;  // reached along the tool axis; start and final unused
+    case OperationKind::Pocket3d:
+    case OperationKind::Waterline:
+    case OperationKind::Parallel:
+        break;  // from the stock top down to the model's (or the selected faces') bottom
     case OperationKind::Helix:
     case OperationKind::Drill:
         if (featureTop > -1e299) {
@@ -211,6 +226,8 @@ base::Result<ops::OpResult> computeOperation(const Job& job, int index, const oc
         return refError(op, "no tool number " + std::to_string(op.toolNumber) + " in the job");
     if (op.kind() == OperationKind::Swarf)
         return detail::computeSwarfOperation(job, index, model, progress, heightsUsed);
+    if (isSurfaceKind(op.kind()))
+        return detail::computeSurfaceOperation(job, index, model, progress, heightsUsed);
     auto groups = detail::operationPlanes(op, model);
     if (!groups)
         return groups.error();
@@ -262,7 +279,7 @@ base::Result<ops::OpResult> computeInPlane(const Job& job, int index, const Oper
             else if constexpr (std::is_same_v<P, ops::DrillParams>)
                 return ops::computeDrill(g.holes, params, *tc, index, progress);
             else
-                return base::makeError("swarf is computed by computeSwarfOperation");
+                return base::makeError(label(op) + " is computed by its own path (swarf, 3D)");
         },
         op.params);
 }

@@ -6,8 +6,11 @@
 #include "ops/ContourOp.h"
 #include "ops/DrillOp.h"
 #include "ops/HelixOp.h"
+#include "ops/ParallelOp.h"
+#include "ops/Pocket3dOp.h"
 #include "ops/PocketOp.h"
 #include "ops/SwarfOp.h"
+#include "ops/WaterlineOp.h"
 
 #include <initializer_list>
 #include <string_view>
@@ -101,6 +104,44 @@ template <class F> void visitFields(ops::SwarfParams& p, F&& f)
     f("chordTolerance", p.chordToleranceMm);
     f("angleTolerance", p.angleToleranceDeg);
     f("gougeTolerance", p.gougeToleranceMm);
+}
+
+template <class F> void visitFields(ops::Pocket3dParams& p, F&& f)
+{
+    f("pattern", enumField(p.pattern, {"offset", "zigzag"}));
+    f("zigZagAngle", p.zigZagAngleDeg);
+    f("stepoverPercent", p.stepoverPercent);
+    f("stepover", p.stepoverMm);
+    f("stepDown", p.stepDownMm);
+    f("sideStock", p.sideStockMm);
+    f("bottomStock", p.bottomStockMm);
+    f("climb", p.climb);
+    f("entry", enumField(p.entry, {"plunge", "ramp", "helix"}));
+    f("helixDiameter", p.helixDiameterMm);
+    f("helixPitch", p.helixPitchMm);
+    f("rampAngle", p.rampAngleDeg);
+    f("restMachining", p.restMachining);
+    f("tolerance", p.toleranceMm);
+}
+
+template <class F> void visitFields(ops::WaterlineParams& p, F&& f)
+{
+    f("scallop", p.scallopMm);
+    f("maxStepDown", p.maxStepDownMm);
+    f("minSlope", p.minSlopeDeg);
+    f("stock", p.stockMm);
+    f("climb", p.climb);
+    f("tolerance", p.toleranceMm);
+}
+
+template <class F> void visitFields(ops::ParallelParams& p, F&& f)
+{
+    f("stepover", p.stepoverMm);
+    f("angle", p.angleDeg);
+    f("maxSlope", p.maxSlopeDeg);
+    f("stock", p.stockMm);
+    f("zigZag", p.zigZag);
+    f("tolerance", p.toleranceMm);
 }
 
 }  // namespace camwb::document::detail

@@ -99,8 +99,14 @@ OperationParams paramsOfType(const std::string& type, const std::string& where)
         return ops::DrillParams{};
     if (type == "swarf")
         return ops::SwarfParams{};
+    if (type == "pocket3d")
+        return ops::Pocket3dParams{};
+    if (type == "waterline")
+        return ops::WaterlineParams{};
+    if (type == "parallel")
+        return ops::ParallelParams{};
     throw JsonFieldError{where + ".type: unknown operation type \"" + type +
-                         "\" (expected contour, pocket, helix, drill or swarf)"};
+                         "\" (expected contour, pocket, helix, drill, swarf, pocket3d, waterline or parallel)"};
 }
 
 // Versions 1-2: the outer profile of one face, all heights given.

@@ -108,7 +108,8 @@ QMenu* JobTree::contextMenuFor(QTreeWidgetItem* item)
                "Cam.Op.MoveDown", nullptr, "Cam.Op.Delete"});
         break;
     case ItemKind::Operations:
-        offer({"Cam.Op.NewContour", "Cam.Op.NewPocket", "Cam.Op.NewHelix", "Cam.Op.NewDrill", "Cam.Op.NewSwarf"});
+        offer({"Cam.Op.NewContour", "Cam.Op.NewPocket", "Cam.Op.NewHelix", "Cam.Op.NewDrill", "Cam.Op.NewSwarf",
+               "Cam.Op.NewPocket3d", "Cam.Op.NewWaterline", "Cam.Op.NewParallel"});
         break;
     case ItemKind::Tools:
     case ItemKind::Tool:

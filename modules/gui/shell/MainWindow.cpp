@@ -245,6 +245,12 @@ void MainWindow::registerActions()
     add({"Cam.Op.NewDrill", tr("New &Drilling…"), operation, {}, true}, [this] { newOperation(OperationKind::Drill); });
     add({"Cam.Op.NewSwarf", tr("New &Swarf (five-axis)…"), operation, {}, true},
         [this] { newOperation(OperationKind::Swarf); });
+    add({"Cam.Op.NewPocket3d", tr("New 3D P&ocket…"), operation, {}, true},
+        [this] { newOperation(OperationKind::Pocket3d); });
+    add({"Cam.Op.NewWaterline", tr("New &Waterline…"), operation, {}, true},
+        [this] { newOperation(OperationKind::Waterline); });
+    add({"Cam.Op.NewParallel", tr("New P&arallel…"), operation, {}, true},
+        [this] { newOperation(OperationKind::Parallel); });
     // The foundation's profile is the contour now; the id stays for scripts (no menu entry).
     add({"Cam.Op.NewProfile", tr("New &Profile"), {}}, [this] { newOperation(OperationKind::Contour); });
     // Without a selected operation these say so where the user looks (the status bar).

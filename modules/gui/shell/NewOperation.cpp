@@ -56,7 +56,8 @@ ops::ToolController defaultDrill(int number, double diameterMm)
 
 std::string defaultName(OperationKind kind, const document::Job& job)
 {
-    static const char* const names[] = {"Contour", "Pocket", "Helix", "Drilling", "Swarf"};
+    static const char* const names[] = {"Contour", "Pocket",    "Helix",     "Drilling",
+                                        "Swarf",   "3D Pocket", "Waterline", "Parallel"};
     const std::string base = names[static_cast<int>(kind)];
     int count = 1;
     for (const document::Operation& op : job.operations)
@@ -75,6 +76,12 @@ document::OperationParams defaultParams(OperationKind kind)
         return ops::HelixParams{};
     case OperationKind::Swarf:
         return ops::SwarfParams{};
+    case OperationKind::Pocket3d:
+        return ops::Pocket3dParams{};
+    case OperationKind::Waterline:
+        return ops::WaterlineParams{};
+    case OperationKind::Parallel:
+        return ops::ParallelParams{};
     case OperationKind::Drill:
         break;
     }
@@ -197,6 +204,11 @@ const ops::ToolController* helixTool(const document::Job& job, const std::vector
 const ops::ToolController* suitedTool(OperationKind kind, const document::Job& job)
 {
     const bool wantDrill = kind == OperationKind::Drill;
+    // Finishing a surface wants a ball-nose where the job has one.
+    if (kind == OperationKind::Waterline || kind == OperationKind::Parallel)
+        for (const ops::ToolController& tc : job.tools)
+            if (tc.tool.kind == "ball")
+                return &tc;
     for (const ops::ToolController& tc : job.tools)
         if (isDrill(tc) == wantDrill)
             return &tc;
@@ -273,6 +285,11 @@ base::Result<OperationProposal> proposeOperation(OperationKind kind, const docum
         op.geometry.faces = {swarfFace(model, selectedFaces)};
         if (op.geometry.faces.front() == 0)
             return base::Error{what + ": the model has no ruled face (cone, cylinder) to follow; select a face"};
+        break;
+    case OperationKind::Pocket3d:
+    case OperationKind::Waterline:
+    case OperationKind::Parallel:
+        op.geometry.faces = selectedFaces;  // the area they bound; none: the whole model
         break;
     }
     return proposal;

@@ -37,6 +37,12 @@ QString kindTitle(document::OperationKind kind)
         return OperationPanel::tr("Helix");
     case document::OperationKind::Swarf:
         return OperationPanel::tr("Swarf (simultaneous five-axis)");
+    case document::OperationKind::Pocket3d:
+        return OperationPanel::tr("3D Pocket");
+    case document::OperationKind::Waterline:
+        return OperationPanel::tr("Waterline");
+    case document::OperationKind::Parallel:
+        return OperationPanel::tr("Parallel");
     case document::OperationKind::Drill:
         break;
     }
@@ -75,6 +81,15 @@ OperationPanel* OperationPanel::create(Workbench& workbench, TaskOverlay* overla
         break;
     case document::OperationKind::Swarf:
         panel = makeSwarfPanel(args);
+        break;
+    case document::OperationKind::Pocket3d:
+        panel = makePocket3dPanel(args);
+        break;
+    case document::OperationKind::Waterline:
+        panel = makeWaterlinePanel(args);
+        break;
+    case document::OperationKind::Parallel:
+        panel = makeParallelPanel(args);
         break;
     }
     panel->build();

@@ -3,7 +3,8 @@
 // 3D view computed off the GUI thread (progress, Cancel). OK applies the edit as one undoable step
 // (or adds the new operation) unless the preview shows the operation cannot be made; Cancel
 // leaves the job as it was. Each kind adds its own rows
-// (ContourPanel.cpp, PocketPanel.cpp, HelixPanel.cpp, DrillPanel.cpp, SwarfPanel.cpp).
+// (ContourPanel.cpp, PocketPanel.cpp, HelixPanel.cpp, DrillPanel.cpp, SwarfPanel.cpp,
+// Pocket3dPanel.cpp, FinishingPanels.cpp).
 #pragma once
 
 #include "document/Job.h"

@@ -27,5 +27,8 @@ OperationPanel* makePocketPanel(const OperationPanelArgs& args);
 OperationPanel* makeHelixPanel(const OperationPanelArgs& args);
 OperationPanel* makeDrillPanel(const OperationPanelArgs& args);
 OperationPanel* makeSwarfPanel(const OperationPanelArgs& args);
+OperationPanel* makePocket3dPanel(const OperationPanelArgs& args);
+OperationPanel* makeWaterlinePanel(const OperationPanelArgs& args);
+OperationPanel* makeParallelPanel(const OperationPanelArgs& args);
 
 }  // namespace camwb::gui

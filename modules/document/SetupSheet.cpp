@@ -50,6 +50,10 @@ SheetOperation sheetOperation(const Job& job, const Operation& op, const occ::Mo
         out.stepDownMm = contour->stepDownMm;
     else if (const auto* pocket = std::get_if<ops::PocketParams>(&op.params))
         out.stepDownMm = pocket->stepDownMm;
+    else if (const auto* pocket3d = std::get_if<ops::Pocket3dParams>(&op.params))
+        out.stepDownMm = pocket3d->stepDownMm;
+    else if (const auto* waterline = std::get_if<ops::WaterlineParams>(&op.params))
+        out.stepDownMm = waterline->maxStepDownMm;
     return out;
 }
 

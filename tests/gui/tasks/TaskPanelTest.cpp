@@ -102,6 +102,15 @@ void changeParameter(OperationPanel& panel)
         box->setValue(box->value() / 10);  // halving may keep the points (the bisection's steps)
         break;
     }
+    case OperationKind::Pocket3d:
+        halve("stepDownBox", 1.0);
+        break;
+    case OperationKind::Waterline:
+        halve("maxStepDownBox", 0.5);
+        break;
+    case OperationKind::Parallel:
+        halve("stepoverBox", 0.5);
+        break;
     }
 }
 
@@ -111,10 +120,10 @@ class TaskPanelTest : public QObject {
     Q_OBJECT
 
 private:
-    static void openExample(MainWindow& window)
+    static void openExample(MainWindow& window, const QString& job = QStringLiteral(CAMWB_EXAMPLE_JOB))
     {
         QSignalSpy posted(&window.workbench(), &Workbench::postFinished);
-        QVERIFY(window.openJob(QStringLiteral(CAMWB_EXAMPLE_JOB)));
+        QVERIFY(window.openJob(job));
         QVERIFY(posted.wait(120000));
         waitIdle(window);
     }
@@ -147,26 +156,34 @@ private slots:
         MainWindow window;
         const QStringList ids = window.actions().ids();
         for (const char* id : {"Cam.Op.NewContour", "Cam.Op.NewPocket", "Cam.Op.NewHelix", "Cam.Op.NewDrill",
-                               "Cam.Op.NewSwarf", "Cam.Op.NewProfile", "Cam.Op.Edit", "Cam.Op.Delete"})
+                               "Cam.Op.NewSwarf", "Cam.Op.NewPocket3d", "Cam.Op.NewWaterline", "Cam.Op.NewParallel",
+                               "Cam.Op.NewProfile", "Cam.Op.Edit", "Cam.Op.Delete"})
             QVERIFY2(ids.contains(QLatin1String(id)), id);
     }
 
-    // Each kind of the example job: preview, change, Cancel (job identical), OK (one undo step).
+    // Each kind of the example jobs (the block; the mould for the 3D operations): preview, change,
+    // Cancel (job identical), OK (one undo step).
     void eachPanelPreviewsCancelsAndApplies_data()
     {
         QTest::addColumn<int>("kind");
-        QTest::newRow("contour") << int(OperationKind::Contour);
-        QTest::newRow("pocket") << int(OperationKind::Pocket);
-        QTest::newRow("helix") << int(OperationKind::Helix);
-        QTest::newRow("drill") << int(OperationKind::Drill);
+        QTest::addColumn<QString>("job");
+        const QString block = QStringLiteral(CAMWB_EXAMPLE_JOB), mould = QStringLiteral(CAMWB_MOULD_JOB);
+        QTest::newRow("contour") << int(OperationKind::Contour) << block;
+        QTest::newRow("pocket") << int(OperationKind::Pocket) << block;
+        QTest::newRow("helix") << int(OperationKind::Helix) << block;
+        QTest::newRow("drill") << int(OperationKind::Drill) << block;
+        QTest::newRow("pocket3d") << int(OperationKind::Pocket3d) << mould;
+        QTest::newRow("waterline") << int(OperationKind::Waterline) << mould;
+        QTest::newRow("parallel") << int(OperationKind::Parallel) << mould;
     }
     void eachPanelPreviewsCancelsAndApplies()
     {
         QFETCH(int, kind);
+        QFETCH(QString, job);
         MainWindow window;
         window.show();
         QVERIFY(QTest::qWaitForWindowExposed(&window));
-        openExample(window);
+        openExample(window, job);
         const int index = indexOfKind(window, OperationKind(kind));
         QVERIFY2(index >= 0, "the example job has no operation of this kind");
         const std::string original = jobText(window);

@@ -208,6 +208,55 @@ TEST(JobFile, DisabledOperationIsKeptAndNeedsVersionSix)
     EXPECT_NE(e.message.find("enabled"), std::string::npos) << e.message;
 }
 
+TEST(JobFile, SurfaceOperationsRoundTripAndNeedVersionSeven)
+{
+    auto job = document::parseJob(validText(), "job.camwb");
+    ASSERT_TRUE(job.ok()) << job.error().toString();
+    EXPECT_EQ(document::serializeJob(job.value()).find("\"version\": 7"), std::string::npos);
+    ops::Pocket3dParams rough;
+    rough.name = "Rough";
+    rough.pattern = ops::PocketPattern::ZigZag;
+    rough.stepDownMm = 1.5;
+    rough.sideStockMm = 0.4;
+    rough.bottomStockMm = 0.1;
+    rough.restMachining = true;
+    ops::WaterlineParams walls;
+    walls.name = "Walls";
+    walls.scallopMm = 0.005;
+    walls.minSlopeDeg = 40;
+    ops::ParallelParams floor;
+    floor.name = "Floor";
+    floor.angleDeg = 45;
+    floor.maxSlopeDeg = 42;
+    floor.zigZag = false;
+    for (const document::OperationParams& params :
+         {document::OperationParams{rough}, document::OperationParams{walls}, document::OperationParams{floor}}) {
+        document::Operation op;
+        op.params = params;
+        op.geometry.faces = {3, 4};
+        job->operations.push_back(op);
+    }
+    const std::string text = document::serializeJob(job.value());
+    EXPECT_NE(text.find("\"version\": 7"), std::string::npos);
+    for (const char* type : {"\"pocket3d\"", "\"waterline\"", "\"parallel\""})
+        EXPECT_NE(text.find(type), std::string::npos) << type;
+    auto back = document::parseJob(text, "job.camwb");
+    ASSERT_TRUE(back.ok()) << back.error().toString();
+    ASSERT_EQ(back->operations.size(), job->operations.size());
+    const auto& r = std::get<ops::Pocket3dParams>(back->operations.end()[-3].params);
+    EXPECT_EQ(r.name, "Rough");
+    EXPECT_EQ(r.pattern, ops::PocketPattern::ZigZag);
+    EXPECT_DOUBLE_EQ(r.sideStockMm, 0.4);
+    EXPECT_DOUBLE_EQ(r.bottomStockMm, 0.1);
+    EXPECT_TRUE(r.restMachining);
+    EXPECT_DOUBLE_EQ(std::get<ops::WaterlineParams>(back->operations.end()[-2].params).minSlopeDeg, 40);
+    EXPECT_FALSE(std::get<ops::ParallelParams>(back->operations.back().params).zigZag);
+    EXPECT_EQ(back->operations.back().geometry.faces, (std::vector<int>{3, 4}));
+    EXPECT_EQ(document::serializeJob(back.value()), text);
+    const base::Error e = parseError(replaced(text, "\"minSlope\"", "\"minSlop\""));
+    EXPECT_NE(e.message.find("minSlop"), std::string::npos) << e.message;
+}
+
 TEST(JobFile, MalformedJsonNamesLineAndColumn)
 {
     const base::Error e = parseError("{\n  \"format\": \"camwb-job\",\n  \"version\": 1 2\n}\n");

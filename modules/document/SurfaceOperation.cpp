@@ -61,6 +61,26 @@ std::vector<double> flatLevelsOf(const occ::Model& model)
     return levels;
 }
 
+// How deep the tool must go by default: where the stock reaches beyond the model's sides, down to
+// the model's bottom (clearing round it); else to the lowest surface of `mesh` that faces up, the
+// deepest point a tool from above touches (the floor of a cavity, not the block's underside).
+double lowestReach(const sim::TriangleMesh& mesh, const base::Box3& stock, const base::Vec3& modelMin,
+                   const base::Vec3& modelMax)
+{
+    const double eps = 1e-3;
+    if (stock.min.x < modelMin.x - eps || stock.min.y < modelMin.y - eps || stock.max.x > modelMax.x + eps ||
+        stock.max.y > modelMax.y + eps)
+        return modelMin.z;
+    double lowest = modelMax.z;
+    for (std::size_t t = 0; t < mesh.triangleCount(); ++t) {
+        const base::Vec3 a = mesh.vertex(mesh.triangles[3 * t]), b = mesh.vertex(mesh.triangles[3 * t + 1]),
+                         c = mesh.vertex(mesh.triangles[3 * t + 2]);
+        if ((b - a).cross(c - a).z > 1e-12)
+            lowest = std::min({lowest, a.z, b.z, c.z});
+    }
+    return lowest;
+}
+
 double toleranceOf(const OperationParams& params)
 {
     return std::visit(
@@ -125,8 +145,10 @@ base::Result<ops::OpResult> computeSurfaceOperation(const Job& job, int index, c
     const double tolerance = toleranceOf(op.params);
     const SurfaceMeshes meshes = meshesOf(model, op.geometry.faces, tolerance);
     ops::Heights heights = resolveHeights(op, OperationGeometry{}, model, job.stock);
-    if (!op.geometry.faces.empty() && !op.heights.finalZ && !meshes.selected.empty())
-        heights.finalZ = meshes.selected.bounds().min.z;  // down to the lowest selected face
+    const base::Box3 stockBox = jobStockBox(job, model);
+    if (!op.heights.finalZ)
+        heights.finalZ = lowestReach(op.geometry.faces.empty() ? meshes.model : meshes.selected, stockBox,
+                                     model.boundsMin(), model.boundsMax());
     if (heightsUsed)
         *heightsUsed = heights;
 
@@ -137,7 +159,7 @@ base::Result<ops::OpResult> computeSurfaceOperation(const Job& job, int index, c
         if (input.boundary.empty())
             return fail("the selected faces have no area seen from above (vertical faces only)");
     }
-    input.stock = jobStockBox(job, model);
+    input.stock = stockBox;
     input.flatLevels = flatLevelsOf(model);
     std::unique_ptr<sim::HeightField> rest;
 

@@ -1,8 +1,8 @@
 // The 3D pocket: checks, the levels (step-down plus the flat floors), then per level the tool-
 // centre region from ToolCentreRegions (cut down to the rest material's reach when rest
-// machining), cleared with the 2.5D pocket's pattern, clean-up, entries and linking, entered from
-// the level above. With a rest stock the toolpath is run through a copy of it to report how much
-// of it cuts air.
+// machining, and only the cuts that still remove material from the stock as cut so far), cleared with the 2.5D pocket's
+// pattern, clean-up, entries and linking, entered from the level above. With a rest stock the toolpath is run through a
+// copy of it to report how much of it cuts air.
 #include "ops/Pocket3dOp.h"
 
 #include "base/NumberFormat.h"
@@ -121,6 +121,7 @@ struct LevelWriter {
     const ToolController& tc;
     EntrySettings entry;
     PathWriter& out;
+    sim::HeightField* rest = nullptr;  // rest machining: the stock as cut so far
     int helixFallbacks = 0;
     double uncutArea = 0;
 
@@ -142,6 +143,11 @@ struct LevelWriter {
         const double covered = params.pattern == PocketPattern::Offset ? spacing : spacing / 2;
         if (covered > radius - 4 * tol)
             uncutArea += addCleanup(*cuts, region, radius, spacing, tol).uncutArea;
+        if (rest) {
+            *cuts = surface::cutsThatCut(std::move(*cuts), *rest, level, tc.tool, tol);
+            if (cuts->empty())
+                return true;
+        }
         const geom::RegionIndex index(region);
         EntryPlanner planner(index, entry);
         const Program program = makeProgram(std::move(*cuts), index, planner);
@@ -171,6 +177,11 @@ base::Result<OpResult> computePocket3d(const SurfaceInput& input, const Pocket3d
     PathWriter out(result.toolpath, operationIndex);
     out.add(sectionBegin(params.name, "pocket3d", tc, {toolpath::FeedKind::Entry}));
     LevelWriter writer{params, tc, entrySettings(params, tc), out};
+    std::optional<sim::HeightField> rest;
+    if (params.restMachining) {
+        rest.emplace(*input.restStock);
+        writer.rest = &*rest;
+    }
     double top = params.heights.startZ;
     int cleared = 0;
     // The levels' regions on all cores, then each level cleared in order.
@@ -185,10 +196,13 @@ base::Result<OpResult> computePocket3d(const SurfaceInput& input, const Pocket3d
     for (std::size_t i = 0; i < levels.size(); ++i) {
         const std::vector<geom::Region>& region = regions[i];
         if (!region.empty()) {
+            const std::size_t before = result.toolpath.size();
             if (!writer.write(region, top, levels[i], progress))
                 return cancelledError(what);
-            top = levels[i];
-            ++cleared;
+            if (result.toolpath.size() > before) {
+                top = levels[i];
+                ++cleared;
+            }
         }
         if (!progress.step(0.6 + 0.35 * double(i + 1) / double(levels.size())))
             return cancelledError(what);

@@ -2,6 +2,7 @@
 
 #include "ops/surface/MeshShadow.h"
 #include "sim/StockRun.h"
+#include "sim/ToolShape.h"
 
 #include "geom/ClipperAdapter.h"
 
@@ -49,6 +50,30 @@ std::vector<geom::Region> restRegion(const sim::HeightField& rest, double level,
         return {};
     const ClipperLib::Paths near = growPaths(material, reach + tolerance, tolerance / 4);
     return toRegions(clipPaths(centre, near, ClipperLib::ctIntersection), tolerance / 2);
+}
+
+std::vector<pocket::Cut> cutsThatCut(std::vector<pocket::Cut> cuts, sim::HeightField& stock, double level,
+                                     const toolpath::Tool& tool, double tolerance)
+{
+    const sim::ToolShape shape(tool);
+    const double r = stock.resolutionMm();
+    const double worth = r * r * tolerance;
+    std::vector<pocket::Cut> kept;
+    std::size_t index = 0;
+    for (pocket::Cut& cut : cuts) {
+        const std::vector<base::Vec2> points = pocket::samplePath(cut.path, tolerance);
+        double removed = 0;
+        for (std::size_t i = 1; i < points.size(); ++i) {
+            sim::Move move;
+            move.from = {points[i - 1].x, points[i - 1].y, level};
+            move.to = {points[i].x, points[i].y, level};
+            move.tool = tool.number;
+            removed += stock.cut(move, index++, shape).removedMm3;
+        }
+        if (removed > worth)
+            kept.push_back(std::move(cut));
+    }
+    return kept;
 }
 
 StockFigures simulateOn(const sim::HeightField& rest, const toolpath::Toolpath& section, const toolpath::Tool& tool)

@@ -4,6 +4,7 @@
 
 #include "geom/Region.h"
 #include "ops/OpCommon.h"
+#include "ops/pocket/CutPath.h"
 #include "sim/HeightField.h"
 
 #include <vector>
@@ -15,6 +16,14 @@ namespace camwb::ops::surface {
 // walls): where the tool centre must go to cut what is left at this level.
 std::vector<geom::Region> restRegion(const sim::HeightField& rest, double level, double reach,
                                      const std::vector<geom::Region>& toolCentre, double tolerance);
+
+// The pattern's cuts at `level` that still remove material from `stock` (what the operations
+// before and this one's earlier cuts left), each cut into it as it is kept; a cut that would
+// remove less than one column's area times the tolerance is dropped: a ring of a rest pattern
+// that only runs through air the ring before it cleared. Dropping such a cut changes nothing the
+// tool leaves behind.
+std::vector<pocket::Cut> cutsThatCut(std::vector<pocket::Cut> cuts, sim::HeightField& stock, double level,
+                                     const toolpath::Tool& tool, double tolerance);
 
 struct StockFigures {
     double cuttingMm = 0;  // feed moves that removed material

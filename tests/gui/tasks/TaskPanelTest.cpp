@@ -106,7 +106,7 @@ void changeParameter(OperationPanel& panel)
         halve("stepDownBox", 1.0);
         break;
     case OperationKind::Waterline:
-        halve("maxStepDownBox", 0.5);
+        halve("minSlopeBox", 15.0);  // more of the walls: the step-down follows the scallop anyway
         break;
     case OperationKind::Parallel:
         halve("stepoverBox", 0.5);

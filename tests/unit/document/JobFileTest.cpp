@@ -233,6 +233,7 @@ TEST(JobFile, SurfaceOperationsRoundTripAndNeedVersionSeven)
          {document::OperationParams{rough}, document::OperationParams{walls}, document::OperationParams{floor}}) {
         document::Operation op;
         op.params = params;
+        op.toolNumber = job->operations.front().toolNumber;
         op.geometry.faces = {3, 4};
         job->operations.push_back(op);
     }

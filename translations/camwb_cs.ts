@@ -1618,6 +1618,18 @@ Pracoviště pro CAM a postprocesory.</translation>
         <source>The job setup panel has changes that are not applied.</source>
         <translation>Panel nastavení úlohy obsahuje změny, které nebyly použity.</translation>
     </message>
+    <message>
+        <source>New 3D P&amp;ocket…</source>
+        <translation>Nová 3D kaps&amp;a…</translation>
+    </message>
+    <message>
+        <source>New &amp;Waterline…</source>
+        <translation>Nové dokončení po v&amp;rstevnicích…</translation>
+    </message>
+    <message>
+        <source>New P&amp;arallel…</source>
+        <translation>Nové para&amp;lelní dokončení…</translation>
+    </message>
 </context>
 <context>
     <name>camwb::gui::ModalStatePanel</name>
@@ -2045,6 +2057,164 @@ Nejprve je uložit?</translation>
     <message>
         <source>Swarf (simultaneous five-axis)</source>
         <translation>Obrábění bokem (simultánní 5osé)</translation>
+    </message>
+    <message>
+        <source>3D Pocket</source>
+        <translation>3D kapsa</translation>
+    </message>
+    <message>
+        <source>Waterline</source>
+        <translation>Dokončení po vrstevnicích</translation>
+    </message>
+    <message>
+        <source>Parallel</source>
+        <translation>Paralelní dokončení</translation>
+    </message>
+</context>
+<context>
+    <name>camwb::gui::ParallelPanel</name>
+    <message>
+        <source>Stepover</source>
+        <translation>Boční krok</translation>
+    </message>
+    <message>
+        <source>Angle</source>
+        <translation>Úhel</translation>
+    </message>
+    <message>
+        <source> °</source>
+        <translation> °</translation>
+    </message>
+    <message>
+        <source>Of the lines to the X axis</source>
+        <translation>Řádků k ose X</translation>
+    </message>
+    <message>
+        <source>Up to slope</source>
+        <translation>Do sklonu</translation>
+    </message>
+    <message>
+        <source>Lines only where the model is at most this steep; waterline takes the steeper walls</source>
+        <translation>Řádky jen tam, kde model není strmější; strmější stěny dokončí vrstevnice</translation>
+    </message>
+    <message>
+        <source>Stock to leave</source>
+        <translation>Přídavek</translation>
+    </message>
+    <message>
+        <source>Zig-zag</source>
+        <translation>Cik-cak</translation>
+    </message>
+    <message>
+        <source>Cut both ways; unticked, every line the same way</source>
+        <translation>Řezat oběma směry; nezaškrtnuto: každý řádek stejným směrem</translation>
+    </message>
+    <message>
+        <source>Tolerance</source>
+        <translation>Tolerance</translation>
+    </message>
+</context>
+<context>
+    <name>camwb::gui::Pocket3dPanel</name>
+    <message>
+        <source>Pattern</source>
+        <translation>Strategie</translation>
+    </message>
+    <message>
+        <source>Offset (spiral inward)</source>
+        <translation>Ekvidistanta (spirála dovnitř)</translation>
+    </message>
+    <message>
+        <source>Zig-zag</source>
+        <translation>Cik-cak</translation>
+    </message>
+    <message>
+        <source>Zig-zag angle</source>
+        <translation>Úhel cik-cak</translation>
+    </message>
+    <message>
+        <source> °</source>
+        <translation> °</translation>
+    </message>
+    <message>
+        <source>Stepover</source>
+        <translation>Boční krok</translation>
+    </message>
+    <message>
+        <source> % of Ø</source>
+        <translation> % z Ø</translation>
+    </message>
+    <message>
+        <source>Stepover (mm, 0 = use %)</source>
+        <translation>Boční krok (mm, 0 = v %)</translation>
+    </message>
+    <message>
+        <source>Step-down</source>
+        <translation>Přísuv Z</translation>
+    </message>
+    <message>
+        <source>Levels also land on every flat floor of the model</source>
+        <translation>Hladiny padnou i na každé rovné dno modelu</translation>
+    </message>
+    <message>
+        <source>Side stock</source>
+        <translation>Boční přídavek</translation>
+    </message>
+    <message>
+        <source>Left on walls, measured across the tool axis</source>
+        <translation>Zůstane na stěnách, měřeno kolmo k ose nástroje</translation>
+    </message>
+    <message>
+        <source>Bottom stock</source>
+        <translation>Přídavek na dně</translation>
+    </message>
+    <message>
+        <source>Left on floors and shallow surfaces, measured along the tool axis</source>
+        <translation>Zůstane na dnech a mírných plochách, měřeno podél osy nástroje</translation>
+    </message>
+    <message>
+        <source>Rest machining</source>
+        <translation>Obrábění zbytkového materiálu</translation>
+    </message>
+    <message>
+        <source>Cut only the material the operations before this one left</source>
+        <translation>Obrábět jen materiál, který zanechaly předchozí operace</translation>
+    </message>
+    <message>
+        <source>Climb milling</source>
+        <translation>Sousledné frézování</translation>
+    </message>
+    <message>
+        <source>Entry</source>
+        <translation>Zanoření</translation>
+    </message>
+    <message>
+        <source>Helix</source>
+        <translation>Šroubovice</translation>
+    </message>
+    <message>
+        <source>Ramp</source>
+        <translation>Rampa</translation>
+    </message>
+    <message>
+        <source>Plunge</source>
+        <translation>Kolmo</translation>
+    </message>
+    <message>
+        <source>Helix diameter (0 = 90 % Ø)</source>
+        <translation>Ø šroubovice (0 = 90 % Ø)</translation>
+    </message>
+    <message>
+        <source>Helix pitch</source>
+        <translation>Stoupání šroubovice</translation>
+    </message>
+    <message>
+        <source>Ramp angle</source>
+        <translation>Úhel rampy</translation>
+    </message>
+    <message>
+        <source>Tolerance</source>
+        <translation>Tolerance</translation>
     </message>
 </context>
 <context>
@@ -3005,6 +3175,45 @@ The job %1 is opened as it was saved.</source>
     <message>
         <source>OpenGL %1.%2 found, 3.2 needed</source>
         <translation>nalezeno OpenGL %1.%2, potřeba 3.2</translation>
+    </message>
+</context>
+<context>
+    <name>camwb::gui::WaterlinePanel</name>
+    <message>
+        <source>Scallop height</source>
+        <translation>Výška hřebínku</translation>
+    </message>
+    <message>
+        <source>The highest ridge left between two contours; sets the step-down</source>
+        <translation>Nejvyšší hřebínek mezi dvěma vrstevnicemi; určuje přísuv Z</translation>
+    </message>
+    <message>
+        <source>Maximum step-down</source>
+        <translation>Největší přísuv Z</translation>
+    </message>
+    <message>
+        <source>Steeper than</source>
+        <translation>Strmější než</translation>
+    </message>
+    <message>
+        <source> °</source>
+        <translation> °</translation>
+    </message>
+    <message>
+        <source>Contours only where the model is steeper than this; parallel finishing takes the rest</source>
+        <translation>Vrstevnice jen tam, kde je model strmější; zbytek dokončí paralelní řádky</translation>
+    </message>
+    <message>
+        <source>Stock to leave</source>
+        <translation>Přídavek</translation>
+    </message>
+    <message>
+        <source>Climb milling</source>
+        <translation>Sousledné frézování</translation>
+    </message>
+    <message>
+        <source>Tolerance</source>
+        <translation>Tolerance</translation>
     </message>
 </context>
 <context>

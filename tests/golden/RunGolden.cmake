@@ -1,10 +1,11 @@
 # Runs camwb-cli on a job and compares the output with the expected file byte for byte: the NC
-# (`run`, the default) or the CL trace (-DCOMMAND=cl). With CAMWB_UPDATE_GOLDEN=1 in the
+# (`run`, the default) or the CL trace (-DCOMMAND=cl), or `post` with -DARGS (a list, e.g. another
+# post: "--post;heidenhain-itnc530"). With CAMWB_UPDATE_GOLDEN=1 in the
 # environment it rewrites the expected file instead.
 if(NOT COMMAND)
   set(COMMAND run)
 endif()
-execute_process(COMMAND ${CLI} ${COMMAND} ${JOB} -o ${OUT} RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+execute_process(COMMAND ${CLI} ${COMMAND} ${JOB} ${ARGS} -o ${OUT} RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
 if(NOT rc EQUAL 0)
   message(FATAL_ERROR "camwb-cli failed (${rc}):\n${out}${err}")
 endif()

@@ -14,7 +14,8 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 runs=${RUNS:-5}
 build=${CAMWB_3D_BUILD:-build-release}
-job=resources/examples/example-mould.camwb
+# The same work as FreeCAD: the roughing alone, no bottom stock (FreeCAD has none).
+job=${CAMWB_3D_JOB:-tests/bench/data/mould-rough.camwb}
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 

@@ -65,6 +65,8 @@ base::Result<OperationGeometry> resolveFaces(const Operation& op, const occ::Mod
     return geometry;
 }
 
+}  // namespace
+
 double toleranceOf(const Operation& op)
 {
     return std::visit(
@@ -76,8 +78,6 @@ double toleranceOf(const Operation& op)
         },
         op.params);
 }
-
-}  // namespace
 
 base::Result<OperationGeometry> resolveGeometry(const Operation& op, const occ::Model& model)
 {

@@ -21,6 +21,10 @@ struct OperationGeometry {
     std::vector<geom::Hole> holes;        // helix, drilling (helix: also picked circular edges)
 };
 
+// The operation's tolerance (its `toleranceMm`; 0.01 mm for a kind without one): the chord and
+// fitting tolerance its geometry is resolved with.
+double toleranceOf(const Operation& op);
+
 // Errors name the operation and the reference ("pocket \\"Pocket 2\\": face 7 is not planar").
 base::Result<OperationGeometry> resolveGeometry(const Operation& op, const occ::Model& model);
 

@@ -81,18 +81,6 @@ double lowestReach(const sim::TriangleMesh& mesh, const base::Box3& stock, const
     return lowest;
 }
 
-double toleranceOf(const OperationParams& params)
-{
-    return std::visit(
-        [](const auto& p) {
-            if constexpr (requires { p.toleranceMm; })
-                return p.toleranceMm;
-            else
-                return 0.01;
-        },
-        params);
-}
-
 // The stock after the enabled operations before `index` (three-axis ones: a tilted plane or a
 // swarf cut is not a height field's to follow, so rest machining refuses to guess after one).
 base::Result<std::unique_ptr<sim::HeightField>> restStockBefore(const Job& job, int index, const occ::Model& model,
@@ -142,7 +130,7 @@ base::Result<ops::OpResult> computeSurfaceOperation(const Job& job, int index, c
             return fail("face " + std::to_string(face) + " is not in the model (it has " +
                         std::to_string(model.faceCount()) + " faces)");
 
-    const double tolerance = toleranceOf(op.params);
+    const double tolerance = toleranceOf(op);
     const SurfaceMeshes meshes = meshesOf(model, op.geometry.faces, tolerance);
     ops::Heights heights = resolveHeights(op, OperationGeometry{}, model, job.stock);
     const base::Box3 stockBox = jobStockBox(job, model);

@@ -20,6 +20,18 @@ base::Vec2 fromClipper(const ClipperLib::IntPoint& p)
     return {static_cast<double>(p.X) / kClipperScale, static_cast<double>(p.Y) / kClipperScale};
 }
 
+std::vector<std::vector<base::Vec2>> fromClipper(const ClipperLib::Paths& paths)
+{
+    std::vector<std::vector<base::Vec2>> result;
+    for (const ClipperLib::Path& path : paths) {
+        std::vector<base::Vec2>& poly = result.emplace_back();
+        poly.reserve(path.size());
+        for (const ClipperLib::IntPoint& p : path)
+            poly.push_back(fromClipper(p));
+    }
+    return result;
+}
+
 }  // namespace
 
 std::vector<std::vector<base::Vec2>> clipperOffset(const std::vector<base::Vec2>& polygon, double delta,
@@ -37,14 +49,7 @@ std::vector<std::vector<base::Vec2>> clipperOffset(const std::vector<base::Vec2>
     ClipperLib::Paths solution;
     offsetter.Execute(solution, delta * kClipperScale);
 
-    std::vector<std::vector<base::Vec2>> result;
-    for (const ClipperLib::Path& out : solution) {
-        std::vector<base::Vec2>& poly = result.emplace_back();
-        poly.reserve(out.size());
-        for (const ClipperLib::IntPoint& p : out)
-            poly.push_back(fromClipper(p));
-    }
-    return result;
+    return fromClipper(solution);
 }
 
 std::vector<std::vector<base::Vec2>> clipperUnion(const std::vector<std::vector<base::Vec2>>& polygons)
@@ -64,14 +69,7 @@ std::vector<std::vector<base::Vec2>> clipperUnion(const std::vector<std::vector<
     clipper.AddPaths(paths, ClipperLib::ptSubject, true);
     ClipperLib::Paths solution;
     clipper.Execute(ClipperLib::ctUnion, solution, ClipperLib::pftNonZero, ClipperLib::pftNonZero);
-    std::vector<std::vector<base::Vec2>> result;
-    for (const ClipperLib::Path& out : solution) {
-        std::vector<base::Vec2>& poly = result.emplace_back();
-        poly.reserve(out.size());
-        for (const ClipperLib::IntPoint& p : out)
-            poly.push_back(fromClipper(p));
-    }
-    return result;
+    return fromClipper(solution);
 }
 
 double polygonArea(const std::vector<base::Vec2>& polygon)

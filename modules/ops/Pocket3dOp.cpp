@@ -27,7 +27,7 @@ std::string fmt(double v) { return base::NumberFormat{4, true}.format(v); }
 
 double helixDiameter(const Pocket3dParams& p, const ToolController& tc)
 {
-    return p.helixDiameterMm > 0 ? p.helixDiameterMm : 0.9 * tc.tool.diameterMm;
+    return helixDiameterOr(p.helixDiameterMm, tc.tool.diameterMm);
 }
 
 base::Status checkEntry(const std::string& what, const Pocket3dParams& p, const ToolController& tc)

@@ -21,7 +21,7 @@ std::string fmt(double v) { return base::NumberFormat{4, true}.format(v); }
 
 double helixDiameter(const PocketParams& p, const ToolController& tc)
 {
-    return p.helixDiameterMm > 0 ? p.helixDiameterMm : 0.9 * tc.tool.diameterMm;
+    return helixDiameterOr(p.helixDiameterMm, tc.tool.diameterMm);
 }
 
 base::Status check(const std::string& what, const std::vector<geom::Region>& regions, const PocketParams& p,

@@ -11,6 +11,12 @@
 
 namespace camwb::ops::pocket {
 
+// The helix diameter a pocket asks for, or 90 % of the tool's where it asks for none (0).
+inline double helixDiameterOr(double requestedMm, double toolDiameterMm)
+{
+    return requestedMm > 0 ? requestedMm : 0.9 * toolDiameterMm;
+}
+
 struct EntrySettings {
     EntryKind kind = EntryKind::Helix;
     double helixRadius = 0;

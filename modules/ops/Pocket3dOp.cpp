@@ -12,6 +12,7 @@
 #include "ops/pocket/Program.h"
 #include "ops/surface/AllCores.h"
 #include "ops/surface/RestMaterial.h"
+#include "ops/surface/SectionCheck.h"
 #include "ops/surface/ToolCentre.h"
 
 #include <algorithm>
@@ -193,6 +194,14 @@ base::Result<OpResult> computePocket3d(const SurfaceInput& input, const Pocket3d
     };
     if (!surface::forEachOnAllCores(levels.size(), regionAt, progress, 0.05, 0.6))
         return cancelledError(what);
+    // The regions come from the shadows of the model's upward triangles; its sections (another
+    // algorithm on the same mesh) must agree that the tool keeps clear of it, or nothing is cut.
+    const surface::SectionClearance clearance{tc.tool.diameterMm / 2 + params.sideStockMm, centres.fullRadiusHeightMm(),
+                                              params.bottomStockMm, tol};
+    if (auto bad = surface::firstLevelTouchingSection(*input.model, levels, regions, clearance))
+        return opError(what, "internal check failed: at Z " + fmt(levels[*bad]) +
+                                 " the area to clear comes closer to the model's section than the tool's radius "
+                                 "and side stock; nothing is cut (please report this with the model)");
     for (std::size_t i = 0; i < levels.size(); ++i) {
         const std::vector<geom::Region>& region = regions[i];
         if (!region.empty()) {

@@ -104,6 +104,8 @@ std::vector<geom::Region> ToolCentreRegions::obstacle(double z) const
     return toRegions(m_data->obstacle(z), m_data->tol() / 2);
 }
 
+double ToolCentreRegions::fullRadiusHeightMm() const { return m_data->fullHeight; }
+
 std::vector<geom::Region> toolCentreArea(const SurfaceInput& in)
 {
     if (!in.boundary.empty())

@@ -37,6 +37,9 @@ public:
     std::vector<geom::Region> at(double z, const std::vector<geom::Region>& area) const;
     // The model's material as the tool sees it at `z`: the tool centre must stay outside.
     std::vector<geom::Region> obstacle(double z) const;
+    // How far above its tip the cutter reaches its full radius (0: a flat end mill; a ball's radius,
+    // a bull-nose's corner radius).
+    double fullRadiusHeightMm() const;
 
 private:
     struct Data;

@@ -9,6 +9,8 @@
 
 #include <gtest/gtest.h>
 
+#include <ostream>
+
 namespace camwb::ops {
 namespace {
 
@@ -18,6 +20,7 @@ struct Case {
     const char* kind;
     double corner;
 };
+void PrintTo(const Case& c, std::ostream* out) { *out << c.kind << " corner " << c.corner; }
 
 class SectionCheck : public ::testing::TestWithParam<Case> {};
 

@@ -84,7 +84,7 @@ double lowestReach(const sim::TriangleMesh& mesh, const base::Box3& stock, const
 // The stock after the enabled operations before `index` (three-axis ones: a tilted plane or a
 // swarf cut is not a height field's to follow, so rest machining refuses to guess after one).
 base::Result<std::unique_ptr<sim::HeightField>> restStockBefore(const Job& job, int index, const occ::Model& model,
-                                                                const base::Box3& box)
+                                                                const base::Box3& box, const ops::Progress& progress)
 {
     auto stock = std::make_unique<sim::HeightField>(box, defaultStockResolution(box));
     for (int j = 0; j < index; ++j) {
@@ -95,7 +95,8 @@ base::Result<std::unique_ptr<sim::HeightField>> restStockBefore(const Job& job, 
             return base::makeError(label(job.operations[index]) +
                                    ": rest machining follows three-axis operations only; " + label(before) +
                                    " tilts the tool");
-        auto cut = computeOperation(job, j, model);
+        // Cancelling this operation cancels the ones it recomputes (no progress: theirs is not its own).
+        auto cut = computeOperation(job, j, model, ops::Progress{{}, progress.cancel});
         if (!cut)
             return base::makeError(label(job.operations[index]) + ": rest machining needs what " + label(before) +
                                    " leaves, and it fails: " + cut.error().message);
@@ -158,7 +159,7 @@ base::Result<ops::OpResult> computeSurfaceOperation(const Job& job, int index, c
             using P = decltype(params);
             if constexpr (std::is_same_v<P, ops::Pocket3dParams>) {
                 if (params.restMachining) {
-                    auto before = restStockBefore(job, index, model, input.stock);
+                    auto before = restStockBefore(job, index, model, input.stock, progress);
                     if (!before)
                         return before.error();
                     rest = std::move(before).value();

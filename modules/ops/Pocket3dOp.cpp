@@ -26,29 +26,6 @@ using namespace pocket;
 
 std::string fmt(double v) { return base::NumberFormat{4, true}.format(v); }
 
-double helixDiameter(const Pocket3dParams& p, const ToolController& tc)
-{
-    return helixDiameterOr(p.helixDiameterMm, tc.tool.diameterMm);
-}
-
-base::Status checkEntry(const std::string& what, const Pocket3dParams& p, const ToolController& tc)
-{
-    const double d = tc.tool.diameterMm;
-    if (!(p.rampAngleDeg > 0) || p.rampAngleDeg > 90)
-        return opError(what, "ramp angle must be in (0, 90] degrees, got " + fmt(p.rampAngleDeg));
-    if (p.entry == EntryKind::Plunge && !tc.tool.centreCutting)
-        return opError(what, "tool " + std::to_string(tc.tool.number) +
-                                 " is not centre cutting and cannot plunge; use a helix or ramp entry");
-    if (p.entry == EntryKind::Helix) {
-        if (p.helixDiameterMm < 0 || helixDiameter(p, tc) > d + 1e-9)
-            return opError(what, "helix diameter " + fmt(p.helixDiameterMm) +
-                                     " mm must be positive and at most the tool diameter " + fmt(d) + " mm");
-        if (!(p.helixPitchMm > 0))
-            return opError(what, "helix pitch must be positive, got " + fmt(p.helixPitchMm) + " mm");
-    }
-    return base::Status::success();
-}
-
 base::Status check(const std::string& what, const SurfaceInput& in, const Pocket3dParams& p, const ToolController& tc)
 {
     if (base::Status s = checkToolController(what, tc); !s)
@@ -74,7 +51,7 @@ base::Status check(const std::string& what, const SurfaceInput& in, const Pocket
     if (p.restMachining && !in.restStock)
         return opError(what, "rest machining needs the stock the previous operations left, and there is none "
                              "(no operation before this one was simulated)");
-    return checkEntry(what, p, tc);
+    return checkEntry(what, entryRequest(p), tc);
 }
 
 // Step-down levels plus a level exactly on each flat floor (raised by the bottom stock) in range;
@@ -100,21 +77,6 @@ std::vector<double> levelsOf(const SurfaceInput& in, const Pocket3dParams& p)
         out.push_back(z);
     }
     return out;
-}
-
-EntrySettings entrySettings(const Pocket3dParams& p, const ToolController& tc)
-{
-    EntrySettings entry;
-    entry.kind = p.entry;
-    entry.helixRadius = helixDiameter(p, tc) / 2;
-    entry.helixPitch = p.helixPitchMm;
-    entry.rampAngleDeg = p.rampAngleDeg;
-    entry.ccw = p.climb;
-    entry.toleranceMm = p.toleranceMm;
-    entry.rampFeed = feedOf(tc, toolpath::FeedKind::Entry);
-    entry.plungeFeed = feedOf(tc, toolpath::FeedKind::Plunge);
-    entry.cuttingFeed = feedOf(tc, toolpath::FeedKind::Cutting);
-    return entry;
 }
 
 struct LevelWriter {
@@ -177,7 +139,7 @@ base::Result<OpResult> computePocket3d(const SurfaceInput& input, const Pocket3d
     OpResult result;
     PathWriter out(result.toolpath, operationIndex);
     out.add(sectionBegin(params.name, "pocket3d", tc, {toolpath::FeedKind::Entry}));
-    LevelWriter writer{params, tc, entrySettings(params, tc), out};
+    LevelWriter writer{params, tc, entrySettings(entryRequest(params), tc), out};
     std::optional<sim::HeightField> rest;
     if (params.restMachining) {
         rest.emplace(*input.restStock);

@@ -19,11 +19,6 @@ using namespace pocket;
 
 std::string fmt(double v) { return base::NumberFormat{4, true}.format(v); }
 
-double helixDiameter(const PocketParams& p, const ToolController& tc)
-{
-    return helixDiameterOr(p.helixDiameterMm, tc.tool.diameterMm);
-}
-
 base::Status check(const std::string& what, const std::vector<geom::Region>& regions, const PocketParams& p,
                    const ToolController& tc)
 {
@@ -49,22 +44,9 @@ base::Status check(const std::string& what, const std::vector<geom::Region>& reg
         return opError(what, "floor stock " + fmt(p.floorStockMm) +
                                  " mm leaves nothing to cut between the start depth " + fmt(p.heights.startZ) +
                                  " and the final depth " + fmt(p.heights.finalZ));
-    if (!(p.rampAngleDeg > 0) || p.rampAngleDeg > 90)
-        return opError(what, "ramp angle must be in (0, 90] degrees, got " + fmt(p.rampAngleDeg));
     if (!(p.toleranceMm > 0))
         return opError(what, "tolerance must be positive, got " + fmt(p.toleranceMm) + " mm");
-    if (p.entry == EntryKind::Plunge && !tc.tool.centreCutting)
-        return opError(what, "tool " + std::to_string(tc.tool.number) +
-                                 " is not centre cutting and cannot plunge; use a helix or ramp entry");
-    if (p.entry == EntryKind::Helix) {
-        if (p.helixDiameterMm < 0 || helixDiameter(p, tc) > d + 1e-9)
-            return opError(what, "helix diameter " + fmt(p.helixDiameterMm) +
-                                     " mm must be positive and at most the tool diameter " + fmt(d) +
-                                     " mm (a larger helix leaves a core standing)");
-        if (!(p.helixPitchMm > 0))
-            return opError(what, "helix pitch must be positive, got " + fmt(p.helixPitchMm) + " mm");
-    }
-    return base::Status::success();
+    return checkEntry(what, entryRequest(p), tc);
 }
 
 std::vector<double> levelsOf(const PocketParams& p)
@@ -123,16 +105,7 @@ base::Result<OpResult> computePocket(const std::vector<geom::Region>& regions, c
         result.warn(what + ": " + fmt(left) + " mm^2 in corners the tool (diameter " + fmt(tc.tool.diameterMm) +
                     " mm) cannot reach is left uncut");
 
-    EntrySettings entry;
-    entry.kind = params.entry;
-    entry.helixRadius = helixDiameter(params, tc) / 2;
-    entry.helixPitch = params.helixPitchMm;
-    entry.rampAngleDeg = params.rampAngleDeg;
-    entry.ccw = params.climb;
-    entry.toleranceMm = tol;
-    entry.rampFeed = feedOf(tc, toolpath::FeedKind::Entry);
-    entry.plungeFeed = feedOf(tc, toolpath::FeedKind::Plunge);
-    entry.cuttingFeed = feedOf(tc, toolpath::FeedKind::Cutting);
+    const EntrySettings entry = entrySettings(entryRequest(params), tc);
     const geom::RegionIndex centreIndex(toolCentre);
     EntryPlanner planner(centreIndex, entry);
     const Program rough = makeProgram(std::move(*cuts), centreIndex, planner);

@@ -1,5 +1,6 @@
 #include "ops/pocket/Entry.h"
 
+#include "base/NumberFormat.h"
 #include "geom/RegionOps.h"
 
 #include <algorithm>
@@ -105,7 +106,48 @@ void writeRamp(PathWriter& out, const Cut& cut, double top, double level, const 
     }
 }
 
+double helixDiameterOr(double requestedMm, double toolDiameterMm)
+{
+    return requestedMm > 0 ? requestedMm : 0.9 * toolDiameterMm;
+}
+
+std::string fmt(double v) { return base::NumberFormat{4, true}.format(v); }
+
 }  // namespace
+
+base::Status checkEntry(const std::string& what, const EntryRequest& r, const ToolController& tc)
+{
+    const double d = tc.tool.diameterMm;
+    if (!(r.rampAngleDeg > 0) || r.rampAngleDeg > 90)
+        return opError(what, "ramp angle must be in (0, 90] degrees, got " + fmt(r.rampAngleDeg));
+    if (r.kind == EntryKind::Plunge && !tc.tool.centreCutting)
+        return opError(what, "tool " + std::to_string(tc.tool.number) +
+                                 " is not centre cutting and cannot plunge; use a helix or ramp entry");
+    if (r.kind == EntryKind::Helix) {
+        if (r.helixDiameterMm < 0 || helixDiameterOr(r.helixDiameterMm, d) > d + 1e-9)
+            return opError(what, "helix diameter " + fmt(r.helixDiameterMm) +
+                                     " mm must be positive and at most the tool diameter " + fmt(d) +
+                                     " mm (a larger helix leaves a core standing)");
+        if (!(r.helixPitchMm > 0))
+            return opError(what, "helix pitch must be positive, got " + fmt(r.helixPitchMm) + " mm");
+    }
+    return base::Status::success();
+}
+
+EntrySettings entrySettings(const EntryRequest& r, const ToolController& tc)
+{
+    EntrySettings entry;
+    entry.kind = r.kind;
+    entry.helixRadius = helixDiameterOr(r.helixDiameterMm, tc.tool.diameterMm) / 2;
+    entry.helixPitch = r.helixPitchMm;
+    entry.rampAngleDeg = r.rampAngleDeg;
+    entry.ccw = r.climb;
+    entry.toleranceMm = r.toleranceMm;
+    entry.rampFeed = feedOf(tc, toolpath::FeedKind::Entry);
+    entry.plungeFeed = feedOf(tc, toolpath::FeedKind::Plunge);
+    entry.cuttingFeed = feedOf(tc, toolpath::FeedKind::Cutting);
+    return entry;
+}
 
 EntryPlanner::EntryPlanner(const geom::RegionIndex& region, const EntrySettings& settings) :
     m_region(region),

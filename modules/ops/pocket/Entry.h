@@ -7,15 +7,10 @@
 #include "ops/ContourOp.h"  // EntryKind
 #include "ops/pocket/PathWriter.h"
 
+#include <string>
 #include <vector>
 
 namespace camwb::ops::pocket {
-
-// The helix diameter a pocket asks for, or 90 % of the tool's where it asks for none (0).
-inline double helixDiameterOr(double requestedMm, double toolDiameterMm)
-{
-    return requestedMm > 0 ? requestedMm : 0.9 * toolDiameterMm;
-}
 
 struct EntrySettings {
     EntryKind kind = EntryKind::Helix;
@@ -26,6 +21,27 @@ struct EntrySettings {
     double toleranceMm = 0.01;
     Feed rampFeed, plungeFeed, cuttingFeed;  // Entry, Plunge and Cutting moves
 };
+
+// How a pocket asks to enter, as the 2.5D and the 3D pocket's parameters both give it.
+struct EntryRequest {
+    EntryKind kind = EntryKind::Helix;
+    double helixDiameterMm = 0;  // 0 = 90 % of the tool diameter
+    double helixPitchMm = 1;
+    double rampAngleDeg = 3;
+    bool climb = true;
+    double toleranceMm = 0.01;
+};
+template <class PocketParameters> EntryRequest entryRequest(const PocketParameters& p)
+{
+    return {p.entry, p.helixDiameterMm, p.helixPitchMm, p.rampAngleDeg, p.climb, p.toleranceMm};
+}
+
+// The checks both pockets make of their entry ("pocket \"P\": helix pitch must be positive, ..."):
+// the ramp angle, a plunge with a tool that does not cut at its centre, the helix's size and pitch.
+base::Status checkEntry(const std::string& what, const EntryRequest& request, const ToolController& tc);
+// The settings the planner and the writer use: the helix radius (the default when none is asked),
+// pitch, ramp angle, direction (climb: counter-clockwise) and the tool controller's feeds.
+EntrySettings entrySettings(const EntryRequest& request, const ToolController& tc);
 
 struct EntryPlan {
     EntryKind kind = EntryKind::Plunge;

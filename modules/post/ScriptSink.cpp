@@ -125,6 +125,11 @@ public:
         feeds.setProperty("exit", r.feeds.exitMmPerMin);
         feeds.setProperty("finishing", r.feeds.finishingMmPerMin);
         section.setProperty("feeds", feeds);
+        // section.parameters.R3 etc.: the strategy's inputs, for a post that writes the strategy itself.
+        QJSValue parameters = engine().newObject();
+        for (const auto& [name, value] : r.strategyParameters)
+            parameters.setProperty(qs(name), value);
+        section.setProperty("parameters", parameters);
         if (!m_run.setSectionProperties(r.postProperties))
             return;
         handle(Handler::Section, {section});

@@ -266,6 +266,9 @@ struct SectionBegin {
     // this section: e.g. tcpm=off for one five-axis operation. The post must allow each per
     // operation; the kernel checks that and the value.
     std::vector<std::pair<std::string, std::string>> postProperties;
+    // The strategy's inputs by name (the groove's R0..R11, R30), for a post that writes the
+    // strategy as the control's own program instead of its moves; the moves are always there too.
+    std::vector<std::pair<std::string, double>> strategyParameters;
 };
 struct SectionEnd {};
 

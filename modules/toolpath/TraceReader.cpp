@@ -383,7 +383,11 @@ base::Result<ClImport> readTrace(base::LineReader& lines, const std::string& fil
                 std::string name = in.word();
                 s.postProperties.emplace_back(std::move(name), in.text());
             }
-            in.end("(after a section's plunge feed: entry F, exit F, finish F, set NAME \"value\")");
+            while (!in.optionalKey({"param"}).empty()) {
+                std::string name = in.word();
+                s.strategyParameters.emplace_back(std::move(name), in.number());
+            }
+            in.end("(after a section's plunge feed: entry F, exit F, finish F, set NAME \"value\", param NAME V)");
             record = s;
             section = sections++;
         } else if (kind == "endsection") {

@@ -134,6 +134,8 @@ void TraceWriter::sectionBegin(const SectionBegin& r)
         m_out += " finish " + num(r.feeds.finishingMmPerMin);
     for (const auto& [name, value] : r.postProperties)
         m_out += " set " + name + " " + quoted(value);
+    for (const auto& [name, value] : r.strategyParameters)
+        m_out += " param " + name + " " + num(value);
     m_out += '\n';
 }
 

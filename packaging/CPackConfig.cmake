@@ -22,6 +22,11 @@ install(FILES ${post_scripts} DESTINATION ${CMAKE_INSTALL_DATADIR}/camwb/posts)
 # Code several posts share, which they include("name") from posts/include/.
 file(GLOB post_includes CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/posts/include/*.js)
 install(FILES ${post_includes} DESTINATION ${CMAKE_INSTALL_DATADIR}/camwb/posts/include)
+# NC code a post copies into its output with readPostFile(): the lathe post's groove subprograms.
+file(GLOB post_groove_subprograms CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/posts/sinumerik840d-turn/groove/*.SPF)
+if(post_groove_subprograms)
+  install(FILES ${post_groove_subprograms} DESTINATION ${CMAKE_INSTALL_DATADIR}/camwb/posts/sinumerik840d-turn/groove)
+endif()
 install(DIRECTORY ${PROJECT_SOURCE_DIR}/resources/machines/ DESTINATION ${CMAKE_INSTALL_DATADIR}/camwb/machines
         FILES_MATCHING PATTERN "*.json")
 install(FILES ${PROJECT_SOURCE_DIR}/resources/tools/default.camwb-tools.json DESTINATION ${CMAKE_INSTALL_DATADIR}/camwb/tools)

@@ -7,10 +7,13 @@
 #include "toolpath/ClText.h"
 
 #include <algorithm>
+#include <filesystem>
 #include <iostream>
 #include <string_view>
 
 namespace camwb::cli {
+
+namespace fs = std::filesystem;
 
 void printUsage(std::ostream& out)
 {
@@ -179,7 +182,11 @@ int postToFile(const post::PostProcessor& post, const toolpath::Toolpath& toolpa
         return fail(summary.error().toString());
     const int warnings = printDiagnostics(summary->messages);
     std::cout << "camwb-cli: wrote " << outputPath << " (" << summary->lines << " lines, " << warnings
-              << (warnings == 1 ? " warning)\n" : " warnings)\n");
+              << (warnings == 1 ? " warning)" : " warnings)");
+    // The files the post wrote beside the program (a main program's subprograms), by name.
+    for (std::size_t i = 0; i < summary->companionPaths.size(); ++i)
+        std::cout << (i == 0 ? " and beside it " : ", ") << fs::path(summary->companionPaths[i]).filename().string();
+    std::cout << "\n";
     return kExitOk;
 }
 

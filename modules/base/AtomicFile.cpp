@@ -47,22 +47,31 @@ void AtomicFileWriter::write(std::string_view data)
         m_writeFailed = true;
 }
 
-Status AtomicFileWriter::commit()
+Status AtomicFileWriter::finishWriting()
 {
     if (!m_file)
-        return makeError("internal error: commit without open", m_target);
+        return m_tempPath.empty() ? makeError("internal error: commit without open", m_target) : Status{};
     const bool flushed = std::fflush(m_file) == 0 && ::fsync(::fileno(m_file)) == 0;
     const int savedErrno = errno;
     std::fclose(m_file);
     m_file = nullptr;
     if (m_writeFailed || !flushed) {
         ::unlink(m_tempPath.c_str());
+        m_tempPath.clear();
         errno = savedErrno;
         return makeError("write failed: " + systemError(), m_target);
     }
+    return {};
+}
+
+Status AtomicFileWriter::commit()
+{
+    if (Status written = finishWriting(); !written)
+        return written;
     if (::rename(m_tempPath.c_str(), m_target.c_str()) != 0) {
         const std::string reason = systemError();
         ::unlink(m_tempPath.c_str());
+        m_tempPath.clear();
         return makeError("cannot replace the file: " + reason, m_target);
     }
     m_tempPath.clear();

@@ -21,6 +21,9 @@ public:
 
     Status open();
     void write(std::string_view data);
+    // Flushes the temporary file to disk: a write error shows here, before any rename (a caller
+    // that replaces several files finishes them all first). commit() does it when not yet done.
+    Status finishWriting();
     Status commit();
     void abort();
 

@@ -8,6 +8,7 @@
 #include "toolpath/RecordNames.h"
 
 #include <algorithm>
+#include <cmath>
 
 namespace camwb::kinematics {
 
@@ -53,6 +54,12 @@ void LimitCheck::reachMachine(const Vec3& p, AxisMask axes)
     for (int axis = 0; axis < 3; ++axis) {
         if (!axes.has(axis))  // a move that does not give this axis did not move it
             continue;
+        // A lathe has X and Z only: its tool stays where the missing axis is 0 (an arc in G18
+        // gives Y = 0 too), and a move elsewhere is one the machine cannot make.
+        if (m_machine.axis(kAxisNames[axis]) == nullptr && std::abs(component(p, axis)) > 1e-9)
+            flag(std::string("no axis ") + kAxisNames[axis], std::string("a move goes to ") + kAxisNames[axis] +
+                                                                 num(component(p, axis)) + " but the " + m_name +
+                                                                 " has no " + kAxisNames[axis] + " axis");
         const double v = component(p, axis);
         const bool first = !m_reached.has(axis);
         if (first || v < m_low[axis].value)

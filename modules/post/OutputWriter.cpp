@@ -13,10 +13,18 @@ void OutputWriter::streamTo(Sink sink, std::size_t chunkBytes)
 
 void OutputWriter::setBlockNumbering(long long start, long long step, bool enabled, std::string prefix)
 {
+    m_start = start;
     m_next = start;
     m_step = step;
     m_numbering = enabled;
     m_prefix = std::move(prefix);
+}
+
+OutputWriter OutputWriter::restartedNumbering() const
+{
+    OutputWriter fresh;
+    fresh.setBlockNumbering(m_start, m_step, m_numbering, m_prefix);
+    return fresh;
 }
 
 void OutputWriter::appendBlockNumber()

@@ -22,6 +22,10 @@ public:
     // Next block gets `start`; each numbered block adds `step`. Default: N10, N20, ...
     void setBlockNumbering(long long start, long long step, bool enabled, std::string prefix = "N");
 
+    // An empty writer (in memory) that numbers as this one was last set up to, from its first
+    // number again: a companion file of the program restarts its block numbers.
+    OutputWriter restartedNumbering() const;
+
     // Joins the non-empty words with single spaces, prefixed by "N<n> " when numbering is on.
     // All words empty: writes nothing and uses no block number. Returns whether a line was written.
     bool writeBlock(const std::vector<std::string>& words);
@@ -71,6 +75,7 @@ private:
     std::size_t m_bytes = 0;  // streamed so far
     int m_operation = -1;
     int m_blockWords = 0;
+    long long m_start = 10;
     long long m_next = 10;
     long long m_step = 10;
     bool m_numbering = true;

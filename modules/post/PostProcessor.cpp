@@ -12,8 +12,12 @@
 #include <QCoreApplication>
 
 #include <algorithm>
+#include <filesystem>
+#include <memory>
 
 namespace camwb::post {
+
+namespace fs = std::filesystem;
 
 namespace {
 
@@ -104,6 +108,8 @@ base::Result<PostOutput> PostProcessor::run(const toolpath::Toolpath& toolpath, 
         return status.error();
     output.lineOperation = run.writer().lineOperations();
     output.text = run.writer().takeText();
+    for (CompanionWriter& file : run.companions())
+        output.files.push_back({file.name, file.writer.takeText()});
     return output;
 }
 
@@ -135,8 +141,35 @@ base::Result<PostSummary> PostProcessor::runToFile(const toolpath::Toolpath& too
     if (!status)
         return status.error();  // the writer's destructor removes the temporary file
     run.writer().finish();
+    if (base::Status written = file.finishWriting(); !written)
+        return written.error();
+    // The companion files are in memory (a post copies a few subprograms); each gets its own
+    // temporary file, and nothing is renamed before all of them are written.
+    const fs::path folder = fs::path(outputPath).parent_path();
+    std::vector<std::unique_ptr<base::AtomicFileWriter>> companions;
+    for (CompanionWriter& companion : run.companions()) {
+        const fs::path target = folder / companion.name;
+        std::error_code ec;
+        if (fs::equivalent(target, outputPath, ec) || target.filename() == fs::path(outputPath).filename())
+            return base::makeError("the post's companion file " + companion.name + " would overwrite the output " +
+                                       outputPath,
+                                   m_info.filePath);
+        auto writer = std::make_unique<base::AtomicFileWriter>(target.string());
+        if (base::Status opened = writer->open(); !opened)
+            return opened.error();
+        writer->write(companion.writer.text());
+        if (base::Status written = writer->finishWriting(); !written)
+            return written.error();
+        summary.companionPaths.push_back(target.string());
+        companions.push_back(std::move(writer));
+    }
     if (base::Status committed = file.commit(); !committed)
         return committed.error();
+    for (std::size_t i = 0; i < companions.size(); ++i)
+        if (base::Status committed = companions[i]->commit(); !committed)
+            return base::makeError(committed.error().message + " (the output and the companion files before " +
+                                       summary.companionPaths[i] + " were written)",
+                                   summary.companionPaths[i]);
     summary.lines = run.writer().lineCount();
     summary.bytes = run.writer().byteCount();
     return summary;

@@ -49,8 +49,16 @@ struct RunOptions {
     std::chrono::milliseconds scriptBudget{10000};
 };
 
+// A file the post wrote beside the main program (openFile/closeFile in the script), e.g. the SPF
+// subprograms a SINUMERIK main program calls: a plain file name and its text.
+struct CompanionFile {
+    std::string name;
+    std::string text;  // every line ends with "\n"
+};
+
 struct PostOutput {
     std::string text;                        // every line ends with "\n"
+    std::vector<CompanionFile> files;        // companion files, in the order the post opened them
     std::vector<base::Diagnostic> messages;  // warnings from the kernel, the machine check and the post
     std::vector<int> lineOperation;          // per output line: operation index of its CL record, -1 = none
 };
@@ -60,6 +68,7 @@ struct PostSummary {
     std::vector<base::Diagnostic> messages;
     std::size_t lines = 0;
     std::size_t bytes = 0;
+    std::vector<std::string> companionPaths;  // the companion files written beside the output
 };
 
 class PostProcessor {
@@ -77,8 +86,11 @@ public:
     base::Result<PostOutput> run(const toolpath::Toolpath& toolpath, const RunOptions& options) const;
     base::Result<PostOutput> run(const toolpath::Toolpath& toolpath, const PostContext& context) const;
 
-    // Streams the NC into a temporary file beside `outputPath` and renames it over `outputPath`
-    // only when the whole run succeeded: on any error the output path is left untouched.
+    // Streams the NC into a temporary file beside `outputPath`, writes each companion file to a
+    // temporary file in the same folder, and renames them all over their targets only when the
+    // whole run succeeded: on any error no file is written or replaced. (The renames themselves
+    // run one after the other: a rename failing half-way, e.g. a file locked by another program,
+    // leaves the earlier ones done; the error says which.)
     base::Result<PostSummary> runToFile(const toolpath::Toolpath& toolpath, const RunOptions& options,
                                         const std::string& outputPath) const;
 

@@ -282,12 +282,12 @@ void ScriptKernel::writeBlockWords(const QJSValue& words)
     texts.reserve(length);
     for (int i = 0; i < length; ++i)
         texts.push_back(wordText(words.property(i)));
-    m_writer.writeBlock(texts);
+    writer().writeBlock(texts);
 }
 
-void ScriptKernel::writeComment(const QJSValue& text) { m_writer.writeComment(wordText(text)); }
+void ScriptKernel::writeComment(const QJSValue& text) { writer().writeComment(wordText(text)); }
 
-void ScriptKernel::writeln(const QJSValue& text) { m_writer.writeLine(wordText(text)); }
+void ScriptKernel::writeln(const QJSValue& text) { writer().writeLine(wordText(text)); }
 
 std::string errorFile(const QJSValue& error, const std::string& fallback)
 {
@@ -335,7 +335,7 @@ void ScriptKernel::setBlockNumbering(const QJSValue& start, const QJSValue& step
         m_engine->throwError(QJSValue::TypeError, QStringLiteral("a block number prefix cannot hold a line break"));
         return;
     }
-    m_writer.setBlockNumbering(static_cast<long long>(first), static_cast<long long>(increment),
+    writer().setBlockNumbering(static_cast<long long>(first), static_cast<long long>(increment),
                                enabled.isUndefined() ? true : enabled.toBool(), prefixText);
 }
 

@@ -85,10 +85,16 @@ ScriptRun::ScriptRun(std::string postFile, const PostContext& context, std::chro
     QJSValue global = m_engine.globalObject();
     QJSValue kernel = m_engine.newQObject(m_kernel.get());
     global.setProperty("__camwbKernel", kernel);
-    for (const char* name :
-         {"createFormat", "createVariable", "createModal", "createPending", "writeComment", "writeln", "warning",
-          "error", "setBlockNumbering", "getCurrentPosition", "getCurrentAxis", "getProperty", "expandCyclePoint",
-          "machiningSeconds", "getFiveAxisTravel", "getMachinePose", "include"})
+    for (const char* name : {"createFormat",      "createVariable",
+                             "createModal",       "createPending",
+                             "writeComment",      "writeln",
+                             "warning",           "error",
+                             "setBlockNumbering", "getCurrentPosition",
+                             "getCurrentAxis",    "getProperty",
+                             "expandCyclePoint",  "machiningSeconds",
+                             "getFiveAxisTravel", "getMachinePose",
+                             "include",           "readPostFile",
+                             "openFile",          "closeFile"})
         global.setProperty(name, kernel.property(name));  // QObject methods stay bound to the kernel
     global.setProperty("programName", qs(context.programName));
     global.setProperty("dateString", qs(formatDateUtc(context.dateEpochSeconds)));

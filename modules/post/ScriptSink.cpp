@@ -68,7 +68,9 @@ public:
     void spindle(const Spindle& r) override
     {
         m_spindle = {r.rpm, r.clockwise};
-        handle(Handler::Spindle, {r.rpm, r.clockwise});
+        // Under constant surface speed (a lathe's G96) rpm is the limit and the third argument the
+        // surface speed in m/min; 0 otherwise.
+        handle(Handler::Spindle, {r.rpm, r.clockwise, r.surfaceSpeedMPerMin});
     }
     void coolant(const Coolant& r) override { handle(Handler::Coolant, {QString(toolpath::name(r.mode))}); }
     void feedMode(const FeedModeChange& r) override
@@ -204,7 +206,7 @@ public:
     void setSource(const SourceRef& source) override
     {
         m_operation = source.operationIndex;
-        m_run.m_kernel->writer().setOperation(source.operationIndex);
+        m_run.m_kernel->mainWriter().setOperation(source.operationIndex);
     }
 
     QJSValue toolObject(const Tool& t)
@@ -585,9 +587,11 @@ base::Status ScriptRun::play(const Toolpath& toolpath, const ProgramSummary& sum
         dispatch(toolpath.record(i), sink);
     }
     m_recordIndex = -1;
-    m_kernel->writer().setOperation(-1);
+    m_kernel->mainWriter().setOperation(-1);
     if (!m_failure)
         call(Handler::Close, {});
+    if (!m_failure && !m_kernel->openCompanion().empty())
+        fail("openFile(\"" + m_kernel->openCompanion() + "\") was never closed: closeFile() before the run ends");
     if (m_failure)
         return *m_failure;
     sink.report(m_kernel->messages());

@@ -128,12 +128,28 @@ private:
     std::string m_text;
 };
 
+// A file the post writes beside the main program (openFile/closeFile), kept in memory until the
+// run has succeeded.
+struct CompanionWriter {
+    std::string name;
+    OutputWriter writer;
+};
+
 class ScriptKernel : public QObject {
     Q_OBJECT
 public:
     ScriptKernel(QJSEngine* engine, std::string postFile) : m_engine(engine), m_postFile(std::move(postFile)) {}
 
-    OutputWriter& writer() { return m_writer; }
+    // Where writeBlock, writeln, writeComment and the block templates write now: the companion
+    // file openFile() opened, else the main program.
+    OutputWriter& writer() { return m_open >= 0 ? m_companions[static_cast<std::size_t>(m_open)].writer : m_writer; }
+    OutputWriter& mainWriter() { return m_writer; }
+    std::vector<CompanionWriter>& companions() { return m_companions; }
+    // The companion file still open (no closeFile() before the end of the run); empty: none.
+    std::string openCompanion() const
+    {
+        return m_open >= 0 ? m_companions[static_cast<std::size_t>(m_open)].name : std::string();
+    }
     std::vector<base::Diagnostic>& messages() { return m_messages; }
     // Where the kernel believes the tool is, axis by axis (unknown at the start and after a tool
     // change, until a move gives the axis).
@@ -205,6 +221,21 @@ public:
     // include/ of every post folder (a user's post may include a built-in library). Names are
     // plain ([a-z0-9_-]), so no other file can be reached.
     Q_INVOKABLE void include(const QJSValue& name);
+    // readPostFile("sub/NAME.SPF"): the text of a file the post ships beside itself (NC code it
+    // copies into the output), looked up as include() looks up libraries: the post's own folder,
+    // then every post folder. A relative path without '.' or '..' parts; a missing file, an
+    // absolute path or one that leaves the folder (also through a link) is an error at the
+    // post's line.
+    Q_INVOKABLE QString readPostFile(const QJSValue& relativePath);
+    // openFile("NAME.SPF"): from now on writeBlock, writeln, writeComment and the block templates
+    // write the companion file NAME.SPF, beside the main output, until closeFile(). Its block
+    // numbers restart: the numbering the main program last set (start, step, on/off, prefix) from
+    // its start; setBlockNumbering() while it is open changes it for that file only. A plain file
+    // name ([A-Za-z0-9_.-], not starting with '.'), each name once per run (compared without
+    // case: controls and some file systems do), one file open at a time; every file must be
+    // closed before the run ends.
+    Q_INVOKABLE void openFile(const QJSValue& name);
+    Q_INVOKABLE void closeFile();
 
 private:
     QJSValue makeVariable(const QJSValue& spec, const QJSValue& format, bool acceptsText);
@@ -223,6 +254,8 @@ private:
     std::array<double, 6> m_axisMin{}, m_axisMax{}, m_axisLast{};
     unsigned m_axesSeen = 0;
     std::vector<std::string> m_included;
+    std::vector<CompanionWriter> m_companions;
+    int m_open = -1;  // index into m_companions of the file being written, -1: the main program
 };
 
 // Text of a script value for NC words: undefined and null are "", whole numbers without decimals,

@@ -83,7 +83,9 @@ public:
     // Plays the toolpath through the post (onOpen ... onClose); the text goes to writer().
     base::Status play(const toolpath::Toolpath& toolpath, const ProgramSummary& summary);
 
-    OutputWriter& writer() { return m_kernel->writer(); }
+    OutputWriter& writer() { return m_kernel->mainWriter(); }
+    // The companion files the post wrote (openFile/closeFile), in the order it opened them.
+    std::vector<CompanionWriter>& companions() { return m_kernel->companions(); }
     std::vector<base::Diagnostic>& messages() { return m_kernel->messages(); }
 
 private:

@@ -37,6 +37,26 @@ std::vector<std::string> texts(const std::vector<base::Diagnostic>& diagnostics)
     return out;
 }
 
+// A lathe has X and Z only: moves in its XZ plane (Y not given, or 0 as arcs give it) pass,
+// a move to another Y is one it cannot make.
+TEST(LimitCheck, ALatheFlagsAMoveOffItsXZPlane)
+{
+    Machine lathe;
+    lathe.id = "lathe";
+    lathe.name = "Lathe";
+    lathe.axes = {{"X", false, 0, 1000}, {"Z", false, 0, 10000}};
+    ToolpathRecorder recorder;
+    LimitCheck check(lathe, recorder);
+    auto line = [&](int n) { check.setSource(SourceRef{-1, -1, n, 0}); };
+    line(1), check.rapid(Rapid{{200, 0, 0}, AxisMask{AxisMask::kX}});
+    line(2), check.rapid(Rapid{{200, 0, 150}, AxisMask{AxisMask::kZ}});
+    line(3), check.linear(Linear{{180, 0, 150}, 0.2});
+    EXPECT_TRUE(check.ncDiagnostics({"p.mpf"}).empty());
+    line(4), check.linear(Linear{{180, 5, 150}, 0.2});
+    EXPECT_EQ(texts(check.ncDiagnostics({"p.mpf"})),
+              (std::vector<std::string>{"p.mpf:4: warning: a move goes to Y5 but the Lathe has no Y axis"}));
+}
+
 TEST(LimitCheck, ForwardsEverythingAndFlagsEachKindOnceAtItsFirstLine)
 {
     const Machine machine = smallMill();

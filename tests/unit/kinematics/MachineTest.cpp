@@ -55,6 +55,23 @@ TEST(Machine, EmcoConceptMill105FromTheThesis)
     EXPECT_FALSE(emco->hasCoolant("mist"));
 }
 
+// The lathe of seed-001 (§1): X (a radius) and Z only, no Y; the spindle limit is Kód 5's LIMS.
+TEST(Machine, SkodaSr2000LatheHasXAndZOnly)
+{
+    auto lathe = kinematics::findMachine("skoda-sr2000-840d", kinematics::defaultMachineDirs());
+    ASSERT_TRUE(lathe.ok()) << lathe.error().toString();
+    EXPECT_EQ(lathe->control, "sinumerik-840d");
+    ASSERT_EQ(lathe->axes.size(), 2u);
+    EXPECT_EQ(lathe->axis("Y"), nullptr);
+    ASSERT_NE(lathe->axis("X"), nullptr);
+    ASSERT_NE(lathe->axis("Z"), nullptr);
+    EXPECT_EQ(lathe->axis("X")->max - lathe->axis("X")->min, 1000);   // diameter over bed 2000 mm
+    EXPECT_EQ(lathe->axis("Z")->max - lathe->axis("Z")->min, 10000);  // turning length 10000 mm
+    EXPECT_EQ(lathe->spindleMaxRpm, 3000);
+    EXPECT_TRUE(lathe->hasCoolant("flood"));
+    EXPECT_FALSE(lathe->kinematics.fiveAxis());
+}
+
 TEST(Machine, MasMcvl1000FromTheThesis)
 {
     auto mas = kinematics::findMachine("mas-mcvl1000", kinematics::defaultMachineDirs());

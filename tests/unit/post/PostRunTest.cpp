@@ -173,7 +173,7 @@ TEST(PostRegistry, UserFoldersOverrideBuiltInOnesAndTheListingSaysSo)
     std::ofstream(user / "notes.txt") << "not a post\n";
     const std::vector<base::DataDir> dirs{{user.string(), false}, {kPostsDir, true}, {kPostsDir, true}};
     const std::vector<PostEntry> posts = listPosts(dirs);
-    ASSERT_EQ(posts.size(), 5u);  // sorted by id; the built-in folder twice is still one folder
+    ASSERT_EQ(posts.size(), 6u);  // sorted by id; the built-in folder twice is still one folder
     EXPECT_EQ(posts[0].id, "heidenhain-itnc530");
     EXPECT_TRUE(posts[0].builtIn);
     EXPECT_EQ(posts[1].id, "linuxcnc");
@@ -187,6 +187,8 @@ TEST(PostRegistry, UserFoldersOverrideBuiltInOnesAndTheListingSaysSo)
     EXPECT_EQ(posts[3].shadows, std::vector<std::string>{kEmcoPost});
     EXPECT_EQ(posts[4].id, "sinumerik840d");
     EXPECT_TRUE(posts[4].builtIn);
+    EXPECT_EQ(posts[5].id, "sinumerik840d-turn");
+    EXPECT_TRUE(posts[5].builtIn);
     EXPECT_EQ(findPost("sinumerik828d-emco", dirs).value(), (user / "sinumerik828d-emco.js").string());
 }
 

@@ -111,7 +111,10 @@ bool Machine::readKeyword(const Program& p, const Block& b, const Word& word, Bl
         m_evalFailed = false;
         const auto args = evalArgs(p, b);
         const int alarm = !args.empty() && args[0] ? static_cast<int>(*args[0]) : 0;
-        error(p, word.pos, "the program sets alarm " + std::to_string(alarm) + " (SETAL): stopped");
+        // The control shows the message line beside the alarm: a cycle names the cause with MSG.
+        error(p, word.pos,
+              "the program sets alarm " + std::to_string(alarm) + " (SETAL): stopped" +
+                  (m_message.empty() ? std::string() : ": " + m_message));
         m_stopped = true;
         return false;
     }
@@ -195,9 +198,10 @@ bool Machine::readWords(const Program& p, const Block& b, BlockWords& w)
                 return false;
             break;
         case WordKind::Msg:
+            m_message = word.code >= 0 ? p.texts[static_cast<std::size_t>(word.code)] : std::string();
             if (word.code >= 0) {
                 setSource(b.line);
-                m_sink.comment(Comment{p.texts[static_cast<std::size_t>(word.code)]});
+                m_sink.comment(Comment{m_message});
             }
             break;
         default:

@@ -225,6 +225,7 @@ private:
     };
     std::map<std::pair<int, int>, EdgeData> m_edges;
     std::string m_toolName;
+    std::string m_message;  // the text of the last MSG("..."), empty after MSG(): SETAL reports it
     std::optional<ModalCall> m_modalCall;
     bool m_fiveAxisWarned = false;
     bool m_warnedMachineCoordinates = false;  // G53/G153/SUPA warned once

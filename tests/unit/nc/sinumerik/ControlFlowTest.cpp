@@ -116,6 +116,25 @@ TEST(SinumerikControlFlow, SetAlarmStops)
     EXPECT_FALSE(r.result.completed);
 }
 
+// A cycle names the cause of its alarm with MSG before SETAL: the error carries that text, and
+// MSG() (no text) clears it again.
+TEST(SinumerikControlFlow, SetAlarmReportsTheMessage)
+{
+    const NcRun r = run("MSG(\"R9 must be > 0\")\nIF R9<=0\nSETAL(65001)\nM0\nENDIF\nG0 X2\n");
+    ASSERT_EQ(r.errors(), 1) << r.diagnostics();
+    const Diagnostic* d = r.find("alarm 65001 (SETAL): stopped: R9 must be > 0");
+    ASSERT_NE(d, nullptr) << r.diagnostics();
+    EXPECT_EQ(d->line, 3);
+    EXPECT_TRUE(r.all<toolpath::Rapid>().empty());
+    EXPECT_TRUE(r.all<toolpath::ProgramStop>().empty());  // stopped at SETAL, M0 not reached
+    EXPECT_FALSE(r.result.completed);
+
+    const NcRun cleared = run("MSG(\"old\")\nMSG()\nSETAL(65002)\n");
+    const Diagnostic* e = cleared.find("alarm 65002");
+    ASSERT_NE(e, nullptr) << cleared.diagnostics();
+    EXPECT_EQ(e->message.find("old"), std::string::npos) << e->message;
+}
+
 TEST(SinumerikControlFlow, RecursionStopsAtSixteenLevels)
 {
     const NcRun r = run("DEEP\nM30\n", {{"DEEP", "PROC DEEP\nR1=R1+1\nDEEP\nM17\n"}});

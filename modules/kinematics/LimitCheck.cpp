@@ -29,7 +29,8 @@ constexpr const char* kAxisNames[3] = {"X", "Y", "Z"};
 LimitCheck::LimitCheck(const Machine& machine, MachineSink& next) :
     ForwardingSink(next),
     m_machine(machine),
-    m_name(machine.name.empty() ? machine.id : machine.name)
+    m_name(machine.name.empty() ? machine.id : machine.name),
+    m_lathe(machine.axis("X") && machine.axis("Z") && !machine.axis("Y"))
 {
 }
 
@@ -54,12 +55,12 @@ void LimitCheck::reachMachine(const Vec3& p, AxisMask axes)
     for (int axis = 0; axis < 3; ++axis) {
         if (!axes.has(axis))  // a move that does not give this axis did not move it
             continue;
-        // A lathe has X and Z only: its tool stays where the missing axis is 0 (an arc in G18
-        // gives Y = 0 too), and a move elsewhere is one the machine cannot make.
-        if (m_machine.axis(kAxisNames[axis]) == nullptr && std::abs(component(p, axis)) > 1e-9)
-            flag(std::string("no axis ") + kAxisNames[axis], std::string("a move goes to ") + kAxisNames[axis] +
-                                                                 num(component(p, axis)) + " but the " + m_name +
-                                                                 " has no " + kAxisNames[axis] + " axis");
+        // A machine with X and Z but no Y is a lathe: its tool works where Y is 0 (an arc in
+        // G18 gives Y = 0 too), and a move elsewhere is one it cannot make. (Another axis a file
+        // leaves out is not checked.)
+        if (axis == 1 && m_lathe && std::abs(p.y) > 1e-9)
+            flag("lathe Y",
+                 "a move goes to Y" + num(p.y) + " but the " + m_name + " turns in X and Z only (a lathe, no Y axis)");
         const double v = component(p, axis);
         const bool first = !m_reached.has(axis);
         if (first || v < m_low[axis].value)

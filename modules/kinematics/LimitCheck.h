@@ -80,6 +80,7 @@ private:
 
     const Machine& m_machine;
     std::string m_name;
+    bool m_lathe = false;  // X and Z, no Y: moves must stay at Y = 0
     toolpath::SourceRef m_source;
     std::size_t m_records = 0;  // records seen, the current one included
     bool m_perMinute = true;

@@ -4,6 +4,15 @@ var post = {description: "main program and two subprograms", extension: "mpf"};
 function onRapid(x, y, z) {
     writeBlock("G0 X" + x);
 }
+function onLinear(x, y, z, feed) {
+    writeBlock("G1 X" + x);
+}
+function onSection() {}
+function onSectionEnd() {}
+function onToolChange() {}
+function onFeedMode() {}
+function onSpindle() {}
+function onCoolant() {}
 function onClose() {
     writeBlock("SUB1");
     writeBlock("M30");

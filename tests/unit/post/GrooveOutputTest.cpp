@@ -113,8 +113,22 @@ std::vector<Move> readBack(const PostOutput& output)
 // Within the output's precision, or both not given yet.
 bool near(double a, double b) { return (std::isnan(a) && std::isnan(b)) || std::abs(a - b) <= kOutputPrecision; }
 
-void expectSameMoves(const std::vector<Move>& a, const std::vector<Move>& b, const char* what)
+// The moves that move the machine: the CL and the subprograms have moves of zero length (seed
+// §5.2: 5 rapids, 3 feeds for Kód 1), which the post's modal words leave out (no block without a
+// word that changes).
+std::vector<Move> moving(const std::vector<Move>& moves)
 {
+    std::vector<Move> out;
+    for (const Move& m : moves)
+        if (out.empty() || !near(m.x, out.back().x) || !near(m.z, out.back().z))
+            out.push_back(m);
+    return out;
+}
+
+void expectSameMoves(const std::vector<Move>& all, const std::vector<Move>& allOther, const char* what)
+{
+    const std::vector<Move> a = moving(all);
+    const std::vector<Move> b = moving(allOther);
     ASSERT_EQ(a.size(), b.size()) << what;
     for (std::size_t i = 0; i < a.size(); ++i) {
         ASSERT_EQ(a[i].rapid, b[i].rapid) << what << " move " << i;
@@ -132,6 +146,7 @@ TEST_P(GrooveOutput, ExpandedAndSubprogramsMoveTheMachineAlike)
     const Toolpath program = grooveProgram(params);
     ASSERT_GT(program.size(), 0u);
     const std::vector<Move> cl = movesOf(program);
+    EXPECT_GT(moving(cl).size(), 100u);  // a real groove, not an empty comparison
     for (const bool diameter : {true, false}) {
         SCOPED_TRACE(diameter ? "DIAMON" : "DIAMOF");
         const PostOutput expanded = post(program, "expanded", diameter);
@@ -151,6 +166,31 @@ TEST_P(GrooveOutput, ExpandedAndSubprogramsMoveTheMachineAlike)
         // retract in X left it, with Z unknown: the same in both modes from there on.
         expectSameMoves(a, b, "mode A / mode B");
     }
+}
+
+// Seed §5.3 item 3: a groove the sweeps cannot widen; the operation finishes it by straight
+// plunges (fallback = 1), which mode A writes and mode B refuses, saying what to do.
+TEST(GrooveOutputFallback, ModeBRefusesItModeAWritesIt)
+{
+    ops::GrooveParams params;
+    params.groove = {350, 500, 20.899, 37.27, 44.84, 4.844, 9.585, 0.5, 0.5, 23.2};
+    params.stepFactor = 1;
+    params.infeedMm = 2;
+    const Toolpath program = grooveProgram(params);
+    ASSERT_GT(program.size(), 0u);
+    auto loaded = PostProcessor::load(kPost);
+    ASSERT_TRUE(loaded.ok()) << loaded.error().toString();
+    RunOptions options;
+    options.context = fixedContext();
+    options.properties = {{"grooveOutput", "subprograms"}};
+    auto refused = loaded->run(program, options);
+    ASSERT_FALSE(refused.ok());
+    EXPECT_NE(refused.error().message.find("narrow-groove fallback"), std::string::npos) << refused.error().toString();
+    EXPECT_NE(refused.error().message.find("grooveOutput=expanded"), std::string::npos);
+    const std::vector<Move> back = readBack(post(program, "expanded", true));
+    ASSERT_GT(back.size(), 1u);
+    expectSameMoves(std::vector<Move>(back.begin() + 1, back.end()), movesOf(program),
+                    "mode A / CL");  // after the safe X
 }
 
 INSTANTIATE_TEST_SUITE_P(Seed001, GrooveOutput,

@@ -3,7 +3,9 @@
 # that both runs are byte-identical (into <run>/<name>.<ext>, name from the case's output-name file,
 # else "input": Klartext writes it into BEGIN PGM) and equal expected.<ext>, and that the warnings equal
 # expected.warnings (paths made relative; a post script's line numbers left out so that editing
-# the script does not churn every case). CAMWB_UPDATE_GOLDEN=1 rewrites the expected files.
+# the script does not churn every case). Files the post writes beside the program (openFile: a
+# main program's subprograms) must equal the case's file of the same name (beside expected.<ext>,
+# where the round trip's interpreter finds them too). CAMWB_UPDATE_GOLDEN=1 rewrites the expected files.
 file(GLOB inputs ${CASE}/input.*)
 list(LENGTH inputs count)
 if(NOT count EQUAL 1)
@@ -40,6 +42,7 @@ if(EXISTS ${CASE}/environment)  # NAME=value lines over the golden environment (
   file(STRINGS ${CASE}/environment environment REGEX "^[A-Z_]+=")
 endif()
 foreach(run IN ITEMS first second)
+  file(REMOVE_RECURSE ${OUT}/${run})
   file(MAKE_DIRECTORY ${OUT}/${run})
   execute_process(COMMAND ${CMAKE_COMMAND} -E env ${environment} ${CLI} ${args} -o ${OUT}/${run}/${name}.${EXT}
                   RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err_${run})
@@ -52,6 +55,15 @@ execute_process(COMMAND ${CMAKE_COMMAND} -E compare_files ${OUT}/first/${name}.$
 if(different OR NOT err_first STREQUAL err_second)
   message(FATAL_ERROR "two runs on the same input differ: posting is not deterministic")
 endif()
+file(GLOB companions RELATIVE ${OUT}/first ${OUT}/first/*)
+list(REMOVE_ITEM companions ${name}.${EXT})
+foreach(companion IN LISTS companions)
+  execute_process(COMMAND ${CMAKE_COMMAND} -E compare_files ${OUT}/first/${companion} ${OUT}/second/${companion}
+                  RESULT_VARIABLE different)
+  if(different)
+    message(FATAL_ERROR "two runs wrote different ${companion}: posting is not deterministic")
+  endif()
+endforeach()
 
 string(REPLACE "${SOURCE_DIR}/" "" warnings "${err_first}")
 string(REGEX REPLACE "[^ \n]*\\.js:[0-9]+: " "<post>: " warnings "${warnings}")
@@ -59,6 +71,9 @@ string(REGEX REPLACE "[^ \n]*\\.js:[0-9]+: " "<post>: " warnings "${warnings}")
 set(expected_nc ${CASE}/expected.${EXT})
 if("$ENV{CAMWB_UPDATE_GOLDEN}" STREQUAL "1")
   file(COPY_FILE ${OUT}/first/${name}.${EXT} ${expected_nc})
+  foreach(companion IN LISTS companions)
+    file(COPY_FILE ${OUT}/first/${companion} ${CASE}/${companion})
+  endforeach()
   file(WRITE ${CASE}/expected.warnings "${warnings}")
   message(STATUS "updated ${expected_nc} and expected.warnings: review the diff before committing")
   return()
@@ -68,6 +83,17 @@ if(different)
   execute_process(COMMAND diff -u ${expected_nc} ${OUT}/first/${name}.${EXT} OUTPUT_VARIABLE diff)
   message(FATAL_ERROR "NC differs from ${expected_nc}:\n${diff}")
 endif()
+foreach(companion IN LISTS companions)
+  if(NOT EXISTS ${CASE}/${companion})
+    message(FATAL_ERROR "the post wrote ${companion} beside the program, which ${CASE} does not expect")
+  endif()
+  execute_process(COMMAND ${CMAKE_COMMAND} -E compare_files ${OUT}/first/${companion} ${CASE}/${companion}
+                  RESULT_VARIABLE different)
+  if(different)
+    execute_process(COMMAND diff -u ${CASE}/${companion} ${OUT}/first/${companion} OUTPUT_VARIABLE diff)
+    message(FATAL_ERROR "${companion} differs from ${CASE}/${companion}:\n${diff}")
+  endif()
+endforeach()
 file(READ ${CASE}/expected.warnings expected_warnings)
 if(NOT warnings STREQUAL expected_warnings)
   message(FATAL_ERROR "warnings differ from ${CASE}/expected.warnings:\nexpected:\n${expected_warnings}\nactual:\n${warnings}")

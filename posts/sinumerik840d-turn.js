@@ -22,6 +22,7 @@ var post = {
     controls: ["sinumerik-840d"],
     capabilities: {
         arcPlanes: [],  // arcs are written as lines within the tolerance (the groove has none)
+        helicalArcs: false,
         cycles: [],
         maxAxes: 3
     },

@@ -54,7 +54,8 @@ TEST(LimitCheck, ALatheFlagsAMoveOffItsXZPlane)
     EXPECT_TRUE(check.ncDiagnostics({"p.mpf"}).empty());
     line(4), check.linear(Linear{{180, 5, 150}, 0.2});
     EXPECT_EQ(texts(check.ncDiagnostics({"p.mpf"})),
-              (std::vector<std::string>{"p.mpf:4: warning: a move goes to Y5 but the Lathe turns in X and Z only (a lathe, no Y axis)"}));
+              (std::vector<std::string>{
+                  "p.mpf:4: warning: a move goes to Y5 but the Lathe turns in X and Z only (a lathe, no Y axis)"}));
 }
 
 TEST(LimitCheck, ForwardsEverythingAndFlagsEachKindOnceAtItsFirstLine)

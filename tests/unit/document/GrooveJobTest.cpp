@@ -4,7 +4,10 @@
 #include "document/JobFile.h"
 #include "document/JobPipeline.h"
 #include "document/OperationParameters.h"
+#include "document/SetupSheet.h"
 #include "document/TurningSetup.h"
+#include "kinematics/Machine.h"
+#include "post/PostRegistry.h"
 #include "sim/TurningCheck.h"
 
 #include <gtest/gtest.h>
@@ -219,4 +222,32 @@ TEST(GrooveJob, TurningSetupIsTheGroovesShaftAndOffsetContour)
     // A job without a groove has no turning setup.
     job.operations[0].enabled = false;
     EXPECT_FALSE(document::turningSetup(job));
+}
+
+TEST(GrooveJob, SetupSheetSimulatesTheTurningWithoutAModel)
+{
+    document::Job job = grooveJob();
+    job.postId = "sinumerik828d-emco";  // a post this test can rely on; the sheet only reads its name
+    job.machineId.clear();
+    auto model = document::loadJobModel(job);
+    ASSERT_TRUE(model.ok()) << model.error().toString();
+    auto program = document::computeProgram(job, model.value());
+    ASSERT_TRUE(program.ok()) << program.error().toString();
+    document::SheetOptions options;
+    options.machine = kinematics::defaultLimitsMachine();
+    options.postDirs = post::defaultPostDirs();
+    auto sheet = document::collectSetupSheet(job, kGrooveJob, model.value(), program.value(), options);
+    ASSERT_TRUE(sheet.ok()) << sheet.error().toString();
+    const document::SheetVerification& v = sheet->verification;
+    EXPECT_TRUE(v.run);
+    EXPECT_TRUE(v.turning);
+    EXPECT_EQ(v.rapidsInStock, 0);
+    EXPECT_EQ(v.gouges, 0);
+    // The moves are built although the program never gives Y (the turning plane).
+    EXPECT_GT(sheet->feedLengthMm, 4000);
+    ASSERT_EQ(sheet->operations.size(), 1u);
+    EXPECT_GT(sheet->operations[0].seconds, 0);
+    EXPECT_NEAR(sheet->operations[0].seconds, sheet->cycleSeconds, 1e-6);
+    ASSERT_EQ(sheet->tools.size(), 1u);
+    EXPECT_FALSE(sheet->tools[0].stickOutMm) << "a lathe insert has no stick-out along a spindle axis";
 }

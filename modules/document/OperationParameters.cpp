@@ -59,14 +59,15 @@ base::Status setOperationParameter(Job& job, int index, const std::string& param
     if (parameter == "R9") {
         // The insert width is the tool's: the operation's tool controller in the job.
         if (!json.is_number())
-            return base::makeError(where + ".R9: expected a number (the insert width, mm), got \"" + value + "\"");
+            return base::makeError(where + ": params.R9: expected a number (the insert width, mm), got \"" + value +
+                                   "\"");
         for (ops::ToolController& tc : job.tools)
             if (tc.tool.number == op.toolNumber)
                 tc.tool.diameterMm = json.get<double>();
         return {};
     }
     try {
-        detail::readOperationParams(op, base::jsonread::Json{{parameter, json}}, where);
+        detail::readOperationParams(op, base::jsonread::Json{{parameter, json}}, where + ": params");
     } catch (const base::jsonread::JsonFieldError& e) {
         std::string message = e.message;
         if (!json.is_number() && !json.is_boolean())

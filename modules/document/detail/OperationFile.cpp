@@ -36,30 +36,33 @@ std::vector<int> indexList(const Json& object, const char* key, const std::strin
     return out;
 }
 
-// The object with each alias (fieldAliases) renamed to its field's key; both given is an error.
-template <class Params> Json withoutAliases(const Params& params, const Json& object, const std::string& where)
+// The name field `key` is given by in `object`: its key, else its alias (fieldAliases) when that
+// is there, so messages name what the file or --set wrote. Both given is an error.
+template <class Params>
+std::string givenName(const Params& params, const Json& object, const char* key, const std::string& where)
 {
-    Json out = object;
     for (const FieldAlias& a : fieldAliases(params)) {
-        const std::string alias(a.alias), key(a.key);
-        if (!out.contains(alias))
+        if (a.key != key || !object.contains(std::string(a.alias)))
             continue;
-        if (out.contains(key))
-            throw JsonFieldError{where + "." + alias + ": the same parameter as \"" + key + "\"; give one of them"};
-        out[key] = out[alias];
-        out.erase(alias);
+        if (object.contains(key))
+            throw JsonFieldError{where + "." + std::string(a.alias) + ": the same parameter as \"" + key +
+                                 "\"; give one of them"};
+        return std::string(a.alias);
     }
-    return out;
+    return key;
 }
 
-template <class Params> void readParams(Params& params, const Json& given, const std::string& where)
+template <class Params> void readParams(Params& params, const Json& object, const std::string& where)
 {
-    if (!given.is_object())
+    if (!object.is_object())
         throw JsonFieldError{where + ": expected an object"};
-    const Json object = withoutAliases(params, given, where);
     std::set<std::string> known;
-    visitFields(params, [&](const char* key, auto&& field) {
-        known.insert(key);
+    for (const FieldAlias& a : fieldAliases(params))
+        known.emplace(a.alias);
+    visitFields(params, [&](const char* fieldKey, auto&& field) {
+        known.insert(fieldKey);
+        const std::string given = givenName(params, object, fieldKey, where);
+        const char* key = given.c_str();
         using Field = std::remove_cvref_t<decltype(field)>;
         if (!optionalMember(object, key, where))
             return;  // absent: the default

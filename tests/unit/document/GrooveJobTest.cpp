@@ -108,6 +108,9 @@ TEST(GrooveJob, FileRoundTripIsVersionEightAndReadsTheRNames)
     auto wrong = document::parseJob(replaced(text, "\"coolant\": true", "\"coolant\": 1"), "l.camwb");
     ASSERT_FALSE(wrong.ok());
     EXPECT_NE(wrong.error().message.find("params.coolant"), std::string::npos) << wrong.error().message;
+    auto wrongR = document::parseJob(replaced(text, "\"depth\": 170.0", "\"R3\": \"deep\""), "l.camwb");
+    ASSERT_FALSE(wrongR.ok());
+    EXPECT_NE(wrongR.error().message.find("params.R3: expected a number"), std::string::npos) << wrongR.error().message;
 
     // Version 8 may leave the model out; version 7 may not, nor know the groove.
     auto noModel = document::parseJob(replaced(text, "\"model\": \"\",", ""), "l.camwb");
@@ -190,7 +193,8 @@ TEST(GrooveJob, SetParameterByNameRNameOrNumber)
     EXPECT_NE(unknown.error().message.find("R30, R9)"), std::string::npos) << unknown.error().message;
     const base::Status text = document::setOperationParameter(job, 0, "R2", "steep");
     ASSERT_FALSE(text);
-    EXPECT_NE(text.error().message.find("coneAngle: expected a number (got \"steep\")"), std::string::npos)
+    EXPECT_NE(text.error().message.find("groove roughing \"Groove\": params.R2: expected a number (got \"steep\")"),
+              std::string::npos)
         << text.error().message;
     // Ranges are the operation's: it says what is wrong when computed.
     ASSERT_TRUE(document::setOperationParameter(job, 0, "R11", "0"));

@@ -1,4 +1,4 @@
-// camwb-cli cl <job.camwb> [-o <file>]: recompute a job's operations and write the CL trace
+// camwb-cli cl <job.camwb> [-o <file>] [--set op.param=value]...: recompute a job's operations and write the CL trace
 // (toolpath/TraceWriter.h) instead of NC, with each operation's motion counts on stderr, so
 // that what an operation produced can be read, diffed and kept as a golden before any post.
 #include "Cli.h"
@@ -15,8 +15,13 @@ namespace camwb::cli {
 int clCommand(const std::vector<std::string>& args)
 {
     std::string jobPath, output;
+    std::vector<std::string> sets;
     for (std::size_t i = 0; i < args.size(); ++i) {
-        if (args[i] == "-o" || args[i] == "--output") {
+        std::string error;
+        if (takeSetOption(args, i, sets, error)) {
+            if (!error.empty())
+                return usageError(error);
+        } else if (args[i] == "-o" || args[i] == "--output") {
             if (i + 1 >= args.size())
                 return usageError(args[i] + " needs a file name");
             output = args[++i];
@@ -29,7 +34,7 @@ int clCommand(const std::vector<std::string>& args)
     if (jobPath.empty())
         return usageError("cl needs a job file");
 
-    const std::optional<ComputedJob> computed = computeJobFile(jobPath);
+    const std::optional<ComputedJob> computed = computeJobFile(jobPath, sets);
     if (!computed)
         return kExitError;
     const document::ProgramReport& report = computed->report;

@@ -46,7 +46,13 @@ struct PostOptions {
     std::string output;                             // -o / --output
     std::string project;                            // --project NAME: the job name a post's header shows
     std::optional<base::Box3> stock;                // --stock x0,y0,z0,x1,y1,z1 (a CL file has none)
+    std::vector<std::string> sets;                  // --set <operation>.<parameter>=<value> (a job's)
 };
+
+// Consumes `--set <operation>.<parameter>=<value>` (repeatable) into `sets`; false when args[i]
+// is not --set. A malformed one sets `error`.
+bool takeSetOption(const std::vector<std::string>& args, std::size_t& i, std::vector<std::string>& sets,
+                   std::string& error);
 
 // Consumes args[i] (and its value) when it is one of the PostOptions; false when it is not one.
 // A malformed option sets `error`.
@@ -63,9 +69,10 @@ struct ComputedJob {
     document::ProgramReport report;   // warnings (their file: the job's) and motion counts, per operation
     std::optional<occ::Model> model;  // the model it was computed on
 };
-// Loads the job and its model and computes the program; on an error, reports it (fail()) and
+// Loads the job and its model (none for a lathe job), applies `sets` (--set, for this run only:
+// the file is not changed) and computes the program; on an error, reports it (fail()) and
 // returns nothing. The warnings are left to the caller to print.
-std::optional<ComputedJob> computeJobFile(const std::string& path);
+std::optional<ComputedJob> computeJobFile(const std::string& path, const std::vector<std::string>& sets = {});
 
 int runCommand(const std::vector<std::string>& args);         // camwb-cli run <job> -o <file>
 int postsCommand(const std::vector<std::string>& args);       // camwb-cli posts [<id>]

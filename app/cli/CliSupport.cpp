@@ -3,6 +3,7 @@
 
 #include "base/Result.h"
 #include "document/JobFile.h"
+#include "document/OperationParameters.h"
 #include "post/PostInfo.h"
 #include "toolpath/ClText.h"
 
@@ -18,12 +19,14 @@ namespace fs = std::filesystem;
 void printUsage(std::ostream& out)
 {
     out << "usage: camwb-cli --version\n"
-           "       camwb-cli run <job.camwb> -o <output file> [--post-path DIR]...\n"
+           "       camwb-cli run <job.camwb> -o <output file> [--post-path DIR]... [--set "
+           "<op>.<parameter>=<value>]...\n"
            "       camwb-cli posts [<post id>] [--post-path DIR]...\n"
            "       camwb-cli post <input> [--post <id>] [--machine <id>] [--property name=value]...\n"
            "                      [-o <output file>] [--input-format job|apt|freecad-dump|trace] [--post-path DIR]...\n"
            "                      [--project NAME] [--stock x0,y0,z0,x1,y1,z1]\n"
-           "       camwb-cli cl <job.camwb> [-o <output file>]\n"
+           "                      [--set <op>.<parameter>=<value>]...\n"
+           "       camwb-cli cl <job.camwb> [-o <output file>] [--set <op>.<parameter>=<value>]...\n"
            "       camwb-cli nc trace <NC file> [--dialect sinumerik|heidenhain|iso] [--machine <id>]\n"
            "                      [--format text|jsonl] [-o <output file>] [--max-blocks N] [--tool-table FILE]\n"
            "       camwb-cli sim <job.camwb | NC file> [--machine <id>] [--resolution mm] [--tolerance mm]\n"
@@ -31,11 +34,18 @@ void printUsage(std::ostream& out)
            "                      [--model <part>] [--stock x0,y0,z0,x1,y1,z1|<blank file>] [--tool-table FILE]\n"
            "                      [--stock-profile x0,z0,x1,z1|<X,Z file> --insert-width mm [--design-profile ...]]\n"
            "                      [--measured <trace.csv> [--measured-z-offset mm]] [--analysis]\n"
+           "                      [--set <op>.<parameter>=<value>]...\n"
            "       camwb-cli setup-sheet <job.camwb> -o <sheet.html> [--pdf <sheet.pdf>] [--machine <id>]\n"
            "                      [--no-sim] [--margin mm]\n"
            "\n"
            "run:   loads the job and its model, recomputes every operation, posts the program with\n"
            "       the job's post, machine and post properties and writes the NC file.\n"
+           "       --set <op>.<parameter>=<value> (run, post, cl and sim of a job; repeatable) sets an\n"
+           "       operation's parameter for this run only (the job file is not changed): <op> is the\n"
+           "       operation's name or its number (1 = the first), <parameter> its name in the job file;\n"
+           "       a groove also takes the thesis' R names (R0..R8, R10, R11, R30; R9 sets the insert\n"
+           "       width, i.e. the diameter of the operation's tool). The operation checks the value\n"
+           "       when it is computed. Example: run groove-kod1.camwb -o out.mpf --set Groove.R3=160\n"
            "posts: lists the posts (id, vendor, description, extension, origin); with an id, shows\n"
            "       that post's capabilities and properties.\n"
            "post:  posts a job (.camwb), an APT CL file (.apt .aptsource .cl .cls), a FreeCAD path dump\n"
@@ -66,6 +76,8 @@ void printUsage(std::ostream& out)
            "       Turning: --stock-profile gives the revolved stock in XZ (X a radius), a rectangle or a file of\n"
            "       X,Z points, --design-profile the contour it must not cut into, --insert-width the grooving\n"
            "       insert (reference: its left corner); rapids through the stock and gouges are errors.\n"
+           "       A job with groove operations is checked so without these options: its stock is the\n"
+           "       grooves' shaft, the contour their offset contour, the insert the groove's tool.\n"
            "       --measured reads a trace the control recorded (TNCscope CSV: time, then nominal and actual\n"
            "       X Y Z and the two rotaries) through the machine's chain onto the workpiece: how far the\n"
            "       actual tip followed the nominal one and strayed from the program, and each axis' reversals.\n"
@@ -140,8 +152,45 @@ std::optional<base::Box3> parseStockBox(const std::string& text, std::string& er
     return base::Box3{{v[0], v[1], v[2]}, {v[3], v[4], v[5]}, false};
 }
 
+bool takeSetOption(const std::vector<std::string>& args, std::size_t& i, std::vector<std::string>& sets,
+                   std::string& error)
+{
+    if (args[i] != "--set")
+        return false;
+    if (i + 1 >= args.size()) {
+        error = "--set needs <operation>.<parameter>=<value>";
+        return true;
+    }
+    const std::string& value = args[++i];
+    const std::size_t equals = value.find('=');
+    const std::size_t dot = value.rfind('.', equals);
+    if (equals == std::string::npos || dot == std::string::npos || dot == 0 || dot + 1 == equals ||
+        equals + 1 == value.size())
+        error = "--set needs <operation>.<parameter>=<value>, got '" + value + "'";
+    else
+        sets.push_back(value);
+    return true;
+}
+
+// One --set (already of the form <operation>.<parameter>=<value>) applied to the job.
+base::Status applySet(document::Job& job, const std::string& set)
+{
+    const std::size_t equals = set.find('=');
+    const std::size_t dot = set.rfind('.', equals);
+    const auto index = document::findOperation(job, set.substr(0, dot));
+    if (!index)
+        return base::makeError("--set " + set + ": " + index.error().message);
+    const base::Status status = document::setOperationParameter(
+        job, index.value(), set.substr(dot + 1, equals - dot - 1), set.substr(equals + 1));
+    if (!status)
+        return base::makeError("--set " + set + ": " + status.error().message);
+    return {};
+}
+
 bool takePostOption(const std::vector<std::string>& args, std::size_t& i, PostOptions& options, std::string& error)
 {
+    if (takeSetOption(args, i, options.sets, error))
+        return true;
     const std::string& arg = args[i];
     const bool known = arg == "--post" || arg == "--machine" || arg == "--property" || arg == "--post-path" ||
                        arg == "-o" || arg == "--output" || arg == "--project" || arg == "--stock";
@@ -190,12 +239,18 @@ int postToFile(const post::PostProcessor& post, const toolpath::Toolpath& toolpa
     return kExitOk;
 }
 
-std::optional<ComputedJob> computeJobFile(const std::string& path)
+std::optional<ComputedJob> computeJobFile(const std::string& path, const std::vector<std::string>& sets)
 {
     auto job = document::loadJob(path);
     if (!job) {
         fail(job.error().toString());
         return std::nullopt;
+    }
+    for (const std::string& set : sets) {
+        if (const base::Status applied = applySet(job.value(), set); !applied) {
+            fail(applied.error().message);
+            return std::nullopt;
+        }
     }
     auto model = document::loadJobModel(job.value());
     if (!model) {

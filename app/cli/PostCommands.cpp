@@ -183,13 +183,16 @@ int postCommand(const std::vector<std::string>& args)
                                     " from its extension; give --input-format job|apt|freecad-dump|trace"
                               : "unknown input format '" + formatName + "' (job, apt, freecad-dump, trace)");
 
+    if (!format->job && !options.sets.empty())
+        return usageError("--set changes a job's operation; " + input + " is not a job");
+
     toolpath::Toolpath program;
     std::string postId = options.postId, machineId = options.machineId;
     std::map<std::string, std::string> properties;
     post::JobFacts jobFacts;
     document::Job jobOutput;  // the job's default output (name, folder), when posting a job
     if (format->job) {
-        std::optional<ComputedJob> computed = computeJobFile(input);
+        std::optional<ComputedJob> computed = computeJobFile(input, options.sets);
         if (!computed)
             return kExitError;
         printDiagnostics(computed->report.warnings);

@@ -9,6 +9,7 @@
 #include "base/NumberFormat.h"
 #include "document/NcTrace.h"
 #include "document/Simulate.h"
+#include "document/TurningSetup.h"
 #include "nc/ToolTable.h"
 #include "occ/Model.h"
 #include "sim/MotionPlan.h"
@@ -50,7 +51,8 @@ struct SimOptions {
     // A trace the control recorded (TNCscope CSV), and how far its Z is above the tool tip.
     std::string measured;
     double measuredZOffsetMm = 0;
-    bool analysis = false;  // seed 003's analysis of the simulated motion
+    bool analysis = false;          // seed 003's analysis of the simulated motion
+    std::vector<std::string> sets;  // --set: a job's operation parameters for this run
 };
 
 std::optional<double> positive(const std::string& text)
@@ -71,6 +73,11 @@ std::string parseSimOptions(const std::vector<std::string>& args, SimOptions& op
             "--model",         "--stock",          "--tolerance",    "--sample-ms", "--tool-table",
             "--stock-profile", "--design-profile", "--insert-width", "--measured",  "--measured-z-offset"};
         const bool takesValue = kTakesValue.count(arg) > 0;
+        if (std::string error; takeSetOption(args, i, options.sets, error)) {
+            if (!error.empty())
+                return error;
+            continue;
+        }
         if (arg == "--analysis") {
             options.analysis = true;
             continue;
@@ -124,6 +131,8 @@ std::string parseSimOptions(const std::vector<std::string>& args, SimOptions& op
     if (options.input.empty())
         return "sim needs a job (.camwb) or an NC program";
     const bool job = std::filesystem::path(options.input).extension() == ".camwb";
+    if (!job && !options.sets.empty())
+        return "--set changes a job's operation; " + options.input + " is not a job";
     if (!options.stl.empty() && !job && options.stock.empty() && options.model.empty())
         return "--stl needs a stock: a job's, or --stock or --model for an NC program";
     const bool turning = !options.stockProfile.empty();
@@ -158,17 +167,15 @@ document::RecordPlace placeOf(const Input& input, const std::string& path, std::
 
 std::optional<Input> loadJobInput(const SimOptions& options)
 {
-    std::optional<ComputedJob> computed = computeJobFile(options.input);
+    std::optional<ComputedJob> computed = computeJobFile(options.input, options.sets);
     if (!computed)
         return std::nullopt;
     Input input;
-    auto model = document::loadJobModel(computed->job);
-    if (!model) {
-        fail(model.error().toString());
-        return std::nullopt;
+    // A lathe job has no model: its stock and contour are the turning setup's (turningInput).
+    if (computed->model && !computed->model->empty()) {
+        input.design = document::designMesh(*computed->model);
+        input.stockBox = document::jobStockBox(computed->job, *computed->model);
     }
-    input.design = document::designMesh(model.value());
-    input.stockBox = document::jobStockBox(computed->job, model.value());
     if (options.machineId.empty()) {
         auto machine = document::jobMachine(computed->job);
         if (!machine) {
@@ -249,6 +256,38 @@ bool loadModelAndStock(const SimOptions& options, Input& input)
     return true;
 }
 
+// What the turning check runs on: --stock-profile (with --design-profile, --insert-width), else
+// a job's groove operations (document::turningSetup); none for milling.
+struct TurningInput {
+    sim::TurningRegion stock, design;
+    sim::Insert insert;
+};
+
+base::Result<std::optional<TurningInput>> turningInput(const SimOptions& options, const Input& input)
+{
+    if (options.stockProfile.empty()) {
+        if (!input.job)
+            return std::optional<TurningInput>();
+        std::optional<document::TurningSetup> setup = document::turningSetup(*input.job);
+        if (!setup)
+            return std::optional<TurningInput>();
+        return std::optional<TurningInput>(TurningInput{setup->stock, setup->design, setup->insert});
+    }
+    TurningInput turning;
+    auto stock = sim::stockProfileFromArgument(options.stockProfile);
+    if (!stock)
+        return stock.error();
+    turning.stock = std::move(stock).value();
+    if (!options.designProfile.empty()) {
+        auto read = sim::stockProfileFromArgument(options.designProfile);
+        if (!read)
+            return read.error();
+        turning.design = std::move(read).value();
+    }
+    turning.insert.widthMm = options.insertWidthMm;
+    return std::optional<TurningInput>(std::move(turning));
+}
+
 std::string mm(double value) { return base::formatFixed(value, 3); }
 
 nlohmann::json point(const base::Vec3& p) { return {p.x, p.y, p.z}; }
@@ -273,23 +312,16 @@ int simCommand(const std::vector<std::string>& args)
         return kExitError;
     if (machine)
         input->machine = machine;
-    const bool turning = !options.stockProfile.empty();
+    auto turning = turningInput(options, *input);
+    if (!turning)
+        return fail(turning.error().toString());
     std::optional<sim::TurningReport> turned;
-    if (turning) {
+    if (turning.value()) {
+        TurningInput& t = *turning.value();
         input->program = sim::inTurningPlane(input->program);
-        auto stock = sim::stockProfileFromArgument(options.stockProfile);
-        if (!stock)
-            return fail(stock.error().toString());
-        sim::TurningRegion design;
-        if (!options.designProfile.empty()) {
-            auto read = sim::stockProfileFromArgument(options.designProfile);
-            if (!read)
-                return fail(read.error().toString());
-            design = std::move(read).value();
-        }
         sim::TurningOptions turningOptions;
-        turningOptions.insert.widthMm = options.insertWidthMm;
-        turned = sim::checkTurning(input->program, std::move(stock).value(), std::move(design), turningOptions);
+        turningOptions.insert = t.insert;
+        turned = sim::checkTurning(input->program, std::move(t.stock), std::move(t.design), turningOptions);
     }
 
     // The stock and the cut.

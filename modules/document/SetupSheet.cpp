@@ -3,9 +3,11 @@
 #include "document/JobPipeline.h"
 #include "document/OperationGeometry.h"
 #include "document/Simulate.h"
+#include "document/TurningSetup.h"
 #include "occ/Model.h"
 #include "sim/MotionPlan.h"
 #include "sim/Simulation.h"
+#include "sim/TurningCheck.h"
 #include "toolpath/ProgramStats.h"
 #include "toolpath/Toolpath.h"
 
@@ -161,10 +163,27 @@ base::Result<SetupSheet> collectSetupSheet(const Job& job, const std::string& jo
         sheet.machineName = machine->name;
     }
 
+    // A lathe job: its program gives no Y (its moves are built in the turning plane) and it is
+    // checked on the grooves' turning stock instead of a height field of a model it has not.
+    const std::optional<TurningSetup> turning = turningSetup(job);
+    const toolpath::Toolpath inPlane = turning ? sim::inTurningPlane(program) : toolpath::Toolpath();
+    const toolpath::Toolpath& moving = turning ? inPlane : program;
+
     // The moves: simulated against the stock and model when asked, else only built.
     const base::Box3 stockBox = jobStockBox(job, model);
     sim::SimulationResult simulated;
-    if (options.simulate) {
+    if (options.simulate && turning) {
+        sim::SimulationSetup setup;
+        setup.machine = machine ? &*machine : nullptr;
+        simulated = sim::simulate(moving, setup);  // the machine's limits and the motion
+        sim::TurningOptions turningOptions;
+        turningOptions.insert = turning->insert;
+        const sim::TurningReport turned = sim::checkTurning(moving, turning->stock, turning->design, turningOptions);
+        simulated.checks.insert(simulated.checks.begin(), turned.findings.begin(), turned.findings.end());
+        sheet.verification = verification(simulated, 0, job, jobPath, moving);
+        sheet.verification.maxGougeMm = turned.maxGougeMm;
+        sheet.verification.turning = true;
+    } else if (options.simulate) {
         sim::StockSpec spec;
         spec.box = stockBox;
         spec.resolutionMm = defaultStockResolution(stockBox);
@@ -175,7 +194,7 @@ base::Result<SetupSheet> collectSetupSheet(const Job& job, const std::string& jo
         simulated = sim::simulate(program, setup);
         sheet.verification = verification(simulated, spec.resolutionMm, job, jobPath, program);
     } else {
-        simulated.moves = sim::buildMoves(program);
+        simulated.moves = sim::buildMoves(moving);
     }
     const sim::MoveList& moves = simulated.moves;
 
@@ -184,7 +203,7 @@ base::Result<SetupSheet> collectSetupSheet(const Job& job, const std::string& jo
     const sim::MotionPlan plan = sim::planMotion(moves, planMachine);
     toolpath::StatsOptions statsOptions;
     statsOptions.rapidMmPerMin = kinematics::estimateRapidMmPerMin(machine ? &*machine : nullptr);
-    const toolpath::ProgramStats stats = toolpath::programStats(program, statsOptions);
+    const toolpath::ProgramStats stats = toolpath::programStats(moving, statsOptions);
     sheet.cycleSeconds = plan.totalSeconds;
     sheet.simpleSeconds = stats.totals.totalSeconds();
     sheet.rapidLengthMm = stats.totals.rapidLengthMm;
@@ -192,7 +211,7 @@ base::Result<SetupSheet> collectSetupSheet(const Job& job, const std::string& jo
 
     for (const Operation& op : job.operations)
         sheet.operations.push_back(sheetOperation(job, op, model));
-    for (const auto& [index, seconds] : sim::secondsPerOperation(program, moves, plan))
+    for (const auto& [index, seconds] : sim::secondsPerOperation(moving, moves, plan))
         if (index >= 0 && index < static_cast<int>(sheet.operations.size()))
             sheet.operations[static_cast<std::size_t>(index)].seconds = seconds;
 
@@ -204,7 +223,9 @@ base::Result<SetupSheet> collectSetupSheet(const Job& job, const std::string& jo
     for (const ops::ToolController& tc : job.tools) {
         SheetTool& tool = tools[tc.tool.number];
         tool.controller = tc;
-        tool.stickOutMm = requiredStickOut(moves, tc.tool.number, clear, options.stickOutMarginMm);
+        // A lathe's insert sticks out along X, not along a spindle axis: no stick-out figure.
+        if (!turning)
+            tool.stickOutMm = requiredStickOut(moves, tc.tool.number, clear, options.stickOutMarginMm);
         tool.tooShort = tool.stickOutMm && tc.tool.lengthMm > 0 && tc.tool.lengthMm < *tool.stickOutMm;
     }
     for (const Operation& op : job.operations)

@@ -55,6 +55,7 @@ struct SheetVerification {
     int gouges = 0, holderCollisions = 0, rapidsInStock = 0, machineLimits = 0, otherErrors = 0, warnings = 0;
     double maxGougeMm = 0;
     double resolutionMm = 0;
+    bool turning = false;  // a lathe job's: its grooves' revolved stock and offset contour, no height field
     std::vector<std::string> firstFindings;  // "operation: message", the first few errors
 };
 

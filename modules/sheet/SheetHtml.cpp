@@ -132,8 +132,11 @@ std::string verificationSection(const SetupSheet& sheet)
         return "<p>The simulator was not run for this sheet (--no-sim): nothing below is verified "
                "beyond the stick-out.</p>\n";
     const int errors = v.gouges + v.holderCollisions + v.rapidsInStock + v.machineLimits + v.otherErrors;
-    std::string out = std::string("<p><b>") + (errors == 0 ? "Simulated: no errors." : "Simulated: ERRORS FOUND.") +
-                      "</b> Stock cut at " + mm(v.resolutionMm) + " mm resolution against the model.</p>\n";
+    std::string out =
+        std::string("<p><b>") + (errors == 0 ? "Simulated: no errors." : "Simulated: ERRORS FOUND.") +
+        (v.turning ? "</b> The grooves' shaft (a revolved profile) cut by the insert, checked against "
+                     "their offset contour (the allowances must stay).</p>\n"
+                   : "</b> Stock cut at " + mm(v.resolutionMm) + " mm resolution against the model.</p>\n");
     out += table({"Check", "Count"}, {{"Gouges into the model", std::to_string(v.gouges)},
                                       {"Holder or shank collisions with the stock", std::to_string(v.holderCollisions)},
                                       {"Rapids through stock", std::to_string(v.rapidsInStock)},

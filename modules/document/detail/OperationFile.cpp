@@ -36,13 +36,33 @@ std::vector<int> indexList(const Json& object, const char* key, const std::strin
     return out;
 }
 
+// The name field `key` is given by in `object`: its key, else its alias (fieldAliases) when that
+// is there, so messages name what the file or --set wrote. Both given is an error.
+template <class Params>
+std::string givenName(const Params& params, const Json& object, const char* key, const std::string& where)
+{
+    for (const FieldAlias& a : fieldAliases(params)) {
+        if (a.key != key || !object.contains(std::string(a.alias)))
+            continue;
+        if (object.contains(key))
+            throw JsonFieldError{where + "." + std::string(a.alias) + ": the same parameter as \"" + key +
+                                 "\"; give one of them"};
+        return std::string(a.alias);
+    }
+    return key;
+}
+
 template <class Params> void readParams(Params& params, const Json& object, const std::string& where)
 {
     if (!object.is_object())
         throw JsonFieldError{where + ": expected an object"};
     std::set<std::string> known;
-    visitFields(params, [&](const char* key, auto&& field) {
-        known.insert(key);
+    for (const FieldAlias& a : fieldAliases(params))
+        known.emplace(a.alias);
+    visitFields(params, [&](const char* fieldKey, auto&& field) {
+        known.insert(fieldKey);
+        const std::string given = givenName(params, object, fieldKey, where);
+        const char* key = given.c_str();
         using Field = std::remove_cvref_t<decltype(field)>;
         if (!optionalMember(object, key, where))
             return;  // absent: the default
@@ -105,8 +125,10 @@ OperationParams paramsOfType(const std::string& type, const std::string& where)
         return ops::WaterlineParams{};
     if (type == "parallel")
         return ops::ParallelParams{};
+    if (type == "groove")
+        return ops::GrooveParams{};
     throw JsonFieldError{where + ".type: unknown operation type \"" + type +
-                         "\" (expected contour, pocket, helix, drill, swarf, pocket3d, waterline or parallel)"};
+                         "\" (expected contour, pocket, helix, drill, swarf, pocket3d, waterline, parallel or groove)"};
 }
 
 // Versions 1-2: the outer profile of one face, all heights given.
@@ -220,6 +242,24 @@ ojson writeOperation(const Operation& op)
     if (!op.enabled)
         out["enabled"] = false;
     return out;
+}
+
+void readOperationParams(Operation& op, const Json& params, const std::string& where)
+{
+    std::visit([&](auto& p) { readParams(p, params, where); }, op.params);
+}
+
+std::vector<std::string> operationParamNames(const Operation& op)
+{
+    std::vector<std::string> names;
+    std::visit(
+        [&](auto p) {
+            visitFields(p, [&](const char* key, auto&&) { names.emplace_back(key); });
+            for (const FieldAlias& a : fieldAliases(p))
+                names.emplace_back(a.alias);
+        },
+        op.params);
+    return names;
 }
 
 }  // namespace camwb::document::detail

@@ -1,0 +1,20 @@
+# Runs `camwb-cli cl <JOB> <ARGS>` and checks that it succeeds, that stderr gives the operation's
+# motion counts (EXPECT_COUNTS), that the CL trace on stdout holds EXPECT_STDOUT and that the job
+# file is not changed by the run (--set is for that run only).
+file(SHA256 ${JOB} before)
+execute_process(COMMAND ${CLI} cl ${JOB} ${ARGS} RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+if(NOT rc EQUAL 0)
+  message(FATAL_ERROR "expected exit 0, got ${rc}\nstderr: ${err}")
+endif()
+string(FIND "${err}" "${EXPECT_COUNTS}" found)
+if(found EQUAL -1)
+  message(FATAL_ERROR "stderr does not give the counts '${EXPECT_COUNTS}':\n${err}")
+endif()
+string(FIND "${out}" "${EXPECT_STDOUT}" found)
+if(found EQUAL -1)
+  message(FATAL_ERROR "the CL trace does not hold '${EXPECT_STDOUT}'")
+endif()
+file(SHA256 ${JOB} after)
+if(NOT before STREQUAL after)
+  message(FATAL_ERROR "${JOB} was changed by the run")
+endif()

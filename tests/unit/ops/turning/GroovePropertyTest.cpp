@@ -313,6 +313,24 @@ TEST(GrooveProperties, DefectSetFiveIsAnInputError)
         << computed.error().message;
 }
 
+// Fix V1: where the staircase of plunges is steeper than a flank the plunges walk into it (a
+// 26.4 mm gouge of this left flank without the check); an input error, and clean with a smaller
+// infeed.
+TEST(GrooveProperties, StaircaseSteeperThanAFlankIsRefused)
+{
+    Case c;
+    c.g = {350, 500, 2.41443, 84.6513, 12.5608, 5.18225, 25.771, 1.5685, 1.32945, 3};
+    c.r10 = 0.32291;
+    c.r11 = 3;
+    c.r30 = 1.60823;
+    const Verdict v = check(c);
+    ASSERT_TRUE(v.error);
+    EXPECT_NE(v.message.find("steeper than the left flank angle (R6)"), std::string::npos) << v.message;
+    c.r11 = 1.9;  // tan(25.771) * 1.9 = 0.917 <= 3 * 0.32291
+    const Verdict w = check(c);
+    EXPECT_FALSE(w.error) << w.message;
+}
+
 // REQ-06 / F6: each check with its message (the operation's name, the value's name and R name).
 TEST(GrooveProperties, Req06EveryInputCheckHasItsMessage)
 {
@@ -349,6 +367,19 @@ TEST(GrooveProperties, Req06EveryInputCheckHasItsMessage)
              p.groove.r5 = 45;
          },
          "cone angle (R2) plus right flank angle (R5) must be below 90 degrees"},
+        {[](GrooveParams& p, ToolController&) {
+             p.stepFactor = 0.1;
+             p.infeedMm = 3;
+         },
+         "the staircase of plunges (R11 = 3 mm deeper every R9*R10 = 0.3 mm) is steeper than the right flank angle "
+         "(R5)"},
+        {[](GrooveParams& p, ToolController&) {
+             p.stepFactor = 0.2;
+             p.infeedMm = 3;
+             p.groove.r6 = 20;
+         },
+         "steeper than the left flank angle (R6): the plunges would cut the flank; take a smaller infeed (R11 <= "
+         "1.648"},
         {[](GrooveParams& p, ToolController&) {
              p.groove.r3 = 5;
              p.groove.r7 = 6;

@@ -21,6 +21,7 @@ public:
         i(setup.infeedMm),
         c(setup.safetyMm),
         xb(setup.geo.bottomOffsetX),
+        m_limit(setup.iterationLimit),
         m_what(std::move(what))
     {
         rpx = g.r.y;
@@ -61,16 +62,17 @@ private:
     // One turn of any loop; false (and the error) past kGrooveIterationLimit.
     bool turn()
     {
-        if (++m_turns <= kGrooveIterationLimit)
+        if (++m_turns <= m_limit)
             return true;
         if (m_error.empty())
-            m_error = "the groove strategy did not finish within " + std::to_string(kGrooveIterationLimit) +
+            m_error = "the groove strategy did not finish within " + std::to_string(m_limit) +
                       " steps (seed REQ-25); please report the parameters";
         return false;
     }
 
     const sim::GrooveGeometry& g;
     const double w, s, i, c, xb;  // R9, R9*R10, R11, R30, R0-R3+R7
+    const long m_limit;
     std::string m_what;
     double rpx = 0, rpz = 0;  // R12, R13: Rp, start of the left-to-right sweep on the left offset flank
     double bx = 0, bz = 0;    // R21, R20: B, its end (right corner) on the right offset flank
@@ -115,20 +117,22 @@ base::Status Sweeps::run(const std::function<bool(double)>& keepGoing)
         m_out.passes.back().r27 = r27;
         m_out.passes.back().bx = bx;
         m_out.passes.back().bz = bz;
-        if (bx > xb) {
-            zp();
-            if (finished)
-                break;
-            const double L2 = l2();
-            r28 = static_cast<long>(std::ceil(L2 - 1));
-            rpx = bx - r28 * i;
-            rpz = g.zLeft(rpx);
-            firstPass = false;
-            m_out.passes.back().l2 = L2;
-            m_out.passes.back().r28 = r28;
-            m_out.passes.back().rpx = rpx;
-            m_out.passes.back().rpz = rpz;
+        if (!(bx > xb)) {  // fixes.md G2: ZL ended on the flank, yet B is at the bottom
+            fallback();
+            break;
         }
+        zp();
+        if (finished)
+            break;
+        const double L2 = l2();
+        r28 = static_cast<long>(std::ceil(L2 - 1));
+        rpx = bx - r28 * i;
+        rpz = g.zLeft(rpx);
+        firstPass = false;
+        m_out.passes.back().l2 = L2;
+        m_out.passes.back().r28 = r28;
+        m_out.passes.back().rpx = rpx;
+        m_out.passes.back().rpz = rpz;
     }
     if (!m_error.empty())
         return opError(m_what, m_error);

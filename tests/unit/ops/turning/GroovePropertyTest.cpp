@@ -208,7 +208,7 @@ TEST(GrooveProperties, WiderRangesAreClean)
 {
     Sweep sweep(3);
     Tally tally;
-    for (int k = 0; k < 100; ++k) {
+    for (int k = 0; k < 150; ++k) {
         Case c = sweep.next();
         c.g.r3 = sweep.uniform(50, 120);  // shallower ones are mostly refused (Rx <= Sx) at these cones
         c.g.r2 = sweep.uniform(0, 40);
@@ -218,6 +218,8 @@ TEST(GrooveProperties, WiderRangesAreClean)
         c.g.r8 = sweep.uniform(0, 2);
         c.r30 = sweep.uniform(0, 2);
         c.r10 = sweep.uniform(0.3, 1);
+        if (k % 5 == 0)  // no allowances and no safety distance: the rapids touch, never cut
+            c.g.r7 = c.g.r8 = c.r30 = 0;
         SCOPED_TRACE("case " + std::to_string(k));
         const Verdict v = check(c);
         if (v.error) {
@@ -227,7 +229,7 @@ TEST(GrooveProperties, WiderRangesAreClean)
         tally.add(v);
     }
     tally.print("wider ranges");
-    EXPECT_LE(tally.errors, 100 * 5 / 100);
+    EXPECT_LE(tally.errors, 150 * 5 / 100);
 }
 
 TEST(GrooveProperties, Kod1AndItsCylinderAndVerticalFlanksAreClean)

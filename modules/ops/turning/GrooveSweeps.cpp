@@ -10,7 +10,8 @@ namespace camwb::ops::turning {
 
 namespace {
 
-// The subprograms' channel R-parameters, by the names of seed §2.3, and the moves they make.
+// The subprograms' channel R-parameters, by the names of seed §2.3 (short names without m_, so
+// that they read as the NC does), and the moves they make.
 // Each method is one subprogram; the comments name the NC blocks they come from.
 class Sweeps {
 public:
@@ -59,7 +60,7 @@ private:
             m_z = m.z;
         m_out.moves.push_back(m);
     }
-    // One turn of any loop; false (and the error) past kGrooveIterationLimit.
+    // One turn of any loop; false (and the error) past the iteration limit.
     bool turn()
     {
         if (++m_turns <= m_limit)
@@ -143,20 +144,15 @@ base::Status Sweeps::run(const std::function<bool(double)>& keepGoing)
 // the plunge on the flank (left corner `flankZ`) may then lie more than an insert's width from the
 // last plunge (left corner `lastZ`, same depth): with R10 = 1, or when tan R5 * R11 (tan R6 * R11)
 // exceeds R9 (1 - R10). The rib between would stand up to the floor above, and the next rapid
-// along Z at the sweep's low retract height would run through it. Plunges at the same depth, an
-// insert's width apart, close the gap first, each retracting to `retractX` (the height the sweep
-// is at); where the plunges overlap (Kod 1) nothing is added.
+// along Z at the sweep's low retract height would run through it. One plunge at the same depth
+// next to the flank plunge closes the gap first, retracting to `retractX` (the height the sweep is
+// at). The gap is at most R9 R10 - R9 + R11 tan(flank) <= R9 R10 (input check V1), so one is
+// enough; where the plunges overlap (Kod 1) nothing is added.
 void Sweeps::closeGap(double lastZ, double flankZ, double depth, double retractX)
 {
     const double dir = flankZ > lastZ ? 1 : -1;  // towards the flank
-    const double gap = (flankZ - lastZ) * dir - w;
-    if (!(gap > 0))
+    if (!((flankZ - lastZ) * dir > w))
         return;
-    for (long j = 1; j * w < gap && turn(); ++j) {
-        rapidZ(lastZ + dir * j * w);
-        feedX(depth);
-        rapidX(retractX);
-    }
     rapidZ(flankZ - dir * w);
     feedX(depth);
     rapidX(retractX);

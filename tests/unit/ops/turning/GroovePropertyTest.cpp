@@ -11,6 +11,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <functional>
 #include <random>
@@ -395,6 +396,8 @@ TEST(GrooveProperties, Req06EveryInputCheckHasItsMessage)
          "narrower than the 3 mm insert (R9)"},
         {[](GrooveParams& p, ToolController&) { p.finalRetractMm = 0; }, "final retract must be positive"},
         {[](GrooveParams& p, ToolController&) { p.feedMmPerRev = 0; }, "feed must be positive"},
+        {[](GrooveParams& p, ToolController&) { p.maxRpm = 0; }, "cutting speed and speed limit must be positive"},
+        {[](GrooveParams& p, ToolController&) { p.groove.r1 = std::nan(""); }, "start point Z (R1) must be a number"},
     };
     for (const Bad& b : bad) {
         GrooveParams p;

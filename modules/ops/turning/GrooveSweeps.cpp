@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <string>
 
 namespace camwb::ops::turning {
@@ -44,6 +45,7 @@ private:
     }
 
     void closeGap(double lastZ, double flankZ, double depth, double retractX);
+    double clearFlankMove(double flankZ);
     void zl();
     void zp();
     void dnoZl();
@@ -58,6 +60,8 @@ private:
     {
         if (m.kind != GrooveMove::Kind::RapidX)
             m_z = m.z;
+        if (m.kind != GrooveMove::Kind::RapidZ)
+            m_x = m.x;
         m_out.moves.push_back(m);
     }
     // One turn of any loop; false (and the error) past the iteration limit.
@@ -81,7 +85,7 @@ private:
     long r27 = 0, r28 = 0;    // last regular plunge of ZL / ZP (ROUNDUP(L - 1))
     bool firstPass = true;    // the thesis' R12 == R23
     bool finished = false;    // spec F4: a bottom phase has run
-    double m_z = 0;
+    double m_x = 0, m_z = 0;  // where the insert is
     long m_turns = 0;
     std::string m_error;
     GrooveMoves m_out;
@@ -158,6 +162,26 @@ void Sweeps::closeGap(double lastZ, double flankZ, double depth, double retractX
     rapidX(retractX);
 }
 
+// Fix G3 (/work/groove-fixes.md): the rapid to a flank plunge goes further than one step (up to
+// R9 R10 + R11 tan(flank)), so it may pass over a staircase cell one infeed higher than the sweep's
+// retract height clears. Going right (ZL) in the first pass the surface over the insert's right
+// corner at the flank plunge, going left (ZP) the floor the ZL sweep left at its left corner
+// (R12 - R11 floor((z - R13) / (R9 R10))) is the top of the material there; where the sweep's
+// height is below it the insert first rises to it plus R30. Returns the height the sweep is at.
+double Sweeps::clearFlankMove(double flankZ)
+{
+    double top = -std::numeric_limits<double>::infinity();  // of the material the move passes over
+    if (flankZ > m_z && firstPass)  // ZL: the flank plunge's left corner, its right corner R9 further
+        top = g.surfaceX(flankZ + w);
+    else if (flankZ < m_z)  // ZP
+        top = rpx - i * std::floor((flankZ - rpz) / s);
+    // Only where the rapid would cut (1e-6: touching is what the thesis' own rapids do with R30 =
+    // R11), so that Kod 1 keeps its blocks.
+    if (m_x < top - 1e-6)
+        rapidX(top + c);
+    return m_x;
+}
+
 // PODPROG_ZL: plunges left to right, each R11 deeper, until the bottom or the right flank; then
 // the plunge on the flank and the right-flank clean-up up to the flank's top.
 void Sweeps::zl()
@@ -177,7 +201,7 @@ void Sweeps::zl()
     const double d = rpx - (r18 - 1) * i;  // the last depth; the right corner on the flank there
     const double zd = g.zRight(d);
     if (r18 >= 1)  // fixes.md G1: no rib between the last plunge and the one on the flank
-        closeGap(rpz + s * (r18 - 1), zd - w, d, retractZl(r18 - 1));
+        closeGap(rpz + s * (r18 - 1), zd - w, d, clearFlankMove(zd - w));
     rapidZ(zd - w);
     feedX(d);
     rapidX(retractZl(r18));
@@ -213,7 +237,7 @@ void Sweeps::zp()
     }
     const double d = bx - (r18 - 1) * i;
     const double zd = g.zLeft(d);
-    closeGap(bz - w - s * (r18 - 1), zd, d, bx + r18 * i + c);  // fixes.md G1, mirrored
+    closeGap(bz - w - s * (r18 - 1), zd, d, clearFlankMove(zd));  // fixes.md G1, mirrored
     rapidZ(zd);
     feedX(d);
     rapidX(bx + 2 * i + r18 * i + c);

@@ -248,6 +248,26 @@ TEST(GrooveProperties, Kod1AndItsCylinderAndVerticalFlanksAreClean)
     }
 }
 
+// Found by sweeps ten times larger (fixes G3 in /work/groove-fixes.md): the rapid to a flank
+// plunge passes over a staircase cell one infeed higher than the sweep's retract clears (2 mm and
+// 1 mm into the stock before the fix).
+TEST(GrooveProperties, RapidsToAFlankPlungeClearTheStaircase)
+{
+    Case a;
+    a.g = {350, 500, 11.312, 70.1017, 4.60558, 8.51472, 14.9373, 0.5, 0.5, 3};
+    a.r10 = 0.5;
+    a.r11 = 3;
+    Case b;
+    b.g = {350, 500, 0, 53.7394, 76.0301, 13.6712, 13.4685, 0.5, 0.5, 10};
+    b.r10 = 0.6;
+    b.r11 = 2;
+    for (const Case& c : {a, b}) {
+        const Verdict v = check(c);
+        EXPECT_FALSE(v.error) << v.message;
+        EXPECT_FALSE(v.fallback);
+    }
+}
+
 // Seed §5.3 item 1: Kod 1 with R3 = 160 ends through DNO_ZP, which the printed code got wrong
 // (25.4994 mm gouge); F2 programs the left corner. Item 2: the half-step start (F3).
 TEST(GrooveProperties, DefectSetsOneAndTwoAreClean)

@@ -280,22 +280,24 @@ void Sweeps::dnoZl()
     rapidZ(zTop - w);  // N100..N120
     feedX(top);
     feed(xb, g.t.x - w);
-    rapidX(rpx - (r18 - 1) * i + c);                                        // N130
-    const double start = std::min(rpz + (r18 - 1) * s + s / 2, g.t.x - w);  // F3
+    rapidX(rpx - (r18 - 1) * i + c);  // N130
+    const double m = rpz + (r18 - 1) * s + s / 2;
+    const double start = std::min(m, g.t.x - w);                    // F3
+    const long k0 = static_cast<long>(std::ceil((m - start) / s));  // fixes.md G4
     long r19 = 0;
     for (; start - s * r19 > g.s.x && turn(); ++r19) {  // N150
         rapidZ(start - s * r19);
         feedX(xb);
-        rapidX(xb + 2 * i + r19 * i + c);
+        rapidX(xb + 2 * i + (r19 + k0) * i + c);
     }
     rapidZ(g.s.x);  // N160..N180
     feedX(xb);
-    rapidX(xb + 2 * i + r19 * i + c);
+    rapidX(xb + 2 * i + (r19 + k0) * i + c);
     for (long r61 = 1; g.s.x - s * r61 > rpz && turn(); ++r61) {  // N200, only with tan R6 > 0
         rapidZ(g.s.x - s * r61);
         feedX(g.xLeft(g.s.x - s * r61));
         feed(xb, g.s.x);
-        rapidX(xb + 2 * i + r19 * i + c + r61 * i);
+        rapidX(xb + 2 * i + (r19 + k0) * i + c + r61 * i);
     }
     rapidZ(rpz);  // N210..N230
     feedX(rpx);
@@ -328,22 +330,24 @@ void Sweeps::dnoZp()
     rapidZ(rpz);  // N70..N90
     feedX(rpx);
     feed(xb, g.s.x);
-    rapidX(bx - (r18 - 1) * i + c);                                        // N100
-    const double start = std::max(bz - (r18 - 1) * s - s / 2 - w, g.s.x);  // F2, F3
+    rapidX(bx - (r18 - 1) * i + c);  // N100
+    const double m = bz - (r18 - 1) * s - s / 2 - w;
+    const double start = std::max(m, g.s.x);                        // F2, F3
+    const long k0 = static_cast<long>(std::ceil((start - m) / s));  // fixes.md G4
     long r19 = 0;
     for (; start + s * r19 < g.t.x - w && turn(); ++r19) {  // N120
         rapidZ(start + s * r19);
         feedX(xb);
-        rapidX(xb + 2 * i + r19 * i + c);
+        rapidX(xb + 2 * i + (r19 + k0) * i + c);
     }
     rapidZ(g.t.x - w);  // N130..N150
     feedX(xb);
-    rapidX(xb + 2 * i + r19 * i + c);
+    rapidX(xb + 2 * i + (r19 + k0) * i + c);
     for (long r61 = 1; g.t.x + s * r61 < bz && turn(); ++r61) {  // N170, only with tan R5 > 0
         rapidZ(g.t.x + s * r61 - w);
         feedX(g.xRight(g.t.x + s * r61));
         feed(xb, g.t.x - w);
-        rapidX(xb + 2 * i + r19 * i + c + r61 * i);
+        rapidX(xb + 2 * i + (r19 + k0) * i + c + r61 * i);
     }
     rapidZ(bz - w);  // N180..N200
     feedX(bx);

@@ -268,6 +268,24 @@ TEST(GrooveProperties, RapidsToAFlankPlungeClearTheStaircase)
     }
 }
 
+// Fix G4: where F3 clamps the half-step start of the final bottom sweep, its retract heights count
+// the steps the clamp skipped (0.69 mm and 1.24 mm into the staircase before the fix).
+TEST(GrooveProperties, ClampedBottomSweepRetractsOverTheStaircase)
+{
+    Case a;
+    a.g = {350, 500, 17.3078, 73.7303, 23.3031, 0, 6.93919, 0.5, 0.5, 3};
+    a.r10 = 0.5;
+    a.r11 = 2;
+    Case b;
+    b.g = {350, 500, 25.3985, 91.9919, 9.24829, 10.0849, 8.54834, 0.5, 0.5, 5};
+    b.r10 = 0.5;
+    b.r11 = 3;
+    for (const Case& c : {a, b}) {
+        const Verdict v = check(c);
+        EXPECT_FALSE(v.error) << v.message;
+    }
+}
+
 // Seed §5.3 item 1: Kod 1 with R3 = 160 ends through DNO_ZP, which the printed code got wrong
 // (25.4994 mm gouge); F2 programs the left corner. Item 2: the half-step start (F3).
 TEST(GrooveProperties, DefectSetsOneAndTwoAreClean)

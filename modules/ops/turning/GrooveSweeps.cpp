@@ -162,10 +162,12 @@ void Sweeps::closeGap(double lastZ, double flankZ, double depth, double retractX
     rapidX(retractX);
 }
 
-// Fix G3 (/work/groove-fixes.md): the rapid to a flank plunge goes further than one step (up to
-// R9 R10 + R11 tan(flank)), so it may pass over a staircase cell one infeed higher than the sweep's
-// retract height clears. Going right (ZL) in the first pass the surface over the insert's right
-// corner at the flank plunge, going left (ZP) the floor the ZL sweep left at its left corner
+// Fixes G3, G5 (/work/groove-fixes.md): the rapid to a flank plunge goes further than one step (up
+// to R9 R10 + R11 tan(flank)), so it may pass over a staircase cell one infeed higher than the
+// sweep's retract height clears; so may the rapids of the right-flank clean-ups in the first pass,
+// whose heights the thesis takes at the regular plunges' positions. Going right (ZL, DNO_ZL) in
+// the first pass the surface over the insert's right corner at the destination, going left (ZP)
+// the floor the ZL sweep left at its left corner
 // (R12 - R11 floor((z - R13) / (R9 R10))) is the top of the material there; where the sweep's
 // height is below it the insert first rises to it plus R30. Returns the height the sweep is at.
 double Sweeps::clearFlankMove(double flankZ)
@@ -208,11 +210,13 @@ void Sweeps::zl()
     const double top = rpx + (firstPass ? g.h1 : 0) + r28 * i;  // R12+R56+R28*R11
     const double zTop = g.zRight(top);
     for (long r19 = 1; zd + s * r19 < zTop && turn(); ++r19) {  // only with tan R5 > 0
+        clearFlankMove(zd - w + s * r19);                       // G5
         rapidZ(zd - w + s * r19);
         feedX(g.xRight(zd + s * r19));
         feed(d, zd - w);
         rapidX(firstPass ? g.r.y + g.tan2 * (w + s + s * r18 + s * r19) + c : rpx + i * (2 + r18 + r19) + c);
     }
+    clearFlankMove(zTop - w);  // G5
     rapidZ(zTop - w);
     feedX(top);
     feed(d, zd - w);
@@ -271,13 +275,15 @@ void Sweeps::dnoZl()
     const double top = rpx + (firstPass ? g.h1 : 0) + r28 * i;
     const double zTop = g.zRight(top);
     for (long r19 = 1; g.t.x + s * r19 < zTop && turn(); ++r19) {  // N90
+        clearFlankMove(g.t.x - w + s * r19);                       // G5
         rapidZ(g.t.x - w + s * r19);
         feedX(g.xRight(g.t.x + s * r19));
         feed(xb, g.t.x - w);
         rapidX(firstPass ? g.r.y + g.tan2 * (w + s + s * r18 + s * r60 + s * r19) + c
                          : rpx + i * (2 + r18 + r60 + r19) + c);
     }
-    rapidZ(zTop - w);  // N100..N120
+    clearFlankMove(zTop - w);  // G5
+    rapidZ(zTop - w);          // N100..N120
     feedX(top);
     feed(xb, g.t.x - w);
     rapidX(rpx - (r18 - 1) * i + c);  // N130

@@ -33,6 +33,7 @@ std::string describe(const Case& c)
 {
     const auto& g = c.g;
     std::ostringstream s;
+    s.precision(17);
     s << "R0=" << g.r0 << " R1=" << g.r1 << " R2=" << g.r2 << " R3=" << g.r3 << " R4=" << g.r4 << " R5=" << g.r5
       << " R6=" << g.r6 << " R7=" << g.r7 << " R8=" << g.r8 << " R9=" << g.r9 << " R10=" << c.r10 << " R11=" << c.r11
       << " R30=" << c.r30;
@@ -265,6 +266,38 @@ TEST(GrooveProperties, RapidsToAFlankPlungeClearTheStaircase)
         const Verdict v = check(c);
         EXPECT_FALSE(v.error) << v.message;
         EXPECT_FALSE(v.fallback);
+    }
+}
+
+// Fix G5: in the first pass the right-flank clean-up's rapids rise over the surface at the
+// insert's right corner, where the thesis' heights (taken at the regular plunges) are short by up
+// to tan R2 tan R5 R11 - R30 (0.24 mm and 0.36 mm into the stock before the fix).
+TEST(GrooveProperties, FirstPassFlankCleanUpRisesOverTheSurface)
+{
+    Case a;
+    a.g = {
+        350, 500, 14.099997542798519, 110.57875990169123, 24.738170055206865, 22.158851539716125, 21.470171611290425, 0,
+        0,   10};
+    a.r10 = 0.46919938912615178;
+    a.r11 = 3;
+    a.r30 = 0;
+    Case b;
+    b.g = {350,
+           500,
+           24.222297798842192,
+           52.418549512512982,
+           11.595912560587749,
+           21.452150365803391,
+           3.6514632613398135,
+           0.67323407251387835,
+           0.070180295966565609,
+           5};
+    b.r10 = 0.55159296221099785;
+    b.r11 = 3;
+    b.r30 = 0.031098342966288328;
+    for (const Case& c : {a, b}) {
+        const Verdict v = check(c);
+        EXPECT_FALSE(v.error) << v.message;
     }
 }
 

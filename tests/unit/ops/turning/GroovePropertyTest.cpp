@@ -5,11 +5,13 @@
 // seed §5.3 items 1-5; every input check with its message.
 #include "GrooveTestUtil.h"
 #include "geom/RegionOps.h"
+#include "ops/turning/GrooveSweeps.h"
 #include "sim/TurningCheck.h"
 
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <functional>
 #include <random>
@@ -31,6 +33,7 @@ std::string describe(const Case& c)
 {
     const auto& g = c.g;
     std::ostringstream s;
+    s.precision(17);
     s << "R0=" << g.r0 << " R1=" << g.r1 << " R2=" << g.r2 << " R3=" << g.r3 << " R4=" << g.r4 << " R5=" << g.r5
       << " R6=" << g.r6 << " R7=" << g.r7 << " R8=" << g.r8 << " R9=" << g.r9 << " R10=" << c.r10 << " R11=" << c.r11
       << " R30=" << c.r30;
@@ -153,8 +156,10 @@ TEST(GrooveProperties, SeedRandomSweepIsClean)
         const Case c = sweep.next();
         SCOPED_TRACE("case " + std::to_string(k));
         const Verdict v = check(c);
-        if (v.error)
+        if (v.error) {
             EXPECT_NE(v.message.find("(R"), std::string::npos) << v.message;
+            std::printf("  case %d refused: %s\n", k, v.message.c_str());
+        }
         tally.add(v);
     }
     tally.print("seed sweep");
@@ -166,7 +171,7 @@ TEST(GrooveProperties, CylindersVerticalFlanksAndNarrowGroovesAreClean)
 {
     Sweep sweep(2);
     Tally tally;
-    for (int k = 0; k < 120; ++k) {
+    for (int k = 0; k < 360; ++k) {
         Case c = sweep.next();
         switch (k % 6) {
         case 0:
@@ -196,8 +201,37 @@ TEST(GrooveProperties, CylindersVerticalFlanksAndNarrowGroovesAreClean)
         tally.add(v);
     }
     tally.print("R2/R5/R6 = 0 and narrow");
-    EXPECT_LE(tally.errors, 120 * 5 / 100);
+    EXPECT_LE(tally.errors, 360 * 5 / 100);
     EXPECT_GT(tally.fallbacks, 0);
+}
+
+// Beyond the seed's ranges: steeper cones and flanks, other allowances, no safety distance.
+TEST(GrooveProperties, WiderRangesAreClean)
+{
+    Sweep sweep(3);
+    Tally tally;
+    for (int k = 0; k < 450; ++k) {
+        Case c = sweep.next();
+        c.g.r3 = sweep.uniform(50, 120);  // shallower ones are mostly refused (Rx <= Sx) at these cones
+        c.g.r2 = sweep.uniform(0, 40);
+        c.g.r5 = sweep.uniform(0, 30);
+        c.g.r6 = sweep.uniform(0, 30);
+        c.g.r7 = sweep.uniform(0, 2);
+        c.g.r8 = sweep.uniform(0, 2);
+        c.r30 = sweep.uniform(0, 2);
+        c.r10 = sweep.uniform(0.3, 1);
+        if (k % 5 == 0)  // no allowances and no safety distance: the rapids touch, never cut
+            c.g.r7 = c.g.r8 = c.r30 = 0;
+        SCOPED_TRACE("case " + std::to_string(k));
+        const Verdict v = check(c);
+        if (v.error) {
+            EXPECT_NE(v.message.find("(R"), std::string::npos) << v.message;
+            std::printf("  case %d refused: %s\n", k, v.message.c_str());
+        }
+        tally.add(v);
+    }
+    tally.print("wider ranges");
+    EXPECT_LE(tally.errors, 450 * 5 / 100);
 }
 
 TEST(GrooveProperties, Kod1AndItsCylinderAndVerticalFlanksAreClean)
@@ -215,22 +249,103 @@ TEST(GrooveProperties, Kod1AndItsCylinderAndVerticalFlanksAreClean)
     }
 }
 
+// Found by sweeps ten times larger (fixes G3 in /work/groove-fixes.md): the rapid to a flank
+// plunge passes over a staircase cell one infeed higher than the sweep's retract clears (2 mm and
+// 1 mm into the stock before the fix).
+TEST(GrooveProperties, RapidsToAFlankPlungeClearTheStaircase)
+{
+    Case a;
+    a.g = {350, 500, 11.312, 70.1017, 4.60558, 8.51472, 14.9373, 0.5, 0.5, 3};
+    a.r10 = 0.5;
+    a.r11 = 3;
+    Case b;
+    b.g = {350, 500, 0, 53.7394, 76.0301, 13.6712, 13.4685, 0.5, 0.5, 10};
+    b.r10 = 0.6;
+    b.r11 = 2;
+    Case p1;  // the mode-B author's case for the same rapid (groove-fixes P1): 0.338 mm before G3
+    p1.g = {350, 500, 19.4508, 109.2035, 20.9253, 0.5596, 27.774, 1.4435, 1.2603, 5};
+    p1.r10 = 0.51402;
+    p1.r11 = 1;
+    p1.r30 = 0.66203;
+    for (const Case& c : {a, b, p1}) {
+        const Verdict v = check(c);
+        EXPECT_FALSE(v.error) << v.message;
+        EXPECT_FALSE(v.fallback);
+    }
+}
+
+// Fix G5: in the first pass the right-flank clean-up's rapids rise over the surface at the
+// insert's right corner, where the thesis' heights (taken at the regular plunges) are short by up
+// to tan R2 tan R5 R11 - R30 (0.24 mm and 0.36 mm into the stock before the fix).
+TEST(GrooveProperties, FirstPassFlankCleanUpRisesOverTheSurface)
+{
+    Case a;
+    a.g = {
+        350, 500, 14.099997542798519, 110.57875990169123, 24.738170055206865, 22.158851539716125, 21.470171611290425, 0,
+        0,   10};
+    a.r10 = 0.46919938912615178;
+    a.r11 = 3;
+    a.r30 = 0;
+    Case b;
+    b.g = {350,
+           500,
+           24.222297798842192,
+           52.418549512512982,
+           11.595912560587749,
+           21.452150365803391,
+           3.6514632613398135,
+           0.67323407251387835,
+           0.070180295966565609,
+           5};
+    b.r10 = 0.55159296221099785;
+    b.r11 = 3;
+    b.r30 = 0.031098342966288328;
+    for (const Case& c : {a, b}) {
+        const Verdict v = check(c);
+        EXPECT_FALSE(v.error) << v.message;
+    }
+}
+
+// Fix G4: where F3 clamps the half-step start of the final bottom sweep, its retract heights count
+// the steps the clamp skipped (0.69 mm and 1.24 mm into the staircase before the fix).
+TEST(GrooveProperties, ClampedBottomSweepRetractsOverTheStaircase)
+{
+    Case a;
+    a.g = {350, 500, 17.3078, 73.7303, 23.3031, 0, 6.93919, 0.5, 0.5, 3};
+    a.r10 = 0.5;
+    a.r11 = 2;
+    Case b;
+    b.g = {350, 500, 25.3985, 91.9919, 9.24829, 10.0849, 8.54834, 0.5, 0.5, 5};
+    b.r10 = 0.5;
+    b.r11 = 3;
+    for (const Case& c : {a, b}) {
+        const Verdict v = check(c);
+        EXPECT_FALSE(v.error) << v.message;
+    }
+}
+
 // Seed §5.3 item 1: Kod 1 with R3 = 160 ends through DNO_ZP, which the printed code got wrong
 // (25.4994 mm gouge); F2 programs the left corner. Item 2: the half-step start (F3).
 TEST(GrooveProperties, DefectSetsOneAndTwoAreClean)
 {
-    for (auto [r3, r11] : {std::pair{160.0, 1.0}, {150.0, 1.0}, {155.0, 1.0}, {158.0, 2.0}}) {
+    // R3 = 160: item 1 (F2), and its half-step start left of Sz (item 2, F3 in DNO_ZP); 150, 155:
+    // clean with F2 (the seed); R11 = 2, R3 = 158: item 2's start right of Tz - R9 (F3 in DNO_ZL).
+    struct Set {
+        double r3, r11;
+        const char* bottomPhase;
+    };
+    for (const Set& set :
+         {Set{160, 1, "DNO_ZP"}, Set{150, 1, "DNO_ZP"}, Set{155, 1, "DNO_ZP"}, Set{158, 2, "DNO_ZL"}}) {
         Case c = kod1();
-        c.g.r3 = r3;
-        c.r11 = r11;
+        c.g.r3 = set.r3;
+        c.r11 = set.r11;
         SCOPED_TRACE(describe(c));
         const Verdict v = check(c);
         EXPECT_FALSE(v.error) << v.message;
+        auto moves = turning::grooveMoves({sim::grooveGeometry(c.g), 3, 0.8, set.r11, 1}, "g", {});
+        ASSERT_TRUE(moves.ok());
+        EXPECT_EQ(moves->calls.back(), set.bottomPhase);
     }
-    Case c = kod1();
-    c.g.r3 = 160;
-    auto computed = run(c);
-    ASSERT_TRUE(computed.ok());
 }
 
 // Item 3: the groove is narrower than R9 (1 + R10) at depth: the thesis loops forever; F5's
@@ -244,6 +359,9 @@ TEST(GrooveProperties, DefectSetThreeTerminatesThroughTheFallback)
     const Verdict v = check(c);
     ASSERT_FALSE(v.error) << v.message;
     EXPECT_TRUE(v.fallback);
+    auto moves = turning::grooveMoves({sim::grooveGeometry(c.g), 23.2, 1.0, 2, 1}, "g", {});
+    ASSERT_TRUE(moves.ok());
+    EXPECT_EQ(moves->calls.back(), "FALLBACK");
 }
 
 // Item 4: after DNO_ZL the thesis re-enters ZP on a finished groove (F4 stops it).
@@ -255,6 +373,10 @@ TEST(GrooveProperties, DefectSetFourEndsAfterTheBottomPhase)
     c.r11 = 2;
     const Verdict v = check(c);
     ASSERT_FALSE(v.error) << v.message;
+    auto moves = turning::grooveMoves({sim::grooveGeometry(c.g), 10, 0.8, 2, 1}, "g", {});
+    ASSERT_TRUE(moves.ok());
+    EXPECT_EQ(moves->calls,
+              (std::vector<std::string>{"ZL", "ZP", "ZL", "ZP", "ZL", "ZP", "ZL", "DNO_ZL"}));  // no ZP after it
 }
 
 // Item 5: the left flank's offset meets the surface below the bottom's offset: an input error.
@@ -268,6 +390,24 @@ TEST(GrooveProperties, DefectSetFiveIsAnInputError)
     ASSERT_FALSE(computed.ok());
     EXPECT_NE(computed.error().message.find("left flank's offset (R8) meets the surface"), std::string::npos)
         << computed.error().message;
+}
+
+// Fix V1: where the staircase of plunges is steeper than a flank the plunges walk into it (a
+// 26.4 mm gouge of this left flank without the check); an input error, and clean with a smaller
+// infeed.
+TEST(GrooveProperties, StaircaseSteeperThanAFlankIsRefused)
+{
+    Case c;
+    c.g = {350, 500, 2.41443, 84.6513, 12.5608, 5.18225, 25.771, 1.5685, 1.32945, 3};
+    c.r10 = 0.32291;
+    c.r11 = 3;
+    c.r30 = 1.60823;
+    const Verdict v = check(c);
+    ASSERT_TRUE(v.error);
+    EXPECT_NE(v.message.find("steeper than the left flank angle (R6)"), std::string::npos) << v.message;
+    c.r11 = 1.9;  // tan(25.771) * 1.9 = 0.917 <= 3 * 0.32291
+    const Verdict w = check(c);
+    EXPECT_FALSE(w.error) << w.message;
 }
 
 // REQ-06 / F6: each check with its message (the operation's name, the value's name and R name).
@@ -307,6 +447,19 @@ TEST(GrooveProperties, Req06EveryInputCheckHasItsMessage)
          },
          "cone angle (R2) plus right flank angle (R5) must be below 90 degrees"},
         {[](GrooveParams& p, ToolController&) {
+             p.stepFactor = 0.1;
+             p.infeedMm = 3;
+         },
+         "the staircase of plunges (R11 = 3 mm deeper every R9*R10 = 0.3 mm) is steeper than the right flank angle "
+         "(R5)"},
+        {[](GrooveParams& p, ToolController&) {
+             p.stepFactor = 0.2;
+             p.infeedMm = 3;
+             p.groove.r6 = 20;
+         },
+         "steeper than the left flank angle (R6): the plunges would cut the flank; take a smaller infeed (R11 <= "
+         "1.648"},
+        {[](GrooveParams& p, ToolController&) {
              p.groove.r3 = 5;
              p.groove.r7 = 6;
          },
@@ -319,6 +472,8 @@ TEST(GrooveProperties, Req06EveryInputCheckHasItsMessage)
          "narrower than the 3 mm insert (R9)"},
         {[](GrooveParams& p, ToolController&) { p.finalRetractMm = 0; }, "final retract must be positive"},
         {[](GrooveParams& p, ToolController&) { p.feedMmPerRev = 0; }, "feed must be positive"},
+        {[](GrooveParams& p, ToolController&) { p.maxRpm = 0; }, "cutting speed and speed limit must be positive"},
+        {[](GrooveParams& p, ToolController&) { p.groove.r1 = std::nan(""); }, "start point Z (R1) must be a number"},
     };
     for (const Bad& b : bad) {
         GrooveParams p;

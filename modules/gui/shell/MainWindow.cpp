@@ -251,6 +251,8 @@ void MainWindow::registerActions()
         [this] { newOperation(OperationKind::Waterline); });
     add({"Cam.Op.NewParallel", tr("New P&arallel…"), operation, {}, true},
         [this] { newOperation(OperationKind::Parallel); });
+    add({"Cam.Op.NewGroove", tr("New &Groove Roughing…"), operation, {}, true},
+        [this] { newOperation(OperationKind::Groove); });
     // The foundation's profile is the contour now; the id stays for scripts (no menu entry).
     add({"Cam.Op.NewProfile", tr("New &Profile"), {}}, [this] { newOperation(OperationKind::Contour); });
     // Without a selected operation these say so where the user looks (the status bar).
@@ -321,6 +323,8 @@ void MainWindow::registerActions()
         [this] { m_view->setViewPreset(View3D::Preset::Front); });
     add({"Cam.View.Right", tr("&Right"), view, QKeySequence(Qt::Key_3), true},
         [this] { m_view->setViewPreset(View3D::Preset::Right); });
+    add({"Cam.View.LatheXZ", tr("&XZ (lathe)"), view, QKeySequence(Qt::Key_4), true},
+        [this] { m_view->setViewPreset(View3D::Preset::LatheXZ); });
     add({"Cam.View.FitAll", tr("Fit &All"), view, QKeySequence(Qt::Key_F), true}, [this] { m_view->fitAll(); });
     registerDockActions(view);
     registerFocusActions(*m_actions, *this, view);
@@ -530,6 +534,18 @@ void MainWindow::openTaskPanel(int index, const document::Operation& operation,
     closeTaskPanel();
     m_taskPanel = OperationPanel::create(*m_workbench, &m_view->overlay(), index, operation, newTool, m_taskDock);
     connect(m_taskPanel, &OperationPanel::closed, this, &MainWindow::closeTaskPanel);
+    // A groove's contour follows its panel, as its preview does (the job's again on close).
+    auto showSection = [this](const document::Job& job) {
+        if (auto section = latheSectionOf(job))
+            m_view->setLatheSection(section);
+    };
+    connect(m_taskPanel, &OperationPanel::edited, this, [this, showSection] {
+        if (m_taskPanel != nullptr)
+            showSection(m_taskPanel->editedJob());
+    });
+    connect(m_taskPanel, &OperationPanel::closed, this,
+            [this] { m_view->setLatheSection(latheSectionOf(m_workbench->job())); });
+    showSection(m_taskPanel->editedJob());
     m_taskDock->setWidget(m_taskPanel);
     m_taskDock->setWindowTitle(tr("Task: %1").arg(QString::fromStdString(operation.name())));
     m_taskDock->show();

@@ -2,10 +2,13 @@
 
 #include "gui/actions/ActionRegistry.h"
 #include "gui/shell/Workbench.h"
-#include "gui/view3d/View3D.h"
+#include "sim/TurningProfile.h"
 
 #include <QAction>
 #include <QCoreApplication>
+
+#include <memory>
+#include <utility>
 
 namespace camwb::gui {
 
@@ -25,11 +28,36 @@ void registerJobSetupActions(ActionRegistry& registry, std::function<void()> ope
     QObject::connect(action, &QAction::triggered, action, [openPanel] { openPanel(); });
 }
 
+std::optional<LatheSection> latheSectionOf(const document::Job& job)
+{
+    LatheSection section;
+    for (const document::Operation& op : job.operations) {
+        if (op.kind() != document::OperationKind::Groove)
+            return std::nullopt;
+        const sim::GrooveParameters& g = std::get<ops::GrooveParams>(op.params).groove;
+        if (section.contours.empty())
+            section.stock = sim::grooveStock(g);
+        const sim::GrooveGeometry geo = sim::grooveGeometry(g);
+        section.contours.push_back({geo.c1, geo.bottomLeft, geo.bottomRight, geo.p});
+        section.offsetContours.push_back({geo.r, geo.s, geo.t, geo.u});
+    }
+    if (section.contours.empty())
+        return std::nullopt;
+    return section;
+}
+
 void showJobSetupInView(Workbench& workbench, View3D& view)
 {
-    auto show = [&workbench, &view] {
-        const document::Stock& stock = workbench.job().stock;
-        view.setJobSetup(stock.box(), stock.shape == document::Stock::Shape::Cylinder);
+    auto turning = std::make_shared<bool>(false);
+    auto show = [&workbench, &view, turning] {
+        const document::Job& job = workbench.job();
+        const std::optional<LatheSection> section = latheSectionOf(job);
+        const document::Stock& stock = job.stock;
+        view.setJobSetup(section ? std::nullopt : stock.box(), stock.shape == document::Stock::Shape::Cylinder);
+        view.setLatheSection(section);
+        if (section.has_value() && !std::exchange(*turning, true))
+            view.setViewPreset(View3D::Preset::LatheXZ);
+        *turning = section.has_value();
     };
     QObject::connect(&workbench, &Workbench::jobChanged, &view, show);
     show();

@@ -66,6 +66,7 @@ struct View3D::Private {
     vtkSmartPointer<vtkActor> edgeActor;
     vtkSmartPointer<vtkActor> stockActor;
     vtkSmartPointer<vtkAxesActor> workAxes;
+    std::vector<vtkSmartPointer<vtkActor>> latheActors;
     struct ToolActors {
         int tool = 0;
         vtkSmartPointer<vtkActor> cut;
@@ -351,6 +352,19 @@ void View3D::setJobSetup(const std::optional<base::Box3>& stock, bool cylinder)
 
 bool View3D::hasStockActor() const { return d->stockActor != nullptr; }
 
+void View3D::setLatheSection(const std::optional<LatheSection>& section)
+{
+    for (const auto& actor : d->latheActors)
+        d->renderer->RemoveActor(actor);
+    d->latheActors = section ? makeLatheActors(*section) : std::vector<vtkSmartPointer<vtkActor>>{};
+    for (const auto& actor : d->latheActors)
+        d->renderer->AddActor(actor);
+    applyVisibility();
+    d->render();
+}
+
+bool View3D::hasLatheSection() const { return !d->latheActors.empty(); }
+
 bool View3D::hasWorkAxes() const { return d->workAxes != nullptr; }
 
 bool View3D::hasModelActor() const { return d->modelActor != nullptr || d->edgeActor != nullptr; }
@@ -392,6 +406,8 @@ void View3D::applyVisibility()
     for (vtkActor* actor : {d->modelActor.Get(), d->edgeActor.Get(), d->stockActor.Get()})
         if (actor != nullptr)
             actor->SetVisibility(!d->simulationShown);
+    for (const auto& actor : d->latheActors)
+        actor->SetVisibility(!d->simulationShown);
 }
 
 SimOverlay& View3D::simulation() const { return *d->simulation; }
@@ -555,10 +571,16 @@ void View3D::setViewPreset(Preset preset)
         camera->SetPosition(1, 0, 0);
         camera->SetViewUp(0, 0, 1);
         break;
+    case Preset::LatheXZ:  // from +Y looking along -Y: Z to the right, X (the radius) up
+        camera->SetPosition(0, 1, 0);
+        camera->SetViewUp(1, 0, 0);
+        break;
     }
     camera->OrthogonalizeViewUp();
     fitAll();
 }
+
+View3D::Preset View3D::viewPreset() const { return d->preset; }
 
 void View3D::fitAll()
 {

@@ -52,17 +52,14 @@ geom::Region polygon(const std::vector<Vec2>& points)
 double tanDeg(double deg) { return std::tan(deg * std::numbers::pi / 180); }
 double cosDeg(double deg) { return std::cos(deg * std::numbers::pi / 180); }
 
-// The cone line of the shaft's surface at `z`.
-double surfaceX(const GrooveParameters& g, double z) { return g.r0 + (z - g.r1) * tanDeg(g.r2); }
-
 // The shaft's outline from left to right with `groove` in between, closed along the axis.
 TurningRegion shaftWith(const GrooveParameters& g, const std::vector<Vec2>& groove, double margin)
 {
     const GrooveGeometry geo = grooveGeometry(g);
     const double zl = geo.c1.x - margin, zr = geo.p.x + margin;
-    std::vector<Vec2> pts{turningPoint(0, zl), turningPoint(0, zr), turningPoint(surfaceX(g, zr), zr)};
+    std::vector<Vec2> pts{turningPoint(0, zl), turningPoint(0, zr), turningPoint(geo.surfaceX(zr), zr)};
     pts.insert(pts.end(), groove.rbegin(), groove.rend());  // the groove from right to left
-    pts.push_back(turningPoint(surfaceX(g, zl), zl));
+    pts.push_back(turningPoint(geo.surfaceX(zl), zl));
     return {polygon(pts)};
 }
 
@@ -129,22 +126,36 @@ base::Result<TurningRegion> stockProfileFromArgument(const std::string& argument
 
 GrooveGeometry grooveGeometry(const GrooveParameters& g)
 {
-    const double t2 = tanDeg(g.r2), t5 = tanDeg(g.r5), t6 = tanDeg(g.r6);
-    const double d = g.r3 * t5;                                                  // Rov. 2
-    const double c = (g.r3 - t2 * (g.r4 + g.r3 * t5)) / (t2 + 1 / t6);           // Rov. 9
-    const double h1 = g.r3 - c / t6;                                             // Rov. 7
-    const double dRx = (g.r8 * tanDeg(g.r2 - g.r6) + g.r8 * t6) * cosDeg(g.r6);  // Rov. 17
-    const double dUx = (g.r8 * tanDeg(g.r2 + g.r5) - g.r8 * t5) * cosDeg(g.r5);  // Rov. 40
-    const double bottom = g.r0 - g.r3, bottomOffset = bottom + g.r7;
     GrooveGeometry geo;
+    const double t2 = tanDeg(g.r2), t5 = tanDeg(g.r5), t6 = tanDeg(g.r6);
+    geo.tan2 = t2;
+    geo.tan5 = t5;
+    geo.tan6 = t6;
+    geo.d = g.r3 * t5;
+    const double bottomX = g.r0 - g.r3, brZ = g.r1 - geo.d, blZ = brZ - g.r4;
+    // C1: the left flank z = blZ - t6 (x - bottomX) meets the surface x = R0 + (z - R1) t2.
+    const double c1x = (g.r0 + (blZ + t6 * bottomX - g.r1) * t2) / (1 + t2 * t6);
+    const double c1z = blZ - t6 * (c1x - bottomX);
+    geo.c = blZ - c1z;
+    geo.h1 = g.r0 - c1x;
+    geo.h2 = g.r3 - geo.h1;
+    // The offset corners on the offset bottom (Rov. 31, 33, 54, 55): the flanks moved by R8 along
+    // their normals cross the bottom moved up by R7.
+    const double xb = bottomX + g.r7;
+    geo.bottomOffsetX = xb;
+    const double tz = brZ - (g.r8 / cosDeg(g.r5) - g.r7 * t5);
+    const double sz = blZ + g.r8 / cosDeg(g.r6) - g.r7 * t6;
+    // U, R: the offset flanks through T and S cross the surface.
+    const double ux = (g.r0 + (tz - g.r1 - t5 * xb) * t2) / (1 - t2 * t5);
+    const double rx = (g.r0 + (sz + t6 * xb - g.r1) * t2) / (1 + t2 * t6);
     geo.p = turningPoint(g.r0, g.r1);
-    geo.bottomRight = turningPoint(bottom, g.r1 - d);
-    geo.bottomLeft = turningPoint(bottom, g.r1 - d - g.r4);
-    geo.c1 = turningPoint(g.r0 - h1, g.r1 - d - g.r4 - c);
-    geo.r = turningPoint(g.r0 - h1 + dRx, g.r1 - d - g.r4 - c + dRx / t2);                  // Rov. 20, 22
-    geo.s = turningPoint(bottomOffset, g.r1 - d - g.r4 + g.r8 / cosDeg(g.r6) - g.r7 * t6);  // Rov. 31, 33
-    geo.t = turningPoint(bottomOffset, g.r1 - d - (g.r8 / cosDeg(g.r5) - g.r7 * t5));       // Rov. 54, 55
-    geo.u = turningPoint(g.r0 - dUx, g.r1 - dUx / t2);                                      // Rov. 43, 44
+    geo.bottomRight = turningPoint(bottomX, brZ);
+    geo.bottomLeft = turningPoint(bottomX, blZ);
+    geo.c1 = turningPoint(c1x, c1z);
+    geo.s = turningPoint(xb, sz);
+    geo.t = turningPoint(xb, tz);
+    geo.u = turningPoint(ux, tz + t5 * (ux - xb));
+    geo.r = turningPoint(rx, sz - t6 * (rx - xb));
     return geo;
 }
 

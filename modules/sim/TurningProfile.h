@@ -35,11 +35,27 @@ struct GrooveParameters {
     double r9 = 3;                // insert width
 };
 
-// The groove's points (Z, X as turningPoint gives them) by the thesis' equations (seed §2.5):
-// P, the bottom corners, C1 where the left flank meets the surface; R, S, T, U the offset corners.
+// The groove's points (Z, X as turningPoint gives them): P, the bottom corners, C1 where the left
+// flank meets the surface; R, S, T, U the corners of the contour offset by the allowances. Found by
+// intersecting lines (groove spec F1, seed REQ-04), never dividing by tan R2, tan R5 or tan R6, so
+// a cylinder (R2 = 0) and vertical flanks (R5 = 0, R6 = 0) work; for R2, R5, R6 > 0 they equal the
+// thesis' closed forms (seed §2.5).
 struct GrooveGeometry {
     Vec2 p, bottomRight, bottomLeft, c1;
     Vec2 r, s, t, u;
+    double tan2 = 0, tan5 = 0, tan6 = 0;  // tan R2, tan R5, tan R6
+    double d = 0, c = 0;                  // Z widths of the right flank and of the left flank (Rov. 2, 9)
+    double h1 = 0, h2 = 0;                // heights of the surface at C1 below P and of the left flank
+    double bottomOffsetX = 0;             // R0 - R3 + R7: the offset bottom (Sx = Tx)
+
+    // The offset flanks as lines: Z at radius x, and (only where that flank is not vertical,
+    // tan5 > 0 / tan6 > 0) the radius at z; dz/dx = tan R5 on the right, -tan R6 on the left.
+    double zRight(double x) const { return t.x + tan5 * (x - t.y); }
+    double zLeft(double x) const { return s.x - tan6 * (x - s.y); }
+    double xRight(double z) const { return t.y + (z - t.x) / tan5; }
+    double xLeft(double z) const { return s.y + (s.x - z) / tan6; }
+    // The shaft's surface (the cone line through P) at z.
+    double surfaceX(double z) const { return p.y + (z - p.x) * tan2; }
 };
 GrooveGeometry grooveGeometry(const GrooveParameters& g);
 

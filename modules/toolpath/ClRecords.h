@@ -31,7 +31,7 @@ enum class FeedKind : unsigned char { Unspecified, Cutting, Plunge, Entry, Exit,
 struct Tool {
     int number = 1;
     std::string name;
-    std::string kind = "flat";  // flat, ball, bull, drill, chamfer
+    std::string kind = "flat";  // flat, ball, bull, drill, chamfer, groove (diameterMm = the insert's width)
     double diameterMm = 0;
     double cornerRadiusMm = 0;
     double fluteLengthMm = 0;

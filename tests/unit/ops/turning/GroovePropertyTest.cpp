@@ -1,0 +1,336 @@
+// Property tests of the groove roughing on the turning stock (seed REQ-15..18, spec F1-F6): on
+// random grooves of the seed's sweep (§5.3 item 8) and on cylinders, vertical flanks and narrow
+// grooves, every path terminates, cuts nothing of the offset contour, never rapids through stock,
+// moves its rapids along one axis and leaves nothing above the offset contour; the defect sets of
+// seed §5.3 items 1-5; every input check with its message.
+#include "GrooveTestUtil.h"
+#include "geom/RegionOps.h"
+#include "sim/TurningCheck.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <functional>
+#include <random>
+#include <sstream>
+
+namespace camwb::ops::test {
+namespace {
+
+// The checker's tolerance: cuts shallower than this are touching, not a gouge or a rapid hit.
+constexpr double kToleranceMm = 1e-3;
+constexpr double kLeftoverMm = 0.01;  // seed REQ-15 d, for R10 <= 1
+
+struct Case {
+    sim::GrooveParameters g;
+    double r10 = 0.8, r11 = 1, r30 = 1;
+};
+
+std::string describe(const Case& c)
+{
+    const auto& g = c.g;
+    std::ostringstream s;
+    s << "R0=" << g.r0 << " R1=" << g.r1 << " R2=" << g.r2 << " R3=" << g.r3 << " R4=" << g.r4 << " R5=" << g.r5
+      << " R6=" << g.r6 << " R7=" << g.r7 << " R8=" << g.r8 << " R9=" << g.r9 << " R10=" << c.r10 << " R11=" << c.r11
+      << " R30=" << c.r30;
+    return s.str();
+}
+
+base::Result<OpResult> run(const Case& c)
+{
+    GrooveParams p;
+    p.groove = c.g;
+    p.stepFactor = c.r10;
+    p.infeedMm = c.r11;
+    p.safetyMm = c.r30;
+    return computeGroove(p, grooveTool(c.g.r9), 0);
+}
+
+struct Verdict {
+    bool error = false;
+    std::string message;
+    bool fallback = false;
+    double gougeMm = 0, rapidMm = 0, leftoverMm = 0;
+    std::size_t moves = 0;
+};
+
+// Computes and simulates one case; the failures are reported by gtest (with the case).
+Verdict check(const Case& c)
+{
+    Verdict v;
+    SCOPED_TRACE(describe(c));
+    auto computed = run(c);
+    if (!computed) {
+        v.error = true;
+        v.message = computed.error().message;
+        return v;
+    }
+    const toolpath::Toolpath& path = computed->toolpath;
+    for (const auto& r : path.records())
+        if (const auto* rapid = std::get_if<toolpath::Rapid>(&r)) {
+            EXPECT_TRUE(rapid->axes.bits == toolpath::AxisMask::kX || rapid->axes.bits == toolpath::AxisMask::kZ)
+                << "a rapid along more than one axis";
+        } else if (const auto* line = std::get_if<toolpath::Linear>(&r)) {
+            EXPECT_EQ(line->axes.bits, toolpath::AxisMask::kX | toolpath::AxisMask::kZ);
+        }
+    const auto& params = std::get<toolpath::SectionBegin>(path.record(0)).strategyParameters;
+    v.fallback = params.back().second == 1;
+    sim::TurningOptions options;
+    options.insert.widthMm = c.g.r9;
+    options.toleranceMm = kToleranceMm;
+    const sim::TurningRegion part = sim::grooveOffsetPart(c.g);
+    const sim::TurningReport r = sim::checkTurning(path, sim::grooveStock(c.g), part, options);
+    v.moves = r.moves;
+    v.gougeMm = r.maxGougeMm;
+    v.rapidMm = r.maxRapidDepthMm;
+    const sim::TurningRegion leftover = geom::subtract(r.stock, part, 1e-6);
+    base::Vec2 at;
+    v.leftoverMm = sim::radialDepth(leftover, r.stock, kToleranceMm, at);
+    EXPECT_EQ(r.gouges, 0u) << "gouge " << r.maxGougeMm << " at Z " << r.maxGougeAt.x << " X " << r.maxGougeAt.y;
+    EXPECT_EQ(r.rapidsInStock, 0u) << "rapid " << r.maxRapidDepthMm << " into stock";
+    EXPECT_LE(v.leftoverMm, kLeftoverMm) << "left over at Z " << at.x << " X " << at.y;
+    return v;
+}
+
+Case kod1() { return {}; }
+
+// The seed's random sweep (§5.3 item 8) with its own generator: std::mt19937 and explicit
+// uniform maps, so the cases are the same on every platform.
+class Sweep {
+public:
+    explicit Sweep(unsigned seed) : m_rng(seed) {}
+    double uniform(double lo, double hi) { return lo + (hi - lo) * (m_rng() / 4294967296.0); }
+    template <std::size_t N> double pick(const double (&values)[N]) { return values[m_rng() % N]; }
+
+    Case next()
+    {
+        static const double r9s[] = {3, 5, 10, 23.2}, r10s[] = {0.5, 0.6, 0.8, 1.0}, r11s[] = {0.5, 1, 2, 3};
+        Case c;
+        c.g.r0 = 350;
+        c.g.r1 = 500;
+        c.g.r9 = pick(r9s);
+        c.g.r2 = uniform(3, 30);
+        c.g.r3 = uniform(20, 120);
+        c.g.r4 = uniform(1.5 * c.g.r9, 80);
+        c.g.r5 = uniform(1, 15);
+        c.g.r6 = uniform(1, 15);
+        c.g.r7 = c.g.r8 = 0.5;
+        c.r10 = pick(r10s);
+        c.r11 = pick(r11s);
+        c.r30 = 1;
+        return c;
+    }
+
+private:
+    std::mt19937 m_rng;
+};
+
+struct Tally {
+    int cases = 0, errors = 0, fallbacks = 0;
+    double gouge = 0, rapid = 0, leftover = 0;
+    void add(const Verdict& v)
+    {
+        ++cases;
+        errors += v.error;
+        fallbacks += v.fallback;
+        gouge = std::max(gouge, v.gougeMm);
+        rapid = std::max(rapid, v.rapidMm);
+        leftover = std::max(leftover, v.leftoverMm);
+    }
+    void print(const char* what) const
+    {
+        std::printf("%s: %d cases, %d input errors, %d fallbacks; max gouge %.2e, rapid %.2e, leftover %.2e mm\n", what,
+                    cases, errors, fallbacks, gouge, rapid, leftover);
+    }
+};
+
+TEST(GrooveProperties, SeedRandomSweepIsClean)
+{
+    Sweep sweep(1);
+    Tally tally;
+    for (int k = 0; k < 150; ++k) {
+        const Case c = sweep.next();
+        SCOPED_TRACE("case " + std::to_string(k));
+        const Verdict v = check(c);
+        if (v.error)
+            EXPECT_NE(v.message.find("(R"), std::string::npos) << v.message;
+        tally.add(v);
+    }
+    tally.print("seed sweep");
+    EXPECT_LE(tally.errors, 150 * 5 / 100);  // a generator that refuses everything must fail
+}
+
+// Cylinders (R2 = 0), vertical flanks (R5 = 0, R6 = 0) and grooves barely wider than the insert.
+TEST(GrooveProperties, CylindersVerticalFlanksAndNarrowGroovesAreClean)
+{
+    Sweep sweep(2);
+    Tally tally;
+    for (int k = 0; k < 120; ++k) {
+        Case c = sweep.next();
+        switch (k % 6) {
+        case 0:
+            c.g.r2 = 0;
+            break;
+        case 1:
+            c.g.r5 = 0;
+            break;
+        case 2:
+            c.g.r6 = 0;
+            break;
+        case 3:
+            c.g.r2 = c.g.r5 = c.g.r6 = 0;
+            break;
+        case 4:  // offset bottom 1.0 .. 1.8 insert widths
+            c.g.r4 = c.g.r9 * sweep.uniform(1.0, 1.8) + 1.2;
+            break;
+        case 5:
+            c.g.r2 = 0;
+            c.g.r4 = c.g.r9 * sweep.uniform(1.0, 1.5) + 1.2;
+            break;
+        }
+        SCOPED_TRACE("case " + std::to_string(k));
+        const Verdict v = check(c);
+        if (v.error)
+            EXPECT_NE(v.message.find("(R"), std::string::npos) << v.message;
+        tally.add(v);
+    }
+    tally.print("R2/R5/R6 = 0 and narrow");
+    EXPECT_LE(tally.errors, 120 * 5 / 100);
+    EXPECT_GT(tally.fallbacks, 0);
+}
+
+TEST(GrooveProperties, Kod1AndItsCylinderAndVerticalFlanksAreClean)
+{
+    const Verdict v = check(kod1());
+    EXPECT_FALSE(v.error) << v.message;
+    for (auto set : {+[](Case& c) { c.g.r2 = 0; }, +[](Case& c) { c.g.r5 = 0; }, +[](Case& c) { c.g.r6 = 0; },
+                     +[](Case& c) { c.g.r2 = c.g.r5 = c.g.r6 = 0; }}) {
+        Case c = kod1();
+        set(c);
+        SCOPED_TRACE(describe(c));
+        const Verdict w = check(c);
+        EXPECT_FALSE(w.error) << w.message;
+        EXPECT_FALSE(w.fallback);
+    }
+}
+
+// Seed §5.3 item 1: Kod 1 with R3 = 160 ends through DNO_ZP, which the printed code got wrong
+// (25.4994 mm gouge); F2 programs the left corner. Item 2: the half-step start (F3).
+TEST(GrooveProperties, DefectSetsOneAndTwoAreClean)
+{
+    for (auto [r3, r11] : {std::pair{160.0, 1.0}, {150.0, 1.0}, {155.0, 1.0}, {158.0, 2.0}}) {
+        Case c = kod1();
+        c.g.r3 = r3;
+        c.r11 = r11;
+        SCOPED_TRACE(describe(c));
+        const Verdict v = check(c);
+        EXPECT_FALSE(v.error) << v.message;
+    }
+    Case c = kod1();
+    c.g.r3 = 160;
+    auto computed = run(c);
+    ASSERT_TRUE(computed.ok());
+}
+
+// Item 3: the groove is narrower than R9 (1 + R10) at depth: the thesis loops forever; F5's
+// fallback finishes it and says so in the section's parameters.
+TEST(GrooveProperties, DefectSetThreeTerminatesThroughTheFallback)
+{
+    Case c;
+    c.g = {350, 500, 20.899, 37.27, 44.84, 4.844, 9.585, 0.5, 0.5, 23.2};
+    c.r10 = 1.0;
+    c.r11 = 2;
+    const Verdict v = check(c);
+    ASSERT_FALSE(v.error) << v.message;
+    EXPECT_TRUE(v.fallback);
+}
+
+// Item 4: after DNO_ZL the thesis re-enters ZP on a finished groove (F4 stops it).
+TEST(GrooveProperties, DefectSetFourEndsAfterTheBottomPhase)
+{
+    Case c;
+    c.g = {350, 500, 10, 60, 40, 5, 5, 0.5, 0.5, 10};
+    c.r10 = 0.8;
+    c.r11 = 2;
+    const Verdict v = check(c);
+    ASSERT_FALSE(v.error) << v.message;
+}
+
+// Item 5: the left flank's offset meets the surface below the bottom's offset: an input error.
+TEST(GrooveProperties, DefectSetFiveIsAnInputError)
+{
+    Case c;
+    c.g = {350, 500, 24.295, 30.29, 64.26, 9.73, 13.055, 0.5, 0.5, 10};
+    c.r10 = 1.0;
+    c.r11 = 1;
+    auto computed = run(c);
+    ASSERT_FALSE(computed.ok());
+    EXPECT_NE(computed.error().message.find("left flank's offset (R8) meets the surface"), std::string::npos)
+        << computed.error().message;
+}
+
+// REQ-06 / F6: each check with its message (the operation's name, the value's name and R name).
+TEST(GrooveProperties, Req06EveryInputCheckHasItsMessage)
+{
+    struct Bad {
+        std::function<void(GrooveParams&, ToolController&)> set;
+        std::string message;
+    };
+    const std::vector<Bad> bad = {
+        {[](GrooveParams&, ToolController& t) { t.tool.kind = "flat"; }, "the tool must be a grooving insert"},
+        {[](GrooveParams&, ToolController& t) { t.tool.diameterMm = 0; },
+         "insert width (R9, the tool's width) must be positive, got 0 mm"},
+        {[](GrooveParams& p, ToolController&) { p.infeedMm = 0; }, "infeed (R11) must be positive, got 0 mm"},
+        {[](GrooveParams& p, ToolController&) { p.stepFactor = 0; }, "step factor (R10) must be above 0 and at most 1"},
+        {[](GrooveParams& p, ToolController&) { p.stepFactor = 1.2; },
+         "step factor (R10) must be above 0 and at most 1 (a larger step leaves ribs), got 1.2"},
+        {[](GrooveParams& p, ToolController&) { p.safetyMm = -1; },
+         "safety distance (R30) must not be negative, got -1 mm"},
+        {[](GrooveParams& p, ToolController&) { p.groove.r7 = -0.1; }, "bottom allowance (R7) must not be negative"},
+        {[](GrooveParams& p, ToolController&) { p.groove.r8 = -0.1; }, "flank allowance (R8) must not be negative"},
+        {[](GrooveParams& p, ToolController&) { p.groove.r3 = 0; }, "groove depth (R3) must be positive"},
+        {[](GrooveParams& p, ToolController&) { p.groove.r3 = 200; },
+         "groove depth (R3) must be less than the start point's radius (R0 = 180)"},
+        {[](GrooveParams& p, ToolController&) { p.groove.r4 = 0; }, "bottom width (R4) must be positive"},
+        {[](GrooveParams& p, ToolController&) { p.groove.r2 = -1; },
+         "cone angle (R2) must be at least 0 and below 90 degrees, got -1"},
+        {[](GrooveParams& p, ToolController&) { p.groove.r2 = 90; },
+         "cone angle (R2) must be at least 0 and below 90 degrees, got 90"},
+        {[](GrooveParams& p, ToolController&) { p.groove.r5 = 90; },
+         "right flank angle (R5) must be at least 0 and below 90 degrees"},
+        {[](GrooveParams& p, ToolController&) { p.groove.r6 = -3; },
+         "left flank angle (R6) must be at least 0 and below 90 degrees"},
+        {[](GrooveParams& p, ToolController&) {
+             p.groove.r2 = 50;
+             p.groove.r5 = 45;
+         },
+         "cone angle (R2) plus right flank angle (R5) must be below 90 degrees"},
+        {[](GrooveParams& p, ToolController&) {
+             p.groove.r3 = 5;
+             p.groove.r7 = 6;
+         },
+         "right flank's offset (R8) meets the surface"},
+        {[](GrooveParams& p, ToolController&) {
+             p.groove.r4 = 2;
+             p.groove.r3 = 20;
+             p.groove.r2 = 0;
+         },
+         "narrower than the 3 mm insert (R9)"},
+        {[](GrooveParams& p, ToolController&) { p.finalRetractMm = 0; }, "final retract must be positive"},
+        {[](GrooveParams& p, ToolController&) { p.feedMmPerRev = 0; }, "feed must be positive"},
+    };
+    for (const Bad& b : bad) {
+        GrooveParams p;
+        p.name = "G";
+        ToolController tc = grooveTool();
+        b.set(p, tc);
+        auto computed = computeGroove(p, tc, 0);
+        ASSERT_FALSE(computed.ok()) << b.message;
+        EXPECT_EQ(computed.error().message.rfind("groove \"G\": ", 0), 0u) << computed.error().message;
+        EXPECT_NE(computed.error().message.find(b.message), std::string::npos) << computed.error().message;
+    }
+}
+
+}  // namespace
+}  // namespace camwb::ops::test

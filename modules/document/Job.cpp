@@ -41,6 +41,8 @@ const char* kindName(OperationKind kind)
         return "waterline";
     case OperationKind::Parallel:
         return "parallel";
+    case OperationKind::Groove:
+        return "groove";
     }
     return "operation";
 }
@@ -49,6 +51,8 @@ const char* kindLabel(OperationKind kind)
 {
     if (kind == OperationKind::Drill)
         return "drilling";
+    if (kind == OperationKind::Groove)
+        return "groove roughing";
     return kind == OperationKind::Pocket3d ? "3D pocket" : kindName(kind);
 }
 

@@ -5,6 +5,7 @@
 #include "base/Vec.h"
 #include "ops/ContourOp.h"
 #include "ops/DrillOp.h"
+#include "ops/GrooveOp.h"
 #include "ops/HelixOp.h"
 #include "ops/ParallelOp.h"
 #include "ops/Pocket3dOp.h"
@@ -83,12 +84,19 @@ struct WorkingPlaneSpec {
 };
 
 // Pocket3d, Waterline and Parallel are the 3D operations: they cut the model's surface as a mesh
-// (the selected faces, if any, bound the area) rather than planar faces and edges.
-enum class OperationKind { Contour, Pocket, Helix, Drill, Swarf, Pocket3d, Waterline, Parallel };
-using OperationParams = std::variant<ops::ContourParams, ops::PocketParams, ops::HelixParams, ops::DrillParams,
-                                     ops::SwarfParams, ops::Pocket3dParams, ops::WaterlineParams, ops::ParallelParams>;
+// (the selected faces, if any, bound the area) rather than planar faces and edges. Groove is the
+// lathe's: a parametric groove (no model, no geometry references) cut in the XZ plane.
+enum class OperationKind { Contour, Pocket, Helix, Drill, Swarf, Pocket3d, Waterline, Parallel, Groove };
+using OperationParams =
+    std::variant<ops::ContourParams, ops::PocketParams, ops::HelixParams, ops::DrillParams, ops::SwarfParams,
+                 ops::Pocket3dParams, ops::WaterlineParams, ops::ParallelParams, ops::GrooveParams>;
 // The 3D operations (Pocket3d, Waterline, Parallel).
-inline bool isSurfaceKind(OperationKind kind) { return kind >= OperationKind::Pocket3d; }
+inline bool isSurfaceKind(OperationKind kind)
+{
+    return kind >= OperationKind::Pocket3d && kind <= OperationKind::Parallel;
+}
+// The turning operations (Groove): they need no model, and write their own spindle start (G96).
+inline bool isTurningKind(OperationKind kind) { return kind == OperationKind::Groove; }
 
 // One operation of the job. `params.heights` is filled from `heights` and the model on compute;
 // what is stored in the file is the overrides, so derived heights follow model changes.
@@ -115,11 +123,11 @@ struct Operation {
 // preset number, ISO (LinuxCNC and others) G54..G59 then G59.1..G59.3; "offset N" past those.
 std::string workOffsetName(int offset, const std::string& postId);
 
-// "contour", "pocket", "helix", "drill", "swarf", "pocket3d", "waterline", "parallel": the
-// operation's type in the file.
+// "contour", "pocket", "helix", "drill", "swarf", "pocket3d", "waterline", "parallel", "groove":
+// the operation's type in the file.
 const char* kindName(OperationKind kind);
 // The word messages name it by, as the operations do: "contour", "pocket", "helix", "drilling",
-// "3D pocket", "waterline", "parallel".
+// "3D pocket", "waterline", "parallel", "groove roughing".
 const char* kindLabel(OperationKind kind);
 
 struct Job {

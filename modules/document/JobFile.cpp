@@ -62,7 +62,9 @@ Job readJob(const json& root)
 
     Job job;
     job.name = text(root, "name", where);
-    job.modelPath = text(root, "model", where);
+    // A lathe job's groove needs no model: "model" may be empty, or (version 8) left out.
+    if (version < 8 || optionalMember(root, "model", where))
+        job.modelPath = text(root, "model", where);
     const json& stock = member(root, "stock", where);
     job.stock.min = vec3(stock, "min", where + ".stock");
     job.stock.max = vec3(stock, "max", where + ".stock");
@@ -177,7 +179,15 @@ std::string serializeJob(const Job& job)
     // Version 7: a 3D operation (pocket3d, waterline, parallel).
     const bool surface = std::any_of(job.operations.begin(), job.operations.end(),
                                      [](const Operation& op) { return isSurfaceKind(op.kind()); });
-    root["version"] = surface ? 7 : disabled || cuttingData || usesSetupFields(job) ? 6 : swarf ? 5 : planes ? 4 : 3;
+    // Version 8: a turning operation (groove); such a job may have no model.
+    const bool turning = std::any_of(job.operations.begin(), job.operations.end(),
+                                     [](const Operation& op) { return isTurningKind(op.kind()); });
+    root["version"] = turning                                           ? 8
+                      : surface                                         ? 7
+                      : disabled || cuttingData || usesSetupFields(job) ? 6
+                      : swarf                                           ? 5
+                      : planes                                          ? 4
+                                                                        : 3;
     root["name"] = job.name;
     root["model"] = job.modelPath;
     root["stock"] = {{"min", {job.stock.min.x, job.stock.min.y, job.stock.min.z}},

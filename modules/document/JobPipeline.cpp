@@ -8,10 +8,20 @@
 
 namespace camwb::document {
 
+bool jobNeedsModel(const Job& job)
+{
+    return job.operations.empty() || std::any_of(job.operations.begin(), job.operations.end(),
+                                                 [](const Operation& op) { return !isTurningKind(op.kind()); });
+}
+
 base::Result<occ::Model> loadJobModel(const Job& job, const occ::ProgressFn& progress)
 {
-    if (job.modelPath.empty())
-        return base::makeError("the job has no model");
+    if (job.modelPath.empty()) {
+        if (!jobNeedsModel(job))
+            return occ::Model();  // a lathe job: its grooves are parametric
+        return base::makeError(job.operations.empty() ? "the job has no model"
+                                                      : "the job has no model (its milling operations need one)");
+    }
     auto model = occ::Model::load(job.modelPath, progress);
     if (!model || job.origin == base::Vec3{})
         return model;
@@ -77,7 +87,10 @@ base::Result<toolpath::Toolpath> computeProgram(const Job& job, const occ::Model
             const bool isSectionStart = std::holds_alternative<toolpath::SectionBegin>(records.record(r));
             if (isSectionStart && tc.tool.number != currentTool) {
                 program.add(toolpath::ToolChange{tc.tool}, {index, -1});
-                program.add(toolpath::Spindle{tc.spindleRpm, true}, {index, -1});
+                // A turning operation starts its own spindle (G96 constant surface speed and
+                // its limit, with the feed per revolution): the controller's rpm is a mill's.
+                if (!isTurningKind(op.kind()))
+                    program.add(toolpath::Spindle{tc.spindleRpm, true}, {index, -1});
                 currentTool = tc.tool.number;
             }
         }

@@ -16,7 +16,10 @@
 
 namespace camwb::document {
 
+// False for a lathe job: one whose operations are all turning operations (parametric grooves).
+bool jobNeedsModel(const Job& job);
 // The job's model in work coordinates: moved by -job.origin (face and edge indices unchanged).
+// A job without a model path gets an empty model when it needs none, else an error.
 base::Result<occ::Model> loadJobModel(const Job& job, const occ::ProgressFn& progress = {});
 // Re-resolves a "from model" stock from `model` (as loadJobModel gives it) after a (re)load.
 void resolveJobStock(Job& job, const occ::Model& model);

@@ -190,6 +190,8 @@ ops::Heights resolveHeights(const Operation& op, const OperationGeometry& geomet
     case OperationKind::Waterline:
     case OperationKind::Parallel:
         break;  // from the stock top down to the model's (or the selected faces') bottom
+    case OperationKind::Groove:
+        break;  // a lathe operation: its retracts are its own parameters (safety, final retract)
     case OperationKind::Helix:
     case OperationKind::Drill:
         if (featureTop > -1e299) {
@@ -224,6 +226,11 @@ base::Result<ops::OpResult> computeOperation(const Job& job, int index, const oc
     const Operation& op = job.operations[index];
     if (!job.tool(op.toolNumber))
         return refError(op, "no tool number " + std::to_string(op.toolNumber) + " in the job");
+    // A groove is all parameters: no model, no references, no heights.
+    if (const auto* groove = std::get_if<ops::GrooveParams>(&op.params))
+        return ops::computeGroove(*groove, *job.tool(op.toolNumber), index, progress);
+    if (model.empty())
+        return refError(op, "needs a model and the job has none (only a lathe job's groove operations need none)");
     if (op.kind() == OperationKind::Swarf)
         return detail::computeSwarfOperation(job, index, model, progress, heightsUsed);
     if (isSurfaceKind(op.kind()))
@@ -268,8 +275,9 @@ base::Result<ops::OpResult> computeInPlane(const Job& job, int index, const Oper
 
     return std::visit(
         [&](auto params) -> base::Result<ops::OpResult> {
-            params.heights = heights;
             using P = decltype(params);
+            if constexpr (requires { params.heights; })
+                params.heights = heights;
             if constexpr (std::is_same_v<P, ops::ContourParams>)
                 return ops::computeContour(g.contours, params, *tc, index, progress);
             else if constexpr (std::is_same_v<P, ops::PocketParams>)
@@ -279,7 +287,7 @@ base::Result<ops::OpResult> computeInPlane(const Job& job, int index, const Oper
             else if constexpr (std::is_same_v<P, ops::DrillParams>)
                 return ops::computeDrill(g.holes, params, *tc, index, progress);
             else
-                return base::makeError(label(op) + " is computed by its own path (swarf, 3D)");
+                return base::makeError(label(op) + " is computed by its own path (swarf, 3D, groove)");
         },
         op.params);
 }

@@ -155,8 +155,9 @@ base::Result<ops::OpResult> computeSurfaceOperation(const Job& job, int index, c
     const ops::ToolController& tc = *job.tool(op.toolNumber);
     return std::visit(
         [&](auto params) -> base::Result<ops::OpResult> {
-            params.heights = heights;
             using P = decltype(params);
+            if constexpr (requires { params.heights; })
+                params.heights = heights;
             if constexpr (std::is_same_v<P, ops::Pocket3dParams>) {
                 if (params.restMachining) {
                     auto before = restStockBefore(job, index, model, input.stock, progress);

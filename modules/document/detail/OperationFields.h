@@ -1,10 +1,12 @@
 // The parameters of each operation kind as a list of named fields, so that reading and writing a
 // .camwb file walk the same list and cannot drift apart. `visitFields(params, f)` calls f(key, member)
 // for plain members (double, int, bool, std::string) and f(key, EnumField{...}) for enums.
+// `fieldAliases(params)` gives other names a field is also read by (the groove's R names).
 #pragma once
 
 #include "ops/ContourOp.h"
 #include "ops/DrillOp.h"
+#include "ops/GrooveOp.h"
 #include "ops/HelixOp.h"
 #include "ops/ParallelOp.h"
 #include "ops/Pocket3dOp.h"
@@ -13,6 +15,7 @@
 #include "ops/WaterlineOp.h"
 
 #include <initializer_list>
+#include <span>
 #include <string_view>
 
 namespace camwb::document::detail {
@@ -143,5 +146,42 @@ template <class F> void visitFields(ops::ParallelParams& p, F&& f)
     f("zigZag", p.zigZag);
     f("tolerance", p.toleranceMm);
 }
+
+template <class F> void visitFields(ops::GrooveParams& p, F&& f)
+{
+    // The groove's R9 (insert width) is the tool's diameter, not a field: one width per insert.
+    f("startX", p.groove.r0);
+    f("startZ", p.groove.r1);
+    f("coneAngle", p.groove.r2);
+    f("depth", p.groove.r3);
+    f("bottomWidth", p.groove.r4);
+    f("rightFlankAngle", p.groove.r5);
+    f("leftFlankAngle", p.groove.r6);
+    f("bottomAllowance", p.groove.r7);
+    f("flankAllowance", p.groove.r8);
+    f("stepFactor", p.stepFactor);
+    f("infeed", p.infeedMm);
+    f("safety", p.safetyMm);
+    f("finalRetract", p.finalRetractMm);
+    f("surfaceSpeed", p.surfaceSpeedMPerMin);
+    f("maxRpm", p.maxRpm);
+    f("feedPerRev", p.feedMmPerRev);
+    f("coolant", p.coolant);
+}
+
+// Another name a field is read by (never written): the thesis' R-parameter for the groove.
+struct FieldAlias {
+    std::string_view alias;
+    std::string_view key;
+};
+
+inline constexpr FieldAlias kGrooveAliases[] = {
+    {"R0", "startX"},         {"R1", "startZ"},          {"R2", "coneAngle"},      {"R3", "depth"},
+    {"R4", "bottomWidth"},    {"R5", "rightFlankAngle"}, {"R6", "leftFlankAngle"}, {"R7", "bottomAllowance"},
+    {"R8", "flankAllowance"}, {"R10", "stepFactor"},     {"R11", "infeed"},        {"R30", "safety"},
+};
+
+template <class Params> std::span<const FieldAlias> fieldAliases(const Params&) { return {}; }
+inline std::span<const FieldAlias> fieldAliases(const ops::GrooveParams&) { return kGrooveAliases; }
 
 }  // namespace camwb::document::detail

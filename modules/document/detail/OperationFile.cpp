@@ -36,10 +36,27 @@ std::vector<int> indexList(const Json& object, const char* key, const std::strin
     return out;
 }
 
-template <class Params> void readParams(Params& params, const Json& object, const std::string& where)
+// The object with each alias (fieldAliases) renamed to its field's key; both given is an error.
+template <class Params> Json withoutAliases(const Params& params, const Json& object, const std::string& where)
 {
-    if (!object.is_object())
+    Json out = object;
+    for (const FieldAlias& a : fieldAliases(params)) {
+        const std::string alias(a.alias), key(a.key);
+        if (!out.contains(alias))
+            continue;
+        if (out.contains(key))
+            throw JsonFieldError{where + "." + alias + ": the same parameter as \"" + key + "\"; give one of them"};
+        out[key] = out[alias];
+        out.erase(alias);
+    }
+    return out;
+}
+
+template <class Params> void readParams(Params& params, const Json& given, const std::string& where)
+{
+    if (!given.is_object())
         throw JsonFieldError{where + ": expected an object"};
+    const Json object = withoutAliases(params, given, where);
     std::set<std::string> known;
     visitFields(params, [&](const char* key, auto&& field) {
         known.insert(key);
@@ -105,8 +122,10 @@ OperationParams paramsOfType(const std::string& type, const std::string& where)
         return ops::WaterlineParams{};
     if (type == "parallel")
         return ops::ParallelParams{};
+    if (type == "groove")
+        return ops::GrooveParams{};
     throw JsonFieldError{where + ".type: unknown operation type \"" + type +
-                         "\" (expected contour, pocket, helix, drill, swarf, pocket3d, waterline or parallel)"};
+                         "\" (expected contour, pocket, helix, drill, swarf, pocket3d, waterline, parallel or groove)"};
 }
 
 // Versions 1-2: the outer profile of one face, all heights given.
@@ -220,6 +239,24 @@ ojson writeOperation(const Operation& op)
     if (!op.enabled)
         out["enabled"] = false;
     return out;
+}
+
+void readOperationParams(Operation& op, const Json& params, const std::string& where)
+{
+    std::visit([&](auto& p) { readParams(p, params, where); }, op.params);
+}
+
+std::vector<std::string> operationParamNames(const Operation& op)
+{
+    std::vector<std::string> names;
+    std::visit(
+        [&](auto p) {
+            visitFields(p, [&](const char* key, auto&&) { names.emplace_back(key); });
+            for (const FieldAlias& a : fieldAliases(p))
+                names.emplace_back(a.alias);
+        },
+        op.params);
+    return names;
 }
 
 }  // namespace camwb::document::detail

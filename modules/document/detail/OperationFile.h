@@ -17,4 +17,10 @@ Operation readOperation(const base::jsonread::Json& o, const std::string& where)
 std::map<std::string, std::string> readPostProperties(const base::jsonread::Json& object, const std::string& where);
 nlohmann::ordered_json writeOperation(const Operation& op);
 
+// Reads the parameters `params` gives into op's (the others keep their values), as the file's
+// "params" object is read: by key or alias, unknown keys and wrong types are errors.
+void readOperationParams(Operation& op, const base::jsonread::Json& params, const std::string& where);
+// The keys of op's parameters in the file, then their aliases (the groove's R names).
+std::vector<std::string> operationParamNames(const Operation& op);
+
 }  // namespace camwb::document::detail

@@ -41,6 +41,7 @@ private:
         return firstPass ? g.r.y + g.tan2 * (w + s + s * n) + c : rpx + i * (2 + n) + c;
     }
 
+    void closeGap(double lastZ, double flankZ, double depth, double retractX);
     void zl();
     void zp();
     void dnoZl();
@@ -134,6 +135,29 @@ base::Status Sweeps::run(const std::function<bool(double)>& keepGoing)
     return base::Status::success();
 }
 
+// Fix G1 (/work/groove-fixes.md): a sweep stops where its next plunge would cut the flank, and
+// the plunge on the flank (left corner `flankZ`) may then lie more than an insert's width from the
+// last plunge (left corner `lastZ`, same depth): with R10 = 1, or when tan R5 * R11 (tan R6 * R11)
+// exceeds R9 (1 - R10). The rib between would stand up to the floor above, and the next rapid
+// along Z at the sweep's low retract height would run through it. Plunges at the same depth, an
+// insert's width apart, close the gap first, each retracting to `retractX` (the height the sweep
+// is at); where the plunges overlap (Kod 1) nothing is added.
+void Sweeps::closeGap(double lastZ, double flankZ, double depth, double retractX)
+{
+    const double dir = flankZ > lastZ ? 1 : -1;  // towards the flank
+    const double gap = (flankZ - lastZ) * dir - w;
+    if (!(gap > 0))
+        return;
+    for (long j = 1; j * w < gap && turn(); ++j) {
+        rapidZ(lastZ + dir * j * w);
+        feedX(depth);
+        rapidX(retractX);
+    }
+    rapidZ(flankZ - dir * w);
+    feedX(depth);
+    rapidX(retractX);
+}
+
 // PODPROG_ZL: plunges left to right, each R11 deeper, until the bottom or the right flank; then
 // the plunge on the flank and the right-flank clean-up up to the flank's top.
 void Sweeps::zl()
@@ -152,6 +176,8 @@ void Sweeps::zl()
     }
     const double d = rpx - (r18 - 1) * i;  // the last depth; the right corner on the flank there
     const double zd = g.zRight(d);
+    if (r18 >= 1)  // fixes.md G1: no rib between the last plunge and the one on the flank
+        closeGap(rpz + s * (r18 - 1), zd - w, d, retractZl(r18 - 1));
     rapidZ(zd - w);
     feedX(d);
     rapidX(retractZl(r18));
@@ -187,6 +213,7 @@ void Sweeps::zp()
     }
     const double d = bx - (r18 - 1) * i;
     const double zd = g.zLeft(d);
+    closeGap(bz - w - s * (r18 - 1), zd, d, bx + r18 * i + c);  // fixes.md G1, mirrored
     rapidZ(zd);
     feedX(d);
     rapidX(bx + 2 * i + r18 * i + c);

@@ -1398,6 +1398,10 @@
         <source>&amp;Enable Operation</source>
         <translation>Zapnou&amp;t operaci</translation>
     </message>
+    <message>
+        <source>depth %1 mm, bottom width %2 mm</source>
+        <translation>hloubka %1 mm, šířka dna %2 mm</translation>
+    </message>
 </context>
 <context>
     <name>camwb::gui::MainWindow</name>

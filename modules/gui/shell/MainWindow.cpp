@@ -3,6 +3,7 @@
 #include "base/AtomicFile.h"
 #include "camwb_version.h"
 #include "document/JobFile.h"
+#include "document/JobPipeline.h"
 #include "gui/actions/ActionRegistry.h"
 #include "gui/editor/NcEditor.h"
 #include "gui/editor/NcEditorActions.h"
@@ -32,6 +33,7 @@
 #include "gui/view3d/TaskOverlay.h"
 #include "gui/view3d/View3D.h"
 #include "kinematics/Machine.h"
+#include "sim/TurningCheck.h"
 
 #include <QAction>
 #include <QCloseEvent>
@@ -349,7 +351,11 @@ void MainWindow::connectWorkbench()
     });
     connect(m_workbench, &Workbench::toolpathChanged, this, [this] {
         // Shown until the posted program's trace replaces it (or for good when chosen so).
-        m_view->setToolpath(m_workbench->toolpath());
+        // A lathe job's path gives no Y: drawn in the turning plane (Y = 0), as the checks read it.
+        if (document::jobNeedsModel(m_workbench->job()))
+            m_view->setToolpath(m_workbench->toolpath());
+        else
+            m_view->setToolpath(sim::inTurningPlane(m_workbench->toolpath()));
         m_inspector->setShowInView(false);
         refreshToolList();
         // The first toolpath of a new model is fitted too; later ones keep the user's camera.
@@ -543,9 +549,13 @@ void MainWindow::openTaskPanel(int index, const document::Operation& operation,
         if (m_taskPanel != nullptr)
             showSection(m_taskPanel->editedJob());
     });
-    connect(m_taskPanel, &OperationPanel::closed, this,
-            [this] { m_view->setLatheSection(latheSectionOf(m_workbench->job())); });
+    connect(m_taskPanel, &OperationPanel::closed, this, [this] {
+        m_view->setLatheSection(latheSectionOf(m_workbench->job()));
+        m_view->setToolpathShown(true);
+    });
     showSection(m_taskPanel->editedJob());
+    // A turning preview is drawn in the backplot's red and green: the job's path would read as it.
+    m_view->setToolpathShown(!document::isTurningKind(operation.kind()));
     m_taskDock->setWidget(m_taskPanel);
     m_taskDock->setWindowTitle(tr("Task: %1").arg(QString::fromStdString(operation.name())));
     m_taskDock->show();

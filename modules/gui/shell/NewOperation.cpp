@@ -67,7 +67,7 @@ ops::ToolController defaultGroovingTool(int number)
 
 std::string defaultName(OperationKind kind, const document::Job& job)
 {
-    static const char* const names[] = {"Contour", "Pocket",    "Helix",     "Drilling", "Swarf",
+    static const char* const names[] = {"Contour",   "Pocket",    "Helix",    "Drilling", "Swarf",
                                         "3D Pocket", "Waterline", "Parallel", "Groove"};
     const std::string base = names[static_cast<int>(kind)];
     int count = 1;

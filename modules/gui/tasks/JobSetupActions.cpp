@@ -1,5 +1,6 @@
 #include "gui/tasks/JobSetupActions.h"
 
+#include "document/JobPipeline.h"
 #include "gui/actions/ActionRegistry.h"
 #include "gui/shell/Workbench.h"
 #include "sim/TurningProfile.h"
@@ -30,11 +31,14 @@ void registerJobSetupActions(ActionRegistry& registry, std::function<void()> ope
 
 std::optional<LatheSection> latheSectionOf(const document::Job& job)
 {
+    if (document::jobNeedsModel(job))
+        return std::nullopt;  // a milling job (or one with no operations yet)
     LatheSection section;
     for (const document::Operation& op : job.operations) {
-        if (op.kind() != document::OperationKind::Groove)
-            return std::nullopt;
-        const sim::GrooveParameters& g = std::get<ops::GrooveParams>(op.params).groove;
+        const auto* groove = std::get_if<ops::GrooveParams>(&op.params);
+        if (groove == nullptr)
+            continue;  // a turning operation of another kind would add its own contour here
+        const sim::GrooveParameters& g = groove->groove;
         if (section.contours.empty())
             section.stock = sim::grooveStock(g);
         const sim::GrooveGeometry geo = sim::grooveGeometry(g);

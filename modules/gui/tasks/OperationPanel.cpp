@@ -313,7 +313,7 @@ void OperationPanel::showOutcome()
     m_status->setStyleSheet(outcome->result.warnings.empty() ? QString() : QStringLiteral("color: #8a5a00;"));
     m_status->setText(lines.join(QLatin1Char('\n')));
     if (m_overlay != nullptr)
-        m_overlay->showPreview(outcome->scene);
+        m_overlay->showPreview(outcome->scene, outcome->turning);
 }
 
 const ops::ToolController* OperationPanel::selectedTool() const

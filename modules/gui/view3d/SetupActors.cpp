@@ -25,7 +25,7 @@ namespace {
 constexpr double kStockColor[3]{0.93, 0.72, 0.35};  // raw material: a warm tone over the grey model
 constexpr double kStockOpacity = 0.22;              // the model stays visible through it
 constexpr int kCylinderSides = 72;
-constexpr double kLatheStockOpacity = 0.35;          // flat: a little more than the 3D stock's
+constexpr double kLatheStockOpacity = 0.35;           // flat: a little more than the 3D stock's
 constexpr double kContourColor[3]{0.10, 0.10, 0.12};  // the part: drawn as on paper
 constexpr double kOffsetColor[3]{0.15, 0.35, 0.85};   // what must stay after roughing
 constexpr double kChordToleranceMm = 0.01;

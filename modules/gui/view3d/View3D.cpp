@@ -63,6 +63,7 @@ struct View3D::Private {
     TaskOverlay* overlay = nullptr;
     SimOverlay* simulation = nullptr;
     bool simulationShown = false;
+    bool toolpathShown = true;
     vtkSmartPointer<vtkActor> edgeActor;
     vtkSmartPointer<vtkActor> stockActor;
     vtkSmartPointer<vtkAxesActor> workAxes;
@@ -396,7 +397,7 @@ void View3D::setToolVisible(int tool, bool visible)
 void View3D::applyVisibility()
 {
     for (const Private::ToolActors& actors : d->toolActors) {
-        const bool visible = !d->simulationShown && d->hiddenTools.count(actors.tool) == 0;
+        const bool visible = !d->simulationShown && d->toolpathShown && d->hiddenTools.count(actors.tool) == 0;
         if (actors.cut)
             actors.cut->SetVisibility(visible);
         if (actors.rapid)
@@ -409,6 +410,15 @@ void View3D::applyVisibility()
     for (const auto& actor : d->latheActors)
         actor->SetVisibility(!d->simulationShown);
 }
+
+void View3D::setToolpathShown(bool shown)
+{
+    d->toolpathShown = shown;
+    applyVisibility();
+    d->render();
+}
+
+bool View3D::isToolpathShown() const { return d->toolpathShown; }
 
 SimOverlay& View3D::simulation() const { return *d->simulation; }
 

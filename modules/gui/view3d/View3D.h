@@ -75,6 +75,10 @@ public:
     void setPreparedToolpath(std::shared_ptr<const ToolpathScene> scene);
     void clearModel();
     void clearToolpath();
+    // Hides the backplot (kept, pickable state unchanged) while false: a turning task panel's
+    // preview is drawn in the backplot's colours and takes its place.
+    void setToolpathShown(bool shown);
+    bool isToolpathShown() const;
     // The job's stock, translucent (a box, or a cylinder along Z inside `stock`), and the work
     // coordinate system's axes at the origin: the view shows work coordinates. No stock: only
     // the axes. Replaces what was shown.

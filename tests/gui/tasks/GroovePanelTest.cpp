@@ -167,14 +167,28 @@ private slots:
         qInfo("Kod 1: %s", qPrintable(panel->statusText()));
         QVERIFY(window.view()->overlay().previewSegmentCount() > 0);
         const auto firstPoints = previewPoints(window);
+        for (const camwb::base::Vec3& p : firstPoints)
+            QCOMPARE(p.y, 0.0);  // in the turning plane
+        // The preview, in the backplot's red and green, takes the job's path's place.
+        QVERIFY(!window.view()->isToolpathShown());
+        QVERIFY(window.view()->viewPreset() == View3D::Preset::LatheXZ);
+        if (withGl())
+            saveShot(&window, QStringLiteral("groove-kod1.png"));
 
         // Each input with its R name; the insert width read-only from the tool.
-        const std::pair<const char*, const char*> names[] = {
-            {"r0Box", "(R0)"},          {"r1Box", "(R1)"},     {"r2Box", "(R2)"},         {"r3Box", "Depth (R3)"},
-            {"r4Box", "Bottom width (R4)"}, {"r5Box", "Right flank angle (R5)"}, {"r6Box", "(R6)"},
-            {"r7Box", "(R7)"},          {"r8Box", "(R8)"},     {"insertWidthEdit", "(R9)"},
-            {"stepFactorBox", "Step factor (R10)"},             {"infeedBox", "Infeed (R11)"},
-            {"safetyBox", "Safety distance (R30)"}};
+        const std::pair<const char*, const char*> names[] = {{"r0Box", "(R0)"},
+                                                             {"r1Box", "(R1)"},
+                                                             {"r2Box", "(R2)"},
+                                                             {"r3Box", "Depth (R3)"},
+                                                             {"r4Box", "Bottom width (R4)"},
+                                                             {"r5Box", "Right flank angle (R5)"},
+                                                             {"r6Box", "(R6)"},
+                                                             {"r7Box", "(R7)"},
+                                                             {"r8Box", "(R8)"},
+                                                             {"insertWidthEdit", "(R9)"},
+                                                             {"stepFactorBox", "Step factor (R10)"},
+                                                             {"infeedBox", "Infeed (R11)"},
+                                                             {"safetyBox", "Safety distance (R30)"}};
         for (const auto& [field, label] : names)
             QVERIFY2(labelOf(*panel, field).contains(QLatin1String(label)),
                      qPrintable(QStringLiteral("%1: '%2'").arg(field, labelOf(*panel, field))));
@@ -208,15 +222,14 @@ private slots:
         QVERIFY(setAndPreview(*panel, "stepFactorBox", 0.8));
         QVERIFY2(panel->preview().lastOutcome()->ok, qPrintable(panel->statusText()));
         QVERIFY(window.view()->overlay().previewSegmentCount() > 0);
-        if (withGl()) {
-            window.actions().trigger(QStringLiteral("Cam.View.FitAll"));
-            saveShot(&window, QStringLiteral("groove-kod1.png"));
-        }
+        if (withGl())
+            saveShot(&window, QStringLiteral("groove-depth60.png"));  // the contour follows the panel
 
         // Cancel: nothing changed, no step.
         panel->findChild<QAbstractButton*>(QStringLiteral("cancelButton"))->click();
         QVERIFY(window.taskPanel() == nullptr);
         QCOMPARE(window.view()->overlay().previewSegmentCount(), 0);
+        QVERIFY(window.view()->isToolpathShown());
         QCOMPARE(jobText(window), original);
         QCOMPARE(window.workbench().document().undoStack().count(), undoSteps);
 

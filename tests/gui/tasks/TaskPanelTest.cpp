@@ -159,8 +159,8 @@ private slots:
         MainWindow window;
         const QStringList ids = window.actions().ids();
         for (const char* id : {"Cam.Op.NewContour", "Cam.Op.NewPocket", "Cam.Op.NewHelix", "Cam.Op.NewDrill",
-                               "Cam.Op.NewSwarf", "Cam.Op.NewPocket3d", "Cam.Op.NewWaterline", "Cam.Op.NewParallel", "Cam.Op.NewGroove",
-                               "Cam.Op.NewProfile", "Cam.Op.Edit", "Cam.Op.Delete"})
+                               "Cam.Op.NewSwarf", "Cam.Op.NewPocket3d", "Cam.Op.NewWaterline", "Cam.Op.NewParallel",
+                               "Cam.Op.NewGroove", "Cam.Op.NewProfile", "Cam.Op.Edit", "Cam.Op.Delete"})
             QVERIFY2(ids.contains(QLatin1String(id)), id);
     }
 

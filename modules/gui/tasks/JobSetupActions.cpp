@@ -59,9 +59,9 @@ void showJobSetupInView(Workbench& workbench, View3D& view)
         const document::Stock& stock = job.stock;
         view.setJobSetup(section ? std::nullopt : stock.box(), stock.shape == document::Stock::Shape::Cylinder);
         view.setLatheSection(section);
-        if (section.has_value() && !std::exchange(*turning, true))
-            view.setViewPreset(View3D::Preset::LatheXZ);
-        *turning = section.has_value();
+        // Turned to the lathe's view when the job becomes a turning job, and back when it stops.
+        if (std::exchange(*turning, section.has_value()) != section.has_value())
+            view.setViewPreset(section ? View3D::Preset::LatheXZ : View3D::Preset::Isometric);
     };
     QObject::connect(&workbench, &Workbench::jobChanged, &view, show);
     show();

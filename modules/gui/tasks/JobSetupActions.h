@@ -18,7 +18,8 @@ class Workbench;
 void registerJobSetupActions(ActionRegistry& registry, std::function<void()> openPanel);
 // Keeps the view's stock and work axes (View3D::setJobSetup) those of the workbench's job; a
 // turning job's half-section instead of a stock (View3D::setLatheSection), and the view turns to
-// the lathe's XZ preset when the job becomes a turning job (opened, or its first groove added).
+// the lathe's XZ preset when the job becomes a turning job (opened, or its first groove added),
+// back to the isometric one when it stops being one.
 void showJobSetupInView(Workbench& workbench, View3D& view);
 
 // A turning job (operations, all of them grooves): the stock before cutting and each groove's

@@ -140,6 +140,15 @@ private slots:
         QVERIFY(window.view()->viewPreset() == View3D::Preset::Isometric);
         QVERIFY(window.actions().trigger(QStringLiteral("Cam.View.LatheXZ")));
         QVERIFY(window.view()->viewPreset() == View3D::Preset::LatheXZ);
+        // A milling job afterwards: its stock in the isometric view again, no half-section.
+        QSignalSpy posted(&window.workbench(), &Workbench::postFinished);
+        QVERIFY(window.openJob(QStringLiteral(CAMWB_EXAMPLE_JOB)));
+        QVERIFY(posted.wait(120000));
+        waitIdle(window);
+        QVERIFY(window.view()->viewPreset() == View3D::Preset::Isometric);
+        QVERIFY(!window.view()->hasLatheSection());
+        QVERIFY(window.view()->hasStockActor());
+        QVERIFY(window.view()->isToolpathShown());
     }
 
     void panelPreviewsValidatesAndApplies()

@@ -386,6 +386,8 @@ void MainWindow::connectWorkbench()
     connect(m_ncDocument, &NcDocument::titleChanged, this, &MainWindow::updateNcDockTitle);
     connect(m_workbench, &Workbench::programStateChanged, this, &MainWindow::showProgramState);
     connect(m_workbench, &Workbench::jobChanged, this, &MainWindow::updateTitle);
+    connect(m_workbench, &Workbench::jobChanged, this,
+            [this] { m_inspector->setTurningPlane(!document::jobNeedsModel(m_workbench->job())); });
     showJobSetupInView(*m_workbench, *m_view);
     connect(m_workbench, &Workbench::busyChanged, this, [this](bool busy) {
         m_progress->setVisible(busy);

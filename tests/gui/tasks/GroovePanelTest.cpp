@@ -8,6 +8,7 @@
 #include "Shots.h"
 #include "document/JobFile.h"
 #include "gui/actions/ActionRegistry.h"
+#include "gui/inspector/NcInspector.h"
 #include "gui/shell/MainWindow.h"
 #include "gui/shell/Workbench.h"
 #include "gui/tasks/OperationPanel.h"
@@ -140,6 +141,18 @@ private slots:
         QVERIFY(window.view()->viewPreset() == View3D::Preset::Isometric);
         QVERIFY(window.actions().trigger(QStringLiteral("Cam.View.LatheXZ")));
         QVERIFY(window.view()->viewPreset() == View3D::Preset::LatheXZ);
+        // The thesis' own program, traced in the lathe job, is drawn in the turning plane too.
+        {
+            QSignalSpy traced(window.inspector(), &camwb::gui::NcInspector::traceFinished);
+            QVERIFY(window.openNcFile(QStringLiteral(CAMWB_KOD5_MPF)));
+            QVERIFY(traced.wait(120000));
+        }
+        QVERIFY2(window.view()->toolpathSegmentCount() > 500,
+                 qPrintable(QString::number(window.view()->toolpathSegmentCount())));
+        for (const camwb::base::Vec3& p : window.view()->toolpathPolylines()->points())
+            QCOMPARE(p.y, 0.0);
+        if (withGl())
+            saveShot(&window, QStringLiteral("groove-kod5-traced.png"));
         // A milling job afterwards: its stock in the isometric view again, no half-section.
         QSignalSpy posted(&window.workbench(), &Workbench::postFinished);
         QVERIFY(window.openJob(QStringLiteral(CAMWB_EXAMPLE_JOB)));

@@ -747,6 +747,153 @@
     </message>
 </context>
 <context>
+    <name>camwb::gui::GroovePanel</name>
+    <message>
+        <source> °</source>
+        <translation> °</translation>
+    </message>
+    <message>
+        <source>Start point X, radius (R0)</source>
+        <translation>Počáteční bod X, poloměr (R0)</translation>
+    </message>
+    <message>
+        <source>Where the right flank meets the surface (P): its radius</source>
+        <translation>Kde se pravý bok setkává s povrchem (P): jeho poloměr</translation>
+    </message>
+    <message>
+        <source>Start point Z (R1)</source>
+        <translation>Počáteční bod Z (R1)</translation>
+    </message>
+    <message>
+        <source>Where the right flank meets the surface (P): along the spindle</source>
+        <translation>Kde se pravý bok setkává s povrchem (P): podél osy vřetena</translation>
+    </message>
+    <message>
+        <source>Cone angle (R2)</source>
+        <translation>Úhel kužele (R2)</translation>
+    </message>
+    <message>
+        <source>Angle of the shaft&apos;s surface to the Z axis, rising to the right; 0 for a cylinder</source>
+        <translation>Úhel povrchu hřídele k ose Z, stoupající doprava; 0 pro válec</translation>
+    </message>
+    <message>
+        <source>Depth (R3)</source>
+        <translation>Hloubka (R3)</translation>
+    </message>
+    <message>
+        <source>Radial depth of the groove below P</source>
+        <translation>Radiální hloubka zápichu pod bodem P</translation>
+    </message>
+    <message>
+        <source>Bottom width (R4)</source>
+        <translation>Šířka dna (R4)</translation>
+    </message>
+    <message>
+        <source>Right flank angle (R5)</source>
+        <translation>Úhel pravého boku (R5)</translation>
+    </message>
+    <message>
+        <source>From the radial direction; 0 for a square flank</source>
+        <translation>Od radiálního směru; 0 pro kolmý bok</translation>
+    </message>
+    <message>
+        <source>Left flank angle (R6)</source>
+        <translation>Úhel levého boku (R6)</translation>
+    </message>
+    <message>
+        <source>Bottom allowance (R7)</source>
+        <translation>Přídavek na dně (R7)</translation>
+    </message>
+    <message>
+        <source>Left on the bottom, in X</source>
+        <translation>Ponechá se na dně, ve směru X</translation>
+    </message>
+    <message>
+        <source>Flank allowance (R8)</source>
+        <translation>Přídavek na bocích (R8)</translation>
+    </message>
+    <message>
+        <source>Left on the flanks, normal to them</source>
+        <translation>Ponechá se na bocích, kolmo k nim</translation>
+    </message>
+    <message>
+        <source>The chosen grooving tool&apos;s width (its diameter field)</source>
+        <translation>Šířka zvoleného zapichovacího nože (jeho pole průměru)</translation>
+    </message>
+    <message>
+        <source>Insert width (R9)</source>
+        <translation>Šířka destičky (R9)</translation>
+    </message>
+    <message>
+        <source>Step factor (R10)</source>
+        <translation>Součinitel kroku (R10)</translation>
+    </message>
+    <message>
+        <source>Axial step between plunges as a share of the insert width (0 &lt; f ≤ 1)</source>
+        <translation>Axiální krok mezi zápichy jako podíl šířky destičky (0 &lt; f ≤ 1)</translation>
+    </message>
+    <message>
+        <source>Infeed (R11)</source>
+        <translation>Přísuv (R11)</translation>
+    </message>
+    <message>
+        <source>Each plunge goes this much deeper than the one before</source>
+        <translation>Každý zápich jde o tolik hlouběji než předchozí</translation>
+    </message>
+    <message>
+        <source>Safety distance (R30)</source>
+        <translation>Bezpečná vzdálenost (R30)</translation>
+    </message>
+    <message>
+        <source>Clearance of every retract over the material</source>
+        <translation>Odstup každého odjezdu nad materiálem</translation>
+    </message>
+    <message>
+        <source>Final retract</source>
+        <translation>Závěrečný odjezd</translation>
+    </message>
+    <message>
+        <source>The last rapid goes to X = R0 + this (the thesis&apos; R0 + 100)</source>
+        <translation>Poslední rychloposuv jede na X = R0 + tato hodnota (v práci R0 + 100)</translation>
+    </message>
+    <message>
+        <source>Surface speed (G96)</source>
+        <translation>Řezná rychlost (G96)</translation>
+    </message>
+    <message>
+        <source> m/min</source>
+        <translation> m/min</translation>
+    </message>
+    <message>
+        <source>Spindle limit (LIMS)</source>
+        <translation>Omezení otáček (LIMS)</translation>
+    </message>
+    <message>
+        <source> rpm</source>
+        <translation> ot/min</translation>
+    </message>
+    <message>
+        <source>Feed (G95)</source>
+        <translation>Posuv (G95)</translation>
+    </message>
+    <message>
+        <source> mm/rev</source>
+        <translation> mm/ot</translation>
+    </message>
+    <message>
+        <source>Coolant (M8)</source>
+        <translation>Chlazení (M8)</translation>
+    </message>
+    <message>
+        <source>no tool</source>
+        <translation>žádný nástroj</translation>
+    </message>
+    <message>
+        <source>not a grooving tool (%1)</source>
+        <translation>není zapichovací nůž (%1)</translation>
+    </message>
+</context>
+<context>
     <name>camwb::gui::HeightsBox</name>
     <message>
         <source>Clearance Z</source>
@@ -1251,6 +1398,10 @@
         <source>&amp;Enable Operation</source>
         <translation>Zapnou&amp;t operaci</translation>
     </message>
+    <message>
+        <source>depth %1 mm, bottom width %2 mm</source>
+        <translation>hloubka %1 mm, šířka dna %2 mm</translation>
+    </message>
 </context>
 <context>
     <name>camwb::gui::MainWindow</name>
@@ -1629,6 +1780,14 @@ Pracoviště pro CAM a postprocesory.</translation>
     <message>
         <source>New P&amp;arallel…</source>
         <translation>Nové para&amp;lelní dokončení…</translation>
+    </message>
+    <message>
+        <source>New &amp;Groove Roughing…</source>
+        <translation>Nové &amp;hrubování zápichu…</translation>
+    </message>
+    <message>
+        <source>&amp;XZ (lathe)</source>
+        <translation>&amp;XZ (soustruh)</translation>
     </message>
 </context>
 <context>
@@ -2069,6 +2228,14 @@ Nejprve je uložit?</translation>
     <message>
         <source>Parallel</source>
         <translation>Paralelní dokončení</translation>
+    </message>
+    <message>
+        <source>Groove roughing (turning)</source>
+        <translation>Hrubování zápichu (soustružení)</translation>
+    </message>
+    <message>
+        <source>T%1 %2 (width %3 mm)</source>
+        <translation>T%1 %2 (šířka %3 mm)</translation>
     </message>
 </context>
 <context>

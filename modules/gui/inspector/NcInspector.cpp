@@ -3,6 +3,7 @@
 #include "gui/editor/NcEditor.h"
 #include "gui/inspector/ModalStatePanel.h"
 #include "gui/view3d/View3D.h"
+#include "sim/TurningCheck.h"
 #include "toolpath/ToolpathPolylines.h"
 
 #include <QElapsedTimer>
@@ -120,6 +121,7 @@ void NcInspector::traceNow()
     const std::optional<nc::Dialect> dialect = m_dialect;
     std::shared_ptr<const kinematics::Machine> machine = m_machine;
     std::shared_ptr<const nc::ToolTable> tools = m_tools;
+    const bool turningPlane = m_turningPlane;
 
     if (m_running++ == 0)
         emit busyChanged(true);
@@ -132,7 +134,7 @@ void NcInspector::traceNow()
         watcher->deleteLater();
         finish(result);
     });
-    watcher->setFuture(QtConcurrent::run([result, text, path, dialect, machine, tools, cancel] {
+    watcher->setFuture(QtConcurrent::run([result, text, path, dialect, machine, tools, cancel, turningPlane] {
         document::NcTraceRequest request;
         request.text = text.toStdString();
         request.path = path;
@@ -144,7 +146,10 @@ void NcInspector::traceNow()
         if (result->trace.cancelled || cancel->load())
             return;
         const auto start = std::chrono::steady_clock::now();
-        result->scene = View3D::prepareToolpath(result->trace.program, result->trace.recordsInError);
+        // Record for record (the same indices), so picking still finds the program's lines.
+        result->scene =
+            View3D::prepareToolpath(turningPlane ? sim::inTurningPlane(result->trace.program) : result->trace.program,
+                                    result->trace.recordsInError);
         result->sceneSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     }));
 }

@@ -56,6 +56,9 @@ public:
     // Tool sizes for cutter compensation where the program defines none (a posted program's D1
     // means the job's tool), from the next trace on; nullptr: none.
     void setToolTable(std::shared_ptr<const nc::ToolTable> tools) { m_tools = std::move(tools); }
+    // A lathe's program gives no Y: from the next trace on, its moves are drawn in the turning
+    // plane (Y = 0, sim::inTurningPlane) while set (the main window sets it for a turning job).
+    void setTurningPlane(bool turning) { m_turningPlane = turning; }
 
     // A new program for the editor (opened or posted): the editor gets the dialect first (so a
     // huge text is highlighted once, not twice), then the text; the trace starts at once.
@@ -101,6 +104,7 @@ private:
     QString m_path;
     std::shared_ptr<const kinematics::Machine> m_machine;
     std::shared_ptr<const nc::ToolTable> m_tools;
+    bool m_turningPlane = false;
     bool m_showInView = true;
     bool m_editorHasDiagnostics = false;
     int m_running = 0;

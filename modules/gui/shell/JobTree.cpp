@@ -230,7 +230,10 @@ void JobTree::addOperationItems(QTreeWidgetItem* jobItem)
         QStringList value{qs(document::kindLabel(op.kind())), QStringLiteral("T%1").arg(op.toolNumber)};
         if (const double seconds = m_workbench.operationSeconds(index); op.enabled && seconds >= 0)
             value << formatDuration(seconds);
-        value << geometrySummary(op.geometry);
+        if (const auto* groove = std::get_if<ops::GrooveParams>(&op.params))  // given by numbers, not faces
+            value << tr("depth %1 mm, bottom width %2 mm").arg(mm(groove->groove.r3), mm(groove->groove.r4));
+        else
+            value << geometrySummary(op.geometry);
         if (!op.enabled)
             value.prepend(tr("(disabled)"));
         auto* item = row(operations, ItemKind::Operation, qs(op.name()), value.join(QStringLiteral(" · ")));

@@ -109,7 +109,7 @@ QMenu* JobTree::contextMenuFor(QTreeWidgetItem* item)
         break;
     case ItemKind::Operations:
         offer({"Cam.Op.NewContour", "Cam.Op.NewPocket", "Cam.Op.NewHelix", "Cam.Op.NewDrill", "Cam.Op.NewSwarf",
-               "Cam.Op.NewPocket3d", "Cam.Op.NewWaterline", "Cam.Op.NewParallel"});
+               "Cam.Op.NewPocket3d", "Cam.Op.NewWaterline", "Cam.Op.NewParallel", nullptr, "Cam.Op.NewGroove"});
         break;
     case ItemKind::Tools:
     case ItemKind::Tool:

@@ -3,6 +3,7 @@
 #include "base/AtomicFile.h"
 #include "camwb_version.h"
 #include "document/JobFile.h"
+#include "document/JobPipeline.h"
 #include "gui/actions/ActionRegistry.h"
 #include "gui/editor/NcEditor.h"
 #include "gui/editor/NcEditorActions.h"
@@ -32,6 +33,7 @@
 #include "gui/view3d/TaskOverlay.h"
 #include "gui/view3d/View3D.h"
 #include "kinematics/Machine.h"
+#include "sim/TurningCheck.h"
 
 #include <QAction>
 #include <QCloseEvent>
@@ -251,6 +253,8 @@ void MainWindow::registerActions()
         [this] { newOperation(OperationKind::Waterline); });
     add({"Cam.Op.NewParallel", tr("New P&arallel…"), operation, {}, true},
         [this] { newOperation(OperationKind::Parallel); });
+    add({"Cam.Op.NewGroove", tr("New &Groove Roughing…"), operation, {}, true},
+        [this] { newOperation(OperationKind::Groove); });
     // The foundation's profile is the contour now; the id stays for scripts (no menu entry).
     add({"Cam.Op.NewProfile", tr("New &Profile"), {}}, [this] { newOperation(OperationKind::Contour); });
     // Without a selected operation these say so where the user looks (the status bar).
@@ -321,6 +325,8 @@ void MainWindow::registerActions()
         [this] { m_view->setViewPreset(View3D::Preset::Front); });
     add({"Cam.View.Right", tr("&Right"), view, QKeySequence(Qt::Key_3), true},
         [this] { m_view->setViewPreset(View3D::Preset::Right); });
+    add({"Cam.View.LatheXZ", tr("&XZ (lathe)"), view, QKeySequence(Qt::Key_4), true},
+        [this] { m_view->setViewPreset(View3D::Preset::LatheXZ); });
     add({"Cam.View.FitAll", tr("Fit &All"), view, QKeySequence(Qt::Key_F), true}, [this] { m_view->fitAll(); });
     registerDockActions(view);
     registerFocusActions(*m_actions, *this, view);
@@ -345,7 +351,11 @@ void MainWindow::connectWorkbench()
     });
     connect(m_workbench, &Workbench::toolpathChanged, this, [this] {
         // Shown until the posted program's trace replaces it (or for good when chosen so).
-        m_view->setToolpath(m_workbench->toolpath());
+        // A lathe job's path gives no Y: drawn in the turning plane (Y = 0), as the checks read it.
+        if (document::jobNeedsModel(m_workbench->job()))
+            m_view->setToolpath(m_workbench->toolpath());
+        else
+            m_view->setToolpath(sim::inTurningPlane(m_workbench->toolpath()));
         m_inspector->setShowInView(false);
         refreshToolList();
         // The first toolpath of a new model is fitted too; later ones keep the user's camera.
@@ -376,6 +386,8 @@ void MainWindow::connectWorkbench()
     connect(m_ncDocument, &NcDocument::titleChanged, this, &MainWindow::updateNcDockTitle);
     connect(m_workbench, &Workbench::programStateChanged, this, &MainWindow::showProgramState);
     connect(m_workbench, &Workbench::jobChanged, this, &MainWindow::updateTitle);
+    connect(m_workbench, &Workbench::jobChanged, this,
+            [this] { m_inspector->setTurningPlane(!document::jobNeedsModel(m_workbench->job())); });
     showJobSetupInView(*m_workbench, *m_view);
     connect(m_workbench, &Workbench::busyChanged, this, [this](bool busy) {
         m_progress->setVisible(busy);
@@ -530,6 +542,22 @@ void MainWindow::openTaskPanel(int index, const document::Operation& operation,
     closeTaskPanel();
     m_taskPanel = OperationPanel::create(*m_workbench, &m_view->overlay(), index, operation, newTool, m_taskDock);
     connect(m_taskPanel, &OperationPanel::closed, this, &MainWindow::closeTaskPanel);
+    // A groove's contour follows its panel, as its preview does (the job's again on close).
+    auto showSection = [this](const document::Job& job) {
+        if (auto section = latheSectionOf(job))
+            m_view->setLatheSection(section);
+    };
+    connect(m_taskPanel, &OperationPanel::edited, this, [this, showSection] {
+        if (m_taskPanel != nullptr)
+            showSection(m_taskPanel->editedJob());
+    });
+    connect(m_taskPanel, &OperationPanel::closed, this, [this] {
+        m_view->setLatheSection(latheSectionOf(m_workbench->job()));
+        m_view->setToolpathShown(true);
+    });
+    showSection(m_taskPanel->editedJob());
+    // A turning preview is drawn in the backplot's red and green: the job's path would read as it.
+    m_view->setToolpathShown(!document::isTurningKind(operation.kind()));
     m_taskDock->setWidget(m_taskPanel);
     m_taskDock->setWindowTitle(tr("Task: %1").arg(QString::fromStdString(operation.name())));
     m_taskDock->show();

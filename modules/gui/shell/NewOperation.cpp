@@ -23,6 +23,7 @@ std::string formatMm(double value, const char* format = "%g")
 
 bool isUpFacing(const occ::FaceInfo& face) { return face.planar && face.normal.z > 1.0 - 1e-9; }
 bool isDrill(const ops::ToolController& tc) { return tc.tool.kind == "drill"; }
+bool isGroovingTool(const ops::ToolController& tc) { return tc.tool.kind == "groove"; }
 
 int nextToolNumber(const document::Job& job)
 {
@@ -54,10 +55,20 @@ ops::ToolController defaultDrill(int number, double diameterMm)
     return tc;
 }
 
+// The thesis' grooving insert (seed-001: 3 mm wide, reference point its left corner) with the
+// Kod 5 frame's data; a lathe's tool controller carries no mm/min feeds (the groove gives mm/rev).
+ops::ToolController defaultGroovingTool(int number)
+{
+    ops::ToolController tc;
+    tc.tool = {number, "Grooving insert W3", "groove", 3.0, 0.0, 25.0, 100.0, 1};
+    tc.spindleRpm = 3000;
+    return tc;
+}
+
 std::string defaultName(OperationKind kind, const document::Job& job)
 {
-    static const char* const names[] = {"Contour", "Pocket",    "Helix",     "Drilling",
-                                        "Swarf",   "3D Pocket", "Waterline", "Parallel"};
+    static const char* const names[] = {"Contour",   "Pocket",    "Helix",    "Drilling", "Swarf",
+                                        "3D Pocket", "Waterline", "Parallel", "Groove"};
     const std::string base = names[static_cast<int>(kind)];
     int count = 1;
     for (const document::Operation& op : job.operations)
@@ -82,6 +93,8 @@ document::OperationParams defaultParams(OperationKind kind)
         return ops::WaterlineParams{};
     case OperationKind::Parallel:
         return ops::ParallelParams{};
+    case OperationKind::Groove:
+        return ops::GrooveParams{};
     case OperationKind::Drill:
         break;
     }
@@ -203,14 +216,14 @@ const ops::ToolController* helixTool(const document::Job& job, const std::vector
 
 const ops::ToolController* suitedTool(OperationKind kind, const document::Job& job)
 {
-    const bool wantDrill = kind == OperationKind::Drill;
+    const bool wantDrill = kind == OperationKind::Drill, wantGroove = kind == OperationKind::Groove;
     // Finishing a surface wants a ball-nose where the job has one.
     if (kind == OperationKind::Waterline || kind == OperationKind::Parallel)
         for (const ops::ToolController& tc : job.tools)
             if (tc.tool.kind == "ball")
                 return &tc;
     for (const ops::ToolController& tc : job.tools)
-        if (isDrill(tc) == wantDrill)
+        if (isDrill(tc) == wantDrill && isGroovingTool(tc) == wantGroove)
             return &tc;
     return nullptr;
 }
@@ -219,12 +232,19 @@ base::Result<OperationProposal> proposeOperation(OperationKind kind, const docum
                                                  const std::vector<int>& selectedFaces)
 {
     const std::string what = document::kindLabel(kind);
-    if (!model.hasBRep())
-        return base::Error{what + ": needs a solid model (STEP, IGES or BREP); import one first"};
     OperationProposal proposal;
     document::Operation& op = proposal.operation;
     op.params = defaultParams(kind);
     op.setName(defaultName(kind, job));
+    if (kind == OperationKind::Groove) {  // the groove is given by its numbers: no model needed
+        const ops::ToolController* tool = suitedTool(kind, job);
+        if (tool == nullptr)
+            proposal.newTool = defaultGroovingTool(nextToolNumber(job));
+        op.toolNumber = tool != nullptr ? tool->tool.number : proposal.newTool->tool.number;
+        return proposal;
+    }
+    if (!model.hasBRep())
+        return base::Error{what + ": needs a solid model (STEP, IGES or BREP); import one first"};
 
     const std::vector<geom::Hole> holes =
         kind == OperationKind::Helix || kind == OperationKind::Drill ? model.holes() : std::vector<geom::Hole>{};
@@ -291,6 +311,8 @@ base::Result<OperationProposal> proposeOperation(OperationKind kind, const docum
     case OperationKind::Parallel:
         op.geometry.faces = selectedFaces;  // the area they bound; none: the whole model
         break;
+    case OperationKind::Groove:
+        break;  // returned above
     }
     return proposal;
 }

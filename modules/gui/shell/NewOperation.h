@@ -26,13 +26,15 @@ struct OperationProposal {
 //           largest end mill of the job that fits them;
 //  drill:   the holes whose diameter is within 0.1 mm of the drill's, else the holes of the
 //           diameter nearest to it (one drill, one hole size).
+//  groove:  the thesis' Kod 1 groove (it needs no model) with the job's first grooving tool, or a
+//           3 mm grooving insert to add with it.
 // Selected faces are used when they fit the kind: planar faces for contour and pocket, the
 // cylindrical faces of holes for helix and drilling. Errors say what is missing.
 base::Result<OperationProposal> proposeOperation(document::OperationKind kind, const document::Job& job,
                                                  const occ::Model& model, const std::vector<int>& selectedFaces = {});
 
-// The tool of `job` a new operation of `kind` uses: the first drill for drilling, else the first
-// tool that is not a drill; nullptr when the job has none.
+// The tool of `job` a new operation of `kind` uses: the first drill for drilling, the first
+// grooving tool for a groove, else the first tool that is neither; nullptr when the job has none.
 const ops::ToolController* suitedTool(document::OperationKind kind, const document::Job& job);
 
 }  // namespace camwb::gui

@@ -450,8 +450,8 @@ void Workbench::startCompute()
     watcher->setFuture(QtConcurrent::run([job, model, reloadModel, progress, programName, generation] {
         auto outcome = std::make_shared<ComputeOutcome>();
         outcome->generation = generation;
-        if (job.modelPath.empty())
-            return outcome;  // a new job: nothing to compute yet
+        if (job.modelPath.empty() && document::jobNeedsModel(job))
+            return outcome;  // a new job: nothing to compute yet (a lathe job's grooves need no model)
         occ::Model current = model;
         if (reloadModel) {
             auto loaded = document::loadJobModel(job, progress);

@@ -43,6 +43,8 @@ QString kindTitle(document::OperationKind kind)
         return OperationPanel::tr("Waterline");
     case document::OperationKind::Parallel:
         return OperationPanel::tr("Parallel");
+    case document::OperationKind::Groove:
+        return OperationPanel::tr("Groove roughing (turning)");
     case document::OperationKind::Drill:
         break;
     }
@@ -90,6 +92,9 @@ OperationPanel* OperationPanel::create(Workbench& workbench, TaskOverlay* overla
         break;
     case document::OperationKind::Parallel:
         panel = makeParallelPanel(args);
+        break;
+    case document::OperationKind::Groove:
+        panel = makeGroovePanel(args);
         break;
     }
     panel->build();
@@ -167,7 +172,8 @@ void OperationPanel::build()
     if (m_newTool)
         tools.push_back(*m_newTool);
     for (const ops::ToolController& tc : tools) {
-        m_tool->addItem(tr("T%1 %2 (Ø%3 mm)")
+        // A grooving insert's diameter field holds its width.
+        m_tool->addItem((tc.tool.kind == "groove" ? tr("T%1 %2 (width %3 mm)") : tr("T%1 %2 (Ø%3 mm)"))
                             .arg(tc.tool.number)
                             .arg(QString::fromStdString(tc.tool.name))
                             .arg(tc.tool.diameterMm, 0, 'g', 4),
@@ -179,7 +185,9 @@ void OperationPanel::build()
     column->addWidget(group(tr("Operation"), general));
 
     m_geometry = new GeometryList(m_op.geometry, geometryKinds(), m_workbench.model(), m_overlay);
-    column->addWidget(group(tr("Geometry"), m_geometry));
+    QGroupBox* geometryGroup = group(tr("Geometry"), m_geometry);
+    geometryGroup->setVisible(geometryKinds() != 0);
+    column->addWidget(geometryGroup);
 
     m_plane = new WorkingPlaneBox(m_op.plane, m_workbench.model().faceCount());
     QGroupBox* planeGroup = group(tr("Working plane (3+2)"), m_plane);
@@ -193,7 +201,9 @@ void OperationPanel::build()
     column->addWidget(group(tr("Parameters"), params));
 
     m_heights = new HeightsBox(m_op.heights);
-    column->addWidget(group(tr("Heights"), m_heights));
+    QGroupBox* heightsGroup = group(tr("Heights"), m_heights);
+    heightsGroup->setVisible(takesHeights());
+    column->addWidget(heightsGroup);
     column->addStretch(1);
 
     auto* scroll = new QScrollArea(this);
@@ -206,6 +216,7 @@ void OperationPanel::build()
     connect(m_name, &QLineEdit::textEdited, this, [this](const QString& text) { m_op.setName(text.toStdString()); });
     connect(m_tool, &QComboBox::currentIndexChanged, this, [this] {
         m_op.toolNumber = m_tool->currentData().toInt();
+        toolChanged();
         parametersChanged();
     });
     connect(m_geometry, &GeometryList::changed, this, &OperationPanel::parametersChanged);
@@ -257,6 +268,13 @@ void OperationPanel::parametersChanged()
     int index = 0;
     document::Job job = previewJob(&index);
     m_preview->request(std::move(job), index, m_workbench.model());
+    emit edited();
+}
+
+document::Job OperationPanel::editedJob() const
+{
+    int index = 0;
+    return previewJob(&index);
 }
 
 void OperationPanel::setComputing(bool computing)
@@ -295,7 +313,14 @@ void OperationPanel::showOutcome()
     m_status->setStyleSheet(outcome->result.warnings.empty() ? QString() : QStringLiteral("color: #8a5a00;"));
     m_status->setText(lines.join(QLatin1Char('\n')));
     if (m_overlay != nullptr)
-        m_overlay->showPreview(outcome->scene);
+        m_overlay->showPreview(outcome->scene, outcome->turning);
+}
+
+const ops::ToolController* OperationPanel::selectedTool() const
+{
+    if (const ops::ToolController* tc = m_workbench.job().tool(m_op.toolNumber))
+        return tc;
+    return m_newTool && m_newTool->tool.number == m_op.toolNumber ? &*m_newTool : nullptr;
 }
 
 QString OperationPanel::statusText() const { return m_status != nullptr ? m_status->text() : QString(); }

@@ -4,7 +4,7 @@
 // (or adds the new operation) unless the preview shows the operation cannot be made; Cancel
 // leaves the job as it was. Each kind adds its own rows
 // (ContourPanel.cpp, PocketPanel.cpp, HelixPanel.cpp, DrillPanel.cpp, SwarfPanel.cpp,
-// Pocket3dPanel.cpp, FinishingPanels.cpp).
+// Pocket3dPanel.cpp, FinishingPanels.cpp, GroovePanel.cpp).
 #pragma once
 
 #include "document/Job.h"
@@ -56,16 +56,24 @@ public:
     // Whether OK would change the job: the operation differs from what the panel opened with.
     bool hasUnappliedChanges() const;
 
+    // The job as OK would make it (the edited operation in place, or added with its tool).
+    document::Job editedJob() const;
+
 signals:
     void closed();
+    void edited();  // a parameter changed: editedJob() differs (the preview restarts)
 
 protected:
     explicit OperationPanel(const OperationPanelArgs& args);
     // The kind's rows, bound to fields of m_op.params.
     virtual void buildParameters(ParamForm& form) = 0;
-    virtual int geometryKinds() const = 0;                   // GeometryList::Kind flags
+    virtual int geometryKinds() const = 0;                   // GeometryList::Kind flags; 0: no geometry box
     virtual bool takesWorkingPlane() const { return true; }  // false: the plane box is hidden
+    virtual bool takesHeights() const { return true; }       // false: the heights box is hidden
+    virtual void toolChanged() {}                            // after the tool combo changed m_op.toolNumber
     void parametersChanged();                                // restarts the preview
+    // The tool the operation uses now (of the job, or the one to add with it), or nullptr.
+    const ops::ToolController* selectedTool() const;
 
     document::Operation m_op;
 

@@ -60,6 +60,8 @@ QCheckBox* ParamForm::flag(const QString& label, const char* objectName, bool& f
     return box;
 }
 
+void ParamForm::row(const QString& label, QWidget* widget) { m_layout->addRow(label, widget); }
+
 QComboBox* ParamForm::addCombo(const QString& label, const char* objectName)
 {
     auto* box = new QComboBox;

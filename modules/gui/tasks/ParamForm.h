@@ -30,6 +30,8 @@ public:
     }
     QSpinBox* count(const QString& label, const char* objectName, int& field, int min, int max);
     QCheckBox* flag(const QString& label, const char* objectName, bool& field, const QString& toolTip = {});
+    // A row the panel keeps itself (not bound to a field: a value shown from elsewhere).
+    void row(const QString& label, QWidget* widget);
 
     template <class Enum>
     QComboBox* choice(const QString& label, const char* objectName, Enum& field,

@@ -2,6 +2,7 @@
 
 #include "document/OperationGeometry.h"
 #include "gui/view3d/View3D.h"
+#include "sim/TurningCheck.h"
 
 #include <QElapsedTimer>
 #include <QFutureWatcher>
@@ -35,7 +36,10 @@ std::shared_ptr<const PreviewOutcome> compute(const document::Job& job, int inde
     } else {
         outcome->ok = true;
         outcome->result = std::move(result.value());
-        outcome->scene = View3D::prepareToolpath(outcome->result.toolpath);
+        // A lathe gives no Y: its path is drawn in the turning plane (Y = 0), as the checks read it.
+        outcome->turning = document::isTurningKind(job.operations[static_cast<std::size_t>(index)].kind());
+        outcome->scene = View3D::prepareToolpath(outcome->turning ? sim::inTurningPlane(outcome->result.toolpath)
+                                                                  : outcome->result.toolpath);
     }
     outcome->seconds = clock.nsecsElapsed() * 1e-9;
     return outcome;

@@ -24,6 +24,7 @@ struct PreviewOutcome {
     std::string error;  // computeOperation's message ("pocket \"Pocket 1\": ...")
     ops::OpResult result;
     std::shared_ptr<const ToolpathScene> scene;  // the 3D view's data, built on the worker
+    bool turning = false;                        // a lathe operation's: in the XZ plane
     bool heightsKnown = false;                   // false when the geometry did not resolve
     ops::Heights heights;                        // derived, with the user's overrides applied
     double seconds = 0;

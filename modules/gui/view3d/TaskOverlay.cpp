@@ -27,6 +27,7 @@ constexpr double kPreviewCutColor[3]{1.0, 0.45, 0.0};
 constexpr double kPreviewRapidColor[3]{0.95, 0.65, 0.35};
 constexpr double kSelectedFaceColor[3]{0.30, 0.80, 0.35};
 constexpr std::size_t kThickPreviewSegments = 100000;
+constexpr double kLatheFeedColor[3]{kFeedRgb[0] / 255.0, kFeedRgb[1] / 255.0, kFeedRgb[2] / 255.0};
 
 vtkSmartPointer<vtkActor> lineActor(vtkPolyData* data, const double color[3], float width)
 {
@@ -73,7 +74,7 @@ TaskOverlay::TaskOverlay(vtkRenderer* renderer, std::function<void()> render, QO
 
 TaskOverlay::~TaskOverlay() = default;
 
-void TaskOverlay::showPreview(std::shared_ptr<const ToolpathScene> scene)
+void TaskOverlay::showPreview(std::shared_ptr<const ToolpathScene> scene, bool lathe)
 {
     for (vtkSmartPointer<vtkActor>& actor : d->previewActors)
         d->remove(actor);
@@ -84,9 +85,9 @@ void TaskOverlay::showPreview(std::shared_ptr<const ToolpathScene> scene)
         const float width = d->preview->polylines().segments().size() > kThickPreviewSegments ? 1.0f : 2.0f;
         for (const ToolpathScene::Part& part : d->preview->parts()) {
             if (part.rapid)
-                d->previewActors.push_back(lineActor(part.rapid, kPreviewRapidColor, 1.0f));
+                d->previewActors.push_back(lineActor(part.rapid, lathe ? kRapidColor : kPreviewRapidColor, 1.0f));
             if (part.cut)
-                d->previewActors.push_back(lineActor(part.cut, kPreviewCutColor, width));
+                d->previewActors.push_back(lineActor(part.cut, lathe ? kLatheFeedColor : kPreviewCutColor, width));
         }
         for (const vtkSmartPointer<vtkActor>& actor : d->previewActors)
             d->renderer->AddActor(actor);

@@ -28,8 +28,10 @@ public:
     ~TaskOverlay() override;
 
     // Replaces the preview; null or empty clears it. Prepare the scene on a worker with
-    // View3D::prepareToolpath (huge paths are simplified for display there, not here).
-    void showPreview(std::shared_ptr<const ToolpathScene> scene);
+    // View3D::prepareToolpath (huge paths are simplified for display there, not here). Orange,
+    // apart from the job's backplot; `lathe`: in the backplot's own rapid red and feed green, as
+    // SinuTrain draws a turning path (the main window hides the job's path meanwhile).
+    void showPreview(std::shared_ptr<const ToolpathScene> scene, bool lathe = false);
     void clearPreview();
     int previewSegmentCount() const;                              // exact segments; 0 when no preview is shown
     const toolpath::ToolpathPolylines* previewPolylines() const;  // nullptr when no preview is shown

@@ -63,9 +63,11 @@ struct View3D::Private {
     TaskOverlay* overlay = nullptr;
     SimOverlay* simulation = nullptr;
     bool simulationShown = false;
+    bool toolpathShown = true;
     vtkSmartPointer<vtkActor> edgeActor;
     vtkSmartPointer<vtkActor> stockActor;
     vtkSmartPointer<vtkAxesActor> workAxes;
+    std::vector<vtkSmartPointer<vtkActor>> latheActors;
     struct ToolActors {
         int tool = 0;
         vtkSmartPointer<vtkActor> cut;
@@ -351,6 +353,19 @@ void View3D::setJobSetup(const std::optional<base::Box3>& stock, bool cylinder)
 
 bool View3D::hasStockActor() const { return d->stockActor != nullptr; }
 
+void View3D::setLatheSection(const std::optional<LatheSection>& section)
+{
+    for (const auto& actor : d->latheActors)
+        d->renderer->RemoveActor(actor);
+    d->latheActors = section ? makeLatheActors(*section) : std::vector<vtkSmartPointer<vtkActor>>{};
+    for (const auto& actor : d->latheActors)
+        d->renderer->AddActor(actor);
+    applyVisibility();
+    d->render();
+}
+
+bool View3D::hasLatheSection() const { return !d->latheActors.empty(); }
+
 bool View3D::hasWorkAxes() const { return d->workAxes != nullptr; }
 
 bool View3D::hasModelActor() const { return d->modelActor != nullptr || d->edgeActor != nullptr; }
@@ -382,7 +397,7 @@ void View3D::setToolVisible(int tool, bool visible)
 void View3D::applyVisibility()
 {
     for (const Private::ToolActors& actors : d->toolActors) {
-        const bool visible = !d->simulationShown && d->hiddenTools.count(actors.tool) == 0;
+        const bool visible = !d->simulationShown && d->toolpathShown && d->hiddenTools.count(actors.tool) == 0;
         if (actors.cut)
             actors.cut->SetVisibility(visible);
         if (actors.rapid)
@@ -392,7 +407,18 @@ void View3D::applyVisibility()
     for (vtkActor* actor : {d->modelActor.Get(), d->edgeActor.Get(), d->stockActor.Get()})
         if (actor != nullptr)
             actor->SetVisibility(!d->simulationShown);
+    for (const auto& actor : d->latheActors)
+        actor->SetVisibility(!d->simulationShown);
 }
+
+void View3D::setToolpathShown(bool shown)
+{
+    d->toolpathShown = shown;
+    applyVisibility();
+    d->render();
+}
+
+bool View3D::isToolpathShown() const { return d->toolpathShown; }
 
 SimOverlay& View3D::simulation() const { return *d->simulation; }
 
@@ -555,10 +581,16 @@ void View3D::setViewPreset(Preset preset)
         camera->SetPosition(1, 0, 0);
         camera->SetViewUp(0, 0, 1);
         break;
+    case Preset::LatheXZ:  // from +Y looking along -Y: Z to the right, X (the radius) up
+        camera->SetPosition(0, 1, 0);
+        camera->SetViewUp(1, 0, 0);
+        break;
     }
     camera->OrthogonalizeViewUp();
     fitAll();
 }
+
+View3D::Preset View3D::viewPreset() const { return d->preset; }
 
 void View3D::fitAll()
 {

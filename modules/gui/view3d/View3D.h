@@ -7,6 +7,7 @@
 #pragma once
 
 #include "base/Vec.h"
+#include "sim/TurningStock.h"
 
 #include <QImage>
 #include <QPointF>
@@ -33,11 +34,21 @@ class SimOverlay;
 class TaskOverlay;
 class ToolpathScene;
 
+// A lathe job's half-section in the XZ plane (Vec2::x is Z, Vec2::y is X as a radius, as
+// sim::TurningRegion has them): the stock before cutting, filled and translucent, and the part's
+// contours and the contours with the finishing allowances as open lines (one per groove).
+struct LatheSection {
+    sim::TurningRegion stock;
+    std::vector<std::vector<base::Vec2>> contours;
+    std::vector<std::vector<base::Vec2>> offsetContours;
+};
+
 class View3D : public QWidget {
     Q_OBJECT
 
 public:
-    enum class Preset { Isometric, Top, Front, Right };
+    // LatheXZ: the lathe drawing's view, looking along -Y with Z to the right and X up.
+    enum class Preset { Isometric, Top, Front, Right, LatheXZ };
 
     explicit View3D(QWidget* parent = nullptr);
     ~View3D() override;
@@ -64,11 +75,19 @@ public:
     void setPreparedToolpath(std::shared_ptr<const ToolpathScene> scene);
     void clearModel();
     void clearToolpath();
+    // Hides the backplot (kept, pickable state unchanged) while false: a turning task panel's
+    // preview is drawn in the backplot's colours and takes its place.
+    void setToolpathShown(bool shown);
+    bool isToolpathShown() const;
     // The job's stock, translucent (a box, or a cylinder along Z inside `stock`), and the work
     // coordinate system's axes at the origin: the view shows work coordinates. No stock: only
     // the axes. Replaces what was shown.
     void setJobSetup(const std::optional<base::Box3>& stock, bool cylinder);
     bool hasStockActor() const;
+    // A turning job's half-section at Y = 0 (the CL's plane), instead of a milling stock; nullopt
+    // removes it. Replaces what was shown.
+    void setLatheSection(const std::optional<LatheSection>& section);
+    bool hasLatheSection() const;
     bool hasWorkAxes() const;
     bool hasModelActor() const;
     bool hasToolpathActor() const;
@@ -105,6 +124,7 @@ public:
     int pickFace(const QPointF& widgetPosition) const;
 
     void setViewPreset(Preset preset);  // also fits everything into the view
+    Preset viewPreset() const;          // the last preset chosen (the camera may have moved since)
     void fitAll();
 
     // What the view shows (rendered now), or a null image without OpenGL.

@@ -238,7 +238,8 @@ private slots:
                               "Cam.Op.MoveUp", "Cam.Op.MoveDown", "Cam.Op.Delete"}));
         QCOMPARE(menuIds(Kind::Operations),
                  (QStringList{"Cam.Op.NewContour", "Cam.Op.NewPocket", "Cam.Op.NewHelix", "Cam.Op.NewDrill",
-                              "Cam.Op.NewSwarf", "Cam.Op.NewPocket3d", "Cam.Op.NewWaterline", "Cam.Op.NewParallel"}));
+                              "Cam.Op.NewSwarf", "Cam.Op.NewPocket3d", "Cam.Op.NewWaterline", "Cam.Op.NewParallel",
+                              "Cam.Op.NewGroove"}));
         // The setup's actions come from other parts: offered exactly when registered.
         auto expected = [&](const char* id) {
             return actions.action(QLatin1String(id)) ? QStringList{QLatin1String(id)} : QStringList{};

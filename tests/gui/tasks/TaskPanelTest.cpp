@@ -111,6 +111,9 @@ void changeParameter(OperationPanel& panel)
     case OperationKind::Parallel:
         halve("stepoverBox", 0.5);
         break;
+    case OperationKind::Groove:
+        halve("infeedBox", 0.5);
+        break;
     }
 }
 
@@ -157,7 +160,7 @@ private slots:
         const QStringList ids = window.actions().ids();
         for (const char* id : {"Cam.Op.NewContour", "Cam.Op.NewPocket", "Cam.Op.NewHelix", "Cam.Op.NewDrill",
                                "Cam.Op.NewSwarf", "Cam.Op.NewPocket3d", "Cam.Op.NewWaterline", "Cam.Op.NewParallel",
-                               "Cam.Op.NewProfile", "Cam.Op.Edit", "Cam.Op.Delete"})
+                               "Cam.Op.NewGroove", "Cam.Op.NewProfile", "Cam.Op.Edit", "Cam.Op.Delete"})
             QVERIFY2(ids.contains(QLatin1String(id)), id);
     }
 

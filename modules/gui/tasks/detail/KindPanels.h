@@ -30,5 +30,6 @@ OperationPanel* makeSwarfPanel(const OperationPanelArgs& args);
 OperationPanel* makePocket3dPanel(const OperationPanelArgs& args);
 OperationPanel* makeWaterlinePanel(const OperationPanelArgs& args);
 OperationPanel* makeParallelPanel(const OperationPanelArgs& args);
+OperationPanel* makeGroovePanel(const OperationPanelArgs& args);
 
 }  // namespace camwb::gui

@@ -55,8 +55,7 @@ TEST(GrooveSubprograms, Kod1IsTheThesisProgramMoveForMove)
     const GrooveRun ours = runGroove({});
     EXPECT_TRUE(ours.result.completed);
     EXPECT_TRUE(ours.result.diagnostics.empty()) << ours.diagnostics();
-    std::string kod5 =
-        "G54 G18\nG90 G71\nG0 X380\nT=5 D1\nG96 S300 LIMS=3000 M3 M8\nG95 F0.2\nPODPROG_ZAPICH\nM30\n";
+    std::string kod5 = "G54 G18\nG90 G71\nG0 X380\nT=5 D1\nG96 S300 LIMS=3000 M3 M8\nG95 F0.2\nPODPROG_ZAPICH\nM30\n";
     const GrooveRun thesis = interpretText(kod5, seedDir() + "/reconstructed");
     ASSERT_TRUE(thesis.result.completed) << thesis.diagnostics();
     const std::vector<Move> a = subprogramMoves(ours), b = subprogramMoves(thesis);
@@ -76,9 +75,34 @@ TEST(GrooveSubprograms, Kod1IsTheThesisProgramMoveForMove)
     expectFinishedClean(ours, {}, "PODPROG_DNO_ZL");
 }
 
-// F1: the offset corners T, U, R, S and H1 the subprograms compute equal the thesis' closed forms
-// (sim::grooveGeometry) to 1e-9 wherever those exist (R2, R5, R6 > 0). The main program moves to
-// them after the call, so the moves show the R parameters.
+// The thesis' closed forms (seed §2.5: Rov. 7, 9, 20-23, 31-33, 43-46, 54-55), only defined for
+// R2, R5, R6 > 0: T, U, R, S as (X, Z), and H1.
+struct ClosedForms {
+    double tx, tz, ux, uz, rx, rz, sx, sz, h1;
+};
+ClosedForms closedForms(const Inputs& in)
+{
+    const auto tanD = [](double deg) { return std::tan(deg * std::numbers::pi / 180); };
+    const auto cosD = [](double deg) { return std::cos(deg * std::numbers::pi / 180); };
+    const double t2 = tanD(in.r2), t5 = tanD(in.r5), t6 = tanD(in.r6);
+    const double d = in.r3 * t5, c = (in.r3 - t2 * (in.r4 + in.r3 * t5)) / (t2 + 1 / t6), h1 = in.r3 - c / t6;
+    const double dRx = (in.r8 * tanD(in.r2 - in.r6) + in.r8 * t6) * cosD(in.r6);
+    const double dUx = (in.r8 * tanD(in.r2 + in.r5) - in.r8 * t5) * cosD(in.r5);
+    const double xb = in.r0 - in.r3 + in.r7;
+    return {xb,
+            in.r1 - d - (in.r8 / cosD(in.r5) - in.r7 * t5),
+            in.r0 - dUx,
+            in.r1 - dUx / t2,
+            in.r0 - h1 + dRx,
+            in.r1 - d - in.r4 - c + dRx / t2,
+            xb,
+            in.r1 - d - in.r4 + in.r8 / cosD(in.r6) - in.r7 * t6,
+            h1};
+}
+
+// F1: the offset corners T, U, R, S and H1 the subprograms compute by line intersections equal
+// the thesis' closed forms to 1e-9 wherever those exist (R2, R5, R6 > 0). The main program moves
+// to them after the call, so the moves show the R parameters.
 TEST(GrooveSubprograms, GeneralIntersectionsEqualTheClosedForms)
 {
     const std::string show = "G0 X=R14 Z=R15\nG0 X=R16 Z=R17\nG0 X=R23 Z=R24\nG0 X=R25 Z=R26\nG0 X=R38\n";
@@ -92,14 +116,13 @@ TEST(GrooveSubprograms, GeneralIntersectionsEqualTheClosedForms)
                 at.push_back(m->to);
         ASSERT_GE(at.size(), 5u);
         at.erase(at.begin(), at.end() - 5);
-        GrooveParameters g{in.r0, in.r1, in.r2, in.r3, in.r4, in.r5, in.r6, in.r7, in.r8, in.r9};
-        const GrooveGeometry geo = grooveGeometry(g);
-        const Vec2 expected[] = {geo.t, geo.u, geo.r, geo.s};
+        const ClosedForms f = closedForms(in);
+        const double expected[4][2] = {{f.tx, f.tz}, {f.ux, f.uz}, {f.rx, f.rz}, {f.sx, f.sz}};
         for (int i = 0; i < 4; ++i) {
-            EXPECT_NEAR(at[i].x, expected[i].y, 1e-9) << i;
-            EXPECT_NEAR(at[i].z, expected[i].x, 1e-9) << i;
+            EXPECT_NEAR(at[i].x, expected[i][0], 1e-9) << i;
+            EXPECT_NEAR(at[i].z, expected[i][1], 1e-9) << i;
         }
-        EXPECT_NEAR(at[4].x, in.r0 - geo.c1.y, 1e-9);  // R38 = H1
+        EXPECT_NEAR(at[4].x, f.h1, 1e-9);  // R38 = H1
     }
 }
 

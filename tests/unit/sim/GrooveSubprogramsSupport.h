@@ -150,9 +150,11 @@ private:
 };
 
 // Random grooves over the ranges of seed-001 §5.3 item 8 (fixed seed: the same cases each run).
-inline std::vector<Inputs> sweepCases(int count)
+// With `zeroAngles` a cylinder and radial flanks come in too: each of R2, R5, R6 is 0 in a third
+// of the cases (groove-spec F1).
+inline std::vector<Inputs> sweepCases(int count, bool zeroAngles = false)
 {
-    Random random(17);
+    Random random(zeroAngles ? 29 : 17);
     const double widths[] = {3, 5, 10, 23.2}, steps[] = {0.5, 0.6, 0.8, 1.0}, infeeds[] = {0.5, 1, 2, 3};
     std::vector<Inputs> out;
     for (int i = 0; i < count; ++i) {
@@ -166,6 +168,12 @@ inline std::vector<Inputs> sweepCases(int count)
         in.r5 = random.uniform(1, 15);
         in.r6 = random.uniform(1, 15);
         in.r7 = in.r8 = 0.5;
+        if (zeroAngles) {
+            const double keep[] = {0, 1, 1};
+            in.r2 *= random.pick(keep);
+            in.r5 *= random.pick(keep);
+            in.r6 *= random.pick(keep);
+        }
         in.r10 = random.pick(steps);
         in.r11 = random.pick(infeeds);
         in.r30 = 1;

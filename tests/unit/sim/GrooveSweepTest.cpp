@@ -8,9 +8,8 @@
 namespace camwb::sim::groove_test {
 namespace {
 
-TEST(GrooveSubprogramsSweep, RandomGroovesAreCleanOrStopWithAnAlarm)
+void expectCleanOrAlarm(const std::vector<Inputs>& all)
 {
-    const std::vector<Inputs> all = sweepCases(160);
     const int cases = static_cast<int>(all.size());
     std::map<int, int> alarms;
     int clean = 0;
@@ -49,6 +48,11 @@ TEST(GrooveSubprogramsSweep, RandomGroovesAreCleanOrStopWithAnAlarm)
                 worstRapid, worstLeft);
     EXPECT_GE(clean, cases * 3 / 4) << summary;  // the sweep must test the strategy, not the alarms
 }
+
+TEST(GrooveSubprogramsSweep, RandomGroovesAreCleanOrStopWithAnAlarm) { expectCleanOrAlarm(sweepCases(160)); }
+
+// The same with a cylinder and radial flanks among them.
+TEST(GrooveSubprogramsSweep, ZeroAnglesAmongThem) { expectCleanOrAlarm(sweepCases(160, true)); }
 
 }  // namespace
 }  // namespace camwb::sim::groove_test

@@ -5,6 +5,7 @@
 #include "GrooveSubprogramsSupport.h"
 
 #include <algorithm>
+#include <fstream>
 
 namespace camwb::sim::groove_test {
 namespace {
@@ -46,6 +47,45 @@ void expectFinishedClean(const GrooveRun& r, const Inputs& in, const std::string
     EXPECT_EQ(c.back(), bottom);
     EXPECT_EQ(std::count(c.begin(), c.end(), bottom), 1);
     EXPECT_EQ(std::count_if(c.begin(), c.end(), [](const std::string& n) { return n.starts_with("PODPROG_DNO"); }), 1);
+}
+
+// REQ-21: what the control needs of the files themselves: PROC with the file's name, M17 at the
+// end, one block per line with balanced parentheses, G0 (never GO), `=` before every expression
+// value of an axis, plain ASCII.
+TEST(GrooveSubprograms, FilesAreWrittenAsTheControlReadsThem)
+{
+    for (const std::string name : {"PODPROG_ZAPICH", "PODPROG_ZL", "PODPROG_ZP", "PODPROG_DNO_ZL", "PODPROG_DNO_ZP"}) {
+        SCOPED_TRACE(name);
+        std::ifstream file(grooveDir() + "/" + name + ".SPF", std::ios::binary);
+        ASSERT_TRUE(file) << grooveDir();
+        std::vector<std::string> lines;
+        for (std::string line; std::getline(file, line);)
+            lines.push_back(line);
+        ASSERT_GT(lines.size(), 2u);
+        EXPECT_EQ(lines.front(), "PROC " + name);
+        EXPECT_EQ(lines.back(), "M17");
+        for (std::size_t i = 0; i < lines.size(); ++i) {
+            const std::string& text = lines[i];
+            SCOPED_TRACE("line " + std::to_string(i + 1) + ": " + text);
+            EXPECT_TRUE(std::all_of(text.begin(), text.end(), [](char c) { return c >= 32 && c < 127; }));
+            std::string code = text.substr(0, text.find(';'));
+            if (const auto quote = code.find('"'); quote != std::string::npos)
+                code.erase(quote, code.rfind('"') - quote + 1);  // MSG text
+            int depth = 0;
+            for (const char c : code) {
+                depth += c == '(' ? 1 : c == ')' ? -1 : 0;
+                EXPECT_GE(depth, 0);
+            }
+            EXPECT_EQ(depth, 0);
+            for (std::size_t at = 0; at + 1 < code.size(); ++at) {
+                const bool wordStart = at == 0 || code[at - 1] == ' ';
+                if (wordStart && code.compare(at, 3, "GO ") == 0)
+                    ADD_FAILURE() << "GO for G0";
+                if (wordStart && (code[at] == 'X' || code[at] == 'Z') && code[at + 1] != '=')
+                    ADD_FAILURE() << "axis value without '='";
+            }
+        }
+    }
 }
 
 // Kod 1 gives the reconstructed thesis programs' 574 moves: same G0/G1, X and Z within 1e-4 mm

@@ -279,6 +279,9 @@ TEST(GrooveSubprograms, EachInvalidInputHasItsAlarm)
          65014, "Rx<=Sx"},
         {[](Inputs& i) { i.r2 = 50, i.r3 = 9, i.r4 = 7, i.r5 = 17, i.r6 = 25, i.r7 = 2, i.r8 = 4.5; }, 65015, "Ux<=Tx"},
         {[](Inputs& i) { i.r9 = 44.5; }, 65016, "R9"},
+        // groove-fixes.md V1: 3 mm deeper every 0.96 mm is steeper than a 30 (25.8) degree flank
+        {[](Inputs& i) { i.r5 = 30, i.r10 = 0.32, i.r11 = 3; }, 65017, "right flank angle R5"},
+        {[](Inputs& i) { i.r6 = 25.8, i.r10 = 0.32, i.r11 = 3; }, 65018, "left flank angle R6"},
     };
     for (const Case& c : cases) {
         Inputs in;

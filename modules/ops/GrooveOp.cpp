@@ -4,6 +4,7 @@
 #include "ops/turning/GrooveSweeps.h"
 
 #include <cmath>
+#include <numbers>
 #include <utility>
 
 namespace camwb::ops {
@@ -59,6 +60,16 @@ base::Status checkInputs(const std::string& what, const GrooveParams& p, const T
         return fail("feed must be positive, got " + num(p.feedMmPerRev) + " mm/rev");
     if (!(p.maxRpm > 0) || !(p.surfaceSpeedMPerMin > 0))
         return fail("cutting speed and speed limit must be positive");
+    // Fix V1 (/work/groove-fixes.md): each plunge of a sweep is R9*R10 further along and R11 deeper;
+    // where the flank is flatter than that staircase the plunges go through it.
+    const double step = w * p.stepFactor;
+    for (const auto& [angle, name] :
+         {std::pair{g.r5, "right flank angle (R5)"}, std::pair{g.r6, "left flank angle (R6)"}})
+        if (!(p.infeedMm * std::tan(angle * std::numbers::pi / 180) <= step))
+            return fail("the staircase of plunges (R11 = " + num(p.infeedMm) +
+                        " mm deeper every R9*R10 = " + num(step) + " mm) is steeper than the " + name +
+                        ": the plunges would cut the flank; take a smaller infeed (R11 <= " +
+                        num(step / std::tan(angle * std::numbers::pi / 180)) + " mm) or a larger step (R10)");
     sim::GrooveParameters withWidth = g;
     withWidth.r9 = w;
     const sim::GrooveGeometry geo = sim::grooveGeometry(withWidth);

@@ -5,6 +5,7 @@
 // seed §5.3 items 1-5; every input check with its message.
 #include "GrooveTestUtil.h"
 #include "geom/RegionOps.h"
+#include "ops/turning/GrooveSweeps.h"
 #include "sim/TurningCheck.h"
 
 #include <gtest/gtest.h>
@@ -153,8 +154,10 @@ TEST(GrooveProperties, SeedRandomSweepIsClean)
         const Case c = sweep.next();
         SCOPED_TRACE("case " + std::to_string(k));
         const Verdict v = check(c);
-        if (v.error)
+        if (v.error) {
             EXPECT_NE(v.message.find("(R"), std::string::npos) << v.message;
+            std::printf("  case %d refused: %s\n", k, v.message.c_str());
+        }
         tally.add(v);
     }
     tally.print("seed sweep");
@@ -200,6 +203,33 @@ TEST(GrooveProperties, CylindersVerticalFlanksAndNarrowGroovesAreClean)
     EXPECT_GT(tally.fallbacks, 0);
 }
 
+// Beyond the seed's ranges: steeper cones and flanks, other allowances, no safety distance.
+TEST(GrooveProperties, WiderRangesAreClean)
+{
+    Sweep sweep(3);
+    Tally tally;
+    for (int k = 0; k < 100; ++k) {
+        Case c = sweep.next();
+        c.g.r3 = sweep.uniform(50, 120);  // shallower ones are mostly refused (Rx <= Sx) at these cones
+        c.g.r2 = sweep.uniform(0, 40);
+        c.g.r5 = sweep.uniform(0, 30);
+        c.g.r6 = sweep.uniform(0, 30);
+        c.g.r7 = sweep.uniform(0, 2);
+        c.g.r8 = sweep.uniform(0, 2);
+        c.r30 = sweep.uniform(0, 2);
+        c.r10 = sweep.uniform(0.3, 1);
+        SCOPED_TRACE("case " + std::to_string(k));
+        const Verdict v = check(c);
+        if (v.error) {
+            EXPECT_NE(v.message.find("(R"), std::string::npos) << v.message;
+            std::printf("  case %d refused: %s\n", k, v.message.c_str());
+        }
+        tally.add(v);
+    }
+    tally.print("wider ranges");
+    EXPECT_LE(tally.errors, 100 * 5 / 100);
+}
+
 TEST(GrooveProperties, Kod1AndItsCylinderAndVerticalFlanksAreClean)
 {
     const Verdict v = check(kod1());
@@ -219,18 +249,24 @@ TEST(GrooveProperties, Kod1AndItsCylinderAndVerticalFlanksAreClean)
 // (25.4994 mm gouge); F2 programs the left corner. Item 2: the half-step start (F3).
 TEST(GrooveProperties, DefectSetsOneAndTwoAreClean)
 {
-    for (auto [r3, r11] : {std::pair{160.0, 1.0}, {150.0, 1.0}, {155.0, 1.0}, {158.0, 2.0}}) {
+    // R3 = 160: item 1 (F2), and its half-step start left of Sz (item 2, F3 in DNO_ZP); 150, 155:
+    // clean with F2 (the seed); R11 = 2, R3 = 158: item 2's start right of Tz - R9 (F3 in DNO_ZL).
+    struct Set {
+        double r3, r11;
+        const char* bottomPhase;
+    };
+    for (const Set& set :
+         {Set{160, 1, "DNO_ZP"}, Set{150, 1, "DNO_ZP"}, Set{155, 1, "DNO_ZP"}, Set{158, 2, "DNO_ZL"}}) {
         Case c = kod1();
-        c.g.r3 = r3;
-        c.r11 = r11;
+        c.g.r3 = set.r3;
+        c.r11 = set.r11;
         SCOPED_TRACE(describe(c));
         const Verdict v = check(c);
         EXPECT_FALSE(v.error) << v.message;
+        auto moves = turning::grooveMoves({sim::grooveGeometry(c.g), 3, 0.8, set.r11, 1}, "g", {});
+        ASSERT_TRUE(moves.ok());
+        EXPECT_EQ(moves->calls.back(), set.bottomPhase);
     }
-    Case c = kod1();
-    c.g.r3 = 160;
-    auto computed = run(c);
-    ASSERT_TRUE(computed.ok());
 }
 
 // Item 3: the groove is narrower than R9 (1 + R10) at depth: the thesis loops forever; F5's
@@ -244,6 +280,9 @@ TEST(GrooveProperties, DefectSetThreeTerminatesThroughTheFallback)
     const Verdict v = check(c);
     ASSERT_FALSE(v.error) << v.message;
     EXPECT_TRUE(v.fallback);
+    auto moves = turning::grooveMoves({sim::grooveGeometry(c.g), 23.2, 1.0, 2, 1}, "g", {});
+    ASSERT_TRUE(moves.ok());
+    EXPECT_EQ(moves->calls.back(), "FALLBACK");
 }
 
 // Item 4: after DNO_ZL the thesis re-enters ZP on a finished groove (F4 stops it).
@@ -255,6 +294,10 @@ TEST(GrooveProperties, DefectSetFourEndsAfterTheBottomPhase)
     c.r11 = 2;
     const Verdict v = check(c);
     ASSERT_FALSE(v.error) << v.message;
+    auto moves = turning::grooveMoves({sim::grooveGeometry(c.g), 10, 0.8, 2, 1}, "g", {});
+    ASSERT_TRUE(moves.ok());
+    EXPECT_EQ(moves->calls,
+              (std::vector<std::string>{"ZL", "ZP", "ZL", "ZP", "ZL", "ZP", "ZL", "DNO_ZL"}));  // no ZP after it
 }
 
 // Item 5: the left flank's offset meets the surface below the bottom's offset: an input error.
@@ -268,6 +311,24 @@ TEST(GrooveProperties, DefectSetFiveIsAnInputError)
     ASSERT_FALSE(computed.ok());
     EXPECT_NE(computed.error().message.find("left flank's offset (R8) meets the surface"), std::string::npos)
         << computed.error().message;
+}
+
+// Fix V1: where the staircase of plunges is steeper than a flank the plunges walk into it (a
+// 26.4 mm gouge of this left flank without the check); an input error, and clean with a smaller
+// infeed.
+TEST(GrooveProperties, StaircaseSteeperThanAFlankIsRefused)
+{
+    Case c;
+    c.g = {350, 500, 2.41443, 84.6513, 12.5608, 5.18225, 25.771, 1.5685, 1.32945, 3};
+    c.r10 = 0.32291;
+    c.r11 = 3;
+    c.r30 = 1.60823;
+    const Verdict v = check(c);
+    ASSERT_TRUE(v.error);
+    EXPECT_NE(v.message.find("steeper than the left flank angle (R6)"), std::string::npos) << v.message;
+    c.r11 = 1.9;  // tan(25.771) * 1.9 = 0.917 <= 3 * 0.32291
+    const Verdict w = check(c);
+    EXPECT_FALSE(w.error) << w.message;
 }
 
 // REQ-06 / F6: each check with its message (the operation's name, the value's name and R name).
@@ -306,6 +367,19 @@ TEST(GrooveProperties, Req06EveryInputCheckHasItsMessage)
              p.groove.r5 = 45;
          },
          "cone angle (R2) plus right flank angle (R5) must be below 90 degrees"},
+        {[](GrooveParams& p, ToolController&) {
+             p.stepFactor = 0.1;
+             p.infeedMm = 3;
+         },
+         "the staircase of plunges (R11 = 3 mm deeper every R9*R10 = 0.3 mm) is steeper than the right flank angle "
+         "(R5)"},
+        {[](GrooveParams& p, ToolController&) {
+             p.stepFactor = 0.2;
+             p.infeedMm = 3;
+             p.groove.r6 = 20;
+         },
+         "steeper than the left flank angle (R6): the plunges would cut the flank; take a smaller infeed (R11 <= "
+         "1.648"},
         {[](GrooveParams& p, ToolController&) {
              p.groove.r3 = 5;
              p.groove.r7 = 6;

@@ -149,12 +149,15 @@ private:
     std::uint64_t m_state;
 };
 
-// Random grooves over the ranges of seed-001 §5.3 item 8 (fixed seed: the same cases each run).
-// With `zeroAngles` a cylinder and radial flanks come in too: each of R2, R5, R6 is 0 in a third
-// of the cases (groove-spec F1).
-inline std::vector<Inputs> sweepCases(int count, bool zeroAngles = false)
+// Which random grooves: the ranges of seed-001 §5.3 item 8; the same with each of R2, R5, R6 = 0
+// in a third of the cases (groove-spec F1) and every fourth groove's offset bottom only 1.0 to
+// 1.8 insert widths wide (F5); wider ranges (steeper cones and flanks, other allowances, R10
+// anywhere in range), as the op's property tests have them, but R30 >= R11.
+enum class Sweep { Seed, ZeroAnglesAndNarrow, Wider };
+
+inline std::vector<Inputs> sweepCases(int count, Sweep kind = Sweep::Seed)
 {
-    Random random(zeroAngles ? 29 : 17);
+    Random random(kind == Sweep::Seed ? 17 : kind == Sweep::Wider ? 41 : 29);
     const double widths[] = {3, 5, 10, 23.2}, steps[] = {0.5, 0.6, 0.8, 1.0}, infeeds[] = {0.5, 1, 2, 3};
     std::vector<Inputs> out;
     for (int i = 0; i < count; ++i) {
@@ -168,15 +171,28 @@ inline std::vector<Inputs> sweepCases(int count, bool zeroAngles = false)
         in.r5 = random.uniform(1, 15);
         in.r6 = random.uniform(1, 15);
         in.r7 = in.r8 = 0.5;
-        if (zeroAngles) {
+        in.r10 = random.pick(steps);
+        in.r11 = random.pick(infeeds);
+        in.r30 = 1;
+        if (kind == Sweep::ZeroAnglesAndNarrow) {
             const double keep[] = {0, 1, 1};
             in.r2 *= random.pick(keep);
             in.r5 *= random.pick(keep);
             in.r6 *= random.pick(keep);
+            if (i % 4 == 3)
+                in.r4 = in.r9 * random.uniform(1.0, 1.8) + 1.2;
+        } else if (kind == Sweep::Wider) {
+            in.r3 = random.uniform(50, 120);
+            in.r2 = random.uniform(0, 40);
+            in.r5 = random.uniform(0, 30);
+            in.r6 = random.uniform(0, 30);
+            in.r7 = random.uniform(0, 2);
+            in.r8 = random.uniform(0, 2);
+            // R30 below R11 lets the flank plunges' rapids touch the staircase (open defect P1,
+            // GrooveSubprograms.OpenDefectP1FlankPlungeRapid): here at least one infeed.
+            in.r30 = random.uniform(in.r11, 2);
+            in.r10 = random.uniform(0.3, 1);
         }
-        in.r10 = random.pick(steps);
-        in.r11 = random.pick(infeeds);
-        in.r30 = 1;
         out.push_back(in);
     }
     return out;

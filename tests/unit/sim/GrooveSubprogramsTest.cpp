@@ -297,5 +297,37 @@ TEST(GrooveSubprograms, EachInvalidInputHasItsAlarm)
     }
 }
 
+// Open defect P1 (in mode A as well; proposed in /work/groove-fixes.md): the sweep's WHILE stops
+// where the next plunge would cut the flank, and the flank plunge at the last depth can then lie
+// up to tan(R6)*R11 further left than one step; the floor the previous left-to-right sweep left
+// there is R11 higher, and the rapid at the last plunge's retract height runs R11 - R30 into it
+// when R30 < R11. Pinned here so that the fix flips it: expect then no rapid in stock.
+TEST(GrooveSubprograms, OpenDefectP1FlankPlungeRapid)
+{
+    const Inputs in{350,
+                    500,
+                    19.450787599006137,
+                    109.20346823480213,
+                    20.925334640176771,
+                    0.55958420042085733,
+                    27.774028049448908,
+                    1.4435233532303937,
+                    1.260313149129181,
+                    5,
+                    0.51402154517747134,
+                    1,
+                    0.66202555505687255};
+    const GrooveRun r = runGroove(in);
+    EXPECT_TRUE(r.result.diagnostics.empty()) << r.diagnostics();
+    const TurningReport report = check(r, in);
+    EXPECT_EQ(report.gouges, 0u);
+    ASSERT_EQ(report.rapidsInStock, 1u);
+    EXPECT_NEAR(report.maxRapidDepthMm, in.r11 - in.r30, 1e-3);
+    const Check& f = report.findings.front();
+    const toolpath::SourceRef& source = r.path.source(static_cast<std::size_t>(f.record));
+    EXPECT_EQ(baseName(r.result.files[static_cast<std::size_t>(source.file)]), "PODPROG_ZP");
+    EXPECT_EQ(source.line, 41);  // G0 Z=R40: to the flank plunge
+}
+
 }  // namespace
 }  // namespace camwb::sim::groove_test

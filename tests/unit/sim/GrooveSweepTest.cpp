@@ -8,7 +8,8 @@
 namespace camwb::sim::groove_test {
 namespace {
 
-void expectCleanOrAlarm(const std::vector<Inputs>& all)
+// At least `minCleanPercent` of the cases must run to the end: the sweep must test the strategy, not the alarms.
+void expectCleanOrAlarm(const std::vector<Inputs>& all, int minCleanPercent = 75)
 {
     const int cases = static_cast<int>(all.size());
     std::map<int, int> alarms;
@@ -27,9 +28,10 @@ void expectCleanOrAlarm(const std::vector<Inputs>& all)
         worstRapid = std::max(worstRapid, report.maxRapidDepthMm);
         if (alarm) {
             ++alarms[alarm];
-            // Only the documented run-time alarm: the ranges give valid inputs, except a left
-            // flank too low (seed item 5) or a bottom narrower than the insert.
-            EXPECT_TRUE(alarm == 65010 || alarm == 65014 || alarm == 65016) << r.diagnostics();
+            // The narrow-groove alarm, or an input alarm of the offset contour (seed item 5: a
+            // left flank too low; the right flank; a bottom narrower than the insert) or of the
+            // staircase against a flank (V1): the ranges give no other invalid inputs.
+            EXPECT_TRUE(alarm == 65010 || (alarm >= 65014 && alarm <= 65018)) << r.diagnostics();
             EXPECT_EQ(r.result.diagnostics.size(), 1u) << r.diagnostics();
             continue;
         }
@@ -46,13 +48,17 @@ void expectCleanOrAlarm(const std::vector<Inputs>& all)
         summary += " " + std::to_string(number) + " x" + std::to_string(count);
     std::printf("%s; max gouge %.6f mm, max rapid depth %.6f mm, max leftover %.6f mm2\n", summary.c_str(), worstGouge,
                 worstRapid, worstLeft);
-    EXPECT_GE(clean, cases * 3 / 4) << summary;  // the sweep must test the strategy, not the alarms
+    EXPECT_GE(clean * 100, cases * minCleanPercent) << summary;
 }
 
 TEST(GrooveSubprogramsSweep, RandomGroovesAreCleanOrStopWithAnAlarm) { expectCleanOrAlarm(sweepCases(160)); }
 
-// The same with a cylinder and radial flanks among them.
-TEST(GrooveSubprogramsSweep, ZeroAnglesAmongThem) { expectCleanOrAlarm(sweepCases(160, true)); }
+TEST(GrooveSubprogramsSweep, ZeroAnglesAndNarrowGrooves)
+{
+    expectCleanOrAlarm(sweepCases(160, Sweep::ZeroAnglesAndNarrow), 60);  // a quarter narrow: 65010
+}
+
+TEST(GrooveSubprogramsSweep, WiderRanges) { expectCleanOrAlarm(sweepCases(160, Sweep::Wider)); }
 
 }  // namespace
 }  // namespace camwb::sim::groove_test

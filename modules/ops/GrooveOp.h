@@ -18,9 +18,9 @@ struct GrooveParams {
     // The groove and its allowances: the thesis' R0..R8 (Kod 1 by default). Its r9 (insert
     // width) is not read: the width is the tool's (Tool::kind "groove", diameterMm = width).
     sim::GrooveParameters groove;
-    double stepFactor = 0.8;  // R10: axial step = stepFactor * insert width, 0 < f <= 1
-    double infeedMm = 1;      // R11: each plunge this much deeper than the one before
-    double safetyMm = 1;      // R30: clearance of every retract over the material
+    double stepFactor = 0.8;      // R10: axial step = stepFactor * insert width, 0 < f <= 1
+    double infeedMm = 1;          // R11: each plunge this much deeper than the one before
+    double safetyMm = 1;          // R30: clearance of every retract over the material
     double finalRetractMm = 100;  // the last rapid goes to X = R0 + this (the thesis' R0+100)
     // Cutting data as the thesis' Kod 5 frame has it: G96 S, LIMS, G95 F.
     double surfaceSpeedMPerMin = 300;
@@ -35,8 +35,10 @@ struct GrooveParams {
 // clockwise, surfaceSpeedMPerMin}; Coolant{Flood} when coolant; Rapid X (safe: R0 + finalRetract)
 // then the strategy's moves, every Rapid along one axis only (AxisMask kX or kZ), every Linear in
 // X and Z (never Y); the last Rapid to X = R0 + finalRetractMm; SectionEnd.
-// Errors (nothing produced): each invalid input by name and R name (REQ-06), a tool that is not a
-// grooving insert, an offset bottom narrower than the insert.
+// Errors (nothing produced): each invalid input by name and R name (REQ-06, spec F6, and the
+// staircase check V1 of /work/groove-fixes.md), a tool that is not a grooving insert, an offset
+// bottom narrower than the insert, a strategy that does not finish (iteration limit, REQ-25).
+// The moves are ops/turning/GrooveSweeps: with Kod 1 block by block the thesis' program.
 base::Result<OpResult> computeGroove(const GrooveParams& params, const ToolController& tc, int operationIndex,
                                      const Progress& progress = {});
 

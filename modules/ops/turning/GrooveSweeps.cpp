@@ -4,13 +4,15 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <string>
 
 namespace camwb::ops::turning {
 
 namespace {
 
-// The subprograms' channel R-parameters, by the names of seed §2.3, and the moves they make.
+// The subprograms' channel R-parameters, by the names of seed §2.3 (short names without m_, so
+// that they read as the NC does), and the moves they make.
 // Each method is one subprogram; the comments name the NC blocks they come from.
 class Sweeps {
 public:
@@ -21,6 +23,7 @@ public:
         i(setup.infeedMm),
         c(setup.safetyMm),
         xb(setup.geo.bottomOffsetX),
+        m_limit(setup.iterationLimit),
         m_what(std::move(what))
     {
         rpx = g.r.y;
@@ -42,6 +45,7 @@ private:
     }
 
     void closeGap(double lastZ, double flankZ, double depth, double retractX);
+    double clearFlankMove(double flankZ);
     void zl();
     void zp();
     void dnoZl();
@@ -56,21 +60,24 @@ private:
     {
         if (m.kind != GrooveMove::Kind::RapidX)
             m_z = m.z;
+        if (m.kind != GrooveMove::Kind::RapidZ)
+            m_x = m.x;
         m_out.moves.push_back(m);
     }
-    // One turn of any loop; false (and the error) past kGrooveIterationLimit.
+    // One turn of any loop; false (and the error) past the iteration limit.
     bool turn()
     {
-        if (++m_turns <= kGrooveIterationLimit)
+        if (++m_turns <= m_limit)
             return true;
         if (m_error.empty())
-            m_error = "the groove strategy did not finish within " + std::to_string(kGrooveIterationLimit) +
+            m_error = "the groove strategy did not finish within " + std::to_string(m_limit) +
                       " steps (seed REQ-25); please report the parameters";
         return false;
     }
 
     const sim::GrooveGeometry& g;
     const double w, s, i, c, xb;  // R9, R9*R10, R11, R30, R0-R3+R7
+    const long m_limit;
     std::string m_what;
     double rpx = 0, rpz = 0;  // R12, R13: Rp, start of the left-to-right sweep on the left offset flank
     double bx = 0, bz = 0;    // R21, R20: B, its end (right corner) on the right offset flank
@@ -78,7 +85,7 @@ private:
     long r27 = 0, r28 = 0;    // last regular plunge of ZL / ZP (ROUNDUP(L - 1))
     bool firstPass = true;    // the thesis' R12 == R23
     bool finished = false;    // spec F4: a bottom phase has run
-    double m_z = 0;
+    double m_x = 0, m_z = 0;  // where the insert is
     long m_turns = 0;
     std::string m_error;
     GrooveMoves m_out;
@@ -115,20 +122,22 @@ base::Status Sweeps::run(const std::function<bool(double)>& keepGoing)
         m_out.passes.back().r27 = r27;
         m_out.passes.back().bx = bx;
         m_out.passes.back().bz = bz;
-        if (bx > xb) {
-            zp();
-            if (finished)
-                break;
-            const double L2 = l2();
-            r28 = static_cast<long>(std::ceil(L2 - 1));
-            rpx = bx - r28 * i;
-            rpz = g.zLeft(rpx);
-            firstPass = false;
-            m_out.passes.back().l2 = L2;
-            m_out.passes.back().r28 = r28;
-            m_out.passes.back().rpx = rpx;
-            m_out.passes.back().rpz = rpz;
+        if (!(bx > xb)) {  // fixes.md G2: ZL ended on the flank, yet B is at the bottom
+            fallback();
+            break;
         }
+        zp();
+        if (finished)
+            break;
+        const double L2 = l2();
+        r28 = static_cast<long>(std::ceil(L2 - 1));
+        rpx = bx - r28 * i;
+        rpz = g.zLeft(rpx);
+        firstPass = false;
+        m_out.passes.back().l2 = L2;
+        m_out.passes.back().r28 = r28;
+        m_out.passes.back().rpx = rpx;
+        m_out.passes.back().rpz = rpz;
     }
     if (!m_error.empty())
         return opError(m_what, m_error);
@@ -139,23 +148,40 @@ base::Status Sweeps::run(const std::function<bool(double)>& keepGoing)
 // the plunge on the flank (left corner `flankZ`) may then lie more than an insert's width from the
 // last plunge (left corner `lastZ`, same depth): with R10 = 1, or when tan R5 * R11 (tan R6 * R11)
 // exceeds R9 (1 - R10). The rib between would stand up to the floor above, and the next rapid
-// along Z at the sweep's low retract height would run through it. Plunges at the same depth, an
-// insert's width apart, close the gap first, each retracting to `retractX` (the height the sweep
-// is at); where the plunges overlap (Kod 1) nothing is added.
+// along Z at the sweep's low retract height would run through it. One plunge at the same depth
+// next to the flank plunge closes the gap first, retracting to `retractX` (the height the sweep is
+// at). The gap is at most R9 R10 - R9 + R11 tan(flank) <= R9 R10 (input check V1), so one is
+// enough; where the plunges overlap (Kod 1) nothing is added.
 void Sweeps::closeGap(double lastZ, double flankZ, double depth, double retractX)
 {
     const double dir = flankZ > lastZ ? 1 : -1;  // towards the flank
-    const double gap = (flankZ - lastZ) * dir - w;
-    if (!(gap > 0))
+    if (!((flankZ - lastZ) * dir > w))
         return;
-    for (long j = 1; j * w < gap && turn(); ++j) {
-        rapidZ(lastZ + dir * j * w);
-        feedX(depth);
-        rapidX(retractX);
-    }
     rapidZ(flankZ - dir * w);
     feedX(depth);
     rapidX(retractX);
+}
+
+// Fixes G3, G5 (/work/groove-fixes.md): the rapid to a flank plunge goes further than one step (up
+// to R9 R10 + R11 tan(flank)), so it may pass over a staircase cell one infeed higher than the
+// sweep's retract height clears; so may the rapids of the right-flank clean-ups in the first pass,
+// whose heights the thesis takes at the regular plunges' positions. Going right (ZL, DNO_ZL) in
+// the first pass the surface over the insert's right corner at the destination, going left (ZP)
+// the floor the ZL sweep left at its left corner
+// (R12 - R11 floor((z - R13) / (R9 R10))) is the top of the material there; where the sweep's
+// height is below it the insert first rises to it plus R30. Returns the height the sweep is at.
+double Sweeps::clearFlankMove(double flankZ)
+{
+    double top = -std::numeric_limits<double>::infinity();  // of the material the move passes over
+    if (flankZ > m_z && firstPass)  // ZL: the flank plunge's left corner, its right corner R9 further
+        top = g.surfaceX(flankZ + w);
+    else if (flankZ < m_z)  // ZP
+        top = rpx - i * std::floor((flankZ - rpz) / s);
+    // Only where the rapid would cut (1e-6: touching is what the thesis' own rapids do with R30 =
+    // R11), so that Kod 1 keeps its blocks.
+    if (m_x < top - 1e-6)
+        rapidX(top + c);
+    return m_x;
 }
 
 // PODPROG_ZL: plunges left to right, each R11 deeper, until the bottom or the right flank; then
@@ -177,18 +203,20 @@ void Sweeps::zl()
     const double d = rpx - (r18 - 1) * i;  // the last depth; the right corner on the flank there
     const double zd = g.zRight(d);
     if (r18 >= 1)  // fixes.md G1: no rib between the last plunge and the one on the flank
-        closeGap(rpz + s * (r18 - 1), zd - w, d, retractZl(r18 - 1));
+        closeGap(rpz + s * (r18 - 1), zd - w, d, clearFlankMove(zd - w));
     rapidZ(zd - w);
     feedX(d);
     rapidX(retractZl(r18));
     const double top = rpx + (firstPass ? g.h1 : 0) + r28 * i;  // R12+R56+R28*R11
     const double zTop = g.zRight(top);
     for (long r19 = 1; zd + s * r19 < zTop && turn(); ++r19) {  // only with tan R5 > 0
+        clearFlankMove(zd - w + s * r19);                       // G5
         rapidZ(zd - w + s * r19);
         feedX(g.xRight(zd + s * r19));
         feed(d, zd - w);
         rapidX(firstPass ? g.r.y + g.tan2 * (w + s + s * r18 + s * r19) + c : rpx + i * (2 + r18 + r19) + c);
     }
+    clearFlankMove(zTop - w);  // G5
     rapidZ(zTop - w);
     feedX(top);
     feed(d, zd - w);
@@ -213,7 +241,7 @@ void Sweeps::zp()
     }
     const double d = bx - (r18 - 1) * i;
     const double zd = g.zLeft(d);
-    closeGap(bz - w - s * (r18 - 1), zd, d, bx + r18 * i + c);  // fixes.md G1, mirrored
+    closeGap(bz - w - s * (r18 - 1), zd, d, clearFlankMove(zd));  // fixes.md G1, mirrored
     rapidZ(zd);
     feedX(d);
     rapidX(bx + 2 * i + r18 * i + c);
@@ -247,31 +275,35 @@ void Sweeps::dnoZl()
     const double top = rpx + (firstPass ? g.h1 : 0) + r28 * i;
     const double zTop = g.zRight(top);
     for (long r19 = 1; g.t.x + s * r19 < zTop && turn(); ++r19) {  // N90
+        clearFlankMove(g.t.x - w + s * r19);                       // G5
         rapidZ(g.t.x - w + s * r19);
         feedX(g.xRight(g.t.x + s * r19));
         feed(xb, g.t.x - w);
         rapidX(firstPass ? g.r.y + g.tan2 * (w + s + s * r18 + s * r60 + s * r19) + c
                          : rpx + i * (2 + r18 + r60 + r19) + c);
     }
-    rapidZ(zTop - w);  // N100..N120
+    clearFlankMove(zTop - w);  // G5
+    rapidZ(zTop - w);          // N100..N120
     feedX(top);
     feed(xb, g.t.x - w);
-    rapidX(rpx - (r18 - 1) * i + c);                                        // N130
-    const double start = std::min(rpz + (r18 - 1) * s + s / 2, g.t.x - w);  // F3
+    rapidX(rpx - (r18 - 1) * i + c);  // N130
+    const double m = rpz + (r18 - 1) * s + s / 2;
+    const double start = std::min(m, g.t.x - w);                    // F3
+    const long k0 = static_cast<long>(std::ceil((m - start) / s));  // fixes.md G4
     long r19 = 0;
     for (; start - s * r19 > g.s.x && turn(); ++r19) {  // N150
         rapidZ(start - s * r19);
         feedX(xb);
-        rapidX(xb + 2 * i + r19 * i + c);
+        rapidX(xb + 2 * i + (r19 + k0) * i + c);
     }
     rapidZ(g.s.x);  // N160..N180
     feedX(xb);
-    rapidX(xb + 2 * i + r19 * i + c);
+    rapidX(xb + 2 * i + (r19 + k0) * i + c);
     for (long r61 = 1; g.s.x - s * r61 > rpz && turn(); ++r61) {  // N200, only with tan R6 > 0
         rapidZ(g.s.x - s * r61);
         feedX(g.xLeft(g.s.x - s * r61));
         feed(xb, g.s.x);
-        rapidX(xb + 2 * i + r19 * i + c + r61 * i);
+        rapidX(xb + 2 * i + (r19 + k0) * i + c + r61 * i);
     }
     rapidZ(rpz);  // N210..N230
     feedX(rpx);
@@ -304,22 +336,24 @@ void Sweeps::dnoZp()
     rapidZ(rpz);  // N70..N90
     feedX(rpx);
     feed(xb, g.s.x);
-    rapidX(bx - (r18 - 1) * i + c);                                        // N100
-    const double start = std::max(bz - (r18 - 1) * s - s / 2 - w, g.s.x);  // F2, F3
+    rapidX(bx - (r18 - 1) * i + c);  // N100
+    const double m = bz - (r18 - 1) * s - s / 2 - w;
+    const double start = std::max(m, g.s.x);                        // F2, F3
+    const long k0 = static_cast<long>(std::ceil((start - m) / s));  // fixes.md G4
     long r19 = 0;
     for (; start + s * r19 < g.t.x - w && turn(); ++r19) {  // N120
         rapidZ(start + s * r19);
         feedX(xb);
-        rapidX(xb + 2 * i + r19 * i + c);
+        rapidX(xb + 2 * i + (r19 + k0) * i + c);
     }
     rapidZ(g.t.x - w);  // N130..N150
     feedX(xb);
-    rapidX(xb + 2 * i + r19 * i + c);
+    rapidX(xb + 2 * i + (r19 + k0) * i + c);
     for (long r61 = 1; g.t.x + s * r61 < bz && turn(); ++r61) {  // N170, only with tan R5 > 0
         rapidZ(g.t.x + s * r61 - w);
         feedX(g.xRight(g.t.x + s * r61));
         feed(xb, g.t.x - w);
-        rapidX(xb + 2 * i + r19 * i + c + r61 * i);
+        rapidX(xb + 2 * i + (r19 + k0) * i + c + r61 * i);
     }
     rapidZ(bz - w);  // N180..N200
     feedX(bx);

@@ -21,6 +21,10 @@ struct GrooveMove {
     double x = 0, z = 0;  // a RapidX gives only x, a RapidZ only z; a Feed both
 };
 
+// Every strategy loop counts its turns against this; beyond it the strategy stops with an error
+// (seed REQ-25) rather than run away, whatever the fixes miss.
+inline constexpr long kGrooveIterationLimit = 1000000;
+
 // The strategy's inputs: the groove's geometry and the thesis' R9, R10, R11, R30.
 struct GrooveSetup {
     sim::GrooveGeometry geo;
@@ -28,6 +32,7 @@ struct GrooveSetup {
     double stepFactor = 0.8;  // R10
     double infeedMm = 1;      // R11
     double safetyMm = 1;      // R30
+    long iterationLimit = kGrooveIterationLimit;
 };
 
 // One pass of the main loop as PODPROG_ZAPICH computes it (seed REQ-10): the plunge counts and
@@ -48,10 +53,6 @@ struct GrooveMoves {
     std::vector<GroovePass> passes;
     std::vector<std::string> calls;  // "ZL", "ZP", "DNO_ZL", "DNO_ZP", "FALLBACK" in order
 };
-
-// Every strategy loop counts its turns against this; beyond it the strategy stops with an error
-// (seed REQ-25) rather than run away, whatever the fixes miss.
-inline constexpr long kGrooveIterationLimit = 1000000;
 
 // The strategy's moves from the approach (G0 Z=Rz, G0 X=Rx+R9 tan R2+R30) to the end of the
 // bottom phase; the caller adds the retracts before and after. `keepGoing(fraction done)` is

@@ -162,6 +162,20 @@ TEST(GrooveOracle, SectionRecordsAndParameters)
     EXPECT_FALSE(std::holds_alternative<toolpath::Coolant>(dry->toolpath.record(3)));
 }
 
+// REQ-25: a strategy that runs past its iteration limit stops with an error, not a hang (Kod 1
+// needs a few hundred turns of its loops; 50 cannot finish it).
+TEST(GrooveOracle, IterationLimitStopsWithAnError)
+{
+    turning::GrooveSetup setup = kod1Setup();
+    setup.iterationLimit = 50;
+    auto moves = turning::grooveMoves(setup, "groove \"K\"", {});
+    ASSERT_FALSE(moves.ok());
+    EXPECT_EQ(moves.error().message, "groove \"K\": the groove strategy did not finish within 50 steps (seed REQ-25); "
+                                     "please report the parameters");
+    setup.iterationLimit = 1000;
+    EXPECT_TRUE(turning::grooveMoves(setup, "groove", {}).ok());
+}
+
 TEST(GrooveOracle, CancelledProducesNothing)
 {
     std::atomic<bool> cancel{true};

@@ -11,6 +11,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <functional>
 #include <random>
@@ -32,6 +33,7 @@ std::string describe(const Case& c)
 {
     const auto& g = c.g;
     std::ostringstream s;
+    s.precision(17);
     s << "R0=" << g.r0 << " R1=" << g.r1 << " R2=" << g.r2 << " R3=" << g.r3 << " R4=" << g.r4 << " R5=" << g.r5
       << " R6=" << g.r6 << " R7=" << g.r7 << " R8=" << g.r8 << " R9=" << g.r9 << " R10=" << c.r10 << " R11=" << c.r11
       << " R30=" << c.r30;
@@ -208,7 +210,7 @@ TEST(GrooveProperties, WiderRangesAreClean)
 {
     Sweep sweep(3);
     Tally tally;
-    for (int k = 0; k < 100; ++k) {
+    for (int k = 0; k < 150; ++k) {
         Case c = sweep.next();
         c.g.r3 = sweep.uniform(50, 120);  // shallower ones are mostly refused (Rx <= Sx) at these cones
         c.g.r2 = sweep.uniform(0, 40);
@@ -218,6 +220,8 @@ TEST(GrooveProperties, WiderRangesAreClean)
         c.g.r8 = sweep.uniform(0, 2);
         c.r30 = sweep.uniform(0, 2);
         c.r10 = sweep.uniform(0.3, 1);
+        if (k % 5 == 0)  // no allowances and no safety distance: the rapids touch, never cut
+            c.g.r7 = c.g.r8 = c.r30 = 0;
         SCOPED_TRACE("case " + std::to_string(k));
         const Verdict v = check(c);
         if (v.error) {
@@ -227,7 +231,7 @@ TEST(GrooveProperties, WiderRangesAreClean)
         tally.add(v);
     }
     tally.print("wider ranges");
-    EXPECT_LE(tally.errors, 100 * 5 / 100);
+    EXPECT_LE(tally.errors, 150 * 5 / 100);
 }
 
 TEST(GrooveProperties, Kod1AndItsCylinderAndVerticalFlanksAreClean)
@@ -242,6 +246,76 @@ TEST(GrooveProperties, Kod1AndItsCylinderAndVerticalFlanksAreClean)
         const Verdict w = check(c);
         EXPECT_FALSE(w.error) << w.message;
         EXPECT_FALSE(w.fallback);
+    }
+}
+
+// Found by sweeps ten times larger (fixes G3 in /work/groove-fixes.md): the rapid to a flank
+// plunge passes over a staircase cell one infeed higher than the sweep's retract clears (2 mm and
+// 1 mm into the stock before the fix).
+TEST(GrooveProperties, RapidsToAFlankPlungeClearTheStaircase)
+{
+    Case a;
+    a.g = {350, 500, 11.312, 70.1017, 4.60558, 8.51472, 14.9373, 0.5, 0.5, 3};
+    a.r10 = 0.5;
+    a.r11 = 3;
+    Case b;
+    b.g = {350, 500, 0, 53.7394, 76.0301, 13.6712, 13.4685, 0.5, 0.5, 10};
+    b.r10 = 0.6;
+    b.r11 = 2;
+    for (const Case& c : {a, b}) {
+        const Verdict v = check(c);
+        EXPECT_FALSE(v.error) << v.message;
+        EXPECT_FALSE(v.fallback);
+    }
+}
+
+// Fix G5: in the first pass the right-flank clean-up's rapids rise over the surface at the
+// insert's right corner, where the thesis' heights (taken at the regular plunges) are short by up
+// to tan R2 tan R5 R11 - R30 (0.24 mm and 0.36 mm into the stock before the fix).
+TEST(GrooveProperties, FirstPassFlankCleanUpRisesOverTheSurface)
+{
+    Case a;
+    a.g = {
+        350, 500, 14.099997542798519, 110.57875990169123, 24.738170055206865, 22.158851539716125, 21.470171611290425, 0,
+        0,   10};
+    a.r10 = 0.46919938912615178;
+    a.r11 = 3;
+    a.r30 = 0;
+    Case b;
+    b.g = {350,
+           500,
+           24.222297798842192,
+           52.418549512512982,
+           11.595912560587749,
+           21.452150365803391,
+           3.6514632613398135,
+           0.67323407251387835,
+           0.070180295966565609,
+           5};
+    b.r10 = 0.55159296221099785;
+    b.r11 = 3;
+    b.r30 = 0.031098342966288328;
+    for (const Case& c : {a, b}) {
+        const Verdict v = check(c);
+        EXPECT_FALSE(v.error) << v.message;
+    }
+}
+
+// Fix G4: where F3 clamps the half-step start of the final bottom sweep, its retract heights count
+// the steps the clamp skipped (0.69 mm and 1.24 mm into the staircase before the fix).
+TEST(GrooveProperties, ClampedBottomSweepRetractsOverTheStaircase)
+{
+    Case a;
+    a.g = {350, 500, 17.3078, 73.7303, 23.3031, 0, 6.93919, 0.5, 0.5, 3};
+    a.r10 = 0.5;
+    a.r11 = 2;
+    Case b;
+    b.g = {350, 500, 25.3985, 91.9919, 9.24829, 10.0849, 8.54834, 0.5, 0.5, 5};
+    b.r10 = 0.5;
+    b.r11 = 3;
+    for (const Case& c : {a, b}) {
+        const Verdict v = check(c);
+        EXPECT_FALSE(v.error) << v.message;
     }
 }
 
@@ -393,6 +467,8 @@ TEST(GrooveProperties, Req06EveryInputCheckHasItsMessage)
          "narrower than the 3 mm insert (R9)"},
         {[](GrooveParams& p, ToolController&) { p.finalRetractMm = 0; }, "final retract must be positive"},
         {[](GrooveParams& p, ToolController&) { p.feedMmPerRev = 0; }, "feed must be positive"},
+        {[](GrooveParams& p, ToolController&) { p.maxRpm = 0; }, "cutting speed and speed limit must be positive"},
+        {[](GrooveParams& p, ToolController&) { p.groove.r1 = std::nan(""); }, "start point Z (R1) must be a number"},
     };
     for (const Bad& b : bad) {
         GrooveParams p;

@@ -297,12 +297,11 @@ TEST(GrooveSubprograms, EachInvalidInputHasItsAlarm)
     }
 }
 
-// Open defect P1 (in mode A as well; proposed in /work/groove-fixes.md): the sweep's WHILE stops
-// where the next plunge would cut the flank, and the flank plunge at the last depth can then lie
-// up to tan(R6)*R11 further left than one step; the floor the previous left-to-right sweep left
-// there is R11 higher, and the rapid at the last plunge's retract height runs R11 - R30 into it
-// when R30 < R11. Pinned here so that the fix flips it: expect then no rapid in stock.
-TEST(GrooveSubprograms, OpenDefectP1FlankPlungeRapid)
+// groove-fixes.md G3 (found here as P1): the sweep's WHILE stops where the next plunge would cut
+// the flank, and the flank plunge at the last depth can lie up to tan(R6)*R11 further left than
+// one step, over the previous sweep's floor one R11 higher: the rapid at the last plunge's
+// retract height ran R11 - R30 = 0.338 mm into it (ZP, G0 Z=R40). Now it rises first.
+TEST(GrooveSubprograms, FlankPlungeRapidRisesOverTheStaircase)
 {
     const Inputs in{350,
                     500,
@@ -318,15 +317,25 @@ TEST(GrooveSubprograms, OpenDefectP1FlankPlungeRapid)
                     1,
                     0.66202555505687255};
     const GrooveRun r = runGroove(in);
-    EXPECT_TRUE(r.result.diagnostics.empty()) << r.diagnostics();
-    const TurningReport report = check(r, in);
-    EXPECT_EQ(report.gouges, 0u);
-    ASSERT_EQ(report.rapidsInStock, 1u);
-    EXPECT_NEAR(report.maxRapidDepthMm, in.r11 - in.r30, 1e-3);
-    const Check& f = report.findings.front();
-    const toolpath::SourceRef& source = r.path.source(static_cast<std::size_t>(f.record));
-    EXPECT_EQ(baseName(r.result.files[static_cast<std::size_t>(source.file)]), "PODPROG_ZP");
-    EXPECT_EQ(source.line, 41);  // G0 Z=R40: to the flank plunge
+    const std::vector<std::string> c = calls(r);
+    ASSERT_FALSE(c.empty()) << r.diagnostics();
+    expectFinishedClean(r, in, c.back());
+}
+
+// groove-fixes.md G3, G5 with no safety distance at all, on steep flanks and cones: the first
+// pass' clean-up rapids and the flank plunges' rapids only touch (R30 = 0, seed §2.2).
+TEST(GrooveSubprograms, NoSafetyDistanceOnSteepFlanksOnlyTouches)
+{
+    for (Inputs in : sweepCases(60, Sweep::Wider)) {
+        in.r30 = 0;
+        SCOPED_TRACE(describe(in));
+        const GrooveRun r = runGroove(in);
+        if (r.alarm())
+            continue;
+        const TurningReport report = check(r, in);
+        EXPECT_EQ(report.gouges, 0u) << report.maxGougeMm;
+        EXPECT_EQ(report.rapidsInStock, 0u) << report.maxRapidDepthMm;
+    }
 }
 
 }  // namespace

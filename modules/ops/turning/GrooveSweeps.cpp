@@ -45,7 +45,7 @@ private:
     }
 
     void closeGap(double lastZ, double flankZ, double depth, double retractX);
-    double clearFlankMove(double flankZ);
+    double riseForRapidZ(double toZ);
     void zl();
     void zp();
     void dnoZl();
@@ -162,21 +162,21 @@ void Sweeps::closeGap(double lastZ, double flankZ, double depth, double retractX
     rapidX(retractX);
 }
 
-// Fixes G3, G5 (/work/groove-fixes.md): the rapid to a flank plunge goes further than one step (up
-// to R9 R10 + R11 tan(flank)), so it may pass over a staircase cell one infeed higher than the
-// sweep's retract height clears; so may the rapids of the right-flank clean-ups in the first pass,
-// whose heights the thesis takes at the regular plunges' positions. Going right (ZL, DNO_ZL) in
-// the first pass the surface over the insert's right corner at the destination, going left (ZP)
-// the floor the ZL sweep left at its left corner
-// (R12 - R11 floor((z - R13) / (R9 R10))) is the top of the material there; where the sweep's
-// height is below it the insert first rises to it plus R30. Returns the height the sweep is at.
-double Sweeps::clearFlankMove(double flankZ)
+// Fixes G3, G5 (/work/groove-fixes.md), before a rapid along Z to left corner `toZ`: the rapid to
+// a flank plunge goes further than one step (up to R9 R10 + R11 tan(flank)), so it may pass over a
+// staircase cell one infeed higher than the sweep's retract height clears; so may the rapids of
+// the right-flank clean-ups in the first pass, whose heights the thesis takes at the regular
+// plunges' positions. The top of the material there: going right in the first pass the surface
+// at the insert's right corner, going left (ZP) the floor the ZL sweep left at the left corner,
+// R12 - R11 floor((z - R13) / (R9 R10)). Where the sweep is below it the insert first rises to it
+// plus R30. Returns the height the sweep is at.
+double Sweeps::riseForRapidZ(double toZ)
 {
     double top = -std::numeric_limits<double>::infinity();  // of the material the move passes over
-    if (flankZ > m_z && firstPass)  // ZL: the flank plunge's left corner, its right corner R9 further
-        top = g.surfaceX(flankZ + w);
-    else if (flankZ < m_z)  // ZP
-        top = rpx - i * std::floor((flankZ - rpz) / s);
+    if (toZ > m_z && firstPass)                             // ZL, DNO_ZL
+        top = g.surfaceX(toZ + w);
+    else if (toZ < m_z)  // ZP: toZ >= R13 (the flank plunge lies right of Rp)
+        top = rpx - i * std::floor((toZ - rpz) / s);
     // Only where the rapid would cut (1e-6: touching is what the thesis' own rapids do with R30 =
     // R11), so that Kod 1 keeps its blocks.
     if (m_x < top - 1e-6)
@@ -203,20 +203,20 @@ void Sweeps::zl()
     const double d = rpx - (r18 - 1) * i;  // the last depth; the right corner on the flank there
     const double zd = g.zRight(d);
     if (r18 >= 1)  // fixes.md G1: no rib between the last plunge and the one on the flank
-        closeGap(rpz + s * (r18 - 1), zd - w, d, clearFlankMove(zd - w));
+        closeGap(rpz + s * (r18 - 1), zd - w, d, riseForRapidZ(zd - w));
     rapidZ(zd - w);
     feedX(d);
     rapidX(retractZl(r18));
     const double top = rpx + (firstPass ? g.h1 : 0) + r28 * i;  // R12+R56+R28*R11
     const double zTop = g.zRight(top);
     for (long r19 = 1; zd + s * r19 < zTop && turn(); ++r19) {  // only with tan R5 > 0
-        clearFlankMove(zd - w + s * r19);                       // G5
+        riseForRapidZ(zd - w + s * r19);                        // G5
         rapidZ(zd - w + s * r19);
         feedX(g.xRight(zd + s * r19));
         feed(d, zd - w);
         rapidX(firstPass ? g.r.y + g.tan2 * (w + s + s * r18 + s * r19) + c : rpx + i * (2 + r18 + r19) + c);
     }
-    clearFlankMove(zTop - w);  // G5
+    riseForRapidZ(zTop - w);  // G5
     rapidZ(zTop - w);
     feedX(top);
     feed(d, zd - w);
@@ -241,7 +241,7 @@ void Sweeps::zp()
     }
     const double d = bx - (r18 - 1) * i;
     const double zd = g.zLeft(d);
-    closeGap(bz - w - s * (r18 - 1), zd, d, clearFlankMove(zd));  // fixes.md G1, mirrored
+    closeGap(bz - w - s * (r18 - 1), zd, d, riseForRapidZ(zd));  // fixes.md G1, mirrored
     rapidZ(zd);
     feedX(d);
     rapidX(bx + 2 * i + r18 * i + c);
@@ -275,15 +275,15 @@ void Sweeps::dnoZl()
     const double top = rpx + (firstPass ? g.h1 : 0) + r28 * i;
     const double zTop = g.zRight(top);
     for (long r19 = 1; g.t.x + s * r19 < zTop && turn(); ++r19) {  // N90
-        clearFlankMove(g.t.x - w + s * r19);                       // G5
+        riseForRapidZ(g.t.x - w + s * r19);                        // G5
         rapidZ(g.t.x - w + s * r19);
         feedX(g.xRight(g.t.x + s * r19));
         feed(xb, g.t.x - w);
         rapidX(firstPass ? g.r.y + g.tan2 * (w + s + s * r18 + s * r60 + s * r19) + c
                          : rpx + i * (2 + r18 + r60 + r19) + c);
     }
-    clearFlankMove(zTop - w);  // G5
-    rapidZ(zTop - w);          // N100..N120
+    riseForRapidZ(zTop - w);  // G5
+    rapidZ(zTop - w);         // N100..N120
     feedX(top);
     feed(xb, g.t.x - w);
     rapidX(rpx - (r18 - 1) * i + c);  // N130

@@ -51,14 +51,14 @@ void expectCleanOrAlarm(const std::vector<Inputs>& all, int minCleanPercent = 75
     EXPECT_GE(clean * 100, cases * minCleanPercent) << summary;
 }
 
-TEST(GrooveSubprogramsSweep, RandomGroovesAreCleanOrStopWithAnAlarm) { expectCleanOrAlarm(sweepCases(160)); }
+TEST(GrooveSubprogramsSweep, RandomGroovesAreCleanOrStopWithAnAlarm) { expectCleanOrAlarm(sweepCases(400)); }
 
 TEST(GrooveSubprogramsSweep, ZeroAnglesAndNarrowGrooves)
 {
-    expectCleanOrAlarm(sweepCases(160, Sweep::ZeroAnglesAndNarrow), 60);  // a quarter narrow: 65010
+    expectCleanOrAlarm(sweepCases(400, Sweep::ZeroAnglesAndNarrow), 60);  // a quarter narrow: 65010
 }
 
-TEST(GrooveSubprogramsSweep, WiderRanges) { expectCleanOrAlarm(sweepCases(160, Sweep::Wider)); }
+TEST(GrooveSubprogramsSweep, WiderRanges) { expectCleanOrAlarm(sweepCases(400, Sweep::Wider)); }
 
 }  // namespace
 }  // namespace camwb::sim::groove_test

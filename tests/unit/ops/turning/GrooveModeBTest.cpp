@@ -145,14 +145,14 @@ void expectSameOverSweep(const std::vector<Inputs>& cases)
 
 // The random sweeps of the subprogram tests (seed §5.3 item 8's ranges, zero angles and narrow
 // grooves, wider ranges; fixed seeds).
-TEST(GrooveModeB, Req22RandomSweep) { expectSameOverSweep(sim::groove_test::sweepCases(160)); }
+TEST(GrooveModeB, Req22RandomSweep) { expectSameOverSweep(sim::groove_test::sweepCases(400)); }
 TEST(GrooveModeB, Req22ZeroAnglesAndNarrowGrooves)
 {
-    expectSameOverSweep(sim::groove_test::sweepCases(160, sim::groove_test::Sweep::ZeroAnglesAndNarrow));
+    expectSameOverSweep(sim::groove_test::sweepCases(400, sim::groove_test::Sweep::ZeroAnglesAndNarrow));
 }
 TEST(GrooveModeB, Req22WiderRanges)
 {
-    expectSameOverSweep(sim::groove_test::sweepCases(160, sim::groove_test::Sweep::Wider));
+    expectSameOverSweep(sim::groove_test::sweepCases(400, sim::groove_test::Sweep::Wider));
 }
 
 }  // namespace

@@ -262,7 +262,12 @@ TEST(GrooveProperties, RapidsToAFlankPlungeClearTheStaircase)
     b.g = {350, 500, 0, 53.7394, 76.0301, 13.6712, 13.4685, 0.5, 0.5, 10};
     b.r10 = 0.6;
     b.r11 = 2;
-    for (const Case& c : {a, b}) {
+    Case p1;  // the mode-B author's case for the same rapid (groove-fixes P1): 0.338 mm before G3
+    p1.g = {350, 500, 19.4508, 109.2035, 20.9253, 0.5596, 27.774, 1.4435, 1.2603, 5};
+    p1.r10 = 0.51402;
+    p1.r11 = 1;
+    p1.r30 = 0.66203;
+    for (const Case& c : {a, b, p1}) {
         const Verdict v = check(c);
         EXPECT_FALSE(v.error) << v.message;
         EXPECT_FALSE(v.fallback);

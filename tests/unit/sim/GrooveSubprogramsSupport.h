@@ -1,7 +1,7 @@
 // Helpers of the mode-B groove subprogram tests: a main program as the post writes it (Kod 5's
 // frame, the input block R0..R11 R30, PODPROG_ZAPICH) run on posts/sinumerik840d-turn/groove,
-// the groove's stock and offset contour for the turning check (general intersections, so R2 = 0
-// and R6 = 0 work too: sim::grooveGeometry has the thesis' closed forms), and the moves.
+// the turning check on the groove's stock and offset contour, the moves, and the random cases of
+// the sweeps (seed §5.3 item 8's ranges).
 #pragma once
 
 #include "geom/RegionOps.h"
@@ -14,6 +14,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <numbers>
 #include <string>
@@ -118,51 +119,89 @@ inline std::vector<Move> subprogramMoves(const GrooveRun& r)
     return out;
 }
 
-// The groove's corners (X, Z) by general line intersections (groove-spec F1).
-struct Contour {
-    double sx, sz, tx, tz, ux, uz, rx, rz, c1x, c1z;
-};
-
-inline Contour contour(const Inputs& in)
+inline GrooveParameters grooveParameters(const Inputs& in)
 {
-    const auto rad = [](double deg) { return deg * std::numbers::pi / 180; };
-    const double t2 = std::tan(rad(in.r2)), t5 = std::tan(rad(in.r5)), t6 = std::tan(rad(in.r6));
-    Contour c;
-    c.sx = c.tx = in.r0 - in.r3 + in.r7;
-    c.tz = in.r1 - in.r3 * t5 - (in.r8 / std::cos(rad(in.r5)) - in.r7 * t5);
-    c.sz = in.r1 - in.r3 * t5 - in.r4 + in.r8 / std::cos(rad(in.r6)) - in.r7 * t6;
-    c.ux = (in.r0 + (c.tz - in.r1 - t5 * c.tx) * t2) / (1 - t2 * t5);
-    c.uz = c.tz + t5 * (c.ux - c.tx);
-    c.rx = (in.r0 + (c.sz + t6 * c.sx - in.r1) * t2) / (1 + t2 * t6);
-    c.rz = c.sz - t6 * (c.rx - c.sx);
-    const double blz = in.r1 - in.r3 * t5 - in.r4, blx = in.r0 - in.r3;
-    c.c1x = (in.r0 + (blz + t6 * blx - in.r1) * t2) / (1 + t2 * t6);
-    c.c1z = blz - t6 * (c.c1x - blx);
-    return c;
-}
-
-// The shaft (margin beyond C1 and P) and the part that must stay: the shaft less the offset groove.
-inline TurningRegion shaft(const Inputs& in, bool withGroove, double margin = 20)
-{
-    const Contour c = contour(in);
-    const double t2 = std::tan(in.r2 * std::numbers::pi / 180);
-    const double zl = c.c1z - margin, zr = in.r1 + margin;
-    const auto surface = [&](double z) { return in.r0 + (z - in.r1) * t2; };
-    std::string points = number(surface(zl)) + "," + number(zl) + "\n";
-    if (withGroove)
-        for (const auto& [x, z] : {std::pair{c.rx, c.rz}, {c.sx, c.sz}, {c.tx, c.tz}, {c.ux, c.uz}})
-            points += number(x) + "," + number(z) + "\n";
-    points += number(surface(zr)) + "," + number(zr) + "\n";
-    auto region = parseProfilePoints(points, "groove");
-    EXPECT_TRUE(region.ok()) << region.error().toString();
-    return region ? region.value() : TurningRegion{};
+    return {in.r0, in.r1, in.r2, in.r3, in.r4, in.r5, in.r6, in.r7, in.r8, in.r9};
 }
 
 inline TurningReport check(const GrooveRun& r, const Inputs& in)
 {
     TurningOptions options;
     options.insert.widthMm = in.r9;
-    return checkTurning(r.path, shaft(in, false), shaft(in, true), options);
+    return checkTurning(r.path, grooveStock(grooveParameters(in)), grooveOffsetPart(grooveParameters(in)), options);
+}
+
+// splitmix64: the same numbers on every platform (std distributions are not specified exactly).
+class Random {
+public:
+    explicit Random(std::uint64_t seed) : m_state(seed) {}
+    double uniform(double a, double b) { return a + (b - a) * static_cast<double>(next() >> 11) * 0x1.0p-53; }
+    template <typename T, std::size_t N> T pick(const T (&values)[N]) { return values[next() % N]; }
+
+private:
+    std::uint64_t next()
+    {
+        std::uint64_t z = (m_state += 0x9e3779b97f4a7c15ull);
+        z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ull;
+        z = (z ^ (z >> 27)) * 0x94d049bb133111ebull;
+        return z ^ (z >> 31);
+    }
+    std::uint64_t m_state;
+};
+
+// Which random grooves: the ranges of seed-001 §5.3 item 8; the same with each of R2, R5, R6 = 0
+// in a third of the cases (groove-spec F1) and every fourth groove's offset bottom only 1.0 to
+// 1.8 insert widths wide (F5); wider ranges (steeper cones and flanks, other allowances, R10
+// anywhere in range), as the op's property tests have them.
+enum class Sweep { Seed, ZeroAnglesAndNarrow, Wider };
+
+inline std::vector<Inputs> sweepCases(int count, Sweep kind = Sweep::Seed)
+{
+    Random random(kind == Sweep::Seed ? 17 : kind == Sweep::Wider ? 41 : 29);
+    const double widths[] = {3, 5, 10, 23.2}, steps[] = {0.5, 0.6, 0.8, 1.0}, infeeds[] = {0.5, 1, 2, 3};
+    std::vector<Inputs> out;
+    for (int i = 0; i < count; ++i) {
+        Inputs in;
+        in.r0 = 350;
+        in.r1 = 500;
+        in.r2 = random.uniform(3, 30);
+        in.r3 = random.uniform(20, 120);
+        in.r9 = random.pick(widths);
+        in.r4 = random.uniform(1.5 * in.r9, 80);
+        in.r5 = random.uniform(1, 15);
+        in.r6 = random.uniform(1, 15);
+        in.r7 = in.r8 = 0.5;
+        in.r10 = random.pick(steps);
+        in.r11 = random.pick(infeeds);
+        in.r30 = 1;
+        if (kind == Sweep::ZeroAnglesAndNarrow) {
+            const double keep[] = {0, 1, 1};
+            in.r2 *= random.pick(keep);
+            in.r5 *= random.pick(keep);
+            in.r6 *= random.pick(keep);
+            if (i % 4 == 3)
+                in.r4 = in.r9 * random.uniform(1.0, 1.8) + 1.2;
+        } else if (kind == Sweep::Wider) {
+            in.r3 = random.uniform(50, 120);
+            in.r2 = random.uniform(0, 40);
+            in.r5 = random.uniform(0, 30);
+            in.r6 = random.uniform(0, 30);
+            in.r7 = random.uniform(0, 2);
+            in.r8 = random.uniform(0, 2);
+            in.r30 = random.uniform(0, 2);
+            in.r10 = random.uniform(0.3, 1);
+        }
+        out.push_back(in);
+    }
+    return out;
+}
+
+inline std::string describe(const Inputs& in)
+{
+    return "R0=" + number(in.r0) + " R1=" + number(in.r1) + " R2=" + number(in.r2) + " R3=" + number(in.r3) +
+           " R4=" + number(in.r4) + " R5=" + number(in.r5) + " R6=" + number(in.r6) + " R7=" + number(in.r7) +
+           " R8=" + number(in.r8) + " R9=" + number(in.r9) + " R10=" + number(in.r10) + " R11=" + number(in.r11) +
+           " R30=" + number(in.r30);
 }
 
 }  // namespace camwb::sim::groove_test

@@ -5,6 +5,7 @@
 #include "GrooveSubprogramsSupport.h"
 
 #include <algorithm>
+#include <fstream>
 
 namespace camwb::sim::groove_test {
 namespace {
@@ -48,6 +49,45 @@ void expectFinishedClean(const GrooveRun& r, const Inputs& in, const std::string
     EXPECT_EQ(std::count_if(c.begin(), c.end(), [](const std::string& n) { return n.starts_with("PODPROG_DNO"); }), 1);
 }
 
+// REQ-21: what the control needs of the files themselves: PROC with the file's name, M17 at the
+// end, one block per line with balanced parentheses, G0 (never GO), `=` before every expression
+// value of an axis, plain ASCII.
+TEST(GrooveSubprograms, FilesAreWrittenAsTheControlReadsThem)
+{
+    for (const std::string name : {"PODPROG_ZAPICH", "PODPROG_ZL", "PODPROG_ZP", "PODPROG_DNO_ZL", "PODPROG_DNO_ZP"}) {
+        SCOPED_TRACE(name);
+        std::ifstream file(grooveDir() + "/" + name + ".SPF", std::ios::binary);
+        ASSERT_TRUE(file) << grooveDir();
+        std::vector<std::string> lines;
+        for (std::string line; std::getline(file, line);)
+            lines.push_back(line);
+        ASSERT_GT(lines.size(), 2u);
+        EXPECT_EQ(lines.front(), "PROC " + name);
+        EXPECT_EQ(lines.back(), "M17");
+        for (std::size_t i = 0; i < lines.size(); ++i) {
+            const std::string& text = lines[i];
+            SCOPED_TRACE("line " + std::to_string(i + 1) + ": " + text);
+            EXPECT_TRUE(std::all_of(text.begin(), text.end(), [](char c) { return c >= 32 && c < 127; }));
+            std::string code = text.substr(0, text.find(';'));
+            if (const auto quote = code.find('"'); quote != std::string::npos)
+                code.erase(quote, code.rfind('"') - quote + 1);  // MSG text
+            int depth = 0;
+            for (const char c : code) {
+                depth += c == '(' ? 1 : c == ')' ? -1 : 0;
+                EXPECT_GE(depth, 0);
+            }
+            EXPECT_EQ(depth, 0);
+            for (std::size_t at = 0; at + 1 < code.size(); ++at) {
+                const bool wordStart = at == 0 || code[at - 1] == ' ';
+                if (wordStart && code.compare(at, 3, "GO ") == 0)
+                    ADD_FAILURE() << "GO for G0";
+                if (wordStart && (code[at] == 'X' || code[at] == 'Z') && code[at + 1] != '=')
+                    ADD_FAILURE() << "axis value without '='";
+            }
+        }
+    }
+}
+
 // Kod 1 gives the reconstructed thesis programs' 574 moves: same G0/G1, X and Z within 1e-4 mm
 // (seed REQ-14; the fixes change nothing where the thesis' program was right).
 TEST(GrooveSubprograms, Kod1IsTheThesisProgramMoveForMove)
@@ -55,8 +95,7 @@ TEST(GrooveSubprograms, Kod1IsTheThesisProgramMoveForMove)
     const GrooveRun ours = runGroove({});
     EXPECT_TRUE(ours.result.completed);
     EXPECT_TRUE(ours.result.diagnostics.empty()) << ours.diagnostics();
-    std::string kod5 =
-        "G54 G18\nG90 G71\nG0 X380\nT=5 D1\nG96 S300 LIMS=3000 M3 M8\nG95 F0.2\nPODPROG_ZAPICH\nM30\n";
+    std::string kod5 = "G54 G18\nG90 G71\nG0 X380\nT=5 D1\nG96 S300 LIMS=3000 M3 M8\nG95 F0.2\nPODPROG_ZAPICH\nM30\n";
     const GrooveRun thesis = interpretText(kod5, seedDir() + "/reconstructed");
     ASSERT_TRUE(thesis.result.completed) << thesis.diagnostics();
     const std::vector<Move> a = subprogramMoves(ours), b = subprogramMoves(thesis);
@@ -76,9 +115,34 @@ TEST(GrooveSubprograms, Kod1IsTheThesisProgramMoveForMove)
     expectFinishedClean(ours, {}, "PODPROG_DNO_ZL");
 }
 
-// F1: the offset corners T, U, R, S and H1 the subprograms compute equal the thesis' closed forms
-// (sim::grooveGeometry) to 1e-9 wherever those exist (R2, R5, R6 > 0). The main program moves to
-// them after the call, so the moves show the R parameters.
+// The thesis' closed forms (seed §2.5: Rov. 7, 9, 20-23, 31-33, 43-46, 54-55), only defined for
+// R2, R5, R6 > 0: T, U, R, S as (X, Z), and H1.
+struct ClosedForms {
+    double tx, tz, ux, uz, rx, rz, sx, sz, h1;
+};
+ClosedForms closedForms(const Inputs& in)
+{
+    const auto tanD = [](double deg) { return std::tan(deg * std::numbers::pi / 180); };
+    const auto cosD = [](double deg) { return std::cos(deg * std::numbers::pi / 180); };
+    const double t2 = tanD(in.r2), t5 = tanD(in.r5), t6 = tanD(in.r6);
+    const double d = in.r3 * t5, c = (in.r3 - t2 * (in.r4 + in.r3 * t5)) / (t2 + 1 / t6), h1 = in.r3 - c / t6;
+    const double dRx = (in.r8 * tanD(in.r2 - in.r6) + in.r8 * t6) * cosD(in.r6);
+    const double dUx = (in.r8 * tanD(in.r2 + in.r5) - in.r8 * t5) * cosD(in.r5);
+    const double xb = in.r0 - in.r3 + in.r7;
+    return {xb,
+            in.r1 - d - (in.r8 / cosD(in.r5) - in.r7 * t5),
+            in.r0 - dUx,
+            in.r1 - dUx / t2,
+            in.r0 - h1 + dRx,
+            in.r1 - d - in.r4 - c + dRx / t2,
+            xb,
+            in.r1 - d - in.r4 + in.r8 / cosD(in.r6) - in.r7 * t6,
+            h1};
+}
+
+// F1: the offset corners T, U, R, S and H1 the subprograms compute by line intersections equal
+// the thesis' closed forms to 1e-9 wherever those exist (R2, R5, R6 > 0). The main program moves
+// to them after the call, so the moves show the R parameters.
 TEST(GrooveSubprograms, GeneralIntersectionsEqualTheClosedForms)
 {
     const std::string show = "G0 X=R14 Z=R15\nG0 X=R16 Z=R17\nG0 X=R23 Z=R24\nG0 X=R25 Z=R26\nG0 X=R38\n";
@@ -92,14 +156,13 @@ TEST(GrooveSubprograms, GeneralIntersectionsEqualTheClosedForms)
                 at.push_back(m->to);
         ASSERT_GE(at.size(), 5u);
         at.erase(at.begin(), at.end() - 5);
-        GrooveParameters g{in.r0, in.r1, in.r2, in.r3, in.r4, in.r5, in.r6, in.r7, in.r8, in.r9};
-        const GrooveGeometry geo = grooveGeometry(g);
-        const Vec2 expected[] = {geo.t, geo.u, geo.r, geo.s};
+        const ClosedForms f = closedForms(in);
+        const double expected[4][2] = {{f.tx, f.tz}, {f.ux, f.uz}, {f.rx, f.rz}, {f.sx, f.sz}};
         for (int i = 0; i < 4; ++i) {
-            EXPECT_NEAR(at[i].x, expected[i].y, 1e-9) << i;
-            EXPECT_NEAR(at[i].z, expected[i].x, 1e-9) << i;
+            EXPECT_NEAR(at[i].x, expected[i][0], 1e-9) << i;
+            EXPECT_NEAR(at[i].z, expected[i][1], 1e-9) << i;
         }
-        EXPECT_NEAR(at[4].x, in.r0 - geo.c1.y, 1e-9);  // R38 = H1
+        EXPECT_NEAR(at[4].x, f.h1, 1e-9);  // R38 = H1
     }
 }
 
@@ -216,6 +279,9 @@ TEST(GrooveSubprograms, EachInvalidInputHasItsAlarm)
          65014, "Rx<=Sx"},
         {[](Inputs& i) { i.r2 = 50, i.r3 = 9, i.r4 = 7, i.r5 = 17, i.r6 = 25, i.r7 = 2, i.r8 = 4.5; }, 65015, "Ux<=Tx"},
         {[](Inputs& i) { i.r9 = 44.5; }, 65016, "R9"},
+        // groove-fixes.md V1: 3 mm deeper every 0.96 mm is steeper than a 30 (25.8) degree flank
+        {[](Inputs& i) { i.r5 = 30, i.r10 = 0.32, i.r11 = 3; }, 65017, "right flank angle R5"},
+        {[](Inputs& i) { i.r6 = 25.8, i.r10 = 0.32, i.r11 = 3; }, 65018, "left flank angle R6"},
     };
     for (const Case& c : cases) {
         Inputs in;
@@ -228,6 +294,47 @@ TEST(GrooveSubprograms, EachInvalidInputHasItsAlarm)
         EXPECT_TRUE(subprogramMoves(r).empty()) << c.alarm;
         EXPECT_FALSE(r.result.completed);
         EXPECT_EQ(r.result.diagnostics.size(), 1u) << r.diagnostics();
+    }
+}
+
+// groove-fixes.md G3 (found here as P1): the sweep's WHILE stops where the next plunge would cut
+// the flank, and the flank plunge at the last depth can lie up to tan(R6)*R11 further left than
+// one step, over the previous sweep's floor one R11 higher: the rapid at the last plunge's
+// retract height ran R11 - R30 = 0.338 mm into it (ZP, G0 Z=R40). Now it rises first.
+TEST(GrooveSubprograms, FlankPlungeRapidRisesOverTheStaircase)
+{
+    const Inputs in{350,
+                    500,
+                    19.450787599006137,
+                    109.20346823480213,
+                    20.925334640176771,
+                    0.55958420042085733,
+                    27.774028049448908,
+                    1.4435233532303937,
+                    1.260313149129181,
+                    5,
+                    0.51402154517747134,
+                    1,
+                    0.66202555505687255};
+    const GrooveRun r = runGroove(in);
+    const std::vector<std::string> c = calls(r);
+    ASSERT_FALSE(c.empty()) << r.diagnostics();
+    expectFinishedClean(r, in, c.back());
+}
+
+// groove-fixes.md G3, G5 with no safety distance at all, on steep flanks and cones: the first
+// pass' clean-up rapids and the flank plunges' rapids only touch (R30 = 0, seed §2.2).
+TEST(GrooveSubprograms, NoSafetyDistanceOnSteepFlanksOnlyTouches)
+{
+    for (Inputs in : sweepCases(60, Sweep::Wider)) {
+        in.r30 = 0;
+        SCOPED_TRACE(describe(in));
+        const GrooveRun r = runGroove(in);
+        if (r.alarm())
+            continue;
+        const TurningReport report = check(r, in);
+        EXPECT_EQ(report.gouges, 0u) << report.maxGougeMm;
+        EXPECT_EQ(report.rapidsInStock, 0u) << report.maxRapidDepthMm;
     }
 }
 

@@ -60,7 +60,7 @@ base::Status checkInputs(const std::string& what, const GrooveParams& p, const T
         return fail("feed must be positive, got " + num(p.feedMmPerRev) + " mm/rev");
     if (!(p.maxRpm > 0) || !(p.surfaceSpeedMPerMin > 0))
         return fail("cutting speed and speed limit must be positive");
-    // Fix V1 (/work/groove-fixes.md): each plunge of a sweep is R9*R10 further along and R11 deeper;
+    // Fix V1 (docs/groove-strategy.md): each plunge of a sweep is R9*R10 further along and R11 deeper;
     // where the flank is flatter than that staircase the plunges go through it.
     const double step = w * p.stepFactor;
     for (const auto& [angle, name] :

@@ -36,7 +36,7 @@ struct GrooveParams {
 // then the strategy's moves, every Rapid along one axis only (AxisMask kX or kZ), every Linear in
 // X and Z (never Y); the last Rapid to X = R0 + finalRetractMm; SectionEnd.
 // Errors (nothing produced): each invalid input by name and R name (REQ-06, spec F6, and the
-// staircase check V1 of /work/groove-fixes.md), a tool that is not a grooving insert, an offset
+// staircase check V1 of docs/groove-strategy.md), a tool that is not a grooving insert, an offset
 // bottom narrower than the insert, a strategy that does not finish (iteration limit, REQ-25).
 // The moves are ops/turning/GrooveSweeps: with Kod 1 block by block the thesis' program.
 base::Result<OpResult> computeGroove(const GrooveParams& params, const ToolController& tc, int operationIndex,

@@ -144,7 +144,7 @@ base::Status Sweeps::run(const std::function<bool(double)>& keepGoing)
     return base::Status::success();
 }
 
-// Fix G1 (/work/groove-fixes.md): a sweep stops where its next plunge would cut the flank, and
+// Fix G1 (docs/groove-strategy.md): a sweep stops where its next plunge would cut the flank, and
 // the plunge on the flank (left corner `flankZ`) may then lie more than an insert's width from the
 // last plunge (left corner `lastZ`, same depth): with R10 = 1, or when tan R5 * R11 (tan R6 * R11)
 // exceeds R9 (1 - R10). The rib between would stand up to the floor above, and the next rapid
@@ -162,7 +162,7 @@ void Sweeps::closeGap(double lastZ, double flankZ, double depth, double retractX
     rapidX(retractX);
 }
 
-// Fixes G3, G5 (/work/groove-fixes.md), before a rapid along Z to left corner `toZ`: the rapid to
+// Fixes G3, G5 (docs/groove-strategy.md), before a rapid along Z to left corner `toZ`: the rapid to
 // a flank plunge goes further than one step (up to R9 R10 + R11 tan(flank)), so it may pass over a
 // staircase cell one infeed higher than the sweep's retract height clears; so may the rapids of
 // the right-flank clean-ups in the first pass, whose heights the thesis takes at the regular

@@ -150,7 +150,7 @@ private:
 };
 
 // Which random grooves: the ranges of seed-001 §5.3 item 8; the same with each of R2, R5, R6 = 0
-// in a third of the cases (groove-spec F1) and every fourth groove's offset bottom only 1.0 to
+// in a third of the cases (docs/groove-strategy.md F1) and every fourth groove's offset bottom only 1.0 to
 // 1.8 insert widths wide (F5); wider ranges (steeper cones and flanks, other allowances, R10
 // anywhere in range), as the op's property tests have them.
 enum class Sweep { Seed, ZeroAnglesAndNarrow, Wider };

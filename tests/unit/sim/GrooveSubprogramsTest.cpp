@@ -1,4 +1,4 @@
-// The mode-B groove subprograms (posts/sinumerik840d-turn/groove, groove-spec F1..F6, seed-001
+// The mode-B groove subprograms (posts/sinumerik840d-turn/groove, docs/groove-strategy.md F1..F6, seed-001
 // REQ-21) run by the SINUMERIK interpreter from a main program as the post writes it, checked
 // move for move against the reconstructed thesis programs for Kod 1 and by the turning check
 // (no gouge of the offset contour, no rapid through stock) on the seed's defect sets.
@@ -279,7 +279,7 @@ TEST(GrooveSubprograms, EachInvalidInputHasItsAlarm)
          65014, "Rx<=Sx"},
         {[](Inputs& i) { i.r2 = 50, i.r3 = 9, i.r4 = 7, i.r5 = 17, i.r6 = 25, i.r7 = 2, i.r8 = 4.5; }, 65015, "Ux<=Tx"},
         {[](Inputs& i) { i.r9 = 44.5; }, 65016, "R9"},
-        // groove-fixes.md V1: 3 mm deeper every 0.96 mm is steeper than a 30 (25.8) degree flank
+        // docs/groove-strategy.md V1: 3 mm deeper every 0.96 mm is steeper than a 30 (25.8) degree flank
         {[](Inputs& i) { i.r5 = 30, i.r10 = 0.32, i.r11 = 3; }, 65017, "right flank angle R5"},
         {[](Inputs& i) { i.r6 = 25.8, i.r10 = 0.32, i.r11 = 3; }, 65018, "left flank angle R6"},
     };
@@ -297,7 +297,7 @@ TEST(GrooveSubprograms, EachInvalidInputHasItsAlarm)
     }
 }
 
-// groove-fixes.md G3 (found here as P1): the sweep's WHILE stops where the next plunge would cut
+// docs/groove-strategy.md G3 (found here as P1): the sweep's WHILE stops where the next plunge would cut
 // the flank, and the flank plunge at the last depth can lie up to tan(R6)*R11 further left than
 // one step, over the previous sweep's floor one R11 higher: the rapid at the last plunge's
 // retract height ran R11 - R30 = 0.338 mm into it (ZP, G0 Z=R40). Now it rises first.
@@ -322,7 +322,7 @@ TEST(GrooveSubprograms, FlankPlungeRapidRisesOverTheStaircase)
     expectFinishedClean(r, in, c.back());
 }
 
-// groove-fixes.md G3, G5 with no safety distance at all, on steep flanks and cones: the first
+// docs/groove-strategy.md G3, G5 with no safety distance at all, on steep flanks and cones: the first
 // pass' clean-up rapids and the flank plunges' rapids only touch (R30 = 0, seed §2.2).
 TEST(GrooveSubprograms, NoSafetyDistanceOnSteepFlanksOnlyTouches)
 {

@@ -249,7 +249,7 @@ TEST(GrooveProperties, Kod1AndItsCylinderAndVerticalFlanksAreClean)
     }
 }
 
-// Found by sweeps ten times larger (fixes G3 in /work/groove-fixes.md): the rapid to a flank
+// Found by sweeps ten times larger (fixes G3 in docs/groove-strategy.md): the rapid to a flank
 // plunge passes over a staircase cell one infeed higher than the sweep's retract clears (2 mm and
 // 1 mm into the stock before the fix).
 TEST(GrooveProperties, RapidsToAFlankPlungeClearTheStaircase)
@@ -262,7 +262,7 @@ TEST(GrooveProperties, RapidsToAFlankPlungeClearTheStaircase)
     b.g = {350, 500, 0, 53.7394, 76.0301, 13.6712, 13.4685, 0.5, 0.5, 10};
     b.r10 = 0.6;
     b.r11 = 2;
-    Case p1;  // the mode-B author's case for the same rapid (groove-fixes P1): 0.338 mm before G3
+    Case p1;  // the mode-B author's case for the same rapid (G3): 0.338 mm before G3
     p1.g = {350, 500, 19.4508, 109.2035, 20.9253, 0.5596, 27.774, 1.4435, 1.2603, 5};
     p1.r10 = 0.51402;
     p1.r11 = 1;

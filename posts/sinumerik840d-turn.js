@@ -52,9 +52,12 @@ post.properties.units.default = "G71";
 
 var diameter = getProperty("diameterProgramming");
 var subprograms = getProperty("grooveOutput") == "subprograms";
-// X: the CL's radius, doubled under DIAMON (the control halves it again).
-var xFormat = createFormat({decimals: inch ? 4 : 3, scale: (inch ? 1 / 25.4 : 1) * (diameter ? 2 : 1)});
+// X: the CL's radius, doubled under DIAMON (the control halves it again). X and Z with 4 decimals
+// (5 in inch): the blocks then agree with the subprograms, which compute in full precision, within
+// 1e-4 mm (seed REQ-22); the control rounds them to its own input resolution.
+var xFormat = createFormat({decimals: inch ? 5 : 4, scale: (inch ? 1 / 25.4 : 1) * (diameter ? 2 : 1)});
 xOutput = createVariable({prefix: "X"}, xFormat);
+zOutput = createVariable({prefix: "Z"}, createFormat({decimals: inch ? 5 : 4, scale: inch ? 1 / 25.4 : 1}));
 // Kód 5: G95 F0.2.
 feedPerRevFormat = createFormat({decimals: 3, trim: true, scale: unitsWord == "G700" ? 1 / 25.4 : 1});
 var inverseTimeFormat = createFormat({decimals: 3});

@@ -185,10 +185,10 @@ protected:
 TEST_F(SinumerikTurnPost, WritesTheKod5FrameInItsOrder)
 {
     const std::vector<std::string> out = wordLines(run(latheCl()).text);
-    const int frame[] = {indexOf(out, "G54 G18"),     indexOf(out, "G90 G71"), indexOf(out, "DIAMON"),
-                         indexOf(out, "G0 X960.000"),  // safe X before the tool: (280 + 200) * 2
-                         indexOf(out, "T=5 D1"),      indexOf(out, "G95"),     indexOf(out, "G96 S300 LIMS=3000 M3"),
-                         indexOf(out, "M8"),          indexOf(out, "M9 M5"),   indexOf(out, "M30")};
+    const int frame[] = {indexOf(out, "G54 G18"),      indexOf(out, "G90 G71"), indexOf(out, "DIAMON"),
+                         indexOf(out, "G0 X960.0000"),  // safe X before the tool: (280 + 200) * 2
+                         indexOf(out, "T=5 D1"),       indexOf(out, "G95"),     indexOf(out, "G96 S300 LIMS=3000 M3"),
+                         indexOf(out, "M8"),           indexOf(out, "M9 M5"),   indexOf(out, "M30")};
     for (std::size_t i = 0; i < std::size(frame); ++i) {
         EXPECT_GE(frame[i], 0) << i;
         if (i > 0)
@@ -250,8 +250,8 @@ TEST_F(SinumerikTurnPost, FeedInMmPerRevAndRapidsAlongOneAxis)
         }
     }
     EXPECT_EQ(feeds, 1) << "F is modal: written with the first G1 only";
-    EXPECT_GE(indexOf(out, "G1 X340.000 F0.2"), 0);
-    EXPECT_GE(indexOf(out, "X337.000 Z151.000"), 0);  // the diagonal slide: G1 is modal
+    EXPECT_GE(indexOf(out, "G1 X340.0000 F0.2"), 0);
+    EXPECT_GE(indexOf(out, "X337.0000 Z151.0000"), 0);  // the diagonal slide: G1 is modal
 }
 
 TEST_F(SinumerikTurnPost, ALatheMoveOffTheXZPlaneIsAnError)
@@ -269,7 +269,7 @@ TEST_F(SinumerikTurnPost, ModeBWritesTheInputBlockTheCallAndTheFiveSubprograms)
 {
     const PostOutput output = run(latheCl(), {{"grooveOutput", "subprograms"}}, postWithSeedSubprograms());
     const std::vector<std::string> out = wordLines(output.text);
-    const int safeX = indexOf(out, "G0 X560.000");  // the section's leading retract in X: 280 * 2
+    const int safeX = indexOf(out, "G0 X560.0000");  // the section's leading retract in X: 280 * 2
     const int r0 = indexOf(out, "R0=180 ;start point P: X, radius");
     const int r2 = indexOf(out, "R2=21.801 ;cone angle, deg");
     const int r30 = indexOf(out, "R30=1 ;safety distance");
@@ -326,7 +326,7 @@ TEST_F(SinumerikTurnPost, ModeBWritesOtherSectionsExpanded)
     const PostOutput output = run(latheCl("turning"), {{"grooveOutput", "subprograms"}}, postWithSeedSubprograms());
     EXPECT_TRUE(output.files.empty());
     EXPECT_EQ(output.text.find("PODPROG_ZAPICH"), std::string::npos);
-    EXPECT_GE(indexOf(wordLines(output.text), "G1 X340.000 F0.2"), 0);
+    EXPECT_GE(indexOf(wordLines(output.text), "G1 X340.0000 F0.2"), 0);
 }
 
 TEST_F(SinumerikTurnPost, ModeBRefusesTheNarrowGrooveFallback)

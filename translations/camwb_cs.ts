@@ -1402,6 +1402,10 @@
         <source>depth %1 mm, bottom width %2 mm</source>
         <translation>hloubka %1 mm, šířka dna %2 mm</translation>
     </message>
+    <message>
+        <source>the grooves&apos; shaft (revolved)</source>
+        <translation>hřídel zápichů (rotační)</translation>
+    </message>
 </context>
 <context>
     <name>camwb::gui::MainWindow</name>

@@ -1,5 +1,6 @@
 #include "document/SetupSheet.h"
 
+#include "base/NumberFormat.h"
 #include "document/JobPipeline.h"
 #include "document/OperationGeometry.h"
 #include "document/Simulate.h"
@@ -56,6 +57,12 @@ SheetOperation sheetOperation(const Job& job, const Operation& op, const occ::Mo
         out.stepDownMm = pocket3d->stepDownMm;
     else if (const auto* waterline = std::get_if<ops::WaterlineParams>(&op.params))
         out.stepDownMm = waterline->maxStepDownMm;
+    if (const auto* groove = std::get_if<ops::GrooveParams>(&op.params)) {
+        out.stepDownMm = groove->infeedMm;
+        out.turningSpeed = "G96 " + base::NumberFormat{1, true}.format(groove->surfaceSpeedMPerMin) + " m/min, LIMS " +
+                           base::NumberFormat{0, true}.format(groove->maxRpm);
+        out.turningFeed = base::NumberFormat{3, true}.format(groove->feedMmPerRev) + " mm/rev";
+    }
     return out;
 }
 

@@ -44,9 +44,12 @@ struct SheetOperation {
     int toolNumber = 0;
     double spindleRpm = 0;
     double cuttingFeed = 0, plungeFeed = 0, rampFeed = 0;  // mm/min
-    std::optional<ops::Heights> heights;                   // none when its geometry did not resolve
-    double stepDownMm = 0;                                 // 0: one level (or not a layered operation)
-    double seconds = 0;                                    // planned on the machine, tool change included
+    // A turning operation cuts at constant surface speed and a feed per revolution (its own
+    // values, not the tool controller's): "G96 300 m/min, LIMS 3000" and "0.2 mm/rev".
+    std::string turningSpeed, turningFeed;
+    std::optional<ops::Heights> heights;  // none when its geometry did not resolve
+    double stepDownMm = 0;                // 0: one level (or not a layered operation)
+    double seconds = 0;                   // planned on the machine, tool change included
 };
 
 // sim::simulate's findings, when the sheet ran it.

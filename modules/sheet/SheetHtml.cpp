@@ -99,10 +99,15 @@ std::string stockTable(const SetupSheet& sheet)
                                                   " mm from the stock's front left corner (X min, Y min)"});
         const std::string belowTop = s.max.z >= 0 ? mm(s.max.z) + " mm below" : mm(-s.max.z) + " mm above";
         rows.push_back({"Program zero Z0", belowTop + " the stock top (the stock bottom is at Z " + mm(s.min.z) + ")"});
+    } else if (sheet.verification.turning) {
+        rows.push_back({"Stock",
+                        "the shaft each groove is cut in: under the groove's surface line (its start point and "
+                        "cone angle), X a radius"});
     } else {
         rows.push_back({"Stock", "none given: the model's bounds"});
     }
-    rows.push_back({"Model bounds (from, to)", vec(model.min) + "  to  " + vec(model.max)});
+    if (!sheet.verification.turning)  // a lathe job has no model
+        rows.push_back({"Model bounds (from, to)", vec(model.min) + "  to  " + vec(model.max)});
     rows.push_back(
         {"Work offset", workOffsetName(sheet.workOffset, sheet.postId) + ": set it to the program zero above"});
     return table({"Item", "Value"}, rows);
@@ -115,10 +120,12 @@ std::string operationTable(const SetupSheet& sheet)
     for (const document::SheetOperation& op : sheet.operations) {
         const auto z = [&](double ops::Heights::*height) { return op.heights ? mm((*op.heights).*height) : "-"; };
         rows.push_back({std::to_string(index++), op.name, op.kind, "T" + std::to_string(op.toolNumber),
-                        whole(op.spindleRpm), whole(op.cuttingFeed), whole(op.plungeFeed), whole(op.rampFeed),
-                        z(&ops::Heights::clearanceZ), z(&ops::Heights::safeZ), z(&ops::Heights::startZ),
-                        z(&ops::Heights::finalZ), op.stepDownMm > 0 ? mm(op.stepDownMm) : "-",
-                        formatDuration(op.seconds)});
+                        op.turningSpeed.empty() ? whole(op.spindleRpm) : op.turningSpeed,
+                        op.turningFeed.empty() ? whole(op.cuttingFeed) : op.turningFeed,
+                        op.turningFeed.empty() ? whole(op.plungeFeed) : "-",
+                        op.turningFeed.empty() ? whole(op.rampFeed) : "-", z(&ops::Heights::clearanceZ),
+                        z(&ops::Heights::safeZ), z(&ops::Heights::startZ), z(&ops::Heights::finalZ),
+                        op.stepDownMm > 0 ? mm(op.stepDownMm) : "-", formatDuration(op.seconds)});
     }
     return table({"#", "Operation", "Kind", "Tool", "Spindle rpm", "Feed mm/min", "Plunge mm/min", "Ramp mm/min",
                   "Clearance Z", "Safe Z", "Top Z", "Bottom Z", "Step-down mm", "Time"},

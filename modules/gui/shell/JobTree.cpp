@@ -1,5 +1,6 @@
 #include "gui/shell/JobTree.h"
 
+#include "document/JobPipeline.h"
 #include "gui/editor/ProgramInfoDialog.h"
 #include "gui/shell/Workbench.h"
 #include "kinematics/Machine.h"
@@ -179,15 +180,20 @@ void JobTree::addSetupItems(QTreeWidgetItem* jobItem)
         new QTreeWidgetItem(model, {tr("Faces"), QString::number(m_workbench.model().faceCount())});
 
     const base::Vec3 size = job.stock.max - job.stock.min;
-    auto* stock =
-        row(jobItem, ItemKind::Stock, tr("Stock"),
-            job.stock.box() ? tr("box %1 × %2 × %3 mm").arg(mm(size.x), mm(size.y), mm(size.z)) : tr("(none)"));
-    new QTreeWidgetItem(
-        stock,
-        {tr("Min"), QStringLiteral("%1, %2, %3").arg(mm(job.stock.min.x), mm(job.stock.min.y), mm(job.stock.min.z))});
-    new QTreeWidgetItem(
-        stock,
-        {tr("Max"), QStringLiteral("%1, %2, %3").arg(mm(job.stock.max.x), mm(job.stock.max.y), mm(job.stock.max.z))});
+    // A lathe job's stock is the shaft its grooves are cut in, made from their parameters.
+    const bool lathe = !job.operations.empty() && !document::jobNeedsModel(job);
+    auto* stock = row(jobItem, ItemKind::Stock, tr("Stock"),
+                      lathe             ? tr("the grooves' shaft (revolved)")
+                      : job.stock.box() ? tr("box %1 × %2 × %3 mm").arg(mm(size.x), mm(size.y), mm(size.z))
+                                        : tr("(none)"));
+    if (!lathe) {
+        new QTreeWidgetItem(
+            stock, {tr("Min"),
+                    QStringLiteral("%1, %2, %3").arg(mm(job.stock.min.x), mm(job.stock.min.y), mm(job.stock.min.z))});
+        new QTreeWidgetItem(
+            stock, {tr("Max"),
+                    QStringLiteral("%1, %2, %3").arg(mm(job.stock.max.x), mm(job.stock.max.y), mm(job.stock.max.z))});
+    }
     row(jobItem, ItemKind::Wcs, tr("Work offset"),
         QString::fromStdString(document::workOffsetName(job.workOffset, job.postId)));
 

@@ -2,6 +2,7 @@
 // (mode A) and as the five R-parameter subprograms it ships (mode B), both read back by our
 // SINUMERIK interpreter, move the machine the same way, and the same way as the operation's CL,
 // within the output's precision; mode B's files pass the interpreter without a diagnostic.
+#include "CompanionResolver.h"
 #include "PostTestSupport.h"
 
 #include "kinematics/Machine.h"
@@ -96,13 +97,7 @@ std::vector<Move> readBack(const PostOutput& output)
     nc::InterpretOptions options;
     options.dialect = nc::Dialect::Sinumerik;
     options.fileName = "PART1.MPF";
-    const std::vector<CompanionFile> files = output.files;
-    options.resolveProgram = [files](std::string_view name) -> std::optional<nc::ProgramSource> {
-        for (const CompanionFile& f : files)
-            if (f.name == std::string(name) + ".SPF")
-                return nc::ProgramSource{f.name, f.text};
-        return std::nullopt;
-    };
+    options.resolveProgram = companionResolver(output.files);
     ToolpathRecorder recorder;
     const nc::InterpretResult result = nc::interpret(output.text, options, recorder);
     EXPECT_TRUE(result.completed);

@@ -3,6 +3,7 @@
 // gives them, and the groove as the five R-parameter subprograms (mode B), every output read back
 // by our SINUMERIK interpreter. The kernel services it needs (openFile/closeFile companion files,
 // readPostFile) are tested in PostCompanionTest.cpp.
+#include "CompanionResolver.h"
 #include "PostTestSupport.h"
 
 #include "base/AtomicFile.h"
@@ -121,13 +122,7 @@ Toolpath readBack(const PostOutput& output, std::vector<nc::Diagnostic>* diagnos
     nc::InterpretOptions options;
     options.dialect = nc::Dialect::Sinumerik;
     options.fileName = "PART1.MPF";
-    std::vector<CompanionFile> files = output.files;
-    options.resolveProgram = [files](std::string_view name) -> std::optional<nc::ProgramSource> {
-        for (const CompanionFile& f : files)
-            if (f.name == std::string(name) + ".SPF")
-                return nc::ProgramSource{f.name, f.text};
-        return std::nullopt;
-    };
+    options.resolveProgram = companionResolver(output.files);
     ToolpathRecorder recorder;
     const nc::InterpretResult result = nc::interpret(output.text, options, recorder);
     EXPECT_TRUE(result.completed);

@@ -26,6 +26,9 @@ base::Status checkInputs(const std::string& what, const GrooveParams& p, const T
         return fail("the tool must be a grooving insert (kind \"groove\"), got \"" + tc.tool.kind + "\"");
     if (!(w > 0))
         return fail("insert width (R9, the tool's width) must be positive, got " + num(w) + " mm");
+    if (!(tc.tool.cornerRadiusMm >= 0 && 2 * tc.tool.cornerRadiusMm <= w))
+        return fail("the insert's corner radius must be between 0 and half its width (" + num(w / 2) + " mm), got " +
+                    num(tc.tool.cornerRadiusMm) + " mm");
     if (!(p.infeedMm > 0))
         return fail("infeed (R11) must be positive, got " + num(p.infeedMm) + " mm");
     if (!(p.stepFactor > 0 && p.stepFactor <= 1))
@@ -151,6 +154,12 @@ base::Result<OpResult> computeGroove(const GrooveParams& params, const ToolContr
     add(toolpath::Rapid({safeX, 0, z}, AxisMask{AxisMask::kX}));
     add(toolpath::SectionEnd{});
     result.counts = countMotions(result.toolpath);
+    // The strategy programs the sharp left corner (seed REQ-07); a rounded corner cuts inside the
+    // sharp one, so nothing is gouged, but the groove's corners and the staircase keep a fillet.
+    if (tc.tool.cornerRadiusMm > 0)
+        result.warn(what + ": the path is for a sharp insert; its corner radius of " + num(tc.tool.cornerRadiusMm) +
+                    " mm leaves fillets of that radius in the groove's bottom corners and under the plunges "
+                    "for the finishing operation");
     return result;
 }
 

@@ -162,6 +162,30 @@ TEST(GrooveOracle, SectionRecordsAndParameters)
     EXPECT_FALSE(std::holds_alternative<toolpath::Coolant>(dry->toolpath.record(3)));
 }
 
+// The path is the sharp insert's (REQ-07): a corner radius only warns that fillets stay for the
+// finishing; one wider than half the insert is an error; a sharp insert gets no warning.
+TEST(GrooveOracle, CornerRadiusWarnsAndIsBoundedByTheWidth)
+{
+    GrooveParams params;
+    auto sharp = computeGroove(params, grooveTool(), 0);
+    ASSERT_TRUE(sharp.ok());
+    EXPECT_TRUE(sharp->warnings.empty());
+    ToolController rounded = grooveTool();
+    rounded.tool.cornerRadiusMm = 0.4;
+    auto withRadius = computeGroove(params, rounded, 0);
+    ASSERT_TRUE(withRadius.ok());
+    ASSERT_EQ(withRadius->warnings.size(), 1u);
+    EXPECT_NE(withRadius->warnings[0].message.find("corner radius of 0.4 mm leaves fillets"), std::string::npos)
+        << withRadius->warnings[0].message;
+    EXPECT_EQ(withRadius->toolpath.size(), sharp->toolpath.size());
+    rounded.tool.cornerRadiusMm = 1.6;
+    auto tooLarge = computeGroove(params, rounded, 0);
+    ASSERT_FALSE(tooLarge.ok());
+    EXPECT_NE(tooLarge.error().message.find("corner radius must be between 0 and half its width (1.5 mm)"),
+              std::string::npos)
+        << tooLarge.error().message;
+}
+
 // REQ-25: a strategy that runs past its iteration limit stops with an error, not a hang (Kod 1
 // needs a few hundred turns of its loops; 50 cannot finish it).
 TEST(GrooveOracle, IterationLimitStopsWithAnError)

@@ -375,7 +375,9 @@ int simCommand(const std::vector<std::string>& args)
     if (turned)
         std::cout << "turning stock: removed " << base::formatFixed(turned->removedMm2, 2) << " mm2 of the profile, "
                   << turned->rapidsInStock << " rapids through stock, " << turned->gouges << " gouges (deepest "
-                  << mm(turned->maxGougeMm) << " mm)\n";
+                  << mm(turned->maxGougeMm) << " mm), left over above the design "
+                  << base::formatFixed(turned->leftoverMm2, 3) << " mm2 (thickest " << mm(turned->maxLeftoverMm)
+                  << " mm at X " << mm(turned->maxLeftoverAt.y) << " Z " << mm(turned->maxLeftoverAt.x) << ")\n";
     if (result.cut) {
         std::cout << "stock " << (result.tilts ? "tri-dexel" : "height field") << " at " << mm(spec->resolutionMm)
                   << " mm: removed " << base::formatFixed(result.removedMm3, 1) << " mm3, feed in air "
@@ -479,7 +481,9 @@ int simCommand(const std::vector<std::string>& args)
                                  {"rapidsInStock", turned->rapidsInStock},
                                  {"gouges", turned->gouges},
                                  {"feedsInAir", turned->feedsInAir},
-                                 {"maxRapidDepthMm", turned->maxRapidDepthMm}};
+                                 {"maxRapidDepthMm", turned->maxRapidDepthMm},
+                                 {"leftoverMm2", turned->leftoverMm2},
+                                 {"maxLeftoverMm", turned->maxLeftoverMm}};
         report["removedMm3"] = result.removedMm3;
         report["airCuttingMm"] = result.airCuttingMm;
         report["maxGougeMm"] = result.deviation.maxGougeMm;

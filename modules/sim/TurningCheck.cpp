@@ -1,6 +1,7 @@
 #include "sim/TurningCheck.h"
 
 #include "base/NumberFormat.h"
+#include "geom/RegionOps.h"
 #include "sim/Moves.h"
 #include "toolpath/Toolpath.h"
 
@@ -141,6 +142,11 @@ TurningReport checkTurning(const toolpath::Toolpath& program, TurningRegion stoc
     }
     checker.finish();
     report.stock = cutter.stock();
+    if (!cutter.design().empty()) {
+        const TurningRegion leftover = geom::subtract(report.stock, cutter.design(), options.toleranceMm / 10);
+        report.leftoverMm2 = geom::totalArea(leftover);
+        report.maxLeftoverMm = radialDepth(leftover, report.stock, options.toleranceMm, report.maxLeftoverAt);
+    }
     return report;
 }
 

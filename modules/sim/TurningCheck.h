@@ -37,6 +37,11 @@ struct TurningReport {
     Vec2 maxGougeAt;
     double maxRapidDepthMm = 0;
     TurningRegion stock;  // what is left
+    // What is left above the design contour (none without a design): its area and its thickest
+    // point, measured radially down to the contour (roughing leaves no more than its step's cusp).
+    double leftoverMm2 = 0;
+    double maxLeftoverMm = 0;
+    Vec2 maxLeftoverAt;
 
     bool hasErrors() const { return rapidsInStock + gouges > 0; }
 };

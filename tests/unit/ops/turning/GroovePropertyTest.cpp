@@ -87,9 +87,8 @@ Verdict check(const Case& c)
     v.moves = r.moves;
     v.gougeMm = r.maxGougeMm;
     v.rapidMm = r.maxRapidDepthMm;
-    const sim::TurningRegion leftover = geom::subtract(r.stock, part, 1e-6);
-    base::Vec2 at;
-    v.leftoverMm = sim::radialDepth(leftover, r.stock, kToleranceMm, at);
+    v.leftoverMm = r.maxLeftoverMm;
+    const base::Vec2 at = r.maxLeftoverAt;
     EXPECT_EQ(r.gouges, 0u) << "gouge " << r.maxGougeMm << " at Z " << r.maxGougeAt.x << " X " << r.maxGougeAt.y;
     EXPECT_EQ(r.rapidsInStock, 0u) << "rapid " << r.maxRapidDepthMm << " into stock";
     EXPECT_LE(v.leftoverMm, kLeftoverMm) << "left over at Z " << at.x << " X " << at.y;

@@ -84,7 +84,7 @@ private:
     long r18 = 0;             // plunge counter of the last sweep
     long r27 = 0, r28 = 0;    // last regular plunge of ZL / ZP (ROUNDUP(L - 1))
     bool firstPass = true;    // the thesis' R12 == R23
-    bool finished = false;    // spec F4: a bottom phase has run
+    bool finished = false;    // fix F4: a bottom phase has run
     double m_x = 0, m_z = 0;  // where the insert is
     long m_turns = 0;
     std::string m_error;

@@ -1,7 +1,7 @@
 // The groove roughing strategy of Šolar (2015) as moves: the five subprograms of seed-001 §4.3
 // (PODPROG_ZAPICH, _ZL, _ZP, _DNO_ZL, _DNO_ZP) transliterated with their R-parameters as names,
-// and the fixes of the groove spec (F2 left corner in DNO_ZP, F3 clamped half-step start, F4 stop
-// after a bottom phase, F5 narrow-groove fallback) and of docs/groove-strategy.md (G1 gap before a
+// and the fixes of docs/groove-strategy.md (F2 left corner in DNO_ZP, F3 clamped half-step start, F4 stop
+// after a bottom phase, F5 narrow-groove fallback; G1 gap before a
 // flank plunge, G2 fallback when B is at the bottom, G3/G5 rapids that rise over the material,
 // G4 retracts of a clamped bottom sweep). Kept apart from the CL records so that the mode-B
 // subprograms can be read against it line by line.
@@ -51,7 +51,7 @@ struct GroovePass {
 
 struct GrooveMoves {
     std::vector<GrooveMove> moves;
-    bool fallback = false;  // the narrow-groove fallback (spec F5) made (part of) the path
+    bool fallback = false;  // the narrow-groove fallback (fix F5, docs/groove-strategy.md) made (part of) the path
     std::vector<GroovePass> passes;
     std::vector<std::string> calls;  // "ZL", "ZP", "DNO_ZL", "DNO_ZP", "FALLBACK" in order
 };

@@ -165,7 +165,7 @@ protected:
     // mode B's mechanics with real SPF code.
     std::string postWithSeedSubprograms()
     {
-        const fs::path dir = fs::path(writeScript("placeholder", "")).parent_path() / "turn-mode-b";
+        const fs::path dir = fs::path(writeScript("mode-b-folder", "")).parent_path() / "turn-mode-b";
         fs::create_directories(dir);
         fs::copy_file(kPost, dir / "sinumerik840d-turn.js", fs::copy_options::overwrite_existing);
         fs::create_directories(dir / "sinumerik840d-turn" / "groove");

@@ -35,8 +35,8 @@ struct GrooveParams {
 // clockwise, surfaceSpeedMPerMin}; Coolant{Flood} when coolant; Rapid X (safe: R0 + finalRetract)
 // then the strategy's moves, every Rapid along one axis only (AxisMask kX or kZ), every Linear in
 // X and Z (never Y); the last Rapid to X = R0 + finalRetractMm; SectionEnd.
-// Errors (nothing produced): each invalid input by name and R name (REQ-06, fix F6 of docs/groove-strategy.md, and the
-// staircase check V1 of docs/groove-strategy.md), a tool that is not a grooving insert, an offset
+// Errors (nothing produced): each invalid input by name and R name (REQ-06; fixes F6 and V1 of
+// docs/groove-strategy.md), a tool that is not a grooving insert, an offset
 // bottom narrower than the insert, a strategy that does not finish (iteration limit, REQ-25).
 // The moves are ops/turning/GrooveSweeps: with Kod 1 block by block the thesis' program.
 base::Result<OpResult> computeGroove(const GrooveParams& params, const ToolController& tc, int operationIndex,

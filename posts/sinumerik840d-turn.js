@@ -130,6 +130,15 @@ function writeGrooveCall() {
     writeBlock("PODPROG_ZAPICH");
     if (diameter)
         writeBlock("DIAMON");
+    // An alarm in the subprograms (an invalid input, a groove too narrow for them) stops with M0;
+    // when the operator goes on, M17 returns here: stop again rather than run the next operation
+    // over an unfinished groove. R31 = 1 only when a bottom phase finished it.
+    writeBlock("IF R31<>1");
+    writeBlock("MSG(\"groove " + grooveSection.operationName.replace(/[\"]/g, "") +
+               " not finished: see the alarm of PODPROG_ZAPICH\")");
+    writeBlock("SETAL(65019)");
+    writeBlock("M0");
+    writeBlock("ENDIF");
     forceMotion();  // the subprograms left G0/G1, X and Z where they ended
     grooveCalled = true;
     subprogramsCalled = true;

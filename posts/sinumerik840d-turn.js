@@ -60,7 +60,7 @@ xOutput = createVariable({prefix: "X"}, xFormat);
 zOutput = createVariable({prefix: "Z"}, createFormat({decimals: inch ? 5 : 4, scale: inch ? 1 / 25.4 : 1}));
 // Kód 5: G95 F0.2.
 feedPerRevFormat = createFormat({decimals: 3, trim: true, scale: unitsWord == "G700" ? 1 / 25.4 : 1});
-var inverseTimeFormat = createFormat({decimals: 3});
+var inverseTimeFormat = createFormat({decimals: 3});  // named by the dialect's onFeedMode; G93 is refused here
 var surfaceSpeedFormat = createFormat({decimals: 1, trim: true});
 var parameterFormat = createFormat({decimals: 6, trim: true});
 var speedModeModal = createModal({prefix: "G"});
@@ -184,17 +184,13 @@ onSpindle = function (rpm, clockwise, surfaceSpeed) {
     }
 };
 
+// The dialect's G94/G95 (sinumerik-common), remembered for mode B's check; no G93 on a lathe.
+var dialectFeedMode = onFeedMode;
 onFeedMode = function (mode) {
-    feedMode = mode;
-    if (mode == "perMinute") {
-        feedOutput.setFormat(feedFormat);
-        writeBlock(feedModeModal.format(94));
-    } else if (mode == "perRevolution") {
-        feedOutput.setFormat(feedPerRevFormat);
-        writeBlock(feedModeModal.format(95));
-    } else {
+    if (mode != "perMinute" && mode != "perRevolution")
         error("inverse-time feed (G93) is not for a lathe");
-    }
+    feedMode = mode;
+    dialectFeedMode(mode);
 };
 
 // A lathe's tool stays in the XZ plane: the CL gives no Y, or Y = 0.

@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Installs the Debian 12 packages CAM Workbench needs to build, test and run.
 # Idempotent: packages already present are skipped; apt-get runs only when something is missing.
-# Usage: scripts/install-deps.sh [--external]   (--external adds the heavy peers: freecad, linuxcnc-uspace)
+# Usage: scripts/install-deps.sh [--external]   (--external adds the heavy peers: freecad, linuxcnc-uspace,
+# and CGAL, measured beside our kernels by tests/bench/CgalBench.cpp but not used by the product)
 set -euo pipefail
 
 packages=(
@@ -15,7 +16,7 @@ packages=(
   xvfb xauth libgl1-mesa-dri libglx-mesa0 fonts-dejavu-core poppler-utils
 )
 if [[ "${1:-}" == "--external" ]]; then
-  packages+=(freecad linuxcnc-uspace)
+  packages+=(freecad linuxcnc-uspace libcgal-dev)
 fi
 
 missing=()

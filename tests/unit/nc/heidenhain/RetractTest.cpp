@@ -148,5 +148,22 @@ TEST(HeidenhainRetract, WithoutAMachineNothingIsInventedAndTheAxisIsUnknown)
     EXPECT_TRUE(unknown.all<Rapid>().empty());
 }
 
+// Where the machine cannot say where the travel ends, the retract is not traced and says why.
+TEST(HeidenhainRetract, AnUntracedRetractSaysWhy)
+{
+    const kinematics::Machine m = mcvl1000();
+    // Above the top of Z already (the file's workpiece zero at the bottom of the travel).
+    const Traced above = runOn(&m, "2 L X+10 Y+20 Z+700 R0 FMAX\n3 L M140 MB MAX\n4 L X+30 FMAX\n");
+    EXPECT_TRUE(above.has(Severity::Warning, 4, "Z stands at 700.000, past the end of its travel at 660.000"));
+    ASSERT_EQ(above.all<Rapid>().size(), 2u);
+    EXPECT_FALSE(above.all<Rapid>()[1].axes.has(2));
+    // A plane whose rotary axes the program has not turned yet (STAY): the machine's pose is unknown.
+    const Traced stay = runOn(&m, "2 PLANE SPATIAL SPA+0 SPB+30 SPC+0 STAY\n3 L X+0 Y+0 Z+50 R0 FMAX\n"
+                                  "4 L M140 MB MAX\n");
+    EXPECT_TRUE(
+        stay.has(Severity::Warning, 5, "the rotary axes have not been positioned for the tilted working plane"));
+    ASSERT_EQ(stay.all<Rapid>().size(), 1u);
+}
+
 }  // namespace
 }  // namespace camwb::nc::heidenhain::test

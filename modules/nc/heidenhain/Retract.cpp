@@ -68,11 +68,12 @@ void Machine::retract(const Block& b, std::optional<double> distance, const std:
                 (turned ? "X, Y and Z are unknown until a block gives them" : "Z is unknown until a block gives it"));
 }
 
-// M140 MB with the rotary axes turned: back along the tool axis, as the control retracts.
-void Machine::retractAlongToolAxis(double distance)
+// With the rotary axes turned: back along the tool axis by `distanceMm`, the machine's axes moving
+// as the chain turns that direction (a five-axis record).
+void Machine::retractAlongToolAxis(double distanceMm)
 {
     const kinematics::ToolPose tool = m_five.toolPose(m_pos);
-    m_pos = m_five.programmedFor(tool.tip + tool.axis * distance);
+    m_pos = m_five.programmedFor(tool.tip + tool.axis * distanceMm);
     m_sink.toolAxisMove(m_five.move(m_pos, 0));
 }
 

@@ -346,6 +346,11 @@ int simCommand(const std::vector<std::string>& args)
         result.deviation.gougeAt = {turned->maxGougeAt.y, 0, turned->maxGougeAt.x};
     }
     printDiagnostics(input->diagnostics);
+    // Where each check is (file, line, operation), worked out once for the printout and the report.
+    std::vector<document::RecordPlace> checkPlaces;
+    checkPlaces.reserve(result.checks.size());
+    for (const sim::Check& check : result.checks)
+        checkPlaces.push_back(placeOf(*input, options.input, check.record));
 
     // Time.
     const kinematics::Machine planMachine = input->machine ? *input->machine : kinematics::defaultLimitsMachine();
@@ -358,10 +363,11 @@ int simCommand(const std::vector<std::string>& args)
 
     // What it found, as compilers report.
     std::vector<base::Diagnostic> found;
-    for (const sim::Check& check : result.checks) {
+    for (std::size_t i = 0; i < result.checks.size(); ++i) {
+        const sim::Check& check = result.checks[i];
         if (check.kind == sim::CheckKind::AirCutting)
             continue;  // in the report and the counts; too many to print
-        const document::RecordPlace place = placeOf(*input, options.input, check.record);
+        const document::RecordPlace& place = checkPlaces[i];
         std::string message = check.message;
         if (!place.operation.empty())
             message = place.operation + ": " + message;
@@ -503,8 +509,9 @@ int simCommand(const std::vector<std::string>& args)
         report["gouge"] = extreme(result.deviation.gougeAt, result.deviation.gougeMove);
         report["leftover"] = extreme(result.deviation.leftoverAt, result.deviation.leftoverMove);
         nlohmann::json checks = nlohmann::json::array();
-        for (const sim::Check& check : result.checks) {
-            const document::RecordPlace place = placeOf(*input, options.input, check.record);
+        for (std::size_t i = 0; i < result.checks.size(); ++i) {
+            const sim::Check& check = result.checks[i];
+            const document::RecordPlace& place = checkPlaces[i];
             nlohmann::json c{{"kind", sim::checkKindName(check.kind)},
                              {"severity", base::severityName(check.severity)},
                              {"file", place.file},

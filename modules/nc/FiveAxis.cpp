@@ -1,5 +1,7 @@
 #include "nc/FiveAxis.h"
 
+#include "base/NumberFormat.h"
+
 #include <cmath>
 #include <numbers>
 #include <vector>
@@ -185,6 +187,44 @@ ToolPose FiveAxisState::toolPose(const Vec3& programmed) const
         return t;
     }
     return kinematics::forwardKinematics(*m_chain, pose(programmed + m_chain->workpieceZero), length);
+}
+
+std::variant<FiveAxisState::TravelEnd, std::string> FiveAxisState::travelEnd(const Vec3& tip,
+                                                                             const Vec3& direction) const
+{
+    std::array<double, 2> deg{0, 0};
+    bool head = false;
+    for (std::size_t i = 0; i < 2; ++i) {
+        deg[i] = m_angles.known[i] ? m_angles.deg[i] : 0;
+        head = head || !m_chain->joints[i].onTable;
+    }
+    if (head && !m_toolLength && (std::abs(deg[0]) > kTurnedDeg || std::abs(deg[1]) > kTurnedDeg))
+        return std::string("the tool length is unknown (TOOL DEF L, or the tool table), and the turned head's axes "
+                           "depend on it");
+    const double length = m_toolLength.value_or(0);
+    // The machine's axes move linearly with the tip: from `from`, `step` per millimetre.
+    const Vec3 from = kinematics::linearAxesFor(*m_chain, tip, deg, length);
+    const Vec3 step = kinematics::linearAxesFor(*m_chain, tip + direction, deg, length) - from;
+    const auto component = [](const Vec3& v, int i) { return i == 0 ? v.x : i == 1 ? v.y : v.z; };
+    std::optional<TravelEnd> end;
+    for (int i = 0; i < 3; ++i) {
+        const std::string name(1, "XYZ"[i]);
+        const kinematics::Axis* axis = m_machine->axis(name);
+        const double rate = component(step, i);
+        if (!axis || axis->rotary || axis->endless || axis->max <= axis->min || std::abs(rate) < 1e-9)
+            continue;  // no travel given, or the axis does not move
+        const double at = component(from, i);
+        const double limit = rate > 0 ? axis->max : axis->min;
+        const double distance = (limit - at) / rate;
+        if (distance < -1e-6)
+            return name + " stands at " + base::formatFixed(at, 3) + ", past the end of its travel at " +
+                   base::formatFixed(limit, 3) + " (the machine file's workpieceZero places the workpiece)";
+        if (!end || distance < end->distanceMm)
+            end = TravelEnd{std::max(0.0, distance), name};
+    }
+    if (!end)
+        return std::string("no linear axis with a travel limit moves along the tool axis");
+    return *end;
 }
 
 toolpath::RotaryAxes FiveAxisState::machineAxes() const

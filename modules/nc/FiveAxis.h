@@ -14,6 +14,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <variant>
 
 namespace camwb::nc {
 
@@ -121,6 +122,18 @@ public:
     // An arc in programmed coordinates as the tip moves in the workpiece frame (the linear axes
     // move on a circle while the angles stay: a rigid map of it without tool-tip control).
     toolpath::Arc arcInWorkpiece(const toolpath::Arc& programmed);
+    // How far the tip at `tip` (workpiece frame) can go along unit `direction` until the first of
+    // the machine's linear axes reaches the end of its travel (Heidenhain M140 MB MAX), with the
+    // rotary axes standing at the current angles (one not programmed yet at 0, as the three-axis
+    // trace has it) and the machine's axes where the chain puts them (its workpieceZero). Travel
+    // in the machine's own coordinates: only this places it in the workpiece frame.
+    struct TravelEnd {
+        double distanceMm = 0;
+        std::string axis;  // the linear axis that stops the move
+    };
+    // The travel end, or why it is not known (no axis limits the direction, the tip already past
+    // the end, a head's tool length unknown).
+    std::variant<TravelEnd, std::string> travelEnd(const toolpath::Vec3& tip, const toolpath::Vec3& direction) const;
     // The known angles as the record carries them.
     toolpath::RotaryAxes machineAxes() const;
     // A tool axis asked for directly (SINUMERIK A3= B3= C3=, spatial angles): the angles the

@@ -26,7 +26,10 @@
 // - A positive depth Q201 warns and is traced below the surface; a decimal comma warns.
 // - Inch programs read F in 1/10 inch/min, as the TNC does.
 // - "..." elisions warn and make the position unknown (no radius check on the next circle).
-// - M91/M92 positions are taken as workpiece coordinates; M140 MB MAX moves nothing.
+// - M91/M92 positions are taken as workpiece coordinates. M140 MB MAX and PLANE ... MB MAX retract
+//   up the tool axis to the end of the first linear axis' travel when the machine's kinematic
+//   chain places the workpiece in its axes; otherwise they are not traced and leave the axes they
+//   move unknown (Retract.cpp).
 // - A/B/C words, M128 / FUNCTION TCPM (on at the block start) and M129 / FUNCTION RESET TCPM (off
 //   at the block end: iTNC 530 User's Manual, M128) run through the machine's kinematic chain
 //   (nc/FiveAxis.h; Rotary.cpp), without a five-axis machine they warn. M126 (until M127) turns an

@@ -200,8 +200,11 @@ private:
     void tcpmFunction(const Block& b);
     void setTcpm(bool on);
     void sendFiveAxis(const Element& e, bool rapid, double feed);
-    void retractAlongToolAxis(double distance);
     void updateToolLength();
+
+    // Retract.cpp: M140 MB and PLANE ... MB, by a distance (program units) or, nullopt, MB MAX.
+    void retract(const Block& b, std::optional<double> distance, const std::string& what);
+    void retractAlongToolAxis(double distanceMm);
 
     // Planes.cpp: tilted working planes (PLANE, CYCL DEF 19) with the datum shift.
     void planeFunction(const Block& b);
@@ -210,7 +213,6 @@ private:
                                                          const std::array<std::optional<double>, kPlaneWordCount>& v);
     std::optional<toolpath::WorkingPlane>
     planeOfAxisAngles(const Block& b, const std::array<std::optional<double>, 3>& abc, const std::string& what);
-    void planeRetract(const Block& b, std::optional<double> distance);
     void tilt(const Block& b, const toolpath::WorkingPlane& rotation);
     void rotationCycle(const Block& b);
     void positionForPlane(const Block& b, const toolpath::WorkingPlane& plane);

@@ -301,23 +301,7 @@ void Machine::applyStop(const Block& b, const BlockWords& w, bool moved)
             cycleCalled = true;
             break;
         case 140:
-            if (w.mb) {
-                if (m_five.active() && m_five.fiveAxisMove()) {
-                    retractAlongToolAxis(*w.mb * m_scale);
-                } else if (needKnown(b, axisBit(2), kNoAxes, kNoAxes, "M140 MB (a retract from the current Z)")) {
-                    m_pos.z += *w.mb * m_scale;
-                    m_sink.rapid(Rapid{m_pos, m_known.mask()});
-                }
-            } else {
-                // Up the tool axis to the travel limit, which the trace does not know in the work
-                // offset's frame: Z (with the rotary axes turned, X Y Z) unknown until given again.
-                const bool turned = m_five.active() && m_five.fiveAxisMove();
-                m_known.forget(turned ? AxisMask{} : axisBit(2));
-                warnOnce(kWarnM140, b,
-                         std::string("M140 MB MAX: the retract to the travel limit is not traced; ") +
-                             (turned ? "X, Y and Z are unknown until a block gives them"
-                                     : "Z is unknown until a block gives it"));
-            }
+            retract(b, w.mbMax ? std::nullopt : w.mb, "M140 MB");
             break;
         default:
             break;

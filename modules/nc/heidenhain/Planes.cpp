@@ -66,7 +66,7 @@ void Machine::planeFunction(const Block& b)
         return;
     }
     if (mb || mbMax)
-        planeRetract(b, mb);
+        retract(b, mbMax ? std::nullopt : mb, formName(b) + " MB");
     tilt(b, *plane);
     positionForPlane(b, *plane);
 }
@@ -144,22 +144,6 @@ void Machine::workingPlaneCycle(const Block& b, const BlockWords& w)
     const auto plane = planeOfAxisAngles(b, {w.axes[3], w.axes[4], w.axes[5]}, "CYCL DEF 19");
     if (plane)
         tilt(b, *plane);
-}
-
-// MB of a PLANE block: back along the tool axis before the turn, by the distance or (MAX) to the
-// travel limit, which the trace does not know: the position is then unknown.
-void Machine::planeRetract(const Block& b, std::optional<double> distance)
-{
-    if (!distance) {
-        m_known.forget();
-        return;
-    }
-    if (m_five.active() && m_five.fiveAxisMove()) {
-        retractAlongToolAxis(*distance * m_scale);
-    } else if (needKnown(b, axisBit(2), kNoAxes, kNoAxes, "MB (a retract from the current Z)")) {
-        m_pos.z += *distance * m_scale;
-        m_sink.rapid(Rapid{m_pos, m_known.mask()});
-    }
 }
 
 // Sets the tilt (`rotation` about the datum; the untilted plane resets it), turned by the

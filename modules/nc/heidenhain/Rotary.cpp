@@ -205,14 +205,6 @@ void Machine::sendFiveAxis(const Element& e, bool rapid, double feed)
     m_sink.arc(m_five.arcInWorkpiece(arc));
 }
 
-// M140 MB with the rotary axes turned: back along the tool axis, as the control retracts.
-void Machine::retractAlongToolAxis(double distance)
-{
-    const kinematics::ToolPose tool = m_five.toolPose(m_pos);
-    m_pos = m_five.programmedFor(tool.tip + tool.axis * distance);
-    m_sink.toolAxisMove(m_five.move(m_pos, 0));
-}
-
 // The active tool's length for a head's kinematics: TOOL DEF L, else the tool table's, plus DL of
 // the TOOL CALL; unknown when neither gives one.
 void Machine::updateToolLength()

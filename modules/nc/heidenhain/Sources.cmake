@@ -19,4 +19,5 @@ set(NC_PART_SOURCES
     Circles.cpp
     Cycles.cpp
     Rotary.cpp
+    Retract.cpp
     Planes.cpp)

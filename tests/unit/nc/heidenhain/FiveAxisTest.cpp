@@ -200,8 +200,10 @@ TEST(HeidenhainFiveAxis, M140RetractsAlongTheToolAxis)
 }
 
 // The five-axis post's frame of an operation: M140 MB MAX, the table turned up there, TCPM on,
-// the first move giving every axis. Up the tool axis the tip is unknown: nothing is traced there.
-TEST(HeidenhainFiveAxis, AfterM140MbMaxTheTableTurnsUntracedUntilEveryAxisIsGiven)
+// the first move giving every axis. The retract goes to the end of Z's travel (RetractTest.cpp),
+// the table turns up there and the tool comes down from it; after the second retract the table
+// turns home at the top of Z again.
+TEST(HeidenhainFiveAxis, AfterM140MbMaxTheTableTurnsAtTheTopOfTheTravel)
 {
     const kinematics::Machine m = mcvl1000();
     const Traced r = runOn(m, "2 L X+0 Y+0 Z+50 R0 FMAX M3\n"
@@ -214,16 +216,20 @@ TEST(HeidenhainFiveAxis, AfterM140MbMaxTheTableTurnsUntracedUntilEveryAxisIsGive
                               "9 L M129\n"
                               "10 L C+0 B+0 FMAX\n"
                               "11 L X+0 Y+0 FMAX\n");
-    EXPECT_EQ(r.count(Severity::Error), 0u) << r.diagnostics()[0];
-    EXPECT_TRUE(r.has(Severity::Warning, 4, "Z is unknown until a block gives it"));
-    EXPECT_TRUE(r.has(Severity::Warning, 5, "while X, Y or Z is unknown is not traced"));
+    EXPECT_TRUE(r.result.diagnostics.empty()) << r.diagnostics()[0];
+    const auto rapids = r.all<Rapid>();
+    ASSERT_EQ(rapids.size(), 3u);
+    expectNear(rapids[1].to, {0, 0, 660});
     const auto moves = r.all<ToolAxisMove>();
-    ASSERT_EQ(moves.size(), 1u);  // block 7 only
-    expectNear(moves[0].tip, {10, 20, 50});
-    expectNear(moves[0].axis, kAxis3040, 1e-12);
-    // Back to 3-axis with Z unknown: the known axes only, as at a program's start.
-    ASSERT_EQ(r.all<Rapid>().size(), 2u);
-    EXPECT_EQ(r.all<Rapid>()[1].axes.bits, AxisMask::kX | AxisMask::kY);
+    ASSERT_EQ(moves.size(), 5u);  // blocks 4, 6, 7, 8 and 10
+    // Block 4 without TCPM: the machine's axes stay at the top while the table turns under them.
+    EXPECT_NEAR(kinematics::linearAxesFor(m.kinematics, moves[0].tip, {30, 40}).z, 660, 1e-9);
+    expectNear(moves[2].tip, {10, 20, 50});
+    expectNear(moves[2].axis, kAxis3040, 1e-12);
+    EXPECT_NEAR(kinematics::linearAxesFor(m.kinematics, moves[3].tip, {30, 40}).z, 660, 1e-9);
+    // Back to 3-axis: the table home, the tool still at the top of Z.
+    EXPECT_NEAR(rapids[2].to.z, 660, 1e-9);
+    EXPECT_TRUE(rapids[2].axes.all());
 }
 
 TEST(HeidenhainFiveAxis, FunctionTcpmWordsAreChecked)

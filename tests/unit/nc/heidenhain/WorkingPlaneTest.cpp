@@ -49,16 +49,18 @@ TEST(HeidenhainWorkingPlane, PlaneSpatialTurnTiltsTheFrameAndTheMovesStayInIt)
     expectNear(planes[0].origin, {});
     EXPECT_FALSE(planes[1].tilted());
     EXPECT_EQ(r.lines<WorkingPlane>(), (std::vector<int>{4, 8}));
-    // The plane's moves are 3-axis records in its frame, the position unknown after MB MAX.
+    // The plane's moves are 3-axis records in its frame; MB MAX retracts to the end of Z's travel
+    // before each turn (RetractTest.cpp).
     EXPECT_TRUE(r.all<ToolAxisMove>().empty());
     const auto rapids = r.all<Rapid>();
-    ASSERT_EQ(rapids.size(), 4u);
-    EXPECT_NEAR(rapids[1].to.x, 10, 1e-9);
-    EXPECT_NEAR(rapids[1].to.y, 5, 1e-9);
-    EXPECT_FALSE(rapids[1].axes.has(2));  // Z unknown after MB MAX
-    expectNear(rapids[2].to, {10, 5, 20});
+    ASSERT_EQ(rapids.size(), 6u);
+    expectNear(rapids[1].to, {0, 0, 660});
+    EXPECT_NEAR(rapids[2].to.x, 10, 1e-9);
+    EXPECT_NEAR(rapids[2].to.y, 5, 1e-9);
+    expectNear(rapids[3].to, {10, 5, 20});
     expectNear(r.all<Linear>()[0].to, {10, 5, 10});
-    expectNear(rapids[3].to, {0, 0, 50});  // TURN brought the table home: a 3-axis move again
+    expectNear(rapids[4].to, {10, 5, 660});
+    expectNear(rapids[5].to, {0, 0, 50});  // TURN brought the table home: a 3-axis move again
 }
 
 TEST(HeidenhainWorkingPlane, StayLeavesTheAxesAndGivesTheirAnglesInQ120ToQ122)

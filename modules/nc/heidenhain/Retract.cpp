@@ -1,0 +1,80 @@
+// Retracts along the tool axis: M140 MB, and the MB of a PLANE block before the rotary axes turn
+// (iTNC 530 User's Manual, "Retraction from the contour in the tool-axis direction: M140" and the
+// PLANE function's automatic positioning). MB with a distance moves that far; MB MAX moves to the
+// end of the traverse range, where the first linear axis reaches its travel limit. Only a machine
+// whose kinematic chain places the workpiece in its axes (kinematics.workpieceZero) tells where
+// that is in the workpiece frame; without one the retract is not traced and the axes it moves
+// become unknown, so that nothing is drawn from the old position.
+#include "nc/heidenhain/Machine.h"
+
+#include <variant>
+
+namespace camwb::nc::heidenhain {
+
+using namespace camwb::toolpath;
+
+// `distance` in program units, nullopt for MB MAX; `what` names the word in messages ("M140 MB").
+void Machine::retract(const Block& b, std::optional<double> distance, const std::string& what)
+{
+    const bool turned = m_five.active() && m_five.fiveAxisMove();
+    if (distance) {
+        if (turned) {
+            retractAlongToolAxis(*distance * m_scale);
+        } else if (needKnown(b, axisBit(2), kNoAxes, kNoAxes, (what + " (a retract from the current Z)").c_str())) {
+            m_pos.z += *distance * m_scale;
+            m_sink.rapid(Rapid{m_pos, m_known.mask()});
+        }
+        return;
+    }
+    std::string why;
+    if (!m_five.active()) {
+        if (m_options.machine)
+            why = "the " + (m_options.machine->name.empty() ? m_options.machine->id : m_options.machine->name) +
+                  "'s file gives no kinematic chain that places the workpiece in its travel";
+    } else if (!m_known.complete()) {
+        why = "the position before it is not known";
+    } else if (!turned && m_five.inPlane() && !m_five.angles().complete()) {
+        why = "the rotary axes have not been positioned for the tilted working plane";
+    } else {
+        // The tip and tool axis in the workpiece frame; in a working plane (or three-axis) the tool
+        // stands along the plane's Z.
+        Vec3 tip = m_plane.toWorkpiece(m_pos), axis = m_plane.zAxis;
+        if (turned) {
+            const kinematics::ToolPose pose = m_five.toolPose(m_pos);
+            tip = pose.tip;
+            axis = pose.axis.normalized();
+        }
+        const auto end = m_five.travelEnd(tip, axis);
+        if (const auto* reached = std::get_if<FiveAxisState::TravelEnd>(&end)) {
+            if (turned) {
+                retractAlongToolAxis(reached->distanceMm);
+            } else {
+                m_pos.z += reached->distanceMm;
+                m_sink.rapid(Rapid{m_pos, m_known.mask()});
+            }
+            return;
+        }
+        why = std::get<std::string>(end);
+    }
+    // Up the tool axis to somewhere unknown: Z (with the rotary axes turned, X Y Z) unknown until
+    // given again.
+    const bool knewSome = turned ? m_known.mask().bits != 0 : m_known.mask().has(2);
+    m_known.forget(turned ? AxisMask{} : axisBit(2));
+    if (knewSome)
+        warnOnce(
+            kWarnM140, b,
+            what + " MAX: the retract to the travel limit is not traced" + (why.empty() ? "" : " (" + why + ")") +
+                "; " +
+                (turned ? "X, Y and Z are unknown until a block gives them" : "Z is unknown until a block gives it"));
+}
+
+// With the rotary axes turned: back along the tool axis by `distanceMm`, the machine's axes moving
+// as the chain turns that direction (a five-axis record).
+void Machine::retractAlongToolAxis(double distanceMm)
+{
+    const kinematics::ToolPose tool = m_five.toolPose(m_pos);
+    m_pos = m_five.programmedFor(tool.tip + tool.axis * distanceMm);
+    m_sink.toolAxisMove(m_five.move(m_pos, 0));
+}
+
+}  // namespace camwb::nc::heidenhain

@@ -206,3 +206,18 @@ TEST(PathAnalysis, TipRadiiEqualTheDistanceToEachAxis)
         EXPECT_NEAR(radii[1], std::hypot(across, tip.x), 1e-9);
     }
 }
+
+// A head-head chain (C carries B, both through a pivot 100 mm above the gauge point) with a
+// 50 mm tool: the tip is 150 mm from the B axis at any pose, and with B at 30° it swings
+// 150·sin 30° = 75 mm out from the C axis, whichever way C has turned B's axis.
+TEST(PathAnalysis, TipRadiiOfAHeadFollowTheToolLength)
+{
+    kinematics::KinematicChain chain;
+    chain.type = kinematics::ChainType::HeadHead;
+    chain.joints = {{"C", false, {0, 0, 1}, {0, 0, 100}}, {"B", false, {0, 1, 0}, {0, 0, 100}}};
+    for (double c : {0.0, 90.0, -135.0}) {
+        const auto radii = kinematics::tipRadii(chain, {{10, -20, 30}, {c, 30}}, 50);
+        EXPECT_NEAR(radii[0], 75, 1e-9) << c;
+        EXPECT_NEAR(radii[1], 150, 1e-9) << c;
+    }
+}

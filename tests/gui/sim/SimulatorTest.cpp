@@ -330,7 +330,7 @@ private slots:
         QVERIFY(player->run()->cycleSeconds > player->run()->simpleSeconds);  // tool changes, accelerations
         QVERIFY(!player->run()->analysis.quantities.empty());
         const QStringList ids = player->quantityIds();
-        for (const char* id : {"vx", "ax", "tipFeed", "omega0", "omega1"})
+        for (const char* id : {"vx", "ax", "tipFeed", "omega0", "omega1", "vRotary0", "vRotary1"})
             QVERIFY2(ids.contains(QLatin1String(id)), id);
         auto* combo = window.simDock()->findChild<QComboBox*>(QStringLiteral("simQuantity"));
         QVERIFY(combo && combo->isEnabled());

@@ -300,6 +300,18 @@
         <source>Move the playback to the first run of the line given beside the button</source>
         <translation>Přesunout přehrávání na první provedení řádku zadaného vedle tlačítka</translation>
     </message>
+    <message>
+        <source>&amp;Import Measured Trace…</source>
+        <translation>&amp;Importovat naměřený záznam…</translation>
+    </message>
+    <message>
+        <source>Overlay a trace the control recorded (TNCscope CSV) on the simulated program: nominal and actual paths on the workpiece, the deviation per sample</source>
+        <translation>Překrýt simulovaný program záznamem z řídicího systému (CSV z TNCscope): požadovaná a skutečná dráha na obrobku, odchylka v každém vzorku</translation>
+    </message>
+    <message>
+        <source>C&amp;lear Measured Trace</source>
+        <translation>O&amp;dstranit naměřený záznam</translation>
+    </message>
 </context>
 <context>
     <name>ToolActions</name>
@@ -1795,6 +1807,137 @@ Pracoviště pro CAM a postprocesory.</translation>
     </message>
 </context>
 <context>
+    <name>camwb::gui::MeasuredImportDialog</name>
+    <message>
+        <source>none</source>
+        <translation>žádný</translation>
+    </message>
+    <message>
+        <source>s</source>
+        <translation>s</translation>
+    </message>
+    <message>
+        <source>ms</source>
+        <translation>ms</translation>
+    </message>
+    <message>
+        <source>mm</source>
+        <translation>mm</translation>
+    </message>
+    <message>
+        <source>µm</source>
+        <translation>µm</translation>
+    </message>
+    <message>
+        <source>inch</source>
+        <translation>palce</translation>
+    </message>
+    <message>
+        <source>degrees</source>
+        <translation>stupně</translation>
+    </message>
+    <message>
+        <source>radians</source>
+        <translation>radiány</translation>
+    </message>
+    <message>
+        <source>Import a Measured Trace</source>
+        <translation>Import naměřeného záznamu</translation>
+    </message>
+    <message>
+        <source>%1: which column holds each channel (the first column is 1). The nominal and actual positions are carried through the simulation&apos;s machine onto the workpiece.</source>
+        <translation>%1: ve kterém sloupci je který kanál (první sloupec je 1). Požadované a skutečné polohy se přepočtou kinematikou stroje simulace na obrobek.</translation>
+    </message>
+    <message>
+        <source>Nominal</source>
+        <translation>Požadovaná</translation>
+    </message>
+    <message>
+        <source>Actual</source>
+        <translation>Skutečná</translation>
+    </message>
+    <message>
+        <source>Deviation</source>
+        <translation>Odchylka</translation>
+    </message>
+    <message>
+        <source>X</source>
+        <translation>X</translation>
+    </message>
+    <message>
+        <source>Y</source>
+        <translation>Y</translation>
+    </message>
+    <message>
+        <source>Z</source>
+        <translation>Z</translation>
+    </message>
+    <message>
+        <source>1st rotary (A/B)</source>
+        <translation>1. rotační (A/B)</translation>
+    </message>
+    <message>
+        <source>2nd rotary (C)</source>
+        <translation>2. rotační (C)</translation>
+    </message>
+    <message>
+        <source>Time column</source>
+        <translation>Sloupec času</translation>
+    </message>
+    <message>
+        <source>Header lines</source>
+        <translation>Řádky záhlaví</translation>
+    </message>
+    <message>
+        <source>Time in</source>
+        <translation>Čas v</translation>
+    </message>
+    <message>
+        <source>Linear axes in</source>
+        <translation>Lineární osy v</translation>
+    </message>
+    <message>
+        <source>Rotary axes in</source>
+        <translation>Rotační osy v</translation>
+    </message>
+    <message>
+        <source>Automatic (; then tab then ,)</source>
+        <translation>Automaticky (; potom tabulátor, potom ,)</translation>
+    </message>
+    <message>
+        <source>Semicolon (decimal comma allowed)</source>
+        <translation>Středník (desetinná čárka povolena)</translation>
+    </message>
+    <message>
+        <source>Tab (decimal comma allowed)</source>
+        <translation>Tabulátor (desetinná čárka povolena)</translation>
+    </message>
+    <message>
+        <source>Comma</source>
+        <translation>Čárka</translation>
+    </message>
+    <message>
+        <source>Separator</source>
+        <translation>Oddělovač</translation>
+    </message>
+    <message>
+        <source> mm</source>
+        <translation> mm</translation>
+    </message>
+    <message>
+        <source>Subtracted from the recorded Z: the tool length where the control recorded the spindle face, 0 where it recorded the tool tip</source>
+        <translation>Odečte se od zaznamenaného Z: délka nástroje, pokud systém zaznamenal čelo vřetena, 0, pokud zaznamenal špičku nástroje</translation>
+    </message>
+    <message>
+        <source>Z above the tool tip</source>
+        <translation>Z nad špičkou nástroje</translation>
+    </message>
+    <message>
+        <source>Import</source>
+        <translation>Importovat</translation>
+    </message>
+</context>
+<context>
     <name>camwb::gui::ModalStatePanel</name>
     <message>
         <source>unknown (no move yet)</source>
@@ -3040,6 +3183,30 @@ The job %1 is opened as it was saved.</source>
         <source>At the program&apos;s end: largest gouge %1 · largest leftover %2 · %3 mm beside the part</source>
         <translation>Na konci programu: největší podříznutí %1 · největší zbytek %2 · %3 mm vedle dílce</translation>
     </message>
+    <message>
+        <source>The measured trace was recorded for the program as it was before the change: import a trace of this program, or clear it.</source>
+        <translation>Naměřený záznam patří k programu před změnou: importujte záznam tohoto programu, nebo ho odstraňte.</translation>
+    </message>
+    <message>
+        <source>Import a Measured Trace</source>
+        <translation>Import naměřeného záznamu</translation>
+    </message>
+    <message>
+        <source>Simulate the program first: a measured trace is carried onto the workpiece through the simulation&apos;s machine and compared with its path.</source>
+        <translation>Nejprve program simulujte: naměřený záznam se přepočte kinematikou stroje simulace na obrobek a porovná s její dráhou.</translation>
+    </message>
+    <message>
+        <source>Measured traces (*.csv *.txt);;All files (*)</source>
+        <translation>Naměřené záznamy (*.csv *.txt);;Všechny soubory (*)</translation>
+    </message>
+    <message>
+        <source>Measured %1: %2 samples, %3 s; actual to nominal up to %4 mm</source>
+        <translation>Naměřeno %1: %2 vzorků, %3 s; skutečná od požadované až %4 mm</translation>
+    </message>
+    <message>
+        <source>, to the program up to %1 mm</source>
+        <translation>, od programu až %1 mm</translation>
+    </message>
 </context>
 <context>
     <name>camwb::gui::SimPlayer</name>
@@ -3050,6 +3217,14 @@ The job %1 is opened as it was saved.</source>
     <message>
         <source>Simulated %1: cycle time %2 s, %3 errors, %4 warnings</source>
         <translation>Simulováno %1: čas cyklu %2 s, chyby: %3, varování: %4</translation>
+    </message>
+    <message>
+        <source>Simulate the program first: a measured trace is carried onto the workpiece through the simulation&apos;s machine and compared with its path.</source>
+        <translation>Nejprve program simulujte: naměřený záznam se přepočte kinematikou stroje simulace na obrobek a porovná s její dráhou.</translation>
+    </message>
+    <message>
+        <source>Measured trace %1: %2 samples</source>
+        <translation>Naměřený záznam %1: %2 vzorků</translation>
     </message>
 </context>
 <context>

@@ -414,6 +414,12 @@ int simCommand(const std::vector<std::string>& args)
         for (const auto& [axis, times] : (*analysis)["reversals"].items())
             std::cout << " " << axis << " " << times.size();
         std::cout << "\n";
+        if (analysis->contains("maxRotaryTipFeedMmPerMin")) {
+            std::cout << "tip feed from the rotary axes up to:";
+            for (const auto& [axis, feed] : (*analysis)["maxRotaryTipFeedMmPerMin"].items())
+                std::cout << " v_" << axis << " " << base::formatFixed(feed.get<double>(), 0) << " mm/min";
+            std::cout << "\n";
+        }
     }
     std::optional<nlohmann::json> measured;
     if (!options.measured.empty()) {

@@ -8,6 +8,7 @@
 #include "sim/PathAnalysis.h"
 
 #include <algorithm>
+#include <cmath>
 
 namespace camwb::cli {
 
@@ -28,7 +29,7 @@ nlohmann::json analysisReport(const sim::Trace& trace, const kinematics::Kinemat
 {
     nlohmann::json report;
     const bool rotaries = chain.fiveAxis();
-    const sim::PathAnalysis analysis = sim::analysePath(trace, rotaries);
+    const sim::PathAnalysis analysis = sim::analysePath(trace, chain);
     nlohmann::json reversals;
     const char* linear[] = {"X", "Y", "Z"};
     for (int axis = 0; axis < 5; ++axis) {
@@ -43,6 +44,17 @@ nlohmann::json analysisReport(const sim::Trace& trace, const kinematics::Kinemat
     report["reversals"] = reversals;
     const std::vector<double>& feed = analysis.tipFeed.value;
     report["maxTipFeedMmPerMin"] = feed.empty() ? 0.0 : *std::max_element(feed.begin(), feed.end()) * 60;
+    // Seed 003 eqs. 23-26: the largest part of the tip's feed each rotary axis makes (|ω|·r).
+    if (rotaries) {
+        nlohmann::json rotary;
+        for (int j = 0; j < 2; ++j) {
+            double top = 0;
+            for (double v : analysis.rotaryTipSpeed[j].value)
+                top = std::max(top, std::abs(v));
+            rotary[chain.joints[j].axis] = top * 60;
+        }
+        report["maxRotaryTipFeedMmPerMin"] = rotary;
+    }
     return report;
 }
 

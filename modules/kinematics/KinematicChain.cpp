@@ -149,6 +149,32 @@ ToolPose forwardKinematics(const KinematicChain& chain, const MachinePose& pose,
     return {vec(table.applyInverse(tipMachine)), vec(table.r.transpose() * axisMachine)};
 }
 
+std::array<double, 2> tipRadii(const KinematicChain& chain, const MachinePose& pose, double toolLengthMm)
+{
+    std::array<double, 2> radii{0, 0};
+    const Vector3d tip = eigen(pose.linear) + headMotion(chain, pose.rotaryDeg, toolLengthMm).t;
+    // Each axis where the joints outside it (nearer the machine frame on its side) have carried
+    // it: a table axis in machine coordinates, a head axis beside the linear axes' position.
+    Motion table, head;
+    for (std::size_t i = 0; i < chain.joints.size() && i < 2; ++i) {
+        const RotaryJoint& joint = chain.joints[i];
+        const Vector3d direction = eigen(joint.direction).normalized();
+        Vector3d point, axis;
+        if (joint.onTable) {
+            point = table.apply(eigen(joint.pivot));
+            axis = table.r * direction;
+            table = compose(table, turn(joint, pose.rotaryDeg[i], joint.pivot));
+        } else {
+            const Vec3 pivot = joint.pivot + Vec3{0, 0, toolLengthMm};
+            point = eigen(pose.linear) + head.apply(eigen(pivot));
+            axis = head.r * direction;
+            head = compose(head, turn(joint, pose.rotaryDeg[i], pivot));
+        }
+        radii[i] = (tip - point).cross(axis).norm();
+    }
+    return radii;
+}
+
 TiltedAxes tiltedAxes(const KinematicChain& chain, const std::array<double, 2>& rotaryDeg)
 {
     // A direction turned by the head, then seen from the turned workpiece (the tool's length moves

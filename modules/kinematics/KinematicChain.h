@@ -88,6 +88,13 @@ std::vector<IkSolution> inverseOrientation(const KinematicChain& chain, const Ve
 Vec3 linearAxesFor(const KinematicChain& chain, const Vec3& tip, const std::array<double, 2>& rotaryDeg,
                    double toolLengthMm = 0);
 
+// How far the tool tip is from each rotary axis at `pose` (mm), in KinematicChain::joints order:
+// the radius on which turning that axis alone carries the tip relative to the workpiece, so that
+// ω·r is the part of the tip's feed the axis makes. Seed 003 eqs. 25-26 for any chain (r_v1 from
+// the tilt, r_v2 from the table it carries, whose axis the tilt has turned); 0 for a chain
+// without rotaries.
+std::array<double, 2> tipRadii(const KinematicChain& chain, const MachinePose& pose, double toolLengthMm = 0);
+
 // The machine's X and Z axes as the rotary angles turn them, in the workpiece frame: the tilted
 // coordinate system a control sets up for axis angles (Heidenhain CYCL DEF 19 with the machine's
 // axis positions), whose axes are parallel to the machine's linear axes as the table and head turn.

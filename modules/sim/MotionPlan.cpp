@@ -267,7 +267,8 @@ MotionPlan planMotion(const MoveList& list, const kinematics::Machine& machine, 
         shapeProfile(p);
         t = p.end();
     }
-    plan.totalSeconds = t;
+    plan.endPauseSeconds = spindleRamp(rpm, 0, machine);
+    plan.totalSeconds = t + plan.endPauseSeconds;
     return plan;
 }
 
@@ -279,14 +280,22 @@ CycleTimes cycleTimes(const MoveList& list, const MotionPlan& plan, const toolpa
         (list.moves[i].kind == MoveKind::Rapid ? s.rapidSeconds : s.feedSeconds) += p.moveSeconds;
         s.pauseSeconds += p.pauseSeconds;
     };
-    for (std::size_t i = 0; i < list.moves.size() && i < plan.moves.size(); ++i) {
+    const std::size_t n = std::min(list.moves.size(), plan.moves.size());
+    for (std::size_t i = 0; i < n; ++i) {
         add(c.planned, i);
         add(c.plannedPerTool[list.moves[i].tool], i);
+    }
+    // The spindle's stop at the end belongs to the last move's tool and section.
+    if (n > 0) {
+        c.planned.pauseSeconds += plan.endPauseSeconds;
+        c.plannedPerTool[list.moves[n - 1].tool].pauseSeconds += plan.endPauseSeconds;
     }
     for (const MoveSection& section : list.sections) {
         SectionTime s{section.name, section.tool, {}};
         for (std::size_t i = section.firstMove; i < section.endMove && i < plan.moves.size(); ++i)
             add(s.planned, i);
+        if (n > 0 && section.firstMove < n && section.endMove >= n)
+            s.planned.pauseSeconds += plan.endPauseSeconds;
         c.sections.push_back(s);
     }
     c.simpleSeconds = simple.totals.totalSeconds();
@@ -303,6 +312,8 @@ std::map<int, double> secondsPerOperation(const toolpath::Toolpath& program, con
         const std::uint32_t record = moves.moves[i].record;
         const int operation = record < program.size() ? program.source(record).operationIndex : -1;
         seconds[operation] += plan.moves[i].pauseSeconds + plan.moves[i].moveSeconds;
+        if (i + 1 == std::min(moves.moves.size(), plan.moves.size()))
+            seconds[operation] += plan.endPauseSeconds;
     }
     return seconds;
 }

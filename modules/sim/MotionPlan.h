@@ -45,6 +45,9 @@ struct PlannedMove {
 
 struct MotionPlan {
     std::vector<PlannedMove> moves;  // one per MoveList move, same index
+    // The spindle's stop after the last move (an M5 there, or the program's end, which stops it
+    // too): no move follows to carry the ramp down, so it stands here, in totalSeconds.
+    double endPauseSeconds = 0;
     double totalSeconds = 0;
     // Moves a speed limit of 0 stopped (a feed move at feed 0): they take no time, as the simple
     // estimate counts them (toolpath::ProgramStats::movesWithoutFeed).

@@ -54,7 +54,7 @@ void sampleMotion(const MoveList& list, const MotionPlan& plan, const kinematics
         rotary = pose.rotaryDeg;
         MotionSample s;
         const kinematics::ToolPose tp = toolAt(move, u);
-        s.at = {t, pose.linear, pose.rotaryDeg, tp.tip};
+        s.at = {t, pose.linear, pose.rotaryDeg, tp.tip, tool != nullptr ? tool->lengthMm : 0};
         s.toolAxis = tp.axis;
         s.move = i;
         s.feedMmPerMin = p.rotationOnly ? 0 : speedAt(p, inMotion) * 60.0;

@@ -147,4 +147,27 @@ PathAnalysis analysePath(const Trace& trace, bool rotaries, const AnalysisOption
     return a;
 }
 
+PathAnalysis analysePath(const Trace& trace, const kinematics::KinematicChain& chain, const AnalysisOptions& options)
+{
+    PathAnalysis a = analysePath(trace, chain.fiveAxis(), options);
+    if (!chain.fiveAxis())
+        return a;
+    for (int j = 0; j < 2; ++j) {
+        const Series& omega = a.rotaryVelocity[j];
+        Series& v = a.rotaryTipSpeed[j];
+        v.firstSample = omega.firstSample;
+        v.time = omega.time;
+        v.value.resize(omega.value.size());
+    }
+    // ω is aligned to a sample (the later one of a backward step, the middle of a central one):
+    // r is taken at that same sample's pose.
+    for (std::size_t k = 0; k < a.rotaryVelocity[0].value.size(); ++k) {
+        const TraceSample& s = trace[a.rotaryVelocity[0].firstSample + k];
+        const std::array<double, 2> r = kinematics::tipRadii(chain, {s.linear, s.rotaryDeg}, s.toolLengthMm);
+        for (int j = 0; j < 2; ++j)
+            a.rotaryTipSpeed[j].value[k] = a.rotaryVelocity[j].value[k] * r[j];
+    }
+    return a;
+}
+
 }  // namespace camwb::sim

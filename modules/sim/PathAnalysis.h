@@ -1,10 +1,12 @@
 // The five-axis path analysis of seed 003 on any time-sampled trace, simulated (MotionSamples) or
 // measured (MeasuredTrace): axis velocities and accelerations by finite differences (the thesis'
 // backward differences by default), path speed, rotary ω and α, the tool-tip feed relative to the
-// workpiece, the rotation per unit of tip travel N, and axis reversals.
+// workpiece and its parts from the rotary axes (v_A, v_C), the rotation per unit of tip travel N,
+// and axis reversals.
 #pragma once
 
 #include "base/Vec.h"
+#include "kinematics/KinematicChain.h"
 
 #include <array>
 #include <cstddef>
@@ -21,6 +23,9 @@ struct TraceSample {
     Vec3 linear;
     std::array<double, 2> rotaryDeg{0, 0};
     Vec3 tip;
+    // The tool's length where a head turns the tool about a pivot above its tip (0 otherwise, and
+    // for a measured trace, whose Z is already the tip's).
+    double toolLengthMm = 0;
 };
 using Trace = std::vector<TraceSample>;
 
@@ -69,21 +74,28 @@ struct AnalysisOptions {
 };
 
 struct PathAnalysis {
-    std::array<Series, 3> linearVelocity;               // X Y Z, mm/s (eqs. 11-13)
-    std::array<Series, 3> linearAcceleration;           // mm/s² (eqs. 15-17)
-    Series pathSpeed;                                   // |v| of X Y Z, mm/s (eq. 14: machine frame)
-    Series pathAcceleration;                            // |a|, mm/s² (eq. 18)
-    std::array<Series, 2> rotaryVelocity;               // ω, rad/s (eqs. 19-20)
-    std::array<Series, 2> rotaryAcceleration;           // α, rad/s² (eqs. 21-22)
-    Series tipFeed;                                     // |Δtip / Δt| in the workpiece frame, mm/s (§6 item 10)
-    std::array<Series, 2> rotationPerTravel;            // N per rotary, rad/mm (§6 item 12); NaN: undefined
-    Series rotationPerTravelCombined;                   // sqrt(Δ0² + Δ1²) / s, rad/mm
+    std::array<Series, 3> linearVelocity;      // X Y Z, mm/s (eqs. 11-13)
+    std::array<Series, 3> linearAcceleration;  // mm/s² (eqs. 15-17)
+    Series pathSpeed;                          // |v| of X Y Z, mm/s (eq. 14: machine frame)
+    Series pathAcceleration;                   // |a|, mm/s² (eq. 18)
+    std::array<Series, 2> rotaryVelocity;      // ω, rad/s (eqs. 19-20)
+    std::array<Series, 2> rotaryAcceleration;  // α, rad/s² (eqs. 21-22)
+    Series tipFeed;                            // |Δtip / Δt| in the workpiece frame, mm/s (§6 item 10)
+    std::array<Series, 2> rotationPerTravel;   // N per rotary, rad/mm (§6 item 12); NaN: undefined
+    Series rotationPerTravelCombined;          // sqrt(Δ0² + Δ1²) / s, rad/mm
+    // The tip's speed relative to the workpiece that each rotary axis makes alone: ω·r, r the
+    // tip's distance from that axis at the sample (seed 003 eqs. 23-26: v_A, v_C), mm/s, signed
+    // as ω; aligned with rotaryVelocity. Empty without a chain.
+    std::array<Series, 2> rotaryTipSpeed;
     std::array<std::vector<std::size_t>, 5> reversals;  // per Channel, trace sample indices
 };
 
-// Everything above for `trace`; `rotaries` false (a three-axis machine) leaves the rotary
-// quantities empty.
+// Everything above but rotaryTipSpeed for `trace`; `rotaries` false (a three-axis machine)
+// leaves the rotary quantities empty.
 PathAnalysis analysePath(const Trace& trace, bool rotaries, const AnalysisOptions& options = {});
+// Everything, on the machine whose chain made the trace (its rotaries, their axes for v_A, v_C).
+PathAnalysis analysePath(const Trace& trace, const kinematics::KinematicChain& chain,
+                         const AnalysisOptions& options = {});
 
 // The tip's feed relative to the workpiece from the tips alone (what analysePath's tipFeed holds).
 Series tipFeed(const Trace& trace, Difference kind = Difference::Backward);

@@ -488,7 +488,9 @@ void MainWindow::setUpSimulator()
         m_simDockWidget->raise();
         return what;
     };
-    registerSimulatorActions(*m_actions, m_simPlayer, request, [this] { return m_simDock->lineToJumpTo(); });
+    registerSimulatorActions(
+        *m_actions, m_simPlayer, request, [this] { return m_simDock->lineToJumpTo(); },
+        [this] { m_simDock->importMeasured(*m_prompter); });
     m_simDock->addActions(*m_actions);
     connect(m_simPlayer, &SimPlayer::message, m_report, &ReportView::append);
     connect(m_workbench, &Workbench::modelChanged, m_simPlayer, &SimPlayer::clear);

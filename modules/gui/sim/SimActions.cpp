@@ -18,7 +18,8 @@ class Tr {
 }  // namespace
 
 void registerSimulatorActions(ActionRegistry& registry, SimPlayer* player,
-                              std::function<std::optional<SimRunRequest>()> request, std::function<int()> line)
+                              std::function<std::optional<SimRunRequest>()> request, std::function<int()> line,
+                              std::function<void()> importMeasured)
 {
     const QString menu = Tr::tr("&Simulate");
     auto add = [&](ActionSpec spec, auto slot) {
@@ -46,13 +47,26 @@ void registerSimulatorActions(ActionRegistry& registry, SimPlayer* player,
                          false,
                          Tr::tr("Move the playback to the first run of the line given beside the button")},
                         [player, line] { player->jumpToLine(line()); });
-    auto update = [player, play, pause, back, step, jump] {
+    QAction* import = add({"Cam.Sim.ImportMeasured",
+                           Tr::tr("&Import Measured Trace…"),
+                           menu,
+                           {},
+                           false,
+                           true,
+                           Tr::tr("Overlay a trace the control recorded (TNCscope CSV) on the simulated program: "
+                                  "nominal and actual paths on the workpiece, the deviation per sample")},
+                          [importMeasured] { importMeasured(); });
+    QAction* clearMeasured =
+        add({"Cam.Sim.ClearMeasured", Tr::tr("C&lear Measured Trace"), menu}, [player] { player->clearMeasured(); });
+    auto update = [player, play, pause, back, step, jump, import, clearMeasured] {
         const bool has = player->hasRun();
         play->setEnabled(has && !player->isPlaying());
         pause->setEnabled(has && player->isPlaying());
-        for (QAction* action : {back, step, jump})
+        for (QAction* action : {back, step, jump, import})
             action->setEnabled(has);
+        clearMeasured->setEnabled(player->measured() != nullptr);
     };
+    QObject::connect(player, &SimPlayer::measuredChanged, player, update);
     QObject::connect(player, &SimPlayer::ready, player, update);
     QObject::connect(player, &SimPlayer::cleared, player, update);
     QObject::connect(player, &SimPlayer::playingChanged, player, update);

@@ -56,6 +56,8 @@ std::vector<SampledQuantity> quantitiesOf(const sim::PathAnalysis& a, const kine
         q.push_back(quantity("alpha" + std::to_string(r), "α " + axis + " (rad/s²)", a.rotaryAcceleration[r],
                              a.reversals[3 + r]));
         q.push_back(quantity("n" + std::to_string(r), "N " + axis + " (rad/mm)", a.rotationPerTravel[r]));
+        q.push_back(
+            quantity("vRotary" + std::to_string(r), "v_" + axis + " (mm/s)", a.rotaryTipSpeed[r], a.reversals[3 + r]));
     }
     // N is undefined (NaN) where the tip stands; those samples are left out of the colour range.
     for (SampledQuantity& s : q)
@@ -85,7 +87,7 @@ std::optional<SimAnalysis> analyseMotion(const sim::MoveList& moves, const sim::
                       {analysis.stepSeconds});
     if (stopped)
         return std::nullopt;
-    const sim::PathAnalysis result = sim::analysePath(trace, machine.kinematics.fiveAxis());
+    const sim::PathAnalysis result = sim::analysePath(trace, machine.kinematics);
     analysis.tip.reserve(trace.size());
     for (const sim::TraceSample& sample : trace)
         analysis.tip.push_back(sample.tip);

@@ -2,6 +2,8 @@
 
 #include "gui/actions/ActionRegistry.h"
 #include "gui/shell/Banner.h"
+#include "gui/shell/Prompter.h"
+#include "gui/sim/MeasuredImportDialog.h"
 #include "gui/sim/SimChart.h"
 #include "gui/sim/SimPlayer.h"
 
@@ -9,6 +11,7 @@
 #include <QCheckBox>
 #include <QComboBox>
 #include <QDoubleSpinBox>
+#include <QFileInfo>
 #include <QFormLayout>
 #include <QHBoxLayout>
 #include <QLabel>
@@ -19,6 +22,7 @@
 #include <QToolBar>
 #include <QVBoxLayout>
 
+#include <algorithm>
 #include <cmath>
 
 namespace camwb::gui {
@@ -53,6 +57,7 @@ SimDock::SimDock(SimPlayer* player, QWidget* parent) :
     m_resolution(new QDoubleSpinBox(this)),
     m_showTool(new QCheckBox(tr("Tool and holder"), this)),
     m_results(new QLabel(this)),
+    m_measured(new QLabel(this)),
     m_chart(new SimChart(this))
 {
     setObjectName(QStringLiteral("simDockContent"));
@@ -65,6 +70,7 @@ SimDock::SimDock(SimPlayer* player, QWidget* parent) :
     m_cancel->setObjectName(QStringLiteral("simCancel"));
     m_chart->setObjectName(QStringLiteral("simChart"));
     m_results->setObjectName(QStringLiteral("simResults"));
+    m_measured->setObjectName(QStringLiteral("simMeasured"));
 
     m_speed->setRange(0, 100);
     m_speed->setValue(50);  // 10x
@@ -133,10 +139,10 @@ SimDock::SimDock(SimPlayer* player, QWidget* parent) :
     });
     connect(m_player, &SimPlayer::positionChanged, this, &SimDock::updateReadout);
     connect(m_player, &SimPlayer::deviationReady, this, &SimDock::updateDeviation);
-    connect(m_player, &SimPlayer::outOfDateChanged, this, [this](bool outOfDate) {
-        m_banner->setMessage(outOfDate ? tr("Out of date: the program was changed after it was simulated. "
-                                            "Simulate again to see what it does now.")
-                                       : QString());
+    connect(m_player, &SimPlayer::outOfDateChanged, this, &SimDock::updateBanner);
+    connect(m_player, &SimPlayer::measuredChanged, this, [this] {
+        updateMeasured();
+        updateBanner();
     });
     updateReadout();
 }
@@ -180,6 +186,9 @@ QWidget* SimDock::makeResults()
 
     form->addRow(m_results);
     m_results->setWordWrap(true);
+    form->addRow(m_measured);
+    m_measured->setWordWrap(true);
+    m_measured->hide();
 
     connect(m_quantity, &QComboBox::currentIndexChanged, this, &SimDock::applyQuantity);
     connect(m_autoLimits, &QCheckBox::toggled, this, [this](bool autoLimits) {
@@ -197,7 +206,7 @@ QWidget* SimDock::makeResults()
 void SimDock::addActions(const ActionRegistry& registry)
 {
     for (const char* id : {"Cam.Sim.Start", "Cam.Sim.Play", "Cam.Sim.Pause", "Cam.Sim.StepBack", "Cam.Sim.StepForward",
-                           "Cam.Sim.JumpToLine"})
+                           "Cam.Sim.JumpToLine", "Cam.Sim.ImportMeasured", "Cam.Sim.ClearMeasured"})
         if (QAction* action = registry.action(QLatin1String(id)))
             m_buttons->addAction(action);
 }
@@ -271,6 +280,76 @@ void SimDock::updateDeviation()
                            .arg(place(deviation->maxGougeMm, deviation->gougeMove),
                                 place(deviation->maxLeftoverMm, deviation->leftoverMove))
                            .arg(deviation->maxOutsideMm, 0, 'f', 3));
+}
+
+void SimDock::updateBanner()
+{
+    QStringList lines;
+    if (m_player->isOutOfDate())
+        lines << tr("Out of date: the program was changed after it was simulated. Simulate again to see what it "
+                    "does now.");
+    if (m_player->isMeasuredOutOfDate())
+        lines << tr("The measured trace was recorded for the program as it was before the change: import a trace "
+                    "of this program, or clear it.");
+    m_banner->setMessage(lines.join(QLatin1Char('\n')));
+}
+
+void SimDock::importMeasured(Prompter& prompter)
+{
+    const QString title = tr("Import a Measured Trace");
+    if (!m_player->hasRun()) {
+        prompter.showError(title, tr("Simulate the program first: a measured trace is carried onto the workpiece "
+                                     "through the simulation's machine and compared with its path."));
+        return;
+    }
+    const QString file = prompter.openFileName(title, tr("Measured traces (*.csv *.txt);;All files (*)"));
+    if (file.isEmpty())
+        return;
+    auto* dialog = new MeasuredImportDialog(file, m_measuredColumns, m_measuredZOffsetMm, this);
+    dialog->setAttribute(Qt::WA_DeleteOnClose);
+    connect(dialog, &QDialog::accepted, this, [this, dialog, &prompter, title] {
+        const QString error = m_player->importMeasured(dialog->file(), dialog->columns(), dialog->spindleFaceToTipMm());
+        if (!error.isEmpty()) {
+            prompter.showError(title, error);
+            return;
+        }
+        m_measuredColumns = dialog->columns();
+        m_measuredZOffsetMm = dialog->spindleFaceToTipMm();
+        // Show what was imported: the actual path coloured by how far it followed the nominal one.
+        // (Already chosen, for an earlier trace: coloured again by the new one.)
+        const int index = m_quantity->findData(QString::fromLatin1(kMeasuredFollowingId));
+        if (index >= 0 && index == m_quantity->currentIndex())
+            applyQuantity();
+        else if (index >= 0)
+            m_quantity->setCurrentIndex(index);
+    });
+    dialog->open();
+}
+
+void SimDock::updateMeasured()
+{
+    const auto measured = m_player->measured();
+    const QString current = m_quantity->currentData().toString();
+    updateQuantities();
+    const int index = m_quantity->findData(current);
+    if (index >= 0 && index != m_quantity->currentIndex())
+        m_quantity->setCurrentIndex(index);
+    m_measured->setVisible(measured != nullptr);
+    if (!measured)
+        return;
+    double following = 0, toProgram = -1;
+    for (const SampledQuantity& q : measured->quantities) {
+        const double top = q.values.empty() ? 0 : *std::max_element(q.values.begin(), q.values.end());
+        (q.id == kMeasuredFollowingId ? following : toProgram) = top;
+    }
+    QString text = tr("Measured %1: %2 samples, %3 s; actual to nominal up to %4 mm")
+                       .arg(QFileInfo(QString::fromStdString(measured->path)).fileName())
+                       .arg(measured->trace.time.size())
+                       .arg(measured->trace.time.back() - measured->trace.time.front(), 0, 'f', 2)
+                       .arg(following, 0, 'f', 4);
+    if (toProgram >= 0)
+        text += tr(", to the program up to %1 mm").arg(toProgram, 0, 'f', 4);
+    m_measured->setText(text);
 }
 
 }  // namespace camwb::gui

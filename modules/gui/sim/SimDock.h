@@ -2,8 +2,11 @@
 // read-out of time, line and move with the cycle time, progress and Cancel while a simulation is
 // built, a banner when the program changed after simulating, and the results: the path coloured
 // by an analysed quantity (auto or user limits), the stock's deviation limit with the largest
-// gouge and leftover, and the chart. It only shows and forwards: SimPlayer does the work.
+// gouge and leftover, the chart, and a measured trace's import (its column layout asked in a small
+// dialog) and summary. It only shows and forwards: SimPlayer does the work.
 #pragma once
+
+#include "sim/MeasuredTrace.h"
 
 #include <QWidget>
 
@@ -21,6 +24,7 @@ namespace camwb::gui {
 
 class ActionRegistry;
 class Banner;
+class Prompter;
 class SimChart;
 class SimPlayer;
 
@@ -35,6 +39,10 @@ public:
     int lineToJumpTo() const;
     // The stock's cell size for the next simulation (finer: truer deviations, more to draw).
     double resolutionMm() const;
+    // Cam.Sim.ImportMeasured: asks `prompter` for the CSV, then for its columns and units (a
+    // dialog prefilled with the last ones, at first sim::TraceColumns' defaults), and imports it;
+    // an error goes to `prompter` and leaves the dock as it was.
+    void importMeasured(Prompter& prompter);
     // Slider position -> playback speed (machine time per wall time), 0.1x .. 1000x.
     static double speedOfSlider(int value);
 
@@ -44,6 +52,8 @@ private:
     void updateQuantities();
     void applyQuantity();
     void updateDeviation();
+    void updateMeasured();
+    void updateBanner();
 
     SimPlayer* m_player;
     QToolBar* m_buttons;
@@ -63,7 +73,10 @@ private:
     QDoubleSpinBox* m_resolution;
     QCheckBox* m_showTool;
     QLabel* m_results;
+    QLabel* m_measured;
     SimChart* m_chart;
+    sim::TraceColumns m_measuredColumns;  // the layout the last import used
+    double m_measuredZOffsetMm = 0;
 };
 
 }  // namespace camwb::gui

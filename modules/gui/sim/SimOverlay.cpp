@@ -34,6 +34,9 @@ constexpr double kDoneFeedColor[3]{kFeedRgb[0] / 255.0, kFeedRgb[1] / 255.0, kFe
 constexpr double kMarkerColor[3]{0.9, 0.0, 0.0};
 // Where a check found an error (gouge, rapid in stock, holder): magenta, apart from the reversals.
 constexpr double kFindingColor[3]{0.85, 0.0, 0.85};
+// A measured trace: the program thin and dark, the nominal trace black (the actual is coloured).
+constexpr double kProgrammedColor[3]{0.35, 0.35, 0.38};
+constexpr double kNominalColor[3]{0.0, 0.0, 0.0};
 
 vtkSmartPointer<vtkPolyData> emptyLines()
 {
@@ -166,6 +169,7 @@ struct SimOverlay::Private {
     int stockTriangles = 0;
 
     vtkSmartPointer<vtkActor> coloured, markers, findings;
+    vtkSmartPointer<vtkActor> programmed, nominal;
     int findingCount = 0;
     vtkNew<vtkLookupTable> quantityTable;
     vtkSmartPointer<vtkScalarBarActor> quantityBar;
@@ -221,6 +225,7 @@ void SimOverlay::clear()
     d->deviationBar->SetVisibility(false);
     showColouredPath({}, {}, 0, 1, {}, {});
     showFindings({});
+    showMeasured({}, {});
 }
 
 void SimOverlay::Private::clearPath()
@@ -462,6 +467,8 @@ void SimOverlay::showColouredPath(const std::vector<base::Vec3>& points, const s
     d->coloured->GetMapper()->SetLookupTable(d->quantityTable);
     d->coloured->GetMapper()->UseLookupTableScalarRangeOn();
     d->coloured->GetProperty()->SetLineWidth(3.0f);
+    // Over the program's lines where it runs on them (a measured trace on its nominal path).
+    d->coloured->GetMapper()->SetRelativeCoincidentTopologyLineOffsetParameters(-4.0, -12.0);
     d->coloured->GetProperty()->LightingOff();
     d->coloured->PickableOff();
     d->add(d->coloured);
@@ -476,6 +483,34 @@ void SimOverlay::showColouredPath(const std::vector<base::Vec3>& points, const s
     }
     d->render();
 }
+
+void SimOverlay::showMeasured(const std::vector<base::Vec3>& programmed, const std::vector<base::Vec3>& nominal)
+{
+    d->remove(d->programmed);
+    d->remove(d->nominal);
+    if (programmed.size() >= 2) {
+        auto data = emptyLines();
+        for (std::size_t i = 0; i + 1 < programmed.size(); i += 2) {
+            const vtkIdType ids[2]{
+                data->GetPoints()->InsertNextPoint(programmed[i].x, programmed[i].y, programmed[i].z),
+                data->GetPoints()->InsertNextPoint(programmed[i + 1].x, programmed[i + 1].y, programmed[i + 1].z)};
+            data->GetLines()->InsertNextCell(2, ids);
+        }
+        d->programmed = lineActor(data, kProgrammedColor, 1.0f);
+        d->add(d->programmed);
+    }
+    if (nominal.size() >= 2) {
+        auto data = emptyLines();
+        data->GetLines()->InsertNextCell(static_cast<vtkIdType>(nominal.size()));
+        for (const base::Vec3& p : nominal)
+            data->GetLines()->InsertCellPoint(data->GetPoints()->InsertNextPoint(p.x, p.y, p.z));
+        d->nominal = lineActor(data, kNominalColor, 1.5f);
+        d->add(d->nominal);
+    }
+    d->render();
+}
+
+bool SimOverlay::showsMeasured() const { return d->nominal != nullptr; }
 
 void SimOverlay::showFindings(const std::vector<base::Vec3>& at)
 {

@@ -1,8 +1,9 @@
 // What the simulator draws in the 3D view: the tool (cutter, shank, holder as revolved shapes)
 // at its pose, the path travelled so far, the cut stock (plain, or coloured by its deviation from
-// the design model with a colour bar), and the path coloured by an analysed quantity with its
-// colour bar and red markers at axis reversals. Owned by View3D (View3D::simulation()), like the
-// task overlay; VTK stays in the .cpp, so every call also works without OpenGL (it keeps data).
+// the design model with a colour bar), the path coloured by an analysed quantity with its colour
+// bar and red markers at axis reversals, and a measured trace's nominal path beside the program. Owned by View3D
+// (View3D::simulation()), like the task overlay; VTK stays in the .cpp, so every call also works without OpenGL (it
+// keeps data).
 #pragma once
 
 #include "base/Vec.h"
@@ -62,6 +63,12 @@ public:
     void showColouredPath(const std::vector<base::Vec3>& points, const std::vector<double>& values, double low,
                           double high, const QString& title, const std::vector<base::Vec3>& markers);
     bool showsColouredPath() const;
+
+    // A measured trace beside its program: the programmed moves (`programmed`, two points per
+    // move) as thin dark lines and the nominal trace as a polyline in one colour; the actual trace
+    // is the coloured path (showColouredPath, by its deviation). Empty clears both.
+    void showMeasured(const std::vector<base::Vec3>& programmed, const std::vector<base::Vec3>& nominal);
+    bool showsMeasured() const;
 
     // Magenta markers where the simulation's checks found an error (empty clears).
     void showFindings(const std::vector<base::Vec3>& at);

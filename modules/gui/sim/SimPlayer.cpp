@@ -50,6 +50,8 @@ void SimPlayer::attach(NcEditor* editor, View3D* view, SimChart* chart)
         connect(m_editor, &NcEditor::textChanged, this, [this] {
             if (m_run)
                 markOutOfDate();
+            if (m_measured)
+                m_editedSinceMeasured = true;
         });
     }
     if (m_view != nullptr) {
@@ -109,6 +111,10 @@ void SimPlayer::finishBuild(std::shared_ptr<SimRun> run, quint64 generation)
         emit buildProgress(-1);
         return;
     }
+    // A measured trace stays over a new simulation, carried through its machine again; if the
+    // program was changed in between, it is of the program as it was.
+    std::shared_ptr<const MeasuredRun> measured = m_measured;
+    const bool measuredOutOfDate = m_measuredOutOfDate || m_editedSinceMeasured;
     clear();
     m_run = std::move(run);
     for (const std::string& note : m_run->notes)
@@ -124,9 +130,17 @@ void SimPlayer::finishBuild(std::shared_ptr<SimRun> run, quint64 generation)
         connect(m_stock.get(), &StockAnimation::frameReady, this, &SimPlayer::showStockFrame);
     }
     reportChecks();
+    if (measured) {
+        m_measured = std::make_shared<const MeasuredRun>(
+            carryMeasured(measured->trace, measured->path, measured->columns, measured->spindleFaceToTipMm, *m_run));
+        m_measuredOutOfDate = measuredOutOfDate;
+        showMeasured();
+    }
     m_position = 0;
     apply();
     emit ready();
+    if (measured)
+        emit measuredChanged();
 }
 
 // The checks into the report as file:line findings (the first 50; air cutting is counted only),
@@ -170,6 +184,8 @@ void SimPlayer::clear()
     m_stock.reset();
     m_run = nullptr;
     m_deviation.reset();
+    m_measured = nullptr;
+    m_editedSinceMeasured = m_measuredOutOfDate = false;
     m_quantity.clear();
     m_shownLine = -1;
     m_position = 0;
@@ -184,6 +200,7 @@ void SimPlayer::clear()
     if (m_chart != nullptr)
         m_chart->setSeries({}, {}, {});
     emit cleared();
+    emit measuredChanged();
 }
 
 void SimPlayer::markOutOfDate()
@@ -359,26 +376,90 @@ QStringList SimPlayer::quantityIds() const
     if (m_run)
         for (const SampledQuantity& q : m_run->analysis.quantities)
             ids << QString::fromStdString(q.id);
+    if (m_measured)
+        for (const SampledQuantity& q : m_measured->quantities)
+            ids << QString::fromStdString(q.id);
     return ids;
+}
+
+const SampledQuantity* SimPlayer::findQuantity(const QString& id, const std::vector<base::Vec3>** tips) const
+{
+    const std::string wanted = id.toStdString();
+    if (m_run)
+        for (const SampledQuantity& q : m_run->analysis.quantities)
+            if (q.id == wanted) {
+                *tips = &m_run->analysis.tip;
+                return &q;
+            }
+    if (m_measured)
+        for (const SampledQuantity& q : m_measured->quantities)
+            if (q.id == wanted) {
+                *tips = &m_measured->actualTip;
+                return &q;
+            }
+    return nullptr;
 }
 
 QString SimPlayer::quantityLabel(const QString& id) const
 {
-    if (m_run)
-        for (const SampledQuantity& q : m_run->analysis.quantities)
-            if (QString::fromStdString(q.id) == id)
-                return QString::fromStdString(q.label);
+    const std::vector<base::Vec3>* tips = nullptr;
+    const SampledQuantity* q = findQuantity(id, &tips);
+    return q != nullptr ? QString::fromStdString(q->label) : QString();
+}
+
+QString SimPlayer::importMeasured(const QString& path, const sim::TraceColumns& columns, double spindleFaceToTipMm)
+{
+    if (!m_run)
+        return tr("Simulate the program first: a measured trace is carried onto the workpiece through the "
+                  "simulation's machine and compared with its path.");
+    auto read = sim::loadMeasuredTrace(path.toStdString(), columns);
+    if (!read)
+        return QString::fromStdString(read.error().toString());
+    m_measured = std::make_shared<const MeasuredRun>(
+        carryMeasured(std::move(read).value(), path.toStdString(), columns, spindleFaceToTipMm, *m_run));
+    m_editedSinceMeasured = m_measuredOutOfDate = false;
+    showMeasured();
+    emit measuredChanged();
+    emit message(base::Severity::Note,
+                 tr("Measured trace %1: %2 samples").arg(path).arg(m_measured->trace.time.size()));
     return {};
+}
+
+void SimPlayer::clearMeasured()
+{
+    if (!m_measured)
+        return;
+    const bool colouredByIt = m_quantity.startsWith(QLatin1String("measured"));
+    m_measured = nullptr;
+    m_editedSinceMeasured = m_measuredOutOfDate = false;
+    showMeasured();
+    if (colouredByIt)
+        showQuantity({});
+    emit measuredChanged();
+}
+
+// The programmed moves and the nominal trace; the actual trace is coloured by showQuantity.
+void SimPlayer::showMeasured()
+{
+    if (m_view == nullptr)
+        return;
+    std::vector<base::Vec3> programmed, nominal;
+    if (m_measured && m_run) {
+        for (const sim::Move& move : m_run->moves.moves)
+            if (move.moves() && move.positionKnown) {
+                programmed.push_back(move.from);
+                programmed.push_back(move.to);
+            }
+        nominal = m_measured->nominalTip;
+    }
+    m_view->simulation().showMeasured(programmed, nominal);
 }
 
 void SimPlayer::showQuantity(const QString& id, std::optional<std::pair<double, double>> limits)
 {
     m_quantity.clear();
-    const SampledQuantity* found = nullptr;
-    if (m_run)
-        for (const SampledQuantity& q : m_run->analysis.quantities)
-            if (QString::fromStdString(q.id) == id)
-                found = &q;
+    const std::vector<base::Vec3>* tips = nullptr;
+    const SampledQuantity* found = findQuantity(id, &tips);
     if (found == nullptr || found->values.empty() || m_view == nullptr) {
         if (m_view != nullptr)
             m_view->simulation().showColouredPath({}, {}, 0, 1, {}, {});
@@ -387,19 +468,19 @@ void SimPlayer::showQuantity(const QString& id, std::optional<std::pair<double, 
         return;
     }
     m_quantity = id;
-    const SimAnalysis& analysis = m_run->analysis;
+    const std::vector<base::Vec3>& tip = *tips;
     const auto [lo, hi] = std::minmax_element(found->values.begin(), found->values.end());
     m_range = limits ? *limits : std::make_pair(*lo, *hi);
     // Value k belongs to sample firstSample + k: the path drawn through those samples' tips.
     const std::size_t first = found->firstSample;
-    const std::size_t count =
-        std::min(found->values.size(), analysis.tip.size() - std::min(first, analysis.tip.size()));
-    const std::vector<base::Vec3> points(analysis.tip.begin() + first, analysis.tip.begin() + first + count);
+    const std::size_t count = std::min(found->values.size(), tip.size() - std::min(first, tip.size()));
+    const auto from = tip.begin() + static_cast<std::ptrdiff_t>(std::min(first, tip.size()));
+    const std::vector<base::Vec3> points(from, from + static_cast<std::ptrdiff_t>(count));
     const std::vector<double> values(found->values.begin(), found->values.begin() + count);
     std::vector<base::Vec3> markers;
     for (std::size_t sample : found->reversals)
-        if (sample < analysis.tip.size())
-            markers.push_back(analysis.tip[sample]);
+        if (sample < tip.size())
+            markers.push_back(tip[sample]);
     const QString label = QString::fromStdString(found->label);
     m_view->simulation().showColouredPath(points, values, m_range.first, m_range.second, label, markers);
     if (m_chart != nullptr) {

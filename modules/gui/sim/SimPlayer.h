@@ -2,10 +2,12 @@
 // worker thread (progress, cancel), then plays it: play, pause, block steps, jumps to a line or a
 // picked segment, speed. It moves the tool, the travelled path and the cut stock in the 3D view,
 // keeps the editor's cursor on the current block and follows the editor's and the view's picks
-// back, and colours the path and the stock for the results. The dock and the actions call it.
+// back, colours the path and the stock for the results, and overlays a measured trace. The dock
+// and the actions call it.
 #pragma once
 
 #include "base/Diagnostic.h"
+#include "gui/sim/MeasuredRun.h"
 #include "gui/sim/SimRun.h"
 #include "sim/Stock.h"
 
@@ -72,8 +74,20 @@ public:
     void setSpeed(double factor);
     double speed() const { return m_speed; }
 
-    // Results: the path coloured by an analysed quantity (empty id: by move kind), within limits
-    // (none: its own range), and the stock by its deviation (when the end has been cut).
+    // A trace the control recorded (TNCscope CSV, read by sim::loadMeasuredTrace with `columns`),
+    // carried through the simulation's machine onto the workpiece: the nominal trace drawn beside
+    // the program, the actual one coloured by its deviation, which the chart plots. Needs a
+    // simulation; returns the error (file:line where there is one) and then changes nothing.
+    QString importMeasured(const QString& path, const sim::TraceColumns& columns, double spindleFaceToTipMm = 0);
+    void clearMeasured();
+    std::shared_ptr<const MeasuredRun> measured() const { return m_measured; }
+    // The program was changed and simulated again after the trace was imported: the trace is of
+    // the program as it was.
+    bool isMeasuredOutOfDate() const { return m_measured && m_measuredOutOfDate; }
+
+    // Results: the path coloured by an analysed quantity (empty id: by move kind; the measured
+    // trace's: its actual path), within limits (none: its own range), and the stock by its
+    // deviation (when the end has been cut).
     QStringList quantityIds() const;
     QString quantityLabel(const QString& id) const;
     void showQuantity(const QString& id, std::optional<std::pair<double, double>> limits = std::nullopt);
@@ -98,10 +112,14 @@ signals:
     void playingChanged(bool playing);
     void outOfDateChanged(bool outOfDate);
     void deviationReady();
+    void measuredChanged();
     void message(camwb::base::Severity severity, const QString& text);
 
 private:
     void finishBuild(std::shared_ptr<SimRun> run, quint64 generation);
+    // The quantity `id` of the run or the measured trace, and the tips its samples are at.
+    const SampledQuantity* findQuantity(const QString& id, const std::vector<base::Vec3>** tips) const;
+    void showMeasured();
     void reportChecks();
     void tick();
     void apply();
@@ -130,6 +148,9 @@ private:
     std::pair<double, double> m_range{0, 1};
     double m_deviationLimit = 0.1;
     std::optional<sim::Deviation> m_deviation;
+    std::shared_ptr<const MeasuredRun> m_measured;
+    bool m_editedSinceMeasured = false;  // the program was changed after the trace was imported
+    bool m_measuredOutOfDate = false;
     PlaybackStats m_stats;
     QElapsedTimer m_statsClock;
     int m_stockFrames = 0;

@@ -104,8 +104,9 @@ std::shared_ptr<SimRun> buildSimRun(const SimRunRequest& request)
     progress(request, 70);
 
     // Without a machine, the default limits (as camwb-cli sim): a time, said to be a default's.
-    const kinematics::Machine fallback = kinematics::defaultLimitsMachine();
-    const kinematics::Machine& machine = request.machine ? *request.machine : fallback;
+    run->machine = request.machine ? request.machine
+                                   : std::make_shared<const kinematics::Machine>(kinematics::defaultLimitsMachine());
+    const kinematics::Machine& machine = *run->machine;
     if (!request.machine)
         run->notes.push_back("No machine chosen: the cycle time and the path analysis assume default axis limits "
                              "(choose the machine in the NC inspector)");

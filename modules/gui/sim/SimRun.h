@@ -49,6 +49,9 @@ struct SimAnalysis {
 struct SimRun {
     std::shared_ptr<const document::NcTrace> trace;
     std::string programName;
+    // The machine it was planned on (the default limits' when none was chosen): a measured trace
+    // is carried onto the workpiece through its chain.
+    std::shared_ptr<const kinematics::Machine> machine;
     sim::MoveList moves;
     Timeline timeline;         // over `moves`, in the motion plan's time
     double cycleSeconds = 0;   // the motion plan's (with accelerations)

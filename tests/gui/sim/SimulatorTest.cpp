@@ -1,9 +1,11 @@
 // Drives the simulator dock in the real main window: Simulate on the example job's posted program,
 // play to the end, block steps and jumps through the action registry, the editor and the 3D view
 // following and leading the playback, the stock actor and its deviation map, the five-axis
-// example's path coloured by an analysed quantity with reversal markers, cancelling a long build
-// and a program edited after simulating. Runs under Xvfb (GL) and offscreen (no GL).
+// example's path coloured by an analysed quantity with reversal markers, cancelling a long build,
+// a program edited after simulating, and a measured trace imported, overlaid, cleared and marked
+// out of date. Runs under Xvfb (GL) and offscreen (no GL).
 #include "QtTestRun.h"
+#include "ScriptedPrompter.h"
 #include "Shots.h"
 #include "document/NcTrace.h"
 #include "gui/actions/ActionRegistry.h"
@@ -12,6 +14,7 @@
 #include "gui/shell/MainWindow.h"
 #include "gui/shell/ReportView.h"
 #include "gui/shell/Workbench.h"
+#include "gui/sim/MeasuredImportDialog.h"
 #include "gui/sim/SimChart.h"
 #include "gui/sim/SimDock.h"
 #include "gui/sim/SimOverlay.h"
@@ -190,9 +193,10 @@ private slots:
         QCOMPARE(deviation.maxGougeMm, 0.0);  // as the summary below says: no errors
         QVERIFY(
             window.findChild<QLabel*>(QStringLiteral("simResults"))->text().contains(QLatin1String("largest gouge")));
-        // The checks of the whole run went to the report (the example job is clean).
+        // The checks of the whole run went to the report (the example job is clean). The cycle time
+        // counts the spindle's stop after the last M5 (2500 of 5000 rpm: 1.0 s).
         QVERIFY(window.reportView()->toPlainText().contains(
-            QLatin1String("Simulated example-block.mpf: cycle time 469.8 s, 0 errors, 0 warnings")));
+            QLatin1String("Simulated example-block.mpf: cycle time 470.8 s, 0 errors, 0 warnings")));
         QCOMPARE(overlay.findingCount(), 0);
         window.simDock()->findChild<QDoubleSpinBox*>(QStringLiteral("simDeviationLimit"))->setValue(1.5);
         QCOMPARE(player->deviationLimit(), 1.5);
@@ -326,7 +330,7 @@ private slots:
         QVERIFY(player->run()->cycleSeconds > player->run()->simpleSeconds);  // tool changes, accelerations
         QVERIFY(!player->run()->analysis.quantities.empty());
         const QStringList ids = player->quantityIds();
-        for (const char* id : {"vx", "ax", "tipFeed", "omega0", "omega1"})
+        for (const char* id : {"vx", "ax", "tipFeed", "omega0", "omega1", "vRotary0", "vRotary1"})
             QVERIFY2(ids.contains(QLatin1String(id)), id);
         auto* combo = window.simDock()->findChild<QComboBox*>(QStringLiteral("simQuantity"));
         QVERIFY(combo && combo->isEnabled());
@@ -481,6 +485,149 @@ private slots:
         simulate(window);
         QVERIFY(!window.simPlayer()->isOutOfDate());
         QVERIFY(banner->isHidden());
+    }
+
+    // Cam.Sim.ImportMeasured, as a user would: the CSV's name, then the columns dialog (the one
+    // shown now: an accepted one may linger until its deferred deletion).
+    static camwb::gui::MeasuredImportDialog* askToImport(MainWindow& window, ScriptedPrompter& prompter,
+                                                         const QString& file)
+    {
+        prompter.files.push_back(file);
+        if (!window.actions().trigger(QStringLiteral("Cam.Sim.ImportMeasured")))
+            return nullptr;
+        for (auto* dialog : window.simDock()->findChildren<camwb::gui::MeasuredImportDialog*>())
+            if (dialog->isVisible() && dialog->file() == file)
+                return dialog;
+        return nullptr;
+    }
+
+    static void importMeasured(MainWindow& window, ScriptedPrompter& prompter, const QString& file)
+    {
+        camwb::gui::MeasuredImportDialog* dialog = askToImport(window, prompter, file);
+        QVERIFY(dialog);
+        dialog->accept();
+        QTest::qWait(0);
+    }
+
+    // A trace made from the program's own planned motion (tests/data/sim/make-measured-square.py):
+    // the actual X runs 0 mm at the start to 1 mm at the end ahead of the nominal, so the
+    // deviation's range is exactly [0, 1] mm. Overlaid with the program, charted, coloured with
+    // automatic and user limits; a bad CSV names its line and changes nothing; cleared, imported
+    // again, and out of date once the program changed and was simulated again.
+    void measuredTraceOverlay()
+    {
+        QTemporaryDir dir;
+        const QString program = dir.filePath(QStringLiteral("measured-square.ngc"));
+        QVERIFY(QFile::copy(QStringLiteral(CAMWB_SIM_DATA "/measured-square.ngc"), program));
+        const QString csv = QStringLiteral(CAMWB_SIM_DATA "/tncscope-square-ramp.csv");
+        MainWindow window;
+        auto owned = std::make_unique<ScriptedPrompter>();
+        ScriptedPrompter* prompter = owned.get();
+        window.setPrompter(std::move(owned));
+        window.resize(1600, 1000);
+        window.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&window));
+        QVERIFY(window.openNcFile(program));
+        QVERIFY(waitForTrace(window));
+        SimPlayer* player = window.simPlayer();
+        QVERIFY(!window.actions().action(QStringLiteral("Cam.Sim.ImportMeasured"))->isEnabled());  // no run yet
+        simulate(window);
+
+        // The dialog starts from sim::TraceColumns' defaults (seed 003's order).
+        camwb::gui::MeasuredImportDialog* dialog = askToImport(window, *prompter, csv);
+        QVERIFY(dialog);
+        const camwb::sim::TraceColumns defaults, asked = dialog->columns();
+        QCOMPARE(asked.time, defaults.time);
+        QVERIFY(asked.nominal == defaults.nominal && asked.actual == defaults.actual &&
+                asked.deviation == defaults.deviation);
+        QCOMPARE(asked.headerLines, defaults.headerLines);
+        QCOMPARE(asked.linearScale, 1.0);
+        QCOMPARE(asked.separator, defaults.separator);
+        dialog->accept();
+        QTest::qWait(0);
+        QVERIFY2(prompter->errors.isEmpty(), qPrintable(prompter->errors.join('\n')));
+        const auto measured = player->measured();
+        QVERIFY(measured);
+        QVERIFY(measured->trace.time.size() > 100);
+        QCOMPARE(measured->actualTip.size(), measured->trace.time.size());
+
+        // The overlay: program and nominal drawn, the actual coloured by its deviation.
+        camwb::gui::SimOverlay& overlay = window.view()->simulation();
+        QVERIFY(overlay.showsMeasured());
+        QVERIFY(overlay.showsColouredPath());
+        QCOMPARE(player->quantity(), QString::fromLatin1(camwb::gui::kMeasuredFollowingId));
+        const auto range = player->quantityRange();
+        QVERIFY2(std::abs(range.first) < 1e-9 && std::abs(range.second - 1.0) < 1e-9,
+                 qPrintable(QStringLiteral("%1 .. %2").arg(range.first, 0, 'g', 12).arg(range.second, 0, 'g', 12)));
+        auto* summary = window.simDock()->findChild<QLabel*>(QStringLiteral("simMeasured"));
+        QVERIFY(summary && summary->isVisibleTo(window.simDock()));
+        QVERIFY2(summary->text().contains(QLatin1String("actual to nominal up to 1.0000 mm")),
+                 qPrintable(summary->text()));
+        // The nominal trace is the planned motion the program was sampled by: on the path.
+        const QStringList ids = player->quantityIds();
+        QVERIFY(ids.contains(QLatin1String(camwb::gui::kMeasuredToProgramId)));
+        // User limits, as for every colour map.
+        auto* autoLimits = window.simDock()->findChild<QCheckBox*>(QStringLiteral("simAutoLimits"));
+        autoLimits->setChecked(false);
+        auto* low = window.simDock()->findChild<QDoubleSpinBox*>(QStringLiteral("simLow"));
+        auto* high = window.simDock()->findChild<QDoubleSpinBox*>(QStringLiteral("simHigh"));
+        low->setValue(0);
+        high->setValue(2);
+        emit high->editingFinished();
+        QCOMPARE(player->quantityRange(), std::make_pair(0.0, 2.0));
+        autoLimits->setChecked(true);
+        QVERIFY(std::abs(player->quantityRange().second - 1.0) < 1e-9);
+        // The chart plots the deviation against time; a click seeks.
+        if (withGl())
+            QVERIFY(window.simDock()->chart()->plottedPoints() > 10);
+        const double middle = measured->trace.time[measured->trace.time.size() / 2];
+        emit window.simDock()->chart()->timeClicked(middle);
+        QCOMPARE(player->position(), middle);
+        if (withGl()) {
+            window.view()->fitAll();
+            saveShot(&window, QStringLiteral("simulator-measured-trace.png"));
+        }
+
+        // A bad CSV: its file and line, and the overlay as it was.
+        const QString bad = dir.filePath(QStringLiteral("bad.csv"));
+        QFile badFile(bad);
+        QVERIFY(badFile.open(QIODevice::WriteOnly));
+        badFile.write("time;X_nom;X_act;Y_nom;Y_act;Z_nom;Z_act;A_nom;A_act;C_nom;C_act;dX;dY;dZ;dA;dC\n"
+                      "0,000;0;0;0;0;0;0;0;0;0;0;0;0;0;0;0\n"
+                      "0,003;0;x1;0;0;0;0;0;0;0;0;0;0;0;0;0\n");
+        badFile.close();
+        importMeasured(window, *prompter, bad);
+        QCOMPARE(prompter->errors.size(), 1);
+        QVERIFY2(prompter->errors.first().contains(QLatin1String("bad.csv:3:")), qPrintable(prompter->errors.first()));
+        QCOMPARE(player->measured(), measured);
+        QCOMPARE(player->quantity(), QString::fromLatin1(camwb::gui::kMeasuredFollowingId));
+        QVERIFY(overlay.showsMeasured());
+
+        // Cleared: no overlay, no measured quantities; imported again.
+        QVERIFY(window.actions().trigger(QStringLiteral("Cam.Sim.ClearMeasured")));
+        QVERIFY(!player->measured());
+        QVERIFY(!overlay.showsMeasured());
+        QVERIFY(!overlay.showsColouredPath());
+        QVERIFY(!player->quantityIds().contains(QLatin1String(camwb::gui::kMeasuredFollowingId)));
+        QVERIFY(!summary->isVisibleTo(window.simDock()));
+        importMeasured(window, *prompter, csv);
+        QVERIFY(player->measured());
+        QVERIFY(overlay.showsMeasured());
+        QVERIFY(!player->isMeasuredOutOfDate());
+
+        // Simulated again unchanged: still current. Changed and simulated again: out of date.
+        simulate(window);
+        QVERIFY(player->measured());
+        QVERIFY(!player->isMeasuredOutOfDate());
+        window.ncEditor()->replaceText(QStringLiteral("G90 G21\nG0 X0 Y0 Z5\nG1 Z-2 F600\nG1 X40 F3000\nM30\n"));
+        QVERIFY(waitForTrace(window));
+        simulate(window);
+        QVERIFY(player->measured());
+        QVERIFY(player->isMeasuredOutOfDate());
+        QVERIFY(overlay.showsMeasured());
+        auto* banner = window.simDock()->findChild<QLabel*>(QStringLiteral("simBanner"));
+        QVERIFY(banner && !banner->isHidden());
+        QVERIFY2(banner->text().contains(QLatin1String("measured trace")), qPrintable(banner->text()));
     }
 
     // A long program's simulation is built on a worker and can be cancelled; the GUI keeps

@@ -128,8 +128,47 @@ TEST(MotionPlan, DwellToolChangeAndSpindleRampAddExactlyTheirTime)
     EXPECT_NEAR(plan.totalSeconds, 2 * 10.01 + 2.5 + 7, 1e-9);  // the stop counts 0
     EXPECT_DOUBLE_EQ(plan.moves[0].exitSpeed, 0);               // a pause stands the tool
 
-    list.moves[4].spindleRpm = 6000;  // half the spindle's range: half the ramp
-    EXPECT_NEAR(sim::planMotion(list, machine3()).totalSeconds, 2 * 10.01 + 2.5 + 7 + 1, 1e-9);
+    // Half the spindle's range: half the ramp up, and half again to stop it at the program's end.
+    list.moves[4].spindleRpm = 6000;
+    EXPECT_NEAR(sim::planMotion(list, machine3()).totalSeconds, 2 * 10.01 + 2.5 + 7 + 1 + 1, 1e-9);
+}
+
+// The spindle stops at the end (an M5 after the last move, or the program's end itself), and no
+// move follows to carry that ramp: the plan counts it after the last move, in the last move's
+// tool, section and operation; a spindle already stopped before the last move counts nothing more.
+TEST(MotionPlan, TheSpindleStopAtTheProgramsEndIsCounted)
+{
+    toolpath::Toolpath p;
+    toolpath::Tool t1;
+    t1.number = 1;
+    p.add(toolpath::SectionBegin{"Face", "profile", 1}, {4, 0});
+    p.add(toolpath::ToolChange{t1}, {4, -1});
+    p.add(toolpath::Spindle{9000}, {4, 1});  // three quarters of 12000 rpm: 1.5 s up, 1.5 s down
+    p.add(toolpath::Rapid{{0, 0, 10}}, {4, 2});
+    p.add(toolpath::Linear{{0, 0, 0}, 600}, {4, 3});
+    p.add(toolpath::Spindle{0}, {4, 4});  // M5, and nothing moves after it
+    p.add(toolpath::SectionEnd{}, {4, -1});
+    const sim::MoveList list = sim::buildMoves(p);
+    const kinematics::Machine m = machine3();
+    const sim::MotionPlan plan = sim::planMotion(list, m);
+    EXPECT_NEAR(plan.endPauseSeconds, 1.5, 1e-12);
+    const sim::PlannedMove& last = plan.moves.back();
+    EXPECT_NEAR(plan.totalSeconds, last.end() + 1.5, 1e-12);
+    const sim::CycleTimes c = sim::cycleTimes(list, plan, toolpath::programStats(p, {}));
+    EXPECT_NEAR(c.planned.totalSeconds(), plan.totalSeconds, 1e-9);
+    EXPECT_NEAR(c.planned.pauseSeconds, 7 + 1.5 + 1.5, 1e-9);  // tool change, ramp up, ramp down
+    EXPECT_NEAR(c.plannedPerTool.at(1).totalSeconds(), plan.totalSeconds, 1e-9);
+    ASSERT_EQ(c.sections.size(), 1u);
+    EXPECT_NEAR(c.sections[0].planned.totalSeconds(), plan.totalSeconds, 1e-9);
+    EXPECT_NEAR(sim::secondsPerOperation(p, list, plan).at(4), plan.totalSeconds, 1e-9);
+
+    // Stopped before a last retract: the ramp down was counted at that move, not again.
+    toolpath::Toolpath q = p;
+    q.add(toolpath::Rapid{{0, 0, 50}});
+    const sim::MotionPlan stopped = sim::planMotion(sim::buildMoves(q), m);
+    EXPECT_DOUBLE_EQ(stopped.endPauseSeconds, 0);
+    EXPECT_NEAR(stopped.moves.back().pauseSeconds, 1.5, 1e-12);
+    EXPECT_NEAR(stopped.totalSeconds, plan.totalSeconds + stopped.moves.back().moveSeconds, 1e-9);
 }
 
 TEST(MotionPlan, InverseTimeMovesTakeTheirProgrammedTime)

@@ -1,6 +1,7 @@
 // Seed 003's path analysis: the thesis' sample vector, reversals by the §6 item 11 rule (sine,
 // ramp, stop-and-continue, stop between opposite directions), central differences, the tip feed
-// relative to the workpiece on a case worked by hand, and the rotation per unit of tip travel N.
+// relative to the workpiece on a case worked by hand, its parts from the rotary axes (v_A, v_C,
+// eqs. 23-26), and the rotation per unit of tip travel N.
 #include "sim/PathAnalysis.h"
 
 #include "kinematics/KinematicChain.h"
@@ -8,6 +9,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdint>
 
 using namespace camwb;
 
@@ -145,4 +147,77 @@ TEST(PathAnalysis, RotationPerUnitOfTipTravel)
     EXPECT_NEAR(a.rotationPerTravel[0].value[0], 0, 1e-12);
     EXPECT_NEAR(a.rotationPerTravelCombined.value[0], 0.1 * kPi / 180 / 0.5, 1e-12);
     EXPECT_TRUE(std::isnan(a.rotationPerTravel[1].value[15]));  // the tip stands: N undefined
+}
+
+// Worked by hand on seed 003's chain (eq. 9: T_z(r)·R_x(−α)·R_z(−γ)·T_z(P), r = 100, P = 20): the
+// linear axes stand at the machine tip (30, 40, 20) while A goes 29.7° → 30° and C 10° → 10.6° in
+// one 3 ms step, ω_A = 100°/s, ω_C = 200°/s at the later sample (α = 30°). With the pivot
+// (x2, y2, z2) = (0, 0, 100):
+//   r_v1 = √((40 − 0)² + (20 − 100)²) = 89.44272 (eq. 25), v_A = 1.745329 rad/s · r_v1 = 156.1070;
+//   r_v2 = √([cos30°·(100·sin30° + 40 − 0) + sin30°·(100 − 100·cos30° − 20)]² + (30 − 0)²)
+//        = √(74.64102² + 30²) = 80.44427 (eq. 26), v_C = 3.490659 rad/s · r_v2 = 280.8035.
+// The C axis must be the one the tilt has turned: untilted, r_v2 would be 50.
+TEST(PathAnalysis, TipSpeedFromEachRotaryAxisByTheThesisFormulas)
+{
+    kinematics::KinematicChain chain;
+    chain.type = kinematics::ChainType::TableTable;
+    chain.joints = {{"A", true, {-1, 0, 0}, {0, 0, 100}}, {"C", true, {0, 0, -1}, {0, 0, 100}}};
+    chain.workpieceZero = {0, 0, 120};
+    sim::Trace trace(2);
+    trace[0] = {0.0, {30, 40, 20}, {29.7, 10.0}, {}};
+    trace[1] = {kStep, {30, 40, 20}, {30.0, 10.6}, {}};
+    for (sim::TraceSample& s : trace)
+        s.tip = kinematics::forwardKinematics(chain, {s.linear, s.rotaryDeg}).tip;
+    const sim::PathAnalysis a = sim::analysePath(trace, chain);
+    ASSERT_EQ(a.rotaryTipSpeed[0].value.size(), 1u);
+    EXPECT_EQ(a.rotaryTipSpeed[0].firstSample, 1u);
+    EXPECT_NEAR(a.rotaryTipSpeed[0].value[0], 156.1070, 1e-3);
+    EXPECT_NEAR(a.rotaryTipSpeed[1].value[0], 280.8035, 1e-3);
+    // Turning the other way gives the same speeds, signed as ω.
+    trace[0].rotaryDeg = {30.3, 11.2};
+    trace[0].tip = kinematics::forwardKinematics(chain, {trace[0].linear, trace[0].rotaryDeg}).tip;
+    const sim::PathAnalysis back = sim::analysePath(trace, chain);
+    EXPECT_NEAR(back.rotaryTipSpeed[0].value[0], -156.1070, 1e-3);
+    EXPECT_NEAR(back.rotaryTipSpeed[1].value[0], -280.8035, 1e-3);
+    // A three-axis machine has no rotary parts.
+    EXPECT_TRUE(sim::analysePath(trace, kinematics::KinematicChain{}).rotaryTipSpeed[0].value.empty());
+}
+
+// The radii in general: eq. 26 is the distance from the tip to the tilted C axis through the
+// pivot, for any tip and tilt (random points against the errata's closed form).
+TEST(PathAnalysis, TipRadiiEqualTheDistanceToEachAxis)
+{
+    kinematics::KinematicChain chain;
+    chain.type = kinematics::ChainType::TableTable;
+    const double r = -35;
+    chain.joints = {{"A", true, {-1, 0, 0}, {0, 0, r}}, {"C", true, {0, 0, -1}, {0, 0, r}}};
+    std::uint32_t seed = 12345;
+    auto random = [&seed](double lo, double hi) {
+        seed = seed * 1664525u + 1013904223u;
+        return lo + (hi - lo) * double(seed >> 8) / double(1u << 24);
+    };
+    for (int i = 0; i < 50; ++i) {
+        const base::Vec3 tip{random(-200, 200), random(-200, 200), random(-100, 300)};
+        const double alphaDeg = random(-120, 120), gammaDeg = random(-360, 360);
+        const double al = alphaDeg * kPi / 180;
+        const auto radii = kinematics::tipRadii(chain, {tip, {alphaDeg, gammaDeg}});
+        EXPECT_NEAR(radii[0], std::hypot(tip.y, tip.z - r), 1e-9);
+        const double across = std::cos(al) * (r * std::sin(al) + tip.y) + std::sin(al) * (r - r * std::cos(al) - tip.z);
+        EXPECT_NEAR(radii[1], std::hypot(across, tip.x), 1e-9);
+    }
+}
+
+// A head-head chain (C carries B, both through a pivot 100 mm above the gauge point) with a
+// 50 mm tool: the tip is 150 mm from the B axis at any pose, and with B at 30° it swings
+// 150·sin 30° = 75 mm out from the C axis, whichever way C has turned B's axis.
+TEST(PathAnalysis, TipRadiiOfAHeadFollowTheToolLength)
+{
+    kinematics::KinematicChain chain;
+    chain.type = kinematics::ChainType::HeadHead;
+    chain.joints = {{"C", false, {0, 0, 1}, {0, 0, 100}}, {"B", false, {0, 1, 0}, {0, 0, 100}}};
+    for (double c : {0.0, 90.0, -135.0}) {
+        const auto radii = kinematics::tipRadii(chain, {{10, -20, 30}, {c, 30}}, 50);
+        EXPECT_NEAR(radii[0], 75, 1e-9) << c;
+        EXPECT_NEAR(radii[1], 150, 1e-9) << c;
+    }
 }

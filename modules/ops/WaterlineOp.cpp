@@ -131,8 +131,8 @@ base::Result<OpResult> computeWaterline(const SurfaceInput& input, const Waterli
     const double tol = params.toleranceMm;
     // Bands of the tolerance: a contour stands at most that much off the wall (finishing).
     const surface::ToolCentreRegions centres(*input.model, tc.tool, {params.stockMm, params.stockMm, tol, tol});
-    // The contour a little higher only tells steep from shallow: the default (coarser) bands do.
-    const surface::ToolCentreRegions coarse(*input.model, tc.tool, {params.stockMm, params.stockMm, tol});
+    // The contour a little higher only tells steep from shallow: four times the tolerance does.
+    const surface::ToolCentreRegions coarse(*input.model, tc.tool, {params.stockMm, params.stockMm, 4 * tol});
     const std::vector<geom::Region> area = surface::toolCentreArea(input);
     const std::vector<double> levels = levelsOf(params, tc.tool);
     const std::vector<geom::Region> grownArea = geom::offsetRegions(area, tc.tool.diameterMm, tol);

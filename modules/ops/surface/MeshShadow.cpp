@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <limits>
 
 namespace camwb::ops::surface {
@@ -16,11 +17,6 @@ using ClipperLib::IntPoint;
 using ClipperLib::Path;
 using ClipperLib::Paths;
 constexpr double kInf = std::numeric_limits<double>::infinity();
-
-IntPoint toInt(double x, double y)
-{
-    return {cInt(std::llround(x * geom::kClipperScale)), cInt(std::llround(y * geom::kClipperScale))};
-}
 
 // The part of a polygon on the side z >= level (keepAbove) or z <= level of a horizontal plane.
 std::vector<base::Vec3> clipZ(const std::vector<base::Vec3>& poly, double level, bool keepAbove)
@@ -41,6 +37,11 @@ std::vector<base::Vec3> clipZ(const std::vector<base::Vec3>& poly, double level,
 }
 
 }  // namespace
+
+IntPoint toClipper(base::Vec2 p)
+{
+    return {cInt(std::llround(p.x * geom::kClipperScale)), cInt(std::llround(p.y * geom::kClipperScale))};
+}
 
 MeshShadow::MeshShadow(const sim::TriangleMesh& model)
 {
@@ -84,11 +85,10 @@ int MeshShadow::slabOf(double z) const
     return std::clamp(j, 0, int(m_slabs.size()) - 1);
 }
 
-Paths MeshShadow::band(double lo, double hi) const
+void MeshShadow::pieces(double lo, double hi, const std::function<void(const std::vector<base::Vec3>&)>& piece) const
 {
-    Paths out;
     if (m_tris.empty() || lo > hi)
-        return out;
+        return;
     std::vector<int> ids;
     for (int j = slabOf(std::min(hi, m_top)); j <= slabOf(std::max(lo, m_bottom)); ++j)
         ids.insert(ids.end(), m_slabs[j].begin(), m_slabs[j].end());
@@ -101,17 +101,24 @@ Paths MeshShadow::band(double lo, double hi) const
             poly = clipZ(poly, lo, true);
         if (std::isfinite(hi) && poly.size() >= 3)
             poly = clipZ(poly, hi, false);
-        if (poly.size() < 3)
-            continue;
+        if (poly.size() >= 3)
+            piece(poly);
+    }
+}
+
+Paths MeshShadow::band(double lo, double hi) const
+{
+    Paths out;
+    pieces(lo, hi, [&](const std::vector<base::Vec3>& poly) {
         Path path;
         for (const base::Vec3& p : poly)
-            path.push_back(toInt(p.x, p.y));
+            path.push_back(toClipper({p.x, p.y}));
         if (std::abs(ClipperLib::Area(path)) < 1)  // below 1 nm^2: a sliver of an edge
-            continue;
+            return;
         if (!ClipperLib::Orientation(path))
             ClipperLib::ReversePath(path);
         out.push_back(std::move(path));
-    }
+    });
     return out;
 }
 
@@ -132,7 +139,7 @@ Paths toPaths(const std::vector<geom::Region>& regions, double chord)
     const auto add = [&](const geom::Profile& loop) {
         Path path;
         for (const base::Vec2& p : geom::discretize(loop, chord))
-            path.push_back(toInt(p.x, p.y));
+            path.push_back(toClipper(p));
         if (path.size() >= 3)
             out.push_back(std::move(path));
     };

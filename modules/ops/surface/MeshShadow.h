@@ -11,6 +11,7 @@
 #include <polyclipping/clipper.hpp>
 
 #include <array>
+#include <functional>
 #include <vector>
 
 namespace camwb::ops::surface {
@@ -22,6 +23,9 @@ public:
     // Projection of the upward triangles' parts with lo <= z <= hi (lo may be -inf, hi +inf), as
     // positive (counter-clockwise) polygons, not united.
     ClipperLib::Paths band(double lo, double hi) const;
+    // The same parts in 3D: each upward triangle clipped to lo <= z <= hi (a convex polygon), all
+    // kept however small their projection (a steep wall's piece is tall, not wide).
+    void pieces(double lo, double hi, const std::function<void(const std::vector<base::Vec3>&)>& piece) const;
     // The united projection of all material at or above h.
     ClipperLib::Paths above(double h) const;
     double top() const { return m_top; }
@@ -36,6 +40,8 @@ private:
     double m_top = 0, m_bottom = 0, m_slab = 1;
 };
 
+// A point on Clipper's integer grid (geom::kClipperScale).
+ClipperLib::IntPoint toClipper(base::Vec2 p);
 // Regions <-> Clipper paths: loops discretised with chord error `chord` (outer loops counter-
 // clockwise, holes clockwise); a PolyTree's contours fitted back to lines and arcs within `fit`.
 ClipperLib::Paths toPaths(const std::vector<geom::Region>& regions, double chord);

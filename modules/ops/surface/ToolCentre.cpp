@@ -8,6 +8,7 @@
 // offset is grown by the fit and chord errors so that the regions handed back stay clear.
 #include "ops/surface/ToolCentre.h"
 
+#include "ops/surface/BallReach.h"
 #include "ops/surface/MeshShadow.h"
 #include "sim/ToolShape.h"
 
@@ -29,6 +30,12 @@ struct ToolCentreRegions::Data {
     double radius = 0, fullHeight = 0, band = 0;
 
     double tol() const { return std::max(settings.toleranceMm, 1e-4); }
+    // A ball end mill: its cutter is a sphere, so the material under its equator is taken exactly,
+    // triangle by triangle (ballReach), instead of in bands.
+    bool exactBall() const
+    {
+        return fullHeight > 0 && shape.coneSlope() == 0 && shape.cornerRadiusMm() >= radius - 1e-9;
+    }
     // The tool's radius at height dz (>= 0) above its tip.
     double reach(double dz) const { return dz >= fullHeight ? radius : std::min(radius, shape.profileRadius(dz)); }
     ClipperLib::Paths obstacle(double z) const;
@@ -73,12 +80,30 @@ ClipperLib::Paths ToolCentreRegions::Data::obstacle(double z) const
     const double grow = settings.sideStockMm + fit;
     std::vector<ClipperLib::Paths> parts{
         growPaths(shadow.above(tip + std::max(fullHeight, ignore)), radius + grow, chord)};
-    for (double lo = tip, hi = tip; lo < tip + fullHeight; lo = hi) {
-        hi = std::min(lo + bandAt(lo - tip), tip + fullHeight);
-        ClipperLib::Paths pieces = shadow.band(std::max(lo, tip + ignore), hi);
-        if (pieces.empty())
-            continue;
-        parts.push_back(growPaths(pieces, reach(hi - tip) + grow, chord));
+    if (exactBall()) {
+        // The ball with its tip lowered by the bottom stock and grown by the side stock, as the
+        // bands grow it: one polygon per piece of the material under its equator, exact to the chord.
+        ClipperLib::Paths group;
+        shadow.pieces(tip + ignore, tip + fullHeight, [&](const std::vector<base::Vec3>& piece) {
+            ClipperLib::Path path;
+            for (const base::Vec2& p : ballReach(piece, tip + radius, radius, grow, chord))
+                path.push_back(toClipper(p));
+            if (path.size() < 3)
+                return;
+            group.push_back(std::move(path));
+            if (group.size() == 64)  // united in groups, then in pairs below: see there
+                parts.push_back(unitePaths(group)), group.clear();
+        });
+        if (!group.empty())
+            parts.push_back(unitePaths(group));
+    } else {
+        for (double lo = tip, hi = tip; lo < tip + fullHeight; lo = hi) {
+            hi = std::min(lo + bandAt(lo - tip), tip + fullHeight);
+            ClipperLib::Paths pieces = shadow.band(std::max(lo, tip + ignore), hi);
+            if (pieces.empty())
+                continue;
+            parts.push_back(growPaths(pieces, reach(hi - tip) + grow, chord));
+        }
     }
     // United in pairs: the bands' grown rings overlap their neighbours almost wholly, and one
     // union of them all would cross every ring with every other.

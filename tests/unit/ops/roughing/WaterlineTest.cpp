@@ -111,6 +111,33 @@ TEST(Waterline, SphereContoursTouchItLeaveAtMostTheScallopAndOnlyOnSteepWalls)
     }
 }
 
+// A drafted cavity whose floor fillet has the ball's radius: at the floor the ball fits the fillet
+// exactly, where a small error in the material's height moves the contour most (the exact
+// per-triangle reach of a ball, ops/surface/BallReach.h, against the mesh, with and without stock).
+TEST(Waterline, ABallInAFilletOfItsOwnRadiusNeverGouges)
+{
+    const sim::TriangleMesh mesh = heightMesh(draftedCavity(8, 10, 4, 3), 0, 0, 60, 50, 120, 0);
+    SurfaceInput input;
+    input.model = &mesh;
+    input.stock = box3({0, 0, 0}, {60, 50, 20});
+    input.flatLevels = {12};
+    const ToolController tc = toolController("ball", 6);
+    for (const double stock : {0.0, 0.3}) {
+        WaterlineParams p;
+        p.heights = {30, 25, 19.5, 12 + stock};
+        p.scallopMm = 0.05;
+        p.maxStepDownMm = 1;
+        p.minSlopeDeg = 30;
+        p.stockMm = stock;
+        p.toleranceMm = 0.01;
+        base::Result<OpResult> r = computeWaterline(input, p, tc, 0);
+        ASSERT_TRUE(r.ok()) << r.error().message;
+        EXPECT_GE(contoursOf(r.value()).byLevel.size(), 5u);
+        EXPECT_LE(deepestPenetration(r.value().toolpath, tc.tool, mesh, stock, stock, 0.1), p.toleranceMm)
+            << "stock " << stock;
+    }
+}
+
 TEST(Waterline, FlatToolStepsDownByTheStairItLeaves)
 {
     const sim::TriangleMesh mesh = heightMesh(draftedCavity(8, 20, 4, 0), 0, 0, 60, 50, 100, 0);

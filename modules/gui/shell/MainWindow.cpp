@@ -290,7 +290,7 @@ void MainWindow::registerActions()
             m_workbench->saveNc(path);
     });
     registerSetupSheetActions(
-        *m_actions, jobMenu, m_workbench, [this]() -> Prompter& { return *m_prompter; },
+        *m_actions, jobMenu, m_workbench, this, [this]() -> Prompter& { return *m_prompter; },
         [this] { return m_view->grabImage(); });
 
     registerPostSettingsActions(*m_actions, m_workbench, this);

@@ -135,7 +135,14 @@ MainWindow::MainWindow(QWidget* parent) :
     updateTitle();
 }
 
-MainWindow::~MainWindow() { m_workbench->setPrompter(nullptr); }
+MainWindow::~MainWindow()
+{
+    // An open task panel refers to the workbench and the 3D view's overlay, which (children made
+    // before the task dock) would be destroyed before it: it goes first, while both are there.
+    delete std::exchange(m_taskPanel, nullptr);
+    delete std::exchange(m_jobSetupPanel, nullptr);
+    m_workbench->setPrompter(nullptr);
+}
 
 void MainWindow::setPrompter(std::unique_ptr<Prompter> prompter)
 {

@@ -52,7 +52,8 @@ Pictures drawPictures(const document::SetupSheet& sheet, const SheetPicture& ren
 }
 
 // The same sheet as the HTML, its pictures shown smaller so that two fit on a landscape page.
-base::Status writePdf(const document::SetupSheet& sheet, const Pictures& pictures, const std::string& path)
+base::Status writePdf(const document::SetupSheet& sheet, const Pictures& pictures, SheetUnit unit,
+                      const std::string& path)
 {
     SheetImages printed = pictures.names;
     const auto shrink = [](SheetImage& image) {
@@ -65,7 +66,7 @@ base::Status writePdf(const document::SetupSheet& sheet, const Pictures& picture
     QTextDocument document;
     for (const auto& [name, image] : pictures.images)
         document.addResource(QTextDocument::ImageResource, QUrl(QString::fromStdString(name)), image);
-    document.setHtml(QString::fromStdString(sheetHtml(sheet, printed)));
+    document.setHtml(QString::fromStdString(sheetHtml(sheet, printed, unit)));
     QPdfWriter writer(QString::fromStdString(path));
     writer.setTitle(QString::fromStdString("Setup sheet: " + sheet.jobName));
     writer.setCreator(QStringLiteral("CAM Workbench"));
@@ -153,10 +154,10 @@ base::Result<StagedSheet> stageSetupSheet(const document::SetupSheet& sheet, con
     for (const auto& [name, image] : pictures.images)
         if (!image.save(QString::fromStdString((temp / name).string()), "PNG"))
             return base::makeError("cannot write the picture '" + (temp / name).string() + "'");
-    const std::string text = sheetHtml(sheet, pictures.names);
+    const std::string text = sheetHtml(sheet, pictures.names, output.unit);
     base::Status status = base::writeFileAtomically((temp / html.filename()).string(), text);
     if (status && !staged.m_tempPdf.empty())
-        status = writePdf(sheet, pictures, staged.m_tempPdf);
+        status = writePdf(sheet, pictures, output.unit, staged.m_tempPdf);
     if (!status)
         return status.error();  // the temporaries go with `staged`
     return staged;

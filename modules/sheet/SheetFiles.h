@@ -6,6 +6,7 @@
 
 #include "base/Result.h"
 #include "document/SetupSheet.h"
+#include "sheet/SheetHtml.h"
 
 #include <QImage>
 
@@ -24,6 +25,7 @@ struct SheetOutput {
     std::string htmlPath;
     std::string pdfPath;                // empty: no PDF
     std::optional<QImage> partPicture;  // e.g. the 3D view's grab; none: the renderer draws it
+    SheetUnit unit = SheetUnit::Millimetre;
 };
 
 // Picture sizes in pixels: the part, and each operation's.

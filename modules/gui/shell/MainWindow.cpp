@@ -338,6 +338,9 @@ void MainWindow::registerActions()
     registerDockActions(view);
     registerFocusActions(*m_actions, *this, view);
     m_session = new Session(*this, file, edit);
+    // Lengths in the tree follow the display unit (the panels take it when they open).
+    connect(m_session, &Session::preferencesChanged, m_jobTree, &JobTree::rebuild);
+    m_jobTree->rebuild();
     registerToolActions(
         *m_actions, *m_workbench, [this]() -> Prompter& { return *m_prompter; }, this);
 

@@ -2,6 +2,7 @@
 
 #include "document/SetupSheet.h"
 #include "gui/actions/ActionRegistry.h"
+#include "gui/shell/Preferences.h"
 #include "gui/shell/Prompter.h"
 #include "gui/shell/Workbench.h"
 #include "post/PostRegistry.h"
@@ -40,6 +41,7 @@ struct SheetInput {
     QImage grabbed;
     QString html;
     std::vector<base::DataDir> postDirs;
+    sheet::SheetUnit unit = sheet::SheetUnit::Millimetre;
 };
 
 // The staged sheet (not yet in place), or why there is none.
@@ -76,6 +78,7 @@ std::shared_ptr<SheetOutcome> makeSheet(const SheetInput& input, const std::atom
     const sheet::SheetPicture pictures(input.mesh, input.job.stock.box(), input.program);
     sheet::SheetOutput output;
     output.htmlPath = input.html.toStdString();
+    output.unit = input.unit;
     const QFileInfo info(input.html);
     output.pdfPath = info.dir().filePath(info.completeBaseName() + QStringLiteral(".pdf")).toStdString();
     if (!input.grabbed.isNull())
@@ -217,6 +220,8 @@ void registerSetupSheetActions(ActionRegistry& registry, const QString& menu, Wo
         input.grabbed = grab();
         input.html = html;
         input.postDirs = post::defaultPostDirs();
+        // Lengths as the window shows them (the CLI's sheet stays in mm).
+        input.unit = displayUnit() == LengthUnit::Inch ? sheet::SheetUnit::Inch : sheet::SheetUnit::Millimetre;
         startSheet(workbench, window, current, prompter, std::move(input));
     });
 }

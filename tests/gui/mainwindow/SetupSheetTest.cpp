@@ -8,6 +8,7 @@
 #include "QtTestRun.h"
 #include "gui/actions/ActionRegistry.h"
 #include "gui/shell/MainWindow.h"
+#include "gui/shell/Preferences.h"
 #include "gui/shell/Workbench.h"
 #include "gui/view3d/View3D.h"
 
@@ -138,6 +139,27 @@ private slots:
             said = said || message.at(1).toString().startsWith(QLatin1String("The job changed while the setup sheet"));
         QVERIFY(said);
         waitIdle(window);
+    }
+
+    // With the display unit in inch the window's sheet shows inch (the CLI's stays in mm).
+    void writesLengthsInTheDisplayUnit()
+    {
+        QTemporaryDir dir;
+        MainWindow window;
+        ScriptedPrompter* prompter = openExample(window, dir, false);
+        QVERIFY(prompter);
+        camwb::gui::setDisplayUnit(camwb::gui::LengthUnit::Inch);
+        const QString html = dir.filePath(QStringLiteral("inch.html"));
+        prompter->files = {html};
+        QVERIFY(window.actions().trigger(QStringLiteral("Cam.Job.SetupSheet")));
+        QVERIFY(waitSheetDone(window));
+        camwb::gui::setDisplayUnit(camwb::gui::LengthUnit::Millimetre);
+        const QString text = readFile(html);
+        QVERIFY(text.contains(QLatin1String("Lengths in in, feeds in in/min")));
+        // T2, the D6 end mill: 6 mm = 0.2362 in.
+        QVERIFY(text.contains(QLatin1String("<td>T2</td><td>Flat end mill D6</td><td>flat</td><td>0.2362</td>")));
+        QVERIFY(text.contains(QLatin1String("<th>Feed in/min</th>")));
+        QVERIFY(!text.contains(QLatin1String(" mm")));
     }
 
     void refusesAProgramThatIsOutOfDate()

@@ -24,6 +24,8 @@
 #include <QTest>
 #include <QTreeWidgetItem>
 
+#include <memory>
+
 using camwb::document::OperationKind;
 using camwb::gui::JobTree;
 using camwb::gui::LengthUnit;
@@ -93,6 +95,9 @@ private slots:
         QCOMPARE(treeText(window, JobTree::ItemKind::Stock), QStringLiteral("box 94.000 × 64.000 × 16.000 mm"));
 
         setUnit(window, LengthUnit::Inch);
+        // A failure below must not leave inch in this test's settings for the next run.
+        const std::unique_ptr<MainWindow, void (*)(MainWindow*)> backToMm(
+            &window, [](MainWindow* w) { setUnit(*w, LengthUnit::Millimetre); });
         QCOMPARE(camwb::gui::displayUnit(), LengthUnit::Inch);
         // The example's stock is 94 × 64 × 16 mm from (−2, −2, 0).
         QCOMPARE(treeText(window, JobTree::ItemKind::Stock), QStringLiteral("box 3.7008 × 2.5197 × 0.6299 in"));

@@ -1,5 +1,6 @@
 #include "gui/tasks/JobSetupPanel.h"
 
+#include "document/JobFile.h"
 #include "document/JobSetup.h"
 #include "gui/shell/Workbench.h"
 #include "gui/tasks/LengthSpinBox.h"
@@ -560,11 +561,8 @@ void JobSetupPanel::checkTravels()
 
 bool JobSetupPanel::hasUnappliedChanges() const
 {
-    const document::Job& a = m_setup;
-    const document::Job& b = m_original;
-    return !(a.stock == b.stock && a.origin == b.origin && a.workOffset == b.workOffset && a.machineId == b.machineId &&
-             a.postId == b.postId && a.postProperties == b.postProperties && a.outputName == b.outputName &&
-             a.outputFolder == b.outputFolder);
+    // The jobs as written: a setup field added later counts without being listed here.
+    return document::serializeJob(m_setup) != document::serializeJob(m_original);
 }
 
 bool JobSetupPanel::accept()

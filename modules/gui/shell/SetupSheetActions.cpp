@@ -142,6 +142,8 @@ void startSheet(Workbench* workbench, QWidget* window, const std::shared_ptr<std
     });
     const QPointer<QProgressDialog> target(dialog);
     const auto progress = [target](int percent) {
+        if (target.isNull())
+            return;  // the window went (the worker is being cancelled)
         QMetaObject::invokeMethod(
             target,
             [target, percent] {

@@ -6,6 +6,7 @@ find_package(Eigen3 3.4 REQUIRED NO_MODULE)  # Debian 12: 3.4.0, header-only
 find_package(GTest REQUIRED)
 find_package(PkgConfig REQUIRED)
 pkg_check_modules(POLYCLIPPING REQUIRED IMPORTED_TARGET polyclipping)
+pkg_check_modules(MINIZIP REQUIRED IMPORTED_TARGET minizip)  # Fusion 360's .tools archives
 
 if(NOT CAMWB_BUILD_GUI)
   return()  # VTK and QScintilla are the GUI's alone

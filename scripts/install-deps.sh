@@ -11,7 +11,7 @@ packages=(
   libqt6opengl6-dev qt6-declarative-dev libgl-dev
   libocct-foundation-dev libocct-modeling-data-dev libocct-modeling-algorithms-dev
   libocct-data-exchange-dev libocct-ocaf-dev
-  libeigen3-dev libvtk9-dev libqscintilla2-qt6-dev libpolyclipping-dev nlohmann-json3-dev
+  libeigen3-dev libvtk9-dev libqscintilla2-qt6-dev libpolyclipping-dev libminizip-dev nlohmann-json3-dev
   libgtest-dev libgmock-dev libbenchmark-dev clang-14 libclang-rt-14-dev
   xvfb xauth libgl1-mesa-dri libglx-mesa0 fonts-dejavu-core poppler-utils
 )

@@ -254,6 +254,22 @@
         <source>Setup sheet written: %1</source>
         <translation>Zapsán seřizovací list: %1</translation>
     </message>
+    <message>
+        <source>The job changed while the setup sheet was being made, so it was not written. Make it again when the program is current.</source>
+        <translation>Úloha se během tvorby seřizovacího listu změnila, proto nebyl zapsán. Vytvořte jej znovu, až bude program aktuální.</translation>
+    </message>
+    <message>
+        <source>Setup sheet cancelled: nothing was written</source>
+        <translation>Seřizovací list zrušen: nic nebylo zapsáno</translation>
+    </message>
+    <message>
+        <source>Making the setup sheet (simulating the program)…</source>
+        <translation>Vytváří se seřizovací list (simulace programu)…</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>Zrušit</translation>
+    </message>
 </context>
 <context>
     <name>SimulationRequest</name>
@@ -1065,10 +1081,6 @@
         <translation>Žádný model</translation>
     </message>
     <message>
-        <source>mm</source>
-        <translation>mm</translation>
-    </message>
-    <message>
         <source>Import…</source>
         <translation>Importovat…</translation>
     </message>
@@ -1099,22 +1111,6 @@
     <message>
         <source>Size</source>
         <translation>Rozměry</translation>
-    </message>
-    <message>
-        <source>Below min (mm)</source>
-        <translation>Pod minimem (mm)</translation>
-    </message>
-    <message>
-        <source>Above max (mm)</source>
-        <translation>Nad maximem (mm)</translation>
-    </message>
-    <message>
-        <source>Min (mm)</source>
-        <translation>Min (mm)</translation>
-    </message>
-    <message>
-        <source>Max (mm)</source>
-        <translation>Max (mm)</translation>
     </message>
     <message>
         <source>Typed (model coordinates)</source>
@@ -1223,6 +1219,22 @@
 %1</source>
         <translation>Polotovar se nevejde do pojezdů stroje:
 %1</translation>
+    </message>
+    <message>
+        <source>Below min</source>
+        <translation>Pod minimem</translation>
+    </message>
+    <message>
+        <source>Above max</source>
+        <translation>Nad maximem</translation>
+    </message>
+    <message>
+        <source>Min</source>
+        <translation>Min</translation>
+    </message>
+    <message>
+        <source>Max</source>
+        <translation>Max</translation>
     </message>
 </context>
 <context>
@@ -1343,10 +1355,6 @@
         <translation>nenačteno: %1</translation>
     </message>
     <message>
-        <source>box %1 × %2 × %3 mm</source>
-        <translation>kvádr %1 × %2 × %3 mm</translation>
-    </message>
-    <message>
         <source>(not posted yet)</source>
         <translation>(zatím nepostprocesováno)</translation>
     </message>
@@ -1357,10 +1365,6 @@
     <message>
         <source>post default: %1</source>
         <translation>výchozí dle postprocesoru: %1</translation>
-    </message>
-    <message>
-        <source>%1, Ø%2 mm</source>
-        <translation>%1, Ø%2 mm</translation>
     </message>
     <message>
         <source>, holder %1</source>
@@ -1381,10 +1385,6 @@
     <message>
         <source>Disabled: not computed and not posted</source>
         <translation>Vypnuto: nepočítá se ani nepostprocesuje</translation>
-    </message>
-    <message>
-        <source>T%1 %2, Ø%3 mm</source>
-        <translation>T%1 %2, Ø%3 mm</translation>
     </message>
     <message>
         <source>Disa&amp;ble Operation</source>
@@ -1411,12 +1411,24 @@
         <translation>Zapnou&amp;t operaci</translation>
     </message>
     <message>
-        <source>depth %1 mm, bottom width %2 mm</source>
-        <translation>hloubka %1 mm, šířka dna %2 mm</translation>
-    </message>
-    <message>
         <source>the grooves&apos; shaft (revolved)</source>
         <translation>hřídel zápichů (rotační)</translation>
+    </message>
+    <message>
+        <source>box %1 × %2 × %3 %4</source>
+        <translation>kvádr %1 × %2 × %3 %4</translation>
+    </message>
+    <message>
+        <source>%1, Ø%2</source>
+        <translation>%1, Ø%2</translation>
+    </message>
+    <message>
+        <source>depth %1, bottom width %2</source>
+        <translation>hloubka %1, šířka dna %2</translation>
+    </message>
+    <message>
+        <source>T%1 %2, Ø%3</source>
+        <translation>T%1 %2, Ø%3</translation>
     </message>
 </context>
 <context>

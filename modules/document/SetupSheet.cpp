@@ -182,7 +182,11 @@ base::Result<SetupSheet> collectSetupSheet(const Job& job, const std::string& jo
     if (options.simulate && turning) {
         sim::SimulationSetup setup;
         setup.machine = machine ? &*machine : nullptr;
+        setup.cancel = options.cancel;
+        setup.progress = options.progress;
         simulated = sim::simulate(moving, setup);  // the machine's limits and the motion
+        if (simulated.cancelled)
+            return base::makeError(kCollectCancelled);
         sim::TurningOptions turningOptions;
         turningOptions.insert = turning->insert;
         const sim::TurningReport turned = sim::checkTurning(moving, turning->stock, turning->design, turningOptions);
@@ -198,7 +202,11 @@ base::Result<SetupSheet> collectSetupSheet(const Job& job, const std::string& jo
         sim::SimulationSetup setup;
         setup.machine = machine ? &*machine : nullptr;
         setup.stockSpec = &spec;
+        setup.cancel = options.cancel;
+        setup.progress = options.progress;
         simulated = sim::simulate(program, setup);
+        if (simulated.cancelled)
+            return base::makeError(kCollectCancelled);
         sheet.verification = verification(simulated, spec.resolutionMm, job, jobPath, program);
     } else {
         simulated.moves = sim::buildMoves(moving);
@@ -208,6 +216,8 @@ base::Result<SetupSheet> collectSetupSheet(const Job& job, const std::string& jo
     // Time: planned with the machine's accelerations, per operation by where each move came from.
     const kinematics::Machine planMachine = machine ? *machine : kinematics::defaultLimitsMachine();
     const sim::MotionPlan plan = sim::planMotion(moves, planMachine);
+    if (options.cancel && options.cancel->load())
+        return base::makeError(kCollectCancelled);
     toolpath::StatsOptions statsOptions;
     statsOptions.rapidMmPerMin = kinematics::estimateRapidMmPerMin(machine ? &*machine : nullptr);
     const toolpath::ProgramStats stats = toolpath::programStats(moving, statsOptions);

@@ -11,6 +11,8 @@
 #include "kinematics/Machine.h"
 #include "toolpath/ClRecords.h"
 
+#include <atomic>
+#include <functional>
 #include <optional>
 #include <string>
 #include <utility>
@@ -88,7 +90,14 @@ struct SheetOptions {
     bool simulate = true;
     std::optional<kinematics::Machine> machine;  // overrides the job's
     std::vector<base::DataDir> postDirs;         // where the job's post is found
+    // Set from another thread to stop the simulation: collectSetupSheet then answers an error
+    // (kCollectCancelled). Progress is the simulation's, 0..1.
+    const std::atomic<bool>* cancel = nullptr;
+    std::function<void(double fraction)> progress;
 };
+
+// The message of the error collectSetupSheet answers when SheetOptions::cancel stopped it.
+inline constexpr const char* kCollectCancelled = "setup sheet cancelled";
 
 // Everything the sheet shows; errors when the post or machine cannot be loaded.
 base::Result<SetupSheet> collectSetupSheet(const Job& job, const std::string& jobPath, const occ::Model& model,

@@ -3,6 +3,7 @@
 #include "base/AtomicFile.h"
 #include "base/JsonRead.h"
 #include "document/detail/FusionTools.h"
+#include "document/detail/ZipJson.h"
 
 #include <cstdlib>
 #include <filesystem>
@@ -159,9 +160,12 @@ base::Result<std::pair<std::string, json>> readJsonFile(const std::string& path)
     auto content = base::readTextFile(path);
     if (!content)
         return content.error();
-    // Fusion's .tools is a zip holding the JSON: say what to do rather than "malformed JSON".
-    if (content.value().rfind("PK", 0) == 0)
-        return base::makeError("a zipped Fusion 360 .tools file: unzip it and import the tools.json inside", path);
+    // Fusion's .tools is a zip holding the JSON (tools.json): the JSON inside is read.
+    if (content.value().rfind("PK", 0) == 0) {
+        content = detail::readJsonFromZip(path);
+        if (!content)
+            return content.error();
+    }
     auto root = parse(content.value(), path);
     if (!root)
         return root.error();

@@ -12,6 +12,7 @@
 #include <QTextDocument>
 #include <QUrl>
 
+#include <atomic>
 #include <filesystem>
 #include <system_error>
 #include <unistd.h>
@@ -51,7 +52,8 @@ Pictures drawPictures(const document::SetupSheet& sheet, const SheetPicture& ren
 }
 
 // The same sheet as the HTML, its pictures shown smaller so that two fit on a landscape page.
-base::Status writePdf(const document::SetupSheet& sheet, const Pictures& pictures, const std::string& path)
+base::Status writePdf(const document::SetupSheet& sheet, const Pictures& pictures, SheetUnit unit,
+                      const std::string& path)
 {
     SheetImages printed = pictures.names;
     const auto shrink = [](SheetImage& image) {
@@ -64,7 +66,7 @@ base::Status writePdf(const document::SetupSheet& sheet, const Pictures& picture
     QTextDocument document;
     for (const auto& [name, image] : pictures.images)
         document.addResource(QTextDocument::ImageResource, QUrl(QString::fromStdString(name)), image);
-    document.setHtml(QString::fromStdString(sheetHtml(sheet, printed)));
+    document.setHtml(QString::fromStdString(sheetHtml(sheet, printed, unit)));
     QPdfWriter writer(QString::fromStdString(path));
     writer.setTitle(QString::fromStdString("Setup sheet: " + sheet.jobName));
     writer.setCreator(QStringLiteral("CAM Workbench"));
@@ -88,49 +90,85 @@ base::Status renamed(const fs::path& from, const fs::path& to)
 
 }  // namespace
 
-base::Status writeSetupSheet(const document::SetupSheet& sheet, const SheetPicture& renderer, const SheetOutput& output)
+StagedSheet::StagedSheet(StagedSheet&& other) noexcept :
+    m_output(std::move(other.m_output)),
+    m_temp(std::move(other.m_temp)),
+    m_tempPdf(std::move(other.m_tempPdf)),
+    m_folder(std::move(other.m_folder)),
+    m_done(other.m_done)
 {
-    const fs::path html = fs::absolute(output.htmlPath);
-    const std::string folder = html.stem().string() + "-images";
-    const fs::path temp = html.parent_path() / ("." + html.filename().string() + ".tmp-" + std::to_string(::getpid()));
-    const fs::path tempPdf =
-        output.pdfPath.empty() ? fs::path() : fs::path(output.pdfPath + ".tmp-" + std::to_string(::getpid()));
+    other.m_done = true;  // the temporaries are this one's now
+}
+
+StagedSheet::~StagedSheet()
+{
+    if (!m_done)
+        removeTemporaries();
+}
+
+void StagedSheet::removeTemporaries()
+{
+    std::error_code ignored;
+    fs::remove_all(m_temp, ignored);
+    if (!m_tempPdf.empty())
+        fs::remove(m_tempPdf, ignored);
+}
+
+base::Status StagedSheet::commit()
+{
+    if (m_done)
+        return base::makeError("the setup sheet was committed or discarded already");
+    m_done = true;
+    const fs::path html = fs::absolute(m_output.htmlPath);
+    const fs::path temp(m_temp);
     std::error_code ec;
-    fs::remove_all(temp, ec);
-    if (!fs::create_directories(temp / folder, ec) || ec)
-        return base::makeError("cannot create '" + (temp / folder).string() + "': " + ec.message());
-    const auto cleanUp = [&] {
-        std::error_code ignored;
-        fs::remove_all(temp, ignored);
-        if (!tempPdf.empty())
-            fs::remove(tempPdf, ignored);
-    };
-
-    const Pictures pictures = drawPictures(sheet, renderer, output, folder);
-    for (const auto& [name, image] : pictures.images) {
-        if (!image.save(QString::fromStdString((temp / name).string()), "PNG")) {
-            cleanUp();
-            return base::makeError("cannot write the picture '" + (temp / name).string() + "'");
-        }
-    }
-    const std::string text = sheetHtml(sheet, pictures.names);
-    base::Status status = base::writeFileAtomically((temp / html.filename()).string(), text);
-    if (status && !tempPdf.empty())
-        status = writePdf(sheet, pictures, tempPdf.string());
-    if (!status) {
-        cleanUp();
-        return status;
-    }
-
-    // Everything is written: replace the old sheet's pictures, then the HTML and the PDF.
-    fs::remove_all(html.parent_path() / folder, ec);
-    status = renamed(temp / folder, html.parent_path() / folder);
+    fs::remove_all(html.parent_path() / m_folder, ec);
+    base::Status status = renamed(temp / m_folder, html.parent_path() / m_folder);
     if (status)
         status = renamed(temp / html.filename(), html);
-    if (status && !tempPdf.empty())
-        status = renamed(tempPdf, output.pdfPath);
-    cleanUp();
+    if (status && !m_tempPdf.empty())
+        status = renamed(m_tempPdf, m_output.pdfPath);
+    removeTemporaries();
     return status;
+}
+
+base::Result<StagedSheet> stageSetupSheet(const document::SetupSheet& sheet, const SheetPicture& renderer,
+                                          const SheetOutput& output)
+{
+    // Unique per staging (a process may stage two sheets for one place: the later one wins).
+    static std::atomic<unsigned> counter{0};
+    const std::string unique = std::to_string(::getpid()) + "-" + std::to_string(counter++);
+    const fs::path html = fs::absolute(output.htmlPath);
+    StagedSheet staged;
+    staged.m_output = output;
+    staged.m_folder = html.stem().string() + "-images";
+    staged.m_temp = (html.parent_path() / ("." + html.filename().string() + ".tmp-" + unique)).string();
+    if (!output.pdfPath.empty())
+        staged.m_tempPdf = output.pdfPath + ".tmp-" + unique;
+    const fs::path temp(staged.m_temp);
+    std::error_code ec;
+    if (!fs::create_directories(temp / staged.m_folder, ec) || ec)
+        return base::makeError("cannot create '" + (temp / staged.m_folder).string() + "': " + ec.message());
+
+    const Pictures pictures = drawPictures(sheet, renderer, output, staged.m_folder);
+    for (const auto& [name, image] : pictures.images)
+        if (!image.save(QString::fromStdString((temp / name).string()), "PNG"))
+            return base::makeError("cannot write the picture '" + (temp / name).string() + "'");
+    const std::string text = sheetHtml(sheet, pictures.names, output.unit);
+    base::Status status = base::writeFileAtomically((temp / html.filename()).string(), text);
+    if (status && !staged.m_tempPdf.empty())
+        status = writePdf(sheet, pictures, output.unit, staged.m_tempPdf);
+    if (!status)
+        return status.error();  // the temporaries go with `staged`
+    return staged;
+}
+
+base::Status writeSetupSheet(const document::SetupSheet& sheet, const SheetPicture& renderer, const SheetOutput& output)
+{
+    auto staged = stageSetupSheet(sheet, renderer, output);
+    if (!staged)
+        return staged.error();
+    return staged.value().commit();
 }
 
 }  // namespace camwb::sheet

@@ -21,7 +21,12 @@ struct SheetImages {
     std::vector<SheetImage> operations;  // job order; missing entries: no picture
 };
 
-std::string sheetHtml(const document::SetupSheet& sheet, const SheetImages& images);
+// What lengths and feeds are shown in: the job's mm and mm/min, or inch and in/min (the
+// window's display unit). Only the text changes; the sheet's data stays in mm.
+enum class SheetUnit { Millimetre, Inch };
+
+std::string sheetHtml(const document::SetupSheet& sheet, const SheetImages& images,
+                      SheetUnit unit = SheetUnit::Millimetre);
 
 // `text` with & < > " escaped for HTML text and attribute values.
 std::string escapeHtml(const std::string& text);

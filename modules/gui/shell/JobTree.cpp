@@ -2,6 +2,7 @@
 
 #include "document/JobPipeline.h"
 #include "gui/editor/ProgramInfoDialog.h"
+#include "gui/shell/Preferences.h"
 #include "gui/shell/Workbench.h"
 #include "kinematics/Machine.h"
 
@@ -19,7 +20,9 @@ namespace {
 constexpr int kOperationRole = Qt::UserRole + 1;
 constexpr int kKindRole = Qt::UserRole + 2;
 
-QString mm(double v) { return QString::number(v, 'f', 3); }
+// A length in the display unit (gui/shell/Preferences.h), without the unit / with it.
+QString len(double mm) { return formatLengthNumber(mm, displayUnit()); }
+QString lenUnit() { return unitSymbol(displayUnit()); }
 QString qs(const std::string& s) { return QString::fromStdString(s); }
 
 QString indexList(const std::vector<int>& indices)
@@ -182,17 +185,18 @@ void JobTree::addSetupItems(QTreeWidgetItem* jobItem)
     const base::Vec3 size = job.stock.max - job.stock.min;
     // A lathe job's stock is the shaft its grooves are cut in, made from their parameters.
     const bool lathe = !job.operations.empty() && !document::jobNeedsModel(job);
-    auto* stock = row(jobItem, ItemKind::Stock, tr("Stock"),
-                      lathe             ? tr("the grooves' shaft (revolved)")
-                      : job.stock.box() ? tr("box %1 × %2 × %3 mm").arg(mm(size.x), mm(size.y), mm(size.z))
-                                        : tr("(none)"));
+    auto* stock =
+        row(jobItem, ItemKind::Stock, tr("Stock"),
+            lathe             ? tr("the grooves' shaft (revolved)")
+            : job.stock.box() ? tr("box %1 × %2 × %3 %4").arg(len(size.x), len(size.y), len(size.z), lenUnit())
+                              : tr("(none)"));
     if (!lathe) {
         new QTreeWidgetItem(
-            stock, {tr("Min"),
-                    QStringLiteral("%1, %2, %3").arg(mm(job.stock.min.x), mm(job.stock.min.y), mm(job.stock.min.z))});
+            stock, {tr("Min"), QStringLiteral("%1, %2, %3 %4")
+                                   .arg(len(job.stock.min.x), len(job.stock.min.y), len(job.stock.min.z), lenUnit())});
         new QTreeWidgetItem(
-            stock, {tr("Max"),
-                    QStringLiteral("%1, %2, %3").arg(mm(job.stock.max.x), mm(job.stock.max.y), mm(job.stock.max.z))});
+            stock, {tr("Max"), QStringLiteral("%1, %2, %3 %4")
+                                   .arg(len(job.stock.max.x), len(job.stock.max.y), len(job.stock.max.z), lenUnit())});
     }
     row(jobItem, ItemKind::Wcs, tr("Work offset"),
         QString::fromStdString(document::workOffsetName(job.workOffset, job.postId)));
@@ -216,7 +220,7 @@ void JobTree::addSetupItems(QTreeWidgetItem* jobItem)
 
     auto* tools = row(jobItem, ItemKind::Tools, tr("Tools"), QString::number(job.tools.size()));
     for (const ops::ToolController& tc : job.tools) {
-        QString text = tr("%1, Ø%2 mm").arg(qs(tc.tool.name), mm(tc.tool.diameterMm));
+        QString text = tr("%1, Ø%2").arg(qs(tc.tool.name), formatLength(tc.tool.diameterMm));
         if (!tc.tool.holder.empty())
             text += tr(", holder %1").arg(qs(tc.tool.holder));
         auto* tool = row(tools, ItemKind::Tool, QStringLiteral("T%1").arg(tc.tool.number), text);
@@ -237,7 +241,8 @@ void JobTree::addOperationItems(QTreeWidgetItem* jobItem)
         if (const double seconds = m_workbench.operationSeconds(index); op.enabled && seconds >= 0)
             value << formatDuration(seconds);
         if (const auto* groove = std::get_if<ops::GrooveParams>(&op.params))  // given by numbers, not faces
-            value << tr("depth %1 mm, bottom width %2 mm").arg(mm(groove->groove.r3), mm(groove->groove.r4));
+            value << tr("depth %1, bottom width %2")
+                         .arg(formatLength(groove->groove.r3), formatLength(groove->groove.r4));
         else
             value << geometrySummary(op.geometry);
         if (!op.enabled)
@@ -250,8 +255,8 @@ void JobTree::addOperationItems(QTreeWidgetItem* jobItem)
         item->setToolTip(0, op.enabled ? tr("Posted; uncheck to leave it out of the program")
                                        : tr("Disabled: not computed and not posted"));
         if (const ops::ToolController* tc = job.tool(op.toolNumber))
-            item->setToolTip(1,
-                             tr("T%1 %2, Ø%3 mm").arg(tc->tool.number).arg(qs(tc->tool.name), mm(tc->tool.diameterMm)));
+            item->setToolTip(
+                1, tr("T%1 %2, Ø%3").arg(tc->tool.number).arg(qs(tc->tool.name), formatLength(tc->tool.diameterMm)));
         if (!op.enabled) {
             item->setForeground(0, grey);
             item->setForeground(1, grey);

@@ -28,6 +28,10 @@ public:
     // operations' menu title. Call once.
     void registerActions(ActionRegistry& registry, const QString& menu);
 
+    // Fills the tree from the job again (it does on every job change; also when the display
+    // unit changed).
+    void rebuild();
+
     // Index of the selected operation, -1 when none is selected.
     int selectedOperation() const;
     void selectOperation(int index);
@@ -58,7 +62,6 @@ protected:
     void closeEditor(QWidget* editor, QAbstractItemDelegate::EndEditHint hint) override;
 
 private:
-    void rebuild();
     void addSetupItems(QTreeWidgetItem* jobItem);
     void addOperationItems(QTreeWidgetItem* jobItem);
     void onItemChanged(QTreeWidgetItem* item, int column);

@@ -135,7 +135,14 @@ MainWindow::MainWindow(QWidget* parent) :
     updateTitle();
 }
 
-MainWindow::~MainWindow() { m_workbench->setPrompter(nullptr); }
+MainWindow::~MainWindow()
+{
+    // An open task panel refers to the workbench and the 3D view's overlay, which (children made
+    // before the task dock) would be destroyed before it: it goes first, while both are there.
+    delete std::exchange(m_taskPanel, nullptr);
+    delete std::exchange(m_jobSetupPanel, nullptr);
+    m_workbench->setPrompter(nullptr);
+}
 
 void MainWindow::setPrompter(std::unique_ptr<Prompter> prompter)
 {
@@ -290,7 +297,7 @@ void MainWindow::registerActions()
             m_workbench->saveNc(path);
     });
     registerSetupSheetActions(
-        *m_actions, jobMenu, m_workbench, [this]() -> Prompter& { return *m_prompter; },
+        *m_actions, jobMenu, m_workbench, this, [this]() -> Prompter& { return *m_prompter; },
         [this] { return m_view->grabImage(); });
 
     registerPostSettingsActions(*m_actions, m_workbench, this);
@@ -331,6 +338,9 @@ void MainWindow::registerActions()
     registerDockActions(view);
     registerFocusActions(*m_actions, *this, view);
     m_session = new Session(*this, file, edit);
+    // Lengths in the tree follow the display unit (the panels take it when they open).
+    connect(m_session, &Session::preferencesChanged, m_jobTree, &JobTree::rebuild);
+    m_jobTree->rebuild();
     registerToolActions(
         *m_actions, *m_workbench, [this]() -> Prompter& { return *m_prompter; }, this);
 

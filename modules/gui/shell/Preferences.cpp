@@ -3,6 +3,7 @@
 #include <QSettings>
 
 #include <algorithm>
+#include <atomic>
 
 namespace camwb::gui {
 
@@ -83,11 +84,30 @@ QLocale uiLocale(Language language)
     return QLocale();
 }
 
-QString formatLength(double mm, LengthUnit unit)
+namespace {
+constexpr double kMmPerInch = 25.4;
+std::atomic<LengthUnit> g_displayUnit{LengthUnit::Millimetre};
+}  // namespace
+
+LengthUnit displayUnit() { return g_displayUnit.load(); }
+
+void setDisplayUnit(LengthUnit unit) { g_displayUnit.store(unit); }
+
+double toDisplayUnit(double mm, LengthUnit unit) { return unit == LengthUnit::Inch ? mm / kMmPerInch : mm; }
+
+double fromDisplayUnit(double value, LengthUnit unit) { return unit == LengthUnit::Inch ? value * kMmPerInch : value; }
+
+QString unitSymbol(LengthUnit unit) { return unit == LengthUnit::Inch ? QStringLiteral("in") : QStringLiteral("mm"); }
+
+int lengthDecimals(LengthUnit unit) { return unit == LengthUnit::Inch ? 4 : 3; }
+
+QString formatLengthNumber(double mm, LengthUnit unit)
 {
-    if (unit == LengthUnit::Inch)
-        return QLocale().toString(mm / 25.4, 'f', 4) + QStringLiteral(" in");
-    return QLocale().toString(mm, 'f', 3) + QStringLiteral(" mm");
+    return QLocale().toString(toDisplayUnit(mm, unit), 'f', lengthDecimals(unit));
 }
+
+QString formatLength(double mm, LengthUnit unit) { return formatLengthNumber(mm, unit) + ' ' + unitSymbol(unit); }
+
+QString formatLength(double mm) { return formatLength(mm, displayUnit()); }
 
 }  // namespace camwb::gui

@@ -37,6 +37,7 @@ Session::Session(MainWindow& window, const QString& fileMenu, const QString& edi
     m_autosaver(new Autosaver(window.workbench(), this))
 {
     m_autosaver->setIntervalSeconds(m_preferences.autosaveSeconds);
+    setDisplayUnit(m_preferences.units);
     connect(m_autosaver, &Autosaver::message, window.reportView(), &ReportView::append);
     connect(m_recent, &RecentFiles::openRequested, this, &Session::openRecent);
     trackRecentJobs();
@@ -82,6 +83,7 @@ void Session::setPreferences(const Preferences& preferences)
     m_preferences = preferences;
     m_preferences.save();
     m_autosaver->setIntervalSeconds(preferences.autosaveSeconds);
+    setDisplayUnit(preferences.units);
     emit preferencesChanged(m_preferences);
 }
 

@@ -63,7 +63,7 @@ protected:
         form.choice<CompensationOutput>(tr("Output"), "compensationCombo", p.compensation,
                                         {{tr("Tool centre path"), CompensationOutput::ToolCentre},
                                          {tr("Contour, G41/G42"), CompensationOutput::Control}});
-        form.number(tr("Tolerance"), "toleranceBox", p.toleranceMm, 0.0001, 1, QStringLiteral(" mm"), 4);
+        form.length(tr("Tolerance"), "toleranceBox", p.toleranceMm, 0.0001, 1, 4);
     }
 };
 

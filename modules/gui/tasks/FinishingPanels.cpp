@@ -27,14 +27,14 @@ protected:
     void buildParameters(ParamForm& form) override
     {
         auto& p = std::get<ops::WaterlineParams>(m_op.params);
-        form.number(tr("Scallop height"), "scallopBox", p.scallopMm, 0.0001, 5, QStringLiteral(" mm"), 4)
+        form.length(tr("Scallop height"), "scallopBox", p.scallopMm, 0.0001, 5, 4)
             ->setToolTip(tr("The highest ridge left between two contours; sets the step-down"));
         form.length(tr("Maximum step-down"), "maxStepDownBox", p.maxStepDownMm, 50);
         form.number(tr("Steeper than"), "minSlopeBox", p.minSlopeDeg, 0, 90, tr(" °"), 1)
             ->setToolTip(tr("Contours only where the model is steeper than this; parallel finishing takes the rest"));
         form.length(tr("Stock to leave"), "stockBox", p.stockMm, 50);
         form.flag(tr("Climb milling"), "climbCheck", p.climb);
-        form.number(tr("Tolerance"), "toleranceBox", p.toleranceMm, 0.0001, 1, QStringLiteral(" mm"), 4);
+        form.length(tr("Tolerance"), "toleranceBox", p.toleranceMm, 0.0001, 1, 4);
     }
 };
 
@@ -58,7 +58,7 @@ protected:
             ->setToolTip(tr("Lines only where the model is at most this steep; waterline takes the steeper walls"));
         form.length(tr("Stock to leave"), "stockBox", p.stockMm, 50);
         form.flag(tr("Zig-zag"), "zigZagCheck", p.zigZag, tr("Cut both ways; unticked, every line the same way"));
-        form.number(tr("Tolerance"), "toleranceBox", p.toleranceMm, 0.0001, 1, QStringLiteral(" mm"), 4);
+        form.length(tr("Tolerance"), "toleranceBox", p.toleranceMm, 0.0001, 1, 4);
     }
 };
 

@@ -4,6 +4,7 @@
 // safety distance, and the cutting data of the Kod 5 frame (G96 S, LIMS, G95 F, M8).
 // The ranges only keep the numbers finite: the operation checks every value and its message shows
 // in the panel's status (the spin boxes would otherwise silently clamp a wrong value).
+#include "gui/shell/Preferences.h"
 #include "gui/tasks/OperationPanel.h"
 #include "gui/tasks/ParamForm.h"
 #include "gui/tasks/detail/KindPanels.h"
@@ -34,9 +35,9 @@ protected:
     {
         auto& p = std::get<ops::GrooveParams>(m_op.params);
         sim::GrooveParameters& g = p.groove;
-        const QString mm = QStringLiteral(" mm"), deg = tr(" °");
+        const QString deg = tr(" °");
         auto length = [&](const QString& label, const char* name, double& field, double min = 0) {
-            return form.number(label, name, field, min, kLengthLimitMm, mm);
+            return form.length(label, name, field, min, kLengthLimitMm);
         };
         length(tr("Start point X, radius (R0)"), "r0Box", g.r0, -kLengthLimitMm)
             ->setToolTip(tr("Where the right flank meets the surface (P): its radius"));
@@ -86,7 +87,7 @@ private:
         else if (tc->tool.kind != "groove")
             m_width->setText(tr("not a grooving tool (%1)").arg(QString::fromStdString(tc->tool.kind)));
         else
-            m_width->setText(QStringLiteral("%1 mm").arg(tc->tool.diameterMm, 0, 'g', 6));
+            m_width->setText(formatLength(tc->tool.diameterMm));
     }
 
     QLineEdit* m_width = nullptr;

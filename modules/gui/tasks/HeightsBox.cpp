@@ -1,5 +1,7 @@
 #include "gui/tasks/HeightsBox.h"
 
+#include "gui/tasks/LengthSpinBox.h"
+
 #include <QCheckBox>
 #include <QDoubleSpinBox>
 #include <QGridLayout>
@@ -25,11 +27,9 @@ HeightsBox::HeightsBox(document::HeightOverrides& overrides, QWidget* parent) :
         row.automatic = new QCheckBox(tr("auto"), this);
         row.automatic->setObjectName(QLatin1String(names[i]) + QStringLiteral("Auto"));
         row.automatic->setToolTip(tr("Derived from the model and the stock; uncheck to set it"));
-        row.value = new QDoubleSpinBox(this);
+        row.value = new LengthSpinBox(this);
         row.value->setObjectName(QLatin1String(names[i]) + QStringLiteral("Box"));
         row.value->setRange(-10000, 10000);
-        row.value->setDecimals(3);
-        row.value->setSuffix(QStringLiteral(" mm"));
         row.value->setKeyboardTracking(false);
         const std::optional<double>& set = overrides.*row.override;
         row.automatic->setChecked(!set);

@@ -33,7 +33,7 @@ protected:
                         [&p] { return p.depthsFromHoles; });
         form.length(tr("Radial stock"), "radialStockBox", p.radialStockMm, 50);
         form.flag(tr("Finishing circle"), "finishingCircleCheck", p.finishingCircle);
-        form.number(tr("Tolerance"), "toleranceBox", p.toleranceMm, 0.0001, 1, QStringLiteral(" mm"), 4);
+        form.length(tr("Tolerance"), "toleranceBox", p.toleranceMm, 0.0001, 1, 4);
     }
 };
 

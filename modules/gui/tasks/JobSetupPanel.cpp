@@ -1,7 +1,9 @@
 #include "gui/tasks/JobSetupPanel.h"
 
+#include "document/JobFile.h"
 #include "document/JobSetup.h"
 #include "gui/shell/Workbench.h"
+#include "gui/tasks/LengthSpinBox.h"
 #include "gui/tasks/PostPropertiesForm.h"
 #include "gui/view3d/TaskOverlay.h"
 #include "kinematics/Machine.h"
@@ -149,11 +151,9 @@ JobSetupPanel::Vec3Fields JobSetupPanel::vec3Fields(const char* objectName, doub
     Vec3Fields fields{};
     const char* axes[] = {"X", "Y", "Z"};
     for (int i = 0; i < 3; ++i) {
-        auto* spin = new QDoubleSpinBox;
+        auto* spin = new LengthSpinBox;  // in the display unit, the value in mm
         spin->setObjectName(QString::fromLatin1(objectName) + QLatin1String(axes[i]));
         spin->setRange(min, max);
-        spin->setDecimals(3);
-        spin->setToolTip(tr("mm"));
         spin->setKeyboardTracking(false);  // one change per value typed, not per digit
         fields[static_cast<std::size_t>(i)] = spin;
     }
@@ -195,11 +195,11 @@ QWidget* JobSetupPanel::buildStock()
 
     m_below = vec3Fields("stockBelow", 0, 1000);
     m_above = vec3Fields("stockAbove", 0, 1000);
-    m_offsetRows = axisGrid({{tr("Below min (mm)"), m_below}, {tr("Above max (mm)"), m_above}});
+    m_offsetRows = axisGrid({{tr("Below min"), m_below}, {tr("Above max"), m_above}});
     form->addRow(m_offsetRows);
     m_min = vec3Fields("stockMin", -10000, 10000);
     m_max = vec3Fields("stockMax", -10000, 10000);
-    m_explicitRows = axisGrid({{tr("Min (mm)"), m_min}, {tr("Max (mm)"), m_max}});
+    m_explicitRows = axisGrid({{tr("Min"), m_min}, {tr("Max"), m_max}});
     form->addRow(m_explicitRows);
     m_stockSummary = new QLabel;
     m_stockSummary->setObjectName(QStringLiteral("stockSummary"));
@@ -561,11 +561,8 @@ void JobSetupPanel::checkTravels()
 
 bool JobSetupPanel::hasUnappliedChanges() const
 {
-    const document::Job& a = m_setup;
-    const document::Job& b = m_original;
-    return !(a.stock == b.stock && a.origin == b.origin && a.workOffset == b.workOffset && a.machineId == b.machineId &&
-             a.postId == b.postId && a.postProperties == b.postProperties && a.outputName == b.outputName &&
-             a.outputFolder == b.outputFolder);
+    // The jobs as written: a setup field added later counts without being listed here.
+    return document::serializeJob(m_setup) != document::serializeJob(m_original);
 }
 
 bool JobSetupPanel::accept()

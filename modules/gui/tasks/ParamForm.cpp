@@ -1,5 +1,7 @@
 #include "gui/tasks/ParamForm.h"
 
+#include "gui/tasks/LengthSpinBox.h"
+
 #include <QCheckBox>
 #include <QDoubleSpinBox>
 #include <QFormLayout>
@@ -17,10 +19,22 @@ QDoubleSpinBox* ParamForm::number(const QString& label, const char* objectName, 
                                   const QString& suffix, int decimals)
 {
     auto* box = new QDoubleSpinBox;
-    box->setObjectName(QLatin1String(objectName));
-    box->setRange(min, max);
     box->setDecimals(decimals);
     box->setSuffix(suffix);
+    return bind(box, label, objectName, field, min, max);
+}
+
+QDoubleSpinBox* ParamForm::length(const QString& label, const char* objectName, double& field, double min, double max,
+                                  int mmDecimals)
+{
+    return bind(new LengthSpinBox(nullptr, mmDecimals), label, objectName, field, min, max);
+}
+
+QDoubleSpinBox* ParamForm::bind(QDoubleSpinBox* box, const QString& label, const char* objectName, double& field,
+                                double min, double max)
+{
+    box->setObjectName(QLatin1String(objectName));
+    box->setRange(min, max);
     box->setValue(field);
     box->setKeyboardTracking(false);  // one preview per finished number, not per digit
     QObject::connect(box, &QDoubleSpinBox::valueChanged, box, [this, &field](double value) {

@@ -1,6 +1,7 @@
 // Rows of a task panel bound to the fields of an operation's parameters: each widget writes its
 // field and calls `changed` (the panel restarts the preview). Enums are combos, flags check
-// boxes, lengths spin boxes in mm. Rows can depend on others (enabled only when they apply).
+// boxes, lengths spin boxes in the display unit (LengthSpinBox: the field stays in mm). Rows
+// can depend on others (enabled only when they apply).
 #pragma once
 
 #include <QComboBox>
@@ -24,9 +25,12 @@ public:
 
     QDoubleSpinBox* number(const QString& label, const char* objectName, double& field, double min, double max,
                            const QString& suffix, int decimals = 3);
+    // A length: `field`, `min` and `max` in mm; shown in the display unit.
+    QDoubleSpinBox* length(const QString& label, const char* objectName, double& field, double min, double max,
+                           int mmDecimals = 3);
     QDoubleSpinBox* length(const QString& label, const char* objectName, double& field, double max = 1000)
     {
-        return number(label, objectName, field, 0, max, QStringLiteral(" mm"));
+        return length(label, objectName, field, 0, max);
     }
     QSpinBox* count(const QString& label, const char* objectName, int& field, int min, int max);
     QCheckBox* flag(const QString& label, const char* objectName, bool& field, const QString& toolTip = {});
@@ -52,6 +56,8 @@ public:
     void refresh();  // re-evaluates enableWhen
 
 private:
+    QDoubleSpinBox* bind(QDoubleSpinBox* box, const QString& label, const char* objectName, double& field, double min,
+                         double max);
     QComboBox* addCombo(const QString& label, const char* objectName);
     void bindCombo(QComboBox* box, std::function<void(int)> write);
     void edited();

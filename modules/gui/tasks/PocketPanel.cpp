@@ -49,7 +49,7 @@ protected:
                         [&p] { return p.entry == EntryKind::Helix; });
         form.enableWhen(form.number(tr("Ramp angle"), "rampAngleBox", p.rampAngleDeg, 0.1, 90, tr(" °"), 1),
                         [&p] { return p.entry == EntryKind::Ramp; });
-        form.number(tr("Tolerance"), "toleranceBox", p.toleranceMm, 0.0001, 1, QStringLiteral(" mm"), 4);
+        form.length(tr("Tolerance"), "toleranceBox", p.toleranceMm, 0.0001, 1, 4);
     }
 };
 

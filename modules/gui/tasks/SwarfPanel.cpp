@@ -28,17 +28,16 @@ protected:
     {
         auto& p = std::get<ops::SwarfParams>(m_op.params);
         form.flag(tr("Climb milling"), "climbCheck", p.climb);
-        form.number(tr("Axial offset"), "axialOffsetBox", p.axialOffsetMm, -50, 50, QStringLiteral(" mm"), 3)
+        form.length(tr("Axial offset"), "axialOffsetBox", p.axialOffsetMm, -50, 50, 3)
             ->setToolTip(tr("The tool tip above (+) or below (−) the face's bottom edge, along the tool axis"));
         form.length(tr("Radial stock"), "radialStockBox", p.radialStockMm, 50);
         form.count(tr("Radial passes"), "radialPassesBox", p.radialPasses, 1, 100);
         form.enableWhen(form.length(tr("Radial stepover"), "radialStepoverBox", p.radialStepoverMm, 50),
                         [&p] { return p.radialPasses > 1; });
-        form.number(tr("Chord tolerance"), "chordToleranceBox", p.chordToleranceMm, 0.0001, 1, QStringLiteral(" mm"),
-                    4);
+        form.length(tr("Chord tolerance"), "chordToleranceBox", p.chordToleranceMm, 0.0001, 1, 4);
         form.number(tr("Angle tolerance"), "angleToleranceBox", p.angleToleranceDeg, 0.01, 45, QStringLiteral(" °"), 2)
             ->setToolTip(tr("The most the tool axis turns from one point to the next"));
-        form.number(tr("Gouge tolerance"), "gougeToleranceBox", p.gougeToleranceMm, 0.0001, 1, QStringLiteral(" mm"), 4)
+        form.length(tr("Gouge tolerance"), "gougeToleranceBox", p.gougeToleranceMm, 0.0001, 1, 4)
             ->setToolTip(tr("How deep the tool may enter the model before the operation fails"));
     }
 };

@@ -218,7 +218,8 @@ private slots:
         QVERIFY(width && width->isReadOnly());
         const auto* tool = window.workbench().job().tool(panel->operation().toolNumber);
         QVERIFY(tool);
-        QCOMPARE(width->text(), QStringLiteral("%1 mm").arg(tool->tool.diameterMm, 0, 'g', 6));
+        QCOMPARE(tool->tool.diameterMm, 3.0);
+        QCOMPARE(width->text(), QStringLiteral("3.000 mm"));  // as every length shows (display unit mm)
         for (const char* field : {"surfaceSpeedBox", "maxRpmBox", "feedBox"})
             QVERIFY2(panel->findChild<QDoubleSpinBox*>(QLatin1String(field)), field);
         QCOMPARE(labelOf(*panel, "maxRpmBox"), QStringLiteral("Spindle limit (LIMS)"));
@@ -284,7 +285,7 @@ private slots:
         QSignalSpy finished(&panel->preview(), &PreviewRunner::finished);
         QVERIFY(finished.wait(120000));
         QVERIFY2(panel->preview().lastOutcome()->ok, qPrintable(panel->statusText()));
-        QCOMPARE(panel->findChild<QLineEdit*>(QStringLiteral("insertWidthEdit"))->text(), QStringLiteral("3 mm"));
+        QCOMPARE(panel->findChild<QLineEdit*>(QStringLiteral("insertWidthEdit"))->text(), QStringLiteral("3.000 mm"));
         QVERIFY(panel->accept());
         const auto& job = window.workbench().job();
         QCOMPARE(job.operations.size(), std::size_t(1));

@@ -241,6 +241,33 @@ private slots:
         waitIdle(window);
     }
 
+    // Destroying the window itself (not closing it: the close settles the panel first) while an
+    // operation panel shows its preview, or computes a new one, or the job setup panel is open:
+    // the panels go before the view's overlay and the workbench they refer to (this crashed).
+    void destroyingTheWindowWithAnOpenPanel()
+    {
+        // Shown or never shown (the dock widgets are then destroyed in another order).
+        for (int round = 0; round < 6; ++round) {
+            auto* window = new MainWindow;
+            if (round % 2 == 0) {
+                window->show();
+                QVERIFY(QTest::qWaitForWindowExposed(window));
+            }
+            openExample(*window);
+            if (round / 2 == 2) {
+                window->editJobSetup();
+                QVERIFY(window->jobSetupPanel() != nullptr);
+            } else {
+                OperationPanel* panel = openPanel(*window, indexOfKind(*window, OperationKind::Pocket));
+                QVERIFY(panel);
+                QVERIFY(window->view()->overlay().previewSegmentCount() > 0);
+                if (round / 2 == 1)
+                    changeParameter(*panel);  // a preview being computed when the window goes
+            }
+            delete window;
+        }
+    }
+
     // New… from the model's defaults: the panel opens on an operation not yet in the job; OK adds
     // it (with its tool when the job had none suited) as one undo step.
     void newOperationsFromTheModel_data()

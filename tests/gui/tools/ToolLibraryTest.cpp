@@ -176,8 +176,10 @@ private slots:
         ToolLibraryDialog* dialog = openLibrary(window);
         QVERIFY(dialog);
         const int before = int(dialog->library().tools.size());
-        prompter->files.push_back(QStringLiteral(CAMWB_TOOLS_DATA "/fusion/shop.json"));
+        // Fusion's .tools (a zip holding tools.json), as Fusion exports it.
+        prompter->files.push_back(QStringLiteral(CAMWB_TOOLS_DATA "/fusion/shop.tools"));
         dialog->findChild<QPushButton*>(QStringLiteral("importTools"))->click();
+        QVERIFY2(prompter->errors.isEmpty(), qPrintable(prompter->errors.join('\n')));
         QCOMPARE(int(dialog->library().tools.size()), before + 3);
         QVERIFY(dialog->isModified());
 
@@ -199,6 +201,13 @@ private slots:
         QCOMPARE(prompter->errors.size(), 1);
         QVERIFY2(prompter->errors.first().contains(QStringLiteral("geometry.DC")),
                  qPrintable(prompter->errors.first()));
+        // A damaged .tools archive: said so, nothing added.
+        prompter->files.push_back(QStringLiteral(CAMWB_TOOLS_DATA "/fusion/damaged.tools"));
+        dialog->findChild<QPushButton*>(QStringLiteral("importTools"))->click();
+        QCOMPARE(int(dialog->library().tools.size()), before + 3);
+        QCOMPARE(prompter->errors.size(), 2);
+        QVERIFY2(prompter->errors.last().contains(QStringLiteral("checksum does not match")),
+                 qPrintable(prompter->errors.last()));
 
         // Closing a modified library asks; Save writes the user's library.
         prompter->answers.push_back(ScriptedPrompter::Answer::Accept);

@@ -12,6 +12,7 @@
 
 #include <filesystem>
 #include <numbers>
+#include <unistd.h>
 
 using namespace camwb;
 namespace fs = std::filesystem;
@@ -218,6 +219,50 @@ TEST(ToolLibraryImport, FusionErrorsNameTheFileAndField)
     ASSERT_FALSE(bad.ok());
     EXPECT_EQ(bad.error().file, path);
     EXPECT_NE(bad.error().message.find("library.data[1].geometry.DC"), std::string::npos) << bad.error().message;
+}
+
+// Fusion 360 exports its libraries as .tools: a zip holding tools.json. The JSON inside is read.
+TEST(ToolLibraryImport, FusionToolsArchiveReadsTheJsonInside)
+{
+    auto zipped = document::importToolLibrary(kData + "/fusion/shop.tools");
+    ASSERT_TRUE(zipped.ok()) << zipped.error().toString();
+    auto plain = document::importToolLibrary(kData + "/fusion/shop.json");
+    ASSERT_TRUE(plain.ok());
+    EXPECT_EQ(document::serializeToolLibrary(zipped->library), document::serializeToolLibrary(plain->library));
+    EXPECT_EQ(zipped->notes, plain->notes);
+    ASSERT_EQ(zipped->library.tools.size(), 3u);
+    EXPECT_EQ(byNumber(zipped->library, 11)->tool.holder, "BT30 ER32 70");
+}
+
+TEST(ToolLibraryImport, DamagedToolsArchiveIsAnErrorNamingTheFile)
+{
+    // One byte of the JSON changed after zipping (stored, so it still parses): only the
+    // entry's checksum tells, and the import must not take the changed holder name.
+    const std::string damaged = kData + "/fusion/damaged.tools";
+    auto bad = document::importToolLibrary(damaged);
+    ASSERT_FALSE(bad.ok());
+    EXPECT_EQ(bad.error().file, damaged);
+    EXPECT_NE(bad.error().message.find("'tools.json' in the zip archive is damaged (its checksum does not match)"),
+              std::string::npos)
+        << bad.error().message;
+
+    auto none = document::importToolLibrary(kData + "/fusion/no-json.tools");
+    ASSERT_FALSE(none.ok());
+    EXPECT_NE(none.error().message.find("holds no .json file"), std::string::npos) << none.error().message;
+
+    // Cut off half-way (a download that stopped): the zip's directory at its end is missing.
+    const fs::path dir = fs::temp_directory_path() / ("camwb-tools-" + std::to_string(::getpid()));
+    fs::create_directories(dir);
+    auto whole = base::readTextFile(kData + "/fusion/shop.tools");
+    ASSERT_TRUE(whole.ok());
+    const std::string cut = (dir / "cut.tools").string();
+    ASSERT_TRUE(base::writeFileAtomically(cut, whole->substr(0, whole->size() / 2)));
+    auto truncated = document::importToolLibrary(cut);
+    ASSERT_FALSE(truncated.ok());
+    EXPECT_EQ(truncated.error().file, cut);
+    EXPECT_NE(truncated.error().message.find("not a zip archive that can be read"), std::string::npos)
+        << truncated.error().message;
+    fs::remove_all(dir);
 }
 
 TEST(ToolLibraryImport, ImportedToolsExportToOurFormat)

@@ -1,0 +1,174 @@
+// The display unit (Edit > Preferences > Units) on what the window shows: with inch, the job
+// tree's lengths are in inch, an operation panel's and the job setup panel's spin boxes show
+// their mm values in inch ("0.2362 in" for 6 mm) and what the user types in inch is stored in mm
+// (1 in -> 25.4 mm); the job stays in mm. Back to mm, the same rows read mm. Under Xvfb and
+// offscreen.
+#include "QtTestRun.h"
+#include "document/JobFile.h"
+#include "gui/shell/JobTree.h"
+#include "gui/shell/MainWindow.h"
+#include "gui/shell/Preferences.h"
+#include "gui/shell/Session.h"
+#include "gui/shell/Workbench.h"
+#include "gui/tasks/JobSetupPanel.h"
+#include "gui/tasks/OperationPanel.h"
+#include "gui/view3d/View3D.h"
+#include "ops/ContourOp.h"
+
+#include <QAbstractButton>
+#include <QApplication>
+#include <QDoubleSpinBox>
+#include <QElapsedTimer>
+#include <QLineEdit>
+#include <QSignalSpy>
+#include <QTest>
+#include <QTreeWidgetItem>
+
+#include <memory>
+
+using camwb::document::OperationKind;
+using camwb::gui::JobTree;
+using camwb::gui::LengthUnit;
+using camwb::gui::MainWindow;
+using camwb::gui::OperationPanel;
+using camwb::gui::Workbench;
+
+namespace {
+
+void waitIdle(MainWindow& window)
+{
+    QElapsedTimer waited;
+    waited.start();
+    while (window.workbench().isBusy() && waited.elapsed() < 120000)
+        QTest::qWait(20);
+}
+
+void setUnit(MainWindow& window, LengthUnit unit)
+{
+    camwb::gui::Preferences preferences = window.session().preferences();
+    preferences.units = unit;
+    window.session().setPreferences(preferences);
+}
+
+QString treeText(MainWindow& window, JobTree::ItemKind kind, int child = -1)
+{
+    QTreeWidgetItem* item = window.jobTree()->itemOf(kind);
+    if (item != nullptr && child >= 0)
+        item = item->child(child);
+    return item != nullptr ? item->text(1) : QString();
+}
+
+int contourIndex(MainWindow& window)
+{
+    const auto& operations = window.workbench().job().operations;
+    for (std::size_t i = 0; i < operations.size(); ++i)
+        if (operations[i].kind() == OperationKind::Contour)
+            return static_cast<int>(i);
+    return -1;
+}
+
+// Types `text` into `box` as the user does (select all, type, Enter).
+void type(QDoubleSpinBox* box, const QString& text)
+{
+    box->setFocus();
+    box->selectAll();
+    QTest::keyClicks(box, text);
+    QTest::keyClick(box, Qt::Key_Return);
+}
+
+}  // namespace
+
+class UnitsTest : public QObject {
+    Q_OBJECT
+
+private slots:
+    void inchInTheTreeAndThePanels()
+    {
+        MainWindow window;
+        window.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&window));
+        QSignalSpy posted(&window.workbench(), &Workbench::postFinished);
+        QVERIFY(window.openJob(QStringLiteral(CAMWB_EXAMPLE_JOB)));
+        QVERIFY(posted.wait(120000));
+        waitIdle(window);
+        setUnit(window, LengthUnit::Millimetre);  // whatever an earlier run left in the settings
+        QCOMPARE(treeText(window, JobTree::ItemKind::Stock), QStringLiteral("box 94.000 × 64.000 × 16.000 mm"));
+
+        setUnit(window, LengthUnit::Inch);
+        // A failure below must not leave inch in this test's settings for the next run.
+        const std::unique_ptr<MainWindow, void (*)(MainWindow*)> backToMm(
+            &window, [](MainWindow* w) { setUnit(*w, LengthUnit::Millimetre); });
+        QCOMPARE(camwb::gui::displayUnit(), LengthUnit::Inch);
+        // The example's stock is 94 × 64 × 16 mm from (−2, −2, 0).
+        QCOMPARE(treeText(window, JobTree::ItemKind::Stock), QStringLiteral("box 3.7008 × 2.5197 × 0.6299 in"));
+        QCOMPARE(treeText(window, JobTree::ItemKind::Stock, 0), QStringLiteral("-0.0787, -0.0787, 0.0000 in"));
+        bool d6 = false;
+        QTreeWidgetItem* tools = window.jobTree()->itemOf(JobTree::ItemKind::Tools);
+        for (int i = 0; tools != nullptr && i < tools->childCount(); ++i)
+            d6 = d6 || tools->child(i)->text(1).contains(QStringLiteral("Flat end mill D6, Ø0.2362 in"));
+        QVERIFY2(d6, "the D6 tool is not shown in inch");
+
+        const int index = contourIndex(window);
+        QVERIFY(index >= 0);
+        window.editOperation(index);
+        OperationPanel* panel = window.taskPanel();
+        QVERIFY(panel);
+        auto* stepDown = panel->findChild<QDoubleSpinBox*>(QStringLiteral("stepDownBox"));
+        QVERIFY(stepDown);
+        QCOMPARE(stepDown->suffix(), QStringLiteral(" in"));
+        QCOMPARE(stepDown->value(), 3.0);  // the value stays in mm
+        QCOMPARE(stepDown->text(), QStringLiteral("0.1181 in"));
+        stepDown->setValue(6.0);
+        QCOMPARE(stepDown->text(), QStringLiteral("0.2362 in"));
+        type(stepDown, QStringLiteral("1"));
+        QCOMPARE(stepDown->value(), 25.4);
+        QCOMPARE(std::get<camwb::ops::ContourParams>(panel->operation().params).stepDownMm, 25.4);
+        QCOMPARE(stepDown->text(), QStringLiteral("1.0000 in"));
+        type(stepDown, QStringLiteral("0.0625"));  // four decimals in inch are kept (1/16 in)
+        QCOMPARE(std::get<camwb::ops::ContourParams>(panel->operation().params).stepDownMm, 1.5875);
+        type(stepDown, QStringLiteral("0.125"));
+        QCOMPARE(std::get<camwb::ops::ContourParams>(panel->operation().params).stepDownMm, 3.175);
+        auto* safe = panel->findChild<QDoubleSpinBox*>(QStringLiteral("safeBox"));  // the heights box
+        QVERIFY(safe);
+        QCOMPARE(safe->suffix(), QStringLiteral(" in"));
+        // OK: the job holds mm.
+        const std::size_t undoSteps = window.workbench().document().undoStack().count();
+        QVERIFY(panel->accept());
+        QCOMPARE(window.workbench().document().undoStack().count(), undoSteps + 1);
+        const auto& params = std::get<camwb::ops::ContourParams>(window.workbench().job().operations[index].params);
+        QCOMPARE(params.stepDownMm, 3.175);
+        waitIdle(window);
+
+        window.editJobSetup();
+        QVERIFY(window.jobSetupPanel());
+        auto* stockMinX = window.jobSetupPanel()->findChild<QDoubleSpinBox*>(QStringLiteral("stockMinX"));
+        QVERIFY(stockMinX);
+        QCOMPARE(stockMinX->text(), QStringLiteral("-0.0787 in"));
+        QCOMPARE(stockMinX->value(), -2.0);
+        QVERIFY(!window.jobSetupPanel()->hasUnappliedChanges());  // showing in inch changes nothing
+        window.jobSetupPanel()->reject();
+        QTest::qWait(0);
+
+        // Back to mm: the tree reads mm again, and a panel opened now too.
+        setUnit(window, LengthUnit::Millimetre);
+        QCOMPARE(treeText(window, JobTree::ItemKind::Stock), QStringLiteral("box 94.000 × 64.000 × 16.000 mm"));
+        window.editOperation(index);
+        QVERIFY(window.taskPanel());
+        stepDown = window.taskPanel()->findChild<QDoubleSpinBox*>(QStringLiteral("stepDownBox"));
+        QCOMPARE(stepDown->text(), QStringLiteral("3.175 mm"));
+        window.taskPanel()->reject();
+        waitIdle(window);
+    }
+};
+
+int main(int argc, char** argv)
+{
+    camwb::gui::View3D::setDefaultSurfaceFormat();
+    QApplication app(argc, argv);
+    QtTestRun run(argc, argv);
+    UnitsTest test;
+    run.run(&test);
+    return run.finish();
+}
+
+#include "UnitsTest.moc"

@@ -23,7 +23,7 @@ base::Status writeExamplePart(const std::string& stepPath);
 // boss 10 x 8 x 3 mm on the -X face 12 mm towards +Y.
 base::Status writeFiveAxisExamplePart(const std::string& stepPath);
 // The five-axis part's cast blank (resources/examples/example-five-axis-blank.step, the example
-// job's stock): the inclined block and cap without the holes; a pad 20 x 18 mm, 3 mm high, in
+// job's stock): the inclined block and cap without the holes; a pad 18 x 16 mm, 3 mm high, in
 // place of the boss; a round stub R6, 5 mm high, in place of the drafted boss.
 base::Status writeFiveAxisExampleBlank(const std::string& stepPath);
 

@@ -120,14 +120,13 @@ TopoDS_Shape buildFiveAxisPart()
 }
 
 // The blank as cast: the inclined block and cap without the holes (they are drilled); where the
-// boss stands, a pad 3 mm high (the boss' height) reaching 5 mm round it, which the contour's two
-// steps of a D6 cutter take off entirely; where the drafted boss stands, a round stub R6 and
-// 5 mm high, 0.5 mm over the cone's foot and 1.84 mm over its top, which the swarf pass's flank
-// takes off.
+// boss stands, a pad 3 mm high (the boss' height) reaching 4 mm round it (5.7 mm at its corners), which the contour's
+// two steps of a D6 cutter take off entirely; where the drafted boss stands, a round stub R6 and 5 mm high, 0.5 mm over
+// the cone's foot and 1.84 mm over its top, which the swarf pass's flank takes off.
 TopoDS_Shape buildFiveAxisBlank()
 {
     TopoDS_Shape blank = buildInclinedBlock();
-    blank = fuse(blank, padOnMinusXFace(20, 18, 3), "the boss' pad");
+    blank = fuse(blank, padOnMinusXFace(18, 16, 3), "the boss' pad");
     return fuse(blank, BRepPrimAPI_MakeCylinder(coneAxis(), 6, 6).Shape(), "the drafted boss' stub");
 }
 

@@ -188,10 +188,17 @@ void TriDexel::cutPose(int a, const Vec3& tip, const Vec3& toolAxis, const base:
                         if (dlo >= dhi)
                             continue;
                         const double x = std::clamp((double(d.lo) + d.hi) / 2, dlo, dhi);
-                        const double depth = std::min(x - d.lo, d.hi - x);
+                        double depth = std::min(x - d.lo, d.hi - x);
+                        if (depth <= m_tolerance || depth <= seen.gouge)
+                            continue;
+                        // Along one ray, a point just under a surface the ray runs nearly along
+                        // (a drill's tip on a tilted floor) reads as deep as the part is long:
+                        // the depth is also at most what the other grids' rays through it say.
+                        const Vec3 at = origin + dir * (x - comp(m_box.min, a));
+                        depth = std::min({depth, depthInside((a + 1) % 3, at), depthInside((a + 2) % 3, at)});
                         if (depth > m_tolerance && depth > seen.gouge) {
                             seen.gouge = depth;
-                            seen.gougeAt = origin + dir * (x - comp(m_box.min, a));
+                            seen.gougeAt = at;
                         }
                     }
             }
@@ -203,6 +210,17 @@ void TriDexel::cutPose(int a, const Vec3& tip, const Vec3& toolAxis, const base:
             if (std::hypot(rg.uAt(i) - comp(tip, u), rg.vAt(j) - comp(tip, v)) <= axisBand)
                 seen.onAxis = true;
         }
+}
+
+double TriDexel::depthInside(int axis, const Vec3& p) const
+{
+    if (m_grids[axis].design.empty())
+        return std::numeric_limits<double>::infinity();
+    const RayGrid& rg = m_grids[axis].rays;
+    const int u = (axis + 1) % 3, v = (axis + 2) % 3;
+    const int i = std::clamp(int(std::floor((comp(p, u) - rg.u0) / rg.du)), 0, rg.nu - 1);
+    const int j = std::clamp(int(std::floor((comp(p, v) - rg.v0) / rg.dv)), 0, rg.nv - 1);
+    return std::max(0.0, -alongRay(axis, i, j, comp(p, axis)));
 }
 
 // Shank and holder against the Z rays (at most 64 x 64 of them over their box): the length of

@@ -52,6 +52,8 @@ private:
     // Signed distance along ray (i, j) of grid `axis` from coordinate t to the design's surface
     // (negative inside it); +infinity where the ray meets no design.
     double alongRay(int axis, int i, int j, double t) const;
+    // How deep `p` is inside the design along the nearest ray of grid `axis` (0 outside it).
+    double depthInside(int axis, const Vec3& p) const;
     double vertexDeviation(const Vec3& p) const;
 
     base::Box3 m_box;

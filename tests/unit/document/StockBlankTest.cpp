@@ -5,6 +5,7 @@
 #include "base/AtomicFile.h"
 #include "document/JobFile.h"
 #include "document/JobPipeline.h"
+#include "document/Simulate.h"
 #include "occ/ExamplePart.h"
 #include "occ/Model.h"
 #include "sim/HeightField.h"
@@ -179,4 +180,33 @@ TEST(StockBlank, CylinderIsSimulatedAsACylinder)
     // A box stays a box.
     job.stock.shape = Stock::Shape::Box;
     EXPECT_TRUE(document::jobStockSpec(job, occ::Model(), {}, 0.2).box);
+}
+
+// The five-axis example's drilling from its blank: a D6 drill in the model's D6 holes, its tip on
+// their flat floors, on faces tilted 30 degrees. It touches the part and goes no deeper, so no
+// gouge (the tri-dexel rays that run along a tilted floor once read the part's length as depth).
+TEST(StockBlank, TheFiveAxisExamplesDrillingFromItsBlankGougesNothing)
+{
+    auto job = document::loadJob(kExamples + "example-five-axis.camwb");
+    ASSERT_TRUE(job.ok()) << job.error().toString();
+    for (std::size_t i = 1; i < job->operations.size(); ++i)
+        job->operations[i].enabled = false;  // the four holes only
+    auto model = document::loadJobModel(job.value());
+    ASSERT_TRUE(model.ok()) << model.error().toString();
+    auto blank = document::loadStockBlank(job.value(), "example-five-axis.camwb");
+    ASSERT_TRUE(blank.ok()) << blank.error().toString();
+    auto program = document::computeProgram(job.value(), model.value());
+    ASSERT_TRUE(program.ok()) << program.error().toString();
+    auto machine = document::jobMachine(job.value());
+    ASSERT_TRUE(machine.ok() && machine.value()) << "the example names its machine";
+    sim::StockSpec spec = document::jobStockSpec(job.value(), model.value(), blank.value(), 0.2);
+    spec.design = document::designMesh(model.value());
+    sim::SimulationSetup setup;
+    setup.machine = &*machine.value();
+    setup.stockSpec = &spec;
+    const sim::SimulationResult result = sim::simulate(program.value(), setup);
+    ASSERT_TRUE(result.cut && result.tilts);
+    EXPECT_GT(result.removedMm3, 4 * 3.14159 * 9 * 5);  // four holes D6, at least 5 mm at full diameter
+    for (const sim::Check& check : result.checks)
+        EXPECT_NE(check.kind, sim::CheckKind::Gouge) << check.valueMm << " mm at record " << check.record;
 }

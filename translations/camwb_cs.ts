@@ -1458,6 +1458,14 @@
         <source>the grooves&apos; shaft (revolved)</source>
         <translation>hřídel zápichů (rotační)</translation>
     </message>
+    <message>
+        <source>cylinder Ø%1 × %2 mm</source>
+        <translation>válec Ø%1 × %2 mm</translation>
+    </message>
+    <message>
+        <source>blank %1 in a %2</source>
+        <translation>tvarový polotovar %1, %2</translation>
+    </message>
 </context>
 <context>
     <name>camwb::gui::MainWindow</name>

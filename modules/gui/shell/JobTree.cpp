@@ -182,10 +182,16 @@ void JobTree::addSetupItems(QTreeWidgetItem* jobItem)
     const base::Vec3 size = job.stock.max - job.stock.min;
     // A lathe job's stock is the shaft its grooves are cut in, made from their parameters.
     const bool lathe = !job.operations.empty() && !document::jobNeedsModel(job);
-    auto* stock = row(jobItem, ItemKind::Stock, tr("Stock"),
-                      lathe             ? tr("the grooves' shaft (revolved)")
-                      : job.stock.box() ? tr("box %1 × %2 × %3 mm").arg(mm(size.x), mm(size.y), mm(size.z))
-                                        : tr("(none)"));
+    using Shape = document::Stock::Shape;
+    const QString boxText = tr("box %1 × %2 × %3 mm").arg(mm(size.x), mm(size.y), mm(size.z));
+    auto* stock =
+        row(jobItem, ItemKind::Stock, tr("Stock"),
+            lathe                                ? tr("the grooves' shaft (revolved)")
+            : !job.stock.box()                   ? tr("(none)")
+            : job.stock.shape == Shape::Cylinder ? tr("cylinder Ø%1 × %2 mm").arg(mm(size.x), mm(size.z))
+            : job.stock.shape == Shape::Blank
+                ? tr("blank %1 in a %2").arg(QFileInfo(QString::fromStdString(job.stock.blankPath)).fileName(), boxText)
+                : boxText);
     if (!lathe) {
         new QTreeWidgetItem(
             stock, {tr("Min"),

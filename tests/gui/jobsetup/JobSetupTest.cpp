@@ -8,6 +8,7 @@
 #include "Shots.h"
 #include "document/JobFile.h"
 #include "gui/actions/ActionRegistry.h"
+#include "gui/shell/JobTree.h"
 #include "gui/shell/MainWindow.h"
 #include "gui/shell/Workbench.h"
 #include "gui/tasks/JobSetupPanel.h"
@@ -410,6 +411,13 @@ private slots:
         QVERIFY(window.workbench().stockBlank()->triangleCount() > 100);
         QVERIFY(window.view()->hasStockActor());
         QCOMPARE(window.workbench().document().undoStack().count(), std::size_t(0));  // the stored box is the blank's
+        // The job tree names the blank.
+        const QList<QTreeWidgetItem*> stockRows =
+            window.jobTree()->findItems(QStringLiteral("Stock"), Qt::MatchExactly | Qt::MatchRecursive, 0);
+        QCOMPARE(stockRows.size(), 1);
+        QVERIFY2(
+            stockRows.front()->text(1).startsWith(QStringLiteral("blank example-five-axis-blank.step in a box 80")),
+            qPrintable(stockRows.front()->text(1)));
         if (withGl()) {
             window.view()->setViewPreset(camwb::gui::View3D::Preset::Isometric);
             QTest::qWait(300);

@@ -52,6 +52,13 @@ TriDexel::TriDexel(const base::Box3& box, double resolutionMm) : m_box(box)
         m_cells[k] = std::max(2, int(std::ceil(w / res - 1e-9)));
         m_cell[k] = w / m_cells[k];
     }
+    // Spans end on floats: cutting again along a surface already cut finds its end a rounding
+    // (half a float's step at the stock's largest coordinate, 1.5e-6 mm at 25 mm) inside, which
+    // summed over the rays of a tool's wall read as a rapid "removing" 0.0005 mm³ when it retracts
+    // along the path it just cut. Less than a few such steps is no material.
+    const double largest = std::max({std::abs(box.min.x), std::abs(box.min.y), std::abs(box.min.z), std::abs(box.max.x),
+                                     std::abs(box.max.y), std::abs(box.max.z), 1.0});
+    m_spanSlack = 4 * largest * std::numeric_limits<float>::epsilon();
     for (int a = 0; a < 3; ++a) {
         const int u = (a + 1) % 3, v = (a + 2) % 3;
         Grid& g = m_grids[a];
@@ -173,7 +180,7 @@ void TriDexel::cutPose(int a, const Vec3& tip, const Vec3& toolAxis, const base:
             kept.reserve(spans.size() + 1);
             for (const Span& s : spans) {
                 const double r0 = std::max<double>(s.lo, c0), r1 = std::min<double>(s.hi, c1);
-                if (r1 - r0 <= 1e-7) {
+                if (r1 - r0 <= m_spanSlack) {
                     kept.push_back(s);
                     continue;
                 }

@@ -61,6 +61,7 @@ private:
     int m_cells[3] = {2, 2, 2};
     Grid m_grids[3];
     double m_tolerance = 0;
+    double m_spanSlack = 1e-7;  // shorter removals are float rounding, not material (constructor)
     bool m_hasDesign = false;
 };
 

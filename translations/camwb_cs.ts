@@ -281,6 +281,10 @@
         <source>Nothing to simulate: the NC program makes no records.</source>
         <translation>Není co simulovat: NC program nevytváří žádné záznamy.</translation>
     </message>
+    <message>
+        <source>The blank stock&apos;s file is not read (the report says why): nothing to cut yet.</source>
+        <translation>Soubor tvarového polotovaru není načten (důvod je ve zprávě): zatím není co obrábět.</translation>
+    </message>
 </context>
 <context>
     <name>SimulatorActions</name>
@@ -1233,6 +1237,54 @@
         <translation>Min</translation>
     </message>
     <message>
+        <source>On the model vertex picked in the view</source>
+        <translation>Ve vrcholu modelu vybraném v pohledu</translation>
+    </message>
+    <message>
+        <source>Origin on the vertex at (%1, %2, %3) of the model</source>
+        <translation>Počátek ve vrcholu modelu (%1, %2, %3)</translation>
+    </message>
+    <message>
+        <source>Click the model near a vertex in the 3D view.</source>
+        <translation>Klepněte ve 3D pohledu na model poblíž vrcholu.</translation>
+    </message>
+    <message>
+        <source>Blank from file…</source>
+        <translation>Tvarový polotovar ze souboru…</translation>
+    </message>
+    <message>
+        <source>A cast or forged blank: a STEP, IGES, BREP or STL file in the model&apos;s coordinates</source>
+        <translation>Odlitek nebo výkovek: soubor STEP, IGES, BREP nebo STL v souřadnicích modelu</translation>
+    </message>
+    <message>
+        <source>Choose…</source>
+        <translation>Vybrat…</translation>
+    </message>
+    <message>
+        <source>Choose the blank&apos;s file</source>
+        <translation>Vyberte soubor tvarového polotovaru</translation>
+    </message>
+    <message>
+        <source>Blank</source>
+        <translation>Tvarový polotovar</translation>
+    </message>
+    <message>
+        <source>Blank from file</source>
+        <translation>Tvarový polotovar ze souboru</translation>
+    </message>
+    <message>
+        <source>Models (*.step *.stp *.iges *.igs *.brep *.brp *.stl)</source>
+        <translation>Modely (*.step *.stp *.iges *.igs *.brep *.brp *.stl)</translation>
+    </message>
+    <message>
+        <source>The blank cannot be used: %1</source>
+        <translation>Tvarový polotovar nelze použít: %1</translation>
+    </message>
+    <message>
+        <source>Blank in a box of %1 × %2 × %3 mm, from (%4, %5, %6)</source>
+        <translation>Tvarový polotovar v kvádru %1 × %2 × %3 mm, od (%4, %5, %6)</translation>
+    </message>
+    <message>
         <source>Max</source>
         <translation>Max</translation>
     </message>
@@ -1425,6 +1477,14 @@
     <message>
         <source>depth %1, bottom width %2</source>
         <translation>hloubka %1, šířka dna %2</translation>
+    </message>
+    <message>
+        <source>blank %1 in a %2</source>
+        <translation>tvarový polotovar %1, %2</translation>
+    </message>
+    <message>
+        <source>cylinder Ø%1 × %2 %3</source>
+        <translation>válec Ø%1 × %2 %3</translation>
     </message>
     <message>
         <source>T%1 %2, Ø%3</source>
@@ -3717,6 +3777,22 @@ Ponechat operace bez nich (zůstanou označené, dokud v jejich panelech úkolu 
     <message>
         <source>Compute feeds and speeds</source>
         <translation>Vypočítat řezné podmínky</translation>
+    </message>
+    <message>
+        <source>%1 × %2 × %3 mm from (%4, %5, %6)</source>
+        <translation>%1 × %2 × %3 mm od (%4, %5, %6)</translation>
+    </message>
+    <message>
+        <source>The stock stored in the job (%1) is not what its %2 gives now (%3): the file changed since the job was saved. The job now uses the new stock.</source>
+        <translation>Polotovar uložený v úloze (%1) neodpovídá tomu, co nyní dává %2 (%3): soubor se od uložení úlohy změnil. Úloha nyní používá nový polotovar.</translation>
+    </message>
+    <message>
+        <source>blank file</source>
+        <translation>soubor tvarového polotovaru</translation>
+    </message>
+    <message>
+        <source>model</source>
+        <translation>model</translation>
     </message>
 </context>
 <context>

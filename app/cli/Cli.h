@@ -7,6 +7,7 @@
 #include "document/JobPipeline.h"
 #include "kinematics/Machine.h"
 #include "post/PostProcessor.h"
+#include "sim/TriangleMesh.h"
 
 #include "base/Vec.h"
 
@@ -68,6 +69,7 @@ struct ComputedJob {
     toolpath::Toolpath program;
     document::ProgramReport report;   // warnings (their file: the job's) and motion counts, per operation
     std::optional<occ::Model> model;  // the model it was computed on
+    sim::TriangleMesh stockBlank;     // a blank stock's solid (document::loadStockBlank); else empty
 };
 // Loads the job and its model (none for a lathe job), applies `sets` (--set, for this run only:
 // the file is not changed) and computes the program; on an error, reports it (fail()) and

@@ -4,6 +4,7 @@
 #include "base/Result.h"
 #include "document/JobFile.h"
 #include "document/OperationParameters.h"
+#include "document/StockBlank.h"
 #include "post/PostInfo.h"
 #include "toolpath/ClText.h"
 
@@ -260,6 +261,12 @@ std::optional<ComputedJob> computeJobFile(const std::string& path, const std::ve
     }
     document::resolveJobStock(job.value(), model.value());  // as the Workbench does after a load
     ComputedJob computed;
+    auto blank = document::loadStockBlank(job.value(), path);
+    if (!blank) {
+        fail(blank.error().toString());
+        return std::nullopt;
+    }
+    document::resolveStockBlank(job->stock, blank.value());
     auto program = document::computeProgram(job.value(), model.value(), {}, &computed.report);
     if (!program) {
         fail(path + ": " + program.error().message);
@@ -270,6 +277,7 @@ std::optional<ComputedJob> computeJobFile(const std::string& path, const std::ve
     computed.job = std::move(job).value();
     computed.program = std::move(program).value();
     computed.model = std::move(model).value();
+    computed.stockBlank = std::move(blank).value();
     return computed;
 }
 

@@ -9,6 +9,7 @@
 #include "base/NumberFormat.h"
 #include "document/NcTrace.h"
 #include "document/Simulate.h"
+#include "document/StockBlank.h"
 #include "document/TurningSetup.h"
 #include "nc/ToolTable.h"
 #include "occ/Model.h"
@@ -174,7 +175,10 @@ std::optional<Input> loadJobInput(const SimOptions& options)
     // A lathe job has no model: its stock and contour are the turning setup's (turningInput).
     if (computed->model && !computed->model->empty()) {
         input.design = document::designMesh(*computed->model);
-        input.stockBox = document::jobStockBox(computed->job, *computed->model);
+        // The job's stock as the solid it is: a box, a cylinder, or the blank's mesh.
+        sim::StockSpec stock = document::jobStockSpec(computed->job, *computed->model, computed->stockBlank, 0);
+        input.stockBox = stock.box;
+        input.stockMesh = std::move(stock.blank);
     }
     if (options.machineId.empty()) {
         auto machine = document::jobMachine(computed->job);
@@ -233,8 +237,8 @@ bool loadModelAndStock(const SimOptions& options, Input& input)
         input.design = document::designMesh(model.value());
     }
     if (options.stock.empty()) {
-        if (!input.stockBox && !input.design.empty())
-            input.stockBox = input.design.bounds();
+        if (!input.stockBox && input.stockMesh.empty() && !input.design.empty())
+            input.stockBox = input.design.bounds();  // neither a job's stock nor --stock: the model's box
         return true;
     }
     if (options.stock.find(',') != std::string::npos) {

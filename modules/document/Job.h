@@ -34,12 +34,16 @@ struct StockFromModel {
 // resolved bounding box every consumer uses; a cylinder stands along Z inside it (diameter = its
 // x size = its y size). With `fromModel` set, min/max are recomputed from the model's bounds
 // whenever the model is (re)loaded (resolve), so the GUI and camwb-cli post the same stock.
+// A blank (a cast or forged part, Shape::Blank) is the solid in `blankPath`, a mesh or STEP file
+// in the model file's coordinates (moved by -origin like the model); min/max are its bounds,
+// re-resolved whenever it is loaded (document/StockBlank.h). It has no `fromModel` rule.
 struct Stock {
-    enum class Shape { Box, Cylinder };
+    enum class Shape { Box, Cylinder, Blank };
     base::Vec3 min;
     base::Vec3 max;
     Shape shape = Shape::Box;
     std::optional<StockFromModel> fromModel;
+    std::string blankPath;  // Shape::Blank: as the model path (absolute in memory, relative in the file)
 
     bool operator==(const Stock&) const = default;
 

@@ -17,16 +17,26 @@ namespace {
 
 using namespace base::jsonread;
 
-// Version 6: the stock's shape and "from model" rule (besides its resolved min/max).
+// Version 6: the stock's shape and "from model" rule (besides its resolved min/max); version 9
+// the blank ("shape": "blank" and the "blank" file, relative to the job file).
 void readStockRule(const json& stock, Stock& out, const std::string& where)
 {
     if (optionalMember(stock, "shape", where)) {
         const std::string shape = text(stock, "shape", where);
-        if (shape != "box" && shape != "cylinder")
-            throw JsonFieldError{where + ".shape: expected \"box\" or \"cylinder\""};
-        out.shape = shape == "cylinder" ? Stock::Shape::Cylinder : Stock::Shape::Box;
+        if (shape != "box" && shape != "cylinder" && shape != "blank")
+            throw JsonFieldError{where + ".shape: expected \"box\", \"cylinder\" or \"blank\""};
+        out.shape = shape == "cylinder" ? Stock::Shape::Cylinder
+                    : shape == "blank"  ? Stock::Shape::Blank
+                                        : Stock::Shape::Box;
+    }
+    if (out.shape == Stock::Shape::Blank) {
+        out.blankPath = text(stock, "blank", where);
+        if (out.blankPath.empty())
+            throw JsonFieldError{where + ".blank: a blank stock needs its file"};
     }
     if (const json* rule = optionalMember(stock, "fromModel", where)) {
+        if (out.shape == Stock::Shape::Blank)
+            throw JsonFieldError{where + ".fromModel: a blank's size is its file's, not the model's"};
         StockFromModel fromModel;
         fromModel.below = vec3(*rule, "below", where + ".fromModel");
         fromModel.above = vec3(*rule, "above", where + ".fromModel");
@@ -112,6 +122,10 @@ void writeStockRule(const Stock& stock, nlohmann::ordered_json& out)
 {
     if (stock.shape == Stock::Shape::Cylinder)
         out["shape"] = "cylinder";
+    if (stock.shape == Stock::Shape::Blank) {
+        out["shape"] = "blank";
+        out["blank"] = stock.blankPath;
+    }
     if (stock.fromModel)
         out["fromModel"] = {{"below", {stock.fromModel->below.x, stock.fromModel->below.y, stock.fromModel->below.z}},
                             {"above", {stock.fromModel->above.x, stock.fromModel->above.y, stock.fromModel->above.z}}};
@@ -151,8 +165,10 @@ base::Result<Job> loadJob(const std::string& path)
     if (!content)
         return content.error();
     auto job = parseJob(content.value(), path);
-    if (job)
+    if (job) {
         job->modelPath = absoluteModelPath(job->modelPath, path);
+        job->stock.blankPath = absoluteModelPath(job->stock.blankPath, path);
+    }
     return job;
 }
 
@@ -182,7 +198,10 @@ std::string serializeJob(const Job& job)
     // Version 8: a turning operation (groove); such a job may have no model.
     const bool turning = std::any_of(job.operations.begin(), job.operations.end(),
                                      [](const Operation& op) { return isTurningKind(op.kind()); });
-    root["version"] = turning                                           ? 8
+    // Version 9: a blank stock (an older reader would take its box).
+    const bool blank = job.stock.shape == Stock::Shape::Blank;
+    root["version"] = blank                                             ? 9
+                      : turning                                         ? 8
                       : surface                                         ? 7
                       : disabled || cuttingData || usesSetupFields(job) ? 6
                       : swarf                                           ? 5
@@ -216,6 +235,8 @@ base::Status saveJob(const Job& job, const std::string& path)
     Job onDisk = job;
     if (!onDisk.modelPath.empty())
         onDisk.modelPath = relativeModelPath(onDisk.modelPath, path);
+    if (!onDisk.stock.blankPath.empty())
+        onDisk.stock.blankPath = relativeModelPath(onDisk.stock.blankPath, path);
     return base::writeFileAtomically(path, serializeJob(onDisk));
 }
 

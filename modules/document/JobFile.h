@@ -16,13 +16,15 @@ namespace camwb::document {
 // tool's "cuttingData" (per material, from a tool library), the stock's "shape" and "fromModel"
 // rule, the work "origin" and the default NC "output" (name, folder); version 7 the 3D operations
 // ("pocket3d", "waterline", "parallel"); version 8 the turning operation "groove" (its parameters
-// also read by the thesis' R names) and a job without "model". Versions 1-7 are still read (a
-// "profile" becomes an outside contour); writing gives 8 when the job has a groove operation,
+// also read by the thesis' R names) and a job without "model"; version 9 the stock "shape":
+// "blank" with its "blank" file (relative like the model). Versions 1-8 are still read (a
+// "profile" becomes an outside contour); writing gives 9 when the stock is a blank, else 8 when
+// the job has a groove operation,
 // else 7 when the job has a 3D operation, else 6 when one of version
 // 6's fields is used, else 5 when the job has a swarf operation or an operation's own post properties, else 4
 // when an operation has a working plane, else 3, so that a CAM Workbench that knows neither
 // refuses a job it would compute otherwise.
-inline constexpr int kJobFormatVersion = 8;
+inline constexpr int kJobFormatVersion = 9;
 
 // In memory a job's model path is absolute; in the file it is relative to the job file's folder.
 // loadJob resolves it, saveJob makes it relative again, so jobs can be moved with their models.

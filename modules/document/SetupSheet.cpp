@@ -4,6 +4,7 @@
 #include "document/JobPipeline.h"
 #include "document/OperationGeometry.h"
 #include "document/Simulate.h"
+#include "document/StockBlank.h"
 #include "document/TurningSetup.h"
 #include "occ/Model.h"
 #include "sim/MotionPlan.h"
@@ -195,9 +196,11 @@ base::Result<SetupSheet> collectSetupSheet(const Job& job, const std::string& jo
         sheet.verification.maxGougeMm = turned.maxGougeMm;
         sheet.verification.turning = true;
     } else if (options.simulate) {
-        sim::StockSpec spec;
-        spec.box = stockBox;
-        spec.resolutionMm = defaultStockResolution(stockBox);
+        // The stock as the solid it is (a cylinder, a blank's mesh), not only its box.
+        auto blank = loadStockBlank(job, jobPath);
+        if (!blank)
+            return blank.error();
+        sim::StockSpec spec = jobStockSpec(job, model, blank.value(), 0);
         spec.design = designMesh(model);
         sim::SimulationSetup setup;
         setup.machine = machine ? &*machine : nullptr;

@@ -22,6 +22,10 @@ base::Status writeExamplePart(const std::string& stepPath);
 // deep, square to each inclined face at its middle (Z 27.5; on the -X face 12 mm towards -Y) and a
 // boss 10 x 8 x 3 mm on the -X face 12 mm towards +Y.
 base::Status writeFiveAxisExamplePart(const std::string& stepPath);
+// The five-axis part's cast blank (resources/examples/example-five-axis-blank.step, the example
+// job's stock): the inclined block and cap without the holes; a pad 18 x 16 mm, 3 mm high, in
+// place of the boss; a round stub R6, 5 mm high, in place of the drafted boss.
+base::Status writeFiveAxisExampleBlank(const std::string& stepPath);
 
 // The three-axis mould teaching part (the 3D pocket and finishing example): a 100 x 80 x 30 mm
 // block (corner at the origin, top at Z 30) with a cavity whose opening at the top is 80 x 60 mm

@@ -1,6 +1,6 @@
 // writeFiveAxisExamplePart: the five-axis teaching part (inclined faces, a spherical cap, holes
 // square to the inclined faces, a boss on one of them, a drafted round boss on another), built with OCCT primitives and
-// booleans.
+// booleans; writeFiveAxisExampleBlank: the cast blank its job's operations start from.
 #include "occ/ExamplePart.h"
 
 #include "occ/detail/PartBuilders.h"
@@ -43,7 +43,8 @@ TopoDS_Shape fuse(const TopoDS_Shape& a, const TopoDS_Shape& b, const char* what
     return result.Shape();
 }
 
-TopoDS_Shape buildFiveAxisPart()
+// The inclined block with the cap: what part and blank have in common.
+TopoDS_Shape buildInclinedBlock()
 {
     using parts::cut;
     TopoDS_Shape part = BRepPrimAPI_MakeBox(gp_Pnt(-40, -40, 0), gp_Pnt(40, 40, 35)).Shape();
@@ -64,7 +65,33 @@ TopoDS_Shape buildFiveAxisPart()
     BRepAlgoAPI_Common cap(sphere, above);
     if (!cap.IsDone())
         throw Standard_Failure("making the spherical cap failed");
-    part = fuse(part, cap.Shape(), "the spherical cap");
+    return fuse(part, cap.Shape(), "the spherical cap");
+}
+
+// A box on the -X face, 12 mm to the side of its centre: `width` along the face's horizontal
+// edges, `length` up the slope, from 1 mm under the face to `height` above it.
+TopoDS_Shape padOnMinusXFace(double width, double length, double height)
+{
+    const gp_Dir n = sideNormal(2);
+    const gp_Dir across(0, -1, 0);  // along the face's horizontal edges
+    const gp_Ax2 frame(sideCentre(2, -12), n, across);
+    const gp_Vec shift =
+        gp_Vec(frame.XDirection()) * (-width / 2) + gp_Vec(frame.YDirection()) * (-length / 2) - gp_Vec(n) * 1;
+    const gp_Ax2 corner(sideCentre(2, -12).Translated(shift), n, across);
+    return BRepPrimAPI_MakeBox(corner, width, length, height + 1).Shape();
+}
+
+// The drafted boss' place on the +X face, 14 mm to the side of its hole, 1 mm under the face.
+gp_Ax2 coneAxis()
+{
+    const gp_Dir n = sideNormal(0);
+    return gp_Ax2(sideCentre(0, 14).Translated(gp_Vec(n) * -1), n);
+}
+
+TopoDS_Shape buildFiveAxisPart()
+{
+    using parts::cut;
+    TopoDS_Shape part = buildInclinedBlock();
     // A boss 10 x 8 x 3 mm on the -X face, 12 mm to the side of its centre (the contour's feature).
     {
         const gp_Dir n = sideNormal(2);
@@ -86,12 +113,21 @@ TopoDS_Shape buildFiveAxisPart()
     // faces of the features above keep their numbers.
     {
         const double draft = std::tan(kDraftDeg * kPi / 180);
-        const gp_Dir n = sideNormal(0);
-        const gp_Pnt base = sideCentre(0, 14).Translated(gp_Vec(n) * -1);
-        const TopoDS_Shape cone = BRepPrimAPI_MakeCone(gp_Ax2(base, n), 5.5 + draft, 5.5 - 5 * draft, 6).Shape();
+        const TopoDS_Shape cone = BRepPrimAPI_MakeCone(coneAxis(), 5.5 + draft, 5.5 - 5 * draft, 6).Shape();
         part = fuse(part, cone, "the drafted boss");
     }
     return part;
+}
+
+// The blank as cast: the inclined block and cap without the holes (they are drilled); where the
+// boss stands, a pad 3 mm high (the boss' height) reaching 4 mm round it (5.7 mm at its corners), which the contour's
+// two steps of a D6 cutter take off entirely; where the drafted boss stands, a round stub R6 and 5 mm high, 0.5 mm over
+// the cone's foot and 1.84 mm over its top, which the swarf pass's flank takes off.
+TopoDS_Shape buildFiveAxisBlank()
+{
+    TopoDS_Shape blank = buildInclinedBlock();
+    blank = fuse(blank, padOnMinusXFace(18, 16, 3), "the boss' pad");
+    return fuse(blank, BRepPrimAPI_MakeCylinder(coneAxis(), 6, 6).Shape(), "the drafted boss' stub");
 }
 
 }  // namespace
@@ -99,6 +135,11 @@ TopoDS_Shape buildFiveAxisPart()
 base::Status writeFiveAxisExamplePart(const std::string& stepPath)
 {
     return detail::writeStep(buildFiveAxisPart, "example-five-axis", stepPath);
+}
+
+base::Status writeFiveAxisExampleBlank(const std::string& stepPath)
+{
+    return detail::writeStep(buildFiveAxisBlank, "example-five-axis-blank", stepPath);
 }
 
 }  // namespace camwb::occ

@@ -52,6 +52,13 @@ TriDexel::TriDexel(const base::Box3& box, double resolutionMm) : m_box(box)
         m_cells[k] = std::max(2, int(std::ceil(w / res - 1e-9)));
         m_cell[k] = w / m_cells[k];
     }
+    // Spans end on floats: cutting again along a surface already cut finds its end a rounding
+    // (half a float's step at the stock's largest coordinate, 1.5e-6 mm at 25 mm) inside, which
+    // summed over the rays of a tool's wall read as a rapid "removing" 0.0005 mm³ when it retracts
+    // along the path it just cut. Less than a few such steps is no material.
+    const double largest = std::max({std::abs(box.min.x), std::abs(box.min.y), std::abs(box.min.z), std::abs(box.max.x),
+                                     std::abs(box.max.y), std::abs(box.max.z), 1.0});
+    m_spanSlack = 4 * largest * std::numeric_limits<float>::epsilon();
     for (int a = 0; a < 3; ++a) {
         const int u = (a + 1) % 3, v = (a + 2) % 3;
         Grid& g = m_grids[a];
@@ -173,7 +180,7 @@ void TriDexel::cutPose(int a, const Vec3& tip, const Vec3& toolAxis, const base:
             kept.reserve(spans.size() + 1);
             for (const Span& s : spans) {
                 const double r0 = std::max<double>(s.lo, c0), r1 = std::min<double>(s.hi, c1);
-                if (r1 - r0 <= 1e-7) {
+                if (r1 - r0 <= m_spanSlack) {
                     kept.push_back(s);
                     continue;
                 }
@@ -188,10 +195,17 @@ void TriDexel::cutPose(int a, const Vec3& tip, const Vec3& toolAxis, const base:
                         if (dlo >= dhi)
                             continue;
                         const double x = std::clamp((double(d.lo) + d.hi) / 2, dlo, dhi);
-                        const double depth = std::min(x - d.lo, d.hi - x);
+                        double depth = std::min(x - d.lo, d.hi - x);
+                        if (depth <= m_tolerance || depth <= seen.gouge)
+                            continue;
+                        // Along one ray, a point just under a surface the ray runs nearly along
+                        // (a drill's tip on a tilted floor) reads as deep as the part is long:
+                        // the depth is also at most what the other grids' rays through it say.
+                        const Vec3 at = origin + dir * (x - comp(m_box.min, a));
+                        depth = std::min({depth, depthInside((a + 1) % 3, at), depthInside((a + 2) % 3, at)});
                         if (depth > m_tolerance && depth > seen.gouge) {
                             seen.gouge = depth;
-                            seen.gougeAt = origin + dir * (x - comp(m_box.min, a));
+                            seen.gougeAt = at;
                         }
                     }
             }
@@ -203,6 +217,17 @@ void TriDexel::cutPose(int a, const Vec3& tip, const Vec3& toolAxis, const base:
             if (std::hypot(rg.uAt(i) - comp(tip, u), rg.vAt(j) - comp(tip, v)) <= axisBand)
                 seen.onAxis = true;
         }
+}
+
+double TriDexel::depthInside(int axis, const Vec3& p) const
+{
+    if (m_grids[axis].design.empty())
+        return std::numeric_limits<double>::infinity();
+    const RayGrid& rg = m_grids[axis].rays;
+    const int u = (axis + 1) % 3, v = (axis + 2) % 3;
+    const int i = std::clamp(int(std::floor((comp(p, u) - rg.u0) / rg.du)), 0, rg.nu - 1);
+    const int j = std::clamp(int(std::floor((comp(p, v) - rg.v0) / rg.dv)), 0, rg.nv - 1);
+    return std::max(0.0, -alongRay(axis, i, j, comp(p, axis)));
 }
 
 // Shank and holder against the Z rays (at most 64 x 64 of them over their box): the length of

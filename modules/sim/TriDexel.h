@@ -52,6 +52,8 @@ private:
     // Signed distance along ray (i, j) of grid `axis` from coordinate t to the design's surface
     // (negative inside it); +infinity where the ray meets no design.
     double alongRay(int axis, int i, int j, double t) const;
+    // How deep `p` is inside the design along the nearest ray of grid `axis` (0 outside it).
+    double depthInside(int axis, const Vec3& p) const;
     double vertexDeviation(const Vec3& p) const;
 
     base::Box3 m_box;
@@ -59,6 +61,7 @@ private:
     int m_cells[3] = {2, 2, 2};
     Grid m_grids[3];
     double m_tolerance = 0;
+    double m_spanSlack = 1e-7;  // shorter removals are float rounding, not material (constructor)
     bool m_hasDesign = false;
 };
 

@@ -28,6 +28,36 @@ double TriangleMesh::volumeMm3() const
     return sixTimes / 6;
 }
 
+TriangleMesh cylinderMesh(const base::Box3& box, double chordToleranceMm)
+{
+    TriangleMesh mesh;
+    const double r = (box.max.x - box.min.x) / 2;
+    if (!(r > 0) || !(box.max.z > box.min.z))
+        return mesh;
+    const double cx = (box.min.x + box.max.x) / 2, cy = (box.min.y + box.max.y) / 2;
+    // The sagitta of a side is r (1 - cos(pi / n)).
+    const double half = std::acos(std::clamp(1 - chordToleranceMm / r, -1.0, 1.0));
+    const int sides = std::clamp(static_cast<int>(std::ceil(3.14159265358979323846 / std::max(half, 1e-6))), 16, 4096);
+    auto add = [&mesh](double x, double y, double z) {
+        mesh.positions.insert(mesh.positions.end(), {float(x), float(y), float(z)});
+        return static_cast<std::uint32_t>(mesh.vertexCount() - 1);
+    };
+    const std::uint32_t bottomCentre = add(cx, cy, box.min.z), topCentre = add(cx, cy, box.max.z);
+    const std::uint32_t first = static_cast<std::uint32_t>(mesh.vertexCount());
+    for (int i = 0; i < sides; ++i) {
+        const double a = 2 * 3.14159265358979323846 * i / sides;
+        add(cx + r * std::cos(a), cy + r * std::sin(a), box.min.z);
+        add(cx + r * std::cos(a), cy + r * std::sin(a), box.max.z);
+    }
+    for (int i = 0; i < sides; ++i) {
+        const std::uint32_t b0 = first + 2 * i, t0 = b0 + 1;
+        const std::uint32_t b1 = first + 2 * ((i + 1) % sides), t1 = b1 + 1;
+        // Counter-clockwise seen from outside.
+        mesh.triangles.insert(mesh.triangles.end(), {b0, b1, t1, b0, t1, t0, bottomCentre, b1, b0, topCentre, t0, t1});
+    }
+    return mesh;
+}
+
 // Binary STL: an 80-byte header, the count, then 50 bytes a triangle (normal, three corners as
 // little-endian floats, two attribute bytes). The buffer is sized once and filled in place: a
 // cut stock at 0.1 mm has over a million triangles.

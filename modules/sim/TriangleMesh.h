@@ -29,6 +29,11 @@ struct TriangleMesh {
 // triangles of neighbouring faces share them and a section can follow the surface across edges.
 TriangleMesh weldVertices(const TriangleMesh& mesh, double toleranceMm = 1e-5);
 
+// A closed cylinder along Z inside `box` (diameter = its x size, about its centre, from min.z to
+// max.z): a job's round stock as the simulator cuts it. Its vertices lie on the circle, so the
+// sides fall inside it by at most `chordToleranceMm`.
+TriangleMesh cylinderMesh(const base::Box3& box, double chordToleranceMm = 0.001);
+
 // Binary STL, written atomically (nothing half-written on failure).
 // (Reading STL is occ's: a model or a stock from a mesh file comes through occ::Model.)
 base::Status writeStl(const TriangleMesh& mesh, const std::string& path, const std::string& header = "camwb");

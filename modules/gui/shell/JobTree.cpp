@@ -185,11 +185,16 @@ void JobTree::addSetupItems(QTreeWidgetItem* jobItem)
     const base::Vec3 size = job.stock.max - job.stock.min;
     // A lathe job's stock is the shaft its grooves are cut in, made from their parameters.
     const bool lathe = !job.operations.empty() && !document::jobNeedsModel(job);
+    using Shape = document::Stock::Shape;
+    const QString boxText = tr("box %1 × %2 × %3 %4").arg(len(size.x), len(size.y), len(size.z), lenUnit());
     auto* stock =
         row(jobItem, ItemKind::Stock, tr("Stock"),
-            lathe             ? tr("the grooves' shaft (revolved)")
-            : job.stock.box() ? tr("box %1 × %2 × %3 %4").arg(len(size.x), len(size.y), len(size.z), lenUnit())
-                              : tr("(none)"));
+            lathe                                ? tr("the grooves' shaft (revolved)")
+            : !job.stock.box()                   ? tr("(none)")
+            : job.stock.shape == Shape::Cylinder ? tr("cylinder Ø%1 × %2 %3").arg(len(size.x), len(size.z), lenUnit())
+            : job.stock.shape == Shape::Blank
+                ? tr("blank %1 in a %2").arg(QFileInfo(QString::fromStdString(job.stock.blankPath)).fileName(), boxText)
+                : boxText);
     if (!lathe) {
         new QTreeWidgetItem(
             stock, {tr("Min"), QStringLiteral("%1, %2, %3 %4")

@@ -5,6 +5,7 @@
 #include "document/JobPipeline.h"
 #include "document/JobSetup.h"
 #include "document/ReferenceRemap.h"
+#include "document/StockBlank.h"
 #include "gui/shell/NewOperation.h"
 #include "gui/shell/Prompter.h"
 #include "kinematics/Machine.h"
@@ -72,11 +73,41 @@ std::vector<double> plannedOperationSeconds(const toolpath::Toolpath& program, s
 }  // namespace
 
 // What a background compute brings back; empty optionals mean "unchanged".
+namespace {
+
+// What a blank stock's mesh was read for: its file and the origin it is moved by; empty for the
+// other shapes.
+std::string stockBlankKey(const document::Job& job)
+{
+    if (job.stock.shape != document::Stock::Shape::Blank)
+        return {};
+    const base::Vec3& o = job.origin;
+    return job.stock.blankPath + "@" + std::to_string(o.x) + "," + std::to_string(o.y) + "," + std::to_string(o.z);
+}
+
+QString stockText(const document::Stock& stock)
+{
+    const base::Vec3 size = stock.max - stock.min;
+    return Workbench::tr("%1 × %2 × %3 mm from (%4, %5, %6)")
+        .arg(size.x, 0, 'g', 6)
+        .arg(size.y, 0, 'g', 6)
+        .arg(size.z, 0, 'g', 6)
+        .arg(stock.min.x, 0, 'g', 6)
+        .arg(stock.min.y, 0, 'g', 6)
+        .arg(stock.min.z, 0, 'g', 6);
+}
+
+}  // namespace
+
 struct Workbench::ComputeOutcome {
     std::optional<occ::Model> model;
     std::string modelPath;
     base::Vec3 modelOrigin;  // the job origin the model was moved by
     occ::DisplayMesh mesh;
+    std::shared_ptr<const sim::TriangleMesh> stockBlank;  // read for `stockBlankKey`
+    std::string stockBlankKey;
+    // The job's stock as its model or blank gives it now, when that is not the stored one.
+    std::optional<document::Stock> storedStock, resolvedStock;
     std::optional<toolpath::Toolpath> toolpath;
     std::optional<post::PostOutput> nc;
     std::string ncExtension;
@@ -133,6 +164,7 @@ void Workbench::setJob(document::Job job, const QString& path)
     // NC go now, not when (or if) this job's model has loaded.
     clearDerived();
     m_showComputeFailure = true;
+    m_checkStoredStock = true;
     startCompute();
 }
 
@@ -141,6 +173,8 @@ void Workbench::clearDerived()
     m_model = {};
     m_modelPath.clear();  // always read the model again: the file may have changed on disk
     m_mesh = {};
+    m_stockBlank.reset();  // read again too
+    m_stockBlankKey.clear();
     m_toolpath = {};
     m_nc.clear();
     m_programProblem.clear();
@@ -148,6 +182,7 @@ void Workbench::clearDerived()
     m_operationProblems.clear();
     m_operationSeconds.clear();
     emit modelChanged();
+    emit stockBlankChanged();
     emit toolpathChanged();
     emit ncChanged();
     emit programStateChanged();
@@ -440,6 +475,11 @@ void Workbench::startCompute()
     auto progress = progressReporter(this, tr("Loading model"));
     const std::string programName = QFileInfo(qs(m_document.path())).completeBaseName().toStdString();
     const int generation = m_generation;
+    const std::string blankKey = stockBlankKey(job);
+    const bool reloadBlank = !blankKey.empty() && (blankKey != m_stockBlankKey || !m_stockBlank);
+    std::shared_ptr<const sim::TriangleMesh> blank = blankKey.empty() ? nullptr : m_stockBlank;
+    const bool checkStoredStock = std::exchange(m_checkStoredStock, false);
+    const std::string jobPath = m_document.path();
 
     auto* watcher = new QFutureWatcher<std::shared_ptr<ComputeOutcome>>(this);
     connect(watcher, &QFutureWatcherBase::finished, this, [this, watcher] {
@@ -447,7 +487,8 @@ void Workbench::startCompute()
         watcher->deleteLater();
         finishCompute(outcome);
     });
-    watcher->setFuture(QtConcurrent::run([job, model, reloadModel, progress, programName, generation] {
+    watcher->setFuture(QtConcurrent::run([job, model, reloadModel, progress, programName, generation, blankKey,
+                                          reloadBlank, blank, checkStoredStock, jobPath] {
         auto outcome = std::make_shared<ComputeOutcome>();
         outcome->generation = generation;
         if (job.modelPath.empty() && document::jobNeedsModel(job))
@@ -466,9 +507,28 @@ void Workbench::startCompute()
             outcome->modelPath = job.modelPath;
             outcome->modelOrigin = job.origin;
         }
-        // A "from model" stock follows the model as loaded, as camwb-cli's pipeline does.
+        // A blank stock is its file's solid, read again when the file or the origin changes.
+        std::shared_ptr<const sim::TriangleMesh> currentBlank = blank;
+        if (reloadBlank) {
+            auto loaded = document::loadStockBlank(job, jobPath);
+            if (!loaded) {
+                outcome->errors.push_back(loaded.error().toString());
+                return outcome;
+            }
+            currentBlank = std::make_shared<const sim::TriangleMesh>(std::move(loaded.value()));
+            outcome->stockBlank = currentBlank;
+            outcome->stockBlankKey = blankKey;
+        }
+        // A "from model" stock follows the model as loaded, as camwb-cli's pipeline does; a blank
+        // stock's box is its file's.
         document::Job resolved = job;
         document::resolveJobStock(resolved, current);
+        if (currentBlank)
+            document::resolveStockBlank(resolved.stock, *currentBlank);
+        if (checkStoredStock && !(resolved.stock == job.stock)) {
+            outcome->storedStock = job.stock;
+            outcome->resolvedStock = resolved.stock;
+        }
         document::ProgramReport report;
         report.allFailures = true;  // the job tree marks every operation that cannot be made
         auto program = document::computeProgram(resolved, current, {}, &report);
@@ -539,6 +599,11 @@ void Workbench::finishCompute(const std::shared_ptr<ComputeOutcome>& outcome)
         m_mesh = std::move(outcome->mesh);
         emit modelChanged();
     }
+    if (outcome->stockBlank) {
+        m_stockBlank = outcome->stockBlank;
+        m_stockBlankKey = outcome->stockBlankKey;
+        emit stockBlankChanged();
+    }
     if (outcome->toolpath) {
         m_toolpath = std::move(*outcome->toolpath);
         const toolpath::ToolpathStats stats = toolpath::statistics(m_toolpath);
@@ -567,6 +632,18 @@ void Workbench::finishCompute(const std::shared_ptr<ComputeOutcome>& outcome)
     if (std::exchange(m_showComputeFailure, false) && !outcome->errors.empty() && m_prompter != nullptr)
         m_prompter->showError(outcome->modelFailed ? tr("Open job") : tr("Post"), m_programProblem);  // reported above
     setBusy(false);
+    // The stored stock box was resolved against a model or blank that has changed on disk since:
+    // the job takes the box the files give now (the NC was computed from it already), said so.
+    if (outcome->resolvedStock && job().stock == *outcome->storedStock) {
+        report(Severity::Warning,
+               tr("The stock stored in the job (%1) is not what its %2 gives now (%3): the "
+                  "file changed since the job was saved. The job now uses the new stock.")
+                   .arg(stockText(*outcome->storedStock),
+                        outcome->resolvedStock->shape == document::Stock::Shape::Blank ? tr("blank file") : tr("model"),
+                        stockText(*outcome->resolvedStock)));
+        const document::Stock stock = *outcome->resolvedStock;
+        m_document.edit("Stock follows its file", [&stock](document::Job& j) { j.stock = stock; });
+    }
     emit postFinished(outcome->errors.empty());
     if (m_recomputePending) {
         m_recomputePending = false;

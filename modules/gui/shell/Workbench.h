@@ -9,6 +9,7 @@
 #include "occ/DisplayMesh.h"
 #include "occ/Model.h"
 #include "post/PostProcessor.h"
+#include "sim/TriangleMesh.h"
 #include "toolpath/Toolpath.h"
 
 #include <QObject>
@@ -39,6 +40,9 @@ public:
     // model() + modelOrigin()).
     const base::Vec3& modelOrigin() const { return m_modelOrigin; }
     const occ::DisplayMesh& displayMesh() const { return m_mesh; }
+    // A blank stock's solid in work coordinates (document::loadStockBlank), as last loaded; null
+    // for the other stock shapes or while it is not (yet) read.
+    std::shared_ptr<const sim::TriangleMesh> stockBlank() const { return m_stockBlank; }
     const toolpath::Toolpath& toolpath() const { return m_toolpath; }
     const QString& ncText() const { return m_nc; }
     QString ncExtension() const { return m_ncExtension; }
@@ -142,6 +146,7 @@ public:
 signals:
     void jobChanged();
     void modelChanged();
+    void stockBlankChanged();
     void toolpathChanged();
     void ncChanged();
     void postFinished(bool ok);
@@ -175,6 +180,8 @@ private:
     std::string m_modelPath;   // the file m_model came from
     base::Vec3 m_modelOrigin;  // the job origin m_model is moved by (m_model is in work coordinates)
     occ::DisplayMesh m_mesh;
+    std::shared_ptr<const sim::TriangleMesh> m_stockBlank;
+    std::string m_stockBlankKey;  // the blank file and origin m_stockBlank was read for
     toolpath::Toolpath m_toolpath;
     QString m_nc;
     QString m_ncExtension = QStringLiteral("nc");
@@ -190,6 +197,7 @@ private:
     bool m_recomputePending = false;
     bool m_suppressRecompute = false;
     bool m_showComputeFailure = false;  // the running compute was asked for (open, post): show its error
+    bool m_checkStoredStock = false;    // the first compute after opening: the stored stock box is checked
     int m_generation = 0;               // a compute started for an earlier job is not applied
 };
 

@@ -1,5 +1,6 @@
 #include "gui/sim/SimRequest.h"
 
+#include "document/StockBlank.h"
 #include "gui/inspector/NcInspector.h"
 #include "gui/shell/Workbench.h"
 
@@ -35,7 +36,16 @@ std::optional<SimRunRequest> simulationRequest(const NcInspector& inspector, con
     request.machine = inspector.sharedMachine();
     const std::optional<base::Box3> stockBox = workbench.job().stock.box();
     if (editorShowsPostedProgram && stockBox) {
-        request.stockBox = stockBox;
+        // The stock as the solid it is: a box, a cylinder, or the blank's mesh.
+        const std::shared_ptr<const sim::TriangleMesh> blank = workbench.stockBlank();
+        if (workbench.job().stock.shape == document::Stock::Shape::Blank && !blank) {
+            *why = Tr::tr("The blank stock's file is not read (the report says why): nothing to cut yet.");
+            return std::nullopt;
+        }
+        sim::StockSpec stock =
+            document::jobStockSpec(workbench.job(), workbench.model(), blank ? *blank : sim::TriangleMesh{}, 0);
+        request.stockBox = stock.box;
+        request.stockSolid = std::move(stock.blank);
         if (!workbench.model().empty())
             request.model = workbench.model();
         const toolpath::Toolpath& cl = workbench.toolpath();

@@ -76,9 +76,10 @@ std::shared_ptr<SimRun> buildSimRun(const SimRunRequest& request)
     // The whole program through the stock first: the checks and the end's deviation, as
     // camwb-cli sim reports them. The dock then animates a stock of the same kind.
     std::optional<sim::StockSpec> spec;
-    if (request.stockBox) {
+    if (request.stockBox || !request.stockSolid.empty()) {
         spec.emplace();
-        spec->box = *request.stockBox;
+        spec->box = request.stockBox;
+        spec->blank = request.stockSolid;
         spec->resolutionMm = request.resolutionMm;
         if (request.model) {
             spec->design = document::designMesh(*request.model);

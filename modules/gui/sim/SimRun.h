@@ -79,7 +79,8 @@ struct SimRunRequest {
     std::string programName;
     // Null: a three-axis machine of the default limits (kinematics::Machine{}), as camwb-cli sim.
     std::shared_ptr<const kinematics::Machine> machine;
-    std::optional<base::Box3> stockBox;  // the job's stock; none: no stock removal
+    std::optional<base::Box3> stockBox;  // the job's stock box; none: `stockSolid`, else no stock removal
+    sim::TriangleMesh stockSolid;        // a round or blank stock's solid (document::jobStockSpec)
     // The job's tools by number (its CL's tool changes): the NC's T words name them, give no shape.
     std::map<int, toolpath::Tool> tools;
     std::optional<occ::Model> model;  // the job's: compared with (document::designMesh)

@@ -57,13 +57,16 @@ void showJobSetupInView(Workbench& workbench, View3D& view)
         const document::Job& job = workbench.job();
         const std::optional<LatheSection> section = latheSectionOf(job);
         const document::Stock& stock = job.stock;
-        view.setJobSetup(section ? std::nullopt : stock.box(), stock.shape == document::Stock::Shape::Cylinder);
+        const bool blank = stock.shape == document::Stock::Shape::Blank;
+        view.setJobSetup(section ? std::nullopt : stock.box(), stock.shape == document::Stock::Shape::Cylinder,
+                         blank ? workbench.stockBlank() : nullptr);
         view.setLatheSection(section);
         // Turned to the lathe's view when the job becomes a turning job, and back when it stops.
         if (std::exchange(*turning, section.has_value()) != section.has_value())
             view.setViewPreset(section ? View3D::Preset::LatheXZ : View3D::Preset::Isometric);
     };
     QObject::connect(&workbench, &Workbench::jobChanged, &view, show);
+    QObject::connect(&workbench, &Workbench::stockBlankChanged, &view, show);
     show();
 }
 

@@ -5,6 +5,7 @@
 #include "gui/shell/Workbench.h"
 #include "gui/tasks/LengthSpinBox.h"
 #include "gui/tasks/PostPropertiesForm.h"
+#include "gui/tasks/detail/JobSetupFields.h"
 #include "gui/view3d/TaskOverlay.h"
 #include "kinematics/Machine.h"
 #include "post/PostProcessor.h"
@@ -33,11 +34,9 @@
 
 namespace camwb::gui {
 
+using namespace jobsetup;
+
 namespace {
-
-using document::StockAnchor;
-
-QString qs(const std::string& s) { return QString::fromStdString(s); }
 
 QGroupBox* group(const QString& title, QWidget* content)
 {
@@ -47,43 +46,6 @@ QGroupBox* group(const QString& title, QWidget* content)
     layout->addWidget(content);
     return box;
 }
-
-base::Vec3 valueOf(const std::array<QDoubleSpinBox*, 3>& fields)
-{
-    return {fields[0]->value(), fields[1]->value(), fields[2]->value()};
-}
-
-void showVec3(const std::array<QDoubleSpinBox*, 3>& fields, const base::Vec3& v)
-{
-    fields[0]->setValue(v.x);
-    fields[1]->setValue(v.y);
-    fields[2]->setValue(v.z);
-}
-
-// Columns of X, Y, Z fields under their titles, one row per axis: narrow enough for the dock.
-QWidget* axisGrid(const std::vector<std::pair<QString, std::array<QDoubleSpinBox*, 3>>>& columns)
-{
-    auto* widget = new QWidget;
-    auto* grid = new QGridLayout(widget);
-    grid->setContentsMargins(0, 0, 0, 0);
-    const char* axes[] = {"X", "Y", "Z"};
-    for (int c = 0; c < static_cast<int>(columns.size()); ++c) {
-        const auto& [title, fields] = columns[static_cast<std::size_t>(c)];
-        if (!title.isEmpty())
-            grid->addWidget(new QLabel(title), 0, c + 1);
-        for (int a = 0; a < 3; ++a)
-            grid->addWidget(fields[static_cast<std::size_t>(a)], a + 1, c + 1);
-    }
-    for (int a = 0; a < 3; ++a)
-        grid->addWidget(new QLabel(QLatin1String(axes[a])), a + 1, 0);
-    return widget;
-}
-
-// Origin choices after "typed": the stock points of document::stockAnchor, in this order.
-constexpr StockAnchor kAnchors[] = {StockAnchor::TopFrontLeft, StockAnchor::BottomFrontLeft, StockAnchor::TopCentre,
-                                    StockAnchor::Centre, StockAnchor::BottomCentre};
-// Then the face picked in the 3D view (its level as Z0).
-constexpr int kPickedFace = 1 + static_cast<int>(std::size(kAnchors));
 
 }  // namespace
 
@@ -178,42 +140,6 @@ QWidget* JobSetupPanel::buildModel()
     return widget;
 }
 
-QWidget* JobSetupPanel::buildStock()
-{
-    auto* widget = new QWidget;
-    auto* form = new QFormLayout(widget);
-    m_stockShape = new QComboBox;
-    m_stockShape->setObjectName(QStringLiteral("stockShape"));
-    m_stockShape->addItem(tr("Box"));
-    m_stockShape->addItem(tr("Cylinder (along Z)"));
-    form->addRow(tr("Shape"), m_stockShape);
-    m_stockSize = new QComboBox;
-    m_stockSize->setObjectName(QStringLiteral("stockSize"));
-    m_stockSize->addItem(tr("Model bounds + offsets"));
-    m_stockSize->addItem(tr("Explicit size"));
-    form->addRow(tr("Size"), m_stockSize);
-
-    m_below = vec3Fields("stockBelow", 0, 1000);
-    m_above = vec3Fields("stockAbove", 0, 1000);
-    m_offsetRows = axisGrid({{tr("Below min"), m_below}, {tr("Above max"), m_above}});
-    form->addRow(m_offsetRows);
-    m_min = vec3Fields("stockMin", -10000, 10000);
-    m_max = vec3Fields("stockMax", -10000, 10000);
-    m_explicitRows = axisGrid({{tr("Min"), m_min}, {tr("Max"), m_max}});
-    form->addRow(m_explicitRows);
-    m_stockSummary = new QLabel;
-    m_stockSummary->setObjectName(QStringLiteral("stockSummary"));
-    m_stockSummary->setWordWrap(true);
-    form->addRow(m_stockSummary);
-
-    connect(m_stockShape, &QComboBox::currentIndexChanged, this, &JobSetupPanel::stockEdited);
-    connect(m_stockSize, &QComboBox::currentIndexChanged, this, &JobSetupPanel::stockEdited);
-    for (const Vec3Fields* fields : {&m_below, &m_above, &m_min, &m_max})
-        for (QDoubleSpinBox* spin : *fields)
-            connect(spin, &QDoubleSpinBox::valueChanged, this, &JobSetupPanel::stockEdited);
-    return widget;
-}
-
 QWidget* JobSetupPanel::buildWcs()
 {
     auto* widget = new QWidget;
@@ -226,6 +152,7 @@ QWidget* JobSetupPanel::buildWcs()
     m_originAnchor->addItem(tr("Stock: top centre"));
     m_originAnchor->addItem(tr("Stock: centre"));
     m_originAnchor->addItem(tr("Stock: bottom centre"));
+    m_originAnchor->addItem(tr("On the model vertex picked in the view"));
     m_originAnchor->addItem(tr("Z0 on the face picked in the view"));
     m_originAnchor->setToolTip(tr("Program zero: a point of the stock (it follows the stock), or typed"));
     form->addRow(tr("Origin at"), m_originAnchor);
@@ -252,6 +179,10 @@ QWidget* JobSetupPanel::buildWcs()
             originOnPickedFace();
             return;
         }
+        if (index == kPickedVertex) {
+            originOnPickedVertex();
+            return;
+        }
         moveOrigin(document::stockAnchor(m_setup.stock, kAnchors[index - 1]));
         showValues();
     });
@@ -259,6 +190,11 @@ QWidget* JobSetupPanel::buildWcs()
         connect(m_overlay, &TaskOverlay::selectionChanged, this, [this] {
             if (m_originAnchor->currentIndex() == kPickedFace)
                 originOnPickedFace();
+        });
+    if (m_overlay != nullptr)
+        connect(m_overlay, &TaskOverlay::pointPicked, this, [this] {
+            if (m_originAnchor->currentIndex() == kPickedVertex)
+                originOnPickedVertex();
         });
     for (QDoubleSpinBox* spin : m_origin)
         connect(spin, &QDoubleSpinBox::valueChanged, this, &JobSetupPanel::originEdited);
@@ -372,49 +308,6 @@ QWidget* JobSetupPanel::buildOutput()
     return widget;
 }
 
-bool JobSetupPanel::modelBounds(base::Vec3& min, base::Vec3& max) const
-{
-    const occ::Model& model = m_workbench.model();
-    if (model.empty())
-        return false;
-    min = model.boundsMin() + m_workbench.modelOrigin();
-    max = model.boundsMax() + m_workbench.modelOrigin();
-    return true;
-}
-
-void JobSetupPanel::resolveStock()
-{
-    base::Vec3 min, max;
-    if (modelBounds(min, max))
-        m_setup.stock.resolve(min - m_setup.origin, max - m_setup.origin);
-}
-
-void JobSetupPanel::stockEdited()
-{
-    if (m_showing)
-        return;
-    document::Stock& stock = m_setup.stock;
-    stock.shape = m_stockShape->currentIndex() == 1 ? document::Stock::Shape::Cylinder : document::Stock::Shape::Box;
-    if (m_stockSize->currentIndex() == 0) {
-        stock.fromModel = document::StockFromModel{valueOf(m_below), valueOf(m_above)};
-        resolveStock();
-    } else {
-        stock.fromModel.reset();
-        stock.min = valueOf(m_min);
-        stock.max = valueOf(m_max);
-        if (stock.shape == document::Stock::Shape::Cylinder) {
-            // Round: the diameter is the x size, about the y centre.
-            const double cy = (stock.min.y + stock.max.y) / 2, r = (stock.max.x - stock.min.x) / 2;
-            stock.min.y = cy - r;
-            stock.max.y = cy + r;
-        }
-    }
-    // An origin on a stock point follows the stock.
-    if (const int anchor = m_originAnchor->currentIndex(); anchor > 0 && anchor < kPickedFace)
-        moveOrigin(document::stockAnchor(stock, kAnchors[anchor - 1]));
-    showValues();
-}
-
 // Z0 at the level of the flat horizontal face picked in the 3D view; X and Y stay.
 void JobSetupPanel::originOnPickedFace()
 {
@@ -429,6 +322,32 @@ void JobSetupPanel::originOnPickedFace()
     // The model is shown in the coordinates of the origin it was loaded with.
     const double z = face.planeZ + m_workbench.modelOrigin().z;
     moveOrigin({0, 0, z - m_setup.origin.z});
+    showValues();
+}
+
+// The origin on the model vertex nearest to the point picked in the 3D view: the ends of the
+// model's edges as the view draws them (occ's feature edges) are its B-rep vertices.
+void JobSetupPanel::originOnPickedVertex()
+{
+    const std::optional<base::Vec3> point = m_overlay ? m_overlay->pickedPoint() : std::nullopt;
+    std::optional<base::Vec3> vertex;
+    for (const std::vector<base::Vec3>& edge : m_workbench.displayMesh().featureEdges) {
+        if (!point || edge.empty())
+            continue;
+        for (const base::Vec3& end : {edge.front(), edge.back()})
+            if (!vertex || (end - *point).length() < (*vertex - *point).length())
+                vertex = end;
+    }
+    m_originNote->setText(vertex ? tr("Origin on the vertex at (%1, %2, %3) of the model")
+                                       .arg(vertex->x + m_workbench.modelOrigin().x, 0, 'g', 6)
+                                       .arg(vertex->y + m_workbench.modelOrigin().y, 0, 'g', 6)
+                                       .arg(vertex->z + m_workbench.modelOrigin().z, 0, 'g', 6)
+                                 : tr("Click the model near a vertex in the 3D view."));
+    m_originNote->show();
+    if (!vertex)
+        return;
+    // The model is shown in the coordinates of the origin it was loaded with.
+    moveOrigin(*vertex + m_workbench.modelOrigin() - m_setup.origin);
     showValues();
 }
 
@@ -452,31 +371,7 @@ void JobSetupPanel::moveOrigin(const base::Vec3& delta)
 void JobSetupPanel::showValues()
 {
     m_showing = true;
-    const document::Stock& stock = m_setup.stock;
-    const bool fromModel = stock.fromModel.has_value();
-    m_stockShape->setCurrentIndex(stock.shape == document::Stock::Shape::Cylinder ? 1 : 0);
-    m_stockSize->setCurrentIndex(fromModel ? 0 : 1);
-    if (fromModel) {
-        showVec3(m_below, stock.fromModel->below);
-        showVec3(m_above, stock.fromModel->above);
-    }
-    showVec3(m_min, stock.min);
-    showVec3(m_max, stock.max);
-    m_offsetRows->setVisible(fromModel);
-    m_explicitRows->setVisible(!fromModel);
-    const base::Vec3 size = stock.max - stock.min;
-    m_stockSummary->setText(stock.shape == document::Stock::Shape::Cylinder ? tr("Ø%1 × %2 mm, from Z %3 to %4")
-                                                                                  .arg(size.x, 0, 'g', 6)
-                                                                                  .arg(size.z, 0, 'g', 6)
-                                                                                  .arg(stock.min.z)
-                                                                                  .arg(stock.max.z)
-                                                                            : tr("%1 × %2 × %3 mm, from (%4, %5, %6)")
-                                                                                  .arg(size.x, 0, 'g', 6)
-                                                                                  .arg(size.y, 0, 'g', 6)
-                                                                                  .arg(size.z, 0, 'g', 6)
-                                                                                  .arg(stock.min.x)
-                                                                                  .arg(stock.min.y)
-                                                                                  .arg(stock.min.z));
+    showStock();
     showVec3(m_origin, m_setup.origin);
     m_workOffset->setCurrentIndex(std::max(0, m_workOffset->findData(m_setup.workOffset)));
     m_machine->setCurrentIndex(m_setup.machineId.empty() ? 0 : std::max(0, m_machine->findText(qs(m_setup.machineId))));

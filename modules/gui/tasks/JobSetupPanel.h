@@ -1,8 +1,8 @@
 // The job setup task panel (docked like the operations' panels): the job's model (Import), stock
-// (box from the model's bounds with offsets, explicit box, or cylinder), work coordinate system
-// (origin on a stock corner/centre, Z0 on a face picked in the view, or typed; G54…G59), machine (its travels checked
-// against the stock), post and its properties (PostPropertiesForm), and the NC output's name and folder. It edits a
-// copy of the job; OK applies it as one undoable step, Cancel changes nothing.
+// (box from the model's bounds with offsets, explicit box, cylinder, or a blank from a file), work coordinate system
+// (origin on a stock corner/centre, on a model vertex picked in the view, Z0 on a face picked there, or typed;
+// G54…G59), machine (its travels checked against the stock), post and its properties (PostPropertiesForm), and the NC
+// output's name and folder. It edits a copy of the job; OK applies it as one undoable step, Cancel changes nothing.
 #pragma once
 
 #include "base/Vec.h"
@@ -31,7 +31,8 @@ class Workbench;
 class JobSetupPanel : public QWidget {
     Q_OBJECT
 public:
-    // `overlay` (may be null) offers the face picked in the 3D view as the origin's Z level.
+    // `overlay` (may be null) offers the vertex picked in the 3D view as the origin, and the face
+    // picked there as its Z level.
     JobSetupPanel(Workbench& workbench, TaskOverlay* overlay, QWidget* parent = nullptr);
 
     // The job as OK would make it (only its setup fields differ from the Workbench's job).
@@ -42,6 +43,10 @@ public:
     bool accept();  // OK: applies (one undo step, none when nothing changed) and closes
     void reject();  // Cancel: changes nothing and closes
     bool hasUnappliedChanges() const;
+    // The stock becomes the blank in `path` (a mesh or STEP file, in the model's coordinates), its
+    // box the blank's bounds; false (said in the panel, nothing changed) when it cannot be read.
+    // "Blank from file…" and Choose… ask for the file and come here.
+    bool setBlankFile(const QString& path);
 
 signals:
     void closed();
@@ -65,9 +70,13 @@ private:
     // Moves the origin by `delta` (model coordinates): an explicit stock stays where it is.
     void moveOrigin(const base::Vec3& delta);
     void resolveStock();
+    void stockMoved();  // after a change of the stock: an origin on it follows, the fields show it
+    void chooseBlankFile();
+    void showStock();
     void showValues();  // writes m_setup into the fields (signals blocked)
     void checkTravels();
     void originOnPickedFace();
+    void originOnPickedVertex();
     void switchPostTo(int index);
     void fitWidth();
     void fitWidthNow();
@@ -89,6 +98,9 @@ private:
     QWidget* m_offsetRows = nullptr;
     QWidget* m_explicitRows = nullptr;
     QLabel* m_stockSummary = nullptr;
+    QWidget* m_blankRow = nullptr;
+    QLabel* m_blankLabel = nullptr;
+    QLabel* m_blankError = nullptr;
     QComboBox* m_originAnchor = nullptr;
     Vec3Fields m_origin{};
     QLabel* m_originNote = nullptr;

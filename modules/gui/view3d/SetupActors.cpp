@@ -91,6 +91,38 @@ vtkSmartPointer<vtkPolyData> prism(const std::vector<base::Vec2>& outline, doubl
 
 }  // namespace
 
+namespace {
+
+vtkSmartPointer<vtkActor> stockLook(vtkSmartPointer<vtkActor> actor)
+{
+    vtkProperty* property = actor->GetProperty();
+    property->SetColor(kStockColor[0], kStockColor[1], kStockColor[2]);
+    property->SetOpacity(kStockOpacity);
+    property->SetAmbient(0.3);
+    actor->PickableOff();  // clicks pick the model's faces and the backplot through it
+    return actor;
+}
+
+}  // namespace
+
+vtkSmartPointer<vtkActor> makeStockActor(const sim::TriangleMesh& solid)
+{
+    vtkNew<vtkPoints> points;
+    points->SetNumberOfPoints(static_cast<vtkIdType>(solid.vertexCount()));
+    for (std::size_t i = 0; i < solid.vertexCount(); ++i)
+        points->SetPoint(static_cast<vtkIdType>(i), solid.positions[3 * i], solid.positions[3 * i + 1],
+                         solid.positions[3 * i + 2]);
+    vtkNew<vtkCellArray> polys;
+    for (std::size_t t = 0; t < solid.triangleCount(); ++t) {
+        const vtkIdType ids[3]{solid.triangles[3 * t], solid.triangles[3 * t + 1], solid.triangles[3 * t + 2]};
+        polys->InsertNextCell(3, ids);
+    }
+    auto data = vtkSmartPointer<vtkPolyData>::New();
+    data->SetPoints(points);
+    data->SetPolys(polys);
+    return stockLook(makeActor(data));
+}
+
 vtkSmartPointer<vtkActor> makeStockActor(const base::Box3& box, bool cylinder)
 {
     std::vector<base::Vec2> outline;
@@ -104,13 +136,7 @@ vtkSmartPointer<vtkActor> makeStockActor(const base::Box3& box, bool cylinder)
     } else {
         outline = {{box.min.x, box.min.y}, {box.max.x, box.min.y}, {box.max.x, box.max.y}, {box.min.x, box.max.y}};
     }
-    vtkSmartPointer<vtkActor> actor = makeActor(prism(outline, box.min.z, box.max.z));
-    vtkProperty* property = actor->GetProperty();
-    property->SetColor(kStockColor[0], kStockColor[1], kStockColor[2]);
-    property->SetOpacity(kStockOpacity);
-    property->SetAmbient(0.3);
-    actor->PickableOff();  // clicks pick the model's faces and the backplot through it
-    return actor;
+    return stockLook(makeActor(prism(outline, box.min.z, box.max.z)));
 }
 
 std::vector<vtkSmartPointer<vtkActor>> makeLatheActors(const LatheSection& section)

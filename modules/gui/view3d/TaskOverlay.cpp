@@ -55,6 +55,7 @@ struct TaskOverlay::Private {
     std::vector<vtkSmartPointer<vtkActor>> previewActors;
     vtkSmartPointer<vtkActor> model;
     std::vector<int> selected;
+    std::optional<base::Vec3> pickedPoint;
 
     void remove(vtkSmartPointer<vtkActor>& actor)
     {
@@ -116,6 +117,14 @@ void TaskOverlay::setSelectedFaces(std::vector<int> faces)
     d->selected = std::move(faces);
     rebuildSelection();
     emit selectionChanged();
+}
+
+const std::optional<base::Vec3>& TaskOverlay::pickedPoint() const { return d->pickedPoint; }
+
+void TaskOverlay::setPickedPoint(const std::optional<base::Vec3>& point)
+{
+    d->pickedPoint = point;
+    emit pointPicked();
 }
 
 void TaskOverlay::clickFace(int face, bool toggle)

@@ -5,10 +5,13 @@
 // so the data calls work without OpenGL too (headless tests).
 #pragma once
 
+#include "base/Vec.h"
+
 #include <QObject>
 
 #include <functional>
 #include <memory>
+#include <optional>
 #include <vector>
 
 class vtkActor;
@@ -42,9 +45,14 @@ public:
     // A click on `face` (0 = on nothing): alone it selects just that face (nothing clears);
     // `toggle` (Ctrl held) adds or removes it and keeps the rest.
     void clickFace(int face, bool toggle);
+    // Where the last click met the model (work coordinates; none: it met nothing). A click on the
+    // face already selected changes no selection but picks a new point, hence a signal of its own.
+    const std::optional<base::Vec3>& pickedPoint() const;
+    void setPickedPoint(const std::optional<base::Vec3>& point);
 
 signals:
     void selectionChanged();
+    void pointPicked();
 
 private:
     friend class View3D;

@@ -330,13 +330,16 @@ void View3D::clearToolpath()
     d->render();
 }
 
-void View3D::setJobSetup(const std::optional<base::Box3>& stock, bool cylinder)
+void View3D::setJobSetup(const std::optional<base::Box3>& stock, bool cylinder,
+                         std::shared_ptr<const sim::TriangleMesh> blank)
 {
     if (d->stockActor)
         d->renderer->RemoveActor(d->stockActor);
     if (d->workAxes)
         d->renderer->RemoveActor(d->workAxes);
-    d->stockActor = stock ? makeStockActor(*stock, cylinder) : nullptr;
+    d->stockActor = !stock                     ? nullptr
+                    : blank && !blank->empty() ? makeStockActor(*blank)
+                                               : makeStockActor(*stock, cylinder);
     // Axes a third of the stock's largest size long (20 mm without stock): seen, not in the way.
     double length = 20;
     if (stock) {
@@ -516,7 +519,7 @@ int View3D::pickSegment(const QPointF& widgetPosition, double tolerancePx) const
 
 TaskOverlay& View3D::overlay() const { return *d->overlay; }
 
-int View3D::pickFace(const QPointF& widgetPosition) const
+int View3D::pickFace(const QPointF& widgetPosition, base::Vec3* point) const
 {
     if (d->gl == nullptr || !d->modelActor)
         return 0;
@@ -532,6 +535,10 @@ int View3D::pickFace(const QPointF& widgetPosition) const
     auto* data = vtkPolyData::SafeDownCast(d->modelActor->GetMapper()->GetInput());
     auto* faceOf = data ? vtkIntArray::SafeDownCast(data->GetCellData()->GetArray("face")) : nullptr;
     const vtkIdType cell = picker->GetCellId();
+    if (point != nullptr) {
+        const double* at = picker->GetPickPosition();
+        *point = {at[0], at[1], at[2]};
+    }
     return faceOf != nullptr && cell >= 0 && cell < faceOf->GetNumberOfTuples() ? faceOf->GetValue(cell) : 0;
 }
 
@@ -552,8 +559,12 @@ bool View3D::eventFilter(QObject* watched, QEvent* event)
             const int segment = pickSegment(at);
             if (segment >= 0)
                 emit segmentPicked(segment, static_cast<int>(d->scene->polylines().segments()[segment].record));
-            else
-                d->overlay->clickFace(pickFace(at), mouse->modifiers().testFlag(Qt::ControlModifier));
+            else {
+                base::Vec3 point;
+                const int face = pickFace(at, &point);
+                d->overlay->clickFace(face, mouse->modifiers().testFlag(Qt::ControlModifier));
+                d->overlay->setPickedPoint(face > 0 ? std::optional<base::Vec3>(point) : std::nullopt);
+            }
         }
     }
     return QWidget::eventFilter(watched, event);

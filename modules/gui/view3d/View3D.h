@@ -7,6 +7,7 @@
 #pragma once
 
 #include "base/Vec.h"
+#include "sim/TriangleMesh.h"
 #include "sim/TurningStock.h"
 
 #include <QImage>
@@ -79,10 +80,11 @@ public:
     // preview is drawn in the backplot's colours and takes its place.
     void setToolpathShown(bool shown);
     bool isToolpathShown() const;
-    // The job's stock, translucent (a box, or a cylinder along Z inside `stock`), and the work
-    // coordinate system's axes at the origin: the view shows work coordinates. No stock: only
-    // the axes. Replaces what was shown.
-    void setJobSetup(const std::optional<base::Box3>& stock, bool cylinder);
+    // The job's stock, translucent (a box, a cylinder along Z inside `stock`, or `blank`'s solid
+    // when given), and the work coordinate system's axes at the origin: the view shows work
+    // coordinates. No stock: only the axes. Replaces what was shown.
+    void setJobSetup(const std::optional<base::Box3>& stock, bool cylinder,
+                     std::shared_ptr<const sim::TriangleMesh> blank = {});
     bool hasStockActor() const;
     // A turning job's half-section at Y = 0 (the CL's plane), instead of a milling stock; nullopt
     // removes it. Replaces what was shown.
@@ -120,8 +122,9 @@ public:
     void setSimulationShown(bool shown);
     bool isSimulationShown() const;
 
-    // The model face (1-based) under a widget position, 0 for none. Needs OpenGL.
-    int pickFace(const QPointF& widgetPosition) const;
+    // The model face (1-based) under a widget position, 0 for none; `point` (when given) gets
+    // where the click meets the model's surface (work coordinates). Needs OpenGL.
+    int pickFace(const QPointF& widgetPosition, base::Vec3* point = nullptr) const;
 
     void setViewPreset(Preset preset);  // also fits everything into the view
     Preset viewPreset() const;          // the last preset chosen (the camera may have moved since)

@@ -8,6 +8,7 @@
 #include "Shots.h"
 #include "document/JobFile.h"
 #include "gui/actions/ActionRegistry.h"
+#include "gui/shell/JobTree.h"
 #include "gui/shell/MainWindow.h"
 #include "gui/shell/Workbench.h"
 #include "gui/tasks/JobSetupPanel.h"
@@ -21,6 +22,7 @@
 #include <QDir>
 #include <QDoubleSpinBox>
 #include <QElapsedTimer>
+#include <QFile>
 #include <QFileInfo>
 #include <QGuiApplication>
 #include <QLabel>
@@ -275,6 +277,34 @@ private slots:
         panel->reject();
     }
 
+    // The origin on a model vertex: the point a click meets the model at snaps to the nearest
+    // vertex (the block's top front left corner, where its rounded edge R8 starts: (8, 0, 15) in
+    // the model file's coordinates), X, Y and Z.
+    void originOnAVertexPickedInTheView()
+    {
+        MainWindow window;
+        window.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&window));
+        openExample(window);
+        JobSetupPanel* panel = openPanel(window);
+        QVERIFY(panel);
+        auto* anchor = child<QComboBox>(panel, "originAnchor");
+        anchor->setCurrentIndex(anchor->count() - 2);  // the picked vertex: none picked yet
+        QVERIFY(!panel->hasUnappliedChanges());
+        QVERIFY(child<QLabel>(panel, "originNote")->text().contains(QStringLiteral("vertex")));
+        const camwb::base::Vec3 shown = window.workbench().modelOrigin();  // the view's coordinates
+        const int top = window.workbench().model().topPlanarFace();
+        window.view()->overlay().setSelectedFaces({top});
+        window.view()->overlay().setPickedPoint(camwb::base::Vec3{8.3, 0.2, 15} - shown);  // as a click does
+        QVERIFY2((panel->setup().origin - camwb::base::Vec3{8, 0, 15}).length() < 1e-6,
+                 qPrintable(child<QLabel>(panel, "originNote")->text()));
+        QVERIFY(panel->hasUnappliedChanges());
+        // Another click on the same face (no change of selection) picks another vertex.
+        window.view()->overlay().setPickedPoint(camwb::base::Vec3{89.8, 8.4, 15.0} - shown);
+        QVERIFY((panel->setup().origin - camwb::base::Vec3{90, 8, 15}).length() < 1e-6);
+        panel->reject();
+    }
+
     void stockBeyondTheTravelsIsWarned()
     {
         MainWindow window;
@@ -303,6 +333,141 @@ private slots:
         QVERIFY(!items->item(posts->findText(QStringLiteral("sinumerik828d-emco")))->isEnabled());
         QVERIFY(items->item(posts->findText(QStringLiteral("heidenhain-itnc530")))->isEnabled());
         panel->reject();
+    }
+
+    // "Blank from file…": a file that cannot be read is said in the panel and changes nothing; a
+    // blank file becomes the stock (its box the blank's bounds), OK is one undo step, the blank is
+    // read with the job and drawn; undo restores the box.
+    void blankFromFileIsOneUndoStep()
+    {
+        MainWindow window;
+        window.resize(1600, 1000);
+        window.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&window));
+        openExample(window);
+        const std::string original = jobText(window);
+        const std::size_t undoSteps = window.workbench().document().undoStack().count();
+        JobSetupPanel* panel = openPanel(window);
+        QVERIFY(panel);
+        const QString examples = QFileInfo(QStringLiteral(CAMWB_FIVE_AXIS_JOB)).absolutePath();
+        QVERIFY(!panel->setBlankFile(examples + QStringLiteral("/no-such-blank.step")));
+        auto* error = child<QLabel>(panel, "blankError");
+        QVERIFY(!error->isHidden());
+        QVERIFY2(error->text().contains(QStringLiteral("stock.blank")) &&
+                     error->text().contains(QStringLiteral("no-such-blank.step")),
+                 qPrintable(error->text()));
+        QVERIFY(!panel->hasUnappliedChanges());
+
+        // The block's own file as its blank (a blank the job's heights fit): the box is the model's.
+        QVERIFY(panel->setBlankFile(examples + QStringLiteral("/example-block.step")));
+        QVERIFY(error->isHidden());
+        const camwb::document::Stock& stock = panel->setup().stock;
+        QCOMPARE(stock.shape, camwb::document::Stock::Shape::Blank);
+        QVERIFY(!stock.fromModel);
+        const camwb::occ::Model& model = window.workbench().model();  // in work coordinates
+        QVERIFY((stock.min - model.boundsMin()).length() < 1e-2);
+        QVERIFY((stock.max - model.boundsMax()).length() < 1e-2);
+        QCOMPARE(child<QComboBox>(panel, "stockShape")->currentIndex(), 2);
+        QVERIFY(child<QLabel>(panel, "blankLabel")->text() == QStringLiteral("example-block.step"));
+        QVERIFY2(
+            child<QLabel>(panel, "stockSummary")->text().startsWith(QStringLiteral("Blank in a box of 90 × 60 × 15")),
+            qPrintable(child<QLabel>(panel, "stockSummary")->text()));
+        QVERIFY(panel->hasUnappliedChanges());
+        QTest::qWait(200);
+        saveShot(&window, withGl() ? QStringLiteral("jobsetup-blank-panel.png")
+                                   : QStringLiteral("jobsetup-blank-offscreen.png"));
+
+        QSignalSpy posted(&window.workbench(), &Workbench::postFinished);
+        child<QAbstractButton>(panel, "okButton")->click();
+        QCOMPARE(window.workbench().document().undoStack().count(), undoSteps + 1);
+        QVERIFY(posted.count() > 0 || posted.wait(120000));
+        waitIdle(window);
+        QVERIFY2(window.workbench().isProgramCurrent(), qPrintable(window.workbench().programProblem()));
+        QVERIFY(window.workbench().stockBlank());
+        QCOMPARE(window.workbench().job().stock.shape, camwb::document::Stock::Shape::Blank);
+        QVERIFY(std::abs(window.workbench().stockBlank()->bounds().max.z - window.workbench().job().stock.max.z) <
+                1e-6);
+        QVERIFY(window.view()->hasStockActor());
+        QVERIFY(window.workbench().job().stock.blankPath.find("example-block.step") != std::string::npos);
+
+        QVERIFY(window.actions().trigger(QStringLiteral("Cam.Edit.Undo")));
+        QCOMPARE(jobText(window), original);
+        waitIdle(window);
+    }
+
+    // The five-axis example starts from its cast blank: read with the job, drawn in the view.
+    void fiveAxisExampleShowsItsBlank()
+    {
+        MainWindow window;
+        window.resize(1600, 1000);
+        window.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&window));
+        QSignalSpy posted(&window.workbench(), &Workbench::postFinished);
+        QVERIFY(window.openJob(QStringLiteral(CAMWB_FIVE_AXIS_JOB)));
+        QVERIFY(posted.wait(120000));
+        waitIdle(window);
+        QVERIFY2(window.workbench().isProgramCurrent(), qPrintable(window.workbench().programProblem()));
+        QVERIFY(window.workbench().stockBlank());
+        QVERIFY(window.workbench().stockBlank()->triangleCount() > 100);
+        QVERIFY(window.view()->hasStockActor());
+        QCOMPARE(window.workbench().document().undoStack().count(), std::size_t(0));  // the stored box is the blank's
+        // The job tree names the blank.
+        const QList<QTreeWidgetItem*> stockRows =
+            window.jobTree()->findItems(QStringLiteral("Stock"), Qt::MatchExactly | Qt::MatchRecursive, 0);
+        QCOMPARE(stockRows.size(), 1);
+        QVERIFY2(
+            stockRows.front()->text(1).startsWith(QStringLiteral("blank example-five-axis-blank.step in a box 80")),
+            qPrintable(stockRows.front()->text(1)));
+        if (withGl()) {
+            window.view()->setViewPreset(camwb::gui::View3D::Preset::Isometric);
+            QTest::qWait(300);
+            const QImage view = window.view()->grabImage();
+            QVERIFY(showsSomething(view));
+            QVERIFY(view.save(shotsDir() + QStringLiteral("/five-axis-blank-view.png")));
+        }
+    }
+
+    // A "from model" stock stored with a box its model no longer gives (the model changed on
+    // disk): opening the job takes the box the model gives, says so, and the step can be undone.
+    void staleStockIsResolvedOnOpenAndSaid()
+    {
+        auto job = camwb::document::loadJob(CAMWB_EXAMPLE_JOB);
+        QVERIFY(job.ok());
+        job->stock.fromModel = camwb::document::StockFromModel{{1, 1, 0}, {1, 1, 2}};
+        job->stock.min = {-50, -50, -50};  // as if resolved against an older, larger model
+        job->stock.max = {150, 150, 50};
+        const QString path = QDir(QDir::tempPath()).filePath(QStringLiteral("camwb-stale-stock.camwb"));
+        QVERIFY(camwb::document::saveJob(job.value(), path.toStdString()).ok());
+
+        MainWindow window;
+        window.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&window));
+        auto prompter = std::make_unique<ScriptedPrompter>();
+        window.setPrompter(std::move(prompter));
+        QStringList warnings;
+        connect(&window.workbench(), &Workbench::message, this,
+                [&warnings](Workbench::Severity severity, const QString& text) {
+                    if (severity == Workbench::Severity::Warning)
+                        warnings << text;
+                });
+        QSignalSpy posted(&window.workbench(), &Workbench::postFinished);
+        QVERIFY(window.openJob(path));
+        QVERIFY(posted.wait(120000));
+        waitIdle(window);
+        const camwb::base::Vec3 lo = window.workbench().model().boundsMin(),
+                                hi = window.workbench().model().boundsMax();
+        const camwb::document::Stock& stock = window.workbench().job().stock;
+        QVERIFY(near(stock.min, lo - camwb::base::Vec3{1, 1, 0}));
+        QVERIFY(near(stock.max, hi + camwb::base::Vec3{1, 1, 2}));
+        QVERIFY2(warnings.filter(QStringLiteral("stock stored in the job")).size() == 1,
+                 qPrintable(warnings.join('\n')));
+        QCOMPARE(window.workbench().document().undoStack().count(), std::size_t(1));
+        QVERIFY(window.workbench().document().isModified());
+        // Undo brings the stored box back and it stays (checked once, on opening).
+        QVERIFY(window.actions().trigger(QStringLiteral("Cam.Edit.Undo")));
+        waitIdle(window);
+        QVERIFY(near(window.workbench().job().stock.min, {-50, -50, -50}));
+        QFile::remove(path);
     }
 };
 

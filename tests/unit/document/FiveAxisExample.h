@@ -31,4 +31,13 @@ inline const LoadedJob& fiveAxis()
     return loaded;
 }
 
+// The job with its stock as a plain box (the example's is a blank, file version 9): for the tests
+// of which version the operations themselves need.
+inline Job withBoxStock(Job job)
+{
+    job.stock.shape = Stock::Shape::Box;
+    job.stock.blankPath.clear();
+    return job;
+}
+
 }  // namespace camwb::document::test

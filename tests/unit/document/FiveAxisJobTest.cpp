@@ -21,6 +21,7 @@ namespace {
 constexpr double kPi = 3.14159265358979323846;
 
 using document::test::fiveAxis;
+using document::test::withBoxStock;
 
 Vec3 sideNormal(int quarter)
 {
@@ -64,7 +65,7 @@ TEST(FiveAxisJob, AnOperationSetsItsOwnTcpm)
     ASSERT_TRUE(reread) << reread.error().toString();
     EXPECT_EQ(reread.value().operations[static_cast<std::size_t>(swarf - job.operations.begin())].postProperties,
               swarf->postProperties);
-    EXPECT_NE(document::serializeJob(job).find("\"version\": 5"), std::string::npos);
+    EXPECT_NE(document::serializeJob(withBoxStock(job)).find("\"version\": 5"), std::string::npos);
     auto own = post(reread.value());
     ASSERT_TRUE(own) << own.error().toString();
     EXPECT_EQ(own.value().find("M128"), std::string::npos);  // the only five-axis operation is off
@@ -166,7 +167,7 @@ TEST(FiveAxisJob, TheProgramChangesToolsBeforeItTilts)
 
 TEST(FiveAxisJob, WorkingPlanesInTheJobFile)
 {
-    const document::Job& job = fiveAxis().job;
+    const document::Job job = withBoxStock(fiveAxis().job);
     ASSERT_EQ(job.operations.size(), 3u);
     EXPECT_EQ(job.operations[0].plane.mode, document::WorkingPlaneSpec::Mode::Flat);
     EXPECT_EQ(job.operations[1].plane.mode, document::WorkingPlaneSpec::Mode::Face);

@@ -20,6 +20,7 @@ constexpr double kPi = 3.14159265358979323846;
 constexpr int kSwarf = 2;  // the operation's index in the job
 
 using document::test::fiveAxis;
+using document::test::withBoxStock;
 
 std::vector<toolpath::ToolAxisMove> moves(const toolpath::Toolpath& tp)
 {
@@ -140,7 +141,7 @@ TEST(FiveAxisSwarf, AFaceThatIsNotRuledOrAPlaneIsRefused)
 
 TEST(FiveAxisSwarf, ParametersRoundTripThroughTheJobFile)
 {
-    document::Job job = fiveAxis().job;
+    document::Job job = withBoxStock(fiveAxis().job);  // the version the swarf operation needs
     ops::SwarfParams& p = std::get<ops::SwarfParams>(job.operations[kSwarf].params);
     p.climb = false;
     p.axialOffsetMm = 0.25;

@@ -134,3 +134,50 @@ TEST(SimTriDexel, FactoryPicksTheRepresentation)
     list.moves.back().toAxis = Vec3{1, 0, 1}.normalized();
     EXPECT_TRUE(anyToolTilts(list));
 }
+
+// A tool square to a floor tilted 30 degrees, its tip on the floor, touches the part and goes no
+// deeper: no gouge. 0.5 mm deeper is a gouge of about 0.5 mm, not the part's length the Y rays
+// (along the floor) see: each removed point's depth is the least of the three grids' rays.
+TEST(SimTriDexel, AToolOnATiltedFloorIsNoGouge)
+{
+    const double s = std::sin(kPi / 6), c = std::cos(kPi / 6);
+    TriangleMesh design = boxMesh({-20, -20, -20}, {20, 20, 0});
+    for (std::size_t v = 0; v < design.vertexCount(); ++v) {  // turned 30 degrees about Y
+        const float x = design.positions[3 * v], z = design.positions[3 * v + 2];
+        design.positions[3 * v] = float(c * x + s * z);
+        design.positions[3 * v + 2] = float(-s * x + c * z);
+    }
+    const Vec3 normal{s, 0, c};
+    base::Box3 bounds = design.bounds();
+    bounds.max = bounds.max + Vec3{0, 0, 10};
+    const ToolShape drill(makeTool("flat", 6));
+    for (const double deeper : {0.0, 0.5}) {
+        TriDexel stock(bounds, 0.1);
+        stock.setDesign(design, 0.02 + 0.05);
+        const Vec3 onFloor{2 * c, 3, -2 * s};  // a point of the tilted floor off its centre
+        Move plunge = makeMove(onFloor + normal * 8, onFloor + normal * -deeper);
+        plunge.fromAxis = plunge.toAxis = normal;
+        const CutResult cut = stock.cut(plunge, 0, drill);
+        EXPECT_GT(cut.removedMm3, 0);
+        if (deeper == 0)
+            EXPECT_EQ(cut.gougeMm, 0) << "at " << cut.gougeAt.x << ", " << cut.gougeAt.y << ", " << cut.gougeAt.z;
+        else
+            EXPECT_NEAR(cut.gougeMm, 0.5, 0.2);
+    }
+}
+
+// A tilted tool that retracts along the path it has just cut removes nothing: the spans' float
+// ends, cut again, are not material (they once summed to 0.0005 mm³ "removed at rapid").
+TEST(SimTriDexel, RetractingAlongItsOwnCutRemovesNothing)
+{
+    TriDexel stock(box({10, 10, 0}, {40, 40, 30}), 0.1);
+    const double s = std::sin(kPi / 6), c = std::cos(kPi / 6);
+    const Vec3 axis{-s, 0, c}, bottom{27, 25, 20};
+    const ToolShape drill(makeTool("flat", 6));
+    Move plunge = makeMove(bottom + axis * 12, bottom);
+    plunge.fromAxis = plunge.toAxis = axis;
+    EXPECT_GT(stock.cut(plunge, 0, drill).removedMm3, 50);
+    Move retract = makeMove(bottom, bottom + axis * 12, MoveKind::Rapid);
+    retract.fromAxis = retract.toAxis = axis;
+    EXPECT_EQ(stock.cut(retract, 1, drill).removedMm3, 0);
+}

@@ -12,6 +12,7 @@
 // The counts (loops, candidates) are printed as counters so the two sides are seen to do the same
 // work. Figures in docs/benchmarks.md; never asserted.
 #include "SliceTestUtil.h"
+#include "WavyModel.h"
 
 #include "ops/surface/DropCutter.h"
 #include "ops/surface/MeshSlicer.h"
@@ -111,39 +112,8 @@ BENCHMARK(BM_SphereSliceMesh)->Unit(benchmark::kMillisecond)->UseRealTime();
 
 // ---- The drop-cutter's spatial query (DropCutterBench's model and points).
 
-const sim::TriangleMesh& wavy()
-{
-    static const sim::TriangleMesh mesh = [] {
-        constexpr int n = 708;
-        auto f = [](double x, double y) {
-            const double r2 = (x - 50) * (x - 50) + (y - 50) * (y - 50);
-            return 3 * std::sin(x / 7) * std::cos(y / 9) + 1.5 * std::sin((x + 2 * y) / 4) +
-                   (r2 < 900 ? std::sqrt(900 - r2) - 15 : -15) * 0.5;
-        };
-        sim::TriangleMesh m;
-        for (int j = 0; j <= n; ++j)
-            for (int i = 0; i <= n; ++i) {
-                const double x = 100.0 * i / n, y = 100.0 * j / n;
-                m.positions.insert(m.positions.end(), {float(x), float(y), float(f(x, y))});
-            }
-        for (int j = 0; j < n; ++j)
-            for (int i = 0; i < n; ++i) {
-                const std::uint32_t a = j * (n + 1) + i, b = a + 1, c = a + n + 1, d = c + 1;
-                m.triangles.insert(m.triangles.end(), {a, b, d, a, d, c});
-            }
-        return m;
-    }();
-    return mesh;
-}
-
-std::vector<base::Vec2> gridPoints()
-{
-    std::vector<base::Vec2> points;
-    for (int j = 0; j < 200; ++j)
-        for (int i = 0; i < 200; ++i)
-            points.push_back({0.25 + 0.5 * i, 0.25 + 0.5 * j});
-    return points;
-}
+const sim::TriangleMesh& wavy() { return bench::wavyModel(); }
+std::vector<base::Vec2> gridPoints() { return bench::wavyGridPoints(); }
 
 constexpr double kRadius = 3;  // a D6 tool
 

@@ -3,6 +3,7 @@
 // of two triangles), a 6 mm ball and a 6 mm flat end mill, on 1 and 2 threads; building its index;
 // and ops::computeParallel on the same model (ball 6 mm, stepover 0.5 mm, tolerance 0.01 mm).
 // Figures in docs/benchmarks.md; never asserted in tests.
+#include "WavyModel.h"
 #include "ops/ParallelOp.h"
 #include "ops/surface/DropCutter.h"
 
@@ -14,30 +15,7 @@ namespace {
 
 using namespace camwb;
 
-const sim::TriangleMesh& model()
-{
-    static const sim::TriangleMesh mesh = [] {
-        constexpr int n = 708;
-        auto f = [](double x, double y) {
-            const double r2 = (x - 50) * (x - 50) + (y - 50) * (y - 50);
-            return 3 * std::sin(x / 7) * std::cos(y / 9) + 1.5 * std::sin((x + 2 * y) / 4) +
-                   (r2 < 900 ? std::sqrt(900 - r2) - 15 : -15) * 0.5;
-        };
-        sim::TriangleMesh m;
-        for (int j = 0; j <= n; ++j)
-            for (int i = 0; i <= n; ++i) {
-                const double x = 100.0 * i / n, y = 100.0 * j / n;
-                m.positions.insert(m.positions.end(), {float(x), float(y), float(f(x, y))});
-            }
-        for (int j = 0; j < n; ++j)
-            for (int i = 0; i < n; ++i) {
-                const std::uint32_t a = j * (n + 1) + i, b = a + 1, c = a + n + 1, d = c + 1;
-                m.triangles.insert(m.triangles.end(), {a, b, d, a, d, c});
-            }
-        return m;
-    }();
-    return mesh;
-}
+const sim::TriangleMesh& model() { return bench::wavyModel(); }
 
 toolpath::Tool tool(bool ball)
 {
@@ -64,10 +42,7 @@ BENCHMARK(BM_DropCutterIndex)->Arg(1)->Unit(benchmark::kMillisecond)->UseRealTim
 void BM_DropCutterPoints(benchmark::State& state)
 {
     const ops::surface::DropCutter cutter(model(), tool(state.range(0) != 0));
-    std::vector<base::Vec2> points;
-    for (int j = 0; j < 200; ++j)
-        for (int i = 0; i < 200; ++i)
-            points.push_back({0.25 + 0.5 * i, 0.25 + 0.5 * j});
+    const std::vector<base::Vec2> points = bench::wavyGridPoints();
     for (auto _ : state)
         benchmark::DoNotOptimize(cutter.dropZ(points, -100, int(state.range(1))));
     state.SetItemsProcessed(std::int64_t(state.iterations()) * std::int64_t(points.size()));

@@ -4,8 +4,10 @@
 // top (never less than at any point of the band, so never a gouge). The error is on the safe
 // side: the tool may stand up to one band (max(tolerance, H / 40): 0.075 mm for a 6 mm ball,
 // ToolCentreSettings::bandMm for finishing) off the model along the contact normal (each band costs
-// an offset and a union per level: 40 bounds the time). Every
-// offset is grown by the fit and chord errors so that the regions handed back stay clear.
+// an offset and a union per level: 40 bounds the time). A ball needs no bands: each triangle's
+// piece within [zt, zt + R] grown by the sphere itself is one convex polygon (BallReach.h), exact
+// to the chord whatever the band setting. Every offset is grown by the fit and chord errors so
+// that the regions handed back stay clear.
 #include "ops/surface/ToolCentre.h"
 
 #include "ops/surface/BallReach.h"

@@ -22,7 +22,8 @@ struct ToolCentreSettings {
     double toleranceMm = 0.01;
     // Height of the bands in which material near the tip is grown by the tool's radius at the band's
     // top: the tool may stand up to this much higher than it must. 0: max(tolerance, H / 40), H the
-    // height where the cutter reaches its full radius (a ball's radius, a bull-nose's corner).
+    // height where the cutter reaches its full radius (a ball's radius, a bull-nose's corner). A ball
+    // takes no bands: its material is taken exactly (BallReach.h).
     double bandMm = 0;
 };
 

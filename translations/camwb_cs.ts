@@ -588,16 +588,16 @@
         <translation>vc (m/min)</translation>
     </message>
     <message>
-        <source>fz (mm/tooth)</source>
-        <translation>fz (mm/zub)</translation>
-    </message>
-    <message>
         <source>Plunge (× feed)</source>
         <translation>Zanoření (× posuv)</translation>
     </message>
     <message>
         <source>Ramp (× feed)</source>
         <translation>Rampa (× posuv)</translation>
+    </message>
+    <message>
+        <source>fz (%1/tooth)</source>
+        <translation>fz (%1/zub)</translation>
     </message>
 </context>
 <context>
@@ -1300,10 +1300,6 @@
         <translation>Název</translation>
     </message>
     <message>
-        <source>D (mm)</source>
-        <translation>D (mm)</translation>
-    </message>
-    <message>
         <source>Flutes</source>
         <translation>Břity</translation>
     </message>
@@ -1312,20 +1308,24 @@
         <translation>Vřeteno (ot/min)</translation>
     </message>
     <message>
-        <source>Feed (mm/min)</source>
-        <translation>Posuv (mm/min)</translation>
-    </message>
-    <message>
-        <source>Plunge (mm/min)</source>
-        <translation>Zanoření (mm/min)</translation>
-    </message>
-    <message>
-        <source>Ramp (mm/min)</source>
-        <translation>Rampa (mm/min)</translation>
-    </message>
-    <message>
         <source>Cutting data for</source>
         <translation>Řezná data pro</translation>
+    </message>
+    <message>
+        <source>D (%1)</source>
+        <translation>D (%1)</translation>
+    </message>
+    <message>
+        <source>Feed (%1/min)</source>
+        <translation>Posuv (%1/min)</translation>
+    </message>
+    <message>
+        <source>Plunge (%1/min)</source>
+        <translation>Zanoření (%1/min)</translation>
+    </message>
+    <message>
+        <source>Ramp (%1/min)</source>
+        <translation>Rampa (%1/min)</translation>
     </message>
 </context>
 <context>
@@ -1423,10 +1423,6 @@
         <translation>, držák %1</translation>
     </message>
     <message>
-        <source>S%1, F%2 mm/min</source>
-        <translation>S%1, F%2 mm/min</translation>
-    </message>
-    <message>
         <source>(disabled)</source>
         <translation>(vypnuto)</translation>
     </message>
@@ -1489,6 +1485,10 @@
     <message>
         <source>T%1 %2, Ø%3</source>
         <translation>T%1 %2, Ø%3</translation>
+    </message>
+    <message>
+        <source>S%1, F%2 %3/min</source>
+        <translation>S%1, F%2 %3/min</translation>
     </message>
 </context>
 <context>
@@ -3528,22 +3528,6 @@ The job %1 is opened as it was saved.</source>
         <translation>Druh</translation>
     </message>
     <message>
-        <source>D (mm)</source>
-        <translation>D (mm)</translation>
-    </message>
-    <message>
-        <source>R (mm)</source>
-        <translation>R (mm)</translation>
-    </message>
-    <message>
-        <source>Flute (mm)</source>
-        <translation>Délka břitu (mm)</translation>
-    </message>
-    <message>
-        <source>Length (mm)</source>
-        <translation>Délka (mm)</translation>
-    </message>
-    <message>
         <source>Flutes</source>
         <translation>Břity</translation>
     </message>
@@ -3554,6 +3538,22 @@ The job %1 is opened as it was saved.</source>
     <message>
         <source>Holder</source>
         <translation>Držák</translation>
+    </message>
+    <message>
+        <source>D (%1)</source>
+        <translation>D (%1)</translation>
+    </message>
+    <message>
+        <source>R (%1)</source>
+        <translation>R (%1)</translation>
+    </message>
+    <message>
+        <source>Flute (%1)</source>
+        <translation>Délka břitu (%1)</translation>
+    </message>
+    <message>
+        <source>Length (%1)</source>
+        <translation>Délka (%1)</translation>
     </message>
 </context>
 <context>

@@ -229,7 +229,10 @@ void JobTree::addSetupItems(QTreeWidgetItem* jobItem)
         if (!tc.tool.holder.empty())
             text += tr(", holder %1").arg(qs(tc.tool.holder));
         auto* tool = row(tools, ItemKind::Tool, QStringLiteral("T%1").arg(tc.tool.number), text);
-        tool->setToolTip(1, tr("S%1, F%2 mm/min").arg(tc.spindleRpm).arg(tc.cuttingFeedMmPerMin));
+        tool->setToolTip(1, tr("S%1, F%2 %3/min")
+                                .arg(tc.spindleRpm)
+                                .arg(toDisplayUnit(tc.cuttingFeedMmPerMin, displayUnit()), 0, 'g', 6)
+                                .arg(lenUnit()));
     }
 }
 

@@ -1,6 +1,9 @@
 #include "gui/tools/ToolModels.h"
 
+#include "gui/shell/Preferences.h"
 #include "gui/shell/Workbench.h"
+
+#include <cmath>
 
 namespace camwb::gui {
 
@@ -16,6 +19,34 @@ bool toNumber(const QVariant& value, double minimum, double& out)
     out = number;
     return true;
 }
+
+// Lengths and feeds (mm, mm/min, mm/tooth) in the display unit, rounded as every length shows.
+QVariant shown(double mm)
+{
+    const LengthUnit unit = displayUnit();
+    const double scale = std::pow(10.0, lengthDecimals(unit));
+    return std::round(toDisplayUnit(mm, unit) * scale) / scale;
+}
+
+// A length or feed typed in the display unit into `mm`: refused (false) unless a number >=
+// `minimum` (mm). Typing back what is shown keeps the exact value (no rounding through inches).
+bool fromShown(const QVariant& value, double minimum, double& mm)
+{
+    bool ok = false;
+    const double number = value.toString().toDouble(&ok);
+    if (!ok)
+        return false;
+    if (number == shown(mm).toDouble())
+        return true;
+    const double typed = fromDisplayUnit(number, displayUnit());
+    if (typed < minimum)
+        return false;
+    mm = typed;
+    return true;
+}
+
+// "D (mm)", "Feed (in/min)": a column's title with the display unit in it.
+QString withUnit(const QString& pattern) { return pattern.arg(unitSymbol(displayUnit())); }
 
 }  // namespace
 
@@ -45,13 +76,13 @@ QVariant ToolTableModel::data(const QModelIndex& index, int role) const
     case Kind:
         return QString::fromStdString(t.kind);
     case Diameter:
-        return t.diameterMm;
+        return shown(t.diameterMm);
     case CornerRadius:
-        return t.cornerRadiusMm;
+        return shown(t.cornerRadiusMm);
     case FluteLength:
-        return t.fluteLengthMm;
+        return shown(t.fluteLengthMm);
     case Length:
-        return t.lengthMm;
+        return shown(t.lengthMm);
     case Flutes:
         return t.flutes;
     case PointAngle:
@@ -75,13 +106,13 @@ QVariant ToolTableModel::headerData(int section, Qt::Orientation orientation, in
     case Kind:
         return tr("Kind");
     case Diameter:
-        return tr("D (mm)");
+        return withUnit(tr("D (%1)"));
     case CornerRadius:
-        return tr("R (mm)");
+        return withUnit(tr("R (%1)"));
     case FluteLength:
-        return tr("Flute (mm)");
+        return withUnit(tr("Flute (%1)"));
     case Length:
-        return tr("Length (mm)");
+        return withUnit(tr("Length (%1)"));
     case Flutes:
         return tr("Flutes");
     case PointAngle:
@@ -124,20 +155,21 @@ bool ToolTableModel::setData(const QModelIndex& index, const QVariant& value, in
         t.kind = text.toStdString();
         break;
     case Diameter:
-        if (!toNumber(value, 0, number) || number <= 0)
+        number = t.diameterMm;
+        if (!fromShown(value, 0, number) || number <= 0)
             return false;
         t.diameterMm = number;
         break;
     case CornerRadius:
-        if (!toNumber(value, 0, t.cornerRadiusMm))
+        if (!fromShown(value, 0, t.cornerRadiusMm))
             return false;
         break;
     case FluteLength:
-        if (!toNumber(value, 0, t.fluteLengthMm))
+        if (!fromShown(value, 0, t.fluteLengthMm))
             return false;
         break;
     case Length:
-        if (!toNumber(value, 0, t.lengthMm))
+        if (!fromShown(value, 0, t.lengthMm))
             return false;
         break;
     case Flutes:
@@ -196,17 +228,17 @@ QVariant JobToolsModel::data(const QModelIndex& index, int role) const
     case Name:
         return QString::fromStdString(tc.tool.name);
     case Diameter:
-        return tc.tool.diameterMm;
+        return shown(tc.tool.diameterMm);
     case Flutes:
         return tc.tool.flutes;
     case Rpm:
         return tc.spindleRpm;
     case CuttingFeed:
-        return tc.cuttingFeedMmPerMin;
+        return shown(tc.cuttingFeedMmPerMin);
     case PlungeFeed:
-        return tc.plungeFeedMmPerMin;
+        return shown(tc.plungeFeedMmPerMin);
     case RampFeed:
-        return tc.rampFeedMmPerMin;
+        return shown(tc.rampFeedMmPerMin);
     case Materials: {
         QStringList materials;
         for (const ops::CuttingData& c : tc.cuttingData)
@@ -228,17 +260,17 @@ QVariant JobToolsModel::headerData(int section, Qt::Orientation orientation, int
     case Name:
         return tr("Name");
     case Diameter:
-        return tr("D (mm)");
+        return withUnit(tr("D (%1)"));
     case Flutes:
         return tr("Flutes");
     case Rpm:
         return tr("Spindle (rpm)");
     case CuttingFeed:
-        return tr("Feed (mm/min)");
+        return withUnit(tr("Feed (%1/min)"));
     case PlungeFeed:
-        return tr("Plunge (mm/min)");
+        return withUnit(tr("Plunge (%1/min)"));
     case RampFeed:
-        return tr("Ramp (mm/min)");
+        return withUnit(tr("Ramp (%1/min)"));
     case Materials:
         return tr("Cutting data for");
     default:
@@ -262,7 +294,7 @@ bool JobToolsModel::setData(const QModelIndex& index, const QVariant& value, int
                     : index.column() == PlungeFeed  ? &tc.plungeFeedMmPerMin
                     : index.column() == RampFeed    ? &tc.rampFeedMmPerMin
                                                     : nullptr;
-    if (!field || !toNumber(value, 0, *field))
+    if (!field || !(field == &tc.spindleRpm ? toNumber(value, 0, *field) : fromShown(value, 0, *field)))
         return false;
     m_workbench->updateTool(index.row(), tc);  // the job's change resets the model
     return true;
@@ -316,7 +348,7 @@ QVariant CuttingDataModel::data(const QModelIndex& index, int role) const
     case Vc:
         return c.vcMPerMin;
     case Fz:
-        return c.fzMm;
+        return toDisplayUnit(c.fzMm, displayUnit());  // not rounded: hundredths of a mm are its size
     case Plunge:
         return c.plungeFraction;
     case Ramp:
@@ -336,7 +368,7 @@ QVariant CuttingDataModel::headerData(int section, Qt::Orientation orientation, 
     case Vc:
         return tr("vc (m/min)");
     case Fz:
-        return tr("fz (mm/tooth)");
+        return withUnit(tr("fz (%1/tooth)"));
     case Plunge:
         return tr("Plunge (× feed)");
     case Ramp:
@@ -368,9 +400,13 @@ bool CuttingDataModel::setData(const QModelIndex& index, const QVariant& value, 
     case Vc:
         ok = toNumber(value, 0, c.vcMPerMin);
         break;
-    case Fz:
-        ok = toNumber(value, 0, c.fzMm);
+    case Fz: {
+        double fz = 0;
+        ok = toNumber(value, 0, fz);
+        if (ok)
+            c.fzMm = fromDisplayUnit(fz, displayUnit());
         break;
+    }
     case Plunge:
         ok = toNumber(value, 0, c.plungeFraction);
         break;

@@ -12,6 +12,7 @@
 #include "gui/shell/Workbench.h"
 #include "gui/tasks/JobSetupPanel.h"
 #include "gui/tasks/OperationPanel.h"
+#include "gui/tools/ToolModels.h"
 #include "gui/view3d/View3D.h"
 #include "ops/ContourOp.h"
 
@@ -24,6 +25,7 @@
 #include <QTest>
 #include <QTreeWidgetItem>
 
+#include <cmath>
 #include <memory>
 
 using camwb::document::OperationKind;
@@ -158,6 +160,55 @@ private slots:
         QCOMPARE(stepDown->text(), QStringLiteral("3.175 mm"));
         window.taskPanel()->reject();
         waitIdle(window);
+    }
+
+    // The job's tools and the library's table: lengths and feeds in inch, typed in inch, kept in mm.
+    void inchInTheToolTables()
+    {
+        MainWindow window;
+        window.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&window));
+        QSignalSpy posted(&window.workbench(), &Workbench::postFinished);
+        QVERIFY(window.openJob(QStringLiteral(CAMWB_EXAMPLE_JOB)));
+        QVERIFY(posted.wait(120000));
+        waitIdle(window);
+        setUnit(window, LengthUnit::Inch);
+        const std::unique_ptr<MainWindow, void (*)(MainWindow*)> backToMm(
+            &window, [](MainWindow* w) { setUnit(*w, LengthUnit::Millimetre); });
+
+        using camwb::gui::JobToolsModel;
+        JobToolsModel jobTools(window.workbench());
+        const camwb::ops::ToolController first = window.workbench().job().tools.at(0);
+        QCOMPARE(jobTools.headerData(JobToolsModel::CuttingFeed, Qt::Horizontal, Qt::DisplayRole).toString(),
+                 QStringLiteral("Feed (in/min)"));
+        QCOMPARE(jobTools.headerData(JobToolsModel::Diameter, Qt::Horizontal, Qt::DisplayRole).toString(),
+                 QStringLiteral("D (in)"));
+        QCOMPARE(jobTools.data(jobTools.index(0, JobToolsModel::Diameter), Qt::DisplayRole).toDouble(),
+                 std::round(first.tool.diameterMm / 25.4 * 1e4) / 1e4);
+        QVERIFY(jobTools.setData(jobTools.index(0, JobToolsModel::CuttingFeed), QStringLiteral("10"), Qt::EditRole));
+        QCOMPARE(window.workbench().job().tools.at(0).cuttingFeedMmPerMin, 254.0);
+        QCOMPARE(jobTools.data(jobTools.index(0, JobToolsModel::CuttingFeed), Qt::DisplayRole).toDouble(), 10.0);
+        // A plunge feed that is no round number of inches: typed back as shown, it stays as it was.
+        const double plunge = first.plungeFeedMmPerMin;
+        const QString shownPlunge =
+            jobTools.data(jobTools.index(0, JobToolsModel::PlungeFeed), Qt::DisplayRole).toString();
+        QVERIFY(jobTools.setData(jobTools.index(0, JobToolsModel::PlungeFeed), shownPlunge, Qt::EditRole));
+        QCOMPARE(window.workbench().job().tools.at(0).plungeFeedMmPerMin, plunge);
+        QVERIFY(!jobTools.setData(jobTools.index(0, JobToolsModel::CuttingFeed), QStringLiteral("-1"), Qt::EditRole));
+
+        using camwb::gui::ToolTableModel;
+        std::vector<camwb::ops::ToolController> library{first};
+        ToolTableModel table(&library);
+        QCOMPARE(table.headerData(ToolTableModel::Length, Qt::Horizontal, Qt::DisplayRole).toString(),
+                 QStringLiteral("Length (in)"));
+        QVERIFY(table.setData(table.index(0, ToolTableModel::Diameter), QStringLiteral("0.25"), Qt::EditRole));
+        QCOMPARE(library[0].tool.diameterMm, 6.35);
+        QCOMPARE(table.data(table.index(0, ToolTableModel::Diameter), Qt::DisplayRole).toDouble(), 0.25);
+
+        setUnit(window, LengthUnit::Millimetre);
+        QCOMPARE(jobTools.headerData(JobToolsModel::CuttingFeed, Qt::Horizontal, Qt::DisplayRole).toString(),
+                 QStringLiteral("Feed (mm/min)"));
+        QCOMPARE(jobTools.data(jobTools.index(0, JobToolsModel::CuttingFeed), Qt::DisplayRole).toDouble(), 254.0);
     }
 };
 

@@ -746,16 +746,8 @@
         <translation>Plocha %1 — není rovinná</translation>
     </message>
     <message>
-        <source>Face %1 — planar, Z %2, %3 mm²</source>
-        <translation>Plocha %1 — rovinná, Z %2, %3 mm²</translation>
-    </message>
-    <message>
         <source>Edge %1 (not in the model)</source>
         <translation>Hrana %1 (není v modelu)</translation>
-    </message>
-    <message>
-        <source>Edge %1 — %2, %3 mm</source>
-        <translation>Hrana %1 — %2, %3 mm</translation>
     </message>
     <message>
         <source>Hole %1 — Ø%2 at (%3, %4), Z %5 → %6%7</source>
@@ -770,12 +762,20 @@
         <translation>Díra %1 (není dírou modelu)</translation>
     </message>
     <message>
-        <source>Face %1 — planar, normal (%2, %3, %4), %5 mm²</source>
-        <translation>Plocha %1 — rovinná, normála (%2, %3, %4), %5 mm²</translation>
+        <source>Face %1 — %2, ruled, drive edge %3, %4 %5²</source>
+        <translation>Plocha %1 — %2, přímková, řídicí hrana %3, %4 %5²</translation>
     </message>
     <message>
-        <source>Face %1 — %2, ruled, drive edge %3, %4 mm²</source>
-        <translation>Plocha %1 — %2, přímková, řídicí hrana %3, %4 mm²</translation>
+        <source>Face %1 — planar, normal (%2, %3, %4), %5 %6²</source>
+        <translation>Plocha %1 — rovinná, normála (%2, %3, %4), %5 %6²</translation>
+    </message>
+    <message>
+        <source>Face %1 — planar, Z %2, %3 %4²</source>
+        <translation>Plocha %1 — rovinná, Z %2, %3 %4²</translation>
+    </message>
+    <message>
+        <source>Edge %1 — %2, %3 %4</source>
+        <translation>Hrana %1 — %2, %3 %4</translation>
     </message>
 </context>
 <context>
@@ -1197,14 +1197,6 @@
         <translation>Vyberte ve 3D pohledu rovinnou vodorovnou plochu modelu.</translation>
     </message>
     <message>
-        <source>Ø%1 × %2 mm, from Z %3 to %4</source>
-        <translation>Ø%1 × %2 mm, od Z %3 do %4</translation>
-    </message>
-    <message>
-        <source>%1 × %2 × %3 mm, from (%4, %5, %6)</source>
-        <translation>%1 × %2 × %3 mm, od (%4, %5, %6)</translation>
-    </message>
-    <message>
         <source>%1 = %2 (%3)</source>
         <translation>%1 = %2 (%3)</translation>
     </message>
@@ -1281,12 +1273,20 @@
         <translation>Tvarový polotovar nelze použít: %1</translation>
     </message>
     <message>
-        <source>Blank in a box of %1 × %2 × %3 mm, from (%4, %5, %6)</source>
-        <translation>Tvarový polotovar v kvádru %1 × %2 × %3 mm, od (%4, %5, %6)</translation>
-    </message>
-    <message>
         <source>Max</source>
         <translation>Max</translation>
+    </message>
+    <message>
+        <source>Ø%1 × %2 %5, from Z %3 to %4</source>
+        <translation>Ø%1 × %2 %5, od Z %3 do %4</translation>
+    </message>
+    <message>
+        <source>Blank in a box of %1 × %2 × %3 %7, from (%4, %5, %6)</source>
+        <translation>Tvarový polotovar v kvádru %1 × %2 × %3 %7, od (%4, %5, %6)</translation>
+    </message>
+    <message>
+        <source>%1 × %2 × %3 %7, from (%4, %5, %6)</source>
+        <translation>%1 × %2 × %3 %7, od (%4, %5, %6)</translation>
     </message>
 </context>
 <context>

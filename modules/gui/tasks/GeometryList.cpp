@@ -1,7 +1,6 @@
 #include "gui/tasks/GeometryList.h"
 
-#include <cmath>
-
+#include "gui/shell/Preferences.h"
 #include "gui/view3d/TaskOverlay.h"
 #include "occ/Model.h"
 
@@ -12,6 +11,7 @@
 #include <QSpinBox>
 
 #include <algorithm>
+#include <cmath>
 
 namespace camwb::gui {
 
@@ -20,7 +20,14 @@ namespace {
 constexpr int kKindRole = Qt::UserRole + 1;
 constexpr int kIndexRole = Qt::UserRole + 2;
 
-QString mm(double v) { return QString::number(v, 'f', 3); }
+// Lengths and areas in the display unit (the model is in mm).
+QString mm(double v) { return formatLengthNumber(v, displayUnit()); }
+QString area(double mm2)
+{
+    const LengthUnit unit = displayUnit();
+    return QString::number(toDisplayUnit(toDisplayUnit(mm2, unit), unit), 'f', unit == LengthUnit::Inch ? 3 : 1);
+}
+QString unit() { return unitSymbol(displayUnit()); }
 
 const char* curveName(occ::EdgeInfo::Curve curve)
 {
@@ -180,27 +187,27 @@ QString GeometryList::describe(Kind kind, int index) const
             // Curved ruled faces (swarf milling's) say what they are.
             auto ruled = m_model.swarfFace(index);
             if (ruled.ok())
-                return tr("Face %1 — %2, ruled, drive edge %3, %4 mm²")
+                return tr("Face %1 — %2, ruled, drive edge %3, %4 %5²")
                     .arg(index)
                     .arg(QString::fromStdString(ruled->surface))
                     .arg(ruled->edge)
-                    .arg(f.areaMm2, 0, 'f', 1);
+                    .arg(area(f.areaMm2), unit());
             return tr("Face %1 — not planar").arg(index);
         }
         if (std::abs(std::abs(f.normal.z) - 1) > 1e-9)  // inclined: Z is no level of it; its normal says where it faces
-            return tr("Face %1 — planar, normal (%2, %3, %4), %5 mm²")
+            return tr("Face %1 — planar, normal (%2, %3, %4), %5 %6²")
                 .arg(index)
                 .arg(f.normal.x, 0, 'f', 3)
                 .arg(f.normal.y, 0, 'f', 3)
                 .arg(f.normal.z, 0, 'f', 3)
-                .arg(f.areaMm2, 0, 'f', 1);
-        return tr("Face %1 — planar, Z %2, %3 mm²").arg(index).arg(mm(f.planeZ)).arg(f.areaMm2, 0, 'f', 1);
+                .arg(area(f.areaMm2), unit());
+        return tr("Face %1 — planar, Z %2, %3 %4²").arg(index).arg(mm(f.planeZ), area(f.areaMm2), unit());
     }
     if (kind == Edges) {
         const occ::EdgeInfo e = m_model.edge(index);
         if (e.index == 0)
             return tr("Edge %1 (not in the model)").arg(index);
-        return tr("Edge %1 — %2, %3 mm").arg(index).arg(QLatin1String(curveName(e.curve))).arg(mm(e.lengthMm));
+        return tr("Edge %1 — %2, %3 %4").arg(index).arg(QLatin1String(curveName(e.curve)), mm(e.lengthMm), unit());
     }
     for (const geom::Hole& h : m_holes)
         if (h.faceIndex == index)

@@ -3,6 +3,7 @@
 #include "gui/tasks/JobSetupPanel.h"
 
 #include "document/StockBlank.h"
+#include "gui/shell/Preferences.h"
 #include "gui/shell/Workbench.h"
 #include "gui/tasks/detail/JobSetupFields.h"
 
@@ -30,6 +31,8 @@ constexpr int kBoxRow = 0, kCylinderRow = 1, kBlankRow = 2;
 
 // A coordinate as the summary shows it: a blank's meshed bounds give -1.8e-15 for 0.
 double shown(double mm) { return std::abs(mm) < 5e-7 ? 0.0 : mm; }
+// A length of the summary in the display unit, as short as it is exact to a micrometre.
+QString inUnit(double mm) { return QString::number(toDisplayUnit(shown(mm), displayUnit()), 'g', 6); }
 
 int rowOf(Shape shape) { return shape == Shape::Cylinder ? kCylinderRow : shape == Shape::Blank ? kBlankRow : kBoxRow; }
 
@@ -208,20 +211,14 @@ void JobSetupPanel::showStock()
     m_explicitRows->setVisible(!fromModel && !blank);
     const base::Vec3 size = stock.max - stock.min;
     if (stock.shape == Shape::Cylinder)
-        m_stockSummary->setText(tr("Ø%1 × %2 mm, from Z %3 to %4")
-                                    .arg(size.x, 0, 'g', 6)
-                                    .arg(size.z, 0, 'g', 6)
-                                    .arg(stock.min.z)
-                                    .arg(stock.max.z));
+        m_stockSummary->setText(tr("Ø%1 × %2 %5, from Z %3 to %4")
+                                    .arg(inUnit(size.x), inUnit(size.z), inUnit(stock.min.z), inUnit(stock.max.z),
+                                         unitSymbol(displayUnit())));
     else
-        m_stockSummary->setText((blank ? tr("Blank in a box of %1 × %2 × %3 mm, from (%4, %5, %6)")
-                                       : tr("%1 × %2 × %3 mm, from (%4, %5, %6)"))
-                                    .arg(size.x, 0, 'g', 6)
-                                    .arg(size.y, 0, 'g', 6)
-                                    .arg(size.z, 0, 'g', 6)
-                                    .arg(shown(stock.min.x))
-                                    .arg(shown(stock.min.y))
-                                    .arg(shown(stock.min.z)));
+        m_stockSummary->setText((blank ? tr("Blank in a box of %1 × %2 × %3 %7, from (%4, %5, %6)")
+                                       : tr("%1 × %2 × %3 %7, from (%4, %5, %6)"))
+                                    .arg(inUnit(size.x), inUnit(size.y), inUnit(size.z), inUnit(stock.min.x),
+                                         inUnit(stock.min.y), inUnit(stock.min.z), unitSymbol(displayUnit())));
 }
 
 }  // namespace camwb::gui

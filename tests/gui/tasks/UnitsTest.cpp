@@ -20,6 +20,7 @@
 #include <QApplication>
 #include <QDoubleSpinBox>
 #include <QElapsedTimer>
+#include <QLabel>
 #include <QLineEdit>
 #include <QSignalSpy>
 #include <QTest>
@@ -147,6 +148,10 @@ private slots:
         QVERIFY(stockMinX);
         QCOMPARE(stockMinX->text(), QStringLiteral("-0.0787 in"));
         QCOMPARE(stockMinX->value(), -2.0);
+        // The summary too: 94 x 64 x 16 mm from (-2, -2, -16).
+        auto* summary = window.jobSetupPanel()->findChild<QLabel*>(QStringLiteral("stockSummary"));
+        QVERIFY(summary);
+        QCOMPARE(summary->text(), QStringLiteral("3.70079 × 2.51969 × 0.629921 in, from (-0.0787402, -0.0787402, 0)"));
         QVERIFY(!window.jobSetupPanel()->hasUnappliedChanges());  // showing in inch changes nothing
         window.jobSetupPanel()->reject();
         QTest::qWait(0);

@@ -81,6 +81,19 @@ void type(QDoubleSpinBox* box, const QString& text)
 
 }  // namespace
 
+// The example job open and posted in a shown window.
+bool showExample(MainWindow& window)
+{
+    window.show();
+    if (!QTest::qWaitForWindowExposed(&window))
+        return false;
+    QSignalSpy posted(&window.workbench(), &Workbench::postFinished);
+    if (!window.openJob(QStringLiteral(CAMWB_EXAMPLE_JOB)) || !posted.wait(120000))
+        return false;
+    waitIdle(window);
+    return true;
+}
+
 class UnitsTest : public QObject {
     Q_OBJECT
 
@@ -88,12 +101,7 @@ private slots:
     void inchInTheTreeAndThePanels()
     {
         MainWindow window;
-        window.show();
-        QVERIFY(QTest::qWaitForWindowExposed(&window));
-        QSignalSpy posted(&window.workbench(), &Workbench::postFinished);
-        QVERIFY(window.openJob(QStringLiteral(CAMWB_EXAMPLE_JOB)));
-        QVERIFY(posted.wait(120000));
-        waitIdle(window);
+        QVERIFY(showExample(window));
         setUnit(window, LengthUnit::Millimetre);  // whatever an earlier run left in the settings
         QCOMPARE(treeText(window, JobTree::ItemKind::Stock), QStringLiteral("box 94.000 × 64.000 × 16.000 mm"));
 
@@ -171,12 +179,7 @@ private slots:
     void inchInTheToolTables()
     {
         MainWindow window;
-        window.show();
-        QVERIFY(QTest::qWaitForWindowExposed(&window));
-        QSignalSpy posted(&window.workbench(), &Workbench::postFinished);
-        QVERIFY(window.openJob(QStringLiteral(CAMWB_EXAMPLE_JOB)));
-        QVERIFY(posted.wait(120000));
-        waitIdle(window);
+        QVERIFY(showExample(window));
         setUnit(window, LengthUnit::Inch);
         const std::unique_ptr<MainWindow, void (*)(MainWindow*)> backToMm(
             &window, [](MainWindow* w) { setUnit(*w, LengthUnit::Millimetre); });

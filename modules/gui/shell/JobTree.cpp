@@ -21,8 +21,6 @@ constexpr int kOperationRole = Qt::UserRole + 1;
 constexpr int kKindRole = Qt::UserRole + 2;
 
 // A length in the display unit (gui/shell/Preferences.h), without the unit / with it.
-QString len(double mm) { return formatLengthNumber(mm, displayUnit()); }
-QString lenUnit() { return unitSymbol(displayUnit()); }
 QString qs(const std::string& s) { return QString::fromStdString(s); }
 
 QString indexList(const std::vector<int>& indices)
@@ -186,22 +184,27 @@ void JobTree::addSetupItems(QTreeWidgetItem* jobItem)
     // A lathe job's stock is the shaft its grooves are cut in, made from their parameters.
     const bool lathe = !job.operations.empty() && !document::jobNeedsModel(job);
     using Shape = document::Stock::Shape;
-    const QString boxText = tr("box %1 × %2 × %3 %4").arg(len(size.x), len(size.y), len(size.z), lenUnit());
+    const QString boxText =
+        tr("box %1 × %2 × %3 %4")
+            .arg(formatLengthNumber(size.x), formatLengthNumber(size.y), formatLengthNumber(size.z), unitSymbol());
     auto* stock =
         row(jobItem, ItemKind::Stock, tr("Stock"),
-            lathe                                ? tr("the grooves' shaft (revolved)")
-            : !job.stock.box()                   ? tr("(none)")
-            : job.stock.shape == Shape::Cylinder ? tr("cylinder Ø%1 × %2 %3").arg(len(size.x), len(size.z), lenUnit())
+            lathe              ? tr("the grooves' shaft (revolved)")
+            : !job.stock.box() ? tr("(none)")
+            : job.stock.shape == Shape::Cylinder
+                ? tr("cylinder Ø%1 × %2 %3").arg(formatLengthNumber(size.x), formatLengthNumber(size.z), unitSymbol())
             : job.stock.shape == Shape::Blank
                 ? tr("blank %1 in a %2").arg(QFileInfo(QString::fromStdString(job.stock.blankPath)).fileName(), boxText)
                 : boxText);
     if (!lathe) {
         new QTreeWidgetItem(
             stock, {tr("Min"), QStringLiteral("%1, %2, %3 %4")
-                                   .arg(len(job.stock.min.x), len(job.stock.min.y), len(job.stock.min.z), lenUnit())});
+                                   .arg(formatLengthNumber(job.stock.min.x), formatLengthNumber(job.stock.min.y),
+                                        formatLengthNumber(job.stock.min.z), unitSymbol())});
         new QTreeWidgetItem(
             stock, {tr("Max"), QStringLiteral("%1, %2, %3 %4")
-                                   .arg(len(job.stock.max.x), len(job.stock.max.y), len(job.stock.max.z), lenUnit())});
+                                   .arg(formatLengthNumber(job.stock.max.x), formatLengthNumber(job.stock.max.y),
+                                        formatLengthNumber(job.stock.max.z), unitSymbol())});
     }
     row(jobItem, ItemKind::Wcs, tr("Work offset"),
         QString::fromStdString(document::workOffsetName(job.workOffset, job.postId)));
@@ -232,7 +235,7 @@ void JobTree::addSetupItems(QTreeWidgetItem* jobItem)
         tool->setToolTip(1, tr("S%1, F%2 %3/min")
                                 .arg(tc.spindleRpm)
                                 .arg(toDisplayUnit(tc.cuttingFeedMmPerMin, displayUnit()), 0, 'g', 6)
-                                .arg(lenUnit()));
+                                .arg(unitSymbol()));
     }
 }
 

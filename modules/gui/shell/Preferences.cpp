@@ -110,4 +110,8 @@ QString formatLength(double mm, LengthUnit unit) { return formatLengthNumber(mm,
 
 QString formatLength(double mm) { return formatLength(mm, displayUnit()); }
 
+QString formatLengthNumber(double mm) { return formatLengthNumber(mm, displayUnit()); }
+
+QString unitSymbol() { return unitSymbol(displayUnit()); }
+
 }  // namespace camwb::gui

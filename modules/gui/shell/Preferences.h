@@ -45,6 +45,7 @@ double toDisplayUnit(double mm, LengthUnit unit);
 double fromDisplayUnit(double value, LengthUnit unit);
 // "mm" or "in".
 QString unitSymbol(LengthUnit unit);
+QString unitSymbol();  // of displayUnit()
 // Decimals a length shows with: 3 in mm, 4 in inch (about the same resolution).
 int lengthDecimals(LengthUnit unit);
 
@@ -54,5 +55,6 @@ QString formatLength(double mm, LengthUnit unit);
 QString formatLength(double mm);  // in displayUnit()
 // The number alone ("12.500", "0.4921"), for texts that name the unit once.
 QString formatLengthNumber(double mm, LengthUnit unit);
+QString formatLengthNumber(double mm);  // in displayUnit()
 
 }  // namespace camwb::gui

@@ -20,14 +20,12 @@ namespace {
 constexpr int kKindRole = Qt::UserRole + 1;
 constexpr int kIndexRole = Qt::UserRole + 2;
 
-// Lengths and areas in the display unit (the model is in mm).
-QString mm(double v) { return formatLengthNumber(v, displayUnit()); }
+// An area in the display unit (the model is in mm).
 QString area(double mm2)
 {
     const LengthUnit unit = displayUnit();
     return QString::number(toDisplayUnit(toDisplayUnit(mm2, unit), unit), 'f', unit == LengthUnit::Inch ? 3 : 1);
 }
-QString unit() { return unitSymbol(displayUnit()); }
 
 const char* curveName(occ::EdgeInfo::Curve curve)
 {
@@ -191,7 +189,7 @@ QString GeometryList::describe(Kind kind, int index) const
                     .arg(index)
                     .arg(QString::fromStdString(ruled->surface))
                     .arg(ruled->edge)
-                    .arg(area(f.areaMm2), unit());
+                    .arg(area(f.areaMm2), unitSymbol());
             return tr("Face %1 — not planar").arg(index);
         }
         if (std::abs(std::abs(f.normal.z) - 1) > 1e-9)  // inclined: Z is no level of it; its normal says where it faces
@@ -200,20 +198,25 @@ QString GeometryList::describe(Kind kind, int index) const
                 .arg(f.normal.x, 0, 'f', 3)
                 .arg(f.normal.y, 0, 'f', 3)
                 .arg(f.normal.z, 0, 'f', 3)
-                .arg(area(f.areaMm2), unit());
-        return tr("Face %1 — planar, Z %2, %3 %4²").arg(index).arg(mm(f.planeZ), area(f.areaMm2), unit());
+                .arg(area(f.areaMm2), unitSymbol());
+        return tr("Face %1 — planar, Z %2, %3 %4²")
+            .arg(index)
+            .arg(formatLengthNumber(f.planeZ), area(f.areaMm2), unitSymbol());
     }
     if (kind == Edges) {
         const occ::EdgeInfo e = m_model.edge(index);
         if (e.index == 0)
             return tr("Edge %1 (not in the model)").arg(index);
-        return tr("Edge %1 — %2, %3 %4").arg(index).arg(QLatin1String(curveName(e.curve)), mm(e.lengthMm), unit());
+        return tr("Edge %1 — %2, %3 %4")
+            .arg(index)
+            .arg(QLatin1String(curveName(e.curve)), formatLengthNumber(e.lengthMm), unitSymbol());
     }
     for (const geom::Hole& h : m_holes)
         if (h.faceIndex == index)
             return tr("Hole %1 — Ø%2 at (%3, %4), Z %5 → %6%7")
                 .arg(index)
-                .arg(mm(h.diameterMm), mm(h.center.x), mm(h.center.y), mm(h.topZ), mm(h.bottomZ))
+                .arg(formatLengthNumber(h.diameterMm), formatLengthNumber(h.center.x), formatLengthNumber(h.center.y),
+                     formatLengthNumber(h.topZ), formatLengthNumber(h.bottomZ))
                 .arg(h.through ? tr(", through") : QString());
     return tr("Hole %1 (not a hole of the model)").arg(index);
 }

@@ -211,14 +211,14 @@ void JobSetupPanel::showStock()
     m_explicitRows->setVisible(!fromModel && !blank);
     const base::Vec3 size = stock.max - stock.min;
     if (stock.shape == Shape::Cylinder)
-        m_stockSummary->setText(tr("Ø%1 × %2 %5, from Z %3 to %4")
-                                    .arg(inUnit(size.x), inUnit(size.z), inUnit(stock.min.z), inUnit(stock.max.z),
-                                         unitSymbol(displayUnit())));
+        m_stockSummary->setText(
+            tr("Ø%1 × %2 %5, from Z %3 to %4")
+                .arg(inUnit(size.x), inUnit(size.z), inUnit(stock.min.z), inUnit(stock.max.z), unitSymbol()));
     else
         m_stockSummary->setText((blank ? tr("Blank in a box of %1 × %2 × %3 %7, from (%4, %5, %6)")
                                        : tr("%1 × %2 × %3 %7, from (%4, %5, %6)"))
                                     .arg(inUnit(size.x), inUnit(size.y), inUnit(size.z), inUnit(stock.min.x),
-                                         inUnit(stock.min.y), inUnit(stock.min.z), unitSymbol(displayUnit())));
+                                         inUnit(stock.min.y), inUnit(stock.min.z), unitSymbol()));
 }
 
 }  // namespace camwb::gui

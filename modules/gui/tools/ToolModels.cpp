@@ -45,9 +45,6 @@ bool fromShown(const QVariant& value, double minimum, double& mm)
     return true;
 }
 
-// "D (mm)", "Feed (in/min)": a column's title with the display unit in it.
-QString withUnit(const QString& pattern) { return pattern.arg(unitSymbol(displayUnit())); }
-
 }  // namespace
 
 ToolTableModel::ToolTableModel(std::vector<ops::ToolController>* tools, QObject* parent) :
@@ -106,13 +103,13 @@ QVariant ToolTableModel::headerData(int section, Qt::Orientation orientation, in
     case Kind:
         return tr("Kind");
     case Diameter:
-        return withUnit(tr("D (%1)"));
+        return tr("D (%1)").arg(unitSymbol());
     case CornerRadius:
-        return withUnit(tr("R (%1)"));
+        return tr("R (%1)").arg(unitSymbol());
     case FluteLength:
-        return withUnit(tr("Flute (%1)"));
+        return tr("Flute (%1)").arg(unitSymbol());
     case Length:
-        return withUnit(tr("Length (%1)"));
+        return tr("Length (%1)").arg(unitSymbol());
     case Flutes:
         return tr("Flutes");
     case PointAngle:
@@ -260,17 +257,17 @@ QVariant JobToolsModel::headerData(int section, Qt::Orientation orientation, int
     case Name:
         return tr("Name");
     case Diameter:
-        return withUnit(tr("D (%1)"));
+        return tr("D (%1)").arg(unitSymbol());
     case Flutes:
         return tr("Flutes");
     case Rpm:
         return tr("Spindle (rpm)");
     case CuttingFeed:
-        return withUnit(tr("Feed (%1/min)"));
+        return tr("Feed (%1/min)").arg(unitSymbol());
     case PlungeFeed:
-        return withUnit(tr("Plunge (%1/min)"));
+        return tr("Plunge (%1/min)").arg(unitSymbol());
     case RampFeed:
-        return withUnit(tr("Ramp (%1/min)"));
+        return tr("Ramp (%1/min)").arg(unitSymbol());
     case Materials:
         return tr("Cutting data for");
     default:
@@ -368,7 +365,7 @@ QVariant CuttingDataModel::headerData(int section, Qt::Orientation orientation, 
     case Vc:
         return tr("vc (m/min)");
     case Fz:
-        return withUnit(tr("fz (%1/tooth)"));
+        return tr("fz (%1/tooth)").arg(unitSymbol());
     case Plunge:
         return tr("Plunge (× feed)");
     case Ramp:

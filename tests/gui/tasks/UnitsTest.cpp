@@ -22,6 +22,7 @@
 #include <QElapsedTimer>
 #include <QLabel>
 #include <QLineEdit>
+#include <QListWidget>
 #include <QSignalSpy>
 #include <QTest>
 #include <QTreeWidgetItem>
@@ -124,6 +125,14 @@ private slots:
         window.editOperation(index);
         OperationPanel* panel = window.taskPanel();
         QVERIFY(panel);
+        // The geometry list describes the contour's faces and edges in inch too.
+        auto* geometry = panel->findChild<QListWidget*>(QStringLiteral("geometryList"));
+        QVERIFY(geometry && geometry->count() > 0);
+        for (int i = 0; i < geometry->count(); ++i) {
+            const QString text = geometry->item(i)->text();
+            QVERIFY2(!text.contains(QStringLiteral("mm")), qPrintable(text));
+            QVERIFY2(text.contains(QStringLiteral(" in")), qPrintable(text));
+        }
         auto* stepDown = panel->findChild<QDoubleSpinBox*>(QStringLiteral("stepDownBox"));
         QVERIFY(stepDown);
         QCOMPARE(stepDown->suffix(), QStringLiteral(" in"));

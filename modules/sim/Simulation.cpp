@@ -82,8 +82,11 @@ SimulationResult simulate(const toolpath::Toolpath& program, const SimulationSet
         result.removedMm3 = run.removedMm3();
         result.airCuttingMm = run.airCuttingMm();
         result.cuttingMm = run.cuttingMm();
-        if (!result.cancelled)
+        if (!result.cancelled) {
             result.deviation = stock->compare();
+            if (std::optional<Check> gouge = finishedStockGouge(result.deviation, result.moves, result.checks))
+                result.checks.push_back(std::move(*gouge));
+        }
     }
     if (setup.machine) {
         for (Check& c : machineLimitChecks(program, *setup.machine))

@@ -122,6 +122,32 @@ std::vector<Check> StockRun::checks() const
     return out;
 }
 
+std::optional<Check> finishedStockGouge(const Deviation& deviation, const MoveList& moves,
+                                        const std::vector<Check>& checks)
+{
+    if (deviation.maxGougeMm <= 0)
+        return std::nullopt;
+    for (const Check& c : checks)
+        if (c.kind == CheckKind::Gouge)
+            return std::nullopt;  // the cuts reported their gouges, the deepest among them
+    Check c;
+    c.kind = CheckKind::Gouge;
+    c.severity = base::Severity::Error;
+    c.valueMm = deviation.maxGougeMm;
+    c.at = deviation.gougeAt;
+    const bool known = deviation.gougeMove >= 0 && std::size_t(deviation.gougeMove) < moves.moves.size();
+    if (known) {
+        c.move = deviation.gougeMove;
+        c.record = moves.moves[std::size_t(deviation.gougeMove)].record;
+        c.moves = 1;
+        c.message = "gouge in the finished stock: " + mm(c.valueMm) + " into the part, last cut there by this block";
+    } else {
+        c.message = "the stock lies " + mm(c.valueMm) +
+                    " inside the part where no move cut: the stock or blank is smaller than the part there";
+    }
+    return c;
+}
+
 std::string describe(const Check& check)
 {
     if (!check.message.empty())

@@ -14,6 +14,7 @@
 #include <cstddef>
 #include <map>
 #include <memory>
+#include <optional>
 #include <set>
 
 namespace camwb::sim {
@@ -53,6 +54,12 @@ private:
     double m_airMm = 0;
     double m_cuttingMm = 0;
 };
+
+// The finished stock's deepest gouge (compare()) as an error check when no cut reported one: a
+// gouge is an error wherever it is found. It names the move that last cut there, or none when no
+// move did (then the stock itself lies inside the part: a blank smaller than the part).
+std::optional<Check> finishedStockGouge(const Deviation& deviation, const MoveList& moves,
+                                        const std::vector<Check>& checks);
 
 // A check's message from its kind and values ("gouge 0.512 mm into the model", ...); a check
 // that brought its own (machine limits) keeps it.

@@ -83,6 +83,12 @@ void TriDexel::setDesign(const TriangleMesh& model, double toleranceMm)
     m_hasDesign = !model.empty();
     for (Grid& g : m_grids)
         g.design = m_hasDesign ? insideSpans(model, g.rays) : std::vector<std::vector<Span>>{};
+    m_designDistance = m_hasDesign ? std::make_shared<MeshDistance>(model) : nullptr;
+}
+
+double TriDexel::trueDepth(const Vec3& p, double alongRays) const
+{
+    return m_designDistance ? m_designDistance->distance(p, alongRays) : alongRays;
 }
 
 double TriDexel::gridVolumeMm3(int axis) const
@@ -203,6 +209,8 @@ void TriDexel::cutPose(int a, const Vec3& tip, const Vec3& toolAxis, const base:
                         // the depth is also at most what the other grids' rays through it say.
                         const Vec3 at = origin + dir * (x - comp(m_box.min, a));
                         depth = std::min({depth, depthInside((a + 1) % 3, at), depthInside((a + 2) % 3, at)});
+                        if (depth > m_tolerance && depth > seen.gouge)
+                            depth = trueDepth(at, depth);
                         if (depth > m_tolerance && depth > seen.gouge) {
                             seen.gouge = depth;
                             seen.gougeAt = at;

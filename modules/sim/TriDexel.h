@@ -5,6 +5,7 @@
 // span from every ray it crosses, so its cost is set by the resolution, not by time samples.
 #pragma once
 
+#include "sim/MeshDistance.h"
 #include "sim/MeshRays.h"
 #include "sim/Stock.h"
 #include "sim/ToolShape.h"
@@ -55,11 +56,17 @@ private:
     // How deep `p` is inside the design along the nearest ray of grid `axis` (0 outside it).
     double depthInside(int axis, const Vec3& p) const;
     double vertexDeviation(const Vec3& p) const;
+    // A depth `alongRays` measured inside the design, confirmed by the exact distance from `p`
+    // to the design's surface (never more than the rays said).
+    double trueDepth(const Vec3& p, double alongRays) const;
+    // The latest move that cut any of the three rays through p's cells; -1: none did.
+    std::int64_t lastCutAt(const Vec3& p) const;
 
     base::Box3 m_box;
     double m_cell[3] = {1, 1, 1};
     int m_cells[3] = {2, 2, 2};
     Grid m_grids[3];
+    std::shared_ptr<const MeshDistance> m_designDistance;  // shared by clones: the design does not change
     double m_tolerance = 0;
     double m_spanSlack = 1e-7;  // shorter removals are float rounding, not material (constructor)
     bool m_hasDesign = false;

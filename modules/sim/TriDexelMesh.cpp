@@ -110,6 +110,19 @@ double TriDexel::vertexDeviation(const Vec3& p) const
     return best;
 }
 
+std::int64_t TriDexel::lastCutAt(const Vec3& p) const
+{
+    std::int64_t last = -1;
+    for (int a = 0; a < 3; ++a) {
+        const RayGrid& rg = m_grids[a].rays;
+        const int u = (a + 1) % 3, v = (a + 2) % 3;
+        const int i = std::clamp(int(std::floor((comp(p, u) - rg.u0) / rg.du)), 0, rg.nu - 1);
+        const int j = std::clamp(int(std::floor((comp(p, v) - rg.v0) / rg.dv)), 0, rg.nv - 1);
+        last = std::max<std::int64_t>(last, m_grids[a].lastCut[m_grids[a].at(i, j)]);
+    }
+    return last;
+}
+
 Deviation TriDexel::compare() const
 {
     Deviation out;
@@ -117,24 +130,26 @@ Deviation TriDexel::compare() const
     out.perVertex.assign(m.vertexCount(), 0.f);
     if (!m_hasDesign)
         return out;
-    const RayGrid& rz = m_grids[2].rays;
     for (std::size_t k = 0; k < m.vertexCount(); ++k) {
         const Vec3 p = m.vertex(k);
-        // A vertex sits on its column's corner: measure at the middle of the face it belongs to,
-        // nudged into the column whose triangle it came from (four vertices per quad, in order).
+        // A vertex sits on its column's corner: measure at the middle of the face it belongs to
+        // (four vertices per quad, in order), which lies on the face's cell boundary.
         const std::size_t first = k - k % 4;
         const Vec3 centre = (m.vertex(first) + m.vertex(first + 1) + m.vertex(first + 2) + m.vertex(first + 3)) * 0.25;
-        const double dev = vertexDeviation(centre);
+        double dev = vertexDeviation(centre);
         if (!std::isfinite(dev)) {  // no design along any of the three rays: beside the part
             out.perVertex[k] = float(m_box.max.z - m_box.min.z);
             if (p.z - m_box.min.z > out.maxOutsideMm)
                 out.maxOutsideMm = p.z - m_box.min.z, out.outsideAt = p;
             continue;
         }
+        // A face stands up to half a cell from where its rays found the surface, and a ray that
+        // grazes the design reads that offset several times over: a point the rays put inside
+        // the model is as deep as its exact distance from the model's surface says.
+        if (-dev > m_tolerance)
+            dev = -trueDepth(centre, -dev);
         out.perVertex[k] = float(dev);
-        const int i = std::clamp(int(std::floor((centre.x - rz.u0) / rz.du)), 0, rz.nu - 1);
-        const int j = std::clamp(int(std::floor((centre.y - rz.v0) / rz.dv)), 0, rz.nv - 1);
-        const std::int64_t move = m_grids[2].lastCut[m_grids[2].at(i, j)];
+        const std::int64_t move = lastCutAt(centre);
         if (dev > out.maxLeftoverMm)
             out.maxLeftoverMm = dev, out.leftoverAt = p, out.leftoverMove = move;
         if (-dev > m_tolerance && -dev > out.maxGougeMm)

@@ -2,7 +2,8 @@
 // wall is a gouge at that record, a rapid through the stock is an error at its record, a holder
 // that sticks out too little for a deep pocket hits the stock, a tool that does not cut at its
 // centre may ramp but not plunge, cutting with the spindle off is an error, a feed move in air is
-// a note with its length, and the machine's limits name their record.
+// a note with its length, the machine's limits name their record, and a gouge only the finished
+// stock shows is an error too.
 #include "sim/HeightField.h"
 #include "sim/Simulation.h"
 #include "sim/StockRun.h"
@@ -95,6 +96,41 @@ TEST(SimRun, TheSameSlotAlongTheWallIsClean)
     EXPECT_TRUE(of(r, CheckKind::Gouge).empty());
     EXPECT_EQ(r.count(base::Severity::Error), 0);
     EXPECT_NEAR(r.removedMm3, 10 * 40 * 10, 10 * 40 * 10 * 0.03);  // the slot: width x length x depth
+}
+
+// A gouge the finished stock shows and no cut reported is still an error: here the stock is
+// 1 mm lower than the part's top (no move cuts it), which only the comparison can find.
+TEST(SimRun, AStockInsideThePartIsAnErrorThoughNoMoveCutThere)
+{
+    sim::HeightField stock({{0, 0, 0}, {60, 40, 19}, false}, 0.2);
+    stock.setDesign(boxMesh({30, 0, 0}, {60, 40, 20}), 0.02);
+    Toolpath p = start(flat10());
+    p.add(Rapid{{10, -10, 30}});
+    p.add(Rapid{{10, -10, 10}});
+    p.add(Linear{{10, 50, 10}, 600});  // a slot well away from the part
+    const sim::SimulationResult r = run(p, stock);
+    const auto gouges = of(r, CheckKind::Gouge);
+    ASSERT_EQ(gouges.size(), 1u);
+    EXPECT_EQ(gouges[0].severity, base::Severity::Error);
+    EXPECT_EQ(gouges[0].record, -1);
+    EXPECT_NEAR(gouges[0].valueMm, 1, 0.15);
+    EXPECT_NE(gouges[0].message.find("where no move cut"), std::string::npos) << gouges[0].message;
+}
+
+// The comparison's gouge beside the cuts' own is not reported twice.
+TEST(SimRun, AGougeTheCutsReportedIsNotRepeatedByTheComparison)
+{
+    sim::HeightField stock({{0, 0, 0}, {60, 40, 20}, false}, 0.1);
+    stock.setDesign(boxMesh({30, 0, 0}, {60, 40, 20}), 0.02);
+    Toolpath p = start(flat10());
+    p.add(Rapid{{25.5, -10, 30}});
+    p.add(Rapid{{25.5, -10, 10}});
+    p.add(Linear{{25.5, 50, 10}, 600});  // record 5: half a millimetre into the wall all along
+    const sim::SimulationResult r = run(p, stock);
+    EXPECT_GT(r.deviation.maxGougeMm, 0.3);
+    const auto gouges = of(r, CheckKind::Gouge);
+    ASSERT_EQ(gouges.size(), 1u);
+    EXPECT_EQ(gouges[0].record, 5);
 }
 
 TEST(SimRun, ARapidThroughTheStockIsAnErrorAtItsRecord)

@@ -181,3 +181,88 @@ TEST(SimTriDexel, RetractingAlongItsOwnCutRemovesNothing)
     retract.fromAxis = retract.toAxis = axis;
     EXPECT_EQ(stock.cut(retract, 1, drill).removedMm3, 0);
 }
+
+namespace {
+
+// A 20 x 20 x 10 block with a flat-bottomed hole of radius 3, `depth` deep, down its top's
+// centre, turned 30 degrees about Y: the five-axis example's holes, square to an inclined face.
+// The hole's wall is a polygon of 128 sides through the circle (0.001 mm inside it).
+TriangleMesh tiltedBlockWithHole(double depth)
+{
+    constexpr int n = 128;
+    TriangleMesh m;
+    auto add = [&m](double x, double y, double z) {
+        m.positions.insert(m.positions.end(), {float(x), float(y), float(z)});
+        return std::uint32_t(m.vertexCount() - 1);
+    };
+    auto tri = [&m](std::uint32_t a, std::uint32_t b, std::uint32_t c) {
+        m.triangles.insert(m.triangles.end(), {a, b, c});
+    };
+    std::vector<std::uint32_t> rim, floor, edge;
+    for (int k = 0; k < n; ++k) {
+        const double t = kPi / 4 + 2 * kPi * k / n, cx = std::cos(t), sy = std::sin(t);
+        const double square = 10 / std::max(std::abs(cx), std::abs(sy));  // the top's edge in this direction
+        rim.push_back(add(3 * cx, 3 * sy, 0));
+        floor.push_back(add(3 * cx, 3 * sy, -depth));
+        edge.push_back(add(square * cx, square * sy, 0));
+    }
+    const std::uint32_t floorCentre = add(0, 0, -depth);
+    for (int k = 0; k < n; ++k) {
+        const int l = (k + 1) % n;
+        tri(rim[k], edge[k], edge[l]);  // the top around the hole, facing +z
+        tri(rim[k], edge[l], rim[l]);
+        tri(rim[k], rim[l], floor[l]);  // the wall, facing the hole's axis
+        tri(rim[k], floor[l], floor[k]);
+        tri(floorCentre, floor[k], floor[l]);  // the hole's floor, facing +z
+    }
+    // The block's four sides and bottom; the top's edge points lie on the sides' upper edges.
+    const std::uint32_t c[8] = {add(-10, -10, -10), add(10, -10, -10), add(10, 10, -10), add(-10, 10, -10),
+                                add(-10, -10, 0),   add(10, -10, 0),   add(10, 10, 0),   add(-10, 10, 0)};
+    tri(c[0], c[2], c[1]), tri(c[0], c[3], c[2]);
+    for (int s = 0; s < 4; ++s) {
+        const int t = (s + 1) % 4;
+        tri(c[s], c[t], c[4 + t]), tri(c[s], c[4 + t], c[4 + s]);
+    }
+    const double sn = std::sin(kPi / 6), cs = std::cos(kPi / 6);
+    for (std::size_t v = 0; v < m.vertexCount(); ++v) {
+        const float x = m.positions[3 * v], z = m.positions[3 * v + 2];
+        m.positions[3 * v] = float(cs * x + sn * z);
+        m.positions[3 * v + 2] = float(-sn * x + cs * z);
+    }
+    return m;
+}
+
+}  // namespace
+
+// A flat D6 tool square to the inclined face, plunged exactly to the floor of a D6 hole, fits the
+// hole: no gouge, neither while it cuts nor in the finished stock. The stock's faces next to the
+// hole stand up to half a cell off its wall, which the X rays grazing the floor read as 0.19 mm
+// into the part (the five-axis example's read-back showed that "gouge" with no block): a point
+// the rays put inside is as deep as its exact distance from the part. 0.4 mm deeper is a gouge,
+// found at that move.
+TEST(SimTriDexel, AToolThatFitsATiltedHoleIsNoGouge)
+{
+    const TriangleMesh design = tiltedBlockWithHole(8);
+    EXPECT_NEAR(design.volumeMm3(), 4000 - kPi * 9 * 8, 0.5);
+    const double sn = std::sin(kPi / 6), cs = std::cos(kPi / 6);
+    const Vec3 axis{sn, 0, cs}, floorCentre = axis * -8;
+    const ToolShape drill(makeTool("flat", 6));
+    for (const double deeper : {0.0, 0.4}) {
+        std::unique_ptr<TriDexel> stock = TriDexel::fromMesh(tiltedBlockWithHole(1e-3), 0.1);
+        stock->setDesign(design, 0.02 + 0.05);
+        Move plunge = makeMove(floorCentre + axis * 12, floorCentre - axis * deeper);
+        plunge.fromAxis = plunge.toAxis = axis;
+        const CutResult cut = stock->cut(plunge, 7, drill);
+        EXPECT_GT(cut.removedMm3, 200);
+        const Deviation deviation = stock->compare();
+        if (deeper == 0) {
+            EXPECT_EQ(cut.gougeMm, 0) << "at " << cut.gougeAt.x << ", " << cut.gougeAt.y << ", " << cut.gougeAt.z;
+            EXPECT_EQ(deviation.maxGougeMm, 0)
+                << "at " << deviation.gougeAt.x << ", " << deviation.gougeAt.y << ", " << deviation.gougeAt.z;
+        } else {
+            EXPECT_NEAR(cut.gougeMm, 0.4, 0.1);
+            EXPECT_NEAR(deviation.maxGougeMm, 0.4, 0.1);
+            EXPECT_EQ(deviation.gougeMove, 7);
+        }
+    }
+}

@@ -130,30 +130,59 @@ Deviation TriDexel::compare() const
     out.perVertex.assign(m.vertexCount(), 0.f);
     if (!m_hasDesign)
         return out;
-    for (std::size_t k = 0; k < m.vertexCount(); ++k) {
-        const Vec3 p = m.vertex(k);
-        // A vertex sits on its column's corner: measure at the middle of the face it belongs to
-        // (four vertices per quad, in order), which lies on the face's cell boundary.
-        const std::size_t first = k - k % 4;
+    // A face stands up to half a cell from where its rays found the surface, and a ray that
+    // grazes the design reads that offset several times over: a point the rays put inside the
+    // model is as deep as its exact distance from the model's surface says. That distance is
+    // sought within `near` at every face; deeper points (a gross error, e.g. a stock lower than
+    // the part) keep the rays' figure for their colour, and only those that could be the deepest
+    // are measured fully, deepest first.
+    const double nearMm = std::max(1.0, 10 * resolutionMm());
+    struct Deep {
+        double alongRays;
+        Vec3 at, centre;
+        std::int64_t move;
+    };
+    std::vector<Deep> deep;
+    // The mesh is quads, four vertices each in order: each is measured once at its middle,
+    // which lies on the face's cell boundary.
+    for (std::size_t first = 0; first + 3 < m.vertexCount(); first += 4) {
+        const Vec3 p = m.vertex(first);
         const Vec3 centre = (m.vertex(first) + m.vertex(first + 1) + m.vertex(first + 2) + m.vertex(first + 3)) * 0.25;
         double dev = vertexDeviation(centre);
         if (!std::isfinite(dev)) {  // no design along any of the three rays: beside the part
-            out.perVertex[k] = float(m_box.max.z - m_box.min.z);
-            if (p.z - m_box.min.z > out.maxOutsideMm)
-                out.maxOutsideMm = p.z - m_box.min.z, out.outsideAt = p;
+            std::fill_n(out.perVertex.begin() + std::ptrdiff_t(first), 4, float(m_box.max.z - m_box.min.z));
+            for (std::size_t k = first; k < first + 4; ++k) {
+                const Vec3 v = m.vertex(k);
+                if (v.z - m_box.min.z > out.maxOutsideMm)
+                    out.maxOutsideMm = v.z - m_box.min.z, out.outsideAt = v;
+            }
             continue;
         }
-        // A face stands up to half a cell from where its rays found the surface, and a ray that
-        // grazes the design reads that offset several times over: a point the rays put inside
-        // the model is as deep as its exact distance from the model's surface says.
-        if (-dev > m_tolerance)
-            dev = -trueDepth(centre, -dev);
-        out.perVertex[k] = float(dev);
         const std::int64_t move = lastCutAt(centre);
+        bool confirmed = true;
+        if (-dev > m_tolerance) {
+            const double within = std::min(-dev, nearMm);
+            const double depth = trueDepth(centre, within);
+            if (depth >= within && -dev > within) {
+                deep.push_back({-dev, p, centre, move});
+                confirmed = false;
+            } else {
+                dev = -depth;
+            }
+        }
+        std::fill_n(out.perVertex.begin() + std::ptrdiff_t(first), 4, float(dev));
         if (dev > out.maxLeftoverMm)
             out.maxLeftoverMm = dev, out.leftoverAt = p, out.leftoverMove = move;
-        if (-dev > m_tolerance && -dev > out.maxGougeMm)
+        if (confirmed && -dev > m_tolerance && -dev > out.maxGougeMm)
             out.maxGougeMm = -dev, out.gougeAt = p, out.gougeMove = move;
+    }
+    std::sort(deep.begin(), deep.end(), [](const Deep& a, const Deep& b) { return a.alongRays > b.alongRays; });
+    for (const Deep& d : deep) {
+        if (d.alongRays <= out.maxGougeMm)
+            break;  // the rays' figure bounds the true depth: none further can be deeper
+        const double depth = trueDepth(d.centre, d.alongRays);
+        if (depth > out.maxGougeMm)
+            out.maxGougeMm = depth, out.gougeAt = d.at, out.gougeMove = d.move;
     }
     return out;
 }

@@ -441,7 +441,8 @@ int simCommand(const std::vector<std::string>& args)
     if (!options.stl.empty()) {
         if (!result.stock)
             return usageError("--stl needs a stock (a job, or --stock/--model for an NC program)");
-        if (const base::Status written = sim::writeStl(result.stock->mesh(), options.stl, "camwb-cli sim"); !written)
+        if (const base::Status written = sim::writeStl(result.stock->fileMesh(), options.stl, "camwb-cli sim");
+            !written)
             return fail(written.error().toString());
     }
     if (!options.traceCsv.empty()) {

@@ -150,7 +150,140 @@ bool HeightField::sameBottom() const
 // One top vertex per column (the grid's outer vertices pushed out to the box's sides, so the mesh
 // covers the stock), triangles that never change while cutting, side walls down to the bottom,
 // and the bottom as a fan (a flat bottom) or a second grid (a blank's).
-TriangleMesh HeightField::mesh() const
+TriangleMesh HeightField::mesh() const { return buildMesh(false); }
+TriangleMesh HeightField::fileMesh() const { return buildMesh(true); }
+
+namespace {
+
+constexpr int kMinMergedLevel = 2;  // blocks of 4 x 4 cells: a fan of 16 triangles against 32
+
+int blocks(int cells, int level) { return (cells + (1 << level) - 1) >> level; }  // aligned blocks of 2^level cells
+
+// The triangles of a grid surface over nx x ny vertices (vertex (i, j) at base + j * nx + i, its
+// height heights[j * nx + i]), facing up or down; `merge`: each flat aligned block of 4 x 4 cells
+// or more (a quadtree's) as a fan around a new centre vertex through every vertex of its edges,
+// so that neighbours meet vertex to vertex.
+class GridSurface {
+public:
+    GridSurface(TriangleMesh& m, const std::vector<float>& heights, std::uint32_t base, int nx, int ny, bool up) :
+        m(m),
+        heights(heights),
+        base(base),
+        nx(nx),
+        ny(ny),
+        cx(nx - 1),
+        cy(ny - 1),
+        up(up)
+    {
+    }
+
+    void plain()
+    {
+        for (int j = 0; j < cy; ++j)
+            for (int i = 0; i < cx; ++i)
+                cell(i, j);
+    }
+
+    void merged()
+    {
+        // Per level, each aligned block's height where it is flat (NaN where not, or where the
+        // block reaches past the grid's cells); level 0 is a cell with its four vertices.
+        const float none = std::numeric_limits<float>::quiet_NaN();
+        flat.assign(1, std::vector<float>(std::size_t(cx) * cy, none));
+        for (int j = 0; j < cy; ++j)
+            for (int i = 0; i < cx; ++i) {
+                const float h = height(i, j);
+                if (height(i + 1, j) == h && height(i, j + 1) == h && height(i + 1, j + 1) == h)
+                    flat[0][std::size_t(j) * cx + i] = h;
+            }
+        for (int level = 1; (1 << (level - 1)) < std::max(cx, cy); ++level) {
+            const int size = 1 << level, bx = blocks(cx, level), by = blocks(cy, level), below = blocks(cx, level - 1);
+            std::vector<float> next(std::size_t(bx) * by, none);
+            const std::vector<float>& f = flat.back();
+            for (int j = 0; j < by; ++j)
+                for (int i = 0; i < bx; ++i) {
+                    if ((i + 1) * size > cx || (j + 1) * size > cy)
+                        continue;  // a block cut off by the grid's edge: its cells go on their own
+                    const float h = f[std::size_t(2 * j) * below + 2 * i];
+                    // NaN equals nothing: a block with one rough child is not flat.
+                    if (h == f[std::size_t(2 * j) * below + 2 * i + 1] &&
+                        h == f[std::size_t(2 * j + 1) * below + 2 * i] &&
+                        h == f[std::size_t(2 * j + 1) * below + 2 * i + 1])
+                        next[std::size_t(j) * bx + i] = h;
+                }
+            flat.push_back(std::move(next));
+        }
+        block(int(flat.size()) - 1, 0, 0);
+    }
+
+private:
+    float height(int i, int j) const { return heights[std::size_t(j) * nx + i]; }
+    std::uint32_t vertex(int i, int j) const { return base + std::uint32_t(std::size_t(j) * nx + i); }
+    void tri(std::uint32_t a, std::uint32_t b, std::uint32_t c)
+    {
+        if (up)
+            m.triangles.insert(m.triangles.end(), {a, b, c});
+        else
+            m.triangles.insert(m.triangles.end(), {a, c, b});
+    }
+    void cell(int i, int j)
+    {
+        const std::uint32_t a = vertex(i, j), b = a + 1, d = vertex(i, j + 1), c = d + 1;
+        tri(a, b, c), tri(a, c, d);
+    }
+    void block(int level, int bi, int bj)
+    {
+        if (bi >= cx || bj >= cy)
+            return;  // wholly past the grid's cells
+        const int size = 1 << level;
+        const float h = flat[std::size_t(level)][std::size_t(bj >> level) * blocks(cx, level) + (bi >> level)];
+        if (level >= kMinMergedLevel && !std::isnan(h)) {
+            // The rim counter-clockwise seen from above, through every vertex of its edges.
+            std::vector<std::uint32_t> rim;
+            for (int i = bi; i < bi + size; ++i)
+                rim.push_back(vertex(i, bj));
+            for (int j = bj; j < bj + size; ++j)
+                rim.push_back(vertex(bi + size, j));
+            for (int i = bi + size; i > bi; --i)
+                rim.push_back(vertex(i, bj + size));
+            for (int j = bj + size; j > bj; --j)
+                rim.push_back(vertex(bi, j));
+            const base::Vec3 lo = m.vertex(vertex(bi, bj)), hi = m.vertex(vertex(bi + size, bj + size));
+            m.positions.insert(m.positions.end(), {float((lo.x + hi.x) / 2), float((lo.y + hi.y) / 2), h});
+            const auto centre = std::uint32_t(m.vertexCount() - 1);
+            for (std::size_t k = 0; k < rim.size(); ++k)
+                tri(centre, rim[k], rim[(k + 1) % rim.size()]);
+        } else if (level == 0) {
+            cell(bi, bj);
+        } else {
+            const int half = size / 2;
+            for (int dj = 0; dj < 2; ++dj)
+                for (int di = 0; di < 2; ++di)
+                    block(level - 1, bi + di * half, bj + dj * half);
+        }
+    }
+
+    TriangleMesh& m;
+    const std::vector<float>& heights;
+    std::uint32_t base;
+    int nx, ny, cx, cy;
+    bool up;
+    std::vector<std::vector<float>> flat;
+};
+
+void gridSurface(TriangleMesh& m, const std::vector<float>& heights, std::uint32_t base, int nx, int ny, bool up,
+                 bool merge)
+{
+    GridSurface grid(m, heights, base, nx, ny, up);
+    if (merge)
+        grid.merged();
+    else
+        grid.plain();
+}
+
+}  // namespace
+
+TriangleMesh HeightField::buildMesh(bool mergeFlats) const
 {
     TriangleMesh m;
     const bool flatBottom = sameBottom();
@@ -168,11 +301,6 @@ TriangleMesh HeightField::mesh() const
     for (int j = 0; j < m_ny; ++j)
         for (int i = 0; i < m_nx; ++i)
             put(vx(i), vy(j), m_top[index(i, j)]);
-    for (int j = 0; j + 1 < m_ny; ++j)
-        for (int i = 0; i + 1 < m_nx; ++i) {
-            const auto a = std::uint32_t(index(i, j)), b = a + 1, d = std::uint32_t(index(i, j + 1)), c = d + 1;
-            tri(a, b, c), tri(a, c, d);
-        }
     // The perimeter counter-clockwise seen from above.
     std::vector<std::pair<int, int>> ring;
     for (int i = 0; i < m_nx - 1; ++i)
@@ -195,12 +323,6 @@ TriangleMesh HeightField::mesh() const
         for (int j = 0; j < m_ny; ++j)
             for (int i = 0; i < m_nx; ++i)
                 put(vx(i), vy(j), m_bottom[index(i, j)]);
-        for (int j = 0; j + 1 < m_ny; ++j)
-            for (int i = 0; i + 1 < m_nx; ++i) {
-                const auto a = std::uint32_t(n + index(i, j)), b = a + 1, d = std::uint32_t(n + index(i, j + 1)),
-                           c = d + 1;
-                tri(a, c, b), tri(a, d, c);
-            }
         for (std::size_t k = 0; k < ring.size(); ++k)
             below[k] = std::uint32_t(n + index(ring[k].first, ring[k].second));
     }
@@ -210,6 +332,10 @@ TriangleMesh HeightField::mesh() const
         const auto q = std::uint32_t(index(ring[next].first, ring[next].second));
         tri(below[k], below[next], q), tri(below[k], q, p);
     }
+    // The grids last: a merged block's centre comes after the vertices the walls index.
+    gridSurface(m, m_top, 0, m_nx, m_ny, true, mergeFlats);
+    if (!flatBottom)
+        gridSurface(m, m_bottom, std::uint32_t(n), m_nx, m_ny, false, mergeFlats);
     return m;
 }
 

@@ -61,6 +61,10 @@ public:
     virtual double resolutionMm() const = 0;
     // The remaining material's surface: closed, outward-facing (an STL of the cut part).
     virtual TriangleMesh mesh() const = 0;
+    // The same surface for a file (an STL): flat areas may be fewer, larger triangles, still
+    // closed and outward-facing. mesh() keeps one vertex per cell because compare()'s values and
+    // the playing view's updates are per vertex of it.
+    virtual TriangleMesh fileMesh() const { return mesh(); }
     // A copy: each operation can start from what the previous one left.
     virtual std::unique_ptr<Stock> clone() const = 0;
 };

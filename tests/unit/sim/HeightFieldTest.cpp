@@ -271,6 +271,29 @@ TEST(SimHeightField, MeshIsClosedItsStlHoldsTheVolumeAndUpdatesInPlace)
     EXPECT_TRUE(stock.takeChanged().empty());
 }
 
+// The file's mesh is the same closed surface with the flat areas merged: a pocket in a block
+// (499 x 399 cells: blocks cut off at the far edges) and a blank whose bottom is not flat.
+TEST(SimHeightField, FileMeshIsTheSameSurfaceInFewerTriangles)
+{
+    HeightField pocket(box({0, 0, 0}, {49.9, 39.9, 20}), 0.1);
+    const ToolShape tool(makeTool("flat", 6));
+    pocket.cut(makeMove({13, 13, 25}, {13, 13, 16}), 0, tool);
+    pocket.cut(makeMove({13, 13, 16}, {37, 27, 16}), 1, tool);
+    pocket.cut(makeMove({37, 27, 16}, {20, 30, 12.5}), 2, ToolShape(makeTool("ball", 4)));
+    TriangleMesh blank = boxMesh({0, 0, 0}, {40, 30, 10});
+    append(blank, boxMesh({0, 0, -5}, {10, 10, 0}));  // a foot under one corner
+    const auto footed = HeightField::fromMesh(blank, 0.25);
+    for (const Stock* stock : {static_cast<const Stock*>(&pocket), static_cast<const Stock*>(footed.get())}) {
+        const TriangleMesh full = stock->mesh(), file = stock->fileMesh();
+        EXPECT_TRUE(closedAndOriented(file));
+        EXPECT_NEAR(file.volumeMm3(), full.volumeMm3(), 1e-6 * full.volumeMm3());
+        EXPECT_NEAR(file.bounds().min.z, full.bounds().min.z, 1e-9);
+        EXPECT_NEAR(file.bounds().max.z, full.bounds().max.z, 1e-9);
+        EXPECT_LT(file.triangleCount() * 5, full.triangleCount())
+            << file.triangleCount() << " of " << full.triangleCount();
+    }
+}
+
 TEST(SimHeightField, BlankFromAMeshFillsItsInside)
 {
     TriangleMesh blank = boxMesh({0, 0, 0}, {40, 30, 10});

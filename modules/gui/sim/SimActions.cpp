@@ -88,7 +88,13 @@ void registerSimulatorActions(ActionRegistry& registry, SimPlayer* player,
             break;
         }
     };
-    QObject::connect(player, &SimPlayer::ready, player, updateFrame);
+    // A run the machine frame cannot show turns it off (a disabled button shown pressed would say
+    // it is on); clearing before the next run does not, so a five-axis run simulated again keeps it.
+    QObject::connect(player, &SimPlayer::ready, player, [player, updateFrame] {
+        if (player->machineFrameSupport() != MachineFrameSupport::Available)
+            player->setMachineFrame(false);
+        updateFrame();
+    });
     QObject::connect(player, &SimPlayer::cleared, player, updateFrame);
     updateFrame();
     auto update = [player, play, pause, back, step, jump, import, clearMeasured] {

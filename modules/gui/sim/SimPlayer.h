@@ -106,7 +106,7 @@ public:
 
     // The machine frame (Cam.Sim.MachineFrame): the tool along the spindle, the workpiece side
     // (stock, model, path, rotary table) turned by the table's axes at the playback's point.
-    // Kept as chosen across simulations; shown while machineFrameSupport() is Available.
+    // Shown while machineFrameSupport() is Available (the action turns it off for a run that is not).
     void setMachineFrame(bool on);
     bool machineFrame() const { return m_machineFrame; }
     bool showsMachineFrame() const;

@@ -559,7 +559,14 @@ int View3D::pickFace(const QPointF& widgetPosition, base::Vec3* point) const
     auto* faceOf = data ? vtkIntArray::SafeDownCast(data->GetCellData()->GetArray("face")) : nullptr;
     const vtkIdType cell = picker->GetCellId();
     if (point != nullptr) {
-        const double* at = picker->GetPickPosition();
+        // Back into work coordinates where the simulator's machine frame moved the model.
+        double at[4]{0, 0, 0, 1};
+        std::copy_n(picker->GetPickPosition(), 3, at);
+        if (d->workpiece) {
+            vtkNew<vtkMatrix4x4> back;
+            vtkMatrix4x4::Invert(d->workpiece, back);
+            back->MultiplyPoint(at, at);
+        }
         *point = {at[0], at[1], at[2]};
     }
     return faceOf != nullptr && cell >= 0 && cell < faceOf->GetNumberOfTuples() ? faceOf->GetValue(cell) : 0;

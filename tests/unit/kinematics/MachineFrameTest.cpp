@@ -94,3 +94,24 @@ TEST(MachineFrame, HeadHeadTurnsNothingOnTheTable)
     expectNear(m.turn(tool.axis), tool.axis, 1e-12, "axis");
     EXPECT_GT(std::abs(tool.axis.z - 1), 0.1);
 }
+
+TEST(MachineFrame, HeadTableTurnsTheTableAndKeepsTheHeadsTilt)
+{
+    // C turns the table about +Z through (15, -5) of the machine, B tilts the head about +Y.
+    KinematicChain chain;
+    chain.type = ChainType::HeadTable;
+    chain.joints = {{"C", true, {0, 0, 1}, {15, -5, 0}}, {"B", false, {0, 1, 0}, {2, 0, 180}}};
+    chain.workpieceZero = {40, 30, 10};
+    const std::array<double, 2> rotary{30, 40};
+    const RigidMotion m = machineFrameMotion(chain, rotary);
+    // The tool FK puts on the workpiece stands as the head holds it: B 40 about +Y.
+    const ToolPose tool = forwardKinematics(chain, {{100, 50, 20}, rotary}, 90);
+    const double b = 40 * M_PI / 180;
+    expectNear(m.turn(tool.axis), {std::sin(b), 0, std::cos(b)}, 1e-12, "axis");
+    // The table's axis stays where it is; a point beside it goes round by C 30.
+    const Vec3 axisPoint = chain.joints[0].pivot - chain.workpieceZero;
+    expectNear(m.apply(axisPoint), axisPoint, 1e-12, "on the C axis");
+    const double c = 30 * M_PI / 180;
+    expectNear(m.apply(axisPoint + Vec3{10, 0, 5}), axisPoint + Vec3{10 * std::cos(c), 10 * std::sin(c), 5}, 1e-12,
+               "beside it");
+}

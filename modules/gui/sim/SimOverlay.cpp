@@ -1,6 +1,6 @@
 #include "gui/sim/SimOverlay.h"
 
-#include "gui/sim/detail/MachineFrameActors.h"
+#include "gui/view3d/detail/MachineFrameActors.h"
 #include "gui/view3d/detail/ModelActors.h"
 #include "gui/view3d/detail/ToolpathScene.h"
 #include "sim/Moves.h"

@@ -1,9 +1,9 @@
 #include "gui/view3d/View3D.h"
 
 #include "gui/sim/SimOverlay.h"
-#include "gui/sim/detail/MachineFrameActors.h"
 #include "gui/view3d/TaskOverlay.h"
 #include "gui/view3d/VtkOpenGLWidget.h"
+#include "gui/view3d/detail/MachineFrameActors.h"
 #include "gui/view3d/detail/ModelActors.h"
 #include "gui/view3d/detail/SetupActors.h"
 #include "gui/view3d/detail/ToolpathScene.h"

@@ -1,4 +1,4 @@
-#include "gui/sim/detail/MachineFrameActors.h"
+#include "gui/view3d/detail/MachineFrameActors.h"
 
 #include "gui/view3d/detail/ModelActors.h"
 

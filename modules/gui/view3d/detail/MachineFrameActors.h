@@ -1,6 +1,6 @@
 // VTK side of the simulator's machine frame (gui/sim/MachineFrame): the rotary table's actors (the
 // disc and the mark at C = 0 that shows its turning) and the user matrix that moves the workpiece
-// side. Private to gui (SimOverlay.cpp, View3D.cpp).
+// side. Private to gui (SimOverlay.cpp, View3D.cpp): VTK stays out of the headers others include.
 #pragma once
 
 #include "gui/sim/MachineFrame.h"

@@ -479,6 +479,24 @@ private slots:
         QCOMPARE(overlay.stockMatrix(), overlay.tableMatrix());
         QVERIFY(!isIdentity(overlay.tableMatrix()));
 
+        // Playing in either frame from the same point: the matrices follow (rates printed, not asserted).
+        const double from = player->position();
+        auto playAWhile = [&](const char* frame) {
+            player->seek(from);
+            player->setSpeed(20);
+            QVERIFY(window.actions().trigger(QStringLiteral("Cam.Sim.Play")));
+            QTest::qWait(1500);
+            player->pause();
+            qInfo("%s frame while playing: %.1f frames/s drawn, %.2f ms GUI per step and stock frame", frame,
+                  player->stats().renderedFps, player->stats().meanUpdateMs);
+        };
+        playAWhile("machine");
+        QCOMPARE(overlay.stockMatrix(), overlay.tableMatrix());
+        machineFrame->trigger();
+        playAWhile("workpiece");
+        machineFrame->trigger();
+        QVERIFY(player->showsMachineFrame());
+
         machineFrame->trigger();  // off: everything back in the workpiece frame
         QVERIFY(!machineFrame->isChecked() && !player->showsMachineFrame());
         QVERIFY(isIdentity(overlay.tableMatrix()));

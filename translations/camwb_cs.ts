@@ -332,6 +332,26 @@
         <source>C&amp;lear Measured Trace</source>
         <translation>O&amp;dstranit naměřený záznam</translation>
     </message>
+    <message>
+        <source>&amp;Machine Frame</source>
+        <translation>Souřadnice &amp;stroje</translation>
+    </message>
+    <message>
+        <source>Show the scene as the machine sees it: the tool along the spindle, the stock, the model, the path and the rotary table turned by the table&apos;s axes (a head&apos;s axes tilt the tool)</source>
+        <translation>Zobrazit scénu tak, jak ji vidí stroj: nástroj v ose vřetena, polotovar, model, dráha a otočný stůl natočené osami stolu (osy hlavy naklápějí nástroj)</translation>
+    </message>
+    <message>
+        <source>Machine frame: simulate a five-axis program first</source>
+        <translation>Souřadnice stroje: nejprve simulujte pětiosý program</translation>
+    </message>
+    <message>
+        <source>Machine frame: no machine is chosen for this program, so no kinematic chain says what the table turns (choose a five-axis machine in the NC inspector)</source>
+        <translation>Souřadnice stroje: pro tento program není zvolen žádný stroj, takže žádný kinematický řetězec neříká, co stůl otáčí (zvolte pětiosý stroj v NC inspektoru)</translation>
+    </message>
+    <message>
+        <source>Machine frame: the machine %1 has no five-axis kinematic chain in its file, so nothing says what its table turns</source>
+        <translation>Souřadnice stroje: soubor stroje %1 neobsahuje pětiosý kinematický řetězec, takže nic neříká, co jeho stůl otáčí</translation>
+    </message>
 </context>
 <context>
     <name>ToolActions</name>

@@ -17,6 +17,8 @@ add_library(camwb_gui_widgets STATIC
   ${_camwb_gui_widgets_dir}/view3d/View3D.cpp
   ${_camwb_gui_widgets_dir}/sim/SimOverlay.h
   ${_camwb_gui_widgets_dir}/sim/SimOverlay.cpp
+  ${_camwb_gui_widgets_dir}/view3d/detail/MachineFrameActors.h
+  ${_camwb_gui_widgets_dir}/view3d/MachineFrameActors.cpp
   ${_camwb_gui_widgets_dir}/sim/SimChart.h
   ${_camwb_gui_widgets_dir}/sim/SimChart.cpp
   ${_camwb_gui_widgets_dir}/editor/NcStyles.h

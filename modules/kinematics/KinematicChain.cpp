@@ -183,6 +183,17 @@ TiltedAxes tiltedAxes(const KinematicChain& chain, const std::array<double, 2>& 
     return {vec(r * Vector3d::UnitX()), vec(r * Vector3d::UnitZ())};
 }
 
+RigidMotion machineFrameMotion(const KinematicChain& chain, const std::array<double, 2>& rotaryDeg)
+{
+    const Motion table = tableMotion(chain, rotaryDeg);
+    RigidMotion m;
+    for (int r = 0; r < 3; ++r)
+        for (int c = 0; c < 3; ++c)
+            m.rotation[static_cast<std::size_t>(3 * r + c)] = table.r(r, c);
+    m.translation = vec(table.t) - chain.workpieceZero;
+    return m;
+}
+
 Vec3 linearAxesFor(const KinematicChain& chain, const Vec3& tip, const std::array<double, 2>& rotaryDeg,
                    double toolLengthMm)
 {

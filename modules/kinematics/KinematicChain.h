@@ -104,6 +104,28 @@ struct TiltedAxes {
 };
 TiltedAxes tiltedAxes(const KinematicChain& chain, const std::array<double, 2>& rotaryDeg);
 
+// A rigid motion x -> rotation · x + translation (rotation row by row).
+struct RigidMotion {
+    std::array<double, 9> rotation{1, 0, 0, 0, 1, 0, 0, 0, 1};
+    Vec3 translation;
+
+    Vec3 turn(const Vec3& v) const
+    {
+        const auto& r = rotation;
+        return {r[0] * v.x + r[1] * v.y + r[2] * v.z, r[3] * v.x + r[4] * v.y + r[5] * v.z,
+                r[6] * v.x + r[7] * v.y + r[8] * v.z};
+    }
+    Vec3 apply(const Vec3& p) const { return turn(p) + translation; }
+};
+
+// The machine frame as the simulator's view shows it: where the table joints at `rotaryDeg`
+// carry a workpiece point, in machine coordinates less the workpiece zero, so the zero pose is
+// the identity and the view stays about the part. The tool tip and axis go through the same
+// motion (the tip is where it cuts the part): a table-table chain's axis comes out along +Z,
+// the spindle, a head-table chain's tilted by its head; a chain without table joints (head-head,
+// three-axis) gives the identity, nothing on the table turns.
+RigidMotion machineFrameMotion(const KinematicChain& chain, const std::array<double, 2>& rotaryDeg);
+
 const char* name(ChainType type);  // "three-axis", "table-table", "head-table", "head-head"
 
 }  // namespace camwb::kinematics

@@ -71,4 +71,23 @@ kinematics::MachinePose machinePoseAt(const kinematics::KinematicChain& chain, c
     return pose;
 }
 
+std::vector<std::array<double, 2>> rotaryAtMoveStarts(const kinematics::KinematicChain& chain, const MoveList& moves)
+{
+    std::vector<std::array<double, 2>> starts;
+    if (!chain.fiveAxis())
+        return starts;
+    starts.reserve(moves.moves.size());
+    std::array<double, 2> previous{0, 0};
+    for (const Move& move : moves.moves) {
+        starts.push_back(previous);
+        if (!move.moves() || !move.positionKnown)
+            continue;
+        const toolpath::Tool* tool = moves.tool(move.tool);
+        const double toolLength = tool != nullptr ? tool->lengthMm : 0;
+        for (int p = 0; p <= kRotaryPiecesPerMove; ++p)
+            previous = machinePoseAt(chain, move, double(p) / kRotaryPiecesPerMove, previous, toolLength).rotaryDeg;
+    }
+    return starts;
+}
+
 }  // namespace camwb::sim

@@ -8,6 +8,7 @@
 #include "sim/Moves.h"
 
 #include <array>
+#include <vector>
 
 namespace camwb::sim {
 
@@ -22,6 +23,17 @@ kinematics::ToolPose toolAt(const Move& move, double u);
 // nearest turn). A three-axis chain gives the linear axes only (rotary 0).
 kinematics::MachinePose machinePoseAt(const kinematics::KinematicChain& chain, const Move& move, double u,
                                       const std::array<double, 2>& previousRotaryDeg, double toolLengthMm);
+
+// A five-axis move is followed in this many pieces wherever its rotary axes are walked along a
+// program (the motion plan's speed caps, the playback's machine frame): a rotary axis that turns
+// fast in the middle is seen, and each piece's solution nearest the last keeps C on its turn.
+inline constexpr int kRotaryPiecesPerMove = 4;
+
+// The rotary angles (chain order) at the start of each move of `moves`, walked from 0 at the
+// program's start as the motion plan walks them: what a playback that jumps into a program needs
+// to ask machinePoseAt for the pose inside a move. Moves that stand keep the angles before them.
+// Empty for a chain that is not five-axis.
+std::vector<std::array<double, 2>> rotaryAtMoveStarts(const kinematics::KinematicChain& chain, const MoveList& moves);
 
 // The move's known rotary angles at its start (`end` false) or end, in chain order, when the
 // move carries both; false when it does not.

@@ -89,8 +89,8 @@ public:
         const double toolLength = tool != nullptr ? tool->lengthMm : 0;
         // A three-axis chain maps the tip linearly: one piece. A five-axis move is looked at in
         // quarters, so a rotary axis that turns fast in the middle still caps the speed.
-        const int pieces = m_chain.fiveAxis() ? 4 : 1;
-        std::array<AxisVector, 5> q{};
+        const int pieces = m_chain.fiveAxis() ? kRotaryPiecesPerMove : 1;
+        std::array<AxisVector, kRotaryPiecesPerMove + 1> q{};
         for (int p = 0; p <= pieces; ++p) {
             const auto pose = machinePoseAt(m_chain, move, double(p) / pieces, m_previous, toolLength);
             q[p] = axesOf(pose);

@@ -2,6 +2,7 @@
 
 #include "gui/actions/ActionRegistry.h"
 #include "gui/sim/SimPlayer.h"
+#include "kinematics/Machine.h"
 
 #include <QAction>
 #include <QCoreApplication>
@@ -58,6 +59,44 @@ void registerSimulatorActions(ActionRegistry& registry, SimPlayer* player,
                           [importMeasured] { importMeasured(); });
     QAction* clearMeasured =
         add({"Cam.Sim.ClearMeasured", Tr::tr("C&lear Measured Trace"), menu}, [player] { player->clearMeasured(); });
+    QAction* machineFrame = registry.add({"Cam.Sim.MachineFrame", Tr::tr("&Machine Frame"), menu, {}, false, true});
+    machineFrame->setCheckable(true);
+    QObject::connect(machineFrame, &QAction::toggled, player, [player](bool on) { player->setMachineFrame(on); });
+    QObject::connect(player, &SimPlayer::machineFrameChanged, machineFrame, &QAction::setChecked);
+    auto updateFrame = [player, machineFrame] {
+        const MachineFrameSupport support = player->machineFrameSupport();
+        machineFrame->setEnabled(support == MachineFrameSupport::Available);
+        switch (support) {
+        case MachineFrameSupport::Available:
+            machineFrame->setToolTip(Tr::tr("Show the scene as the machine sees it: the tool along the spindle, the "
+                                            "stock, the model, the path and the rotary table turned by the table's "
+                                            "axes (a head's axes tilt the tool)"));
+            break;
+        case MachineFrameSupport::NoRun:
+            machineFrame->setToolTip(Tr::tr("Machine frame: simulate a five-axis program first"));
+            break;
+        case MachineFrameSupport::NoMachine:
+            machineFrame->setToolTip(Tr::tr("Machine frame: no machine is chosen for this program, so no kinematic "
+                                            "chain says what the table turns (choose a five-axis machine in the NC "
+                                            "inspector)"));
+            break;
+        case MachineFrameSupport::NoChain:
+            machineFrame->setToolTip(
+                Tr::tr("Machine frame: the machine %1 has no five-axis kinematic chain in its file, so nothing says "
+                       "what its table turns")
+                    .arg(QString::fromStdString(player->run()->machine->id)));
+            break;
+        }
+    };
+    // A run the machine frame cannot show turns it off (a disabled button shown pressed would say
+    // it is on); clearing before the next run does not, so a five-axis run simulated again keeps it.
+    QObject::connect(player, &SimPlayer::ready, player, [player, updateFrame] {
+        if (player->machineFrameSupport() != MachineFrameSupport::Available)
+            player->setMachineFrame(false);
+        updateFrame();
+    });
+    QObject::connect(player, &SimPlayer::cleared, player, updateFrame);
+    updateFrame();
     auto update = [player, play, pause, back, step, jump, import, clearMeasured] {
         const bool has = player->hasRun();
         play->setEnabled(has && !player->isPlaying());

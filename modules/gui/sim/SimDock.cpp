@@ -205,8 +205,9 @@ QWidget* SimDock::makeResults()
 
 void SimDock::addActions(const ActionRegistry& registry)
 {
-    for (const char* id : {"Cam.Sim.Start", "Cam.Sim.Play", "Cam.Sim.Pause", "Cam.Sim.StepBack", "Cam.Sim.StepForward",
-                           "Cam.Sim.JumpToLine", "Cam.Sim.ImportMeasured", "Cam.Sim.ClearMeasured"})
+    for (const char* id :
+         {"Cam.Sim.Start", "Cam.Sim.Play", "Cam.Sim.Pause", "Cam.Sim.StepBack", "Cam.Sim.StepForward",
+          "Cam.Sim.JumpToLine", "Cam.Sim.MachineFrame", "Cam.Sim.ImportMeasured", "Cam.Sim.ClearMeasured"})
         if (QAction* action = registry.action(QLatin1String(id)))
             m_buttons->addAction(action);
 }

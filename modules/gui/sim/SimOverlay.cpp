@@ -1,5 +1,6 @@
 #include "gui/sim/SimOverlay.h"
 
+#include "gui/view3d/detail/MachineFrameActors.h"
 #include "gui/view3d/detail/ModelActors.h"
 #include "gui/view3d/detail/ToolpathScene.h"
 #include "sim/Moves.h"
@@ -175,9 +176,15 @@ struct SimOverlay::Private {
     vtkSmartPointer<vtkScalarBarActor> quantityBar;
     int markerCount = 0;
 
-    void add(vtkProp* prop, bool visible = true)
+    std::vector<vtkSmartPointer<vtkActor>> table;
+    vtkSmartPointer<vtkMatrix4x4> workpiece;  // the machine frame's motion; null: workpiece frame
+
+    // A prop of the workpiece side takes the machine frame's motion (a tool's does not).
+    void add(vtkProp* prop, bool visible = true, bool workpieceSide = true)
     {
         prop->SetVisibility(visible);
+        if (auto* placed = vtkProp3D::SafeDownCast(prop); placed != nullptr && workpieceSide)
+            placed->SetUserMatrix(workpiece);
         if (renderer != nullptr)
             renderer->AddViewProp(prop);
     }
@@ -226,6 +233,8 @@ void SimOverlay::clear()
     showColouredPath({}, {}, 0, 1, {}, {});
     showFindings({});
     showMeasured({}, {});
+    setTable(std::nullopt);
+    setWorkpieceMotion({});
 }
 
 void SimOverlay::Private::clearPath()
@@ -318,7 +327,7 @@ void SimOverlay::setTools(const std::map<int, std::vector<RevolvedPart>>& tools)
             auto actor = makeActor(revolve(part));
             actor->GetProperty()->SetColor(part.rgb[0], part.rgb[1], part.rgb[2]);
             actor->PickableOff();
-            d->add(actor, false);
+            d->add(actor, false, false);
             actors.push_back(actor);
         }
     }
@@ -535,5 +544,50 @@ void SimOverlay::Private::showPathActors(bool visible)
 bool SimOverlay::showsColouredPath() const { return d->coloured != nullptr; }
 
 int SimOverlay::markerCount() const { return d->markerCount; }
+
+void SimOverlay::setTable(const std::optional<RotaryTable>& table)
+{
+    for (auto& actor : d->table)
+        d->remove(actor);
+    d->table.clear();
+    if (table && table->radiusMm > 0)
+        for (auto& actor : makeTableActors(*table)) {
+            d->add(actor);
+            d->table.push_back(actor);
+        }
+    d->render();
+}
+
+bool SimOverlay::hasTableActor() const { return !d->table.empty(); }
+
+void SimOverlay::setWorkpieceMotion(const kinematics::RigidMotion& motion)
+{
+    d->workpiece = userMatrix(motion);
+    std::vector<vtkActor*> side{d->feedActor, d->rapidActor, d->currentActor, d->stock,  d->coloured,
+                                d->markers,   d->findings,   d->programmed,   d->nominal};
+    for (auto& actor : d->table)
+        side.push_back(actor);
+    for (vtkActor* actor : side)
+        if (actor != nullptr)
+            actor->SetUserMatrix(d->workpiece);
+    d->render();
+}
+
+namespace {
+
+std::array<double, 16> matrixOf(vtkActor* actor)
+{
+    std::array<double, 16> m{1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};
+    if (actor != nullptr && actor->GetUserMatrix() != nullptr)
+        for (int i = 0; i < 16; ++i)
+            m[static_cast<std::size_t>(i)] = actor->GetUserMatrix()->GetElement(i / 4, i % 4);
+    return m;
+}
+
+}  // namespace
+
+std::array<double, 16> SimOverlay::tableMatrix() const { return matrixOf(d->table.empty() ? nullptr : d->table[0]); }
+
+std::array<double, 16> SimOverlay::stockMatrix() const { return matrixOf(d->stock); }
 
 }  // namespace camwb::gui

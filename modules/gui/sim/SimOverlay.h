@@ -1,23 +1,27 @@
 // What the simulator draws in the 3D view: the tool (cutter, shank, holder as revolved shapes)
 // at its pose, the path travelled so far, the cut stock (plain, or coloured by its deviation from
 // the design model with a colour bar), the path coloured by an analysed quantity with its colour
-// bar and red markers at axis reversals, and a measured trace's nominal path beside the program. Owned by View3D
+// bar and red markers at axis reversals, a measured trace's nominal path beside the program, and
+// the rotary table under the stock, all of which the machine frame turns together. Owned by View3D
 // (View3D::simulation()), like the task overlay; VTK stays in the .cpp, so every call also works without OpenGL (it
 // keeps data).
 #pragma once
 
 #include "base/Vec.h"
+#include "gui/sim/MachineFrame.h"
 #include "gui/sim/RevolvedPart.h"
 #include "gui/sim/Timeline.h"
 
 #include <QObject>
 #include <QString>
 
+#include <array>
 #include <cstdint>
 
 #include <functional>
 #include <map>
 #include <memory>
+#include <optional>
 #include <vector>
 
 class vtkRenderer;
@@ -74,6 +78,18 @@ public:
     void showFindings(const std::vector<base::Vec3>& at);
     int findingCount() const;
     int markerCount() const;
+
+    // The rotary table under the stock (none removes it): it turns with the workpiece side.
+    void setTable(const std::optional<RotaryTable>& table);
+    bool hasTableActor() const;
+    // Where the workpiece side stands: the stock, the path (travelled, coloured, measured), the
+    // markers and the table move by `motion` (the machine frame); the tool does not, its pose is
+    // given in the frame shown. The identity puts everything back in the workpiece frame.
+    void setWorkpieceMotion(const kinematics::RigidMotion& motion);
+    // The 4x4 matrices (row by row) the table's and the stock's actors are drawn with: the
+    // identity while they stand in the workpiece frame (or do not exist).
+    std::array<double, 16> tableMatrix() const;
+    std::array<double, 16> stockMatrix() const;
 
 private:
     friend class View3D;

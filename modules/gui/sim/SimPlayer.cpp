@@ -123,6 +123,7 @@ void SimPlayer::finishBuild(std::shared_ptr<SimRun> run, quint64 generation)
         SimOverlay& overlay = m_view->simulation();
         overlay.setPath(&m_run->moves);
         overlay.setTools(m_run->toolParts);
+        overlay.setTable(rotaryTableOf(*m_run));
         m_view->setSimulationShown(m_run->stock != nullptr);
     }
     if (m_run->stock) {
@@ -195,8 +196,10 @@ void SimPlayer::clear()
     }
     if (m_view != nullptr) {
         m_view->simulation().clear();
+        m_view->setWorkpieceMotion({});
         m_view->setSimulationShown(false);
     }
+    m_frameMoved = false;
     if (m_chart != nullptr)
         m_chart->setSeries({}, {}, {});
     emit cleared();
@@ -304,7 +307,20 @@ void SimPlayer::apply()
     const MovePoint at = point();
     const ToolPose pose = m_run->timeline.poseAt(at);
     if (m_view != nullptr) {
-        m_view->simulation().showTool(pose);
+        // The machine frame moves the workpiece side by the table's pose; the tool's pose is
+        // given in the frame shown (the path is drawn in work coordinates, its actors moved).
+        ToolPose shown = pose;
+        if (showsMachineFrame()) {
+            const kinematics::RigidMotion motion = machineFrameAt(*m_run, at);
+            m_view->setWorkpieceMotion(motion);
+            shown.tip = motion.apply(pose.tip);
+            shown.axis = motion.turn(pose.axis);
+            m_frameMoved = true;
+        } else if (m_frameMoved) {
+            m_view->setWorkpieceMotion({});
+            m_frameMoved = false;
+        }
+        m_view->simulation().showTool(shown);
         m_view->simulation().showPathUpTo(at, pose.tip);
     }
     if (m_stock)
@@ -314,6 +330,23 @@ void SimPlayer::apply()
         m_chart->setCursorTime(m_position);
     emit positionChanged();
 }
+
+void SimPlayer::setMachineFrame(bool on)
+{
+    if (on == m_machineFrame)
+        return;
+    m_machineFrame = on;
+    if (m_run)
+        apply();
+    emit machineFrameChanged(on);
+}
+
+bool SimPlayer::showsMachineFrame() const
+{
+    return m_machineFrame && machineFrameSupport() == MachineFrameSupport::Available;
+}
+
+MachineFrameSupport SimPlayer::machineFrameSupport() const { return gui::machineFrameSupport(m_run.get()); }
 
 void SimPlayer::followEditor(int line)
 {

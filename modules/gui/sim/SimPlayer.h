@@ -2,11 +2,12 @@
 // worker thread (progress, cancel), then plays it: play, pause, block steps, jumps to a line or a
 // picked segment, speed. It moves the tool, the travelled path and the cut stock in the 3D view,
 // keeps the editor's cursor on the current block and follows the editor's and the view's picks
-// back, colours the path and the stock for the results, and overlays a measured trace. The dock
-// and the actions call it.
+// back, shows the machine frame of a five-axis machine, colours the path and the stock for the results, and overlays a
+// measured trace. The dock and the actions call it.
 #pragma once
 
 #include "base/Diagnostic.h"
+#include "gui/sim/MachineFrame.h"
 #include "gui/sim/MeasuredRun.h"
 #include "gui/sim/SimRun.h"
 #include "sim/Stock.h"
@@ -103,6 +104,14 @@ public:
     bool stockCaughtUp() const;
     PlaybackStats stats() const { return m_stats; }
 
+    // The machine frame (Cam.Sim.MachineFrame): the tool along the spindle, the workpiece side
+    // (stock, model, path, rotary table) turned by the table's axes at the playback's point.
+    // Shown while machineFrameSupport() is Available (the action turns it off for a run that is not).
+    void setMachineFrame(bool on);
+    bool machineFrame() const { return m_machineFrame; }
+    bool showsMachineFrame() const;
+    MachineFrameSupport machineFrameSupport() const;
+
 signals:
     void buildStarted();
     void buildProgress(int percent);
@@ -113,6 +122,7 @@ signals:
     void outOfDateChanged(bool outOfDate);
     void deviationReady();
     void measuredChanged();
+    void machineFrameChanged(bool on);
     void message(camwb::base::Severity severity, const QString& text);
 
 private:
@@ -141,6 +151,8 @@ private:
     bool m_playing = false;
     bool m_outOfDate = false;
     bool m_movingEditor = false;
+    bool m_machineFrame = false;
+    bool m_frameMoved = false;  // the view shows the workpiece side moved (undo it when leaving)
     double m_position = 0;
     double m_speed = 10;
     int m_shownLine = -1;

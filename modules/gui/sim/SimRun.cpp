@@ -3,6 +3,7 @@
 #include "document/Simulate.h"
 #include "gui/sim/SimAnalysis.h"
 #include "kinematics/Machine.h"
+#include "sim/MachineAxes.h"
 #include "sim/MotionPlan.h"
 #include "sim/Simulation.h"
 #include "sim/Stock.h"
@@ -108,11 +109,13 @@ std::shared_ptr<SimRun> buildSimRun(const SimRunRequest& request)
     run->machine = request.machine ? request.machine
                                    : std::make_shared<const kinematics::Machine>(kinematics::defaultLimitsMachine());
     const kinematics::Machine& machine = *run->machine;
+    run->machineChosen = request.machine != nullptr;
     if (!request.machine)
         run->notes.push_back("No machine chosen: the cycle time and the path analysis assume default axis limits "
                              "(choose the machine in the NC inspector)");
     if (!planInTime(request, machine, *run))
         return nullptr;
+    run->rotaryAtStart = sim::rotaryAtMoveStarts(machine.kinematics, run->moves);
     const auto trace = request.trace;
     run->timeline.setLineOfRecord([trace](std::size_t record) { return trace->lineOfRecord(record); });
     progress(request, 100);

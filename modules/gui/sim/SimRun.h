@@ -13,6 +13,7 @@
 #include "sim/Moves.h"
 #include "sim/Stock.h"
 
+#include <array>
 #include <atomic>
 #include <functional>
 #include <map>
@@ -52,7 +53,11 @@ struct SimRun {
     // The machine it was planned on (the default limits' when none was chosen): a measured trace
     // is carried onto the workpiece through its chain.
     std::shared_ptr<const kinematics::Machine> machine;
+    bool machineChosen = false;  // false: `machine` is the default limits' (no chain, no table)
     sim::MoveList moves;
+    // The rotary angles at each move's start (sim::rotaryAtMoveStarts; empty unless the machine
+    // is five-axis): the machine frame's pose anywhere in the program (gui/sim/MachineFrame).
+    std::vector<std::array<double, 2>> rotaryAtStart;
     Timeline timeline;         // over `moves`, in the motion plan's time
     double cycleSeconds = 0;   // the motion plan's (with accelerations)
     double simpleSeconds = 0;  // the distance / feed estimate of the program information

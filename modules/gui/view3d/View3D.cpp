@@ -3,6 +3,7 @@
 #include "gui/sim/SimOverlay.h"
 #include "gui/view3d/TaskOverlay.h"
 #include "gui/view3d/VtkOpenGLWidget.h"
+#include "gui/view3d/detail/MachineFrameActors.h"
 #include "gui/view3d/detail/ModelActors.h"
 #include "gui/view3d/detail/SetupActors.h"
 #include "gui/view3d/detail/ToolpathScene.h"
@@ -81,6 +82,7 @@ struct View3D::Private {
     QPointF pressPosition;
     bool pressed = false;
     Preset preset = Preset::Isometric;
+    vtkSmartPointer<vtkMatrix4x4> workpiece;  // the simulator's machine frame; null: work coordinates
 
     void render()
     {
@@ -412,6 +414,20 @@ void View3D::applyVisibility()
             actor->SetVisibility(!d->simulationShown);
     for (const auto& actor : d->latheActors)
         actor->SetVisibility(!d->simulationShown);
+    std::vector<vtkProp3D*> placed{d->modelActor, d->edgeActor, d->stockActor, d->workAxes, d->highlightActor};
+    for (const Private::ToolActors& actors : d->toolActors)
+        placed.insert(placed.end(), {actors.cut, actors.rapid});
+    for (vtkProp3D* prop : placed)
+        if (prop != nullptr)
+            prop->SetUserMatrix(d->workpiece);
+}
+
+void View3D::setWorkpieceMotion(const kinematics::RigidMotion& motion)
+{
+    d->simulation->setWorkpieceMotion(motion);
+    d->workpiece = userMatrix(motion);
+    applyVisibility();
+    d->render();
 }
 
 void View3D::setToolpathShown(bool shown)
@@ -473,6 +489,7 @@ void View3D::setHighlightedRecords(const std::vector<std::size_t>& records)
         d->highlightActor->GetProperty()->SetLineWidth(6.0f);
         d->highlightActor->GetProperty()->LightingOff();
         d->highlightActor->PickableOff();
+        d->highlightActor->SetUserMatrix(d->workpiece);
         d->renderer->AddActor(d->highlightActor);
     }
     d->render();
@@ -482,13 +499,19 @@ const std::vector<std::uint32_t>& View3D::highlightedSegments() const { return d
 
 namespace {
 
-ScreenProjection projectionOf(vtkRenderer* renderer, double width, double height)
+// `workpiece` (the machine frame's motion, may be null) first: a point of the backplot is drawn there.
+ScreenProjection projectionOf(vtkRenderer* renderer, double width, double height, vtkMatrix4x4* workpiece = nullptr)
 {
     ScreenProjection projection;
     projection.width = width;
     projection.height = height;
     const double aspect = height > 0 ? width / height : 1.0;
     vtkMatrix4x4* matrix = renderer->GetActiveCamera()->GetCompositeProjectionTransformMatrix(aspect, -1, 1);
+    vtkNew<vtkMatrix4x4> moved;
+    if (workpiece != nullptr) {
+        vtkMatrix4x4::Multiply4x4(matrix, workpiece, moved);
+        matrix = moved;
+    }
     for (int r = 0; r < 4; ++r)
         for (int c = 0; c < 4; ++c)
             projection.m[4 * r + c] = matrix->GetElement(r, c);
@@ -513,8 +536,8 @@ int View3D::pickSegment(const QPointF& widgetPosition, double tolerancePx) const
     if (d->gl == nullptr || !d->scene)
         return -1;
     const QPointF local = widgetPosition - QPointF(d->gl->mapTo(this, QPoint(0, 0)));
-    return d->scene->nearestSegment(projectionOf(d->renderer, d->gl->width(), d->gl->height()), local.x(), local.y(),
-                                    tolerancePx, d->hiddenTools);
+    return d->scene->nearestSegment(projectionOf(d->renderer, d->gl->width(), d->gl->height(), d->workpiece), local.x(),
+                                    local.y(), tolerancePx, d->hiddenTools);
 }
 
 TaskOverlay& View3D::overlay() const { return *d->overlay; }
@@ -536,7 +559,14 @@ int View3D::pickFace(const QPointF& widgetPosition, base::Vec3* point) const
     auto* faceOf = data ? vtkIntArray::SafeDownCast(data->GetCellData()->GetArray("face")) : nullptr;
     const vtkIdType cell = picker->GetCellId();
     if (point != nullptr) {
-        const double* at = picker->GetPickPosition();
+        // Back into work coordinates where the simulator's machine frame moved the model.
+        double at[4]{0, 0, 0, 1};
+        std::copy_n(picker->GetPickPosition(), 3, at);
+        if (d->workpiece) {
+            vtkNew<vtkMatrix4x4> back;
+            vtkMatrix4x4::Invert(d->workpiece, back);
+            back->MultiplyPoint(at, at);
+        }
         *point = {at[0], at[1], at[2]};
     }
     return faceOf != nullptr && cell >= 0 && cell < faceOf->GetNumberOfTuples() ? faceOf->GetValue(cell) : 0;

@@ -7,6 +7,7 @@
 #pragma once
 
 #include "base/Vec.h"
+#include "kinematics/KinematicChain.h"
 #include "sim/TriangleMesh.h"
 #include "sim/TurningStock.h"
 
@@ -121,6 +122,10 @@ public:
     // fight the model's surface where it is cut to size); picking segments works all the same.
     void setSimulationShown(bool shown);
     bool isSimulationShown() const;
+    // The simulator's machine frame: the model, the job's stock and axes, the backplot and the
+    // simulator's workpiece side (SimOverlay::setWorkpieceMotion) drawn moved by `motion`, and
+    // segment picking through it; the identity puts them back in work coordinates.
+    void setWorkpieceMotion(const kinematics::RigidMotion& motion);
 
     // The model face (1-based) under a widget position, 0 for none; `point` (when given) gets
     // where the click meets the model's surface (work coordinates). Needs OpenGL.

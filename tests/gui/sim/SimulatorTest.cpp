@@ -1,7 +1,8 @@
 // Drives the simulator dock in the real main window: Simulate on the example job's posted program,
 // play to the end, block steps and jumps through the action registry, the editor and the 3D view
 // following and leading the playback, the stock actor and its deviation map, the five-axis
-// example's path coloured by an analysed quantity with reversal markers, cancelling a long build,
+// example's path coloured by an analysed quantity with reversal markers, its machine frame (the
+// table and the stock turned by the rotary axes), cancelling a long build,
 // a program edited after simulating, and a measured trace imported, overlaid, cleared and marked
 // out of date. Runs under Xvfb (GL) and offscreen (no GL).
 #include "QtTestRun.h"
@@ -14,12 +15,14 @@
 #include "gui/shell/MainWindow.h"
 #include "gui/shell/ReportView.h"
 #include "gui/shell/Workbench.h"
+#include "gui/sim/MachineFrame.h"
 #include "gui/sim/MeasuredImportDialog.h"
 #include "gui/sim/SimChart.h"
 #include "gui/sim/SimDock.h"
 #include "gui/sim/SimOverlay.h"
 #include "gui/sim/SimPlayer.h"
 #include "gui/view3d/View3D.h"
+#include "kinematics/Machine.h"
 
 #include <QAbstractButton>
 #include <QAction>
@@ -172,6 +175,12 @@ private slots:
         QVERIFY(run->moves.moves.size() > 100);
         QCOMPARE(player->position(), 0.0);
         QVERIFY(window.findChild<QDockWidget*>(QStringLiteral("simDock"))->isVisible());
+        // A three-axis job: no machine frame (the action says why), no rotary table.
+        QAction* machineFrame = window.actions().action(QStringLiteral("Cam.Sim.MachineFrame"));
+        QVERIFY(machineFrame && machineFrame->isCheckable() && !machineFrame->isEnabled());
+        QVERIFY2(machineFrame->toolTip().startsWith(QLatin1String("Machine frame: ")),
+                 qPrintable(machineFrame->toolTip()));
+        QVERIFY(!window.view()->simulation().hasTableActor());
 
         playToEnd(window, 2000);
         camwb::gui::SimOverlay& overlay = window.view()->simulation();
@@ -390,6 +399,109 @@ private slots:
         window.view()->fitAll();
         if (withGl())
             saveShot(&window, QStringLiteral("simulator-five-axis-reversals.png"));
+    }
+
+    static bool isIdentity(const std::array<double, 16>& m)
+    {
+        for (int i = 0; i < 16; ++i)
+            if (std::abs(m[i] - (i % 5 == 0 ? 1.0 : 0.0)) > 1e-12)
+                return false;
+        return true;
+    }
+
+    // The machine frame of the five-axis example (mas-mcvl1000, B/C table-table): toggled through
+    // the registry, the rotary table and the stock turn by the table's pose at the playback's
+    // point (kinematics::machineFrameMotion), the tool stands along the spindle, and toggling off
+    // puts them back. Screenshots of both frames at a tilted pose.
+    void machineFrameTurnsTheWorkpieceSide()
+    {
+        MainWindow window;
+        window.resize(1600, 1000);
+        window.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&window));
+        openJob(window, QStringLiteral(CAMWB_FIVE_AXIS_JOB));
+        simulate(window);
+        SimPlayer* player = window.simPlayer();
+        const auto run = player->run();
+        camwb::gui::SimOverlay& overlay = window.view()->simulation();
+        QAction* machineFrame = window.actions().action(QStringLiteral("Cam.Sim.MachineFrame"));
+        QVERIFY(machineFrame && machineFrame->isEnabled() && !machineFrame->isChecked());
+        QCOMPARE(player->machineFrameSupport(), camwb::gui::MachineFrameSupport::Available);
+        QVERIFY(overlay.hasTableActor());  // in the workpiece frame too, standing still
+        QVERIFY(isIdentity(overlay.tableMatrix()));
+
+        // A tilted pose and a pose at another C with the tilt (the rotary angles the plan follows).
+        const auto& timeline = run->timeline;
+        std::optional<double> first, second;
+        std::array<double, 2> firstDeg{};
+        for (std::size_t m = 0; m < run->moves.moves.size() && !second; ++m) {
+            const double at = 0.5 * (timeline.start(m) + timeline.end(m));
+            const auto deg = camwb::gui::rotaryAt(*run, timeline.pointAt(at));
+            if (std::abs(deg[0]) < 10)
+                continue;
+            if (!first) {
+                first = at;
+                firstDeg = deg;
+            } else if (std::abs(deg[1] - firstDeg[1]) > 20) {
+                second = at;
+            }
+        }
+        QVERIFY2(first && second, "the example tilts B and turns C");
+        player->seek(*first);
+        QVERIFY(waitUntil([player] { return player->stockCaughtUp(); }));
+        QVERIFY(waitUntil([&overlay] { return overlay.hasStockActor(); }));  // the frame's queued delivery
+        QVERIFY(isIdentity(overlay.stockMatrix()));
+        window.view()->fitAll();
+        if (withGl())
+            saveShot(&window, QStringLiteral("simulator-workpiece-frame.png"));
+
+        machineFrame->trigger();
+        QVERIFY(machineFrame->isChecked() && player->showsMachineFrame());
+        const auto tilted = overlay.tableMatrix();
+        QVERIFY(!isIdentity(tilted));
+        QCOMPARE(overlay.stockMatrix(), tilted);
+        // The matrix is the chain's motion at the playback's point, and it stands the tool upright.
+        const camwb::kinematics::RigidMotion motion = camwb::kinematics::machineFrameMotion(
+            run->machine->kinematics, camwb::gui::rotaryAt(*run, player->point()));
+        for (int r = 0; r < 3; ++r)
+            for (int c = 0; c < 3; ++c)
+                QVERIFY(std::abs(tilted[4 * r + c] - motion.rotation[3 * r + c]) < 1e-9);
+        const camwb::base::Vec3 axis = motion.turn(timeline.poseAt(player->point()).axis);
+        QVERIFY2(std::abs(axis.z - 1) < 1e-6,
+                 qPrintable(QStringLiteral("%1 %2 %3").arg(axis.x).arg(axis.y).arg(axis.z)));
+        window.view()->fitAll();
+        if (withGl())
+            saveShot(&window, QStringLiteral("simulator-machine-frame.png"));
+
+        player->seek(*second);  // another C: the table and the stock turn on
+        QVERIFY(waitUntil([player] { return player->stockCaughtUp(); }));
+        QVERIFY(overlay.tableMatrix() != tilted);
+        QCOMPARE(overlay.stockMatrix(), overlay.tableMatrix());
+        QVERIFY(!isIdentity(overlay.tableMatrix()));
+
+        // Playing in either frame from the same point: the matrices follow (rates printed, not asserted).
+        const double from = player->position();
+        auto playAWhile = [&](const char* frame) {
+            player->seek(from);
+            player->setSpeed(20);
+            QVERIFY(window.actions().trigger(QStringLiteral("Cam.Sim.Play")));
+            QTest::qWait(1500);
+            player->pause();
+            qInfo("%s frame while playing: %.1f frames/s drawn, %.2f ms GUI per step and stock frame", frame,
+                  player->stats().renderedFps, player->stats().meanUpdateMs);
+        };
+        playAWhile("machine");
+        QCOMPARE(overlay.stockMatrix(), overlay.tableMatrix());
+        machineFrame->trigger();
+        playAWhile("workpiece");
+        machineFrame->trigger();
+        QVERIFY(player->showsMachineFrame());
+
+        machineFrame->trigger();  // off: everything back in the workpiece frame
+        QVERIFY(!machineFrame->isChecked() && !player->showsMachineFrame());
+        QVERIFY(isIdentity(overlay.tableMatrix()));
+        QVERIFY(isIdentity(overlay.stockMatrix()));
+        QVERIFY(overlay.hasTableActor());
     }
 
     void stepAndJumpThroughTheRegistry()

@@ -2,6 +2,7 @@
 // axis velocity limits, dwell/tool change/spindle ramp times, inverse time, cycle-time totals,
 // and the fixed-step samples on a three- and a five-axis machine.
 #include "sim/MotionPlan.h"
+#include "sim/MachineAxes.h"
 #include "sim/MotionSamples.h"
 
 #include "toolpath/ProgramStats.h"
@@ -367,4 +368,41 @@ TEST(MotionPlan, ATurnOntoANewPlaneTakesTheRotaryAxesTime)
         fastestA = std::max(fastestA, std::abs(samples[k].at.rotaryDeg[0] - samples[k - 1].at.rotaryDeg[0]) /
                                           (samples[k].at.time - samples[k - 1].at.time));
     EXPECT_LE(fastestA, 60 + 1e-6);  // never above A's speed
+}
+
+// The playback's machine frame jumps into a program: the angles at each move's start come from
+// the walk over the moves before it. A tilt to A 30 by the inverse kinematics, a tool change
+// (stands: keeps them), then C turned by the program's own angles past 180 and on to 270: the
+// start of the last move is at C 270, not wound back to -90.
+TEST(MachineAxes, RotaryAtMoveStartsFollowTheProgram)
+{
+    const kinematics::Machine m = seed003Machine();
+    Move tilt = feed({0, 0, 0}, {10, 0, 0}, 6000);
+    tilt.fiveAxis = true;
+    const std::array<double, 2> tilted{30, 0};
+    tilt.toAxis = kinematics::forwardKinematics(m.kinematics, {{}, tilted}).axis;
+    Move turn = feed({10, 0, 0}, {10, 0, 0}, 0);
+    turn.kind = MoveKind::Rapid;
+    turn.fiveAxis = true;
+    turn.fromAxis = turn.toAxis = tilt.toAxis;
+    turn.fromMachine.known = turn.toMachine.known = toolpath::RotaryAxes::kA | toolpath::RotaryAxes::kC;
+    turn.fromMachine.aDeg = turn.toMachine.aDeg = 30;
+    turn.toMachine.cDeg = 270;
+    Move last = feed({10, 0, 0}, {12, 0, 0}, 1000);
+    last.fiveAxis = true;
+    last.fromAxis = last.toAxis = kinematics::forwardKinematics(m.kinematics, {{}, {30, 270}}).axis;
+    sim::MoveList list;
+    list.moves = {tilt, pause(MoveKind::ToolChange, {10, 0, 0}), turn, last};
+    const auto starts = sim::rotaryAtMoveStarts(m.kinematics, list);
+    ASSERT_EQ(starts.size(), 4u);
+    EXPECT_NEAR(starts[0][0], 0, 1e-12);
+    EXPECT_NEAR(starts[1][0], 30, 1e-9);
+    EXPECT_NEAR(starts[1][1], 0, 1e-9);
+    EXPECT_EQ(starts[2], starts[1]);
+    EXPECT_NEAR(starts[3][0], 30, 1e-9);
+    EXPECT_NEAR(starts[3][1], 270, 1e-9);
+    // Inside the last move the pose continues from there (the same solution, C on its turn).
+    const auto inside = sim::machinePoseAt(m.kinematics, list.moves[3], 0.5, starts[3], 0);
+    EXPECT_NEAR(inside.rotaryDeg[1], 270, 1e-6);
+    EXPECT_TRUE(sim::rotaryAtMoveStarts(machine3().kinematics, list).empty());
 }

@@ -2,9 +2,9 @@
 // model"): ops::computeWaterline around a closed sphere of R50 (SliceTestUtil's sphereMesh) at
 // about 19k, 200k and 1M triangles, a 6 mm ball, no slope limit, contours from Z 45 down to Z 0
 // (scallop 1 mm: 115 levels; or, where a second argument gives it, that many levels evenly apart,
-// to time a slow build on the 1M model in less than an hour), tolerance 0.01 mm, all cores. The rows show how the cost
-// grows with the triangles; the contours' count is printed so runs are seen to do the same work. Figures in
-// docs/benchmarks.md; never asserted.
+// to time a slow build on the 1M model in minutes), tolerance 0.01 mm, all cores. The rows show
+// how the cost grows with the triangles; the CL records' count is printed so runs are seen to do
+// the same work. Figures in docs/benchmarks.md; never asserted.
 #include "SliceTestUtil.h"
 
 #include "ops/WaterlineOp.h"

@@ -132,7 +132,7 @@ base::Result<OpResult> computeWaterline(const SurfaceInput& input, const Waterli
     // Bands of the tolerance: a contour stands at most that much off the wall (finishing).
     const surface::ToolCentreRegions centres(*input.model, tc.tool, {params.stockMm, params.stockMm, tol, tol});
     // The contour a little higher only tells steep from shallow: four times the tolerance does.
-    const surface::ToolCentreRegions coarse(*input.model, tc.tool, {params.stockMm, params.stockMm, 4 * tol});
+    const surface::ToolCentreRegions coarse(centres, tc.tool, {params.stockMm, params.stockMm, 4 * tol});
     const std::vector<geom::Region> area = surface::toolCentreArea(input);
     const std::vector<double> levels = levelsOf(params, tc.tool);
     const std::vector<geom::Region> grownArea = geom::offsetRegions(area, tc.tool.diameterMm, tol);
@@ -152,7 +152,9 @@ base::Result<OpResult> computeWaterline(const SurfaceInput& input, const Waterli
     const auto passesAt = [&](std::size_t l) {
         const double z = levels[l];
         const std::vector<geom::Region> obstacle = centres.obstacle(z);
-        const std::vector<geom::Region> higherObstacle = coarse.obstacle(z + dz);
+        // Without a slope limit every wall is steep: the contour above is not asked.
+        const std::vector<geom::Region> higherObstacle =
+            std::isinf(reach) ? std::vector<geom::Region>{} : coarse.obstacle(z + dz);
         const geom::RegionIndex higher(higherObstacle);
         const std::vector<geom::Region> free = geom::subtract(grownArea, obstacle, tol);
         const geom::RegionIndex freeIndex(free);

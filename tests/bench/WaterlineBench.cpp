@@ -1,9 +1,10 @@
 // Waterline speed (issue 16: "drop-cutter and waterline take seconds, not minutes, on a 1M-triangle
 // model"): ops::computeWaterline around a closed sphere of R50 (SliceTestUtil's sphereMesh) at
-// about 10k, 100k and 1M triangles, a 6 mm ball, 10 contours from Z 45 down to Z 0 (step-down
-// 5 mm), tolerance 0.01 mm, all cores. The rows show how the cost grows with the triangles; the
-// contours' count is printed so runs are seen to do the same work. Figures in docs/benchmarks.md;
-// never asserted.
+// about 19k, 200k and 1M triangles, a 6 mm ball, no slope limit, contours from Z 45 down to Z 0
+// (scallop 1 mm: 115 levels; or, where a second argument gives it, that many levels evenly apart,
+// to time a slow build on the 1M model in minutes), tolerance 0.01 mm, all cores. The rows show
+// how the cost grows with the triangles; the CL records' count is printed so runs are seen to do
+// the same work. Figures in docs/benchmarks.md; never asserted.
 #include "SliceTestUtil.h"
 
 #include "ops/WaterlineOp.h"
@@ -14,7 +15,8 @@ namespace {
 
 using namespace camwb;
 
-// range(0): rings (segments twice that): 70 -> 9.7k triangles, 224 -> 100k, 707 -> 1.0M.
+// range(0): rings (segments twice that): 70 -> 19k triangles, 224 -> 200k, 500 -> 1.0M (a closed
+// sphere: half of them face up). range(1): the levels, 0 for the scallop's 115.
 void BM_WaterlineSphere(benchmark::State& state)
 {
     const int rings = int(state.range(0));
@@ -27,6 +29,10 @@ void BM_WaterlineSphere(benchmark::State& state)
     p.heights = {70, 60, 45, 0};
     p.scallopMm = 1;
     p.maxStepDownMm = 5;
+    if (state.range(1) > 0) {
+        p.scallopMm = 100;  // not the limit: the step-down is
+        p.maxStepDownMm = 45.0 / double(state.range(1));
+    }
     p.minSlopeDeg = 0;
     p.toleranceMm = 0.01;
     ops::ToolController tc;
@@ -48,7 +54,14 @@ void BM_WaterlineSphere(benchmark::State& state)
     state.counters["triangles"] = double(sphere.triangleCount());
     state.counters["records"] = double(records);
 }
-BENCHMARK(BM_WaterlineSphere)->Arg(70)->Arg(224)->Arg(707)->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(1);
+BENCHMARK(BM_WaterlineSphere)
+    ->Args({70, 0})
+    ->Args({224, 0})
+    ->Args({500, 0})
+    ->Args({500, 12})
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime()
+    ->Iterations(1);
 
 }  // namespace
 

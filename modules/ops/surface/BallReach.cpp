@@ -14,6 +14,7 @@ constexpr double kPi = 3.14159265358979323846;
 struct Support {
     double h = -std::numeric_limits<double>::infinity();
     base::Vec2 at;
+    base::Vec2 u;  // its direction (kept: the corners ask it again, and sin and cos cost)
 };
 
 // Along the edge a-b the support in direction u is the largest u.p_xy + sqrt(r^2 - (p_z - zc)^2):
@@ -30,7 +31,7 @@ void edgeSupport(base::Vec2 u, const base::Vec3& a, const base::Vec3& b, double 
         const base::Vec2 q{a.x + (b.x - a.x) * t + u.x * w, a.y + (b.y - a.y) * t + u.y * w};
         const double value = u.x * q.x + u.y * q.y;
         if (value > best.h)
-            best = {value, q};
+            best.h = value, best.at = q;
     };
     at(0);
     at(1);
@@ -49,6 +50,7 @@ struct Reach {
     {
         const base::Vec2 u{std::cos(angle), std::sin(angle)};
         Support best;
+        best.u = u;
         for (std::size_t i = 0; i < piece.size(); ++i)
             edgeSupport(u, piece[i], piece[(i + 1) % piece.size()], zc, r, grow, best);
         return best;
@@ -60,7 +62,7 @@ struct Reach {
     void corners(double a0, const Support& s0, double a1, const Support& s1, int depth,
                  std::vector<base::Vec2>& out) const
     {
-        const base::Vec2 u0{std::cos(a0), std::sin(a0)}, u1{std::cos(a1), std::sin(a1)};
+        const base::Vec2 u0 = s0.u, u1 = s1.u;
         const double det = u0.x * u1.y - u0.y * u1.x;
         const base::Vec2 c{(s0.h * u1.y - s1.h * u0.y) / det, (s1.h * u0.x - s0.h * u1.x) / det};
         const base::Vec2 d{s1.at.x - s0.at.x, s1.at.y - s0.at.y};
@@ -99,6 +101,7 @@ std::vector<base::Vec2> ballReach(const std::vector<base::Vec3>& piece, double z
     for (int k = 0; k < kStart; ++k)
         s[k] = reach.support(2 * kPi * k / kStart);
     s[kStart] = s[0];
+    s[kStart].u = {std::cos(2 * kPi), std::sin(2 * kPi)};  // as the angle gives it, to the last bit
     for (int k = 0; k < kStart; ++k)
         reach.corners(2 * kPi * k / kStart, s[k], 2 * kPi * (k + 1) / kStart, s[k + 1], 12, out);
     return out;

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <functional>
 #include <limits>
 
@@ -34,6 +35,19 @@ std::vector<base::Vec3> clipZ(const std::vector<base::Vec3>& poly, double level,
         }
     }
     return out;
+}
+
+// Interleaves the low 16 bits of x and y (a Morton code: near codes, near cells).
+std::uint32_t morton(std::uint32_t x, std::uint32_t y)
+{
+    const auto spread = [](std::uint32_t v) {
+        v &= 0xffff;
+        v = (v | (v << 8)) & 0x00ff00ff;
+        v = (v | (v << 4)) & 0x0f0f0f0f;
+        v = (v | (v << 2)) & 0x33333333;
+        return (v | (v << 1)) & 0x55555555;
+    };
+    return spread(x) | (spread(y) << 1);
 }
 
 }  // namespace
@@ -74,7 +88,7 @@ MeshShadow::MeshShadow(const sim::TriangleMesh& model)
     }
     Paths shadow;
     for (int j = 0; j < count; ++j) {
-        shadow = unitePaths(shadow, band(m_top - (j + 1) * m_slab, j == 0 ? kInf : m_top - j * m_slab));
+        shadow = unitePaths(shadow, uniteNear(band(m_top - (j + 1) * m_slab, j == 0 ? kInf : m_top - j * m_slab)));
         m_shadows.push_back(shadow);
     }
 }
@@ -129,8 +143,8 @@ Paths MeshShadow::above(double h) const
     if (h <= m_bottom)
         return m_shadows.back();
     const int j = slabOf(h);
-    const Paths rest = band(h, j == 0 ? kInf : m_top - j * m_slab);
-    return j == 0 ? unitePaths(rest) : unitePaths(m_shadows[j - 1], rest);
+    const Paths rest = uniteNear(band(h, j == 0 ? kInf : m_top - j * m_slab));
+    return j == 0 ? rest : unitePaths(m_shadows[j - 1], rest);
 }
 
 Paths toPaths(const std::vector<geom::Region>& regions, double chord)
@@ -199,6 +213,55 @@ Paths unitePaths(const Paths& a, const Paths& b)
     Paths out;
     clipper.Execute(ClipperLib::ctUnion, out, ClipperLib::pftNonZero, ClipperLib::pftNonZero);
     return out;
+}
+
+Paths uniteNear(Paths paths)
+{
+    constexpr std::size_t kGroup = 8;
+    if (paths.size() <= kGroup)
+        return unitePaths(paths);
+    // Sorted along a Morton curve of their boxes' centres, on a grid of 2^16 over their span.
+    std::vector<IntPoint> centres;
+    IntPoint lo{std::numeric_limits<cInt>::max(), std::numeric_limits<cInt>::max()}, hi{-lo.X, -lo.Y};
+    for (const Path& path : paths) {
+        IntPoint a = path.empty() ? IntPoint{} : path.front(), b = a;
+        for (const IntPoint& p : path)
+            a = {std::min(a.X, p.X), std::min(a.Y, p.Y)}, b = {std::max(b.X, p.X), std::max(b.Y, p.Y)};
+        centres.push_back({a.X / 2 + b.X / 2, a.Y / 2 + b.Y / 2});
+        lo = {std::min(lo.X, centres.back().X), std::min(lo.Y, centres.back().Y)};
+        hi = {std::max(hi.X, centres.back().X), std::max(hi.Y, centres.back().Y)};
+    }
+    const double span = double(std::max<cInt>({hi.X - lo.X, hi.Y - lo.Y, 1}));
+    std::vector<std::pair<std::uint32_t, std::size_t>> keys;
+    for (std::size_t i = 0; i < centres.size(); ++i)
+        keys.emplace_back(morton(std::uint32_t(double(centres[i].X - lo.X) / span * 65535),
+                                 std::uint32_t(double(centres[i].Y - lo.Y) / span * 65535)),
+                          i);
+    std::sort(keys.begin(), keys.end());
+    std::vector<Paths> groups;
+    for (std::size_t k = 0; k < keys.size(); ++k) {
+        if (k % kGroup == 0)
+            groups.emplace_back();
+        groups.back().push_back(std::move(paths[keys[k].second]));
+    }
+    for (Paths& group : groups)
+        group = unitePaths(group);
+    return uniteInPairs(std::move(groups));
+}
+
+Paths uniteInPairs(std::vector<Paths> parts)
+{
+    if (parts.empty())
+        return {};
+    while (parts.size() > 1) {
+        std::vector<Paths> merged;
+        for (std::size_t i = 0; i + 1 < parts.size(); i += 2)
+            merged.push_back(unitePaths(parts[i], parts[i + 1]));
+        if (parts.size() % 2)
+            merged.push_back(std::move(parts.back()));
+        parts = std::move(merged);
+    }
+    return unitePaths(parts.front());
 }
 
 Paths clipPaths(const Paths& a, const Paths& b, ClipperLib::ClipType type)

@@ -20,13 +20,15 @@
 namespace camwb::ops::surface {
 
 struct ToolCentreRegions::Data {
-    Data(const sim::TriangleMesh& model, const toolpath::Tool& tool, const ToolCentreSettings& s) :
-        shadow(model),
+    Data(std::shared_ptr<const MeshShadow> model, const toolpath::Tool& tool, const ToolCentreSettings& s) :
+        shadowPtr(std::move(model)),
+        shadow(*shadowPtr),
         shape(tool),
         settings(s)
     {
     }
-    MeshShadow shadow;
+    std::shared_ptr<const MeshShadow> shadowPtr;  // shared by regions of the same model
+    const MeshShadow& shadow;
     sim::ToolShape shape;
     ToolCentreSettings settings;
     double radius = 0, fullHeight = 0, band = 0;
@@ -55,7 +57,19 @@ struct ToolCentreRegions::Data {
 
 ToolCentreRegions::ToolCentreRegions(const sim::TriangleMesh& model, const toolpath::Tool& tool,
                                      const ToolCentreSettings& settings) :
-    m_data(std::make_unique<Data>(model, tool, settings))
+    ToolCentreRegions(std::make_shared<const MeshShadow>(model), tool, settings)
+{
+}
+
+ToolCentreRegions::ToolCentreRegions(const ToolCentreRegions& sameModel, const toolpath::Tool& tool,
+                                     const ToolCentreSettings& settings) :
+    ToolCentreRegions(sameModel.m_data->shadowPtr, tool, settings)
+{
+}
+
+ToolCentreRegions::ToolCentreRegions(std::shared_ptr<const MeshShadow> shadow, const toolpath::Tool& tool,
+                                     const ToolCentreSettings& settings) :
+    m_data(std::make_unique<Data>(std::move(shadow), tool, settings))
 {
     Data& d = *m_data;
     d.radius = d.shape.radiusMm();
@@ -93,7 +107,12 @@ ClipperLib::Paths ToolCentreRegions::Data::obstacle(double z) const
             if (path.size() < 3)
                 return;
             group.push_back(std::move(path));
-            if (group.size() == 64)  // united in groups, then in pairs below: see there
+            // United in groups of 64 in the mesh's order, then in pairs below. The order decides
+            // Clipper's rounding of crossings (nanometres), and the contours' fit follows it:
+            // uniteNear's groups of near neighbours are quicker on large models (1M triangles:
+            // half the time) but move the fitted points within the tolerance and the ends of
+            // steep runs where a wall is at the slope limit, so the goldens would change.
+            if (group.size() == 64)
                 parts.push_back(unitePaths(group)), group.clear();
         });
         if (!group.empty())
@@ -109,15 +128,7 @@ ClipperLib::Paths ToolCentreRegions::Data::obstacle(double z) const
     }
     // United in pairs: the bands' grown rings overlap their neighbours almost wholly, and one
     // union of them all would cross every ring with every other.
-    while (parts.size() > 1) {
-        std::vector<ClipperLib::Paths> merged;
-        for (std::size_t i = 0; i + 1 < parts.size(); i += 2)
-            merged.push_back(unitePaths(parts[i], parts[i + 1]));
-        if (parts.size() % 2)
-            merged.push_back(std::move(parts.back()));
-        parts = std::move(merged);
-    }
-    return unitePaths(parts.front());
+    return uniteInPairs(std::move(parts));
 }
 
 std::vector<geom::Region> ToolCentreRegions::at(double z, const std::vector<geom::Region>& area) const

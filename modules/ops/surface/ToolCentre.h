@@ -16,6 +16,8 @@
 
 namespace camwb::ops::surface {
 
+class MeshShadow;
+
 struct ToolCentreSettings {
     double sideStockMm = 0;
     double bottomStockMm = 0;
@@ -31,6 +33,10 @@ struct ToolCentreSettings {
 class ToolCentreRegions {
 public:
     ToolCentreRegions(const sim::TriangleMesh& model, const toolpath::Tool& tool, const ToolCentreSettings& settings);
+    // The same model as `sameModel` with other settings (or tool): its shadows, the costly part
+    // on a large model, are shared, not built again.
+    ToolCentreRegions(const ToolCentreRegions& sameModel, const toolpath::Tool& tool,
+                      const ToolCentreSettings& settings);
     ~ToolCentreRegions();
 
     // Where the tool centre with the tip at `z` stays clear of the model (grown by the stocks),
@@ -43,6 +49,8 @@ public:
     double fullRadiusHeightMm() const;
 
 private:
+    ToolCentreRegions(std::shared_ptr<const MeshShadow> shadow, const toolpath::Tool& tool,
+                      const ToolCentreSettings& settings);
     struct Data;
     std::unique_ptr<Data> m_data;
 };

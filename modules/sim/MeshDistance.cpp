@@ -78,15 +78,12 @@ MeshDistance::MeshDistance(const TriangleMesh& mesh)
         }
         for (std::uint32_t t = 0; t < m_triangles.size(); ++t) {
             const Triangle& tri = m_triangles[t];
+            base::Box3 reach;
+            for (const Vec3& corner : {tri.a, tri.b, tri.c})
+                reach.add(corner);
             int lo[3], hi[3];
-            for (int k = 0; k < 3; ++k) {
-                lo[k] = cellOf({std::min({tri.a.x, tri.b.x, tri.c.x}), std::min({tri.a.y, tri.b.y, tri.c.y}),
-                                std::min({tri.a.z, tri.b.z, tri.c.z})},
-                               k);
-                hi[k] = cellOf({std::max({tri.a.x, tri.b.x, tri.c.x}), std::max({tri.a.y, tri.b.y, tri.c.y}),
-                                std::max({tri.a.z, tri.b.z, tri.c.z})},
-                               k);
-            }
+            for (int k = 0; k < 3; ++k)
+                lo[k] = cellOf(reach.min, k), hi[k] = cellOf(reach.max, k);
             for (int z = lo[2]; z <= hi[2]; ++z)
                 for (int y = lo[1]; y <= hi[1]; ++y)
                     for (int x = lo[0]; x <= hi[0]; ++x) {

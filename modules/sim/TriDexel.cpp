@@ -231,11 +231,16 @@ double TriDexel::depthInside(int axis, const Vec3& p) const
 {
     if (m_grids[axis].design.empty())
         return std::numeric_limits<double>::infinity();
+    const auto [i, j] = rayThrough(axis, p);
+    return std::max(0.0, -alongRay(axis, i, j, comp(p, axis)));
+}
+
+std::pair<int, int> TriDexel::rayThrough(int axis, const Vec3& p) const
+{
     const RayGrid& rg = m_grids[axis].rays;
     const int u = (axis + 1) % 3, v = (axis + 2) % 3;
-    const int i = std::clamp(int(std::floor((comp(p, u) - rg.u0) / rg.du)), 0, rg.nu - 1);
-    const int j = std::clamp(int(std::floor((comp(p, v) - rg.v0) / rg.dv)), 0, rg.nv - 1);
-    return std::max(0.0, -alongRay(axis, i, j, comp(p, axis)));
+    return {std::clamp(int(std::floor((comp(p, u) - rg.u0) / rg.du)), 0, rg.nu - 1),
+            std::clamp(int(std::floor((comp(p, v) - rg.v0) / rg.dv)), 0, rg.nv - 1)};
 }
 
 // Shank and holder against the Z rays (at most 64 x 64 of them over their box): the length of

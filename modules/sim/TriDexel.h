@@ -10,6 +10,8 @@
 #include "sim/Stock.h"
 #include "sim/ToolShape.h"
 
+#include <utility>
+
 namespace camwb::sim {
 
 class TriDexel final : public Stock {
@@ -53,6 +55,8 @@ private:
     // Signed distance along ray (i, j) of grid `axis` from coordinate t to the design's surface
     // (negative inside it); +infinity where the ray meets no design.
     double alongRay(int axis, int i, int j, double t) const;
+    // The ray (i, j) of grid `axis` whose cell holds p (clamped to the grid).
+    std::pair<int, int> rayThrough(int axis, const Vec3& p) const;
     // How deep `p` is inside the design along the nearest ray of grid `axis` (0 outside it).
     double depthInside(int axis, const Vec3& p) const;
     double vertexDeviation(const Vec3& p) const;

@@ -99,10 +99,7 @@ double TriDexel::vertexDeviation(const Vec3& p) const
 {
     double best = kInf;
     for (int a = 0; a < 3; ++a) {
-        const RayGrid& rg = m_grids[a].rays;
-        const int u = (a + 1) % 3, v = (a + 2) % 3;
-        const int i = std::clamp(int(std::floor((comp(p, u) - rg.u0) / rg.du)), 0, rg.nu - 1);
-        const int j = std::clamp(int(std::floor((comp(p, v) - rg.v0) / rg.dv)), 0, rg.nv - 1);
+        const auto [i, j] = rayThrough(a, p);
         const double d = alongRay(a, i, j, comp(p, a));
         if (std::abs(d) < std::abs(best))
             best = d;
@@ -114,10 +111,7 @@ std::int64_t TriDexel::lastCutAt(const Vec3& p) const
 {
     std::int64_t last = -1;
     for (int a = 0; a < 3; ++a) {
-        const RayGrid& rg = m_grids[a].rays;
-        const int u = (a + 1) % 3, v = (a + 2) % 3;
-        const int i = std::clamp(int(std::floor((comp(p, u) - rg.u0) / rg.du)), 0, rg.nu - 1);
-        const int j = std::clamp(int(std::floor((comp(p, v) - rg.v0) / rg.dv)), 0, rg.nv - 1);
+        const auto [i, j] = rayThrough(a, p);
         last = std::max<std::int64_t>(last, m_grids[a].lastCut[m_grids[a].at(i, j)]);
     }
     return last;

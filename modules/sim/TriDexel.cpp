@@ -42,6 +42,42 @@ std::vector<std::vector<TriDexel::Span>> insideSpans(const TriangleMesh& mesh, c
     return spans;
 }
 
+// The u where the line v = `v` of a grid's plane comes within `r` of the segment p0-p1 (a
+// capsule: convex, so one interval; empty: first > second).
+std::pair<double, double> capsuleAcross(double p0u, double p0v, double p1u, double p1v, double r, double v)
+{
+    double lo = INFINITY, hi = -INFINITY;
+    for (const auto& [cu, cv] : {std::pair{p0u, p0v}, std::pair{p1u, p1v}})
+        if (const double dv = v - cv; std::abs(dv) <= r) {
+            const double half = std::sqrt(r * r - dv * dv);
+            lo = std::min(lo, cu - half), hi = std::max(hi, cu + half);
+        }
+    // The band beside the segment: 0 <= (q - p0).d <= L^2 and |(q - p0) x d| <= r L, q = (u, v).
+    const double du = p1u - p0u, dv = p1v - p0v, l2 = du * du + dv * dv;
+    if (l2 > 0) {
+        const double w = v - p0v;
+        double bLo = -INFINITY, bHi = INFINITY;
+        // (u - p0u) du + w dv in [0, l2]; w du - (u - p0u) dv in [-rL, rL]: each linear in u.
+        const auto clipTo = [&](double slope, double offset, double min, double max) {
+            if (slope == 0) {
+                if (offset < min || offset > max)
+                    bLo = INFINITY, bHi = -INFINITY;
+                return;
+            }
+            double a = (min - offset) / slope, b = (max - offset) / slope;
+            if (a > b)
+                std::swap(a, b);
+            bLo = std::max(bLo, a), bHi = std::min(bHi, b);
+        };
+        const double rl = r * std::sqrt(l2);
+        clipTo(du, w * dv, 0, l2);
+        clipTo(-dv, w * du, -rl, rl);
+        if (bLo <= bHi)
+            lo = std::min(lo, p0u + bLo), hi = std::max(hi, p0u + bHi);
+    }
+    return {lo, hi};
+}
+
 }  // namespace
 
 TriDexel::TriDexel(const base::Box3& box, double resolutionMm) : m_box(box)
@@ -108,9 +144,7 @@ CutResult TriDexel::cut(const Move& move, std::size_t moveIndex, const ToolShape
     CutResult result;
     if (!move.moves() || !move.positionKnown || tool.radiusMm() <= 0)
         return result;
-    const double step = 0.5 * std::min({m_cell[0], m_cell[1], m_cell[2]});
-    const double turn = move.fromAxis.angleTo(move.toAxis) * tool.fluteLengthMm();
-    const int poses = std::max(1, int(std::ceil(std::max(move.lengthMm(), turn) / step)));
+    const int poses = posesAlong(move, tool);
     const double r = tool.radiusMm();
     PoseCut seen[3];
     double nextHolderCheck = 0;
@@ -151,6 +185,52 @@ CutResult TriDexel::cut(const Move& move, std::size_t moveIndex, const ToolShape
     return result;
 }
 
+int TriDexel::posesAlong(const Move& move, const ToolShape& tool) const
+{
+    const double halfCell = 0.5 * std::min({m_cell[0], m_cell[1], m_cell[2]});
+    const double shortfall = halfCell / 10;
+    // A turn moves the cutter's top (the point farthest from the tip) by this much.
+    const double turn = move.fromAxis.angleTo(move.toAxis) * tool.fluteLengthMm();
+    // A point's curvature has no bound (it grows without end towards the tip): half a cell.
+    if (tool.coneSlope() > 0)
+        return std::max(1, int(std::ceil(std::max(move.lengthMm(), turn) / halfCell)));
+    // The largest curvature of the cutter's surface is 1/rho: a flat end mill's side (rho: its
+    // radius), a ball's or bull-nose's corner (rho: the corner radius).
+    const double rho = tool.cornerRadiusMm() > 0 ? tool.cornerRadiusMm() : tool.radiusMm();
+    const double step = std::max(halfCell, std::sqrt(8 * shortfall * rho));
+    // The rims, a flat end's bottom edge and the cutter's top edge where it can reach the stock:
+    // copies leave notches step * sin(a) * cos(a) deep where the move rises at a to the tool's
+    // radial plane. A turn about the tip moves the top rim across the axis and tilts the bottom
+    // about its centre, where the extremes are the poses themselves: no notch.
+    double moveStep = step;
+    if (const double len = move.lengthMm(); len > 0 && (tool.flatBottomed() || topRimMayCut(move, tool))) {
+        double sinCos = 0;
+        for (const Vec3& axis : {move.fromAxis, move.axisAt(0.5), move.toAxis}) {
+            const double sinA = std::min(1.0, std::abs((move.to - move.from).dot(axis)) / len);
+            sinCos = std::max(sinCos, sinA * std::sqrt(1 - sinA * sinA));
+        }
+        if (sinCos > 0)
+            moveStep = std::max(halfCell, std::min(step, shortfall / sinCos));
+    }
+    // A point of the cutter moves by at most the sum of the two per pose.
+    return std::max(1, int(std::ceil(move.lengthMm() / moveStep + turn / step)));
+}
+
+bool TriDexel::topRimMayCut(const Move& move, const ToolShape& tool) const
+{
+    // The rim stays within its centre's path grown by the radius; the path within the box of its
+    // ends grown by how far the turn moves the top.
+    const double flute = tool.fluteLengthMm();
+    const double grow = tool.radiusMm() + move.fromAxis.angleTo(move.toAxis) * flute;
+    base::Box3 rim;
+    rim.add(move.from + move.fromAxis * flute);
+    rim.add(move.to + move.toAxis * flute);
+    rim.min = rim.min - Vec3{grow, grow, grow};
+    rim.max = rim.max + Vec3{grow, grow, grow};
+    return rim.min.x < m_box.max.x && rim.max.x > m_box.min.x && rim.min.y < m_box.max.y && rim.max.y > m_box.min.y &&
+           rim.min.z < m_box.max.z && rim.max.z > m_box.min.z;
+}
+
 void TriDexel::cutPose(int a, const Vec3& tip, const Vec3& toolAxis, const base::Box3& reach, const ToolShape& tool,
                        std::size_t moveIndex, PoseCut& seen)
 {
@@ -165,8 +245,16 @@ void TriDexel::cutPose(int a, const Vec3& tip, const Vec3& toolAxis, const base:
     const double axisBand = 0.75 * std::max(rg.du, rg.dv);
     Vec3 dir;
     setComp(dir, a, 1);
-    for (int j = j0; j <= j1; ++j)
-        for (int i = i0; i <= i1; ++i) {
+    // Only the rays within the cutter's radius of its axis segment can meet it.
+    const Vec3 top = tip + toolAxis * tool.fluteLengthMm();
+    const double r = tool.radiusMm() * (1 + 1e-9) + 1e-9;
+    for (int j = j0; j <= j1; ++j) {
+        const auto [uLo, uHi] = capsuleAcross(comp(tip, u), comp(tip, v), comp(top, u), comp(top, v), r, rg.vAt(j));
+        if (uLo > uHi)
+            continue;
+        const int iLo = std::max(i0, int(std::ceil((uLo - rg.u0) / rg.du - 0.5)));
+        const int iHi = std::min(i1, int(std::floor((uHi - rg.u0) / rg.du - 0.5)));
+        for (int i = iLo; i <= iHi; ++i) {
             const std::size_t k = g.at(i, j);
             std::vector<Span>& spans = g.spans[k];
             if (spans.empty() || spans.front().lo > hi || spans.back().hi < lo)
@@ -180,6 +268,11 @@ void TriDexel::cutPose(int a, const Vec3& tip, const Vec3& toolAxis, const base:
                 continue;
             const double c0 = comp(m_box.min, a) + cutter.s0, c1 = comp(m_box.min, a) + cutter.s1;
             if (spans.front().lo >= c1 || spans.back().hi <= c0)
+                continue;
+            // Most rays the cutter crosses were cut by the poses before: find out before copying.
+            if (std::none_of(spans.begin(), spans.end(), [&](const Span& s) {
+                    return std::min<double>(s.hi, c1) - std::max<double>(s.lo, c0) > m_spanSlack;
+                }))
                 continue;
             double removed = 0;
             std::vector<Span> kept;
@@ -225,6 +318,7 @@ void TriDexel::cutPose(int a, const Vec3& tip, const Vec3& toolAxis, const base:
             if (std::hypot(rg.uAt(i) - comp(tip, u), rg.vAt(j) - comp(tip, v)) <= axisBand)
                 seen.onAxis = true;
         }
+    }
 }
 
 double TriDexel::depthInside(int axis, const Vec3& p) const

@@ -1,8 +1,9 @@
 // Stock for tilted tools and undercuts: tri-dexels, three grids of parallel rays (along X, Y and
 // Z, one ray per cell of the stock's side at the resolution) each holding the spans of material
 // along it. Memory grows with the stock's area over the resolution squared, not its volume over
-// the cube; a cut steps the tool's poses at most half a cell apart and subtracts the cutter's
-// span from every ray it crosses, so its cost is set by the resolution, not by time samples.
+// the cube. A cut steps the tool's poses along the move, far enough apart to be quick and near
+// enough that their union is within a twentieth of a cell of the tool's sweep, and subtracts the
+// cutter's span from every ray it crosses: its cost is set by the resolution, not by time samples.
 #pragma once
 
 #include "sim/MeshDistance.h"
@@ -49,6 +50,12 @@ private:
         std::size_t at(int i, int j) const { return std::size_t(j) * rays.nu + i; }
     };
     struct PoseCut;  // what one grid saw of a cut (TriDexel.cpp)
+    // How many poses a cut steps along `move`: the copies of the cutter fall short of its sweep
+    // by at most a twentieth of a cell (by the cutter's curvature and its rims), and stand no
+    // closer than half a cell.
+    int posesAlong(const Move& move, const ToolShape& tool) const;
+    // Whether the cutter's top edge comes near the stock's box along `move`.
+    bool topRimMayCut(const Move& move, const ToolShape& tool) const;
     void cutPose(int axis, const Vec3& tip, const Vec3& toolAxis, const base::Box3& reach, const ToolShape& tool,
                  std::size_t moveIndex, PoseCut& seen);
     void checkHolder(const Vec3& tip, const Vec3& toolAxis, const ToolShape& tool, CutResult& result) const;

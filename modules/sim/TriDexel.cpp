@@ -191,6 +191,12 @@ int TriDexel::posesAlong(const Move& move, const ToolShape& tool) const
     const double shortfall = halfCell / 10;
     // A turn moves the cutter's top (the point farthest from the tip) by this much.
     const double turn = move.fromAxis.angleTo(move.toAxis) * tool.fluteLengthMm();
+    // Along its own axis (a drill's plunge, a retract) a cutter whose radius never shrinks upwards
+    // covers at each height what its lowest pose covers: poses half the flute apart overlap and
+    // give the whole sweep, for every kind. A side step within the shortfall changes nothing.
+    const Vec3 d = move.to - move.from;
+    if (turn == 0 && (d - move.fromAxis * d.dot(move.fromAxis)).length() <= shortfall)
+        return std::max(1, int(std::ceil(move.lengthMm() / (0.5 * tool.fluteLengthMm()))));
     // A point's curvature has no bound (it grows without end towards the tip): half a cell.
     if (tool.coneSlope() > 0)
         return std::max(1, int(std::ceil(std::max(move.lengthMm(), turn) / halfCell)));
@@ -206,7 +212,7 @@ int TriDexel::posesAlong(const Move& move, const ToolShape& tool) const
     if (const double len = move.lengthMm(); len > 0 && (tool.flatBottomed() || topRimMayCut(move, tool))) {
         double sinCos = 0;
         for (const Vec3& axis : {move.fromAxis, move.axisAt(0.5), move.toAxis}) {
-            const double sinA = std::min(1.0, std::abs((move.to - move.from).dot(axis)) / len);
+            const double sinA = std::min(1.0, std::abs(d.dot(axis)) / len);
             sinCos = std::max(sinCos, sinA * std::sqrt(1 - sinA * sinA));
         }
         if (sinCos > 0)

@@ -322,17 +322,23 @@ double materialOutside(const std::vector<TriDexel::Span>& whole, const std::vect
 // tool's sweep, or where half a cell apart leaves more (a flat end's rim on a move that rises to
 // it), within what half a cell leaves. Measured against the same moves cut in pieces a quarter of a
 // cell long by the tool shrunk by that much (tip raised, radius and corner less): the long move
-// must remove all that removes, on every ray of the three grids, for the round cutters, along
-// straight and ramping moves and a turning five-axis move. (A pointed tool keeps half a cell.)
+// must remove all that removes, on every ray of the three grids, for the round cutters along
+// straight and ramping moves, a turning five-axis move and a plunge along a tilted axis, for a
+// drill along that plunge (elsewhere a pointed tool keeps half a cell).
 TEST(SimTriDexel, ALongMoveRemovesItsSweepToATwentiethOfACell)
 {
     const double cell = 0.3, shortfall = cell / 20, flute = 12;
     const base::Box3 b = box({0, 0, 0}, {40, 30, 20});
     struct Cutter {
         std::string kind;
-        double diameter, corner;
+        double diameter, corner, pointAngle = 0;
     };
-    const std::vector<Cutter> cutters = {{"flat", 6, 0}, {"ball", 6, 3}, {"bull", 8, 1}};
+    const std::vector<Cutter> cutters = {{"flat", 6, 0}, {"ball", 6, 3}, {"bull", 8, 1}, {"drill", 6, 0, 118}};
+    const auto toolOf = [&](const Cutter& k, double shrink) {
+        toolpath::Tool tool = makeTool(k.kind, k.diameter - 2 * shrink, std::max(0.0, k.corner - shrink), flute);
+        tool.pointAngleDeg = k.pointAngle;
+        return tool;
+    };
     const double s = std::sin(kPi / 6), c = std::cos(kPi / 6);
     std::vector<Move> moves = {
         makeMove({4, 5, 17}, {36, 24, 17}),   // across the grid
@@ -344,9 +350,14 @@ TEST(SimTriDexel, ALongMoveRemovesItsSweepToATwentiethOfACell)
     swarf.toAxis = Vec3{s * 0.5, -s * 0.8, c}.normalized();
     swarf.fiveAxis = true;
     moves.push_back(swarf);
+    Move plunge = makeMove(Vec3{20, 15, 6} + swarf.fromAxis * 20, {20, 15, 6});  // along its tilted axis
+    plunge.fromAxis = plunge.toAxis = swarf.fromAxis;
+    moves.push_back(plunge);
     for (std::size_t t = 0; t < cutters.size(); ++t)
         for (std::size_t m = 0; m < moves.size(); ++m) {
             const Cutter& k = cutters[t];
+            if (k.pointAngle > 0 && m + 1 < moves.size())
+                continue;  // a pointed tool steps half a cell apart but along its axis
             // A flat end's rim leaves step * sin(a) * cos(a), the step at least half a cell.
             double e = shortfall;
             if (k.kind == "flat") {
@@ -357,11 +368,13 @@ TEST(SimTriDexel, ALongMoveRemovesItsSweepToATwentiethOfACell)
                 }
             }
             TriDexel whole(b, cell), deep(b, cell);
-            whole.cut(moves[m], 0, ToolShape(makeTool(k.kind, k.diameter, k.corner, flute)));
-            const ToolShape shrunk(makeTool(k.kind, k.diameter - 2 * e, std::max(0.0, k.corner - e), flute));
+            whole.cut(moves[m], 0, ToolShape(toolOf(k, 0)));
+            const ToolShape shrunk(toolOf(k, e));
+            // The point's cone shrunk by e: its tip rises e / sin(half its angle).
+            const double rise = k.pointAngle > 0 ? e / std::sin(k.pointAngle / 2 * kPi / 180) : e;
             for (Move piece : finePieces(moves[m], cell, flute)) {
-                piece.from = piece.from + piece.fromAxis * e;
-                piece.to = piece.to + piece.toAxis * e;
+                piece.from = piece.from + piece.fromAxis * rise;
+                piece.to = piece.to + piece.toAxis * rise;
                 deep.cut(piece, 0, shrunk);
             }
             ASSERT_GT(40 * 30 * 20 - deep.volumeMm3(), 50) << "tool " << t << " move " << m;

@@ -148,6 +148,12 @@ CutResult TriDexel::cut(const Move& move, std::size_t moveIndex, const ToolShape
     const double r = tool.radiusMm();
     PoseCut seen[3];
     double nextHolderCheck = 0;
+    // The move before ended where this one starts, with the same cutter: that pose is cut (the
+    // pieces of an arc each start where the last ended).
+    const LastPose start{move.from,        move.axisAt(0),      tool.radiusMm(), tool.cornerRadiusMm(),
+                         tool.coneSlope(), tool.fluteLengthMm()};
+    const bool startCut = m_lastPose == start;
+    m_lastPose = {move.to, move.axisAt(1), start.radius, start.corner, start.coneSlope, start.flute};
     for (int p = 0; p <= poses; ++p) {
         const double t = double(p) / poses;
         const Vec3 tip = move.from + (move.to - move.from) * t;
@@ -157,7 +163,7 @@ CutResult TriDexel::cut(const Move& move, std::size_t moveIndex, const ToolShape
         reach.add(tip + axis * tool.fluteLengthMm());
         reach.min = reach.min - Vec3{r, r, r};
         reach.max = reach.max + Vec3{r, r, r};
-        for (int a = 0; a < 3; ++a)
+        for (int a = 0; a < 3 && !(p == 0 && startCut); ++a)
             cutPose(a, tip, axis, reach, tool, moveIndex, seen[a]);
         // The shank and holder are wide and rarely touch: checked every millimetre of travel
         // and at the ends, not at every pose.

@@ -81,6 +81,13 @@ private:
     double m_tolerance = 0;
     double m_spanSlack = 1e-7;  // shorter removals are float rounding, not material (constructor)
     bool m_hasDesign = false;
+    // Where the last cut left the tool, and which cutter it was.
+    struct LastPose {
+        Vec3 tip, axis;
+        double radius = -1, corner = 0, coneSlope = 0, flute = 0;
+        bool operator==(const LastPose&) const = default;
+    };
+    LastPose m_lastPose;
 };
 
 }  // namespace camwb::sim

@@ -323,8 +323,8 @@ double materialOutside(const std::vector<TriDexel::Span>& whole, const std::vect
 // it), within what half a cell leaves. Measured against the same moves cut in pieces a quarter of a
 // cell long by the tool shrunk by that much (tip raised, radius and corner less): the long move
 // must remove all that removes, on every ray of the three grids, for the round cutters along
-// straight and ramping moves, a turning five-axis move and a plunge along a tilted axis, for a
-// drill along that plunge (elsewhere a pointed tool keeps half a cell).
+// straight and ramping moves (one deeper than the flute), a turning five-axis move and a plunge
+// along a tilted axis, for a drill along that plunge (elsewhere a pointed tool keeps half a cell).
 TEST(SimTriDexel, ALongMoveRemovesItsSweepToATwentiethOfACell)
 {
     const double cell = 0.3, shortfall = cell / 20, flute = 12;
@@ -334,8 +334,11 @@ TEST(SimTriDexel, ALongMoveRemovesItsSweepToATwentiethOfACell)
         double diameter, corner, pointAngle = 0;
     };
     const std::vector<Cutter> cutters = {{"flat", 6, 0}, {"ball", 6, 3}, {"bull", 8, 1}, {"drill", 6, 0, 118}};
-    const auto toolOf = [&](const Cutter& k, double shrink) {
-        toolpath::Tool tool = makeTool(k.kind, k.diameter - 2 * shrink, std::max(0.0, k.corner - shrink), flute);
+    // The cutter shrunk by `shrink` all round when its tip is raised by `rise`: its top stays
+    // `shrink` below the whole cutter's.
+    const auto toolOf = [&](const Cutter& k, double shrink, double rise) {
+        toolpath::Tool tool =
+            makeTool(k.kind, k.diameter - 2 * shrink, std::max(0.0, k.corner - shrink), flute - rise - shrink);
         tool.pointAngleDeg = k.pointAngle;
         return tool;
     };
@@ -344,6 +347,7 @@ TEST(SimTriDexel, ALongMoveRemovesItsSweepToATwentiethOfACell)
         makeMove({4, 5, 17}, {36, 24, 17}),   // across the grid
         makeMove({4, 15, 20}, {36, 15, 12}),  // a ramp of 14 degrees
         makeMove({6, 6, 19}, {16, 16, 9}),    // down at 35 degrees to the radial plane
+        makeMove({4, 25, 10}, {36, 25, 4}),   // deeper than the flute: its top rim cuts too
     };
     Move swarf = makeMove({8, 12, 15}, {32, 18, 14});  // the axis turns 40 degrees on the way
     swarf.fromAxis = {-s, 0, c};
@@ -358,9 +362,11 @@ TEST(SimTriDexel, ALongMoveRemovesItsSweepToATwentiethOfACell)
             const Cutter& k = cutters[t];
             if (k.pointAngle > 0 && m + 1 < moves.size())
                 continue;  // a pointed tool steps half a cell apart but along its axis
-            // A flat end's rim leaves step * sin(a) * cos(a), the step at least half a cell.
+            // A rim (a flat end's, or the top's where it reaches into the stock) leaves
+            // step * sin(a) * cos(a), the step at least half a cell.
             double e = shortfall;
-            if (k.kind == "flat") {
+            const double lowestTip = std::min(moves[m].from.z, moves[m].to.z);
+            if (k.kind == "flat" || lowestTip + flute - k.diameter / 2 < 20) {
                 const Vec3 d = moves[m].to - moves[m].from;
                 for (const Vec3& axis : {moves[m].fromAxis, moves[m].axisAt(0.5), moves[m].toAxis}) {
                     const double sinA = std::abs(d.dot(axis)) / d.length();
@@ -368,10 +374,10 @@ TEST(SimTriDexel, ALongMoveRemovesItsSweepToATwentiethOfACell)
                 }
             }
             TriDexel whole(b, cell), deep(b, cell);
-            whole.cut(moves[m], 0, ToolShape(toolOf(k, 0)));
-            const ToolShape shrunk(toolOf(k, e));
+            whole.cut(moves[m], 0, ToolShape(toolOf(k, 0, 0)));
             // The point's cone shrunk by e: its tip rises e / sin(half its angle).
             const double rise = k.pointAngle > 0 ? e / std::sin(k.pointAngle / 2 * kPi / 180) : e;
+            const ToolShape shrunk(toolOf(k, e, rise));
             for (Move piece : finePieces(moves[m], cell, flute)) {
                 piece.from = piece.from + piece.fromAxis * rise;
                 piece.to = piece.to + piece.toAxis * rise;

@@ -331,8 +331,9 @@ private slots:
         qInfo("playing %s at 10x: %.1f frames/s drawn, %.1f stock meshes/s shown (worker remesh %.2f ms "
               "each), GUI update %.2f ms per step, one frame rendered alone %.1f ms (%.1f ms before simulating), %d "
               "frames, %d stock triangles, longest event-loop stall %lld ms",
-              qPrintable(QFileInfo(job).fileName()), stats.renderedFps, stats.stockFps, stats.meanStockMeshMs, stats.meanUpdateMs, renderMs, beforeMs,
-              stats.frames, window.view()->simulation().stockTriangleCount(), longestStall);
+              qPrintable(QFileInfo(job).fileName()), stats.renderedFps, stats.stockFps, stats.meanStockMeshMs,
+              stats.meanUpdateMs, renderMs, beforeMs, stats.frames, window.view()->simulation().stockTriangleCount(),
+              longestStall);
     }
 
     // The five-axis example: the path coloured by an axis' velocity with red markers where the

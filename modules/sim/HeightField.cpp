@@ -1,5 +1,6 @@
 #include "sim/HeightField.h"
 
+#include "sim/Capsule.h"
 #include "sim/MeshRays.h"
 
 #include <algorithm>
@@ -12,48 +13,6 @@ namespace {
 constexpr double kEps = 1e-6;  // heights closer than this are the same (float storage)
 
 bool vertical(const Vec3& axis) { return std::abs(axis.x) < 1e-9 && std::abs(axis.y) < 1e-9 && axis.z > 0; }
-
-// The x range over which a row y meets the capsule of radius r around the segment a-b (xy):
-// the hull of the two end discs and the band between them (the capsule is convex). The band's
-// four edges are set up once per move; a row then costs a few multiplications.
-class Capsule {
-public:
-    Capsule(base::Vec2 a, base::Vec2 b, double r) : m_a(a), m_b(b), m_r(r)
-    {
-        const base::Vec2 n = (b - a).normalized().leftNormal() * r;
-        const base::Vec2 quad[4] = {a + n, b + n, b - n, a - n};
-        for (int k = 0; k < 4; ++k) {
-            const base::Vec2 p = quad[k], q = quad[(k + 1) % 4];
-            m_edges[k] = {std::min(p.y, q.y), std::max(p.y, q.y), p.x, p.y, p.y == q.y ? 0 : (q.x - p.x) / (q.y - p.y)};
-        }
-    }
-    bool row(double y, double& xlo, double& xhi) const
-    {
-        xlo = 1e300, xhi = -1e300;
-        for (const base::Vec2 c : {m_a, m_b}) {
-            const double dy = y - c.y;
-            if (std::abs(dy) <= m_r) {
-                const double half = std::sqrt(m_r * m_r - dy * dy);
-                xlo = std::min(xlo, c.x - half), xhi = std::max(xhi, c.x + half);
-            }
-        }
-        for (const Edge& e : m_edges) {
-            if (y < e.ylo || y > e.yhi || e.ylo == e.yhi)
-                continue;
-            const double x = e.x0 + (y - e.y0) * e.slope;
-            xlo = std::min(xlo, x), xhi = std::max(xhi, x);
-        }
-        return xlo <= xhi;
-    }
-
-private:
-    struct Edge {
-        double ylo, yhi, x0, y0, slope;
-    };
-    base::Vec2 m_a, m_b;
-    double m_r;
-    Edge m_edges[4];
-};
 
 // The minimum of a convex function on [lo, hi] by golden section (one evaluation per step).
 template <class F> double convexMin(F f, double lo, double hi)

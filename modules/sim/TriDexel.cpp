@@ -1,5 +1,7 @@
 #include "sim/TriDexel.h"
 
+#include "sim/Capsule.h"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -40,42 +42,6 @@ std::vector<std::vector<TriDexel::Span>> insideSpans(const TriangleMesh& mesh, c
         }
     }
     return spans;
-}
-
-// The u where the line v = `v` of a grid's plane comes within `r` of the segment p0-p1 (a
-// capsule: convex, so one interval; empty: first > second).
-std::pair<double, double> capsuleAcross(double p0u, double p0v, double p1u, double p1v, double r, double v)
-{
-    double lo = INFINITY, hi = -INFINITY;
-    for (const auto& [cu, cv] : {std::pair{p0u, p0v}, std::pair{p1u, p1v}})
-        if (const double dv = v - cv; std::abs(dv) <= r) {
-            const double half = std::sqrt(r * r - dv * dv);
-            lo = std::min(lo, cu - half), hi = std::max(hi, cu + half);
-        }
-    // The band beside the segment: 0 <= (q - p0).d <= L^2 and |(q - p0) x d| <= r L, q = (u, v).
-    const double du = p1u - p0u, dv = p1v - p0v, l2 = du * du + dv * dv;
-    if (l2 > 0) {
-        const double w = v - p0v;
-        double bLo = -INFINITY, bHi = INFINITY;
-        // (u - p0u) du + w dv in [0, l2]; w du - (u - p0u) dv in [-rL, rL]: each linear in u.
-        const auto clipTo = [&](double slope, double offset, double min, double max) {
-            if (slope == 0) {
-                if (offset < min || offset > max)
-                    bLo = INFINITY, bHi = -INFINITY;
-                return;
-            }
-            double a = (min - offset) / slope, b = (max - offset) / slope;
-            if (a > b)
-                std::swap(a, b);
-            bLo = std::max(bLo, a), bHi = std::min(bHi, b);
-        };
-        const double rl = r * std::sqrt(l2);
-        clipTo(du, w * dv, 0, l2);
-        clipTo(-dv, w * du, -rl, rl);
-        if (bLo <= bHi)
-            lo = std::min(lo, p0u + bLo), hi = std::max(hi, p0u + bHi);
-    }
-    return {lo, hi};
 }
 
 }  // namespace
@@ -259,10 +225,11 @@ void TriDexel::cutPose(int a, const Vec3& tip, const Vec3& toolAxis, const base:
     setComp(dir, a, 1);
     // Only the rays within the cutter's radius of its axis segment can meet it.
     const Vec3 top = tip + toolAxis * tool.fluteLengthMm();
-    const double r = tool.radiusMm() * (1 + 1e-9) + 1e-9;
+    const Capsule capsule({comp(tip, u), comp(tip, v)}, {comp(top, u), comp(top, v)},
+                          tool.radiusMm() * (1 + 1e-9) + 1e-9);
     for (int j = j0; j <= j1; ++j) {
-        const auto [uLo, uHi] = capsuleAcross(comp(tip, u), comp(tip, v), comp(top, u), comp(top, v), r, rg.vAt(j));
-        if (uLo > uHi)
+        double uLo, uHi;
+        if (!capsule.row(rg.vAt(j), uLo, uHi))
             continue;
         const int iLo = std::max(i0, int(std::ceil((uLo - rg.u0) / rg.du - 0.5)));
         const int iHi = std::min(i1, int(std::floor((uHi - rg.u0) / rg.du - 0.5)));

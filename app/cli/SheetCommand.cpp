@@ -12,10 +12,10 @@
 #include "sheet/SheetFiles.h"
 #include "sheet/SheetHtml.h"
 #include "sheet/SheetPicture.h"
+#include "toolpath/ClText.h"
 
 #include <QGuiApplication>
 
-#include <charconv>
 #include <cstdlib>
 #include <iostream>
 #include <set>
@@ -54,9 +54,10 @@ std::string parseSheetOptions(const std::vector<std::string>& args, SheetCommand
             return arg + " needs a value";
         const std::string& value = args[++i];
         if (arg == "--margin") {
-            const auto [end, ec] = std::from_chars(value.data(), value.data() + value.size(), options.marginMm);
-            if (ec != std::errc() || end != value.data() + value.size() || options.marginMm < 0)
+            const std::optional<double> margin = toolpath::parseNumber(value);  // no "inf" or "nan"
+            if (!margin || *margin < 0)
                 return "--margin needs a number of mm, 0 or more, not '" + value + "'";
+            options.marginMm = *margin;
         } else if (arg == "--pdf") {
             options.pdf = value;
         } else if (arg == "--machine") {

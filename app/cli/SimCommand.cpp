@@ -24,7 +24,6 @@
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
-#include <charconv>
 #include <filesystem>
 #include <iostream>
 #include <set>
@@ -58,9 +57,8 @@ struct SimOptions {
 
 std::optional<double> positive(const std::string& text)
 {
-    double value = 0;
-    const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
-    if (ec != std::errc() || end != text.data() + text.size() || !(value > 0))
+    const std::optional<double> value = toolpath::parseNumber(text);  // no "inf" or "nan"
+    if (!value || !(*value > 0))
         return std::nullopt;
     return value;
 }
@@ -344,6 +342,8 @@ int simCommand(const std::vector<std::string>& args)
     setup.machine = input->machine ? &*input->machine : nullptr;
     setup.stockSpec = spec ? &*spec : nullptr;
     sim::SimulationResult result = sim::simulate(input->program, setup, input->recordsInError);
+    if (!result.stockError.empty())
+        return fail("the " + result.stockError + "; choose a coarser --resolution");
     if (turned) {
         result.checks.insert(result.checks.begin(), turned->findings.begin(), turned->findings.end());
         result.deviation.maxGougeMm = turned->maxGougeMm;
@@ -389,9 +389,9 @@ int simCommand(const std::vector<std::string>& args)
                   << base::formatFixed(turned->leftoverMm2, 3) << " mm2 (thickest " << mm(turned->maxLeftoverMm)
                   << " mm at X " << mm(turned->maxLeftoverAt.y) << " Z " << mm(turned->maxLeftoverAt.x) << ")\n";
     if (result.cut) {
-        std::cout << "stock " << (result.tilts ? "tri-dexel" : "height field") << " at " << mm(spec->resolutionMm)
-                  << " mm: removed " << base::formatFixed(result.removedMm3, 1) << " mm3, feed in air "
-                  << base::formatFixed(result.airCuttingMm, 1) << " mm\n";
+        std::cout << "stock " << (result.tilts ? "tri-dexel" : "height field") << " at "
+                  << mm(result.stock->resolutionMm()) << " mm: removed " << base::formatFixed(result.removedMm3, 1)
+                  << " mm3, feed in air " << base::formatFixed(result.airCuttingMm, 1) << " mm\n";
         if (!input->design.empty())
             std::cout << "largest gouge " << mm(result.deviation.maxGougeMm) << " mm, largest leftover over the part "
                       << mm(result.deviation.maxLeftoverMm) << " mm, material beside the part up to "
@@ -488,7 +488,7 @@ int simCommand(const std::vector<std::string>& args)
                 {{"name", section.name}, {"tool", section.tool}, {"seconds", section.planned.totalSeconds()}});
         report["perOperation"] = perOperation;
         report["stock"] = result.stock ? nlohmann::json{{"kind", result.tilts ? "tri-dexel" : "height-field"},
-                                                        {"resolutionMm", spec->resolutionMm},
+                                                        {"resolutionMm", result.stock->resolutionMm()},
                                                         {"min", point(stockBounds.min)},
                                                         {"max", point(stockBounds.max)},
                                                         {"remainingMm3", result.stock->volumeMm3()}}

@@ -210,6 +210,8 @@ base::Result<SetupSheet> collectSetupSheet(const Job& job, const std::string& jo
         simulated = sim::simulate(program, setup);
         if (simulated.cancelled)
             return base::makeError(kCollectCancelled);
+        if (!simulated.stockError.empty())
+            return base::makeError("the " + simulated.stockError);
         sheet.verification = verification(simulated, spec.resolutionMm, job, jobPath, program);
     } else {
         simulated.moves = sim::buildMoves(moving);

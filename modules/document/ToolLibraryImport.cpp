@@ -5,6 +5,7 @@
 #include "document/detail/FusionTools.h"
 #include "document/detail/ZipJson.h"
 
+#include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <utility>
@@ -28,7 +29,7 @@ double quantity(const json& value, const std::string& where, bool angle)
     const std::string text = value.get<std::string>();
     char* end = nullptr;
     const double number = std::strtod(text.c_str(), &end);
-    if (end == text.c_str())
+    if (end == text.c_str() || !std::isfinite(number))  // strtod also reads "inf" and "nan"
         throw JsonFieldError{where + ": expected a quantity such as \"6.00 mm\", got \"" + text + "\""};
     std::string unit(end);
     unit.erase(0, unit.find_first_not_of(' '));

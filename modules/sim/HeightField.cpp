@@ -40,9 +40,8 @@ void ColumnRect::add(const ColumnRect& r)
 
 HeightField::HeightField(const base::Box3& box, double resolutionMm) : m_box(box)
 {
-    const double res = std::max(resolutionMm, 1e-3);
-    m_nx = std::max(2, int(std::ceil((box.max.x - box.min.x) / res - 1e-9)));
-    m_ny = std::max(2, int(std::ceil((box.max.y - box.min.y) / res - 1e-9)));
+    m_nx = int(cellsAcross(box.max.x - box.min.x, resolutionMm));
+    m_ny = int(cellsAcross(box.max.y - box.min.y, resolutionMm));
     m_dx = (box.max.x - box.min.x) / m_nx;
     m_dy = (box.max.y - box.min.y) / m_ny;
     m_top.assign(std::size_t(m_nx) * m_ny, float(box.max.z));
@@ -102,6 +101,14 @@ double HeightField::volumeMm3() const
     for (std::size_t k = 0; k < m_top.size(); ++k)
         sum += double(m_top[k]) - m_bottom[k];
     return sum * m_dx * m_dy;
+}
+
+std::size_t HeightField::memoryBytes() const
+{
+    return sizeof(*this) +
+           sizeof(float) * (m_top.capacity() + m_bottom.capacity() + m_design.capacity() + m_designNear.capacity() +
+                            m_tileTop.capacity()) +
+           sizeof(std::int32_t) * m_lastCut.capacity() + m_tileStale.capacity();
 }
 
 ColumnRect HeightField::takeChanged() { return std::exchange(m_changed, ColumnRect{}); }

@@ -48,6 +48,7 @@ public:
     // instead of a million.
     TriangleMesh fileMesh() const override;
     std::unique_ptr<Stock> clone() const override { return std::make_unique<HeightField>(*this); }
+    std::size_t memoryBytes() const override;
 
     int columnsX() const { return m_nx; }
     int columnsY() const { return m_ny; }

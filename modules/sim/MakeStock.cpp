@@ -1,11 +1,72 @@
 #include "sim/MakeStock.h"
 
+#include "base/NumberFormat.h"
 #include "sim/HeightField.h"
 #include "sim/TriDexel.h"
 
 #include <cmath>
 
+#include <unistd.h>
+
 namespace camwb::sim {
+
+namespace {
+
+// Bytes a cell takes at most, measured: `camwb-cli sim` of the example job at 0.025 mm peaked at
+// 25 bytes a column (top, bottom, last cut, the design's heights) and 54 with --stl; the
+// five-axis example's tri-dexels at 0.25 mm at about 500 bytes a ray with --stl (a vector of
+// spans per ray, the design's spans, four unshared vertices per face). The simulator dock holds
+// the mesh twice (its own and the view's copy), hence the margin.
+constexpr double kHeightFieldBytesPerColumn = 120;
+constexpr double kTriDexelBytesPerRay = 600;
+
+std::string gigabytes(double bytes) { return base::formatFixed(bytes / 1e9, 1) + " GB"; }
+
+}  // namespace
+
+StockSize stockSize(const base::Box3& box, double resolutionMm, bool tilts)
+{
+    const double nx = cellsAcross(box.max.x - box.min.x, resolutionMm);
+    const double ny = cellsAcross(box.max.y - box.min.y, resolutionMm);
+    if (!tilts)
+        return {nx * ny, nx * ny * kHeightFieldBytesPerColumn};
+    const double nz = cellsAcross(box.max.z - box.min.z, resolutionMm);
+    const double rays = nx * ny + ny * nz + nz * nx;
+    return {rays, rays * kTriDexelBytesPerRay};
+}
+
+double stockMemoryBudget()
+{
+    const long pages = sysconf(_SC_PHYS_PAGES), pageSize = sysconf(_SC_PAGE_SIZE);
+    if (pages <= 0 || pageSize <= 0)
+        return 4e9;  // not known: what a small desktop can spare
+    return 0.5 * double(pages) * double(pageSize);
+}
+
+std::optional<std::string> stockTooLarge(const base::Box3& box, double resolutionMm, bool tilts, double budgetBytes)
+{
+    const StockSize size = stockSize(box, resolutionMm, tilts);
+    if (size.bytes <= budgetBytes)
+        return std::nullopt;
+    // The finest resolution that fits: from the area per cell the budget allows, then up a finest cell at
+    // a time (cellsAcross rounds the count of cells up).
+    const Vec3 d = box.max - box.min;
+    const double area = tilts ? d.x * d.y + d.y * d.z + d.z * d.x : d.x * d.y;
+    const double perCell = tilts ? kTriDexelBytesPerRay : kHeightFieldBytesPerColumn;
+    double finest =
+        std::max(kFinestCellMm, std::ceil(std::sqrt(area * perCell / budgetBytes) / kFinestCellMm) * kFinestCellMm);
+    for (int step = 0; step < 100000 && stockSize(box, finest, tilts).bytes > budgetBytes; ++step)
+        finest += kFinestCellMm;
+    const bool fits = stockSize(box, finest, tilts).bytes <= budgetBytes;
+    return std::string(tilts ? "tri-dexel" : "height field") + " stock of " + base::formatFixed(d.x, 1) + " x " +
+           base::formatFixed(d.y, 1) + " x " + base::formatFixed(d.z, 1) + " mm at " +
+           (resolutionMm >= kFinestCellMm ? base::formatFixed(resolutionMm, 4) + " mm"
+                                          : base::formatFixed(kFinestCellMm, 3) + " mm (no cell is finer)") +
+           " would have " + base::formatFixed(size.cells / 1e6, 1) + " million " + (tilts ? "rays" : "columns") +
+           " and need about " + gigabytes(size.bytes) + " of memory, more than the " + gigabytes(budgetBytes) +
+           " a stock may take here (half the computer's memory)" +
+           (fits ? "; the finest resolution that fits is " + base::formatFixed(finest, 3) + " mm" : "");
+}
 
 std::unique_ptr<Stock> makeStock(const base::Box3& box, double resolutionMm, bool tilts)
 {

@@ -38,8 +38,11 @@ std::vector<Check> machineLimitChecks(const toolpath::Toolpath& program, const k
     return out;
 }
 
-std::unique_ptr<Stock> makeStock(const StockSpec& spec, bool tilts)
+base::Result<std::unique_ptr<Stock>> makeStock(const StockSpec& spec, bool tilts)
 {
+    const base::Box3 box = spec.box ? *spec.box : spec.blank.bounds();
+    if (std::optional<std::string> why = stockTooLarge(box, spec.resolutionMm, tilts, stockMemoryBudget()))
+        return base::makeError(*why);
     std::unique_ptr<Stock> stock = spec.box ? makeStock(*spec.box, spec.resolutionMm, tilts)
                                             : makeStockFromMesh(spec.blank, spec.resolutionMm, tilts);
     // A stock of cells knows where the model's wall lies only within half a cell: a cut exactly
@@ -61,8 +64,13 @@ SimulationResult simulate(const toolpath::Toolpath& program, const SimulationSet
     result.tilts = anyToolTilts(result.moves);
     Stock* stock = setup.stock;
     if (!stock && setup.stockSpec) {
-        result.stock = makeStock(*setup.stockSpec, result.tilts);
-        stock = result.stock.get();
+        base::Result<std::unique_ptr<Stock>> made = makeStock(*setup.stockSpec, result.tilts);
+        if (made) {
+            result.stock = std::move(made).value();
+            stock = result.stock.get();
+        } else {
+            result.stockError = made.error().message;
+        }
     }
     if (stock) {
         StockRun run(result.moves, *stock);

@@ -4,6 +4,7 @@
 // dock runs the same pieces (buildMoves, StockRun) step by step instead.
 #pragma once
 
+#include "base/Result.h"
 #include "kinematics/Machine.h"
 #include "sim/Checks.h"
 #include "sim/Moves.h"
@@ -13,6 +14,7 @@
 #include <functional>
 #include <memory>
 #include <optional>
+#include <string>
 #include <vector>
 
 namespace camwb::toolpath {
@@ -32,8 +34,9 @@ struct StockSpec {
 };
 
 // The stock `spec` describes, a height field or (`tilts`) tri-dexels, with its design model; what
-// simulate() cuts and what the simulator dock animates.
-std::unique_ptr<Stock> makeStock(const StockSpec& spec, bool tilts);
+// simulate() cuts and what the simulator dock animates. An error, made nothing of, where it would
+// take more than half the computer's memory (stockTooLarge).
+base::Result<std::unique_ptr<Stock>> makeStock(const StockSpec& spec, bool tilts);
 
 struct SimulationSetup {
     const kinematics::Machine* machine = nullptr;  // limits and chain; nullptr: none checked
@@ -49,8 +52,9 @@ struct SimulationResult {
     std::unique_ptr<Stock> stock;  // the stock simulate() made from a StockSpec, as cut
     std::vector<Check> checks;     // by record: the stock's, then the machine's limits
     bool cancelled = false;
-    bool cut = false;    // a stock was cut
-    bool tilts = false;  // a cutting move tilts the tool (the made stock is tri-dexels)
+    bool cut = false;        // a stock was cut
+    std::string stockError;  // why the stock described could not be made (then nothing is cut)
+    bool tilts = false;      // a cutting move tilts the tool (the made stock is tri-dexels)
     double removedMm3 = 0;
     double airCuttingMm = 0;
     double cuttingMm = 0;

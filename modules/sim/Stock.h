@@ -8,6 +8,8 @@
 #include "sim/Moves.h"
 #include "sim/TriangleMesh.h"
 
+#include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <memory>
 #include <vector>
@@ -15,6 +17,17 @@
 namespace camwb::sim {
 
 class ToolShape;
+
+// No stock cell is finer than this, whatever resolution is asked for.
+constexpr double kFinestCellMm = 1e-3;
+
+// How many cells a stock of `resolutionMm` puts across `widthMm`: the width divided evenly into
+// cells no larger than that (at least 2). A double, so that a size check can count a grid far too
+// large to make (MakeStock.h).
+inline double cellsAcross(double widthMm, double resolutionMm)
+{
+    return std::max(2.0, std::ceil(widthMm / std::max(resolutionMm, kFinestCellMm) - 1e-9));
+}
 
 // What one move did to the stock.
 struct CutResult {
@@ -67,6 +80,8 @@ public:
     virtual TriangleMesh fileMesh() const { return mesh(); }
     // A copy: each operation can start from what the previous one left.
     virtual std::unique_ptr<Stock> clone() const = 0;
+    // The memory the stock holds (without its meshes): what a clone() costs.
+    virtual std::size_t memoryBytes() const = 0;
 };
 
 }  // namespace camwb::sim

@@ -48,10 +48,9 @@ std::vector<std::vector<TriDexel::Span>> insideSpans(const TriangleMesh& mesh, c
 
 TriDexel::TriDexel(const base::Box3& box, double resolutionMm) : m_box(box)
 {
-    const double res = std::max(resolutionMm, 1e-3);
     for (int k = 0; k < 3; ++k) {
         const double w = comp(box.max, k) - comp(box.min, k);
-        m_cells[k] = std::max(2, int(std::ceil(w / res - 1e-9)));
+        m_cells[k] = int(cellsAcross(w, resolutionMm));
         m_cell[k] = w / m_cells[k];
     }
     // Spans end on floats: cutting again along a surface already cut finds its end a rounding
@@ -69,6 +68,24 @@ TriDexel::TriDexel(const base::Box3& box, double resolutionMm) : m_box(box)
         g.spans.assign(std::size_t(g.rays.nu) * g.rays.nv, std::vector<Span>{whole});
         g.lastCut.assign(g.spans.size(), -1);
     }
+}
+
+std::size_t TriDexel::memoryBytes() const
+{
+    // A ray's spans are a heap block each: glibc gives at least 32 bytes, in steps of 16 with its
+    // 8-byte header.
+    auto block = [](std::size_t spans) {
+        return spans == 0 ? 0 : std::max<std::size_t>(32, (spans * sizeof(Span) + 8 + 15) / 16 * 16);
+    };
+    std::size_t bytes = sizeof(*this);
+    for (const Grid& g : m_grids) {
+        bytes +=
+            sizeof(std::vector<Span>) * (g.spans.size() + g.design.size()) + sizeof(std::int32_t) * g.lastCut.size();
+        for (const auto* rays : {&g.spans, &g.design})
+            for (const std::vector<Span>& ray : *rays)
+                bytes += block(ray.size());
+    }
+    return bytes;
 }
 
 std::unique_ptr<TriDexel> TriDexel::fromMesh(const TriangleMesh& blank, double resolutionMm)

@@ -36,6 +36,7 @@ public:
     // grid's, but side faces meet top faces in T-junctions (no shared vertices across heights).
     TriangleMesh mesh() const override;
     std::unique_ptr<Stock> clone() const override { return std::make_unique<TriDexel>(*this); }
+    std::size_t memoryBytes() const override;
 
     // The spans along ray (i, j) of grid `axis` (0 x, 1 y, 2 z); RayGrid says where it runs.
     const std::vector<Span>& spans(int axis, int i, int j) const { return m_grids[axis].spans[m_grids[axis].at(i, j)]; }

@@ -131,11 +131,13 @@ SimDock::SimDock(SimPlayer* player, QWidget* parent) :
         updateQuantities();
         updateReadout();
         updateDeviation();
+        updateBanner();
     });
     connect(m_player, &SimPlayer::cleared, this, [this] {
         updateQuantities();
         updateReadout();
         updateDeviation();
+        updateBanner();
     });
     connect(m_player, &SimPlayer::positionChanged, this, &SimDock::updateReadout);
     connect(m_player, &SimPlayer::deviationReady, this, &SimDock::updateDeviation);
@@ -286,6 +288,9 @@ void SimDock::updateDeviation()
 void SimDock::updateBanner()
 {
     QStringList lines;
+    // A stock too fine for this computer is the user's setting to change: said where it is seen.
+    if (const auto run = m_player->run(); run && !run->stockError.empty())
+        lines << QString::fromStdString(run->stockError);
     if (m_player->isOutOfDate())
         lines << tr("Out of date: the program was changed after it was simulated. Simulate again to see what it "
                     "does now.");

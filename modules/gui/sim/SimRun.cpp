@@ -99,8 +99,16 @@ std::shared_ptr<SimRun> buildSimRun(const SimRunRequest& request)
     run->checks = std::move(result.checks);
     if (result.cut && run->hasDesign)
         run->deviation = result.deviation;
+    result.stock.reset();  // the cut one: the dock animates a fresh one, never both at once
     if (spec) {
-        run->stock = sim::makeStock(*spec, result.tilts);
+        base::Result<std::unique_ptr<sim::Stock>> stock = sim::makeStock(*spec, result.tilts);
+        if (stock) {
+            run->stock = std::move(stock).value();
+        } else {  // simulate() found the same and cut nothing
+            run->stockError = "No stock removal: the " + stock.error().message +
+                              ". Set a coarser stock resolution and simulate again.";
+            run->notes.push_back(run->stockError);
+        }
         shapeTools(*run);
     }
     progress(request, 70);

@@ -70,6 +70,7 @@ struct SimRun {
 
     // The stock animation's inputs; without a stock the tool plays over the path only.
     std::shared_ptr<const sim::Stock> stock;
+    std::string stockError;  // why the job's stock was not made (too fine for this computer's memory)
     std::map<int, std::shared_ptr<const sim::ToolShape>> toolShapes;
     std::map<int, std::vector<RevolvedPart>> toolParts;  // for drawing
     bool hasDesign = false;                              // the stock compares with a model

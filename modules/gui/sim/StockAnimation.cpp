@@ -2,6 +2,7 @@
 
 #include "gui/sim/SimRun.h"
 #include "sim/HeightField.h"
+#include "sim/MakeStock.h"
 
 #include <QCoreApplication>
 #include <QPointer>
@@ -47,9 +48,12 @@ public:
         m_run(*m_shared->run)
     {
         m_end = m_run.timeline.pointAt(m_run.timeline.total());
-        // At most 16 copies (a dexel stock's copy is megabytes): going back re-cuts at most 1/16
-        // of the program, or 64 moves.
-        m_checkpointEvery = std::max<std::size_t>(64, m_run.moves.moves.size() / 16);
+        // At most 16 copies besides the start's, and together no more than an eighth of the
+        // computer's memory (a dexel stock's copy is megabytes, a fine height field's gigabytes):
+        // going back re-cuts at most that share of the program, or 64 moves.
+        const double copy = double(std::max<std::size_t>(1, m_run.stock->memoryBytes()));
+        const auto copies = std::size_t(std::clamp(0.25 * sim::stockMemoryBudget() / copy, 1.0, 16.0));
+        m_checkpointEvery = std::max<std::size_t>(64, m_run.moves.moves.size() / copies + 1);
     }
 
     void run();

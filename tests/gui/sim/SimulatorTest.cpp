@@ -34,6 +34,9 @@
 #include <QElapsedTimer>
 #include <QFile>
 #include <QFileInfo>
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
 #include <QLabel>
 #include <QMenuBar>
 #include <QRegularExpression>
@@ -160,6 +163,71 @@ private slots:
         const auto pose = timeline.poseAt(timeline.pointAt(inside));
         QVERIFY(pose.known);
         QVERIFY(std::abs(std::hypot(pose.tip.x - 5, pose.tip.y - 10) - 5) < 0.05);
+    }
+
+    // A stock finer than the computer's memory holds (a large plate at the dock's finest
+    // resolution) is not made: the tool plays over the path without it and a note says why and
+    // what resolution fits, instead of the window being killed with unsaved work in it.
+    void stockBeyondMemoryPlaysWithoutStock()
+    {
+        camwb::document::NcTraceRequest request;
+        request.text = "G90 G21 G17\nT1 M6\nS1000 M3\nG0 X0 Y0 Z10\nG1 Z-1 F100\nG1 X100\nG0 Z10\nM30\n";
+        request.path = "plate.ngc";
+        camwb::gui::SimRunRequest simRequest;
+        simRequest.trace = std::make_shared<const camwb::document::NcTrace>(camwb::document::traceNc(request));
+        camwb::toolpath::Tool tool;
+        tool.number = 1;
+        tool.diameterMm = 10;
+        simRequest.tools[1] = tool;
+        camwb::base::Box3 plate;
+        plate.add({-2500, -2500, -100});
+        plate.add({2500, 2500, 0});
+        simRequest.stockBox = plate;
+        simRequest.resolutionMm = 0.02;
+        const auto run = camwb::gui::buildSimRun(simRequest);
+        QVERIFY(run);
+        QVERIFY(!run->stock);
+        QVERIFY(run->timeline.total() > 0);
+        QVERIFY(run->toolShapes.count(1) == 1);  // the tool is still drawn
+        bool said = false;
+        for (const std::string& note : run->notes)
+            said = said || (note.find("No stock removal: the height field stock of 5000.0 x 5000.0 x 100.0 mm at "
+                                      "0.0200 mm") == 0 &&
+                            note.find("the finest resolution that fits is ") != std::string::npos);
+        QVERIFY2(said, run->notes.empty() ? "no note" : run->notes.front().c_str());
+        QCOMPARE(run->stockError, run->notes.front());  // the dock's banner shows it
+        // The same plate at a resolution that fits is cut.
+        simRequest.resolutionMm = 5;
+        const auto coarse = camwb::gui::buildSimRun(simRequest);
+        QVERIFY(coarse && coarse->stock);
+
+        // In the window: the example job on such a plate says so where the results go.
+        QFile example(QStringLiteral(CAMWB_EXAMPLE_JOB));
+        QVERIFY(example.open(QIODevice::ReadOnly));
+        QJsonObject job = QJsonDocument::fromJson(example.readAll()).object();
+        job[QStringLiteral("model")] = QFileInfo(QStringLiteral(CAMWB_EXAMPLE_JOB))
+                                           .dir()
+                                           .absoluteFilePath(job[QStringLiteral("model")].toString());
+        job[QStringLiteral("stock")] = QJsonObject{{QStringLiteral("min"), QJsonArray{-2500, -2500, 0}},
+                                                   {QStringLiteral("max"), QJsonArray{2500, 2500, 16}}};
+        QTemporaryDir dir;
+        QFile plateJob(dir.filePath(QStringLiteral("plate.camwb")));
+        QVERIFY(plateJob.open(QIODevice::WriteOnly));
+        plateJob.write(QJsonDocument(job).toJson());
+        plateJob.close();
+        MainWindow window;
+        window.resize(1600, 1000);
+        window.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&window));
+        openJob(window, plateJob.fileName());
+        simulate(window);
+        QVERIFY(!window.simPlayer()->run()->stock);
+        const QString results = window.findChild<QLabel*>(QStringLiteral("simBanner"))->text();
+        QVERIFY2(results.startsWith(QLatin1String("No stock removal: the height field stock of 5000.0 x 5000.0 x 16.0 "
+                                                  "mm at 0.2500 mm would have 400.0 million columns")),
+                 qPrintable(results));
+        if (withGl())
+            saveShot(&window, QStringLiteral("simulator-stock-too-fine.png"));
     }
 
     void playsTheExampleJobToTheEnd()

@@ -136,7 +136,7 @@ TEST(StockBlank, TheBlankResolvesTheStockBoxInWorkCoordinates)
     const sim::StockSpec spec = document::jobStockSpec(job.value(), model.value(), blank.value(), 0.5);
     EXPECT_FALSE(spec.box);
     const double boxVolume = 80.0 * 80 * 40;
-    const double volume = sim::makeStock(spec, false)->volumeMm3();
+    const double volume = sim::makeStock(spec, false).value()->volumeMm3();
     EXPECT_LT(volume, 0.9 * boxVolume);
     EXPECT_NEAR(volume, blank->volumeMm3(), 0.02 * blank->volumeMm3());
 }
@@ -167,10 +167,10 @@ TEST(StockBlank, CylinderIsSimulatedAsACylinder)
     ASSERT_FALSE(spec.blank.empty());
     const double cylinder = std::numbers::pi * 10 * 10 * 30;
     for (const bool tilts : {false, true}) {
-        const std::unique_ptr<sim::Stock> stock = sim::makeStock(spec, tilts);
+        const std::unique_ptr<sim::Stock> stock = sim::makeStock(spec, tilts).value();
         EXPECT_NEAR(stock->volumeMm3(), cylinder, 0.01 * cylinder) << (tilts ? "tri-dexel" : "height field");
     }
-    const std::unique_ptr<sim::Stock> stock = sim::makeStock(spec, false);
+    const std::unique_ptr<sim::Stock> stock = sim::makeStock(spec, false).value();
     const auto* field = dynamic_cast<const sim::HeightField*>(stock.get());
     ASSERT_NE(field, nullptr);
     const int nx = field->columnsX(), ny = field->columnsY();

@@ -11,6 +11,7 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <fstream>
 #include <numbers>
 #include <unistd.h>
 
@@ -165,6 +166,20 @@ TEST(ToolLibraryImport, FreeCadErrorsNameTheBitFileAndField)
     EXPECT_NE(bad.error().message.find("library.tools[1]"), std::string::npos) << bad.error().message;
     EXPECT_NE(bad.error().message.find("bad_diameter.fctb"), std::string::npos) << bad.error().message;
     EXPECT_NE(bad.error().message.find("Diameter"), std::string::npos) << bad.error().message;
+
+    // strtod reads "inf" and "nan" as numbers: a length of "inf mm" is no quantity either.
+    const fs::path dir = fs::temp_directory_path() / "camwb_tool_import_inf";
+    fs::create_directories(dir / "Bit");
+    fs::create_directories(dir / "Library");
+    std::ofstream(dir / "Bit" / "endless.fctb") << R"({"version": 2, "name": "Endless", "shape": "endmill.fcstd",
+        "parameter": {"Diameter": "6 mm", "Length": "inf mm"}, "attribute": {}})";
+    std::ofstream(dir / "Library" / "endless.fctl") << R"({"tools": [{"nr": 1, "path": "../Bit/endless.fctb"}]})";
+    auto endless = document::importToolLibrary((dir / "Library" / "endless.fctl").string());
+    ASSERT_FALSE(endless.ok());
+    EXPECT_NE(endless.error().message.find("Length: expected a quantity such as \"6.00 mm\", got \"inf mm\""),
+              std::string::npos)
+        << endless.error().message;
+    fs::remove_all(dir);
 
     auto missing = document::importToolLibrary(kData + "/freecad/Library/missing-bit.fctl");
     ASSERT_FALSE(missing.ok());

@@ -5,6 +5,8 @@
 #include "StockTestUtil.h"
 #include "sim/HeightField.h"
 #include "sim/MakeStock.h"
+#include "sim/Simulation.h"
+#include "toolpath/Toolpath.h"
 
 #include <gtest/gtest.h>
 
@@ -135,6 +137,92 @@ TEST(SimTriDexel, BlankWithACavityAndTheMeshVolume)
     std::size_t triangles = 0;
     EXPECT_NEAR(stlVolume(path, triangles), stock->gridVolumeMm3(2), 1e-3 * stock->gridVolumeMm3(2));
     std::filesystem::remove(path);
+}
+
+// The size a stock is weighed by is the grid its constructor makes: columns of a height field,
+// rays of the three tri-dexel grids.
+TEST(SimMakeStock, SizeCountsTheCellsTheStockMakes)
+{
+    const base::Box3 b = box({-3, 0, 0}, {97, 50.2, 20});
+    for (const double resolution : {0.5, 0.3, 1.7}) {
+        const HeightField field(b, resolution);
+        EXPECT_EQ(stockSize(b, resolution, false).cells, double(field.columnsX()) * field.columnsY()) << resolution;
+        const TriDexel dexels(b, resolution);
+        double rays = 0;
+        for (int axis = 0; axis < 3; ++axis)
+            rays += double(dexels.rays(axis).nu) * dexels.rays(axis).nv;
+        EXPECT_EQ(stockSize(b, resolution, true).cells, rays) << resolution;
+        EXPECT_GT(stockSize(b, resolution, true).bytes, stockSize(b, resolution, false).bytes);
+    }
+}
+
+// What the size check weighs a stock by covers what the stock holds, its design model included
+// (the rest of the estimate is its meshes); a copy holds as much as the original.
+TEST(SimMakeStock, SizeCoversWhatTheStockHolds)
+{
+    const base::Box3 b = box({0, 0, 0}, {40, 30, 20});
+    const TriangleMesh part = boxMesh({5, 5, 0}, {35, 25, 12});
+    for (const bool tilts : {false, true}) {
+        std::unique_ptr<Stock> stock = makeStock(b, 0.25, tilts);
+        const std::size_t bare = stock->memoryBytes();
+        stock->setDesign(part, 0.02);
+        const std::size_t withDesign = stock->memoryBytes();
+        EXPECT_GT(withDesign, bare);
+        const StockSize size = stockSize(b, 0.25, tilts);
+        EXPECT_GT(double(bare), size.cells * (tilts ? 56 : 12)) << tilts;  // the cells' own data, at least
+        EXPECT_LT(double(withDesign), 0.5 * size.bytes) << tilts;          // room left for the meshes
+        EXPECT_EQ(stock->clone()->memoryBytes(), withDesign) << tilts;
+    }
+}
+
+// A stock larger than the memory it may take is refused with the finest resolution that fits,
+// and that resolution is the finest: a cell finer no longer fits.
+TEST(SimMakeStock, TooLargeAStockNamesTheFinestResolutionThatFits)
+{
+    const base::Box3 b = box({0, 0, 0}, {300, 200, 50});
+    const double budget = 1e9;
+    EXPECT_FALSE(stockTooLarge(b, 0.5, false, budget));
+    EXPECT_FALSE(stockTooLarge(b, 0.5, true, budget));
+    for (const bool tilts : {false, true}) {
+        const std::optional<std::string> why = stockTooLarge(b, 0.02, tilts, budget);
+        ASSERT_TRUE(why);
+        EXPECT_NE(why->find(tilts ? "tri-dexel stock of 300.0 x 200.0 x 50.0 mm at 0.0200 mm"
+                                  : "height field stock of 300.0 x 200.0 x 50.0 mm at 0.0200 mm"),
+                  std::string::npos)
+            << *why;
+        const std::string fits = "the finest resolution that fits is ";
+        const std::size_t at = why->find(fits);
+        ASSERT_NE(at, std::string::npos) << *why;
+        const double finest = std::stod(why->substr(at + fits.size()));
+        EXPECT_LE(stockSize(b, finest, tilts).bytes, budget) << finest;
+        EXPECT_GT(stockSize(b, finest - kFinestCellMm, tilts).bytes, budget) << finest;
+        EXPECT_FALSE(stockTooLarge(b, finest, tilts, budget));
+    }
+}
+
+// Asked for a stock no computer holds, simulate() cuts nothing and says why, without trying to
+// make it (which would take the process down).
+TEST(SimMakeStock, SimulateRefusesAStockBeyondMemory)
+{
+    StockSpec spec;
+    spec.box = box({0, 0, 0}, {5000, 5000, 100});
+    spec.resolutionMm = 1e-9;  // a micrometre's cells: 2.5e13 columns
+    const auto made = makeStock(spec, false);
+    ASSERT_FALSE(made);
+    EXPECT_NE(
+        made.error().message.find("height field stock of 5000.0 x 5000.0 x 100.0 mm at 0.001 mm (no cell is finer)"),
+        std::string::npos)
+        << made.error().message;
+    toolpath::Toolpath program;
+    SimulationSetup setup;
+    setup.stockSpec = &spec;
+    const SimulationResult result = simulate(program, setup);
+    EXPECT_FALSE(result.cut);
+    EXPECT_FALSE(result.stock);
+    EXPECT_EQ(result.stockError, made.error().message);
+    spec.resolutionMm = 50;
+    EXPECT_TRUE(makeStock(spec, true));
+    EXPECT_TRUE(simulate(program, setup).cut);
 }
 
 TEST(SimTriDexel, FactoryPicksTheRepresentation)

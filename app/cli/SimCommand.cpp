@@ -194,7 +194,7 @@ std::optional<Input> loadJobInput(const SimOptions& options)
 
 std::optional<Input> loadNcInput(const SimOptions& options, const kinematics::Machine* machine)
 {
-    auto text = base::readTextFile(options.input);
+    auto text = base::readPlainTextFile(options.input);
     if (!text) {
         fail(text.error().toString());
         return std::nullopt;

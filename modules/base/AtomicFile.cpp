@@ -2,6 +2,7 @@
 
 #include "base/LineReader.h"
 
+#include <algorithm>
 #include <cerrno>
 #include <cstring>
 #include <vector>
@@ -132,6 +133,19 @@ Result<std::string> readTextFile(const std::string& path)
     ::close(fd);
     text.resize(length);
     return text;
+}
+
+Result<std::string> readPlainTextFile(const std::string& path)
+{
+    Result<std::string> text = readTextFile(path);
+    if (!text)
+        return text;
+    const std::string& t = text.value();
+    const std::size_t nul = t.find('\0');
+    if (nul == std::string::npos)
+        return text;
+    const int line = 1 + static_cast<int>(std::count(t.begin(), t.begin() + static_cast<std::ptrdiff_t>(nul), '\n'));
+    return makeError("not a text file (binary data: a NUL byte on this line)", path, line);
 }
 
 }  // namespace camwb::base

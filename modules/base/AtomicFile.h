@@ -36,5 +36,9 @@ private:
 
 Status writeFileAtomically(const std::string& path, std::string_view content);
 Result<std::string> readTextFile(const std::string& path);
+// The same for a file that must be text (an NC program, a tool table, a CSV): one holding a NUL
+// byte is binary data (a model or an archive picked by mistake), an error naming its line, rather
+// than a screenful of its bytes read as words.
+Result<std::string> readPlainTextFile(const std::string& path);
 
 }  // namespace camwb::base

@@ -44,7 +44,7 @@ ProgramResolver folderResolver(std::string folder, std::vector<std::string> exte
                 std::error_code ec;
                 if (!fs::is_regular_file(candidate, ec))
                     continue;
-                auto text = base::readTextFile(candidate.string());
+                auto text = base::readPlainTextFile(candidate.string());
                 if (text)
                     return ProgramSource{candidate.string(), std::move(text).value()};
             }
@@ -94,11 +94,11 @@ ProgramResolver resolverBeside(const std::string& programPath, Dialect dialect)
 InterpretResult interpretFile(const std::string& path, std::optional<Dialect> dialect, InterpretOptions options,
                               toolpath::MachineSink& sink)
 {
-    auto text = base::readTextFile(path);
+    auto text = base::readPlainTextFile(path);
     if (!text) {
         InterpretResult failed;
         failed.files.push_back(path);
-        failed.diagnostics.push_back({Severity::Error, path, 0, 0, text.error().message});
+        failed.diagnostics.push_back({Severity::Error, path, text.error().line, 0, text.error().message});
         return failed;
     }
     options.dialect = dialect ? *dialect : guessDialect(text.value(), path);

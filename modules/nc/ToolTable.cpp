@@ -143,7 +143,7 @@ base::Result<ToolTable> parseToolTable(std::string_view text, const std::string&
 
 base::Result<ToolTable> readToolTable(const std::string& path)
 {
-    auto text = base::readTextFile(path);
+    auto text = base::readPlainTextFile(path);
     if (!text)
         return text.error();
     return parseToolTable(text.value(), path);

@@ -108,7 +108,7 @@ base::Result<MeasuredTrace> readMeasuredTrace(const std::string& text, const std
 
 base::Result<MeasuredTrace> loadMeasuredTrace(const std::string& path, const TraceColumns& columns)
 {
-    auto text = base::readTextFile(path);
+    auto text = base::readPlainTextFile(path);
     if (!text)
         return text.error();
     return readMeasuredTrace(text.value(), path, columns);

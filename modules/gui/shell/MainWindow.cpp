@@ -167,7 +167,7 @@ bool MainWindow::openNcFile(const QString& path)
 {
     if (!m_ncDocument->mayReplace(tr("Opening %1 replaces them.").arg(QFileInfo(path).fileName())))
         return false;
-    auto text = base::readTextFile(path.toStdString());
+    auto text = base::readPlainTextFile(path.toStdString());
     if (!text) {
         m_report->append(Workbench::Severity::Error, QString::fromStdString(text.error().toString()));
         m_prompter->showError(tr("Open NC program"), QString::fromStdString(text.error().toString()));

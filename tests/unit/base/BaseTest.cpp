@@ -218,6 +218,24 @@ TEST_F(AtomicFileTest, ReadsWholeFilesAndRefusesFolders)
     EXPECT_EQ(readTextFile("/proc/self/status").value().rfind("Name:", 0), 0u);  // size 0 until read
 }
 
+// A file that must be text: binary data (a NUL byte) is an error naming its line; Latin-1
+// comments of an old control's program are text.
+TEST_F(AtomicFileTest, PlainTextRefusesBinaryDataAtItsLine)
+{
+    const std::string path = (dir / "picked-by-mistake.nc").string();
+    ASSERT_TRUE(writeFileAtomically(path, std::string("G0 X0\nG1 X1\n\x89PNG\0\x1a\nG1 X2\n", 25)));
+    auto binary = readPlainTextFile(path);
+    ASSERT_FALSE(binary);
+    EXPECT_EQ(binary.error().file, path);
+    EXPECT_EQ(binary.error().line, 3);
+    EXPECT_EQ(binary.error().message, "not a text file (binary data: a NUL byte on this line)");
+    EXPECT_TRUE(readTextFile(path)) << "any bytes are read where the caller takes them";
+    const std::string latin1 = "G0 X0 (Fr\xe4ser \xd8 6)\nM30\n";
+    ASSERT_TRUE(writeFileAtomically(path, latin1));
+    EXPECT_EQ(readPlainTextFile(path).value(), latin1);
+    EXPECT_FALSE(readPlainTextFile((dir / "missing.nc").string()));
+}
+
 TEST(NumberFormat, RoundedValueIsWhatTheTextReadsBackAs)
 {
     Xorshift next{0x2545F4914F6CDD1Dull};

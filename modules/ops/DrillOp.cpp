@@ -72,6 +72,9 @@ base::Result<DrillHole> planHole(const std::string& what, const geom::Hole& hole
         return status.error();
     if (base::Status status = checkCuttingLength(holeWhat, h, tc.tool); !status)
         return status.error();
+    if (p.cycle == CycleKind::Peck || p.cycle == CycleKind::ChipBreak)
+        if (base::Status status = checkRepeats(holeWhat, "peck depth", p.peckMm, h.startZ - h.finalZ, "pecks"); !status)
+            return status.error();
     const double drill = tc.tool.diameterMm;
     if (drill > hole.diameterMm + kOversizeToleranceMm)
         return opError(what, "the " + formatMm(drill) + " mm drill is larger than the " + describeHole(hole));

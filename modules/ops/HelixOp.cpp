@@ -52,6 +52,10 @@ base::Result<HelixHole> planHole(const std::string& what, const geom::Hole& hole
         return status.error();
     if (base::Status status = checkCuttingLength(holeWhat, plan.heights, tc.tool); !status)
         return status.error();
+    if (base::Status status =
+            checkRepeats(holeWhat, "pitch", p.pitchMm, plan.heights.startZ - plan.heights.finalZ, "turns");
+        !status)
+        return status.error();
     const double toolRadius = tc.tool.diameterMm / 2;
     plan.radius = (hole.diameterMm - tc.tool.diameterMm) / 2 - p.radialStockMm;
     if (!(plan.radius > 0))

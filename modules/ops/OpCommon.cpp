@@ -2,6 +2,7 @@
 
 #include "base/NumberFormat.h"
 
+#include <algorithm>
 #include <cmath>
 #include <variant>
 
@@ -9,6 +10,11 @@ namespace camwb::ops {
 
 namespace {
 std::string fmt(double v) { return base::NumberFormat{4, true}.format(v); }
+// A value that may be far below fmt's four decimals (a slip's), to its first significant digits.
+std::string significant(double v)
+{
+    return base::NumberFormat{std::clamp(4 - int(std::floor(std::log10(v))), 4, 12), true}.format(v);
+}
 }  // namespace
 
 MotionCounts countMotions(const toolpath::Toolpath& toolpath)
@@ -90,6 +96,16 @@ base::Error opError(const std::string& what, const std::string& message)
 }
 
 base::Error cancelledError(const std::string& what) { return opError(what, "cancelled"); }
+
+base::Status checkRepeats(const std::string& what, const std::string& parameter, double valueMm, double spanMm,
+                          const std::string& repeats)
+{
+    if (!(valueMm > 0) || !(spanMm > 0) || spanMm / valueMm <= kMaxRepeats)
+        return base::Status::success();
+    return opError(what, parameter + " " + significant(valueMm) + " mm makes " + fmt(std::ceil(spanMm / valueMm)) +
+                             " " + repeats + " over " + fmt(spanMm) + " mm, more than the " + fmt(kMaxRepeats) +
+                             " an operation may make; use at least " + significant(spanMm / kMaxRepeats) + " mm");
+}
 
 base::Status checkToolController(const std::string& what, const ToolController& tc)
 {

@@ -48,6 +48,12 @@ base::Status check(const std::string& what, const SurfaceInput& in, const Pocket
                                  fmt(p.bottomStockMm) + " mm)");
     if (!(p.toleranceMm > 0) || p.toleranceMm > 1)
         return opError(what, "tolerance must be in (0, 1] mm, got " + fmt(p.toleranceMm) + " mm");
+    const double depth = p.heights.startZ - p.heights.finalZ;
+    if (base::Status s = checkRepeats(what, "step-down", p.stepDownMm, depth, "levels"); !s)
+        return s;
+    if (p.entry == EntryKind::Helix)
+        if (base::Status s = checkRepeats(what, "helix pitch", p.helixPitchMm, depth, "turns"); !s)
+            return s;
     if (p.restMachining && !in.restStock)
         return opError(what, "rest machining needs the stock the previous operations left, and there is none "
                              "(no operation before this one was simulated)");

@@ -46,6 +46,12 @@ base::Status check(const std::string& what, const std::vector<geom::Region>& reg
                                  " and the final depth " + fmt(p.heights.finalZ));
     if (!(p.toleranceMm > 0))
         return opError(what, "tolerance must be positive, got " + fmt(p.toleranceMm) + " mm");
+    const double depth = p.heights.startZ - p.heights.finalZ;
+    if (base::Status s = checkRepeats(what, "step-down", p.stepDownMm, depth - p.floorStockMm, "levels"); !s)
+        return s;
+    if (p.entry == EntryKind::Helix)
+        if (base::Status s = checkRepeats(what, "helix pitch", p.helixPitchMm, depth, "turns"); !s)
+            return s;
     return checkEntry(what, entryRequest(p), tc);
 }
 

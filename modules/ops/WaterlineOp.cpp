@@ -26,6 +26,8 @@ constexpr double kPi = std::numbers::pi;
 
 std::string fmt(double v) { return base::NumberFormat{4, true}.format(v); }
 
+double stepFor(const WaterlineParams& p, const toolpath::Tool& tool);
+
 base::Status check(const std::string& what, const SurfaceInput& in, const WaterlineParams& p, const ToolController& tc)
 {
     if (base::Status s = checkToolController(what, tc); !s)
@@ -44,7 +46,8 @@ base::Status check(const std::string& what, const SurfaceInput& in, const Waterl
         return opError(what, "stock to leave must not be negative, got " + fmt(p.stockMm) + " mm");
     if (!(p.toleranceMm > 0) || p.toleranceMm > 1)
         return opError(what, "tolerance must be in (0, 1] mm, got " + fmt(p.toleranceMm) + " mm");
-    return base::Status::success();
+    return checkRepeats(what, "step-down (from the scallop height)", stepFor(p, tc.tool),
+                        p.heights.startZ - p.heights.finalZ, "levels");
 }
 
 // The vertical step between contours that keeps the scallop on walls at the slope limit (the

@@ -51,6 +51,8 @@ base::Status checkGeometry(const std::vector<geom::Profile>& contours, const Con
     return base::Status::success();
 }
 
+constexpr double kMaxLeadDiameters = 100;
+
 base::Status checkParameters(const ContourParams& p, const ToolController& tc)
 {
     const std::string w = what(p);
@@ -63,12 +65,20 @@ base::Status checkParameters(const ContourParams& p, const ToolController& tc)
     if (depth > 0 && p.axialStockMm >= depth - 1e-9)
         return opError(w, "axial stock " + fmt(p.axialStockMm) + " mm leaves nothing of the " + fmt(depth) +
                               " mm depth to cut");
+    if (base::Status s = checkRepeats(w, "step-down", p.stepDownMm, depth - p.axialStockMm, "levels"); !s)
+        return s;
     if (p.radialPasses < 1)
         return opError(w, "radial passes must be at least 1, got " + std::to_string(p.radialPasses));
     if (p.radialPasses > 1 && !(p.radialStepoverMm > 0))
         return opError(w, "radial stepover must be positive for " + std::to_string(p.radialPasses) + " passes");
     if ((p.leadIn != LeadKind::None || p.leadOut != LeadKind::None) && !(p.leadRadiusMm > 0))
         return opError(w, "lead radius/length must be positive, got " + fmt(p.leadRadiusMm) + " mm");
+    // A lead is a short approach; a far larger one is a slip (1e9 for 10), whose clearance check
+    // alone would sample it for hours.
+    if ((p.leadIn != LeadKind::None || p.leadOut != LeadKind::None) &&
+        p.leadRadiusMm > kMaxLeadDiameters * 2 * toolRadius)
+        return opError(w, "lead radius/length " + fmt(p.leadRadiusMm) + " mm is more than " + fmt(kMaxLeadDiameters) +
+                              " tool diameters (" + fmt(kMaxLeadDiameters * 2 * toolRadius) + " mm)");
     if (p.entry == EntryKind::Ramp && !(p.rampAngleDeg > 0 && p.rampAngleDeg <= 90))
         return opError(w, "ramp angle must be above 0 and at most 90 degrees, got " + fmt(p.rampAngleDeg));
     if (p.entry == EntryKind::Helix) {
@@ -76,6 +86,8 @@ base::Status checkParameters(const ContourParams& p, const ToolController& tc)
             return opError(w, "helix diameter must not be negative, got " + fmt(p.helixDiameterMm) + " mm");
         if (!(p.helixPitchMm > 0))
             return opError(w, "helix pitch must be positive, got " + fmt(p.helixPitchMm) + " mm");
+        if (base::Status s = checkRepeats(w, "helix pitch", p.helixPitchMm, depth, "turns"); !s)
+            return s;
     }
     if (p.tabCount < 0)
         return opError(w, "tab count must not be negative, got " + std::to_string(p.tabCount));

@@ -256,6 +256,20 @@ TEST(ContourOp, InputErrors)
     p = params();
     p.leadIn = ops::LeadKind::Arc;
     expectError({kPlate}, p, good, "lead radius/length must be positive");
+    // Slips of the keyboard: refused with the least value, not computed until the memory is gone
+    // (a step-down of 1e-9 mm overflowed the level count into a single full-depth level).
+    p.leadRadiusMm = 1e9;
+    expectError({kPlate}, p, good, "lead radius/length 1000000000 mm is more than 100 tool diameters (1000 mm)");
+    for (const double slip : {1e-9, 1e-5}) {
+        p = params();
+        p.stepDownMm = slip;
+        expectError({kPlate}, p, good, " levels over ");
+        expectError({kPlate}, p, good, "more than the 10000 an operation may make; use at least ");
+    }
+    p = params();
+    p.entry = ops::EntryKind::Helix;
+    p.helixPitchMm = 1e-7;
+    expectError({kPlate}, p, good, "helix pitch 0.0000001 mm makes ");
     for (double angle : {0.0, -3.0, 90.5}) {
         p = params();
         p.entry = ops::EntryKind::Ramp;

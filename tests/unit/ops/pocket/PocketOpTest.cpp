@@ -82,6 +82,17 @@ TEST(PocketOp, Errors)
     p = baseParams();
     p.helixPitchMm = 0;
     EXPECT_NE(errorOf(kRect, p, tc).find("helix pitch must be positive"), std::string::npos);
+    // Slips of the keyboard are refused with the least value: a step-down of 1e-9 mm overflowed the
+    // level count into one full-depth level, a helix pitch of 1e-6 mm filled the memory.
+    p.helixPitchMm = 1e-6;
+    EXPECT_NE(errorOf(kRect, p, tc).find("helix pitch 0.000001 mm makes "), std::string::npos) << errorOf(kRect, p, tc);
+    p.entry = ops::EntryKind::Ramp;  // the pitch is not used
+    EXPECT_TRUE(ops::computePocket(kRect, p, tc, 0).ok());
+    p = baseParams();
+    p.stepDownMm = 1e-9;
+    EXPECT_NE(errorOf(kRect, p, tc).find("step-down 0.000000001 mm makes "), std::string::npos)
+        << errorOf(kRect, p, tc);
+    EXPECT_NE(errorOf(kRect, p, tc).find(" levels over "), std::string::npos);
     p = baseParams();
     p.entry = ops::EntryKind::Plunge;
     EXPECT_EQ(errorOf(kRect, p, toolOf(6, false)),

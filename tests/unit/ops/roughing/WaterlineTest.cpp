@@ -179,6 +179,12 @@ TEST(Waterline, ParameterErrorsAreClear)
     EXPECT_NE(error([](auto& p, auto&) { p.scallopMm = 0; }).find("scallop height must be positive"),
               std::string::npos);
     EXPECT_NE(error([](auto& p, auto&) { p.maxStepDownMm = -1; }).find("step-down"), std::string::npos);
+    // A slip of the keyboard (a scallop of 1e-9 mm) is refused, not computed for hours.
+    EXPECT_NE(error([](auto& p, auto&) {
+                  p.scallopMm = 1e-9;
+              }).find("step-down (from the scallop height) 0.00007746 mm makes 154920 levels over 12 mm"),
+              std::string::npos)
+        << error([](auto& p, auto&) { p.scallopMm = 1e-9; });
     EXPECT_NE(error([](auto& p, auto&) { p.minSlopeDeg = 90; }).find("slope limit"), std::string::npos);
     EXPECT_NE(error([](auto& p, auto&) { p.stockMm = -0.1; }).find("must not be negative"), std::string::npos);
     EXPECT_NE(error([](auto&, auto& in) { in.model = nullptr; }).find("waterline \"Waterline\": no model"),

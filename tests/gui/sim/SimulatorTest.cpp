@@ -107,6 +107,17 @@ private:
         QTest::qWait(50);  // the last frame's queued delivery
     }
 
+    // A simulation of NC text, as the dock asks for one (no machine, no stock unless set).
+    static camwb::gui::SimRunRequest requestFor(const char* text, const char* path)
+    {
+        camwb::document::NcTraceRequest request;
+        request.text = text;
+        request.path = path;
+        camwb::gui::SimRunRequest simRequest;
+        simRequest.trace = std::make_shared<const camwb::document::NcTrace>(camwb::document::traceNc(request));
+        return simRequest;
+    }
+
     static int movingMoves(const camwb::gui::SimRun& run)
     {
         int count = 0;
@@ -140,12 +151,8 @@ private slots:
     // the block, then to the block before.
     void timelineStepsByBlocks()
     {
-        camwb::document::NcTraceRequest request;
-        request.text = "G90 G21 G17\nG0 X0 Y0 Z10\nG1 Z0 F100\nG1 X10\nG1 Y10\nG2 X0 Y10 I-5 J0\nG0 Z10\nM30\n";
-        request.path = "steps.ngc";
-        camwb::gui::SimRunRequest simRequest;
-        simRequest.trace = std::make_shared<const camwb::document::NcTrace>(camwb::document::traceNc(request));
-        const auto run = camwb::gui::buildSimRun(simRequest);
+        const auto run = camwb::gui::buildSimRun(requestFor(
+            "G90 G21 G17\nG0 X0 Y0 Z10\nG1 Z0 F100\nG1 X10\nG1 Y10\nG2 X0 Y10 I-5 J0\nG0 Z10\nM30\n", "steps.ngc"));
         QVERIFY(run);
         const camwb::gui::Timeline& timeline = run->timeline;
         QVERIFY(timeline.total() > 0);
@@ -170,11 +177,8 @@ private slots:
     // what resolution fits, instead of the window being killed with unsaved work in it.
     void stockBeyondMemoryPlaysWithoutStock()
     {
-        camwb::document::NcTraceRequest request;
-        request.text = "G90 G21 G17\nT1 M6\nS1000 M3\nG0 X0 Y0 Z10\nG1 Z-1 F100\nG1 X100\nG0 Z10\nM30\n";
-        request.path = "plate.ngc";
-        camwb::gui::SimRunRequest simRequest;
-        simRequest.trace = std::make_shared<const camwb::document::NcTrace>(camwb::document::traceNc(request));
+        camwb::gui::SimRunRequest simRequest =
+            requestFor("G90 G21 G17\nT1 M6\nS1000 M3\nG0 X0 Y0 Z10\nG1 Z-1 F100\nG1 X100\nG0 Z10\nM30\n", "plate.ngc");
         camwb::toolpath::Tool tool;
         tool.number = 1;
         tool.diameterMm = 10;

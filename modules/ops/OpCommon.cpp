@@ -1,6 +1,7 @@
 #include "ops/OpCommon.h"
 
 #include "base/NumberFormat.h"
+#include "base/RepeatLimit.h"
 
 #include <algorithm>
 #include <cmath>
@@ -10,11 +11,6 @@ namespace camwb::ops {
 
 namespace {
 std::string fmt(double v) { return base::NumberFormat{4, true}.format(v); }
-// A value that may be far below fmt's four decimals (a slip's), to its first significant digits.
-std::string significant(double v)
-{
-    return base::NumberFormat{std::clamp(4 - int(std::floor(std::log10(v))), 4, 12), true}.format(v);
-}
 }  // namespace
 
 MotionCounts countMotions(const toolpath::Toolpath& toolpath)
@@ -100,11 +96,9 @@ base::Error cancelledError(const std::string& what) { return opError(what, "canc
 base::Status checkRepeats(const std::string& what, const std::string& parameter, double valueMm, double spanMm,
                           const std::string& repeats)
 {
-    if (!(valueMm > 0) || !(spanMm > 0) || spanMm / valueMm <= kMaxRepeats)
-        return base::Status::success();
-    return opError(what, parameter + " " + significant(valueMm) + " mm makes " + fmt(std::ceil(spanMm / valueMm)) +
-                             " " + repeats + " over " + fmt(spanMm) + " mm, more than the " + fmt(kMaxRepeats) +
-                             " an operation may make; use at least " + significant(spanMm / kMaxRepeats) + " mm");
+    if (std::optional<std::string> why = base::tooManyRepeats(parameter, valueMm, spanMm, repeats, "an operation"))
+        return opError(what, *why);
+    return base::Status::success();
 }
 
 base::Status checkToolController(const std::string& what, const ToolController& tc)

@@ -112,11 +112,9 @@ base::Status checkToolController(const std::string& what, const ToolController& 
 base::Status checkHeights(const std::string& what, const Heights& heights);
 // The cut depth (start - final) must not exceed the tool's flute length (when the tool states it).
 base::Status checkCuttingLength(const std::string& what, const Heights& heights, const toolpath::Tool& tool);
-// The most levels, turns or passes an operation makes of one parameter. More is a slip of the
-// keyboard (a step-down of 0.0001 for 1) whose toolpath would fill the memory before anyone saw it.
-constexpr double kMaxRepeats = 10000;
 // `parameter` (its name) of `valueMm` repeated over `spanMm` (span / value repeats of `repeats`,
-// "levels" or "turns") within kMaxRepeats; else an error naming the count and the least value.
+// "levels" or "turns") within base::kMaxRepeats (base/RepeatLimit.h: more is a slip of the
+// keyboard); else an error naming the count and the least value.
 base::Status checkRepeats(const std::string& what, const std::string& parameter, double valueMm, double spanMm,
                           const std::string& repeats);
 base::Error opError(const std::string& what, const std::string& message);  // "what: message"

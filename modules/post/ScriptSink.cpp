@@ -491,6 +491,10 @@ void ScriptSink::expandHole(const Cycle& cycle, const Vec3& hole)
                    "tool change)");
         return;
     }
+    if (const std::optional<std::string> why = tooManyPecks(cycle)) {
+        m_run.fail(*why);
+        return;
+    }
     for (const Record& record : expandCycleHole(cycle, hole, from, m_spindle)) {
         if (m_run.m_failure)
             return;

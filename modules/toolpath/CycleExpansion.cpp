@@ -1,5 +1,7 @@
 #include "toolpath/CycleExpansion.h"
 
+#include "base/RepeatLimit.h"
+
 #include <algorithm>
 
 namespace camwb::toolpath {
@@ -7,6 +9,15 @@ namespace camwb::toolpath {
 double cycleReturnZ(const Cycle& cycle)
 {
     return cycle.returnToClearance ? std::max(cycle.clearanceZ, cycle.retractZ) : cycle.retractZ;
+}
+
+std::optional<std::string> tooManyPecks(const Cycle& cycle)
+{
+    if (cycle.kind != CycleKind::Peck && cycle.kind != CycleKind::ChipBreak)
+        return std::nullopt;
+    // As expandCycleHole pecks: from the hole's top (or the R plane below it) to the bottom.
+    return base::tooManyRepeats("peck depth", cycle.peckMm, std::min(cycle.topZ, cycle.retractZ) - cycle.bottomZ,
+                                "pecks", "a cycle");
 }
 
 std::vector<Record> expandCycleHole(const Cycle& cycle, const Vec3& hole, const Vec3& from, const SpindleState& spindle)
@@ -61,6 +72,8 @@ std::vector<Record> expandCycleHole(const Cycle& cycle, const Vec3& hole, const 
         break;
     case CycleKind::Peck:
     case CycleKind::ChipBreak: {
+        if (tooManyPecks(cycle))
+            break;  // no motion into the hole: its source reports the error (header)
         const bool fullRetract = cycle.kind == CycleKind::Peck;
         // A peck of 0 (or less) would never reach the bottom: drill in one go.
         const double step = cycle.peckMm > 0 ? cycle.peckMm : r - bottom;

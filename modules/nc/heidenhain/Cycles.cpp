@@ -2,6 +2,7 @@
 // cycles 200-209 and 240 and the old 1/2/17 as one toolpath::Cycle record per call; 204 (back
 // boring) and 208 (bore milling) expanded into moves here, because no CycleKind describes them.
 #include "nc/heidenhain/Machine.h"
+#include "toolpath/CycleExpansion.h"
 
 #include <algorithm>
 #include <cmath>
@@ -287,6 +288,8 @@ void Machine::cycleRecord(const Block& b, Vec2 hole)
     if (c.kind != CycleKind::DrillDwell && c.kind != CycleKind::Peck && c.kind != CycleKind::ChipBreak &&
         c.kind != CycleKind::Bore && c.kind != CycleKind::Tap)
         c.dwellSeconds = 0;
+    if (const std::optional<std::string> why = toolpath::tooManyPecks(c))
+        report(Severity::Error, b.line, b.column, "cycle " + std::to_string(n) + ": " + *why);
     c.holes.push_back({hole.x, hole.y, top});
     m_sink.cycle(c);
     m_pos = {hole.x, hole.y, std::max(c.clearanceZ, c.retractZ)};

@@ -5,6 +5,7 @@
 // the top; clearance is the Z before the cycle's first hole, and G98 returns to the higher of it
 // and R, as cycleReturnZ() does. Also G28/G30 through their stored positions.
 #include "nc/iso/IsoMachine.h"
+#include "toolpath/CycleExpansion.h"
 
 #include <algorithm>
 #include <cmath>
@@ -119,6 +120,8 @@ void Machine::cycle(const Block& block, int mode)
     record.dwellSeconds = mode == 820 || mode == 840 || mode == 860 || mode == 890 ? m_state.cycleP : 0;
     record.feedMmPerMin = feed;
     record.returnToClearance = !m_state.retractToR;
+    if (const std::optional<std::string> why = toolpath::tooManyPecks(record))
+        m_reporter.error(m_line, block.has('Q') ? block.col('Q') : 0, name + ": " + *why);
     for (int i = 0; i < repeats; ++i) {
         if (!m_state.absolute) {
             x += dx;

@@ -126,6 +126,8 @@ bool Machine::runCycle(const Program& p, int number, const std::vector<std::opti
     }
     if (c.feedMmPerMin <= 0)
         error(p, pos, name + " without a feed (F)");
+    if (const std::optional<std::string> why = toolpath::tooManyPecks(c))
+        error(p, pos, name + ": " + *why);
     c.holes.push_back(Vec3{m_pos.x, m_pos.y, top});
     setSource(line);
     m_sink.cycle(c);

@@ -143,6 +143,16 @@ TEST(UnknownAxes, ArcsAndCyclesNeedAKnownStart)
     EXPECT_EQ(lines(runSource("templates.js", std::string(kCommon) + kTemplates, retracted).text),
               (std::vector<std::string>{"N10 G0 Z20.000", "N20 X5.000 Y5.000", "N30 Z2.000", "N40 G1 Z-5.000 F100",
                                         "N50 G0 Z20.000"}));
+
+    // A peck that would make millions of pecks (a slip) fails the post rather than writing them.
+    Cycle peck = drill;
+    peck.kind = CycleKind::Peck;
+    peck.peckMm = 1e-7;
+    Toolpath slip;
+    slip.add(Rapid{{0, 0, 20}, kZ});
+    slip.add(peck);
+    EXPECT_NE(failure(slip).message.find("peck depth 0.0000001 mm makes 50000000 pecks over 5 mm"), std::string::npos)
+        << failure(slip).toString();
 }
 
 TEST(UnknownAxes, ExtentsHoldOnlyTheAxesTheMovesGave)

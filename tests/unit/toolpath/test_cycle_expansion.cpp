@@ -42,6 +42,29 @@ TEST(CycleExpansion, DrillRapidsOverTheHoleFeedsDownAndReturnsToClearance)
                                                                "rapid 10.0000 10.0000 25.0000\n");
 }
 
+// A peck depth that would make millions of pecks (Q0.0000001 for Q1) is an error where the cycle
+// comes from; expanded anyway (the backplot, the statistics) it makes no motion into the hole
+// rather than filling the memory. The limit is on the pecks, not on the holes or the other kinds.
+TEST(CycleExpansion, TooManyPecksMakeNoMotionIntoTheHole)
+{
+    Cycle c = cycleOf(CycleKind::Peck);
+    EXPECT_FALSE(tooManyPecks(c));
+    c.peckMm = 1e-7;
+    const std::optional<std::string> why = tooManyPecks(c);
+    ASSERT_TRUE(why);
+    EXPECT_EQ(*why, "peck depth 0.0000001 mm makes 100000000 pecks over 10 mm, more than the 10000 a cycle may "
+                    "make; use at least 0.001 mm");
+    EXPECT_EQ(expanded(c, {10, 10, 25}), "rapid 10.0000 10.0000 2.0000\n"
+                                         "rapid 10.0000 10.0000 25.0000\n");
+    c.kind = CycleKind::ChipBreak;
+    EXPECT_TRUE(tooManyPecks(c));
+    c.peckMm = 0.002;
+    EXPECT_FALSE(tooManyPecks(c));
+    c.kind = CycleKind::Drill;
+    c.peckMm = 1e-7;
+    EXPECT_FALSE(tooManyPecks(c));
+}
+
 TEST(CycleExpansion, BelowTheRPlaneTheToolGoesUpFirst)
 {
     Cycle c = cycleOf(CycleKind::DrillDwell);

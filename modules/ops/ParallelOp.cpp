@@ -28,6 +28,11 @@ base::Status checkParams(const std::string& what, const SurfaceInput& input, con
     if (!(p.stepoverMm > 0) || !(p.stepoverMm <= tc.tool.diameterMm))
         return opError(what, "stepover must be above 0 and at most the tool diameter " + fmt(tc.tool.diameterMm) +
                                  " mm, got " + fmt(p.stepoverMm) + " mm");
+    if (base::Status s = checkRepeats(
+            what, "stepover", p.stepoverMm,
+            std::hypot(input.stock.max.x - input.stock.min.x, input.stock.max.y - input.stock.min.y), "passes");
+        !s)
+        return s;
     if (!std::isfinite(p.angleDeg))
         return opError(what, "the raster angle must be a number of degrees");
     if (!(p.maxSlopeDeg > 0 && p.maxSlopeDeg <= 90))

@@ -54,6 +54,11 @@ base::Status check(const std::string& what, const SurfaceInput& in, const Pocket
     if (p.entry == EntryKind::Helix)
         if (base::Status s = checkRepeats(what, "helix pitch", p.helixPitchMm, depth, "turns"); !s)
             return s;
+    if (base::Status s =
+            checkRepeats(what, "stepover", stepover,
+                         std::hypot(in.stock.max.x - in.stock.min.x, in.stock.max.y - in.stock.min.y), "passes");
+        !s)
+        return s;
     if (p.restMachining && !in.restStock)
         return opError(what, "rest machining needs the stock the previous operations left, and there is none "
                              "(no operation before this one was simulated)");

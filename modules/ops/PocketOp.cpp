@@ -9,6 +9,7 @@
 #include "ops/pocket/Patterns.h"
 #include "ops/pocket/Program.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace camwb::ops {
@@ -18,6 +19,23 @@ namespace {
 using namespace pocket;
 
 std::string fmt(double v) { return base::NumberFormat{4, true}.format(v); }
+
+// The diagonal of the regions' bounding box (an arc's whole circle counted): no pattern's passes,
+// at any angle, spread over more; what the stepover is weighed by.
+double widestExtent(const std::vector<geom::Region>& regions)
+{
+    double x0 = INFINITY, y0 = INFINITY, x1 = -INFINITY, y1 = -INFINITY;
+    auto add = [&](geom::Vec2 p, double r) {
+        x0 = std::min(x0, p.x - r), x1 = std::max(x1, p.x + r), y0 = std::min(y0, p.y - r), y1 = std::max(y1, p.y + r);
+    };
+    for (const geom::Region& region : regions)
+        for (const geom::Segment& s : region.outer.segments) {
+            add(s.start, 0);
+            if (s.isArc())
+                add(s.center, s.radius());
+        }
+    return std::hypot(x1 - x0, y1 - y0);
+}
 
 base::Status check(const std::string& what, const std::vector<geom::Region>& regions, const PocketParams& p,
                    const ToolController& tc)
@@ -52,6 +70,8 @@ base::Status check(const std::string& what, const std::vector<geom::Region>& reg
     if (p.entry == EntryKind::Helix)
         if (base::Status s = checkRepeats(what, "helix pitch", p.helixPitchMm, depth, "turns"); !s)
             return s;
+    if (base::Status s = checkRepeats(what, "stepover", stepover, widestExtent(regions), "passes"); !s)
+        return s;
     return checkEntry(what, entryRequest(p), tc);
 }
 

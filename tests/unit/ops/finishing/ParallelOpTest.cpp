@@ -301,6 +301,8 @@ TEST(ParallelOp, ParameterErrors)
               std::string::npos);
     bad = p, bad.stepoverMm = 7;
     EXPECT_NE(error(bad, in, tc).find("stepover"), std::string::npos);
+    bad = p, bad.stepoverMm = 1e-7;  // a slip: millions of raster passes
+    EXPECT_NE(error(bad, in, tc).find("stepover 0.0000001 mm makes "), std::string::npos) << error(bad, in, tc);
     bad = p, bad.maxSlopeDeg = 0;
     EXPECT_NE(error(bad, in, tc).find("slope limit must be above 0 and at most 90 degrees, got 0"), std::string::npos);
     bad = p, bad.stockMm = -0.1;

@@ -93,6 +93,14 @@ TEST(PocketOp, Errors)
     EXPECT_NE(errorOf(kRect, p, tc).find("step-down 0.000000001 mm makes "), std::string::npos)
         << errorOf(kRect, p, tc);
     EXPECT_NE(errorOf(kRect, p, tc).find(" levels over "), std::string::npos);
+    // A stepover of 1e-9 % overflowed the zig-zag's line count into two lines: the pocket not cleared.
+    for (const auto pattern : {ops::PocketPattern::ZigZag, ops::PocketPattern::Offset}) {
+        p = baseParams();
+        p.pattern = pattern;
+        p.stepoverPercent = 1e-9;
+        EXPECT_NE(errorOf(kRect, p, tc).find("stepover 0.00000000006 mm makes "), std::string::npos)
+            << errorOf(kRect, p, tc);
+    }
     p = baseParams();
     p.entry = ops::EntryKind::Plunge;
     EXPECT_EQ(errorOf(kRect, p, toolOf(6, false)),

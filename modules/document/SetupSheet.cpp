@@ -211,7 +211,7 @@ base::Result<SetupSheet> collectSetupSheet(const Job& job, const std::string& jo
         if (simulated.cancelled)
             return base::makeError(kCollectCancelled);
         if (!simulated.stockError.empty())
-            return base::makeError("the " + simulated.stockError);
+            return base::makeError(simulated.stockError);
         sheet.verification = verification(simulated, spec.resolutionMm, job, jobPath, program);
     } else {
         simulated.moves = sim::buildMoves(moving);

@@ -3,7 +3,6 @@
 #include "base/NumberFormat.h"
 #include "base/RepeatLimit.h"
 
-#include <algorithm>
 #include <cmath>
 #include <variant>
 

@@ -112,8 +112,8 @@ base::Status checkToolController(const std::string& what, const ToolController& 
 base::Status checkHeights(const std::string& what, const Heights& heights);
 // The cut depth (start - final) must not exceed the tool's flute length (when the tool states it).
 base::Status checkCuttingLength(const std::string& what, const Heights& heights, const toolpath::Tool& tool);
-// `parameter` (its name) of `valueMm` repeated over `spanMm` (span / value repeats of `repeats`,
-// "levels" or "turns") within base::kMaxRepeats (base/RepeatLimit.h: more is a slip of the
+// `parameter` (its name) of `valueMm` repeated over `spanMm` (span / value repeats of `repeats`:
+// "levels", "turns", "passes", "pecks") within base::kMaxRepeats (base/RepeatLimit.h: more is a slip of the
 // keyboard); else an error naming the count and the least value.
 base::Status checkRepeats(const std::string& what, const std::string& parameter, double valueMm, double spanMm,
                           const std::string& repeats);

@@ -59,8 +59,8 @@ std::optional<std::string> stockTooLarge(const base::Box3& box, double resolutio
     for (int step = 0; step < 100000 && stockSize(box, finest, tilts).bytes > budgetBytes; ++step)
         finest += kFinestCellMm;
     const bool fits = stockSize(box, finest, tilts).bytes <= budgetBytes;
-    return std::string(tilts ? "tri-dexel" : "height field") + " stock of " + base::formatFixed(d.x, 1) + " x " +
-           base::formatFixed(d.y, 1) + " x " + base::formatFixed(d.z, 1) + " mm at " +
+    return std::string(tilts ? "the tri-dexel" : "the height field") + " stock of " + base::formatFixed(d.x, 1) +
+           " x " + base::formatFixed(d.y, 1) + " x " + base::formatFixed(d.z, 1) + " mm at " +
            (resolutionMm >= kFinestCellMm ? base::formatFixed(resolutionMm, 4) + " mm"
                                           : base::formatFixed(kFinestCellMm, 3) + " mm (no cell is finer)") +
            " would have " + base::formatFixed(size.cells / 1e6, 1) + " million " + (tilts ? "rays" : "columns") +

@@ -71,12 +71,12 @@ base::Status checkParameters(const ContourParams& p, const ToolController& tc)
         return opError(w, "radial passes must be at least 1, got " + std::to_string(p.radialPasses));
     if (p.radialPasses > 1 && !(p.radialStepoverMm > 0))
         return opError(w, "radial stepover must be positive for " + std::to_string(p.radialPasses) + " passes");
-    if ((p.leadIn != LeadKind::None || p.leadOut != LeadKind::None) && !(p.leadRadiusMm > 0))
+    const bool leads = p.leadIn != LeadKind::None || p.leadOut != LeadKind::None;
+    if (leads && !(p.leadRadiusMm > 0))
         return opError(w, "lead radius/length must be positive, got " + fmt(p.leadRadiusMm) + " mm");
     // A lead is a short approach; a far larger one is a slip (1e9 for 10), whose clearance check
     // alone would sample it for hours.
-    if ((p.leadIn != LeadKind::None || p.leadOut != LeadKind::None) &&
-        p.leadRadiusMm > kMaxLeadDiameters * 2 * toolRadius)
+    if (leads && p.leadRadiusMm > kMaxLeadDiameters * 2 * toolRadius)
         return opError(w, "lead radius/length " + fmt(p.leadRadiusMm) + " mm is more than " + fmt(kMaxLeadDiameters) +
                               " tool diameters (" + fmt(kMaxLeadDiameters * 2 * toolRadius) + " mm)");
     if (p.entry == EntryKind::Ramp && !(p.rampAngleDeg > 0 && p.rampAngleDeg <= 90))

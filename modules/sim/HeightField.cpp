@@ -122,7 +122,8 @@ CutResult HeightField::cut(const Move& move, std::size_t moveIndex, const ToolSh
     if (vertical(move.fromAxis) && vertical(move.toAxis)) {
         // The cutter leads: the shank and holder meet what it left (a shank as wide as the
         // cutter rides in its own slot), so they are checked against the stock after the cut.
-        cutVertical(move, moveIndex, tool, result);
+        if (!clearOfStock(move, tool.radiusMm()))
+            cutVertical(move, moveIndex, tool, result);
         checkHolder(move, tool, result);
     } else {
         cutTilted(move, moveIndex, tool, result);
@@ -133,6 +134,29 @@ CutResult HeightField::cut(const Move& move, std::size_t moveIndex, const ToolSh
     m_lastRadius = tool.radiusMm();
     m_lastFlatVertical = tool.flatBottomed() && vertical(move.toAxis);
     return result;
+}
+
+// The cutter's lowest point over a vertical move is its tip's lowest height: where no column
+// within its reach rises above that, the move cuts nothing. Most rapids and many links run above
+// the stock or over cleared ground; this spares them the sweep. The tiles' bounds are looked at
+// only for moves long enough that a sweep costs more than reading a tile afresh.
+bool HeightField::clearOfStock(const Move& move, double reach) const
+{
+    const double zLow = std::min(move.from.z, move.to.z);
+    if (zLow >= m_box.max.z)  // above the highest the stock ever was
+        return true;
+    const double cell = std::max(m_dx, m_dy);
+    if (move.lengthMm() < kTile * cell)
+        return false;
+    const int i0 = std::max(0, int(std::floor((std::min(move.from.x, move.to.x) - reach - m_box.min.x) / m_dx)));
+    const int i1 = std::min(m_nx - 1, int(std::floor((std::max(move.from.x, move.to.x) + reach - m_box.min.x) / m_dx)));
+    const int j0 = std::max(0, int(std::floor((std::min(move.from.y, move.to.y) - reach - m_box.min.y) / m_dy)));
+    const int j1 = std::min(m_ny - 1, int(std::floor((std::max(move.from.y, move.to.y) + reach - m_box.min.y) / m_dy)));
+    for (int tj = j0 / kTile; tj <= j1 / kTile && j0 <= j1; ++tj)
+        for (int ti = i0 / kTile; ti <= i1 / kTile && i0 <= i1; ++ti)
+            if (tileTop(ti, tj) > zLow + kEps)  // a column here may rise above the cutter
+                return false;
+    return true;
 }
 
 inline void HeightField::lower(int i, int j, double height, std::size_t moveIndex, CutResult& result)
@@ -147,6 +171,32 @@ inline void HeightField::lower(int i, int j, double height, std::size_t moveInde
     m_cutNow.add(i, j);
     if (!m_design.empty() && newTop < m_design[k] - m_tolerance)
         noteGouge(i, j, newTop, result);
+}
+
+// lower() over the columns i0..i1 of row j, all to one height: the level flat cut's inner loop,
+// with the changed rectangle grown once per row rather than per column.
+void HeightField::lowerSpan(int j, int i0, int i1, double height, std::size_t moveIndex, CutResult& result)
+{
+    const std::size_t row = index(0, j);
+    float* top = &m_top[row];
+    const float* bottom = &m_bottom[row];
+    const float* design = m_design.empty() ? nullptr : &m_design[row];
+    int first = -1, last = -1;
+    for (int i = i0; i <= i1; ++i) {
+        if (top[i] <= height + kEps)
+            continue;
+        const double newTop = std::max(height, double(bottom[i]));
+        if (newTop >= top[i] - kEps)
+            continue;
+        result.removedMm3 += (top[i] - newTop) * m_dx * m_dy;
+        top[i] = float(newTop);
+        m_lastCut[row + i] = std::int32_t(moveIndex);
+        first = first < 0 ? i : first, last = i;
+        if (design && newTop < design[i] - m_tolerance)
+            noteGouge(i, j, newTop, result);
+    }
+    if (first >= 0)
+        m_cutNow.add(first, j), m_cutNow.add(last, j);
 }
 
 void HeightField::noteGouge(int i, int j, double z, CutResult& result) const
@@ -197,10 +247,7 @@ void HeightField::cutVertical(const Move& move, std::size_t moveIndex, const Too
         // below: only the columns beyond it are looked at (short arc pieces sweep a crescent).
         const bool startDone = m_lastFlatVertical && m_lastRadius == r && m_lastEnd == move.from;
         auto sweep = [&](int j, int i0, int i1) {
-            const float* row = &m_top[index(0, j)];
-            for (int i = std::max(0, i0); i <= std::min(m_nx - 1, i1); ++i)
-                if (row[i] > z0 + kEps)
-                    lower(i, j, z0, moveIndex, result);
+            lowerSpan(j, std::max(0, i0), std::min(m_nx - 1, i1), z0, moveIndex, result);
         };
         for (int j = j0; j <= j1; ++j) {
             double xlo, xhi;
@@ -244,9 +291,10 @@ void HeightField::cutVertical(const Move& move, std::size_t moveIndex, const Too
             k1 = int(std::floor((disc.x + half - m_box.min.x) / m_dx - 0.5));
         }
         for (int i = i0; i <= i1; ++i) {
-            if (i >= k0 && i <= k1) {
-                if (!discDone && m_top[index(i, j)] > discZ + kEps)
-                    lower(i, j, discZ, moveIndex, result);
+            if (i >= k0 && i <= k1) {  // the end disc's span of this row, in one go
+                if (!discDone)
+                    lowerSpan(j, i, std::min(k1, i1), discZ, moveIndex, result);
+                i = std::min(k1, i1);
                 continue;
             }
             const base::Vec2 w = base::Vec2{columnX(i), y} - c0;

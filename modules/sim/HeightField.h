@@ -74,9 +74,12 @@ private:
     TriangleMesh buildMesh(bool mergeFlats) const;
     // The cut of a vertical tool (the analytic sweep) and of a tilted one (poses).
     void cutVertical(const Move& move, std::size_t moveIndex, const ToolShape& tool, CutResult& result);
+    // True when a vertical move's cutter stays above every column within `reach` of it.
+    bool clearOfStock(const Move& move, double reach) const;
     void cutTilted(const Move& move, std::size_t moveIndex, const ToolShape& tool, CutResult& result);
     // Lowers column (i, j) to `height`; accounts the removed volume, the gouge and the change.
     void lower(int i, int j, double height, std::size_t moveIndex, CutResult& result);
+    void lowerSpan(int j, int i0, int i1, double height, std::size_t moveIndex, CutResult& result);
     void noteGouge(int i, int j, double z, CutResult& result) const;  // out of the hot loop
     // The shank's and holder's reach into the stock along a vertical move (before it cuts).
     void checkHolder(const Move& move, const ToolShape& tool, CutResult& result) const;

@@ -191,6 +191,28 @@ TEST(SimHeightField, MovesThroughAirRemoveNothing)
     EXPECT_NEAR(stock.volumeMm3(), 60 * 40 * 20 - rapidIn, 1e-6);
 }
 
+// A long move over cleared ground is passed over by the tiles' bounds, but not one that meets the
+// material left between the cleared ends, however little of its length does.
+TEST(SimHeightField, LongMoveOverClearedGroundCutsOnlyWhereMaterialIsLeft)
+{
+    HeightField stock(box({0, 0, 0}, {100, 20, 10}), 0.1);
+    const ToolShape tool(makeTool("flat", 10));
+    for (double y = 0; y <= 20; y += 5) {  // clears both ends down to z 5, leaving a web at x 45..55
+        stock.cut(makeMove({-5, y, 5}, {40, y, 5}), 0, tool);
+        stock.cut(makeMove({60, y, 5}, {105, y, 5}), 1, tool);
+    }
+    const double before = stock.volumeMm3();
+    EXPECT_EQ(stock.cut(makeMove({-5, 10, 6}, {39, 10, 6}, MoveKind::Rapid), 2, tool).removedMm3, 0);
+    EXPECT_EQ(stock.cut(makeMove({61, 10, 6}, {105, 10, 6}, MoveKind::Rapid), 3, tool).removedMm3, 0);
+    const CutResult through = stock.cut(makeMove({-5, 10, 6}, {105, 10, 6}, MoveKind::Rapid), 4, tool);
+    // 4 mm off the web under the 10 mm band: 20 mm long less the passes' end discs on each side.
+    const double discs = 8 * (1.25 * std::sqrt(18.75) + 12.5 * kPi / 6);  // 2 x 4 quarter-pitch pieces
+    EXPECT_NEAR(through.removedMm3, 4 * (20 * 10 - discs), 6);
+    EXPECT_NEAR(stock.volumeMm3(), before - through.removedMm3, 1e-6);
+    EXPECT_NEAR(topAt(stock, 50, 10), 6, 1e-6);
+    EXPECT_EQ(stock.lastCut(at(stock, 50, 10).first, at(stock, 50, 10).second), 4);
+}
+
 TEST(SimHeightField, GougeIntoAWallIsReportedAtItsMove)
 {
     HeightField stock(box({0, 0, 0}, {60, 40, 20}), 0.1);

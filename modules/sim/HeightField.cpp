@@ -181,6 +181,7 @@ void HeightField::lowerSpan(int j, int i0, int i1, double height, std::size_t mo
     float* top = &m_top[row];
     const float* bottom = &m_bottom[row];
     const float* design = m_design.empty() ? nullptr : &m_design[row];
+    std::int32_t* lastCut = &m_lastCut[row];
     int first = -1, last = -1;
     for (int i = i0; i <= i1; ++i) {
         if (top[i] <= height + kEps)
@@ -190,7 +191,7 @@ void HeightField::lowerSpan(int j, int i0, int i1, double height, std::size_t mo
             continue;
         result.removedMm3 += (top[i] - newTop) * m_dx * m_dy;
         top[i] = float(newTop);
-        m_lastCut[row + i] = std::int32_t(moveIndex);
+        lastCut[i] = std::int32_t(moveIndex);
         first = first < 0 ? i : first, last = i;
         if (design && newTop < design[i] - m_tolerance)
             noteGouge(i, j, newTop, result);

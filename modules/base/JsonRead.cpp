@@ -1,5 +1,9 @@
 #include "base/JsonRead.h"
 
+#include <climits>
+#include <cmath>
+#include <cstdint>
+
 namespace camwb::base::jsonread {
 
 namespace {
@@ -50,7 +54,20 @@ int integer(const Json& object, const char* key, const std::string& where)
     const Json& value = member(object, key, where);
     if (!value.is_number_integer())
         throw JsonFieldError{where + "." + key + ": expected an integer"};
+    const bool fits = value.is_number_unsigned()
+                          ? value.get<std::uint64_t>() <= std::uint64_t(INT_MAX)
+                          : value.get<std::int64_t>() >= INT_MIN && value.get<std::int64_t>() <= INT_MAX;
+    if (!fits)
+        throw JsonFieldError{where + "." + key + ": " + value.dump() + " is out of range"};
     return value.get<int>();
+}
+
+int count(double value, const std::string& where)
+{
+    // The range test first: converting a double beyond int's range to int is undefined.
+    if (!(value >= 0 && value <= INT_MAX) || value != std::floor(value))
+        throw JsonFieldError{where + ": expected a whole number from 0 to " + std::to_string(INT_MAX)};
+    return static_cast<int>(value);
 }
 
 bool boolean(const Json& object, const char* key, const std::string& where)

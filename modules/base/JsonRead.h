@@ -22,7 +22,9 @@ const Json& member(const Json& object, const char* key, const std::string& where
 // nullptr when the key is absent (throws when `object` is not an object).
 const Json* optionalMember(const Json& object, const char* key, const std::string& where);
 double number(const Json& object, const char* key, const std::string& where);
-int integer(const Json& object, const char* key, const std::string& where);
+int integer(const Json& object, const char* key, const std::string& where);  // within int's range
+// `value` (read as a number, e.g. from text "3") as a count: a whole number >= 0 within int's range.
+int count(double value, const std::string& where);
 bool boolean(const Json& object, const char* key, const std::string& where);
 std::string text(const Json& object, const char* key, const std::string& where);
 Vec3 vec3(const Json& object, const char* key, const std::string& where);

@@ -115,7 +115,7 @@ ops::ToolController readFusionTool(const json& t, int index, const Units& u, con
     tc.tool.diameterMm = number(g, "DC", gw) * u.length;
     if (!(tc.tool.diameterMm > 0))
         throw JsonFieldError{gw + ".DC: must be positive"};
-    tc.tool.flutes = optionalMember(g, "NOF", gw) ? static_cast<int>(number(g, "NOF", gw)) : 2;
+    tc.tool.flutes = optionalMember(g, "NOF", gw) ? count(number(g, "NOF", gw), gw + ".NOF") : 2;
     tc.tool.fluteLengthMm = optionalNumber(g, "LCF", gw) * u.length;
     tc.tool.lengthMm = optionalNumber(g, "OAL", gw) * u.length;
     tc.tool.cornerRadiusMm = optionalNumber(g, "RE", gw) * u.length;

@@ -91,7 +91,7 @@ ops::ToolController readBit(const json& bit, int number, const std::string& wher
     tc.tool.fluteLengthMm = length("CuttingEdgeHeight");
     tc.tool.lengthMm = length("Length");
     if (const json* flutes = bitValue(bit, "Flutes", where))
-        tc.tool.flutes = static_cast<int>(quantity(*flutes, where + ".Flutes", false));
+        tc.tool.flutes = count(quantity(*flutes, where + ".Flutes", false), where + ".Flutes");
     if (const json* tip = bitValue(bit, "TipAngle", where))
         tc.tool.pointAngleDeg = quantity(*tip, where + ".TipAngle", true);
     else if (const json* edge = bitValue(bit, "CuttingEdgeAngle", where))

@@ -319,7 +319,7 @@ void Machine::toolDef(const Block& b)
     BlockWords w;
     if (!n || !gather(b, w, false))
         return;
-    if (*n < 0 || *n > 32767) {
+    if (*n < 0 || *n > 32767 || *n != std::floor(*n)) {  // as TOOL CALL: a TOOL DEF 2.5 is no tool
         report(Severity::Error, b.line, b.column, "tool number out of range");
         return;
     }

@@ -308,7 +308,12 @@ bool Machine::applyToolChange(const Block& block, const Groups& groups)
             m_reporter.error(m_line, 0, "M61 needs Q with the tool number");
             return false;
         }
-        m_state.selectedTool = static_cast<int>(std::max(0.0, block.get('Q')));
+        const double q = block.get('Q');
+        if (q < 0 || q != std::floor(q) || q > 1e9) {  // range first: a cast beyond int is undefined
+            error(block, 'Q', "M61 needs Q to be a tool number (a whole number >= 0)");
+            return false;
+        }
+        m_state.selectedTool = static_cast<int>(q);
     } else if (m_state.spindle != 0) {
         setSpindle(0, 0);  // M6 stops the spindle (LinuxCNC's manual tool change)
     }

@@ -74,6 +74,11 @@ TEST(ToolLibrary, ErrorsNameTheFileAndTheField)
     ASSERT_FALSE(bad.ok());
     EXPECT_EQ(bad.error().file, "shop.json");
     EXPECT_NE(bad.error().message.find("library.tools[0].cuttingData[0].fz"), std::string::npos) << bad.error().message;
+    // An integer beyond int's range is refused, not wrapped round to some other count.
+    auto many = document::parseToolLibrary(replaced(text, "\"flutes\": 3", "\"flutes\": 4294967299"), "shop.json");
+    ASSERT_FALSE(many.ok());
+    EXPECT_NE(many.error().message.find("library.tools[0].flutes: 4294967299 is out of range"), std::string::npos)
+        << many.error().message;
     auto newer = document::parseToolLibrary(replaced(text, "\"version\": 1", "\"version\": 7"), "shop.json");
     ASSERT_FALSE(newer.ok());
     EXPECT_NE(newer.error().message.find("newer"), std::string::npos);
@@ -179,6 +184,17 @@ TEST(ToolLibraryImport, FreeCadErrorsNameTheBitFileAndField)
     EXPECT_NE(endless.error().message.find("Length: expected a quantity such as \"6.00 mm\", got \"inf mm\""),
               std::string::npos)
         << endless.error().message;
+
+    // A flute count is a whole number: 1e30 would not fit an int (converting it is undefined).
+    for (const char* flutes : {"1e30", "2.5", "-1"}) {
+        std::ofstream(dir / "Bit" / "endless.fctb") << R"({"version": 2, "name": "Many", "shape": "endmill.fcstd",
+            "parameter": {"Diameter": "6 mm", "Flutes": ")"
+                                                    << flutes << R"("}, "attribute": {}})";
+        auto many = document::importToolLibrary((dir / "Library" / "endless.fctl").string());
+        ASSERT_FALSE(many.ok()) << flutes;
+        EXPECT_NE(many.error().message.find("Flutes: expected a whole number from 0 to 2147483647"), std::string::npos)
+            << many.error().message;
+    }
     fs::remove_all(dir);
 
     auto missing = document::importToolLibrary(kData + "/freecad/Library/missing-bit.fctl");
@@ -234,6 +250,15 @@ TEST(ToolLibraryImport, FusionErrorsNameTheFileAndField)
     ASSERT_FALSE(bad.ok());
     EXPECT_EQ(bad.error().file, path);
     EXPECT_NE(bad.error().message.find("library.data[1].geometry.DC"), std::string::npos) << bad.error().message;
+
+    const fs::path many = fs::temp_directory_path() / "camwb_fusion_flutes.json";
+    std::ofstream(many) << R"({"data": [{"type": "flat end mill", "unit": "millimeters",
+        "geometry": {"DC": 10, "NOF": 1e30}, "post-process": {"number": 1}}], "version": 12})";
+    auto flutes = document::importToolLibrary(many.string());
+    fs::remove(many);
+    ASSERT_FALSE(flutes.ok());
+    EXPECT_NE(flutes.error().message.find("library.data[0].geometry.NOF: expected a whole number"), std::string::npos)
+        << flutes.error().message;
 }
 
 // Fusion 360 exports its libraries as .tools: a zip holding tools.json. The JSON inside is read.

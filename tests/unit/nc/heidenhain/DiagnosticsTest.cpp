@@ -102,6 +102,11 @@ TEST(HeidenhainDiagnostics, RangeAndOrder)
     EXPECT_TRUE(r.has(Severity::Error, 4, "no circle centre CC"));
     EXPECT_TRUE(r.has(Severity::Error, 5, "negative feed"));
     EXPECT_TRUE(r.has(Severity::Error, 6, "unknown word 'e5'"));
+
+    // A tool number is whole in TOOL DEF as in TOOL CALL: TOOL DEF 2.5 defines no tool 2.
+    const Traced tools = run("0 BEGIN PGM T MM\n1 TOOL DEF 2.5 L+40 R+3\n2 TOOL CALL 2.5 Z S1000\n3 END PGM T MM\n");
+    EXPECT_TRUE(tools.has(Severity::Error, 2, "tool number out of range"));
+    EXPECT_TRUE(tools.has(Severity::Error, 3, "tool number out of range"));
 }
 
 TEST(HeidenhainDiagnostics, DiagnosticsAreCappedAndCounted)

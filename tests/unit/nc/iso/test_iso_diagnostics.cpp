@@ -96,5 +96,14 @@ TEST(IsoDiagnostics, MalformedNumbersAreErrorsAndTheBlockDoesNotMove)
     EXPECT_EQ(rapids[1].to.x, 8);
 }
 
+TEST(IsoDiagnostics, M61NeedsAWholeToolNumber)
+{
+    // M61 sets the tool in the spindle without a change: Q must name one, as T does.
+    const IsoRun r = run("M61 Q99999999999\nM61 Q2.5\nM61 Q-1\nM61 Q3\nM2\n");
+    EXPECT_EQ(r.diagnostics(), "1:5: error: M61 needs Q to be a tool number (a whole number >= 0)\n"
+                               "2:5: error: M61 needs Q to be a tool number (a whole number >= 0)\n"
+                               "3:5: error: M61 needs Q to be a tool number (a whole number >= 0)\n");
+}
+
 }  // namespace
 }  // namespace camwb::nc::iso::test

@@ -27,9 +27,10 @@ TEST(SinumerikDiagnostics, ParseErrorsWithColumns)
                         "N60 R1000=1\n"          // 6: R out of range
                         "N70 G1 X=FOO\n"         // 7: unknown name
                         "N80 G0 X10 ; fine\n"
-                        "N90 G1.5 X1\n"    // 9: invalid G
-                        "N95 Q5\n"         // 10: unknown word / call with a number? an unknown word
-                        "N100 G0 X1 $Y\n"  // 11: unexpected
+                        "N90 G1.5 X1\n"        // 9: invalid G
+                        "N95 Q5\n"             // 10: unknown word / call with a number? an unknown word
+                        "N100 G0 X1 $Y\n"      // 11: unexpected
+                        "N110 M99999999999\n"  // 12: beyond int (converting it was undefined)
                         "M30\n");
     expectAt(r, "unknown word GO", 1, 5);
     expectAt(r, "unbalanced parentheses: '(' at column 10 is not closed", 2, 16);
@@ -39,6 +40,7 @@ TEST(SinumerikDiagnostics, ParseErrorsWithColumns)
     expectAt(r, "R parameter R1000 out of range", 6, 5);
     expectAt(r, "unknown name FOO in an expression", 7, 10);
     expectAt(r, "invalid G code G1.5", 9, 5);
+    expectAt(r, "invalid M code M99999999999", 12, 6);
     EXPECT_EQ(r.all<toolpath::Rapid>().size(), 1u);  // N80 runs; the broken blocks are left out
     EXPECT_TRUE(r.result.completed);
 }

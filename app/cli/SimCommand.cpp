@@ -343,7 +343,7 @@ int simCommand(const std::vector<std::string>& args)
     setup.stockSpec = spec ? &*spec : nullptr;
     sim::SimulationResult result = sim::simulate(input->program, setup, input->recordsInError);
     if (!result.stockError.empty())
-        return fail(result.stockError + "; choose a coarser --resolution");
+        return fail(result.stockError);  // says what to change (--resolution, or the stock)
     if (turned) {
         result.checks.insert(result.checks.begin(), turned->findings.begin(), turned->findings.end());
         result.deviation.maxGougeMm = turned->maxGougeMm;

@@ -44,6 +44,19 @@ double stockMemoryBudget()
     return 0.5 * double(pages) * double(pageSize);
 }
 
+std::optional<std::string> stockBeyondReach(const base::Box3& box)
+{
+    const char* axes = "xyz";
+    for (int a = 0; a < 3; ++a)
+        for (const auto& [corner, end] : {std::pair{box.min, "minimum"}, std::pair{box.max, "maximum"}}) {
+            const double v = a == 0 ? corner.x : a == 1 ? corner.y : corner.z;
+            if (!(std::abs(v) <= kStockReachMm))  // the value itself may be 300 digits long: not shown
+                return std::string("the stock reaches more than 100 m from the workpiece origin (its ") + axes[a] +
+                       " " + end + "): no machine holds such a workpiece; check the stock's numbers and units";
+        }
+    return std::nullopt;
+}
+
 std::optional<std::string> stockTooLarge(const base::Box3& box, double resolutionMm, bool tilts, double budgetBytes)
 {
     const StockSize size = stockSize(box, resolutionMm, tilts);
@@ -66,7 +79,8 @@ std::optional<std::string> stockTooLarge(const base::Box3& box, double resolutio
            " would have " + base::formatFixed(size.cells / 1e6, 1) + " million " + (tilts ? "rays" : "columns") +
            " and need about " + gigabytes(size.bytes) + " of memory, more than the " + gigabytes(budgetBytes) +
            " a stock may take here (half the computer's memory)" +
-           (fits ? "; the finest resolution that fits is " + base::formatFixed(finest, 3) + " mm" : "");
+           (fits ? "; the finest resolution that fits is " + base::formatFixed(finest, 3) + " mm" : "") +
+           ": choose a coarser resolution";
 }
 
 std::unique_ptr<Stock> makeStock(const base::Box3& box, double resolutionMm, bool tilts)

@@ -24,6 +24,11 @@ struct StockSize {
     double bytes = 0;
 };
 StockSize stockSize(const base::Box3& box, double resolutionMm, bool tilts);
+// No machine holds a workpiece reaching farther than this from its origin (100 m): a stock that
+// does is a typo or a unit mix-up, and its cells' heights (floats) would lose the resolution.
+constexpr double kStockReachMm = 1e5;
+// Why `box` is no workpiece (a side or corner beyond kStockReachMm, naming which); nothing when it is.
+std::optional<std::string> stockBeyondReach(const base::Box3& box);
 // The memory a stock may take: half of the computer's physical memory.
 double stockMemoryBudget();
 // Why such a stock cannot be made within `budgetBytes`, naming the finest resolution that fits;

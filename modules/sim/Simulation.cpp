@@ -41,6 +41,8 @@ std::vector<Check> machineLimitChecks(const toolpath::Toolpath& program, const k
 base::Result<std::unique_ptr<Stock>> makeStock(const StockSpec& spec, bool tilts)
 {
     const base::Box3 box = spec.box ? *spec.box : spec.blank.bounds();
+    if (std::optional<std::string> why = stockBeyondReach(box))
+        return base::makeError(*why);
     if (std::optional<std::string> why = stockTooLarge(box, spec.resolutionMm, tilts, stockMemoryBudget()))
         return base::makeError(*why);
     std::unique_ptr<Stock> stock = spec.box ? makeStock(*spec.box, spec.resolutionMm, tilts)

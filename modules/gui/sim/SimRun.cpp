@@ -105,8 +105,7 @@ std::shared_ptr<SimRun> buildSimRun(const SimRunRequest& request)
         if (stock) {
             run->stock = std::move(stock).value();
         } else {  // simulate() found the same and cut nothing
-            run->stockError =
-                "No stock removal: " + stock.error().message + ". Set a coarser stock resolution and simulate again.";
+            run->stockError = "No stock removal: " + stock.error().message + ", then simulate again.";
             run->notes.push_back(run->stockError);
         }
         shapeTools(*run);

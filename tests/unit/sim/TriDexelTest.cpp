@@ -200,6 +200,23 @@ TEST(SimMakeStock, TooLargeAStockNamesTheFinestResolutionThatFits)
     }
 }
 
+// A stock reaching 100 m or more from the origin is a typo or a unit mix-up: refused by name,
+// not measured in columns with three hundred digits. A blank's mesh is held to the same.
+TEST(SimMakeStock, StockBeyondAnyMachineIsRefusedNamingTheSide)
+{
+    EXPECT_FALSE(stockBeyondReach(box({-kStockReachMm, 0, 0}, {kStockReachMm, 10, 10})));
+    const std::optional<std::string> far = stockBeyondReach(box({0, 0, 0}, {1e300, 10, 10}));
+    ASSERT_TRUE(far);
+    EXPECT_EQ(*far, "the stock reaches more than 100 m from the workpiece origin (its x maximum): no machine holds "
+                    "such a workpiece; check the stock's numbers and units");
+    EXPECT_NE(stockBeyondReach(box({0, -2e5, 0}, {10, 10, 10}))->find("(its y minimum)"), std::string::npos);
+    StockSpec spec;
+    spec.blank = boxMesh({0, 0, -1.5e5}, {10, 10, 10});
+    const auto made = makeStock(spec, false);
+    ASSERT_FALSE(made);
+    EXPECT_NE(made.error().message.find("(its z minimum)"), std::string::npos) << made.error().message;
+}
+
 // Asked for a stock no computer holds, simulate() cuts nothing and says why, without trying to
 // make it (which would take the process down).
 TEST(SimMakeStock, SimulateRefusesAStockBeyondMemory)

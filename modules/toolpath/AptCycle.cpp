@@ -3,6 +3,7 @@
 #include "toolpath/AptReader.h"
 
 #include "toolpath/ClArcs.h"
+#include "toolpath/CycleExpansion.h"
 
 #include <algorithm>
 #include <cmath>
@@ -222,6 +223,8 @@ base::Status AptReader::hole(const Vec3& top, const Vec3& axis, const AptStateme
         else
             c.clearanceZ = returnZ;
     }
+    if (const std::optional<std::string> why = tooManyPecks(c))  // as the NC interpreters refuse it
+        return m_out.error(*why, def.line);
     c.holes = {top};
     if (m_run && m_run->feedMode == mode && sameParameters(m_run->cycle, c)) {
         m_run->cycle.holes.push_back(top);

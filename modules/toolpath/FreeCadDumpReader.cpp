@@ -1,6 +1,7 @@
 #include "toolpath/FreeCadDumpReader.h"
 
 #include "toolpath/ClArcs.h"
+#include "toolpath/CycleExpansion.h"
 
 #include <algorithm>
 #include <cmath>
@@ -413,6 +414,8 @@ base::Status FreeCadDumpReader::hole(const DumpEntry& e, CycleKind kind)
     c.dwellSeconds = kind == CycleKind::DrillDwell ? *m_cycleP : 0;
     c.feedMmPerMin = m_feed;
     c.returnToClearance = m_returnToClearance;
+    if (const std::optional<std::string> why = tooManyPecks(c))  // as the NC interpreters refuse it
+        return m_out.error(e.name + ": " + *why, e.find('Q') ? e.find('Q')->pos : e.namePos);
     const Vec3 hole{xy[0], xy[1], c.topZ};
     bool extends = false;
     if (m_run) {

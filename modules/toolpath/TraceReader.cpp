@@ -1,6 +1,7 @@
 #include "toolpath/TraceReader.h"
 
 #include "toolpath/ClText.h"
+#include "toolpath/CycleExpansion.h"
 #include "toolpath/KnownPosition.h"
 #include "toolpath/RecordNames.h"
 
@@ -324,6 +325,8 @@ base::Result<ClImport> readTrace(base::LineReader& lines, const std::string& fil
             in.end();
             if (in.failed())
                 return in.error();
+            if (const std::optional<std::string> why = tooManyPecks(c))  // as the NC interpreters refuse it
+                return base::makeError(*why, fileName, lineNumber, kindColumn);
             for (int h = 0; h < holes; ++h) {
                 const std::optional<std::string_view> next = lines.next();
                 if (!next)

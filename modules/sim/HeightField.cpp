@@ -159,22 +159,8 @@ bool HeightField::clearOfStock(const Move& move, double reach) const
     return true;
 }
 
-inline void HeightField::lower(int i, int j, double height, std::size_t moveIndex, CutResult& result)
-{
-    const std::size_t k = index(i, j);
-    const double newTop = std::max(height, double(m_bottom[k]));
-    if (newTop >= m_top[k] - kEps)
-        return;
-    result.removedMm3 += (m_top[k] - newTop) * m_dx * m_dy;
-    m_top[k] = float(newTop);
-    m_lastCut[k] = std::int32_t(moveIndex);
-    m_cutNow.add(i, j);
-    if (!m_design.empty() && newTop < m_design[k] - m_tolerance)
-        noteGouge(i, j, newTop, result);
-}
-
-// lower() over the columns i0..i1 of row j, all to one height: the level flat cut's inner loop,
-// with the changed rectangle grown once per row rather than per column. Inlined by force: an arc
+// Lowers the columns i0..i1 of row j to `height` (never below their bottoms): the level flat cut's
+// inner loop, with the changed rectangle grown once per row rather than per column. Inlined by force: an arc
 // piece's crescent is a column or two a row, where a call costs as much as the loop (GCC would
 // not inline it into cutVertical, and the 20k-block benchmark ran 4 % slower).
 [[gnu::always_inline]] inline void HeightField::lowerSpan(int j, int i0, int i1, double height, std::size_t moveIndex,
@@ -201,6 +187,13 @@ inline void HeightField::lower(int i, int j, double height, std::size_t moveInde
     }
     if (first >= 0)
         m_cutNow.add(first, j), m_cutNow.add(last, j);
+}
+
+// One column: lowerSpan's loop over it (the one place that lowers a column, counts its volume,
+// marks its move and looks for a gouge).
+inline void HeightField::lower(int i, int j, double height, std::size_t moveIndex, CutResult& result)
+{
+    lowerSpan(j, i, i, height, moveIndex, result);
 }
 
 void HeightField::noteGouge(int i, int j, double z, CutResult& result) const

@@ -159,10 +159,10 @@ bool HeightField::clearOfStock(const Move& move, double reach) const
     return true;
 }
 
-// Lowers the columns i0..i1 of row j to `height` (never below their bottoms): the level flat cut's
-// inner loop, with the changed rectangle grown once per row rather than per column. Inlined by force: an arc
-// piece's crescent is a column or two a row, where a call costs as much as the loop (GCC would
-// not inline it into cutVertical, and the 20k-block benchmark ran 4 % slower).
+// Lowers the columns i0..i1 of row j to `height` (never below their bottoms): the level flat
+// cut's inner loop, with the changed rectangle grown once per row rather than per column. Inlined
+// by force: an arc piece's crescent is a column or two a row, where a call costs as much as the
+// loop (GCC would not inline it into cutVertical, and the 20k-block benchmark ran 4 % slower).
 [[gnu::always_inline]] inline void HeightField::lowerSpan(int j, int i0, int i1, double height, std::size_t moveIndex,
                                                           CutResult& result)
 {

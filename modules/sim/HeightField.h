@@ -79,6 +79,7 @@ private:
     void cutTilted(const Move& move, std::size_t moveIndex, const ToolShape& tool, CutResult& result);
     // Lowers column (i, j) to `height`; accounts the removed volume, the gouge and the change.
     void lower(int i, int j, double height, std::size_t moveIndex, CutResult& result);
+    // lower() over the columns i0..i1 of row j, all to one height (lower() is this over one column).
     void lowerSpan(int j, int i0, int i1, double height, std::size_t moveIndex, CutResult& result);
     void noteGouge(int i, int j, double z, CutResult& result) const;  // out of the hot loop
     // The shank's and holder's reach into the stock along a vertical move (before it cuts).

@@ -137,8 +137,8 @@ bool Parser::parseGlued(Block& block, const Token& t, const std::string& u)
             m_pos += 2;
         }
         if (piece.letter == 'G' || piece.letter == 'M') {
-            if (!(value >= -9999 && value <= 9999) ||
-                value != std::trunc(value))  // range first: a cast beyond int is undefined
+            // The range first: converting a double beyond int's range is undefined.
+            if (!(value >= -9999 && value <= 9999) || value != std::trunc(value))
                 return error(pos, "invalid " + std::string(letter) + " code in " + std::string(t.text));
             addWord(block, piece.letter == 'G' ? WordKind::G : WordKind::M, pos).code = static_cast<int>(value);
             if (piece.letter == 'M' && value == 6)

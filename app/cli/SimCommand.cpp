@@ -199,6 +199,17 @@ std::optional<Input> loadJobInput(const SimOptions& options)
     return input;
 }
 
+// --tool-table, read; nullopt (said on stderr) when it cannot be.
+std::optional<nc::ToolTable> readToolTableOption(const SimOptions& options)
+{
+    auto table = nc::readToolTable(options.toolTable);
+    if (!table) {
+        fail(table.error().toString());
+        return std::nullopt;
+    }
+    return std::move(table).value();
+}
+
 std::optional<Input> loadNcInput(const SimOptions& options, const kinematics::Machine* machine)
 {
     auto text = base::readPlainTextFile(options.input);
@@ -214,12 +225,10 @@ std::optional<Input> loadNcInput(const SimOptions& options, const kinematics::Ma
         request.machine = std::make_shared<const kinematics::Machine>(*machine);
     request.checkLimits = false;  // sim::simulate checks them, as errors with the other checks
     if (!options.toolTable.empty()) {
-        auto table = nc::readToolTable(options.toolTable);
-        if (!table) {
-            fail(table.error().toString());
+        std::optional<nc::ToolTable> table = readToolTableOption(options);
+        if (!table)
             return std::nullopt;
-        }
-        request.tools = std::make_shared<const nc::ToolTable>(std::move(table).value());
+        request.tools = std::make_shared<const nc::ToolTable>(std::move(*table));
     }
     input.trace = document::traceNc(request);
     input.program = input.trace->program;
@@ -243,12 +252,10 @@ std::optional<Input> loadClInput(const SimOptions& options, toolpath::ClFormat f
     input.program = std::move(read.value().toolpath);
     input.diagnostics = std::move(read.value().warnings);
     if (!options.toolTable.empty()) {
-        auto table = nc::readToolTable(options.toolTable);
-        if (!table) {
-            fail(table.error().toString());
+        std::optional<nc::ToolTable> table = readToolTableOption(options);
+        if (!table)
             return std::nullopt;
-        }
-        document::sizeTools(input.program, document::toolsOf(table.value()));
+        document::sizeTools(input.program, document::toolsOf(*table));
     }
     return input;
 }

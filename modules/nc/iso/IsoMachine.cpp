@@ -45,6 +45,10 @@ std::string gName(int code10)
     return "G" + std::to_string(code10 / 10) + (code10 % 10 ? "." + std::to_string(code10 % 10) : "");
 }
 
+// T, M61 Q and the D of G41/G42: a whole number >= 0 that fits an int (tested before any cast:
+// converting a double beyond int's range is undefined).
+bool isToolNumber(double v) { return v >= 0 && v == std::floor(v) && v <= 1e9; }
+
 }  // namespace
 
 void Machine::error(const Block& block, char letter, std::string message)
@@ -291,7 +295,7 @@ bool Machine::applyToolSelection(const Block& block)
     if (!block.has('T'))
         return true;
     const double t = block.get('T');
-    if (t < 0 || t != std::floor(t) || t > 1e9) {
+    if (!isToolNumber(t)) {
         error(block, 'T', "tool number must be a whole number >= 0");
         return false;
     }
@@ -309,7 +313,7 @@ bool Machine::applyToolChange(const Block& block, const Groups& groups)
             return false;
         }
         const double q = block.get('Q');
-        if (q < 0 || q != std::floor(q) || q > 1e9) {  // range first: a cast beyond int is undefined
+        if (!isToolNumber(q)) {
             error(block, 'Q', "M61 needs Q to be a tool number (a whole number >= 0)");
             return false;
         }
@@ -404,7 +408,7 @@ void Machine::setCompensationRadius(const Block& block, int code)
     int tool = m_state.tool;
     if (block.has('D')) {
         const double d = block.get('D');
-        if (d < 0 || d != std::floor(d) || d > 1e9) {
+        if (!isToolNumber(d)) {
             error(block, 'D', gName(code) + " needs D to be a tool number (a whole number >= 0)");
             m_compensation.setRadius(std::nullopt, "the tool");
             return;

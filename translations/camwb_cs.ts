@@ -123,12 +123,16 @@
         <translation>Porovnat se souborem</translation>
     </message>
     <message>
-        <source>NC programs (*.mpf *.spf *.MPF *.SPF *.h *.H *.nc *.ngc *.tap *.iso *.cnc *.txt);;All files (*)</source>
-        <translation>NC programy (*.mpf *.spf *.MPF *.SPF *.h *.H *.nc *.ngc *.tap *.iso *.cnc *.txt);;Všechny soubory (*)</translation>
-    </message>
-    <message>
         <source>Cannot read %1</source>
         <translation>Nelze přečíst %1</translation>
+    </message>
+    <message>
+        <source>%1 is a CL file: block numbers are for NC programs</source>
+        <translation>%1 je soubor CL: čísla bloků patří NC programům</translation>
+    </message>
+    <message>
+        <source>NC programs (*.mpf *.spf *.MPF *.SPF *.h *.H *.nc *.ngc *.tap *.iso *.cnc *.txt);;CL files (*.apt *.aptsource *.cl *.cls *.dump *.trace);;All files (*)</source>
+        <translation>NC programy (*.mpf *.spf *.MPF *.SPF *.h *.H *.nc *.ngc *.tap *.iso *.cnc *.txt);;Soubory CL (*.apt *.aptsource *.cl *.cls *.dump *.trace);;Všechny soubory (*)</translation>
     </message>
 </context>
 <context>
@@ -1716,10 +1720,6 @@ Pracoviště pro CAM a postprocesory.</translation>
         <translation>Otevřít NC program</translation>
     </message>
     <message>
-        <source>NC programs (*.mpf *.spf *.nc *.ngc *.tap *.h *.iso *.cnc *.txt);;All files (*)</source>
-        <translation>NC programy (*.mpf *.spf *.nc *.ngc *.tap *.h *.iso *.cnc *.txt);;Všechny soubory (*)</translation>
-    </message>
-    <message>
         <source>&amp;Trace NC Program</source>
         <translation>&amp;Trasovat NC program</translation>
     </message>
@@ -1896,6 +1896,14 @@ Pracoviště pro CAM a postprocesory.</translation>
     <message>
         <source>&amp;XZ (lathe)</source>
         <translation>&amp;XZ (soustruh)</translation>
+    </message>
+    <message>
+        <source>Opened CL file %1</source>
+        <translation>Otevřen soubor CL %1</translation>
+    </message>
+    <message>
+        <source>NC programs (*.mpf *.spf *.nc *.ngc *.tap *.h *.iso *.cnc *.txt);;CL files (*.apt *.aptsource *.cl *.cls *.dump *.trace);;All files (*)</source>
+        <translation>NC programy (*.mpf *.spf *.nc *.ngc *.tap *.h *.iso *.cnc *.txt);;Soubory CL (*.apt *.aptsource *.cl *.cls *.dump *.trace);;Všechny soubory (*)</translation>
     </message>
 </context>
 <context>
@@ -2350,6 +2358,10 @@ Nejprve je uložit?</translation>
     <message>
         <source>Traced %1 as %2%3: %4 blocks, %5 lines, %6 arcs, %7 rapids, %8 cycles%9 in %10 ms</source>
         <translation>Trasováno %1 jako %2%3: bloky %4, přímky %5, oblouky %6, rychloposuvy %7, cykly %8%9 za %10 ms</translation>
+    </message>
+    <message>
+        <source>a CL file (%1)</source>
+        <translation>soubor CL (%1)</translation>
     </message>
 </context>
 <context>

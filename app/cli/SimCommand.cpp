@@ -18,7 +18,6 @@
 #include "sim/Simulation.h"
 #include "sim/TurningCheck.h"
 #include "sim/TurningProfile.h"
-#include "toolpath/ClImport.h"
 #include "toolpath/ClText.h"
 #include "toolpath/ProgramStats.h"
 
@@ -162,12 +161,6 @@ document::RecordPlace placeOf(const Input& input, const std::string& path, std::
 {
     if (input.trace)
         return document::placeOfRecord(*input.trace, record);
-    if (!input.job) {  // a CL file: its readers number each record with its statement's line
-        document::RecordPlace place{path, 0, {}};
-        if (record >= 0 && static_cast<std::size_t>(record) < input.program.size())
-            place.line = std::max(input.program.source(static_cast<std::size_t>(record)).recordIndex, 0);
-        return place;
-    }
     return document::placeOfRecord(*input.job, path, input.program, record);
 }
 
@@ -210,6 +203,8 @@ std::optional<nc::ToolTable> readToolTableOption(const SimOptions& options)
     return std::move(table).value();
 }
 
+// An NC program, or a CL file (APT, FreeCAD dump, trace) by its extension, as the inspector reads
+// them (document::traceNc): a CL file's tools come with it, or from --tool-table as for NC.
 std::optional<Input> loadNcInput(const SimOptions& options, const kinematics::Machine* machine)
 {
     auto text = base::readPlainTextFile(options.input);
@@ -236,27 +231,6 @@ std::optional<Input> loadNcInput(const SimOptions& options, const kinematics::Ma
         document::sizeTools(input.program, document::toolsOf(*request.tools));
     input.recordsInError = input.trace->recordsInError;
     input.diagnostics = input.trace->result.diagnostics;
-    return input;
-}
-
-// A CL file (APT, FreeCAD dump, our trace) as `post` reads it: its tools come with it, or from
-// --tool-table as for NC.
-std::optional<Input> loadClInput(const SimOptions& options, toolpath::ClFormat format)
-{
-    auto read = toolpath::readClFile(options.input, format);
-    if (!read) {
-        fail(read.error().toString());
-        return std::nullopt;
-    }
-    Input input;
-    input.program = std::move(read.value().toolpath);
-    input.diagnostics = std::move(read.value().warnings);
-    if (!options.toolTable.empty()) {
-        std::optional<nc::ToolTable> table = readToolTableOption(options);
-        if (!table)
-            return std::nullopt;
-        document::sizeTools(input.program, document::toolsOf(*table));
-    }
     return input;
 }
 
@@ -346,10 +320,7 @@ int simCommand(const std::vector<std::string>& args)
     if (!chosen)
         return fail(chosen.error().toString());
     const std::optional<kinematics::Machine> machine = std::move(chosen).value();
-    const std::optional<toolpath::ClFormat> cl = toolpath::clFormatFromExtension(options.input);
-    std::optional<Input> input = isJob ? loadJobInput(options)
-                                 : cl  ? loadClInput(options, *cl)
-                                       : loadNcInput(options, machine ? &*machine : nullptr);
+    std::optional<Input> input = isJob ? loadJobInput(options) : loadNcInput(options, machine ? &*machine : nullptr);
     if (!input || !loadModelAndStock(options, *input))
         return kExitError;
     if (machine)

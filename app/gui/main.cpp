@@ -1,11 +1,14 @@
 // camwb: the CAM Workbench desktop application.
-//   camwb [job.camwb] [--screenshot file.png [--grab-screen]] [--edit-operation N] | --help | --version
-// --screenshot grabs the main window once the job is posted, writes the PNG and quits
+//   camwb [job.camwb | program | CL file] [--screenshot file.png [--grab-screen]] [--edit-operation N]
+//   | --help | --version
+// --screenshot grabs the main window once the job is posted (a program or CL file: traced),
+// writes the PNG and quits
 // (used for the README picture and for checking the window without a person at it);
 // --grab-screen grabs the whole screen instead (what a person sees, menus and docks included).
 // --edit-operation opens the task panel of operation N (1-based) once the job is posted; with
 // --screenshot the picture waits for the panel's preview.
 #include "camwb_version.h"
+#include "gui/inspector/NcInspector.h"
 #include "gui/shell/MainWindow.h"
 #include "gui/shell/Preferences.h"
 #include "gui/shell/Session.h"
@@ -65,7 +68,8 @@ struct CommandLine {
         parser.setApplicationDescription(QStringLiteral("CAM and post-processor workbench"));
         parser.addHelpOption();
         parser.addVersionOption();
-        parser.addPositionalArgument(QStringLiteral("job"), QStringLiteral("Job file (.camwb) to open."));
+        parser.addPositionalArgument(QStringLiteral("job"),
+                                     QStringLiteral("Job file (.camwb), NC program or CL file to open."));
         parser.addOption(options.screenshot);
         parser.addOption(options.grabScreen);
         parser.addOption(options.editOperation);
@@ -140,6 +144,14 @@ int main(int argc, char** argv)
         };
         if (jobs.isEmpty()) {
             grabAndQuit();
+        } else if (!jobs.first().endsWith(QLatin1String(".camwb"), Qt::CaseInsensitive)) {
+            // An NC program or a CL file: nothing is posted; the picture waits for its trace.
+            auto traced = std::make_shared<QMetaObject::Connection>();
+            *traced = QObject::connect(window.inspector(), &camwb::gui::NcInspector::traceFinished, &window,
+                                       [traced, grabAndQuit] {
+                                           QObject::disconnect(*traced);
+                                           grabAndQuit();
+                                       });
         } else {
             auto posted = std::make_shared<QMetaObject::Connection>();
             *posted = QObject::connect(&window.workbench(), &camwb::gui::Workbench::postFinished, &window,

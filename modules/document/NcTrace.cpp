@@ -79,11 +79,13 @@ double secondsSince(std::chrono::steady_clock::time_point start)
 NcTrace traceNc(const NcTraceRequest& request)
 {
     NcTrace trace;
+    trace.clFormat = request.dialect ? std::nullopt : toolpath::clFormatFromExtension(request.path);
     trace.dialectGuessed = !request.dialect.has_value();
     trace.dialect = request.dialect ? *request.dialect : nc::guessDialect(request.text, request.path);
 
     nc::InterpretOptions options;
     options.dialect = trace.dialect;
+    options.clFormat = trace.clFormat;
     options.fileName = request.path;
     options.cancel = request.cancel;
     options.machine = request.machine.get();

@@ -1,7 +1,8 @@
 // One interpretation of an NC program for the inspector: the recorded CL records with their
 // source lines, the diagnostics, and the indexes the GUI needs to link lines and records both
-// ways (line -> records, record -> line) and to show the modal state. Built on a worker thread;
-// plain C++, no Qt, so it is testable on its own.
+// ways (line -> records, record -> line) and to show the modal state. A CL file (APT, FreeCAD
+// dump, trace) is read by its importer into the same form, each record at its statement's line.
+// Built on a worker thread; plain C++, no Qt, so it is testable on its own.
 #pragma once
 
 #include "document/ModalState.h"
@@ -9,6 +10,7 @@
 #include "nc/Dialect.h"
 #include "nc/Interpreter.h"
 #include "nc/ToolTable.h"
+#include "toolpath/ClImport.h"
 #include "toolpath/Toolpath.h"
 
 #include <atomic>
@@ -38,6 +40,8 @@ struct LineState {
 struct NcTrace {
     nc::Dialect dialect = nc::Dialect::Iso;
     bool dialectGuessed = true;
+    // Set when the text was read as a CL file of this format, not as NC in `dialect`.
+    std::optional<toolpath::ClFormat> clFormat;
     toolpath::Toolpath program;
     nc::InterpretResult result;  // diagnostics, files ([0] the program), completion
     bool cancelled = false;      // a newer trace superseded this one; its records are incomplete
@@ -81,8 +85,9 @@ struct NcTrace {
 
 struct NcTraceRequest {
     std::string text;
-    std::string path;                    // for diagnostics, the dialect guess and subprogram lookup
-    std::optional<nc::Dialect> dialect;  // nullopt: nc::guessDialect
+    std::string path;  // for diagnostics, the dialect guess and subprogram lookup
+    // nullopt: a CL file by its extension (toolpath::clFormatFromExtension), else nc::guessDialect.
+    std::optional<nc::Dialect> dialect;
     // Checked against its limits (kinematics::LimitCheck) as posting checks CL, when set.
     std::shared_ptr<const kinematics::Machine> machine;
     bool checkLimits = true;  // false: the machine reads the program, the caller checks its limits
@@ -91,9 +96,10 @@ struct NcTraceRequest {
     const std::atomic<bool>* cancel = nullptr;
 };
 
-// Interprets the text (subprograms looked up in the folder of `path` when it has one) and builds
-// the indexes. Once `cancel` is set the interpreter stops within a thousand blocks (SINUMERIK and
-// Heidenhain finish parsing first), nothing more is recorded and the trace is marked cancelled.
+// Interprets the text (subprograms looked up in the folder of `path` when it has one), or imports
+// it as a CL file when no dialect is asked for and `path` names one, and builds the indexes. Once `cancel` is set the
+// interpreter stops within a thousand blocks (SINUMERIK and Heidenhain finish parsing first), nothing more is recorded
+// and the trace is marked cancelled.
 NcTrace traceNc(const NcTraceRequest& request);
 
 }  // namespace camwb::document

@@ -57,6 +57,8 @@ namespace {
 
 InterpretResult interpretDialect(std::string_view text, const InterpretOptions& options, toolpath::MachineSink& sink)
 {
+    if (options.clFormat)
+        return detail::importCl(text, options, sink);
     switch (options.dialect) {
     case Dialect::Sinumerik:
         return detail::interpretSinumerik(text, options, sink);
@@ -102,6 +104,8 @@ InterpretResult interpretFile(const std::string& path, std::optional<Dialect> di
         return failed;
     }
     options.dialect = dialect ? *dialect : guessDialect(text.value(), path);
+    if (!dialect && !options.clFormat)
+        options.clFormat = toolpath::clFormatFromExtension(path);
     options.fileName = path;
     if (!options.resolveProgram)
         options.resolveProgram = resolverBeside(path, options.dialect);

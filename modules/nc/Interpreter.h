@@ -13,11 +13,14 @@
 // RTP for SINUMERIK, the 2nd set-up clearance Q203+Q204 for Heidenhain; retract = R plane /
 // set-up clearance; top = reference plane), ToolChange with the tool number (geometry default),
 // Spindle, Coolant, WorkOffset, Dwell, CutterComp, ProgramStop, Comment for comments.
+// A CL file (APT, FreeCAD dump, trace) goes through the same entry, read by its importer
+// (InterpretOptions::clFormat), so everything that reads a program back reads CL as well.
 #pragma once
 
 #include "nc/BlockModal.h"
 #include "nc/Diagnostic.h"
 #include "nc/Dialect.h"
+#include "toolpath/ClImport.h"
 #include "toolpath/ClRecords.h"
 
 #include <atomic>
@@ -57,6 +60,9 @@ ProgramResolver resolverBeside(const std::string& programPath, Dialect dialect);
 
 struct InterpretOptions {
     Dialect dialect = Dialect::Iso;
+    // Set: the text is a CL file of this format, read by its importer (toolpath/ClImport.h) and
+    // sent on record by record, each at its statement's line; the NC-only options do not apply.
+    std::optional<toolpath::ClFormat> clFormat;
     std::string fileName;                          // for diagnostics; empty = "<input>"
     ProgramResolver resolveProgram;                // empty: calls to other programs are errors
     const kinematics::Machine* machine = nullptr;  // kinematics::LimitCheck on what the program does, when set
@@ -100,8 +106,9 @@ struct InterpretResult {
 
 InterpretResult interpret(std::string_view text, const InterpretOptions& options, toolpath::MachineSink& sink);
 
-// Reads the file (diagnostic when it cannot), guesses the dialect when `dialect` is empty and
-// resolves subprograms in the file's folder unless options.resolveProgram is set.
+// Reads the file (diagnostic when it cannot), guesses the dialect when `dialect` is empty (then
+// a CL file's name, .apt .cls .dump .trace ..., has it read as that CL file) and resolves
+// subprograms in the file's folder unless options.resolveProgram is set.
 InterpretResult interpretFile(const std::string& path, std::optional<Dialect> dialect, InterpretOptions options,
                               toolpath::MachineSink& sink);
 

@@ -30,20 +30,38 @@ std::optional<ClFormat> clFormatFromName(std::string_view name)
     return std::nullopt;
 }
 
+const char* clFormatName(ClFormat format)
+{
+    switch (format) {
+    case ClFormat::Apt:
+        return "apt";
+    case ClFormat::FreeCadDump:
+        return "freecad-dump";
+    case ClFormat::Trace:
+        break;
+    }
+    return "trace";
+}
+
+base::Result<ClImport> readCl(base::LineReader& lines, ClFormat format, const std::string& fileName)
+{
+    switch (format) {
+    case ClFormat::Apt:
+        return readAptSource(lines, fileName);
+    case ClFormat::FreeCadDump:
+        return readFreeCadDump(lines, fileName);
+    case ClFormat::Trace:
+        break;
+    }
+    return readTrace(lines, fileName);
+}
+
 base::Result<ClImport> readClFile(const std::string& path, ClFormat format)
 {
     auto lines = base::LineReader::open(path);
     if (!lines)
         return lines.error();
-    switch (format) {
-    case ClFormat::Apt:
-        return readAptSource(lines.value(), path);
-    case ClFormat::FreeCadDump:
-        return readFreeCadDump(lines.value(), path);
-    case ClFormat::Trace:
-        break;
-    }
-    return readTrace(lines.value(), path);
+    return readCl(lines.value(), format, path);
 }
 
 }  // namespace camwb::toolpath

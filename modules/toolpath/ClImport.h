@@ -36,6 +36,7 @@ struct ClImport {
 std::optional<ClFormat> clFormatFromExtension(const std::string& path);
 // "apt", "freecad-dump", "trace" (case-insensitive); anything else nullopt.
 std::optional<ClFormat> clFormatFromName(std::string_view name);
+const char* clFormatName(ClFormat format);  // the inverse: "apt", "freecad-dump", "trace"
 
 // Malformed input gives an Error with file, line and column and no toolpath. The dialects each
 // reader accepts, and the meaning it gives them, are documented in AptReader.h and
@@ -45,6 +46,9 @@ base::Result<ClImport> readFreeCadDump(std::string_view text, const std::string&
 // The same a line at a time: the readers hold one statement, never the whole file.
 base::Result<ClImport> readAptSource(base::LineReader& lines, const std::string& fileName);
 base::Result<ClImport> readFreeCadDump(base::LineReader& lines, const std::string& fileName);
+
+// The reader of `format` over `lines` (a file's or a text's).
+base::Result<ClImport> readCl(base::LineReader& lines, ClFormat format, const std::string& fileName);
 
 // Reads the file in chunks as it imports it. A file that cannot be read gives an Error naming the
 // path.

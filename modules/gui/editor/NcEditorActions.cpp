@@ -7,6 +7,7 @@
 #include "gui/editor/RenumberDialog.h"
 #include "gui/shell/Prompter.h"
 #include "nc/tools/BlockNumbers.h"
+#include "toolpath/ClImport.h"
 
 #include <QAction>
 #include <QCoreApplication>
@@ -54,6 +55,18 @@ void applyRewrite(NcEditor* editor, QWidget* parent, const nc::RenumberResult& r
     if (bytes != editor->utf8Text())
         editor->replaceUtf8Text(bytes);
     showMessage(parent, summary(result.report, removing));
+}
+
+// Block numbers are NC's: a CL file (APT, FreeCAD dump, trace) has none, and numbering its
+// statements would break it. True (and says so) for the editor's program when it is one.
+bool refusedForClFile(const NcEditor* editor, QWidget* parent)
+{
+    if (!toolpath::clFormatFromExtension(editor->programPath().toStdString()))
+        return false;
+    showMessage(
+        parent,
+        Tr::tr("%1 is a CL file: block numbers are for NC programs").arg(QFileInfo(editor->programPath()).fileName()));
+    return true;
 }
 
 std::string_view view(const QByteArray& bytes) { return {bytes.constData(), static_cast<std::size_t>(bytes.size())}; }
@@ -122,6 +135,8 @@ void registerNcEditorActions(ActionRegistry& registry, NcEditor* editor, QWidget
                 showMessage(parent, Tr::tr("The NC program is read-only"));
                 return;
             }
+            if (refusedForClFile(ed, parent))
+                return;
             RenumberDialog dialog(ed->dialect(), parent);
             if (dialog.exec() != QDialog::Accepted || !ed)
                 return;
@@ -137,6 +152,8 @@ void registerNcEditorActions(ActionRegistry& registry, NcEditor* editor, QWidget
                 showMessage(parent, Tr::tr("The NC program is read-only"));
                 return;
             }
+            if (refusedForClFile(ed, parent))
+                return;
             const QByteArray text = ed->utf8Text();
             applyRewrite(ed, parent, nc::removeBlockNumbers(view(text), ed->dialect()), true);
         });
@@ -149,7 +166,7 @@ void registerNcEditorActions(ActionRegistry& registry, NcEditor* editor, QWidget
             const QString path = prompter().openFileName(
                 Tr::tr("Compare with File"),
                 Tr::tr("NC programs (*.mpf *.spf *.MPF *.SPF *.h *.H *.nc *.ngc *.tap *.iso *.cnc *.txt);;"
-                       "All files (*)"));
+                       "CL files (*.apt *.aptsource *.cl *.cls *.dump *.trace);;All files (*)"));
             if (path.isEmpty() || !ed)
                 return;
             CompareDialog* dialog = reuseOrCreate<CompareDialog>(parent, ed);

@@ -117,6 +117,7 @@ void ProgramInfoDialog::analyze(const QString& text, nc::Dialect dialect, const 
     std::string source = text.toStdString();
     nc::InterpretOptions options;
     options.dialect = dialect;
+    options.clFormat = toolpath::clFormatFromExtension(fileName.toStdString());  // as the inspector reads it
     options.fileName = fileName.toStdString();
     if (!fileName.isEmpty() && QFileInfo(fileName).isAbsolute())
         options.resolveProgram = nc::resolverBeside(fileName.toStdString(), dialect);

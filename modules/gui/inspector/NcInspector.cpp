@@ -219,8 +219,11 @@ void NcInspector::reportDiagnostics(const document::NcTrace& trace)
     const QString fiveAxis = stats.fiveAxis > 0 ? tr(", %1 five-axis moves").arg(stats.fiveAxis) : QString();
     emit message(Workbench::Severity::Note,
                  tr("Traced %1 as %2%3: %4 blocks, %5 lines, %6 arcs, %7 rapids, %8 cycles%9 in %10 ms")
-                     .arg(name, QString::fromLatin1(nc::dialectName(trace.dialect)),
-                          trace.dialectGuessed ? tr(" (guessed)") : QString())
+                     .arg(name,
+                          trace.clFormat
+                              ? tr("a CL file (%1)").arg(QString::fromLatin1(toolpath::clFormatName(*trace.clFormat)))
+                              : QString::fromLatin1(nc::dialectName(trace.dialect)),
+                          trace.dialectGuessed && !trace.clFormat ? tr(" (guessed)") : QString())
                      .arg(trace.result.blocksExecuted)
                      .arg(stats.lines)
                      .arg(stats.arcs + stats.helices)

@@ -34,6 +34,7 @@
 #include "gui/view3d/View3D.h"
 #include "kinematics/Machine.h"
 #include "sim/TurningCheck.h"
+#include "toolpath/ClImport.h"
 
 #include <QAction>
 #include <QCloseEvent>
@@ -179,7 +180,9 @@ bool MainWindow::openNcFile(const QString& path)
     m_inspector->loadProgram(QString::fromStdString(text.value()), QFileInfo(path).absoluteFilePath());
     m_ncDocument->openedFile(path);
     m_session->recentFiles().add(path);
-    m_report->append(Workbench::Severity::Note, tr("Opened NC program %1").arg(path));
+    m_report->append(Workbench::Severity::Note, toolpath::clFormatFromExtension(path.toStdString())
+                                                    ? tr("Opened CL file %1").arg(path)
+                                                    : tr("Opened NC program %1").arg(path));
     return true;
 }
 
@@ -305,8 +308,8 @@ void MainWindow::registerActions()
     const QString nc = tr("&NC");
     add({"Cam.Nc.Open", tr("&Open NC Program…"), nc, QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_O), true}, [this] {
         const QString path = m_prompter->openFileName(
-            tr("Open NC program"),
-            tr("NC programs (*.mpf *.spf *.nc *.ngc *.tap *.h *.iso *.cnc *.txt);;All files (*)"));
+            tr("Open NC program"), tr("NC programs (*.mpf *.spf *.nc *.ngc *.tap *.h *.iso *.cnc *.txt);;"
+                                      "CL files (*.apt *.aptsource *.cl *.cls *.dump *.trace);;All files (*)"));
         if (!path.isEmpty())
             openNcFile(path);
     });

@@ -396,6 +396,25 @@ private slots:
         QCOMPARE(m_editor->text(), original);
     }
 
+    // A CL file has no block numbers: numbering its statements would break it, so both tools
+    // leave its text alone and say why.
+    void blockNumbersLeaveACLFileAlone()
+    {
+        const QString apt = QStringLiteral("PARTNO/BRACKET\nRAPID\nGOTO/0,0,20\nFINI\n");
+        m_editor->setText(apt);
+        m_editor->setProgramPath(QStringLiteral("/tmp/bracket.cls"));
+        for (const char* id : {"Cam.Nc.Renumber", "Cam.Nc.RemoveNumbers"}) {
+            m_window->statusBar()->clearMessage();
+            QVERIFY(m_registry->trigger(QString::fromLatin1(id)));  // no dialog: it would wait here
+            QCOMPARE(m_editor->text(), apt);
+            QCOMPARE(m_window->statusBar()->currentMessage(),
+                     QStringLiteral("bracket.cls is a CL file: block numbers are for NC programs"));
+        }
+        m_editor->setProgramPath(QStringLiteral("/tmp/bracket.ngc"));  // the same text as NC: numbered
+        QVERIFY(m_registry->trigger(QStringLiteral("Cam.Nc.RemoveNumbers")));
+        QVERIFY(m_window->statusBar()->currentMessage().startsWith(QStringLiteral("Removed")));
+    }
+
     void gotoBlock()
     {
         m_editor->setText(QStringLiteral("N10 G0\nN20 G1 X1\nN30 G1 X2\nN40 M30\n"));

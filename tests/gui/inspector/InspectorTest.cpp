@@ -334,6 +334,53 @@ private slots:
         QVERIFY(rig.inspector.trace()->result.diagnostics.empty());
     }
 
+    // A CL file (by its name, while no dialect is chosen) is read by its importer: its segments
+    // link to their statements' lines both ways, its errors reach the margin at their line, and a
+    // chosen dialect reads the same text as NC.
+    void aClFileIsReadByItsImporter()
+    {
+        const QString apt = QStringLiteral("PARTNO/BRACKET\n"   // 1
+                                           "CUTTER/10,0\n"      // 2
+                                           "LOADTL/3\n"         // 3
+                                           "RAPID\n"            // 4
+                                           "GOTO/0,0,20\n"      // 5
+                                           "FEDRAT/MMPM,300\n"  // 6
+                                           "GOTO/0,0,-2\n"      // 7
+                                           "GOTO/40,0,-2\n"     // 8
+                                           "FINI\n");           // 9
+        Rig rig;
+        rig.inspector.setFilePath(QStringLiteral("bracket.cls"));
+        LOAD_OR_FAIL(rig, apt);
+        const auto trace = rig.inspector.trace();
+        QCOMPARE(trace->clFormat, std::optional(tp::ClFormat::Apt));
+        QVERIFY(trace->result.diagnostics.empty());
+        std::set<int> lines;
+        for (int line : rig.segmentLines())
+            lines.insert(line);
+        QCOMPARE(lines, (std::set<int>{7, 8}));  // line 5 only positions the tool, as G0 does first
+        rig.editor.gotoLine(8);
+        QCOMPARE(int(rig.view.highlightedSegments().size()), 1);
+        QCOMPARE(rig.panel.value(QStringLiteral("tool")), QStringLiteral("T3"));
+        QVERIFY(rig.panel.value(QStringLiteral("feed")).startsWith(QLatin1String("300.0 mm/min")));
+
+        // Line 8 made unreadable: one error there, in the margin.
+        QSignalSpy finished(&rig.inspector, &NcInspector::traceFinished);
+        rig.editor.setText(QString(apt).replace(QLatin1String("GOTO/40"), QLatin1String("GOTO/4O")));
+        rig.inspector.traceNow();
+        QVERIFY(finished.wait(60000));
+        QVERIFY(rig.inspector.trace()->program.empty());
+        QCOMPARE(rig.inspector.trace()->result.diagnostics.size(), std::size_t(1));
+        QCOMPARE(rig.inspector.trace()->result.diagnostics.front().line, 8);
+        QCOMPARE(rig.editor.diagnosticSeverityAt(8), std::optional(camwb::base::Severity::Error));
+
+        // ISO chosen: the same text is NC, and APT words are not ISO words.
+        rig.editor.setText(apt);
+        rig.inspector.setDialect(camwb::nc::Dialect::Iso);
+        QVERIFY(finished.wait(60000));
+        QVERIFY(!rig.inspector.trace()->clFormat.has_value());
+        QVERIFY(rig.inspector.trace()->result.hasErrors());
+    }
+
     // Five-axis Klartext on a B/C table machine: the panel shows the tool vector and the machine's
     // rotary axes at the cursor, the view the tool axis along the path (seed 000: B30 C40 gives
     // K = (-0.3830, 0.3214, 0.8660)).

@@ -604,6 +604,8 @@ TEST(ClImport, FormatFromExtensionAndName)
     EXPECT_EQ(clFormatFromName("APT"), ClFormat::Apt);
     EXPECT_EQ(clFormatFromName("freecad-dump"), ClFormat::FreeCadDump);
     EXPECT_EQ(clFormatFromName("freecad"), std::nullopt);
+    for (ClFormat format : {ClFormat::Apt, ClFormat::FreeCadDump, ClFormat::Trace})
+        EXPECT_EQ(clFormatFromName(clFormatName(format)), format);
 }
 
 TEST(ClImport, UnreadableFileNamesThePath)

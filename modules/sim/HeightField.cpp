@@ -148,15 +148,24 @@ bool HeightField::clearOfStock(const Move& move, double reach) const
     const double cell = std::max(m_dx, m_dy);
     if (move.lengthMm() < kTile * cell)
         return false;
-    const int i0 = std::max(0, int(std::floor((std::min(move.from.x, move.to.x) - reach - m_box.min.x) / m_dx)));
-    const int i1 = std::min(m_nx - 1, int(std::floor((std::max(move.from.x, move.to.x) + reach - m_box.min.x) / m_dx)));
-    const int j0 = std::max(0, int(std::floor((std::min(move.from.y, move.to.y) - reach - m_box.min.y) / m_dy)));
-    const int j1 = std::min(m_ny - 1, int(std::floor((std::max(move.from.y, move.to.y) + reach - m_box.min.y) / m_dy)));
-    for (int tj = j0 / kTile; tj <= j1 / kTile && j0 <= j1; ++tj)
-        for (int ti = i0 / kTile; ti <= i1 / kTile && i0 <= i1; ++ti)
+    const ColumnRect near = columnsWithin(move.from.xy(), move.to.xy(), reach);
+    if (near.empty())
+        return true;
+    for (int tj = near.j0 / kTile; tj <= near.j1 / kTile; ++tj)
+        for (int ti = near.i0 / kTile; ti <= near.i1 / kTile; ++ti)
             if (tileTop(ti, tj) > zLow + kEps)  // a column here may rise above the cutter
                 return false;
     return true;
+}
+
+ColumnRect HeightField::columnsWithin(base::Vec2 a, base::Vec2 b, double reach) const
+{
+    ColumnRect rect;
+    rect.i0 = std::max(0, int(std::floor((std::min(a.x, b.x) - reach - m_box.min.x) / m_dx)));
+    rect.i1 = std::min(m_nx - 1, int(std::floor((std::max(a.x, b.x) + reach - m_box.min.x) / m_dx)));
+    rect.j0 = std::max(0, int(std::floor((std::min(a.y, b.y) - reach - m_box.min.y) / m_dy)));
+    rect.j1 = std::min(m_ny - 1, int(std::floor((std::max(a.y, b.y) + reach - m_box.min.y) / m_dy)));
+    return rect;
 }
 
 // Lowers the columns i0..i1 of row j to `height` (never below their bottoms): the level flat
@@ -234,8 +243,8 @@ void HeightField::cutVertical(const Move& move, std::size_t moveIndex, const Too
         ta = std::max(0.0, tStar - half), tb = std::min(1.0, tStar + half);
         return ta <= tb;
     };
-    const int j0 = std::max(0, int(std::floor((std::min(c0.y, c1.y) - reach - m_box.min.y) / m_dy)));
-    const int j1 = std::min(m_ny - 1, int(std::floor((std::max(c0.y, c1.y) + reach - m_box.min.y) / m_dy)));
+    const ColumnRect near = columnsWithin(c0, c1, reach);
+    const int j0 = near.j0, j1 = near.j1;
     const Capsule capsule(c0, c1, r);
     if (flat && std::abs(dz) < 1e-12 && !plunge) {
         // A flat tool moving level: every column under the capsule goes down to z, so a row is
@@ -345,12 +354,12 @@ void HeightField::checkHolder(const Move& move, const ToolShape& tool, CutResult
         const double reach = part.radius, lowest = zLow + part.bottom;
         if (lowest >= m_box.max.z)  // above the highest the stock ever was (the usual case)
             continue;
-        const int i0 = std::max(0, int(std::floor((std::min(c0.x, c0.x + v.x) - reach - m_box.min.x) / m_dx)));
-        const int i1 = std::min(m_nx - 1, int(std::floor((std::max(c0.x, c0.x + v.x) + reach - m_box.min.x) / m_dx)));
-        const int j0 = std::max(0, int(std::floor((std::min(c0.y, c0.y + v.y) - reach - m_box.min.y) / m_dy)));
-        const int j1 = std::min(m_ny - 1, int(std::floor((std::max(c0.y, c0.y + v.y) + reach - m_box.min.y) / m_dy)));
-        for (int tj = j0 / kTile; tj <= j1 / kTile && j0 <= j1; ++tj)
-            for (int ti = i0 / kTile; ti <= i1 / kTile && i0 <= i1; ++ti) {
+        const ColumnRect near = columnsWithin(c0, c0 + v, reach);
+        if (near.empty())
+            continue;
+        const int i0 = near.i0, i1 = near.i1, j0 = near.j0, j1 = near.j1;
+        for (int tj = j0 / kTile; tj <= j1 / kTile; ++tj)
+            for (int ti = i0 / kTile; ti <= i1 / kTile; ++ti) {
                 if (tileTop(ti, tj) <= lowest + result.holderInterferenceMm)
                     continue;
                 for (int j = std::max(j0, tj * kTile); j <= std::min(j1, (tj + 1) * kTile - 1); ++j)
@@ -393,12 +402,9 @@ void HeightField::cutTilted(const Move& move, std::size_t moveIndex, const ToolS
         const Vec3 tip = move.from + (move.to - move.from) * t;
         const Vec3 axis = move.axisAt(t);
         const Vec3 end = tip + axis * tool.totalLengthMm();
-        const int i0 = std::max(0, int(std::floor((std::min(tip.x, end.x) - reach - m_box.min.x) / m_dx)));
-        const int i1 = std::min(m_nx - 1, int(std::floor((std::max(tip.x, end.x) + reach - m_box.min.x) / m_dx)));
-        const int j0 = std::max(0, int(std::floor((std::min(tip.y, end.y) - reach - m_box.min.y) / m_dy)));
-        const int j1 = std::min(m_ny - 1, int(std::floor((std::max(tip.y, end.y) + reach - m_box.min.y) / m_dy)));
-        for (int j = j0; j <= j1; ++j)
-            for (int i = i0; i <= i1; ++i) {
+        const ColumnRect near = columnsWithin(tip.xy(), end.xy(), reach);
+        for (int j = near.j0; j <= near.j1; ++j)
+            for (int i = near.i0; i <= near.i1; ++i) {
                 const Vec3 origin{columnX(i), columnY(j), below};
                 const double oldTop = m_top[index(i, j)];
                 for (ToolPart part : {ToolPart::Shank, ToolPart::Holder}) {

@@ -74,6 +74,9 @@ private:
     TriangleMesh buildMesh(bool mergeFlats) const;
     // The cut of a vertical tool (the analytic sweep) and of a tilted one (poses).
     void cutVertical(const Move& move, std::size_t moveIndex, const ToolShape& tool, CutResult& result);
+    // The columns (clamped to the grid) whose cells meet the box of segment a-b grown by `reach`:
+    // all a tool of that reach can touch along it. Empty when that box misses the stock.
+    ColumnRect columnsWithin(base::Vec2 a, base::Vec2 b, double reach) const;
     // True when a vertical move's cutter stays above every column within `reach` of it.
     bool clearOfStock(const Move& move, double reach) const;
     void cutTilted(const Move& move, std::size_t moveIndex, const ToolShape& tool, CutResult& result);

@@ -350,6 +350,30 @@ private slots:
             saveShot(&window, QStringLiteral("simulator-gouging-pocket.png"));
     }
 
+    // A CL file opened like a program (NX's APT here) is simulated as one: its blocks are its
+    // statements, the playback steps through their lines, and it plays to the end.
+    void clFileSimulatesAtItsStatements()
+    {
+        MainWindow window;
+        window.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&window));
+        QVERIFY(window.openJob(QStringLiteral(CAMWB_CL_DATA "/nx_face_and_drill.cls")));
+        QVERIFY(waitForTrace(window));
+        QVERIFY(window.inspector()->trace()->clFormat.has_value());
+        simulate(window);
+        const camwb::gui::Timeline& timeline = window.simPlayer()->run()->timeline;
+        QList<int> lines;
+        for (double at = 0; at < timeline.total(); at = timeline.nextBlock(at))
+            lines << timeline.lineOf(timeline.pointAt(at).move);
+        // The tool changes (LOAD/TOOL on 7 and 47) take time; line 13's rapid comes from an unknown
+        // position; the cycles on 52 and 57 drill two holes each, one block.
+        QCOMPARE(lines, (QList<int>{7, 16, 19, 22, 23, 25, 26, 30, 32, 35, 39, 47, 50, 52, 54, 57, 61}));
+        playToEnd(window, 2000);
+        QCOMPARE(window.ncEditor()->currentLine(), lines.last());
+        if (withGl())
+            saveShot(&window, QStringLiteral("simulator-cl-file.png"));
+    }
+
     // Playing at the machine's speed x10 for a few seconds: the frames the view drew and the stock
     // meshes it showed per second (printed; a test never asserts a time).
     void frameRateWhilePlaying()

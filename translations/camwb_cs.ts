@@ -1312,6 +1312,10 @@
         <source>%1 × %2 × %3 %7, from (%4, %5, %6)</source>
         <translation>%1 × %2 × %3 %7, od (%4, %5, %6)</translation>
     </message>
+    <message>
+        <source>The stock cannot be used: %1</source>
+        <translation>Polotovar nelze použít: %1</translation>
+    </message>
 </context>
 <context>
     <name>camwb::gui::JobToolsModel</name>

@@ -2,6 +2,7 @@
 
 #include "base/AtomicFile.h"
 #include "base/JsonRead.h"
+#include "document/JobSetup.h"
 #include "document/detail/OperationFile.h"
 #include "document/detail/ToolFile.h"
 
@@ -79,6 +80,8 @@ Job readJob(const json& root)
     job.stock.min = vec3(stock, "min", where + ".stock");
     job.stock.max = vec3(stock, "max", where + ".stock");
     readStockRule(stock, job.stock, where + ".stock");
+    if (const auto problem = stockProblem(job.stock))
+        throw JsonFieldError{where + ".stock: " + *problem};
     job.workOffset = integer(root, "workOffset", where);
     if (job.workOffset < 1 || job.workOffset > 99)
         throw JsonFieldError{where + ".workOffset: expected 1..99"};

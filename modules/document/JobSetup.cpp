@@ -1,6 +1,7 @@
 #include "document/JobSetup.h"
 
 #include "base/NumberFormat.h"
+#include "sim/MakeStock.h"
 
 namespace camwb::document {
 
@@ -9,6 +10,21 @@ namespace {
 std::string mm(double value) { return base::NumberFormat{3, true}.format(value); }
 
 }  // namespace
+
+std::optional<std::string> stockProblem(const Stock& stock)
+{
+    if (stock.min == base::Vec3{} && stock.max == base::Vec3{})
+        return std::nullopt;
+    if (auto far = sim::stockBeyondReach(base::Box3{stock.min, stock.max, false}))
+        return far;  // first: the numbers below are then short enough to show
+    const std::pair<const char*, std::pair<double, double>> axes[] = {
+        {"x", {stock.min.x, stock.max.x}}, {"y", {stock.min.y, stock.max.y}}, {"z", {stock.min.z, stock.max.z}}};
+    for (const auto& [name, range] : axes)
+        if (!(range.second > range.first))
+            return std::string("the stock's max ") + name + " (" + mm(range.second) + ") is not above its min " + name +
+                   " (" + mm(range.first) + ")";
+    return std::nullopt;
+}
 
 base::Vec3 stockAnchor(const Stock& stock, StockAnchor anchor)
 {

@@ -1,16 +1,23 @@
-// What the job setup panel asks of a job's stock and machine without widgets: the stock's
-// corners and centres a work origin can be put on, and whether the machine's linear travels
-// can take the stock at all.
+// What the job setup panel asks of a job's stock and machine without widgets: whether the stock
+// is one at all, the stock's corners and centres a work origin can be put on, and whether the
+// machine's linear travels can take the stock at all.
 #pragma once
 
 #include "base/Vec.h"
 #include "document/Job.h"
 #include "kinematics/Machine.h"
 
+#include <optional>
 #include <string>
 #include <vector>
 
 namespace camwb::document {
+
+// Why the stock's box cannot be machined: a max not above its min on some axis (a typo the post
+// and the simulator would otherwise take for "no stock"), or a box beyond any machine's reach.
+// Nothing when it is a box, or when there is none (min and max all zero: a lathe job's).
+// The job file and the setup panel refuse such a stock with this reason.
+std::optional<std::string> stockProblem(const Stock& stock);
 
 // Points of the stock box a work origin is commonly put on (front = min y, left = min x).
 enum class StockAnchor { TopFrontLeft, BottomFrontLeft, TopCentre, Centre, BottomCentre };

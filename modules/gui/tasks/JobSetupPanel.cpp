@@ -464,6 +464,8 @@ bool JobSetupPanel::accept()
 {
     if (m_finished)
         return true;
+    if (document::stockProblem(m_setup.stock))
+        return false;  // said under the stock's fields: the panel stays
     if (!m_workbench.setJobSetup(m_setup))
         return false;  // the post cannot be loaded (shown): the panel stays
     finish();

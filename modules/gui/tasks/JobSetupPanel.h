@@ -40,7 +40,9 @@ public:
     // The post's properties form (the same as Post Settings'), inside "postPropertiesSlot".
     PostPropertiesForm* postProperties() const { return m_postProperties; }
 
-    bool accept();  // OK: applies (one undo step, none when nothing changed) and closes
+    // OK: applies (one undo step, none when nothing changed) and closes; false, the panel staying,
+    // when the stock is no box (document::stockProblem, said in the panel) or the post cannot load.
+    bool accept();
     void reject();  // Cancel: changes nothing and closes
     bool hasUnappliedChanges() const;
     // The stock becomes the blank in `path` (a mesh or STEP file, in the model's coordinates), its
@@ -98,6 +100,7 @@ private:
     QWidget* m_offsetRows = nullptr;
     QWidget* m_explicitRows = nullptr;
     QLabel* m_stockSummary = nullptr;
+    QLabel* m_stockError = nullptr;  // document::stockProblem, which OK refuses
     QWidget* m_blankRow = nullptr;
     QLabel* m_blankLabel = nullptr;
     QLabel* m_blankError = nullptr;

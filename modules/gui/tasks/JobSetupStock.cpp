@@ -2,6 +2,7 @@
 // with offsets or of an explicit size, or a blank (a cast or forged part) from a mesh or STEP file.
 #include "gui/tasks/JobSetupPanel.h"
 
+#include "document/JobSetup.h"
 #include "document/StockBlank.h"
 #include "gui/shell/Preferences.h"
 #include "gui/shell/Workbench.h"
@@ -88,6 +89,12 @@ QWidget* JobSetupPanel::buildStock()
     m_stockSummary->setObjectName(QStringLiteral("stockSummary"));
     m_stockSummary->setWordWrap(true);
     form->addRow(m_stockSummary);
+    m_stockError = new QLabel;
+    m_stockError->setObjectName(QStringLiteral("stockError"));
+    m_stockError->setWordWrap(true);
+    m_stockError->setStyleSheet(QStringLiteral("color: #b00020;"));
+    m_stockError->hide();
+    form->addRow(m_stockError);
 
     connect(choose, &QPushButton::clicked, this, &JobSetupPanel::chooseBlankFile);
     connect(m_stockShape, &QComboBox::currentIndexChanged, this, [this](int row) {
@@ -204,7 +211,9 @@ void JobSetupPanel::showStock()
     showVec3(m_min, stock.min);
     showVec3(m_max, stock.max);
     m_stockSize->setEnabled(!blank);
-    m_blankRow->setVisible(blank);
+    // The row with its "Blank" label: hiding the field alone would leave the label standing.
+    if (auto* form = qobject_cast<QFormLayout*>(m_blankRow->parentWidget()->layout()))
+        form->setRowVisible(m_blankRow, blank);
     m_blankLabel->setText(QFileInfo(qs(stock.blankPath)).fileName());
     m_blankLabel->setToolTip(qs(stock.blankPath));
     m_offsetRows->setVisible(fromModel && !blank);
@@ -219,6 +228,10 @@ void JobSetupPanel::showStock()
                                        : tr("%1 × %2 × %3 %7, from (%4, %5, %6)"))
                                     .arg(inUnit(size.x), inUnit(size.y), inUnit(size.z), inUnit(stock.min.x),
                                          inUnit(stock.min.y), inUnit(stock.min.z), unitSymbol()));
+    // What OK refuses (the job file would not load with it), said while it is typed.
+    const std::optional<std::string> problem = document::stockProblem(stock);
+    m_stockError->setText(problem ? tr("The stock cannot be used: %1").arg(qs(*problem)) : QString());
+    m_stockError->setVisible(problem.has_value());
 }
 
 }  // namespace camwb::gui

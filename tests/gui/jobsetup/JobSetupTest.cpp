@@ -335,6 +335,36 @@ private slots:
         panel->reject();
     }
 
+    // A max typed below its min is said under the stock's fields as it is typed, and OK keeps the
+    // panel open with the job unchanged (the file would not load again); put right, OK applies.
+    void stockThatIsNoBoxIsRefused()
+    {
+        MainWindow window;
+        window.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&window));
+        openExample(window);
+        const std::string before = jobText(window);
+        JobSetupPanel* panel = openPanel(window);
+        QVERIFY(panel);
+        auto* error = child<QLabel>(panel, "stockError");
+        QVERIFY(error->isHidden());
+        child<QComboBox>(panel, "stockSize")->setCurrentIndex(1);  // explicit
+        setSpin(panel, QStringLiteral("stockMaxX"), -10);
+        QVERIFY(!error->isHidden());
+        QVERIFY2(error->text().contains(QStringLiteral("max x (-10) is not above its min x")),
+                 qPrintable(error->text()));
+        QVERIFY(!panel->accept());
+        QCOMPARE(window.jobSetupPanel(), panel);
+        if (withGl())
+            saveShot(&window, QStringLiteral("jobsetup-stock-no-box.png"));
+        QCOMPARE(jobText(window), before);
+        setSpin(panel, QStringLiteral("stockMaxX"), 95);
+        QVERIFY(error->isHidden());
+        QVERIFY(panel->accept());
+        QCOMPARE(window.workbench().job().stock.max.x, 95.0);
+        waitIdle(window);
+    }
+
     // "Blank from file…": a file that cannot be read is said in the panel and changes nothing; a
     // blank file becomes the stock (its box the blank's bounds), OK is one undo step, the blank is
     // read with the job and drawn; undo restores the box.

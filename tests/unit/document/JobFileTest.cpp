@@ -163,6 +163,28 @@ TEST(JobFile, ParametersMayBeLeftOutButNotMisspelled)
               std::string::npos);
 }
 
+// A stock whose max is not above its min on an axis would be taken for "no stock" by the post
+// and the simulator (the model's box in its place): the file is refused, saying which axis. So
+// is a stock beyond any machine's reach. All zero is a job without stock (a lathe job's).
+TEST(JobFile, AStockThatIsNoBoxIsRefusedNamingTheAxis)
+{
+    Job job = sampleJob();
+    job.stock.max.y = -5;
+    base::Error error = parseError(document::serializeJob(job));
+    EXPECT_EQ(error.message, "job.stock: the stock's max y (-5) is not above its min y (-2)") << error.message;
+    job = sampleJob();
+    job.stock.min.z = job.stock.max.z;
+    EXPECT_NE(parseError(document::serializeJob(job)).message.find("max z (15.5) is not above its min z (15.5)"),
+              std::string::npos);
+    job = sampleJob();
+    job.stock.max.x = 2e5;
+    EXPECT_NE(parseError(document::serializeJob(job)).message.find("job.stock: the stock reaches more than 100 m"),
+              std::string::npos);
+    job = sampleJob();
+    job.stock = {};
+    EXPECT_TRUE(document::parseJob(document::serializeJob(job), "job.camwb").ok());
+}
+
 TEST(JobFile, ToolExtrasAreOptional)
 {
     Job job = sampleJob();

@@ -97,9 +97,9 @@ struct NcTraceRequest {
 };
 
 // Interprets the text (subprograms looked up in the folder of `path` when it has one), or imports
-// it as a CL file when no dialect is asked for and `path` names one, and builds the indexes. Once `cancel` is set the
-// interpreter stops within a thousand blocks (SINUMERIK and Heidenhain finish parsing first), nothing more is recorded
-// and the trace is marked cancelled.
+// it as a CL file when no dialect is asked for and `path` names one, and builds the indexes. Once
+// `cancel` is set the interpreter stops within a thousand blocks (SINUMERIK and Heidenhain finish
+// parsing first), nothing more is recorded and the trace is marked cancelled.
 NcTrace traceNc(const NcTraceRequest& request);
 
 }  // namespace camwb::document

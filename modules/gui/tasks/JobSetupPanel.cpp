@@ -122,6 +122,16 @@ JobSetupPanel::Vec3Fields JobSetupPanel::vec3Fields(const char* objectName, doub
     return fields;
 }
 
+QLabel* JobSetupPanel::warningLabel(const char* objectName)
+{
+    auto* label = new QLabel;
+    label->setObjectName(QString::fromLatin1(objectName));
+    label->setWordWrap(true);
+    label->setStyleSheet(QStringLiteral("color: #b00020;"));
+    label->hide();
+    return label;
+}
+
 QWidget* JobSetupPanel::buildModel()
 {
     auto* widget = new QWidget;
@@ -217,11 +227,7 @@ QWidget* JobSetupPanel::buildMachine()
         m_machine->addItem(qs(file.id), qs(file.path));
     if (!m_setup.machineId.empty() && m_machine->findText(qs(m_setup.machineId)) < 0)
         m_machine->addItem(qs(m_setup.machineId), qs(m_setup.machineId));
-    m_travelWarning = new QLabel;
-    m_travelWarning->setObjectName(QStringLiteral("travelWarning"));
-    m_travelWarning->setWordWrap(true);
-    m_travelWarning->setStyleSheet(QStringLiteral("color: #b00020;"));
-    m_travelWarning->hide();
+    m_travelWarning = warningLabel("travelWarning");
     layout->addWidget(m_machine);
     layout->addWidget(m_travelWarning);
     connect(m_machine, &QComboBox::currentIndexChanged, this, [this](int index) {
@@ -255,11 +261,7 @@ QWidget* JobSetupPanel::buildPost()
         m_post->addItem(qs(m_setup.postId));
         m_postInfos.emplace_back().id = m_setup.postId;
     }
-    m_postWarning = new QLabel;
-    m_postWarning->setObjectName(QStringLiteral("postWarning"));
-    m_postWarning->setWordWrap(true);
-    m_postWarning->setStyleSheet(QStringLiteral("color: #b00020;"));
-    m_postWarning->hide();
+    m_postWarning = warningLabel("postWarning");
     layout->addWidget(m_post);
     layout->addWidget(m_postWarning);
     // The post's properties, as Post Settings shows them; a change of post keeps the values the

@@ -64,6 +64,8 @@ private:
     QWidget* buildPost();
     QWidget* buildOutput();
     Vec3Fields vec3Fields(const char* objectName, double min, double max);
+    // A red, wrapping line that says what is wrong; hidden until there is something to say.
+    static QLabel* warningLabel(const char* objectName);
 
     // The model's bounds in the coordinates of the file (the origin not applied); none without a model.
     bool modelBounds(base::Vec3& min, base::Vec3& max) const;

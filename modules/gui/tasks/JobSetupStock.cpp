@@ -70,11 +70,7 @@ QWidget* JobSetupPanel::buildStock()
     blankLayout->addWidget(m_blankLabel, 1);
     blankLayout->addWidget(choose);
     form->addRow(tr("Blank"), m_blankRow);
-    m_blankError = new QLabel;
-    m_blankError->setObjectName(QStringLiteral("blankError"));
-    m_blankError->setWordWrap(true);
-    m_blankError->setStyleSheet(QStringLiteral("color: #b00020;"));
-    m_blankError->hide();
+    m_blankError = warningLabel("blankError");
     form->addRow(m_blankError);
 
     m_below = vec3Fields("stockBelow", 0, 1000);
@@ -89,11 +85,7 @@ QWidget* JobSetupPanel::buildStock()
     m_stockSummary->setObjectName(QStringLiteral("stockSummary"));
     m_stockSummary->setWordWrap(true);
     form->addRow(m_stockSummary);
-    m_stockError = new QLabel;
-    m_stockError->setObjectName(QStringLiteral("stockError"));
-    m_stockError->setWordWrap(true);
-    m_stockError->setStyleSheet(QStringLiteral("color: #b00020;"));
-    m_stockError->hide();
+    m_stockError = warningLabel("stockError");
     form->addRow(m_stockError);
 
     connect(choose, &QPushButton::clicked, this, &JobSetupPanel::chooseBlankFile);

@@ -6,6 +6,7 @@
 #include "base/Diagnostic.h"
 #include "base/LineReader.h"
 #include "base/Result.h"
+#include "toolpath/ClFormat.h"
 #include "toolpath/Toolpath.h"
 
 #include <optional>
@@ -14,8 +15,6 @@
 #include <vector>
 
 namespace camwb::toolpath {
-
-enum class ClFormat { Apt, FreeCadDump, Trace };  // Trace: our own canonical trace (TraceReader.h)
 
 // The result of an import. Every record carries a SourceRef:
 //  - operationIndex: the 0-based index of the section (SectionBegin ... SectionEnd) the record
@@ -31,12 +30,6 @@ struct ClImport {
     Toolpath toolpath;                       // records in mm, mm/min, degrees, rpm, seconds
     std::vector<base::Diagnostic> warnings;  // unknown/ignored records, with file, line (and column)
 };
-
-// .apt .aptsource .cl .cls -> Apt; .dump -> FreeCadDump; .trace -> Trace (case-insensitive); else nullopt.
-std::optional<ClFormat> clFormatFromExtension(const std::string& path);
-// "apt", "freecad-dump", "trace" (case-insensitive); anything else nullopt.
-std::optional<ClFormat> clFormatFromName(std::string_view name);
-const char* clFormatName(ClFormat format);  // the inverse: "apt", "freecad-dump", "trace"
 
 // Malformed input gives an Error with file, line and column and no toolpath. The dialects each
 // reader accepts, and the meaning it gives them, are documented in AptReader.h and

@@ -2048,36 +2048,12 @@ Pracoviště pro CAM a postprocesory.</translation>
         <translation>neznámý (zatím bez pohybu)</translation>
     </message>
     <message>
-        <source>stopped (M5)</source>
-        <translation>stojí (M5)</translation>
-    </message>
-    <message>
-        <source>CW (M3)</source>
-        <translation>vpravo (M3)</translation>
-    </message>
-    <message>
-        <source>CCW (M4)</source>
-        <translation>vlevo (M4)</translation>
-    </message>
-    <message>
         <source>%1 m/min constant surface speed, %2</source>
         <translation>%1 m/min konstantní řezná rychlost, %2</translation>
     </message>
     <message>
         <source>%1 rpm %2</source>
         <translation>%1 ot/min %2</translation>
-    </message>
-    <message>
-        <source>off (M9)</source>
-        <translation>vypnuto (M9)</translation>
-    </message>
-    <message>
-        <source>flood (M8)</source>
-        <translation>kapalina (M8)</translation>
-    </message>
-    <message>
-        <source>mist (M7)</source>
-        <translation>mlha (M7)</translation>
     </message>
     <message>
         <source>through tool</source>
@@ -2188,18 +2164,6 @@ Pracoviště pro CAM a postprocesory.</translation>
         </translation>
     </message>
     <message>
-        <source>%1 mm/min (%2)</source>
-        <translation>%1 mm/min (%2)</translation>
-    </message>
-    <message>
-        <source>%1 mm/rev (%2)</source>
-        <translation>%1 mm/ot (%2)</translation>
-    </message>
-    <message>
-        <source>%1 1/min (%2)</source>
-        <translation>%1 1/min (%2)</translation>
-    </message>
-    <message>
         <source>off</source>
         <translation>vypnuto</translation>
     </message>
@@ -2258,6 +2222,46 @@ Pracoviště pro CAM a postprocesory.</translation>
     <message>
         <source>Rotary axes</source>
         <translation>Rotační osy</translation>
+    </message>
+    <message>
+        <source>%1 mm/min</source>
+        <translation>%1 mm/min</translation>
+    </message>
+    <message>
+        <source>%1 mm/rev</source>
+        <translation>%1 mm/ot</translation>
+    </message>
+    <message>
+        <source>%1 1/min</source>
+        <translation>%1 1/min</translation>
+    </message>
+    <message>
+        <source>stopped</source>
+        <translation>stojí</translation>
+    </message>
+    <message>
+        <source>CW</source>
+        <translation>vpravo</translation>
+    </message>
+    <message>
+        <source>CCW</source>
+        <translation>vlevo</translation>
+    </message>
+    <message>
+        <source>flood</source>
+        <translation>kapalina</translation>
+    </message>
+    <message>
+        <source>mist</source>
+        <translation>mlha</translation>
+    </message>
+    <message>
+        <source>mm (an inch CL file converted)</source>
+        <translation>mm (palcový soubor CL převeden)</translation>
+    </message>
+    <message>
+        <source>absolute (CL positions)</source>
+        <translation>absolutně (polohy CL)</translation>
     </message>
 </context>
 <context>

@@ -76,10 +76,15 @@ double secondsSince(std::chrono::steady_clock::time_point start)
 
 }  // namespace
 
+std::optional<toolpath::ClFormat> clFormatToRead(const std::string& path, std::optional<nc::Dialect> dialectChoice)
+{
+    return dialectChoice ? std::nullopt : toolpath::clFormatFromExtension(path);
+}
+
 NcTrace traceNc(const NcTraceRequest& request)
 {
     NcTrace trace;
-    trace.clFormat = request.dialect ? std::nullopt : toolpath::clFormatFromExtension(request.path);
+    trace.clFormat = clFormatToRead(request.path, request.dialect);
     trace.dialectGuessed = !request.dialect.has_value();
     trace.dialect = request.dialect ? *request.dialect : nc::guessDialect(request.text, request.path);
 

@@ -96,6 +96,11 @@ struct NcTraceRequest {
     const std::atomic<bool>* cancel = nullptr;
 };
 
+// How a program is read when `dialectChoice` is what the user asked for: as a CL file of the format
+// its extension names when no dialect is asked for (nullopt: as NC). The inspector, its editor's
+// highlighting and block-number tools and Program Information all go by this one rule.
+std::optional<toolpath::ClFormat> clFormatToRead(const std::string& path, std::optional<nc::Dialect> dialectChoice);
+
 // Interprets the text (subprograms looked up in the folder of `path` when it has one), or imports
 // it as a CL file when no dialect is asked for and `path` names one, and builds the indexes. Once
 // `cancel` is set the interpreter stops within a thousand blocks (SINUMERIK and Heidenhain finish

@@ -25,6 +25,7 @@ add_library(camwb_gui_widgets STATIC
   ${_camwb_gui_widgets_dir}/editor/detail/DialectLexers.h
   ${_camwb_gui_widgets_dir}/editor/WordAddressLexer.cpp
   ${_camwb_gui_widgets_dir}/editor/HeidenhainLexer.cpp
+  ${_camwb_gui_widgets_dir}/editor/ClLexers.cpp
   ${_camwb_gui_widgets_dir}/editor/NcFolding.cpp
   ${_camwb_gui_widgets_dir}/editor/detail/NcLexer.h
   ${_camwb_gui_widgets_dir}/editor/NcLexer.cpp

@@ -223,6 +223,10 @@ void NcEditor::setDialect(nc::Dialect dialect) { d->lexer->setDialect(dialect); 
 
 nc::Dialect NcEditor::dialect() const { return d->lexer->dialect(); }
 
+void NcEditor::setClFormat(std::optional<toolpath::ClFormat> format) { d->lexer->setClFormat(format); }
+
+std::optional<toolpath::ClFormat> NcEditor::clFormat() const { return d->lexer->clFormat(); }
+
 void NcEditor::setProgramPath(const QString& path) { d->programPath = path; }
 
 QString NcEditor::programPath() const { return d->programPath; }

@@ -6,6 +6,7 @@
 #include "gui/editor/NcStyles.h"
 #include "nc/Diagnostic.h"
 #include "nc/Dialect.h"
+#include "toolpath/ClFormat.h"
 
 #include <QByteArray>
 #include <QList>
@@ -50,6 +51,10 @@ public:
 
     void setDialect(nc::Dialect dialect);  // Sinumerik by default
     nc::Dialect dialect() const;
+    // Set: the text is a CL file of this format (highlighted as one; block numbers are not its
+    // business). The inspector sets it as it reads the program (document::clFormatToRead).
+    void setClFormat(std::optional<toolpath::ClFormat> format);
+    std::optional<toolpath::ClFormat> clFormat() const;
     // Where the program lives (empty: not saved): names it in the tools' dialogs and lets Program
     // info find its subprograms in the same folder.
     void setProgramPath(const QString& path);

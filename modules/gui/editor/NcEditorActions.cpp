@@ -7,7 +7,6 @@
 #include "gui/editor/RenumberDialog.h"
 #include "gui/shell/Prompter.h"
 #include "nc/tools/BlockNumbers.h"
-#include "toolpath/ClImport.h"
 
 #include <QAction>
 #include <QCoreApplication>
@@ -58,10 +57,10 @@ void applyRewrite(NcEditor* editor, QWidget* parent, const nc::RenumberResult& r
 }
 
 // Block numbers are NC's: a CL file (APT, FreeCAD dump, trace) has none, and numbering its
-// statements would break it. True (and says so) for the editor's program when it is one.
+// statements would break it. True (and says so) when the editor holds one, as it was read.
 bool refusedForClFile(const NcEditor* editor, QWidget* parent)
 {
-    if (!toolpath::clFormatFromExtension(editor->programPath().toStdString()))
+    if (!editor->clFormat())
         return false;
     showMessage(
         parent,
@@ -184,7 +183,8 @@ void registerNcEditorActions(ActionRegistry& registry, NcEditor* editor, QWidget
             if (!ed || !parent)
                 return;
             ProgramInfoDialog* dialog = reuseOrCreate<ProgramInfoDialog>(parent, ed);
-            dialog->analyze(ed->text(), ed->dialect(), ed->programPath(), machine ? machine() : nullptr);
+            dialog->analyze(ed->text(), ed->dialect(), ed->programPath(), machine ? machine() : nullptr,
+                            ed->clFormat());
             dialog->show();
             dialog->raise();
         });

@@ -32,6 +32,19 @@ void NcLexer::setDialect(nc::Dialect dialect)
     if (dialect == m_dialect)
         return;
     m_dialect = dialect;
+    restyle();
+}
+
+void NcLexer::setClFormat(std::optional<toolpath::ClFormat> format)
+{
+    if (format == m_clFormat)
+        return;
+    m_clFormat = format;
+    restyle();
+}
+
+void NcLexer::restyle()
+{
     if (QsciScintilla* sci = editor()) {
         // Styles, line states and fold levels of the old dialect are stale. Moving the styled
         // watermark to the top restyles lazily, only what is shown (a full recolour would lex a
@@ -43,6 +56,8 @@ void NcLexer::setDialect(nc::Dialect dialect)
 
 const char* NcLexer::language() const
 {
+    if (m_clFormat)
+        return toolpath::clFormatName(*m_clFormat);
     switch (m_dialect) {
     case nc::Dialect::Sinumerik:
         return "Sinumerik";
@@ -162,7 +177,10 @@ void NcLexer::styleText(int start, int end)
     if (text == nullptr)
         return;
     m_styles.resize(static_cast<std::size_t>(length));
-    lexDialect(m_dialect, text, length, state.continues, m_styles.data());
+    if (m_clFormat)
+        lexClFormat(*m_clFormat, text, length, state.continues, m_styles.data());
+    else
+        lexDialect(m_dialect, text, length, state.continues, m_styles.data());
     sci->SendScintilla(Base::SCI_STARTSTYLING, static_cast<unsigned long>(start), 0L);
     sci->SendScintilla(Base::SCI_SETSTYLINGEX, static_cast<unsigned long>(length), m_styles.data());
 
@@ -191,8 +209,15 @@ void NcLexer::styleText(int start, int end)
         int tail = lineEnd - 1;
         while (tail >= lineBegin && (text[tail] == ' ' || text[tail] == '\t'))
             --tail;
-        const bool tilde = m_dialect == nc::Dialect::Heidenhain && tail >= lineBegin && text[tail] == '~';
-        const int level = foldLevel(m_dialect, tokens, tilde, state);
+        int level = Base::SC_FOLDLEVELBASE;  // depth 0, no header
+        if (m_clFormat) {
+            // A CL file does not fold; an APT line ending in '$' (not in a "$$" comment) continues.
+            state.continues = *m_clFormat == toolpath::ClFormat::Apt && tail >= lineBegin && text[tail] == '$' &&
+                              m_styles[static_cast<std::size_t>(tail)] != static_cast<char>(NcStyle::Comment);
+        } else {
+            const bool tilde = m_dialect == nc::Dialect::Heidenhain && tail >= lineBegin && text[tail] == '~';
+            level = foldLevel(m_dialect, tokens, tilde, state);
+        }
         if (sci->SendScintilla(Base::SCI_GETFOLDLEVEL, static_cast<unsigned long>(line)) != level)
             sci->SendScintilla(Base::SCI_SETFOLDLEVEL, static_cast<unsigned long>(line), static_cast<long>(level));
         const int packed = state.pack();

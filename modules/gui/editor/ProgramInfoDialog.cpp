@@ -103,7 +103,8 @@ ProgramInfoDialog::~ProgramInfoDialog()
 }
 
 void ProgramInfoDialog::analyze(const QString& text, nc::Dialect dialect, const QString& fileName,
-                                std::shared_ptr<const kinematics::Machine> machine)
+                                std::shared_ptr<const kinematics::Machine> machine,
+                                std::optional<toolpath::ClFormat> clFormat)
 {
     if (isBusy())
         return;
@@ -117,7 +118,7 @@ void ProgramInfoDialog::analyze(const QString& text, nc::Dialect dialect, const 
     std::string source = text.toStdString();
     nc::InterpretOptions options;
     options.dialect = dialect;
-    options.clFormat = toolpath::clFormatFromExtension(fileName.toStdString());  // as the inspector reads it
+    options.clFormat = clFormat;
     options.fileName = fileName.toStdString();
     if (!fileName.isEmpty() && QFileInfo(fileName).isAbsolute())
         options.resolveProgram = nc::resolverBeside(fileName.toStdString(), dialect);

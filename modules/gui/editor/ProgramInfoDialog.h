@@ -5,9 +5,11 @@
 #pragma once
 
 #include "nc/Dialect.h"
+#include "toolpath/ClFormat.h"
 #include "toolpath/ProgramStats.h"
 
 #include <memory>
+#include <optional>
 
 #include <QDialog>
 
@@ -38,8 +40,10 @@ public:
     // its subprograms (in its folder) when it is a path. With a `machine`, the simple estimate
     // assumes its rapid rate (as the post's header estimate does) and the cycle time is planned on
     // its axes; without one, on the default limits (kinematics/Machine.h), which the dialog says.
+    // With a `clFormat` the text is read as that CL file (as the editor holds it), not as NC.
     void analyze(const QString& text, nc::Dialect dialect, const QString& fileName = {},
-                 std::shared_ptr<const kinematics::Machine> machine = nullptr);
+                 std::shared_ptr<const kinematics::Machine> machine = nullptr,
+                 std::optional<toolpath::ClFormat> clFormat = std::nullopt);
     bool isBusy() const;
     bool hasStats() const;
     const toolpath::ProgramStats& stats() const;  // valid when hasStats()

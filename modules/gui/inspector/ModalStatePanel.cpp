@@ -55,46 +55,54 @@ QString rotaryAxesText(const document::ModalState& state)
     return axes.join(QLatin1Char(' '));
 }
 
-// `word`: the program's own word for the feed mode (G94, F, FU ...), else the ISO one.
-QString feedText(const document::ModalState& state, const char* word)
+// "meaning (word)"; the meaning alone without a word (a CL file has no NC words).
+QString withWord(const QString& meaning, const QString& word)
+{
+    return word.isEmpty() ? meaning : QStringLiteral("%1 (%2)").arg(meaning, word);
+}
+
+// `word`: the program's own word for the feed mode (G94, F, FU ...), else the ISO one; none
+// for a CL file (`cl`).
+QString feedText(const document::ModalState& state, const char* word, bool cl)
 {
     const bool own = word != nullptr && *word != 0;
+    const auto wordOr = [&](const char* iso) {
+        return own ? QString::fromLatin1(word) : cl ? QString() : QString::fromLatin1(iso);
+    };
     switch (state.feedMode) {
     case toolpath::FeedMode::PerMinute:
-        return ModalStatePanel::tr("%1 mm/min (%2)")
-            .arg(state.feed, 0, 'f', 1)
-            .arg(own ? QString::fromLatin1(word) : QStringLiteral("G94"));
+        return withWord(ModalStatePanel::tr("%1 mm/min").arg(state.feed, 0, 'f', 1), wordOr("G94"));
     case toolpath::FeedMode::PerRevolution:
-        return ModalStatePanel::tr("%1 mm/rev (%2)")
-            .arg(state.feed, 0, 'f', 3)
-            .arg(own ? QString::fromLatin1(word) : QStringLiteral("G95"));
+        return withWord(ModalStatePanel::tr("%1 mm/rev").arg(state.feed, 0, 'f', 3), wordOr("G95"));
     case toolpath::FeedMode::InverseTime:
-        return ModalStatePanel::tr("%1 1/min (%2)")
-            .arg(state.feed, 0, 'f', 3)
-            .arg(own ? QString::fromLatin1(word) : QStringLiteral("G93"));
+        return withWord(ModalStatePanel::tr("%1 1/min").arg(state.feed, 0, 'f', 3), wordOr("G93"));
     }
     return {};
 }
 
-QString spindleText(const document::ModalState& state)
+// With the ISO M words the records stand for; a CL file (`cl`) has none.
+QString spindleText(const document::ModalState& state, bool cl)
 {
+    const auto m = [cl](const char* word) { return cl ? QString() : QString::fromLatin1(word); };
     if (state.spindleRpm <= 0 && state.surfaceSpeedMPerMin <= 0)
-        return ModalStatePanel::tr("stopped (M5)");
-    const QString direction = state.spindleClockwise ? ModalStatePanel::tr("CW (M3)") : ModalStatePanel::tr("CCW (M4)");
+        return withWord(ModalStatePanel::tr("stopped"), m("M5"));
+    const QString direction = state.spindleClockwise ? withWord(ModalStatePanel::tr("CW"), m("M3"))
+                                                     : withWord(ModalStatePanel::tr("CCW"), m("M4"));
     if (state.surfaceSpeedMPerMin > 0)
         return ModalStatePanel::tr("%1 m/min constant surface speed, %2").arg(state.surfaceSpeedMPerMin).arg(direction);
     return ModalStatePanel::tr("%1 rpm %2").arg(state.spindleRpm, 0, 'f', 0).arg(direction);
 }
 
-QString coolantText(toolpath::CoolantMode mode)
+QString coolantText(toolpath::CoolantMode mode, bool cl)
 {
+    const auto m = [cl](const char* word) { return cl ? QString() : QString::fromLatin1(word); };
     switch (mode) {
     case toolpath::CoolantMode::Off:
-        return ModalStatePanel::tr("off (M9)");
+        return withWord(ModalStatePanel::tr("off"), m("M9"));
     case toolpath::CoolantMode::Flood:
-        return ModalStatePanel::tr("flood (M8)");
+        return withWord(ModalStatePanel::tr("flood"), m("M8"));
     case toolpath::CoolantMode::Mist:
-        return ModalStatePanel::tr("mist (M7)");
+        return withWord(ModalStatePanel::tr("mist"), m("M7"));
     case toolpath::CoolantMode::ThroughTool:
         return ModalStatePanel::tr("through tool");
     }
@@ -151,7 +159,7 @@ QString unitsText(const nc::BlockModal& words)
 void showWords(const std::function<void(const char*, const QString&)>& set, const nc::BlockModal& words,
                const document::ModalState& s)
 {
-    set("feed", feedText(s, words.feedModeWord));
+    set("feed", feedText(s, words.feedModeWord, false));
     set("compensation", compensationText(words.compensation, QString::fromLatin1(words.compensationWord)));
     set("plane", QStringLiteral("%1 (%2)").arg(QString::fromLatin1(words.planeWord), planeName(words.plane)));
     set("units", unitsText(words));
@@ -227,21 +235,23 @@ void ModalStatePanel::showState(const document::LineState& state, const document
     set("block", block);
     set("move", state.move.empty() ? tr("no motion") : QString::fromStdString(state.move));
     set("tool", s.tool > 0 ? QStringLiteral("T%1").arg(s.tool) : tr("none called yet"));
-    set("spindle", spindleText(s));
-    set("coolant", coolantText(s.coolant));
+    const bool cl = trace.clFormat.has_value();  // a CL file: what its records say, no NC words
+    set("spindle", spindleText(s, cl));
+    set("coolant", coolantText(s.coolant, cl));
     if (state.words) {
         showWords(set, *state.words, s);
     } else {
-        // No block has run yet (or the trace was cut short): only what the records carry.
-        set("feed", feedText(s, nullptr));
-        set("workOffset", s.workOffset > 0 ? tr("%1 (G%2)").arg(s.workOffset).arg(53 + s.workOffset)
-                                           : tr("none in the trace (control default)"));
+        // A CL file, or no block has run yet (or the trace was cut short): what the records carry.
+        set("feed", feedText(s, nullptr, cl));
+        set("workOffset", s.workOffset <= 0 ? tr("none in the trace (control default)")
+                          : cl              ? QString::number(s.workOffset)
+                                            : tr("%1 (G%2)").arg(s.workOffset).arg(53 + s.workOffset));
         set("compensation", compensationText(s.compensation, QString()));
         set("plane", s.hasArcNormal
                          ? tr("%1, from the last arc").arg(QString::fromStdString(document::planeOfNormal(s.arcNormal)))
                          : tr("no arc yet (not in the trace)"));
-        set("units", tr("mm (inch programs converted)"));
-        set("distance", tr("not in the trace; positions absolute"));
+        set("units", cl ? tr("mm (an inch CL file converted)") : tr("mm (inch programs converted)"));
+        set("distance", cl ? tr("absolute (CL positions)") : tr("not in the trace; positions absolute"));
     }
     set("before", position(state.before));
     set("after", position(state.after));

@@ -81,6 +81,7 @@ void NcInspector::loadProgram(const QString& text, const QString& path)
         m_dialect ? *m_dialect : nc::guessDialect(text.left(kGuessChars).toStdString(), path.toStdString());
     if (m_editor->dialect() != dialect)
         m_editor->setDialect(dialect);
+    m_editor->setClFormat(document::clFormatToRead(path.toStdString(), m_dialect));
     m_editor->setText(text);         // a new document: no diagnostics in the margin
     m_editor->setProgramPath(path);  // program info finds subprograms beside it, dialogs name it
     m_editorHasDiagnostics = false;
@@ -194,6 +195,7 @@ void NcInspector::showInEditor(const document::NcTrace& trace)
 {
     if (m_editor->dialect() != trace.dialect)
         m_editor->setDialect(trace.dialect);
+    m_editor->setClFormat(trace.clFormat);  // as read: the dock's dialect choice reads a .cls as NC
     const std::string program = trace.result.files.empty() ? std::string() : trace.result.files.front();
     const QList<NcEditorDiagnostic> diagnostics = NcEditor::diagnosticsFor(trace.result.diagnostics, program);
     if (!diagnostics.isEmpty() || m_editorHasDiagnostics)

@@ -267,6 +267,67 @@ private slots:
         QVERIFY(editor.isFoldHeader(3));
     }
 
+    // CL files in their own words: APT's major and minor words (a continued statement's next line
+    // starts with a minor word), a FreeCAD dump's commands and parameters, our trace's records.
+    // None of them folds.
+    void clFilesAreHighlightedAsCl()
+    {
+        NcEditor editor;
+        editor.setClFormat(toolpath::ClFormat::Apt);
+        editor.setText(QStringLiteral("$$ from CATIA\n"                 // 1
+                                      "PARTNO Part Operation.1\n"       // 2
+                                      "SPINDL/ 2400.0,RPM,$\n"          // 3
+                                      " CLW\n"                          // 4
+                                      "GOTO / -63.0, 8.5E-1, 1\n"       // 5
+                                      "TLON,GOFWD/ (CIRCLE/ 1,2),ON\n"  // 6
+                                      "FINI\n"));
+        auto style = [&](int line, int column) { return static_cast<NcStyle>(editor.styleAt(line, column)); };
+        QCOMPARE(style(1, 4), NcStyle::Comment);
+        QCOMPARE(style(2, 1), NcStyle::Keyword);     // PARTNO
+        QCOMPARE(style(2, 8), NcStyle::String);      // its text
+        QCOMPARE(style(3, 1), NcStyle::Keyword);     // SPINDL
+        QCOMPARE(style(3, 9), NcStyle::Number);      // 2400.0
+        QCOMPARE(style(3, 16), NcStyle::Parameter);  // RPM
+        QCOMPARE(style(4, 2), NcStyle::Parameter);   // CLW continues the statement: no major word
+        QCOMPARE(style(5, 1), NcStyle::Keyword);     // GOTO
+        QCOMPARE(style(5, 8), NcStyle::Number);      // -63.0
+        QCOMPARE(style(5, 18), NcStyle::Number);     // the exponent of 8.5E-1
+        QCOMPARE(style(6, 6), NcStyle::Keyword);     // GOFWD/
+        QCOMPARE(style(6, 14), NcStyle::Keyword);    // CIRCLE/ inside the brackets
+        QCOMPARE(style(6, 27), NcStyle::Parameter);  // ON
+        QCOMPARE(style(7, 1), NcStyle::Keyword);     // FINI
+        for (int line = 1; line <= 7; ++line) {
+            QCOMPARE(editor.foldDepth(line), 0);
+            QVERIFY(!editor.isFoldHeader(line));
+        }
+
+        editor.setClFormat(toolpath::ClFormat::FreeCadDump);
+        editor.setText(QStringLiteral("(Path: Profile)\nCommand G1 [ X:10 Y:-5.5 F:300 Q:1 ]\nCommand M6 [ T:4 ]\n"));
+        QCOMPARE(style(1, 2), NcStyle::Comment);
+        QCOMPARE(style(2, 1), NcStyle::Keyword);         // Command
+        QCOMPARE(style(2, 9), NcStyle::GWord);           // G1
+        QCOMPARE(style(2, 14), NcStyle::AxisWord);       // X:10
+        QCOMPARE(style(2, 24), NcStyle::AxisWord);       // Y:-5.5 to its last digit
+        QCOMPARE(style(2, 26), NcStyle::FeedSpeedTool);  // F:300
+        QCOMPARE(style(2, 32), NcStyle::Parameter);      // Q:1
+        QCOMPARE(style(3, 9), NcStyle::MWord);           // M6
+
+        editor.setClFormat(toolpath::ClFormat::Trace);
+        editor.setText(QStringLiteral("# camwb trace\nsection \"Holes\" drilling tool 3\nrapid 8.0 -8.0 25\n"));
+        QCOMPARE(style(1, 3), NcStyle::Comment);
+        QCOMPARE(style(2, 1), NcStyle::Keyword);     // section
+        QCOMPARE(style(2, 10), NcStyle::String);     // "Holes"
+        QCOMPARE(style(2, 18), NcStyle::Parameter);  // drilling
+        QCOMPARE(style(3, 1), NcStyle::Keyword);     // rapid
+        QCOMPARE(style(3, 11), NcStyle::Number);     // -8.0
+
+        // Back to NC: the same text in the editor's dialect again.
+        editor.setClFormat(std::nullopt);
+        editor.setDialect(nc::Dialect::Iso);
+        editor.setText(QStringLiteral("$$ not a comment in ISO\n"));
+        QVERIFY(style(1, 4) != NcStyle::Comment);
+    }
+
     void switchingTheDialectRestyles()
     {
         NcEditor editor;
@@ -403,6 +464,7 @@ private slots:
         const QString apt = QStringLiteral("PARTNO/BRACKET\nRAPID\nGOTO/0,0,20\nFINI\n");
         m_editor->setText(apt);
         m_editor->setProgramPath(QStringLiteral("/tmp/bracket.cls"));
+        m_editor->setClFormat(toolpath::ClFormat::Apt);  // as the inspector reads it
         for (const char* id : {"Cam.Nc.Renumber", "Cam.Nc.RemoveNumbers"}) {
             m_window->statusBar()->clearMessage();
             QVERIFY(m_registry->trigger(QString::fromLatin1(id)));  // no dialog: it would wait here
@@ -410,7 +472,8 @@ private slots:
             QCOMPARE(m_window->statusBar()->currentMessage(),
                      QStringLiteral("bracket.cls is a CL file: block numbers are for NC programs"));
         }
-        m_editor->setProgramPath(QStringLiteral("/tmp/bracket.ngc"));  // the same text as NC: numbered
+        // The same .cls read as NC (the dock's dialect chosen): its blocks are NC blocks.
+        m_editor->setClFormat(std::nullopt);
         QVERIFY(m_registry->trigger(QStringLiteral("Cam.Nc.RemoveNumbers")));
         QVERIFY(m_window->statusBar()->currentMessage().startsWith(QStringLiteral("Removed")));
     }
@@ -544,6 +607,22 @@ private slots:
             qPrintable(
                 QStringLiteral("%1 s planned vs %2 s").arg(dialog->plannedSeconds()).arg(s.totals.totalSeconds())));
         saveShot(dialog, QStringLiteral("program-info.png"));
+    }
+
+    // Program Information reads the program as the editor holds it: APT here, though its name
+    // says nothing of CL, because the inspector read it so.
+    void programInfoReadsACLFileAsTheEditorHoldsIt()
+    {
+        m_editor->setText(QStringLiteral("PARTNO/BRACKET\nCUTTER/10,0\nLOADTL/3\nRAPID\nGOTO/0,0,20\n"
+                                         "FEDRAT/MMPM,300\nGOTO/0,0,-2\nGOTO/40,0,-2\nFINI\n"));
+        m_editor->setProgramPath(QStringLiteral("/tmp/bracket.txt"));
+        m_editor->setClFormat(toolpath::ClFormat::Apt);
+        QVERIFY(m_registry->trigger(QStringLiteral("Cam.Nc.ProgramInfo")));
+        auto* dialog = m_window->findChild<ProgramInfoDialog*>();
+        QVERIFY(dialog != nullptr);
+        QTRY_VERIFY_WITH_TIMEOUT(dialog->hasStats() && !dialog->isBusy(), 20000);
+        QCOMPARE(dialog->errorCount(), 0);
+        QVERIFY(std::abs(dialog->stats().totals.feedLengthMm - 62.0) < 1e-6);
     }
 };
 

@@ -361,7 +361,16 @@ private slots:
         rig.editor.gotoLine(8);
         QCOMPARE(int(rig.view.highlightedSegments().size()), 1);
         QCOMPARE(rig.panel.value(QStringLiteral("tool")), QStringLiteral("T3"));
-        QVERIFY(rig.panel.value(QStringLiteral("feed")).startsWith(QLatin1String("300.0 mm/min")));
+        // The panel says what the CL's records say, in no NC words (no G94, no M5, no M9).
+        QCOMPARE(rig.panel.value(QStringLiteral("feed")), QStringLiteral("300.0 mm/min"));
+        QCOMPARE(rig.panel.value(QStringLiteral("spindle")), QStringLiteral("stopped"));
+        QCOMPARE(rig.panel.value(QStringLiteral("coolant")), QStringLiteral("off"));
+        QCOMPARE(rig.panel.value(QStringLiteral("distance")), QStringLiteral("absolute (CL positions)"));
+        // The editor holds it as APT: highlighted as one, and its tools know it is no NC program.
+        QCOMPARE(rig.editor.clFormat(), std::optional(tp::ClFormat::Apt));
+        QCOMPARE(static_cast<NcStyle>(rig.editor.styleAt(6, 1)), NcStyle::Keyword);    // FEDRAT
+        QCOMPARE(static_cast<NcStyle>(rig.editor.styleAt(6, 8)), NcStyle::Parameter);  // MMPM
+        QCOMPARE(static_cast<NcStyle>(rig.editor.styleAt(6, 13)), NcStyle::Number);    // 300
 
         // Line 8 made unreadable: one error there, in the margin.
         QSignalSpy finished(&rig.inspector, &NcInspector::traceFinished);
@@ -379,6 +388,17 @@ private slots:
         QVERIFY(finished.wait(60000));
         QVERIFY(!rig.inspector.trace()->clFormat.has_value());
         QVERIFY(rig.inspector.trace()->result.hasErrors());
+        QVERIFY(!rig.editor.clFormat().has_value());
+        QCOMPARE(static_cast<NcStyle>(rig.editor.styleAt(6, 8)), NcStyle::Default);  // ISO: no word
+
+        // A program of G words in the same dock is NC again: the panel names the words.
+        rig.inspector.setDialect(std::nullopt);
+        rig.inspector.setFilePath(QStringLiteral("bracket.ngc"));
+        LOAD_OR_FAIL(rig, QStringLiteral("G0 X0 Y0 Z5\nG1 Z-1 F200\n"));
+        QVERIFY(!rig.editor.clFormat().has_value());
+        rig.editor.gotoLine(2);
+        QCOMPARE(rig.panel.value(QStringLiteral("feed")), QStringLiteral("200.0 mm/min (G94)"));
+        QCOMPARE(rig.panel.value(QStringLiteral("spindle")), QStringLiteral("stopped (M5)"));
     }
 
     // Five-axis Klartext on a B/C table machine: the panel shows the tool vector and the machine's

@@ -6,6 +6,7 @@
 
 #include "gui/editor/NcStyles.h"
 #include "nc/Dialect.h"
+#include "toolpath/ClFormat.h"
 
 #include <cstdint>
 #include <string>
@@ -25,6 +26,16 @@ void lexIso(const char* text, int length, char* styles);
 void lexHeidenhain(const char* text, int length, bool continuation, char* styles);
 
 void lexDialect(nc::Dialect dialect, const char* text, int length, bool continuation, char* styles);
+
+// CL files (ClLexers.cpp). APT CL source: "$$" comments, major words (the statement's first, and any
+// before a '/') as keywords, minor words (ON, MMPM) as parameters, numbers, PARTNO/PPRINT text as
+// strings; `continuation`: the range starts on a line the one above continues (it ended in '$').
+void lexApt(const char* text, int length, bool continuation, char* styles);
+// FreeCAD path dump: "(...)" comments, "Command", G and M codes, "X:10" parameters by letter.
+void lexFreeCadDump(const char* text, int length, char* styles);
+// Our trace: the record's kind as a keyword, numbers, "strings", key words, '#' comment lines.
+void lexClTrace(const char* text, int length, char* styles);
+void lexClFormat(toolpath::ClFormat format, const char* text, int length, bool continuation, char* styles);
 
 // What the fold computation needs to carry from one line to the next (Scintilla's line state).
 struct FoldState {

@@ -39,6 +39,14 @@ public:
             ++from;
         return from;
     }
+    // Past `close` on this line, or the line's end when it is not closed ("(comment", "\"text").
+    int closedEnd(int from, char close) const
+    {
+        const int end = lineEnd(from);
+        while (from < end && m_s[from] != close)
+            ++from;
+        return from < end ? from + 1 : end;
+    }
     int wordEnd(int from) const
     {
         while (from < m_n && (isAlpha(m_s[from]) || isDigit(m_s[from])))
@@ -75,8 +83,6 @@ public:
     {
         std::memset(m_styles + from, static_cast<int>(style), static_cast<std::size_t>(to - from));
     }
-    const char* text() const { return m_s; }
-    int size() const { return m_n; }
 
 private:
     const char* m_s;
@@ -142,10 +148,7 @@ void lexFreeCadDump(const char* text, int length, char* styles)
         const char c = text[i];
         int j = i + 1;
         if (c == '(') {
-            while (j < length && text[j] != ')' && text[j] != '\n' && text[j] != '\r')
-                ++j;
-            if (j < length && text[j] == ')')
-                ++j;
+            j = scan.closedEnd(j, ')');
             scan.style(i, j, NcStyle::Comment);
         } else if (isAlpha(c)) {
             j = scan.wordEnd(i);
@@ -185,10 +188,7 @@ void lexClTrace(const char* text, int length, char* styles)
             j = scan.lineEnd(i);
             scan.style(i, j, NcStyle::Comment);
         } else if (c == '"') {
-            while (j < length && text[j] != '"' && text[j] != '\n' && text[j] != '\r')
-                ++j;
-            if (j < length && text[j] == '"')
-                ++j;
+            j = scan.closedEnd(j, '"');
             scan.style(i, j, NcStyle::String);
             lineStart = false;
         } else if (isAlpha(c)) {

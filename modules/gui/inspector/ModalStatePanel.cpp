@@ -61,14 +61,15 @@ QString withWord(const QString& meaning, const QString& word)
     return word.isEmpty() ? meaning : QStringLiteral("%1 (%2)").arg(meaning, word);
 }
 
+// The ISO word a record stands for (G94, M5), none for a CL file (`cl`).
+QString isoWord(const char* word, bool cl) { return cl ? QString() : QString::fromLatin1(word); }
+
 // `word`: the program's own word for the feed mode (G94, F, FU ...), else the ISO one; none
 // for a CL file (`cl`).
 QString feedText(const document::ModalState& state, const char* word, bool cl)
 {
     const bool own = word != nullptr && *word != 0;
-    const auto wordOr = [&](const char* iso) {
-        return own ? QString::fromLatin1(word) : cl ? QString() : QString::fromLatin1(iso);
-    };
+    const auto wordOr = [&](const char* iso) { return own ? QString::fromLatin1(word) : isoWord(iso, cl); };
     switch (state.feedMode) {
     case toolpath::FeedMode::PerMinute:
         return withWord(ModalStatePanel::tr("%1 mm/min").arg(state.feed, 0, 'f', 1), wordOr("G94"));
@@ -80,10 +81,9 @@ QString feedText(const document::ModalState& state, const char* word, bool cl)
     return {};
 }
 
-// With the ISO M words the records stand for; a CL file (`cl`) has none.
 QString spindleText(const document::ModalState& state, bool cl)
 {
-    const auto m = [cl](const char* word) { return cl ? QString() : QString::fromLatin1(word); };
+    const auto m = [cl](const char* word) { return isoWord(word, cl); };
     if (state.spindleRpm <= 0 && state.surfaceSpeedMPerMin <= 0)
         return withWord(ModalStatePanel::tr("stopped"), m("M5"));
     const QString direction = state.spindleClockwise ? withWord(ModalStatePanel::tr("CW"), m("M3"))
@@ -95,7 +95,7 @@ QString spindleText(const document::ModalState& state, bool cl)
 
 QString coolantText(toolpath::CoolantMode mode, bool cl)
 {
-    const auto m = [cl](const char* word) { return cl ? QString() : QString::fromLatin1(word); };
+    const auto m = [cl](const char* word) { return isoWord(word, cl); };
     switch (mode) {
     case toolpath::CoolantMode::Off:
         return withWord(ModalStatePanel::tr("off"), m("M9"));

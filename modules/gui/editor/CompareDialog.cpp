@@ -52,6 +52,7 @@ struct CompareDialog::Private {
     std::array<QString, 2> texts;
     std::array<bool, 2> loaded{};  // a side without a program is not compared (not an empty file)
     std::array<QsciScintilla*, 2> views{};
+    std::array<NcLexer*, 2> lexers{};
     std::array<QLabel*, 2> titles{};
     QCheckBox* ignoreNumbers = nullptr;
     QCheckBox* ignoreBlanks = nullptr;
@@ -92,6 +93,7 @@ CompareDialog::CompareDialog(nc::Dialect dialect, QWidget* parent) : QDialog(par
         auto* lexer = new NcLexer(view);
         lexer->setDialect(dialect);
         view->setLexer(lexer);
+        d->lexers[side] = lexer;
         view->setReadOnly(true);
         view->setWrapMode(QsciScintilla::WrapNone);
         view->SendScintilla(Base::SCI_SETSCROLLWIDTH, 1UL);
@@ -212,6 +214,33 @@ bool CompareDialog::loadRight(const QString& path)
     setRight(QString::fromUtf8(file.readAll()), QFileInfo(path).fileName());
     d->titles[1]->setToolTip(path);
     return true;
+}
+
+void CompareDialog::setLanguage(nc::Dialect dialect, std::optional<toolpath::ClFormat> clFormat)
+{
+    for (NcLexer* lexer : d->lexers) {
+        lexer->setDialect(dialect);
+        lexer->setClFormat(clFormat);
+    }
+    if (d->dialect == dialect)
+        return;
+    d->dialect = dialect;  // the block numbers ignored are the dialect's own
+    invalidate();
+}
+
+int CompareDialog::styleAt(bool left, int row, int column) const
+{
+    QsciScintilla* view = d->views[left ? 0 : 1];
+    if (row < 1 || row > view->lines() || column < 1)
+        return -1;
+    const long position = view->positionFromLineIndex(row - 1, column - 1);
+    const long end = view->SendScintilla(Base::SCI_GETLINEENDPOSITION, static_cast<unsigned long>(row - 1));
+    if (position >= end)
+        return -1;
+    const long styledTo = view->SendScintilla(Base::SCI_GETENDSTYLED);  // style up to the row's end first
+    if (styledTo <= end)
+        view->SendScintilla(Base::SCI_COLOURISE, static_cast<unsigned long>(styledTo), end + 1);
+    return static_cast<int>(view->SendScintilla(Base::SCI_GETSTYLEAT, static_cast<unsigned long>(position)));
 }
 
 void CompareDialog::setIgnoreBlockNumbers(bool ignore) { d->ignoreNumbers->setChecked(ignore); }

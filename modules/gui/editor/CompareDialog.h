@@ -6,10 +6,12 @@
 
 #include "nc/Dialect.h"
 #include "nc/tools/LineDiff.h"
+#include "toolpath/ClFormat.h"
 
 #include <QDialog>
 
 #include <memory>
+#include <optional>
 
 namespace camwb::gui {
 
@@ -19,6 +21,10 @@ class CompareDialog : public QDialog {
 public:
     explicit CompareDialog(nc::Dialect dialect, QWidget* parent = nullptr);
     ~CompareDialog() override;
+
+    // How both sides are highlighted and their block numbers told: the editor's program's dialect,
+    // or the CL format it was read as. A reused dialog takes the program it compares now.
+    void setLanguage(nc::Dialect dialect, std::optional<toolpath::ClFormat> clFormat);
 
     // A side is compared once it holds a program (an empty file is a program); until both do, the
     // dialog shows the sides as they are, with no differences.
@@ -36,6 +42,9 @@ public:
     void nextDifference();
     void previousDifference();
     int firstVisibleRow(bool left) const;  // 0-based display row, for the synced scrolling
+    // The highlighter's style (an NcStyle value) at a 1-based display row and column, as
+    // NcEditor::styleAt; -1 outside the text. For tests.
+    int styleAt(bool left, int row, int column) const;
 
 protected:
     void showEvent(QShowEvent* event) override;

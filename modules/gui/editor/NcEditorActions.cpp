@@ -169,6 +169,7 @@ void registerNcEditorActions(ActionRegistry& registry, NcEditor* editor, QWidget
             if (path.isEmpty() || !ed)
                 return;
             CompareDialog* dialog = reuseOrCreate<CompareDialog>(parent, ed);
+            dialog->setLanguage(ed->dialect(), ed->clFormat());
             const QString name = QFileInfo(ed->programPath()).fileName();
             dialog->setLeft(ed->text(),
                             name.isEmpty() ? Tr::tr("Current program") : Tr::tr("%1 (in the editor)").arg(name));

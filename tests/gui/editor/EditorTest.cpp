@@ -543,6 +543,32 @@ private slots:
         QCOMPARE(dialog->differenceCount(), 2);
     }
 
+    // The dialog is reused, but each Compare takes the program the editor holds now: a CL file
+    // after an NC program is highlighted as CL on both sides.
+    void compareTakesTheEditorsLanguage()
+    {
+        const QString nc = writeFile(QStringLiteral("other.mpf"), "N10 G0 X0 ; rapid\n");
+        const QString cl = writeFile(QStringLiteral("other.cls"), "$$ from NX\nGOTO/0,0,5\n");
+        QVERIFY(!nc.isEmpty() && !cl.isEmpty());
+        m_editor->setDialect(nc::Dialect::Sinumerik);
+        m_editor->setText(QStringLiteral("N10 G0 X0 ; rapid\n"));
+        m_prompter.files.push_back(nc);
+        QVERIFY(m_registry->trigger(QStringLiteral("Cam.Nc.Compare")));
+        auto* dialog = m_window->findChild<CompareDialog*>();
+        QVERIFY(dialog != nullptr);
+        QCOMPARE(static_cast<NcStyle>(dialog->styleAt(true, 1, 12)), NcStyle::Comment);  // ; rapid
+
+        m_editor->setText(QStringLiteral("$$ from CATIA\nGOTO/0,0,5\n"));
+        m_editor->setClFormat(toolpath::ClFormat::Apt);
+        m_prompter.files.push_back(cl);
+        QVERIFY(m_registry->trigger(QStringLiteral("Cam.Nc.Compare")));
+        QCOMPARE(m_window->findChild<CompareDialog*>(), dialog);  // the same dialog, reused
+        QCOMPARE(dialog->differenceCount(), 1);
+        QCOMPARE(static_cast<NcStyle>(dialog->styleAt(true, 1, 4)), NcStyle::Comment);   // $$ from CATIA
+        QCOMPARE(static_cast<NcStyle>(dialog->styleAt(false, 1, 4)), NcStyle::Comment);  // $$ from NX
+        QCOMPARE(static_cast<NcStyle>(dialog->styleAt(true, 2, 1)), NcStyle::Keyword);   // GOTO
+    }
+
     // Without a second program there is nothing to compare: no dialog when the file choice is
     // cancelled, and a dialog with one side says so instead of counting the whole program as one
     // difference.

@@ -191,8 +191,9 @@ void registerSetupSheetActions(ActionRegistry& registry, const QString& menu, Wo
     QObject::connect(workbench, &Workbench::jobChanged, workbench, outOfDate);
     QObject::connect(workbench, &Workbench::modelChanged, workbench, outOfDate);
     QObject::connect(workbench, &Workbench::toolpathChanged, workbench, outOfDate);
-    // A window that goes stops the worker (it would otherwise run on, to be thrown away).
-    QObject::connect(workbench, &QObject::destroyed, [current] {
+    // A window that goes stops the worker (it would otherwise run on, to be thrown away); the
+    // workbench then waits for it.
+    QObject::connect(workbench, &Workbench::closing, [current] {
         if (*current)
             (*current)->cancel->store(true);
     });

@@ -27,11 +27,13 @@ namespace {
 
 QString qs(const std::string& s) { return QString::fromStdString(s); }
 
-// Progress from a worker thread, delivered on the GUI thread.
-occ::ProgressFn progressReporter(Workbench* workbench, const QString& what)
+// Progress from a worker thread, delivered on the GUI thread; false (stop) once the workbench is
+// closing.
+occ::ProgressFn progressReporter(Workbench* workbench, const QString& what,
+                                 std::shared_ptr<const std::atomic<bool>> closing)
 {
     QPointer<Workbench> target(workbench);
-    return [target, what](double fraction) {
+    return [target, what, closing](double fraction) {
         const int percent = std::clamp(static_cast<int>(fraction * 100), 0, 100);
         QMetaObject::invokeMethod(
             target.data(),
@@ -40,7 +42,7 @@ occ::ProgressFn progressReporter(Workbench* workbench, const QString& what)
                     emit target->progress(percent, what);
             },
             Qt::QueuedConnection);
-        return true;
+        return !closing->load();
     };
 }
 
@@ -133,7 +135,15 @@ Workbench::Workbench(QObject* parent) : QObject(parent)
     });
 }
 
-Workbench::~Workbench() = default;
+// Its background work is stopped and waited for: left running it would outlive the application
+// (the post's script engine then aborts the process as it exits).
+Workbench::~Workbench()
+{
+    m_closing->store(true);
+    emit closing();
+    for (QFutureWatcherBase* watcher : findChildren<QFutureWatcherBase*>(Qt::FindDirectChildrenOnly))
+        watcher->waitForFinished();
+}
 
 QString Workbench::operationProblem(int index) const
 {
@@ -245,7 +255,7 @@ void Workbench::importModel(const QString& path)
     }
     setBusy(true);
     const std::string file = QFileInfo(path).absoluteFilePath().toStdString();
-    auto progress = progressReporter(this, tr("Importing %1").arg(QFileInfo(path).fileName()));
+    auto progress = progressReporter(this, tr("Importing %1").arg(QFileInfo(path).fileName()), m_closing);
     auto* watcher = new QFutureWatcher<std::shared_ptr<ComputeOutcome>>(this);
     connect(watcher, &QFutureWatcherBase::finished, this, [this, watcher, file] {
         std::shared_ptr<ComputeOutcome> outcome = watcher->result();
@@ -472,7 +482,8 @@ void Workbench::startCompute()
     const occ::Model model = m_model;
     // The model is held in work coordinates: a moved origin reloads it too.
     const bool reloadModel = job.modelPath != m_modelPath || !(job.origin == m_modelOrigin);
-    auto progress = progressReporter(this, tr("Loading model"));
+    auto progress = progressReporter(this, tr("Loading model"), m_closing);
+    std::shared_ptr<const std::atomic<bool>> stop = m_closing;
     const std::string programName = QFileInfo(qs(m_document.path())).completeBaseName().toStdString();
     const int generation = m_generation;
     const std::string blankKey = stockBlankKey(job);
@@ -488,7 +499,7 @@ void Workbench::startCompute()
         finishCompute(outcome);
     });
     watcher->setFuture(QtConcurrent::run([job, model, reloadModel, progress, programName, generation, blankKey,
-                                          reloadBlank, blank, checkStoredStock, jobPath] {
+                                          reloadBlank, blank, checkStoredStock, jobPath, stop] {
         auto outcome = std::make_shared<ComputeOutcome>();
         outcome->generation = generation;
         if (job.modelPath.empty() && document::jobNeedsModel(job))
@@ -531,7 +542,7 @@ void Workbench::startCompute()
         }
         document::ProgramReport report;
         report.allFailures = true;  // the job tree marks every operation that cannot be made
-        auto program = document::computeProgram(resolved, current, {}, &report);
+        auto program = document::computeProgram(resolved, current, ops::Progress{{}, stop.get()}, &report);
         outcome->warnings = std::move(report.warnings);
         outcome->failures = std::move(report.failures);
         if (!program) {
@@ -542,6 +553,8 @@ void Workbench::startCompute()
             return outcome;
         }
         outcome->toolpath = program.value();
+        if (stop->load())
+            return outcome;  // the workbench is closing: nobody waits for the program
         auto post = document::loadJobPost(job, post::defaultPostDirs());
         if (!post) {
             outcome->errors.push_back(post.error().toString());

@@ -15,6 +15,7 @@
 #include <QObject>
 #include <QString>
 
+#include <atomic>
 #include <map>
 #include <memory>
 #include <optional>
@@ -155,6 +156,9 @@ signals:
     void programStateChanged();
     void busyChanged(bool busy);
     void progress(int percent, const QString& what);
+    // The workbench is being destroyed: background work started for it (a setup sheet) stops
+    // now. It then waits for its workers, which must not outlive the application.
+    void closing();
     void message(camwb::gui::Workbench::Severity severity, const QString& text);
 
 private:
@@ -199,6 +203,8 @@ private:
     bool m_showComputeFailure = false;  // the running compute was asked for (open, post): show its error
     bool m_checkStoredStock = false;    // the first compute after opening: the stored stock box is checked
     int m_generation = 0;               // a compute started for an earlier job is not applied
+    // Set as the workbench is destroyed: its background work stops at the next step it checks.
+    std::shared_ptr<std::atomic<bool>> m_closing = std::make_shared<std::atomic<bool>>(false);
 };
 
 }  // namespace camwb::gui

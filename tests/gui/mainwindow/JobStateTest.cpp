@@ -36,6 +36,7 @@
 #include <QSignalSpy>
 #include <QTemporaryDir>
 #include <QTest>
+#include <QThreadPool>
 #include <QTimer>
 #include <QToolBar>
 #include <QToolButton>
@@ -51,6 +52,20 @@ class JobStateTest : public QObject {
     Q_OBJECT
 
 private slots:
+    // Closing the window while the job computes stops and waits for that work: left running it
+    // outlived the application, whose exit then aborted in the post's script engine.
+    void aClosedWorkbenchLeavesNoWorkRunning()
+    {
+        QThreadPool* pool = QThreadPool::globalInstance();
+        QTRY_COMPARE_WITH_TIMEOUT(pool->activeThreadCount(), 0, 60000);  // nothing from before
+        {
+            Workbench workbench;
+            QVERIFY(workbench.openJob(QStringLiteral(CAMWB_EXAMPLE_JOB)));
+            QVERIFY(workbench.isBusy());  // loading its model and computing
+        }
+        QCOMPARE(pool->activeThreadCount(), 0);
+    }
+
     void failedPostIsMarkedAndCannotBeSaved()
     {
         QTemporaryDir dir;

@@ -20,9 +20,6 @@
 #include <QSignalSpy>
 #include <QTemporaryDir>
 #include <QTest>
-#include <QThreadPool>
-
-#include <memory>
 
 namespace {
 
@@ -121,26 +118,6 @@ private slots:
         expected << QStringLiteral("sheet-images") << QStringLiteral("sheet.html") << QStringLiteral("sheet.pdf");
         expected.sort();
         QCOMPARE(filesIn(dir), expected);
-    }
-
-    // A window closed while its sheet is made stops the sheet and waits for it: nothing written,
-    // no temporaries, and no worker left to outlive the application.
-    void closingTheWindowStopsTheSheet()
-    {
-        QTemporaryDir dir;
-        auto window = std::make_unique<MainWindow>();
-        ScriptedPrompter* prompter = openExample(*window, dir, false);
-        QVERIFY(prompter);
-        QThreadPool* pool = QThreadPool::globalInstance();
-        QTRY_COMPARE_WITH_TIMEOUT(pool->activeThreadCount(), 0, 60000);
-        const QStringList before = filesIn(dir);
-        prompter->files = {dir.filePath(QStringLiteral("sheet.html"))};
-        QVERIFY(window->actions().trigger(QStringLiteral("Cam.Job.SetupSheet")));
-        QVERIFY(sheetProgress(*window) != nullptr);
-        QCOMPARE(pool->activeThreadCount(), 1);  // the sheet's worker
-        window.reset();
-        QCOMPARE(pool->activeThreadCount(), 0);
-        QCOMPARE(filesIn(dir), before);
     }
 
     void anEditWhileItIsMadeDiscardsIt()

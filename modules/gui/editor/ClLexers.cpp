@@ -11,9 +11,9 @@ namespace camwb::gui {
 
 namespace {
 
-bool isDigit(char c) { return c >= '0' && c <= '9'; }
-bool isAlpha(char c) { return (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z') || c == '_'; }
-char upper(char c) { return (c >= 'a' && c <= 'z') ? char(c - 'a' + 'A') : c; }
+using lexchar::isDigit;
+using lexchar::isLetter;
+using lexchar::upper;
 
 // APT statements whose text after the major word is free text, not parameters.
 constexpr std::array<std::string_view, 5> kAptTextWords{"INSERT", "PARTNO", "PPRINT", "TPRINT", "TITLE"};
@@ -49,7 +49,7 @@ public:
     }
     int wordEnd(int from) const
     {
-        while (from < m_n && (isAlpha(m_s[from]) || isDigit(m_s[from])))
+        while (from < m_n && (isLetter(m_s[from]) || isDigit(m_s[from])))
             ++from;
         return from;
     }
@@ -114,7 +114,7 @@ void lexApt(const char* text, int length, bool continuation, char* styles)
         } else if (c == '$') {
             const char next = scan.nextOnLine(j);
             lineContinues = next == '\0' || next == '\n' || next == '\r';
-        } else if (isAlpha(c)) {
+        } else if (isLetter(c)) {
             j = scan.wordEnd(i);
             const bool major = statementStart || scan.nextOnLine(j) == '/';
             scan.style(i, j, major ? NcStyle::Keyword : NcStyle::Parameter);
@@ -150,7 +150,7 @@ void lexFreeCadDump(const char* text, int length, char* styles)
         if (c == '(') {
             j = scan.closedEnd(j, ')');
             scan.style(i, j, NcStyle::Comment);
-        } else if (isAlpha(c)) {
+        } else if (isLetter(c)) {
             j = scan.wordEnd(i);
             const char letter = upper(c);
             if (j < length && text[j] == ':') {
@@ -191,7 +191,7 @@ void lexClTrace(const char* text, int length, char* styles)
             j = scan.closedEnd(j, '"');
             scan.style(i, j, NcStyle::String);
             lineStart = false;
-        } else if (isAlpha(c)) {
+        } else if (isLetter(c)) {
             j = scan.wordEnd(i);
             scan.style(i, j, lineStart ? NcStyle::Keyword : NcStyle::Parameter);
             lineStart = false;

@@ -31,9 +31,9 @@ constexpr std::array<std::string_view, 28> kAxisWords{"A",  "B",  "C",  "I",  "I
                                                       "IV", "IW", "IX", "IY", "IZ", "J",  "K",  "PA",  "PR",  "R",
                                                       "U",  "V",  "W",  "X",  "Y",  "Z",  "H",  "CCA"};
 
-bool isDigit(char c) { return c >= '0' && c <= '9'; }
-bool isLetter(char c) { return (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z') || c == '_'; }
-char upper(char c) { return (c >= 'a' && c <= 'z') ? char(c - 'a' + 'A') : c; }
+using lexchar::isDigit;
+using lexchar::isLetter;
+using lexchar::upper;
 
 }  // namespace
 

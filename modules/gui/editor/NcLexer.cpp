@@ -11,7 +11,7 @@ namespace camwb::gui {
 
 namespace {
 
-char upper(char c) { return (c >= 'a' && c <= 'z') ? char(c - 'a' + 'A') : c; }
+using lexchar::upper;
 
 bool foldRelevant(NcStyle style)
 {

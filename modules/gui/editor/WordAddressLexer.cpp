@@ -38,10 +38,10 @@ constexpr std::array<std::string_view, 43> kIsoKeywords{
     "GE",     "GOTO",   "GT",    "IF",        "LE",     "LN",       "LT",   "MOD",      "NE",    "OR",  "POP",
     "REPEAT", "RETURN", "ROUND", "SIN",       "SQRT",   "SUB",      "TAN",  "THEN",     "WHILE", "XOR"};
 
-bool isDigit(char c) { return c >= '0' && c <= '9'; }
-bool isAlpha(char c) { return (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z') || c == '_'; }
-bool isIdent(char c) { return isAlpha(c) || isDigit(c) || c == '$'; }
-char upper(char c) { return (c >= 'a' && c <= 'z') ? char(c - 'a' + 'A') : c; }
+using lexchar::isDigit;
+using lexchar::isLetter;
+using lexchar::upper;
+bool isIdent(char c) { return isLetter(c) || isDigit(c) || c == '$'; }
 
 bool isSinumerikKeyword(std::string_view word)
 {
@@ -222,7 +222,7 @@ void lexWordAddress(const Syntax& syntax, const char* s, int n, char* styles)
                 ++j;
             style = NcStyle::BlockNumber;
             blockStart = false;
-        } else if (isAlpha(c) || (!syntax.iso && c == '$')) {
+        } else if (isLetter(c) || (!syntax.iso && c == '$')) {
             blockStart = false;
             const bool oName = syntax.iso && upper(c) == 'O' && j < n && s[j] == '<';
             // Sinumerik names may be one letter (FOR I = 1 TO 3): a letter is an address only with
@@ -230,7 +230,7 @@ void lexWordAddress(const Syntax& syntax, const char* s, int n, char* styles)
             const char next = j < n ? s[j] : '\0';
             const bool valueNext = isDigit(next) || next == '=' || next == '.' || next == '-' || next == '+';
             const bool addressWord =
-                isAlpha(c) && c != '_' && (isDigit(next) || (syntax.iso ? !isIdent(next) : valueNext));
+                isLetter(c) && c != '_' && (isDigit(next) || (syntax.iso ? !isIdent(next) : valueNext));
             if (oName) {
                 while (j < n && s[j] != '>' && s[j] != '\n' && s[j] != '\r')
                     ++j;

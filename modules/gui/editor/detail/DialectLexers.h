@@ -14,6 +14,13 @@
 
 namespace camwb::gui {
 
+// The character classes every lexer here reads by (NC and CL text is ASCII; other bytes are none).
+namespace lexchar {
+inline bool isDigit(char c) { return c >= '0' && c <= '9'; }
+inline bool isLetter(char c) { return (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z') || c == '_'; }
+inline char upper(char c) { return (c >= 'a' && c <= 'z') ? char(c - 'a' + 'A') : c; }
+}  // namespace lexchar
+
 // Sinumerik 828D/840D: ';' comments, "strings", N/: block numbers, R parameters, $ variables,
 // keywords and cycles (CYCLE81, POCKET3, MCALL), letter [=] value address words.
 void lexSinumerik(const char* text, int length, char* styles);

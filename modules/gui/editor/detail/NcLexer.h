@@ -1,7 +1,7 @@
 // Syntax highlighting and folding of NC programs for the NC editor, one lexer for the three
-// dialects and the CL files the editor opens (APT, FreeCAD dump, trace; these do not fold). Private to gui/editor (it
-// includes QScintilla). Styles only the ranges Scintilla asks for, with one SETSTYLINGEX call per range, so large
-// programs stay fast.
+// dialects and the CL files the editor opens (APT, FreeCAD dump, trace; these do not fold).
+// Private to gui/editor (it includes QScintilla). Styles only the ranges Scintilla asks for, with
+// one SETSTYLINGEX call per range, so large programs stay fast.
 #pragma once
 
 #include "gui/editor/NcStyles.h"

@@ -117,6 +117,8 @@ void applyRecord(ModalState& state, const toolpath::Record& record)
                    [&](const toolpath::FeedModeChange& f) { state.feedMode = f.mode; },
                    [&](const toolpath::WorkOffset& w) { state.workOffset = w.index; },
                    [&](const toolpath::CutterComp& c) { state.compensation = c.side; },
+                   // Until the moves give every axis again (the interpreters' moves give all the known ones).
+                   [&](const toolpath::UnknownAxes&) { state.hasPosition = false; },
                    [](const auto&) {},
                },
                record);
@@ -154,6 +156,13 @@ std::string describeRecord(const toolpath::Record& record)
             [](const toolpath::ProgramStop& p) -> std::string { return p.optional ? "optional stop" : "program stop"; },
             [](const toolpath::WorkingPlane& p) -> std::string {
                 return p.tilted() ? "working plane tilted" : "working plane reset";
+            },
+            [](const toolpath::UnknownAxes& u) -> std::string {
+                std::string axes;
+                for (int axis = 0; axis < 3; ++axis)
+                    if (u.axes.has(axis))
+                        axes += std::string(axes.empty() ? "" : " ") + static_cast<char>('X' + axis);
+                return "not traced: " + axes + " unknown";
             },
             [](const auto&) -> std::string { return {}; },
         },

@@ -44,6 +44,7 @@ public:
     void programStop(const toolpath::ProgramStop& r) override { add(r); }
     void passThrough(const toolpath::PassThrough& r) override { add(r); }
     void workingPlane(const toolpath::WorkingPlane& r) override { add(r); }
+    void unknownAxes(const toolpath::UnknownAxes& r) override { add(r); }
 
     bool cancelled() const { return m_cancelled; }
 
@@ -192,7 +193,8 @@ LineState NcTrace::lineState(int line) const
         const bool motion =
             std::holds_alternative<toolpath::Rapid>(record) || std::holds_alternative<toolpath::Linear>(record) ||
             std::holds_alternative<toolpath::Arc>(record) || std::holds_alternative<toolpath::Cycle>(record) ||
-            std::holds_alternative<toolpath::ToolAxisMove>(record);
+            std::holds_alternative<toolpath::ToolAxisMove>(record) ||
+            std::holds_alternative<toolpath::UnknownAxes>(record);
         if (motion) {
             state.move = what;
             break;

@@ -280,6 +280,14 @@ void LimitCheck::passThrough(const PassThrough& r)
     ForwardingSink::passThrough(r);
 }
 
+// Where the tool went is not known, so it reaches nothing; an arc from there counts by its end.
+void LimitCheck::unknownAxes(const UnknownAxes& r)
+{
+    nextRecord();
+    m_position.forget(r.axes);
+    ForwardingSink::unknownAxes(r);
+}
+
 // A point in the current working plane's frame: in the machine's linear axes through the pose
 // that tilts the tool along the plane's axis (the machine's preferred one: a post may take the
 // other branch, whose spans differ), the workpiece frame where that is not known. A move that

@@ -62,6 +62,7 @@ public:
     void programStop(const toolpath::ProgramStop& r) override;
     void passThrough(const toolpath::PassThrough& r) override;
     void workingPlane(const toolpath::WorkingPlane& r) override;
+    void unknownAxes(const toolpath::UnknownAxes& r) override;
 
 private:
     struct Reach {  // the lowest and highest value met on one axis, and where

@@ -86,6 +86,7 @@ public:
     void programStop(const toolpath::ProgramStop& r) override { forward<&MachineSink::programStop>(r); }
     void passThrough(const toolpath::PassThrough& r) override { forward<&MachineSink::passThrough>(r); }
     void workingPlane(const toolpath::WorkingPlane& r) override { forward<&MachineSink::workingPlane>(r); }
+    void unknownAxes(const toolpath::UnknownAxes& r) override { forward<&MachineSink::unknownAxes>(r); }
 
 private:
     enum class State { Off, Starting, On };

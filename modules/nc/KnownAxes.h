@@ -40,6 +40,14 @@ public:
     void give(toolpath::AxisMask axes) { m_known.bits |= axes.bits; }
     void forget() { m_known = kNoAxes; }
     void forget(toolpath::AxisMask axes) { m_known.bits &= static_cast<unsigned char>(~axes.bits); }
+    // Forgets `axes` for a move to where the program does not say, and returns those of them that
+    // were known: the axes the sink must hear of (toolpath::UnknownAxes) so that it forgets them too.
+    [[nodiscard]] toolpath::AxisMask lose(toolpath::AxisMask axes)
+    {
+        const toolpath::AxisMask lost{static_cast<unsigned char>(m_known.bits & axes.bits)};
+        forget(axes);
+        return lost;
+    }
 
     // The first axis a block cannot do without (0 X, 1 Y, 2 Z), or -1: one of `before` unknown
     // now, or one of `after` neither known now nor given in absolute terms by the block (`given`).

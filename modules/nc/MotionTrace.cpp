@@ -105,6 +105,25 @@ public:
             m_out += '"';
         }
     }
+    // Axis names: text "x y z", JSON "axes":["x","y","z"].
+    void axisNames(AxisMask axes)
+    {
+        key("", "axes");
+        if (!m_text)
+            m_out += '[';
+        bool first = true;
+        for (int axis = 0; axis < 3; ++axis) {
+            if (!axes.has(axis))
+                continue;
+            if (!first)
+                m_out += m_text ? std::string_view(" ") : std::string_view(",");
+            first = false;
+            const char name[] = {'"', static_cast<char>('x' + axis), '"'};
+            m_out += m_text ? std::string_view(name + 1, 1) : std::string_view(name, 3);
+        }
+        if (!m_text)
+            m_out += ']';
+    }
     void boolean(std::string_view jsonKey, bool value)  // JSON only
     {
         if (!m_text) {
@@ -395,6 +414,14 @@ private:
         // Coordinates after it are in the new frame: the moves' masks say which are known there.
         m_state.position.forget();
     }
+    // The tool went somewhere the program does not say: the moves after it show the known axes only.
+    void visit(const UnknownAxes& r)
+    {
+        begin("unknown");
+        m_w.axisNames(r.axes);
+        m_w.end();
+        m_state.position.forget(r.axes);
+    }
     void visit(const ToolChange& r) { m_state.tool = r.tool.number; }
     void visit(const Spindle& r)
     {
@@ -491,6 +518,7 @@ void MotionTraceWriter::sectionEnd(const SectionEnd& r) { m_impl->record(r); }
 void MotionTraceWriter::programStop(const ProgramStop& r) { m_impl->record(r); }
 void MotionTraceWriter::passThrough(const PassThrough& r) { m_impl->record(r); }
 void MotionTraceWriter::workingPlane(const WorkingPlane& r) { m_impl->record(r); }
+void MotionTraceWriter::unknownAxes(const UnknownAxes& r) { m_impl->record(r); }
 
 bool MotionTraceWriter::finish(const std::vector<std::string>& files)
 {

@@ -57,6 +57,7 @@ public:
     void programStop(const toolpath::ProgramStop&) override;
     void passThrough(const toolpath::PassThrough&) override;
     void workingPlane(const toolpath::WorkingPlane&) override;
+    void unknownAxes(const toolpath::UnknownAxes&) override;
 
     // Traces what was kept with the run's files and hands over the rest of the text; false when a
     // write failed at any time.

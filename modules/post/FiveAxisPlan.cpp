@@ -327,6 +327,8 @@ base::Result<FiveAxisPlan> planFiveAxis(const toolpath::Toolpath& toolpath, cons
         if (const auto* tool = std::get_if<toolpath::ToolChange>(&record)) {
             toolLength = tool->tool.lengthMm;
             position.forget();
+        } else if (const auto* unknown = std::get_if<toolpath::UnknownAxes>(&record)) {
+            position.forget(unknown->axes);
         } else if (const auto* rapid = std::get_if<toolpath::Rapid>(&record)) {
             position.moveTo(*rapid);
             if (auto status = known(); !status)

@@ -76,6 +76,8 @@ ProgramSummary summarizeProgram(const Toolpath& toolpath)
             }
             if (!c->holes.empty())
                 position.set({c->holes.back().x, c->holes.back().y, cycleReturnZ(*c)});
+        } else if (const auto* unknown = std::get_if<UnknownAxes>(&record)) {
+            position.forget(unknown->axes);
         } else if (const auto* plane = std::get_if<WorkingPlane>(&record)) {
             const std::optional<Vec3> at = position.point();
             position = KnownPosition{};

@@ -144,6 +144,17 @@ public:
     }
     void programStop(const ProgramStop& r) override { handle(Handler::Stop, {r.optional}); }
     void passThrough(const PassThrough& r) override { handle(Handler::PassThrough, {qs(r.text)}); }
+    // Read back from NC (an untraced M140 MB MAX, G53 or SUPA move): no post can write a move to a
+    // place the CL does not give, and leaving it out would run the next moves from the wrong place.
+    void unknownAxes(const UnknownAxes& r) override
+    {
+        std::string axes;
+        for (int axis = 0; axis < 3; ++axis)
+            if (r.axes.has(axis))
+                axes += std::string(axes.empty() ? "" : " ") + static_cast<char>('X' + axis);
+        m_run.fail("the CL moves " + axes + " to a place it does not give (a retract or a machine-coordinate " +
+                   "move read back from NC): post " + m_run.m_postId + " cannot write that move");
+    }
     void workingPlane(const WorkingPlane& r) override
     {
         if (!m_run.has(Handler::WorkingPlane)) {

@@ -66,6 +66,9 @@ public:
     void sectionEnd(const toolpath::SectionEnd&) override { closeSection(); }
     void programStop(const toolpath::ProgramStop&) override { pause(MoveKind::Stop, 0); }
     void passThrough(const toolpath::PassThrough&) override {}
+    // Nothing is cut or timed from an unknown place: the next move whose start is known again
+    // (counted in movesFromUnknownPosition otherwise) goes on.
+    void unknownAxes(const toolpath::UnknownAxes& u) override { m_local.forget(u.axes); }
     void workingPlane(const toolpath::WorkingPlane& plane) override
     {
         if (const auto p = m_local.point())

@@ -113,6 +113,8 @@ toolpath::Toolpath inTurningPlane(const toolpath::Toolpath& program)
             onPlane(r->to, r->axes);
         else if (auto* l = std::get_if<toolpath::Linear>(&out.record(i)))
             onPlane(l->to, l->axes);
+        else if (auto* u = std::get_if<toolpath::UnknownAxes>(&out.record(i)))
+            u->axes.bits &= static_cast<unsigned char>(~toolpath::AxisMask::kY);  // Y stays 0 wherever X and Z went
     }
     return out;
 }

@@ -271,10 +271,17 @@ struct SectionBegin {
     std::vector<std::pair<std::string, double>> strategyParameters;
 };
 struct SectionEnd {};
+// The tool went somewhere on these axes that the program does not say: a retract to the end of the
+// travel (M140 MB MAX) or a move in machine coordinates (G53, SUPA) that no machine file places in
+// the workpiece frame. The axes are unknown until a move gives them again; nobody may draw, cut,
+// check or post from their old values.
+struct UnknownAxes {
+    AxisMask axes;
+};
 
-using Record =
-    std::variant<Rapid, Linear, Arc, ToolChange, Spindle, Coolant, FeedModeChange, WorkOffset, Dwell, Cycle,
-                 ToolAxisMove, CutterComp, Comment, SectionBegin, SectionEnd, ProgramStop, PassThrough, WorkingPlane>;
+using Record = std::variant<Rapid, Linear, Arc, ToolChange, Spindle, Coolant, FeedModeChange, WorkOffset, Dwell, Cycle,
+                            ToolAxisMove, CutterComp, Comment, SectionBegin, SectionEnd, ProgramStop, PassThrough,
+                            WorkingPlane, UnknownAxes>;
 
 // The feed kind of a Linear or Arc; Unspecified for any other record.
 inline FeedKind feedKindOf(const Record& record)

@@ -28,6 +28,7 @@ public:
     void programStop(const ProgramStop&) override {}
     void passThrough(const PassThrough&) override {}
     void workingPlane(const WorkingPlane&) override {}
+    void unknownAxes(const UnknownAxes&) override {}
 };
 
 class ForwardingSink : public MachineSink {
@@ -56,6 +57,7 @@ public:
     void programStop(const ProgramStop& r) override { m_next.programStop(r); }
     void passThrough(const PassThrough& r) override { m_next.passThrough(r); }
     void workingPlane(const WorkingPlane& r) override { m_next.workingPlane(r); }
+    void unknownAxes(const UnknownAxes& r) override { m_next.unknownAxes(r); }
 
 protected:
     MachineSink& next() { return m_next; }

@@ -36,6 +36,7 @@ public:
     void moveTo(const Linear& l) { moveTo(l.to, l.axes); }
     void set(const Vec3& point) { *this = KnownPosition(point); }
     void forget() { *this = KnownPosition(); }
+    void forget(AxisMask axes) { m_known.bits &= static_cast<unsigned char>(~axes.bits); }
 
     AxisMask known() const { return m_known; }
     bool known(int axis) const { return m_known.has(axis); }

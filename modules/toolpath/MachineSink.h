@@ -33,6 +33,7 @@ public:
     virtual void programStop(const ProgramStop&) = 0;
     virtual void passThrough(const PassThrough&) = 0;
     virtual void workingPlane(const WorkingPlane&) = 0;
+    virtual void unknownAxes(const UnknownAxes&) = 0;
 
     // Called before each record with its source, for sinks that link output back to operations.
     virtual void setSource(const SourceRef&) {}

@@ -55,6 +55,8 @@ public:
                     toolChange(rec.tool.number);
                 else if constexpr (std::is_same_v<T, WorkingPlane>)
                     workingPlane(rec);
+                else if constexpr (std::is_same_v<T, UnknownAxes>)
+                    unknownAxes(rec.axes);
             },
             r);
     }
@@ -128,6 +130,15 @@ private:
             m_position = plane.toLocal(m_plane.toWorkpiece(*m_position));
         m_partial = {};
         m_plane = plane;
+    }
+
+    // No length is counted to or from a place the program does not give.
+    void unknownAxes(AxisMask axes)
+    {
+        if (m_position)
+            m_partial.set(*m_position);
+        m_partial.forget(axes);
+        m_position.reset();
     }
 
     void rapid(const Vec3& to)

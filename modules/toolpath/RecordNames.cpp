@@ -97,9 +97,9 @@ std::optional<FeedKind> feedKindNamed(std::string_view word)
 const char* recordName(const Record& record)
 {
     static constexpr const char* names[] = {
-        "Rapid",          "Linear",       "Arc",        "ToolChange",  "Spindle",      "Coolant",
-        "FeedModeChange", "WorkOffset",   "Dwell",      "Cycle",       "ToolAxisMove", "CutterComp",
-        "Comment",        "SectionBegin", "SectionEnd", "ProgramStop", "PassThrough",  "WorkingPlane"};
+        "Rapid",      "Linear",      "Arc",         "ToolChange",   "Spindle",    "Coolant", "FeedModeChange",
+        "WorkOffset", "Dwell",       "Cycle",       "ToolAxisMove", "CutterComp", "Comment", "SectionBegin",
+        "SectionEnd", "ProgramStop", "PassThrough", "WorkingPlane", "UnknownAxes"};
     static_assert(std::size(names) == std::variant_size_v<Record>, "a name for every CL record");
     return names[record.index()];
 }

@@ -113,6 +113,8 @@ void dispatch(const Record& record, MachineSink& sink)
                 sink.passThrough(r);
             else if constexpr (std::is_same_v<T, WorkingPlane>)
                 sink.workingPlane(r);
+            else if constexpr (std::is_same_v<T, UnknownAxes>)
+                sink.unknownAxes(r);
             else
                 static_assert(sizeof(T) == 0, "every CL record needs a sink method");
         },

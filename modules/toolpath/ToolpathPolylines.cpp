@@ -77,6 +77,17 @@ void ToolpathPolylines::workingPlane(const WorkingPlane& plane)
     m_tilted = plane.tilted();
 }
 
+// The tool went somewhere the program does not say: nothing is drawn from the old place; the path
+// goes on from where the moves make every axis known again.
+void ToolpathPolylines::unknownAxes(const UnknownAxes& u)
+{
+    if (m_hasPosition)
+        m_partial.set(m_position);
+    m_partial.forget(u.axes);
+    m_hasPosition = false;
+    m_positionStored = false;
+}
+
 void ToolpathPolylines::setStartPosition(const Vec3& position)
 {
     m_position = position;

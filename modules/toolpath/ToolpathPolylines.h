@@ -88,6 +88,7 @@ public:
     void programStop(const ProgramStop&) override {}
     void passThrough(const PassThrough&) override {}
     void workingPlane(const WorkingPlane&) override;
+    void unknownAxes(const UnknownAxes&) override;
 
 private:
     void lineTo(const base::Vec3& to, PathSegmentKind kind);

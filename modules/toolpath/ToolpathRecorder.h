@@ -29,6 +29,7 @@ public:
     void programStop(const ProgramStop& r) override { m_path.add(r, m_source); }
     void passThrough(const PassThrough& r) override { m_path.add(r, m_source); }
     void workingPlane(const WorkingPlane& r) override { m_path.add(r, m_source); }
+    void unknownAxes(const UnknownAxes& r) override { m_path.add(r, m_source); }
 
     const Toolpath& toolpath() const { return m_path; }
     Toolpath take() { return std::move(m_path); }

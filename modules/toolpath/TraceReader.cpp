@@ -104,28 +104,27 @@ public:
     // A straight move's target: "x y z", or the axes it gives by name in order ("z 20", "x 1 y 2").
     Vec3 target(AxisMask& axes)
     {
-        const Token* t = m_index < m_tokens.size() ? &m_tokens[m_index] : nullptr;
-        const bool named = t && !t->quoted && t->text.size() == 1 && t->text[0] >= 'x' && t->text[0] <= 'z';
-        if (!named) {
-            axes = AxisMask{};
-            return point();
-        }
         Vec3 to;
         axes = AxisMask{0};
-        while (!failed() && m_index < m_tokens.size()) {
-            const Token& axisToken = m_tokens[m_index];
-            if (axisToken.quoted || axisToken.text.size() != 1 || axisToken.text[0] < 'x' || axisToken.text[0] > 'z')
-                break;
-            const int axis = axisToken.text[0] - 'x';
-            if (axes.bits >> axis) {  // this axis or a later one already given
-                fail("axis '" + axisToken.text + "' out of order or given twice (x, y, z)", axisToken.column);
-                break;
-            }
-            ++m_index;
+        for (int axis; (axis = nextAxis(axes)) >= 0;) {
             axes.bits = static_cast<unsigned char>(axes.bits | 1 << axis);
             setAxisValue(to, axis, number());
         }
+        if (axes.none() && !failed()) {
+            axes = AxisMask{};
+            return point();
+        }
         return to;
+    }
+    // Axis names in order, at least one ("z", "x y z"): the axes of an "unknown" record.
+    AxisMask axisNames()
+    {
+        AxisMask axes{0};
+        for (int axis; (axis = nextAxis(axes)) >= 0;)
+            axes.bits = static_cast<unsigned char>(axes.bits | 1 << axis);
+        if (axes.none() && !failed())
+            fail("expected the axes made unknown (x, y, z)", atEnd() ? m_endColumn : m_tokens[m_index].column);
+        return axes;
     }
     std::string text()
     {
@@ -182,6 +181,23 @@ public:
     }
 
 private:
+    // The next token as an axis name after those in `seen`, consumed; -1 (nothing consumed) when it
+    // is no axis name.
+    int nextAxis(AxisMask seen)
+    {
+        if (failed() || atEnd())
+            return -1;
+        const Token& t = m_tokens[m_index];
+        if (t.quoted || t.text.size() != 1 || t.text[0] < 'x' || t.text[0] > 'z')
+            return -1;
+        const int axis = t.text[0] - 'x';
+        if (seen.bits >> axis) {  // this axis or a later one already given
+            fail("axis '" + t.text + "' out of order or given twice (x, y, z)", t.column);
+            return -1;
+        }
+        ++m_index;
+        return axis;
+    }
     const Token* next(const std::string& what)
     {
         if (failed())
@@ -413,6 +429,8 @@ base::Result<ClImport> readTrace(base::LineReader& lines, const std::string& fil
                 return base::makeError("plane: the x and z axes must be unit vectors at right angles", fileName,
                                        lineNumber, kindColumn);
             record = p;
+        } else if (kind == "unknown") {
+            record = UnknownAxes{in.axisNames()};
         } else if (!in.failed()) {
             return base::makeError("unknown trace record '" + kind + "'", fileName, lineNumber, kindColumn);
         }

@@ -30,6 +30,7 @@ public:
     void programStop(const ProgramStop&) override;
     void passThrough(const PassThrough&) override;
     void workingPlane(const WorkingPlane&) override;
+    void unknownAxes(const UnknownAxes&) override;
 
 private:
     std::string& m_out;

@@ -68,6 +68,7 @@ public:
     void programStop(const ProgramStop&) override { ++records; }
     void passThrough(const PassThrough&) override { ++records; }
     void workingPlane(const WorkingPlane&) override { ++records; }
+    void unknownAxes(const UnknownAxes&) override { ++records; }
 };
 
 nc::InterpretOptions optionsFor(NcProgram kind)

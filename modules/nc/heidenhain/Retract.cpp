@@ -58,14 +58,16 @@ void Machine::retract(const Block& b, std::optional<double> distance, const std:
     }
     // Up the tool axis to somewhere unknown: Z (with the rotary axes turned, X Y Z) unknown until
     // given again.
-    const bool knewSome = turned ? m_known.mask().bits != 0 : m_known.mask().has(2);
-    m_known.forget(turned ? AxisMask{} : axisBit(2));
-    if (knewSome)
+    const AxisMask lost = m_known.lose(turned ? AxisMask{} : axisBit(2));
+    if (!lost.none()) {
+        source(b);
+        m_sink.unknownAxes(UnknownAxes{lost});
         warnOnce(
             kWarnM140, b,
             what + " MAX: the retract to the travel limit is not traced" + (why.empty() ? "" : " (" + why + ")") +
                 "; " +
                 (turned ? "X, Y and Z are unknown until a block gives them" : "Z is unknown until a block gives it"));
+    }
 }
 
 // With the rotary axes turned: back along the tool axis by `distanceMm`, the machine's axes moving

@@ -415,12 +415,15 @@ bool Machine::checkKnown(const Program& p, const BlockWords& w, AxisMask& given)
 // turned direction), until a block gives them again; nothing is drawn meanwhile.
 bool Machine::moveInMachineCoordinates(const Program& p, const BlockWords& w)
 {
-    AxisMask moved;
+    AxisMask moved{0};
     for (int i = 0; i < 3; ++i)
         if (w.axis[static_cast<std::size_t>(i)])
             moved.bits |= axisBit(i).bits;
     const bool turned = m_five.active() && m_five.fiveAxisMove();
-    m_known.forget(turned ? AxisMask{AxisMask::kAll} : moved);
+    if (const AxisMask lost = m_known.lose(turned ? AxisMask{AxisMask::kAll} : moved); !lost.none()) {
+        setSource(w.line);
+        m_sink.unknownAxes(UnknownAxes{lost});
+    }
     if (turned)
         m_five.moveUntraced();
     if (!m_warnedMachineCoordinates) {

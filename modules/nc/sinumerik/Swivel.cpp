@@ -121,8 +121,11 @@ void Machine::swivel(const Program& p, const Block& b, const Word& word)
         plane = compose(m_plane, plane);  // additive: on top of the plane in force
     else if (st % 10 != 0)
         warning(p, word.pos, "CYCLE800 _ST " + std::to_string(st) + ": taken as a new swivel plane");
-    if (arg(0) > 0)
-        m_known.forget();  // _FR: retracted to the machine's retract position, which the trace does not know
+    // _FR: retracted to the machine's retract position, which the trace does not know.
+    if (const AxisMask lost = arg(0) > 0 ? m_known.lose(AxisMask{}) : kNoAxes; !lost.none()) {
+        setSource(b.line);
+        m_sink.unknownAxes(UnknownAxes{lost});
+    }
     setPlane(b.line, plane);
     const int dir = static_cast<int>(arg(13));
     if (dir == 0 || !m_five.active())

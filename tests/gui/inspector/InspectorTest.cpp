@@ -194,6 +194,33 @@ private slots:
         QVERIFY(rig.panel.value(QStringLiteral("before")).startsWith(QLatin1String("unknown")));
     }
 
+    // An untraced retract (M140 MB MAX, no machine to say where Z's travel ends): the panel says Z
+    // is unknown from that block on, and nothing is drawn from the old depth until Z is given again.
+    void anUntracedRetractLeavesZUnknown()
+    {
+        Rig rig;
+        rig.inspector.setFilePath(QStringLiteral("retract.h"));
+        LOAD_OR_FAIL(rig, QStringLiteral("0 BEGIN PGM R MM\n"              // 1
+                                         "1 TOOL CALL 1 Z S3000\n"         // 2
+                                         "2 L X+10 Y+10 Z+5 R0 FMAX M3\n"  // 3: only positions
+                                         "3 L Z-5 F200\n"                  // 4
+                                         "4 M140 MB MAX\n"                 // 5
+                                         "5 L X+90 Y+90 FMAX\n"            // 6: Z unknown
+                                         "6 L Z+5 FMAX\n"                  // 7: known again
+                                         "7 L Z-5 F200\n"                  // 8
+                                         "8 END PGM R MM\n"));
+        rig.editor.gotoLine(5);
+        QCOMPARE(rig.panel.value(QStringLiteral("move")), QStringLiteral("not traced: Z unknown"));
+        QCOMPARE(rig.panel.value(QStringLiteral("before")), QStringLiteral("X10.000 Y10.000 Z-5.000"));
+        QVERIFY(rig.panel.value(QStringLiteral("after")).startsWith(QLatin1String("unknown")));
+        rig.editor.gotoLine(6);
+        QVERIFY(rig.panel.value(QStringLiteral("after")).startsWith(QLatin1String("unknown")));
+        rig.editor.gotoLine(7);
+        QCOMPARE(rig.panel.value(QStringLiteral("after")), QStringLiteral("X90.000 Y90.000 Z5.000"));
+        const std::vector<int> lines = rig.segmentLines();
+        QCOMPARE(std::set<int>(lines.begin(), lines.end()), (std::set<int>{4, 8}));
+    }
+
     void editsRetraceAfterTheDebounce()
     {
         Rig rig;

@@ -144,6 +144,27 @@ TEST(LimitCheck, ArcsCountWithTheirExtremes)
                   "warning: the program spans 120 mm in Y (-40 to 80); the Mill travels 80 mm (CL record 3)"});
 }
 
+// After a move to where the program does not say (an untraced M140 MB MAX or SUPA), the same arc
+// has no known start: it spans nothing from the old place, only its end counts.
+TEST(LimitCheck, AnArcFromUnknownAxesCountsByItsEnd)
+{
+    const Machine machine = smallMill();
+    ToolpathRecorder recorder;
+    LimitCheck check(machine, recorder);
+    check.rapid(Rapid{{-40, 0, -5}});
+    check.rapid(Rapid{{-40, 80, -5}});
+    check.rapid(Rapid{{-40, 0, -5}});
+    check.unknownAxes(UnknownAxes{AxisMask{AxisMask::kX | AxisMask::kY}});
+    Arc half;
+    half.to = {40, 0, -5};
+    half.center = {0, 0, -5};
+    half.feedMmPerMin = 500;
+    check.arc(half);
+    EXPECT_TRUE(check.findings().empty()) << check.findings()[0].message;
+    ASSERT_EQ(recorder.toolpath().size(), 5u);  // passed on
+    EXPECT_TRUE(std::holds_alternative<UnknownAxes>(recorder.toolpath().record(3)));
+}
+
 TEST(LimitCheck, ProgramWithinLimitsIsQuiet)
 {
     const Machine machine = smallMill();

@@ -155,6 +155,20 @@ TEST(UnknownAxes, ArcsAndCyclesNeedAKnownStart)
         << failure(slip).toString();
 }
 
+// A CL read back from NC whose tool went where the program does not say (an untraced M140 MB MAX
+// or SUPA): no post can write that move, and leaving it out would run the next moves from Z -5.
+TEST(UnknownAxes, AMoveToAnUnknownPlaceFailsThePostAtItsRecord)
+{
+    Toolpath path;
+    path.add(Rapid{{10, 10, 5}});
+    path.add(Linear{{10, 10, -5}, 100});
+    path.add(UnknownAxes{kZ}, SourceRef{-1, -1, 7, 0});
+    path.add(Rapid{{90, 90, 0}, kXY});
+    const base::Error error = failure(path);
+    EXPECT_NE(error.message.find("the CL moves Z to a place it does not give"), std::string::npos) << error.toString();
+    EXPECT_NE(error.message.find("post templates cannot write that move"), std::string::npos) << error.toString();
+}
+
 TEST(UnknownAxes, ExtentsHoldOnlyTheAxesTheMovesGave)
 {
     Toolpath path;

@@ -62,6 +62,25 @@ TEST(SimMoves, AMoveFromAnUnknownPositionMakesNoMotion)
     EXPECT_EQ(list.movesFromUnknownPosition, 1u);
 }
 
+// An untraced retract (M140 MB MAX read without a machine) leaves Z unknown: the move across is
+// not made at the old depth, and the simulation goes on from the first move whose start is known.
+TEST(SimMoves, AfterUnknownAxesNoMoveStartsFromTheirOldValues)
+{
+    Toolpath p;
+    p.add(Rapid{{10, 10, 20}});
+    p.add(Linear{{10, 10, -5}, 100});
+    p.add(UnknownAxes{AxisMask{AxisMask::kZ}});
+    p.add(Rapid{{90, 90, 0}, AxisMask{AxisMask::kX | AxisMask::kY}});
+    p.add(Rapid{{0, 0, 5}, AxisMask{AxisMask::kZ}});
+    p.add(Linear{{90, 90, -5}, 100});
+    const sim::MoveList list = sim::buildMoves(p);
+    ASSERT_EQ(list.moves.size(), 2u);  // the two plunges
+    EXPECT_EQ(list.moves[0].to, (Vec3{10, 10, -5}));
+    EXPECT_EQ(list.moves[1].from, (Vec3{90, 90, 5}));
+    EXPECT_EQ(list.moves[1].record, 5u);
+    EXPECT_EQ(list.movesFromUnknownPosition, 2u);  // the first move and the one down to Z 5
+}
+
 TEST(SimMoves, ArcsAreSplitWithinTheChordTolerance)
 {
     Toolpath p;

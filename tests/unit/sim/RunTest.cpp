@@ -146,6 +146,21 @@ TEST(SimRun, ARapidThroughTheStockIsAnErrorAtItsRecord)
     EXPECT_GT(rapids[0].removedMm3, 60 * 10 * 5 * 0.9);
 }
 
+// The same move across after an untraced retract (Z unknown) is no rapid through the stock: the
+// tool was last seen at Z 15, but it went up to where the program does not say.
+TEST(SimRun, NoRapidIsCutFromAnUnknownHeight)
+{
+    sim::HeightField stock({{0, 0, 0}, {60, 40, 20}, false}, 0.2);
+    Toolpath p = start(flat10());
+    p.add(Rapid{{-10, 20, 15}});
+    p.add(UnknownAxes{AxisMask{AxisMask::kZ}});
+    p.add(Rapid{{70, 20, 0}, AxisMask{AxisMask::kX | AxisMask::kY}});
+    p.add(Rapid{{0, 0, 30}, AxisMask{AxisMask::kZ}});
+    const sim::SimulationResult r = run(p, stock);
+    EXPECT_TRUE(of(r, CheckKind::RapidInStock).empty());
+    EXPECT_EQ(r.removedMm3, 0);
+}
+
 TEST(SimRun, AHolderTooShortForADeepPocketHitsTheStock)
 {
     sim::HeightField stock({{0, 0, 0}, {60, 60, 40}, false}, 0.2);

@@ -39,6 +39,7 @@ public:
     void programStop(const ProgramStop&) override { calls.push_back("programStop"); }
     void passThrough(const PassThrough&) override { calls.push_back("passThrough"); }
     void workingPlane(const WorkingPlane&) override { calls.push_back("workingPlane"); }
+    void unknownAxes(const UnknownAxes&) override { calls.push_back("unknownAxes"); }
 };
 
 }  // namespace
@@ -129,14 +130,15 @@ TEST(Toolpath, PlayDispatchesEveryKindInOrder)
     add(ProgramStop{});
     add(PassThrough{});
     add(WorkingPlane{});
+    add(UnknownAxes{});
     add(SectionEnd{});
 
     RecordingSink sink;
     play(tp, sink);
-    const std::vector<std::string> expected{"begin",       "sectionBegin", "toolChange",   "spindle",      "coolant",
-                                            "feedMode",    "workOffset",   "cutterComp",   "rapid",        "linear",
-                                            "arc",         "dwell",        "cycle",        "toolAxisMove", "comment",
-                                            "programStop", "passThrough",  "workingPlane", "sectionEnd",   "end"};
+    const std::vector<std::string> expected{
+        "begin",      "sectionBegin", "toolChange",  "spindle",      "coolant",     "feedMode",   "workOffset",
+        "cutterComp", "rapid",        "linear",      "arc",          "dwell",       "cycle",      "toolAxisMove",
+        "comment",    "programStop",  "passThrough", "workingPlane", "unknownAxes", "sectionEnd", "end"};
     EXPECT_EQ(sink.calls, expected);
     ASSERT_EQ(sink.sources.size(), tp.size());
     for (std::size_t k = 0; k < sink.sources.size(); ++k) {

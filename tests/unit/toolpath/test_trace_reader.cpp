@@ -47,6 +47,8 @@ Toolpath everyRecord()
         WorkingPlane{{10, 0, 5}, {0.8, 0, -0.6}, {0.6, 0, 0.8}},  // 3+2, then back
         Linear{{1, 1, 0}, 200},
         WorkingPlane{},
+        UnknownAxes{AxisMask{AxisMask::kZ}},  // an untraced retract, a move in machine coordinates
+        UnknownAxes{},
     };
     for (const Record& record : records)
         t.add(record);
@@ -166,6 +168,23 @@ TEST(TraceReader, MovesThatGiveOnlySomeAxesNameThem)
     EXPECT_EQ(failure("rapid x 1 x 2\n").toString(), "in.trace:1:11: axis 'x' out of order or given twice (x, y, z)");
     EXPECT_EQ(failure("rapid x\n").toString(), "in.trace:1:8: expected a number at the end of the line");
     EXPECT_EQ(failure("linear x 1 q 2 f 10\n").toString(), "in.trace:1:12: expected 'f', found 'q'");
+}
+
+// An untraced move (M140 MB MAX, SUPA) makes axes unknown: "unknown" and their names, in order.
+TEST(TraceReader, UnknownAxesAreNamed)
+{
+    auto read = readTrace("rapid 1 2 3\nunknown z\nrapid x 5 y 6\nunknown x y z\n", "t");
+    ASSERT_TRUE(read.ok()) << read.error().toString();
+    ASSERT_EQ(read->toolpath.size(), 4u);
+    EXPECT_EQ(std::get<UnknownAxes>(read->toolpath.record(1)).axes, AxisMask{AxisMask::kZ});
+    EXPECT_TRUE(std::get<UnknownAxes>(read->toolpath.record(3)).axes.all());
+    EXPECT_EQ(traceOf(read->toolpath),
+              "rapid 1.0000 2.0000 3.0000\nunknown z\nrapid x 5.0000 y 6.0000\nunknown x y z\n");
+
+    EXPECT_EQ(failure("unknown\n").toString(), "in.trace:1:8: expected the axes made unknown (x, y, z)");
+    EXPECT_EQ(failure("unknown 3\n").toString(), "in.trace:1:9: expected the axes made unknown (x, y, z)");
+    EXPECT_EQ(failure("unknown z x\n").toString(), "in.trace:1:11: axis 'x' out of order or given twice (x, y, z)");
+    EXPECT_EQ(failure("unknown z 5\n").toString(), "in.trace:1:11: unexpected '5' at the end of the line");
 }
 
 // A tool's flutes and point angle and a section's other feeds are fields a trace must keep: a

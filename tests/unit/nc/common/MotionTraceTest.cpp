@@ -80,6 +80,29 @@ TEST(MotionTrace, MovesWhileAnAxisIsUnknownNameTheKnownAxes)
                                                "20.0000],\"spindle\":0.0000,\"spindleCw\":true,\"tool\":0}");
 }
 
+// An untraced move (M140 MB MAX, SUPA) is an entry of its own; the moves after it name the known
+// axes until every one is given again, instead of carrying the old value on.
+TEST(MotionTrace, UnknownAxesAreAnEntryAndTheOldValuesAreNotShownAgain)
+{
+    Toolpath p;
+    p.add(Rapid{{10, 10, 5}}, at(2));
+    p.add(UnknownAxes{AxisMask{AxisMask::kZ}}, at(3));
+    p.add(Rapid{{90, 90, 0}, AxisMask{AxisMask::kX | AxisMask::kY}}, at(4));
+    p.add(UnknownAxes{}, at(5));
+    p.add(Rapid{{1, 2, 3}}, at(6));
+    EXPECT_EQ(motionTrace(p, {"a.h"}, TraceFormat::Text), "2 rapid 10.0000 10.0000 5.0000 s 0.0000 t 0\n"
+                                                          "3 unknown z\n"
+                                                          "4 rapid x 90.0000 y 90.0000 s 0.0000 t 0\n"
+                                                          "5 unknown x y z\n"
+                                                          "6 rapid 1.0000 2.0000 3.0000 s 0.0000 t 0\n");
+    const std::string json = motionTrace(p, {"a.h"}, TraceFormat::Jsonl);
+    EXPECT_NE(json.find("{\"file\":\"a.h\",\"line\":3,\"kind\":\"unknown\",\"axes\":[\"z\"]}\n"
+                        "{\"file\":\"a.h\",\"line\":4,\"kind\":\"rapid\",\"to\":[90.0000,90.0000,null]"),
+              std::string::npos)
+        << json;
+    EXPECT_NE(json.find("\"kind\":\"unknown\",\"axes\":[\"x\",\"y\",\"z\"]}"), std::string::npos) << json;
+}
+
 TEST(MotionTrace, FiveAxisMovesCarryTheToolVectorAndTheKnownRotaryAxes)
 {
     Toolpath p;

@@ -55,7 +55,8 @@ TEST(HeidenhainRetract, ThreeAxisMbMaxGoesToTheTopOfTheZTravel)
     expectNear(rapids[1].to, {10, 20, 660});  // Z 0..660, the workpiece zero at the machine's
     EXPECT_TRUE(rapids[1].axes.all());
     expectNear(rapids[2].to, {30, 20, 660});
-    expectNear(rapids[3].to, {30, 20, 650});  // MB with a distance as before
+    expectNear(rapids[3].to, {30, 20, 650});    // MB with a distance as before
+    EXPECT_TRUE(r.all<UnknownAxes>().empty());  // traced: nothing unknown
     EXPECT_EQ(r.lines<Rapid>()[1], 4);
 
     // The chain's workpiece zero 100 mm up the machine's Z: the travel ends 560 mm above it.
@@ -132,6 +133,12 @@ TEST(HeidenhainRetract, WithoutAMachineNothingIsInventedAndTheAxisIsUnknown)
     const auto rapids = r.all<Rapid>();
     ASSERT_EQ(rapids.size(), 2u);
     EXPECT_EQ(rapids[1].axes.bits, AxisMask::kX | AxisMask::kY);
+    // The sinks hear that Z went somewhere unknown, at the retract's block: the next move is not
+    // drawn or cut from Z 50.
+    ASSERT_EQ(r.all<UnknownAxes>().size(), 1u);
+    EXPECT_EQ(r.all<UnknownAxes>()[0].axes.bits, AxisMask::kZ);
+    EXPECT_EQ(r.lines<UnknownAxes>(), std::vector<int>{4});
+    EXPECT_NE(r.trace().find("4 unknown z\n5 rapid x 30.0000 y 20.0000 "), std::string::npos) << r.trace();
 
     // A machine file without a kinematic chain does not place the workpiece in its travel either.
     kinematics::Machine threeAxis = mcvl1000();
@@ -146,6 +153,7 @@ TEST(HeidenhainRetract, WithoutAMachineNothingIsInventedAndTheAxisIsUnknown)
     const Traced unknown = runOn(&m, "2 PLANE SPATIAL SPA+0 SPB+30 SPC+0 TURN MB MAX FMAX SEQ-\n", false);
     EXPECT_TRUE(unknown.result.diagnostics.empty()) << unknown.diagnostics()[0];
     EXPECT_TRUE(unknown.all<Rapid>().empty());
+    EXPECT_TRUE(unknown.all<UnknownAxes>().empty());
 }
 
 // Where the machine cannot say where the travel ends, the retract is not traced and says why.

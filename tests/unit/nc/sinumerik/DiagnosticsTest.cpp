@@ -79,6 +79,11 @@ TEST(SinumerikDiagnostics, SupaLeavesTheAxesItMovesUnknown)
     ASSERT_EQ(rapids.size(), 2u);
     EXPECT_EQ(rapids[1].to.x, 20);
     EXPECT_FALSE(rapids[1].axes.has(2)) << "Z after SUPA is not known";
+    EXPECT_EQ(rapids[1].axes.bits, toolpath::AxisMask::kX | toolpath::AxisMask::kY) << "SUPA gave Z alone";
+    // The sinks forget Z too, at the SUPA block, so nothing is drawn or cut from Z 5.
+    ASSERT_EQ(r.all<toolpath::UnknownAxes>().size(), 1u);
+    EXPECT_EQ(r.all<toolpath::UnknownAxes>()[0].axes.bits, toolpath::AxisMask::kZ);
+    EXPECT_NE(r.trace().find("2 unknown z\n3 rapid x 20.0000 y 10.0000 "), std::string::npos) << r.trace();
     ASSERT_EQ(r.all<toolpath::Linear>().size(), 1u);
     EXPECT_EQ(r.all<toolpath::Linear>()[0].to.z, -1);
 }

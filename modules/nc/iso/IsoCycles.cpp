@@ -3,7 +3,8 @@
 // repeats (moving by X/Y each time under G91), R measured from the start Z and Z from R under
 // G91. A record's hole is (X, Y, R): LinuxCNC measures pecks from the R plane, so the R plane is
 // the top; clearance is the Z before the cycle's first hole, and G98 returns to the higher of it
-// and R, as cycleReturnZ() does. Also G28/G30 through their stored positions.
+// and R, as cycleReturnZ() does. Also G28/G30: the intermediate point, then the stored position in
+// machine coordinates, which leaves the axes it moves unknown.
 #include "nc/iso/IsoMachine.h"
 #include "toolpath/CycleExpansion.h"
 
@@ -143,31 +144,23 @@ void Machine::referenceReturn(const Block& block, int code)
     checkAxes(block);
     const bool any = block.has('X') || block.has('Y') || block.has('Z');
     AxisMask given;
-    if (!checkKnown(block, 0, false, given))
+    if (!checkKnown(block, 0, given))
         return;
     if (any) {
-        const Vec3 via = target(block, false);
+        const Vec3 via = target(block);
         m_state.known.give(given);
         source();
         m_sink.rapid(Rapid{via, m_state.known.mask()});
         m_state.position = via;
     }
-    const int base = code == 280 ? 5161 : 5181;
-    Vec3 home = m_state.position;
-    if (!any || block.has('X'))
-        home.x = m_parameters.numbered(base) * m_state.unit;
-    if (!any || block.has('Y'))
-        home.y = m_parameters.numbered(base + 1) * m_state.unit;
-    if (!any || block.has('Z'))
-        home.z = m_parameters.numbered(base + 2) * m_state.unit;
+    // The stored position (#5161.. or #5181..) is in machine coordinates, like G53's: where it lies
+    // in the work offset's frame is the control's knowledge, so the axes going there become unknown.
     m_reporter.warning(m_line, 0,
                        std::string(code == 280 ? "G28" : "G30") + " goes to the stored position #" +
-                           std::to_string(base) + ".. taken as work coordinates");
-    // The stored position is modelled (as work coordinates): the axes it sets are known.
-    m_state.known.give(any ? axisWords(block) : AxisMask{});
-    source();
-    m_sink.rapid(Rapid{home, m_state.known.mask()});
-    m_state.position = home;
+                           std::to_string(code == 280 ? 5161 : 5181) +
+                           ".. in machine coordinates: not traced; the axes it moves are unknown until a block "
+                           "gives them");
+    loseAxes(any ? axisWords(block) : AxisMask{});
     m_state.cycleSequence = false;
 }
 

@@ -9,7 +9,9 @@
 // - Other controls' programs read with warnings, not errors: G70/G71 as inch/mm, G0/G1 kept
 //   through G80 (Fanuc), O program numbers, "..." elisions, unknown G/M codes, A/B/C/U/V/W and
 //   M128 (five-axis: traced once the machine model exists).
-// - G53, G28/G30, G10/G92 and G96 are accepted with a warning and do not move the trace.
+// - G53 and G28/G30 (after G28's intermediate point) go to machine coordinates the trace cannot
+//   place: the axes they move become unknown (an UnknownAxes record), with a warning. G10/G92 and
+//   G96 are accepted with a warning and do not move the trace.
 // - Cutter compensation as LinuxCNC 2.9's interpreter makes it (interp_convert.cc,
 //   convert_straight_comp1/2 and convert_arc_comp1/2, checked against rs274 in tests/external):
 //   the radius of G41/G42 D<tool> from the tool table (without D: the tool in the spindle), of

@@ -493,18 +493,16 @@ bool Machine::applyMotion(const Block& block, const Groups& groups)
                                        " as Fanuc-style controls do (LinuxCNC wants the G word again)");
             }
         }
-        if (g[0] == 530 && !m_warnedG53) {
-            m_warnedG53 = true;
-            m_reporter.warning(m_line, groups.gColumn[0],
-                               "G53 machine coordinates are traced as work coordinates (no machine offsets known)");
-        }
-        motion(block, mode, g[0] == 530);
+        if (g[0] == 530)
+            moveInMachineCoordinates(block, groups.gColumn[0]);
+        else
+            motion(block, mode);
     } else if (g[1] != -1 && g[1] != 0 && g[1] != 10 && g[1] != 20 && g[1] != 30 && g[1] != 800 && !axesTaken) {
         m_reporter.error(m_line, groups.gColumn[1], gName(g[1]) + " without X, Y or Z: no hole to drill");
         return false;
     } else if ((m_state.motion == 20 || m_state.motion == 30) && !axesTaken &&
                (block.has('I') || block.has('J') || block.has('K') || block.has('R'))) {
-        motion(block, m_state.motion, false);  // a full circle needs no axis word
+        motion(block, m_state.motion);  // a full circle needs no axis word
     }
     return true;
 }

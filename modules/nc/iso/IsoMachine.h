@@ -115,13 +115,15 @@ private:
     void source() { m_sink.setSource(toolpath::SourceRef{-1, -1, m_line, m_file}); }
     void setSpindle(double rpm, int direction);
     void setCoolant(bool mist, bool flood);
-    void motion(const Block& block, int mode, bool machineCoordinates);
+    void motion(const Block& block, int mode);
+    void moveInMachineCoordinates(const Block& block, int column);
+    void loseAxes(toolpath::AxisMask axes);
     bool executeMotionOnly(const Block& block);
-    toolpath::Vec3 target(const Block& block, bool machineCoordinates) const;
+    toolpath::Vec3 target(const Block& block) const;
     void checkAxes(const Block& block);
     bool needKnown(const Block& block, toolpath::AxisMask before, toolpath::AxisMask after, toolpath::AxisMask given,
                    const char* need);
-    bool checkKnown(const Block& block, int mode, bool machineCoordinates, toolpath::AxisMask& given);
+    bool checkKnown(const Block& block, int mode, toolpath::AxisMask& given);
 
     // IsoArcs.cpp
     void arc(const Block& block, bool clockwise, const toolpath::Vec3& to);

@@ -21,10 +21,10 @@ AxisMask axisWords(const Block& block)
                                                (block.has('Z') ? AxisMask::kZ : 0))};
 }
 
-Vec3 Machine::target(const Block& block, bool machineCoordinates) const
+Vec3 Machine::target(const Block& block) const
 {
     Vec3 to = m_state.position;
-    const bool absolute = m_state.absolute || machineCoordinates;
+    const bool absolute = m_state.absolute;
     const double unit = m_state.unit;
     if (block.has('X'))
         to.x = absolute ? block.get('X') * unit : to.x + block.get('X') * unit;
@@ -61,10 +61,10 @@ bool Machine::needKnown(const Block& block, AxisMask before, AxisMask after, Axi
 
 // The axes of a block that may move: an incremental word on an unknown axis, an arc, a cycle or
 // compensation from an unknown start are errors; a move gives the axes written in absolute terms.
-bool Machine::checkKnown(const Block& block, int mode, bool machineCoordinates, AxisMask& given)
+bool Machine::checkKnown(const Block& block, int mode, AxisMask& given)
 {
     const AxisMask words = axisWords(block);
-    const bool absolute = m_state.absolute || machineCoordinates;
+    const bool absolute = m_state.absolute;
     given = absolute ? words : kNoAxes;
     if (!absolute && !needKnown(block, words, kNoAxes, kNoAxes, "an incremental move"))
         return false;
@@ -107,20 +107,20 @@ bool Machine::executeMotionOnly(const Block& block)
     if (g != -1)
         m_state.motion = m_state.lastMotion = g;
     if (moves)
-        motion(block, mode, false);
+        motion(block, mode);
     return true;
 }
 
-void Machine::motion(const Block& block, int mode, bool machineCoordinates)
+void Machine::motion(const Block& block, int mode)
 {
     checkAxes(block);
     constexpr std::uint32_t kXyz = (1u << ('X' - 'A')) | (1u << ('Y' - 'A')) | (1u << ('Z' - 'A'));
     if ((mode == 0 || mode == 10) && !(block.present & kXyz))
         return;  // rotary or UVW words only: nothing moves in the three-axis trace
     AxisMask given;
-    if (!checkKnown(block, mode, machineCoordinates, given))
+    if (!checkKnown(block, mode, given))
         return;
-    const Vec3 to = target(block, machineCoordinates);
+    const Vec3 to = target(block);
     if (!(std::abs(to.x) < kTravelLimitMm && std::abs(to.y) < kTravelLimitMm && std::abs(to.z) < kTravelLimitMm)) {
         m_reporter.error(m_line, 0, "target out of range (more than 1000 m from the origin)");
         return;
@@ -153,6 +153,32 @@ void Machine::motion(const Block& block, int mode, bool machineCoordinates)
         }
         cycle(block, mode);
         return;
+    }
+}
+
+// G53 X.. Y.. Z..: machine coordinates, whose place in the work offset's frame the trace does not
+// know (the offsets are the control's: LinuxCNC's var file, a Fanuc's offset page). The axes the
+// block gives are unknown after it until a block gives them again; nothing is drawn meanwhile, as
+// SINUMERIK's SUPA is read. A machine's top of Z taken as work Z0 would draw a rapid into the part.
+void Machine::moveInMachineCoordinates(const Block& block, int column)
+{
+    checkAxes(block);
+    m_state.cycleSequence = false;
+    if (!m_warnedG53) {
+        m_warnedG53 = true;
+        m_reporter.warning(m_line, column,
+                           "G53: a move in machine coordinates is not traced (the work offset is the control's); "
+                           "the axes it gives are unknown until a block gives them");
+    }
+    loseAxes(axisWords(block));
+}
+
+// Axes gone where the program does not say: the sink forgets the ones it knew.
+void Machine::loseAxes(AxisMask axes)
+{
+    if (const AxisMask lost = m_state.known.lose(axes); !lost.none()) {
+        source();
+        m_sink.unknownAxes(UnknownAxes{lost});
     }
 }
 

@@ -123,12 +123,22 @@ TEST(IsoMotion, AxisWordsNeedAMotionMode)
     EXPECT_EQ(r.all<Rapid>()[1].to.x, 3);
 }
 
-TEST(IsoMotion, MachineCoordinatesWarnOnce)
+// G53 Z0 is the top of the machine's Z travel, not work Z0: the trace cannot place it, so the axes
+// it gives are unknown (and said so to the sinks) until a block gives them; the warning comes once.
+TEST(IsoMotion, MachineCoordinatesLeaveTheirAxesUnknown)
 {
-    const IsoRun r = run("G0 X5\nG91 G53 X1\nG53 Z0\nM2\n");
-    EXPECT_EQ(r.diagnostics(), "2:5: warning: G53 machine coordinates are traced as work coordinates (no machine "
-                               "offsets known)\n");
-    EXPECT_EQ(r.all<Rapid>()[1].to.x, 1);  // G53 is absolute, even under G91
+    const IsoRun r = run("G0 X5 Y6 Z7\nG91 G53 X1\nG53 Z0\nG90 G0 Y8\nG0 X2 Z3\nM2\n");
+    EXPECT_EQ(r.diagnostics(), "2:5: warning: G53: a move in machine coordinates is not traced (the work offset is "
+                               "the control's); the axes it gives are unknown until a block gives them\n");
+    const auto rapids = r.all<Rapid>();
+    ASSERT_EQ(rapids.size(), 3u);
+    EXPECT_EQ(rapids[1].axes, AxisMask{AxisMask::kY});  // not moved from X5 Z7, where the tool is not
+    EXPECT_TRUE(rapids[2].axes.all());
+    EXPECT_EQ(rapids[2].to, (Vec3{2, 8, 3}));
+    const auto unknown = r.all<UnknownAxes>();
+    ASSERT_EQ(unknown.size(), 2u);
+    EXPECT_EQ(unknown[0].axes, AxisMask{AxisMask::kX});
+    EXPECT_EQ(unknown[1].axes, AxisMask{AxisMask::kZ});
 }
 
 TEST(IsoMotion, ZeroFeedIsAnError)
@@ -145,13 +155,24 @@ TEST(IsoMotion, RotaryAxesWarnAndDoNotMove)
     EXPECT_EQ(r.result.diagnostics[0].severity, Severity::Warning);
 }
 
-TEST(IsoMotion, ReferenceReturnThroughStoredPosition)
+// G28 Z20: up to the intermediate point in work coordinates, then to the stored position, which is
+// in machine coordinates (#5163 = 3 is machine Z3, not work Z3): Z unknown after it, X and Y kept.
+// Without axis words every axis goes home.
+TEST(IsoMotion, ReferenceReturnGoesThroughItsPointToAnUnknownHome)
 {
-    const IsoRun r = run("#5161=1 #5162=2 #5163=3\nG0 X10 Y10 Z10\nG28 Z20\nM2\n");
+    const IsoRun r = run("#5161=1 #5162=2 #5163=3\nG0 X10 Y10 Z10\nG28 Z20\nG0 X4\nG30\nM2\n");
     const auto moves = r.all<Rapid>();
     ASSERT_EQ(moves.size(), 3u);
     EXPECT_EQ(moves[1].to, (Vec3{10, 10, 20}));
-    EXPECT_EQ(moves[2].to, (Vec3{10, 10, 3}));
+    EXPECT_EQ(moves[2].axes, (AxisMask{AxisMask::kX | AxisMask::kY}));
+    const auto unknown = r.all<UnknownAxes>();
+    ASSERT_EQ(unknown.size(), 2u);
+    EXPECT_EQ(unknown[0].axes, AxisMask{AxisMask::kZ});
+    EXPECT_EQ(unknown[1].axes, (AxisMask{AxisMask::kX | AxisMask::kY}));  // Z was unknown already
+    EXPECT_NE(r.diagnostics().find("3:0: warning: G28 goes to the stored position #5161.. in machine coordinates: "
+                                   "not traced; the axes it moves are unknown until a block gives them"),
+              std::string::npos)
+        << r.diagnostics();
 }
 
 }  // namespace

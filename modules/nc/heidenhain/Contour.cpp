@@ -155,6 +155,10 @@ bool Machine::applyMotion(const Block& b, const BlockWords& w)
 {
     if (b.kind == BlockKind::MOnly || b.kind == BlockKind::Stop)
         return false;
+    if (b.kind == BlockKind::Line && inMachineCoordinates(w)) {
+        moveInMachineCoordinates(b, w);
+        return false;
+    }
     const bool rapid = w.feed == BlockWords::FeedWord::Max;
     bool moved = false;
     AxisMask given;

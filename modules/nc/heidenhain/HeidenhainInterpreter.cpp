@@ -26,7 +26,8 @@
 // - A positive depth Q201 warns and is traced below the surface; a decimal comma warns.
 // - Inch programs read F in 1/10 inch/min, as the TNC does.
 // - "..." elisions warn and make the position unknown (no radius check on the next circle).
-// - M91/M92 positions are taken as workpiece coordinates. M140 MB MAX and PLANE ... MB MAX retract
+// - M91/M92 positions (machine coordinates) are not traced: the axes they give become unknown, as
+//   after G53 or SUPA (Retract.cpp). M140 MB MAX and PLANE ... MB MAX retract
 //   up the tool axis to the end of the first linear axis' travel when the machine's kinematic
 //   chain places the workpiece in its axes; otherwise they are not traced and leave the axes they
 //   move unknown (Retract.cpp).

@@ -203,6 +203,8 @@ private:
     void updateToolLength();
 
     // Retract.cpp: M140 MB and PLANE ... MB, by a distance (program units) or, nullopt, MB MAX.
+    static bool inMachineCoordinates(const BlockWords& w);  // M91 or M92 in the block
+    void moveInMachineCoordinates(const Block& b, const BlockWords& w);
     void retract(const Block& b, std::optional<double> distance, const std::string& what);
     void retractAlongToolAxis(double distanceMm);
 

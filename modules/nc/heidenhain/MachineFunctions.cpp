@@ -240,10 +240,6 @@ void Machine::applySpindleAndCoolant(const Block& b, const BlockWords& w)
                          "positions are traced as three-axis moves");
             }
             break;
-        case 91:
-        case 92:
-            warnOnce(kWarnM91, b, "M91/M92 (machine coordinates): traced as workpiece coordinates (no machine model)");
-            break;
         default:
             break;
         }

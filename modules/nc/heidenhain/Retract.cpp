@@ -1,4 +1,5 @@
-// Retracts along the tool axis: M140 MB, and the MB of a PLANE block before the rotary axes turn
+// Moves the trace cannot place: M91/M92 positions in machine coordinates, and retracts along the
+// tool axis: M140 MB, and the MB of a PLANE block before the rotary axes turn
 // (iTNC 530 User's Manual, "Retraction from the contour in the tool-axis direction: M140" and the
 // PLANE function's automatic positioning). MB with a distance moves that far; MB MAX moves to the
 // end of the traverse range, where the first linear axis reaches its travel limit. Only a machine
@@ -67,6 +68,39 @@ void Machine::retract(const Block& b, std::optional<double> distance, const std:
             what + " MAX: the retract to the travel limit is not traced" + (why.empty() ? "" : " (" + why + ")") +
                 "; " +
                 (turned ? "X, Y and Z are unknown until a block gives them" : "Z is unknown until a block gives it"));
+    }
+}
+
+bool Machine::inMachineCoordinates(const BlockWords& w)
+{
+    for (int i = 0; i < w.mCount; ++i)
+        if (w.m[static_cast<std::size_t>(i)] == 91 || w.m[static_cast<std::size_t>(i)] == 92)
+            return true;
+    return false;
+}
+
+// L ... M91 (from the machine datum) or M92 (from a position the machine maker sets): where those
+// lie in the workpiece frame is the control's knowledge (its preset table), so the linear axes the
+// block gives become unknown until a block gives them again, and rotary words leave the rotary
+// axes unknown. "L Z+0 R0 FMAX M91" (the top of Z) traced as workpiece Z0 would run the next rapid
+// through the part.
+void Machine::moveInMachineCoordinates(const Block& b, const BlockWords& w)
+{
+    AxisMask axes{0};
+    for (int i = 0; i < 3; ++i)
+        if (w.axes[static_cast<std::size_t>(i)] || w.axes[static_cast<std::size_t>(i + 9)])  // X or IX, ...
+            axes.bits |= axisBit(i).bits;
+    const bool turned = m_five.active() && m_five.fiveAxisMove();
+    if (turned && !axes.none())
+        axes = AxisMask{};  // a machine axis then moves the tip along a turned direction
+    if (w.rotary)
+        m_five.setAngles(JointAngles{});
+    warnOnce(kWarnM91, b,
+             "M91/M92: a move in machine coordinates is not traced (the datums are the control's); the axes it "
+             "gives are unknown until a block gives them");
+    if (const AxisMask lost = m_known.lose(axes); !lost.none()) {
+        source(b);
+        m_sink.unknownAxes(UnknownAxes{lost});
     }
 }
 

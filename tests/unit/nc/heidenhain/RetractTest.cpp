@@ -156,6 +156,24 @@ TEST(HeidenhainRetract, WithoutAMachineNothingIsInventedAndTheAxisIsUnknown)
     EXPECT_TRUE(unknown.all<UnknownAxes>().empty());
 }
 
+// M91/M92 positions are in machine coordinates: "L Z+0 R0 FMAX M91" is the top of Z, not workpiece
+// Z0, so Z becomes unknown (said to the sinks) until a block gives it; X and Y stay.
+TEST(HeidenhainRetract, MachineCoordinatesLeaveTheirAxesUnknown)
+{
+    const Traced r = runOn(nullptr, "2 L X+10 Y+20 Z-5 R0 FMAX\n3 L Z+0 R0 FMAX M91\n4 L X+30 FMAX\n"
+                                    "5 L Z+5 FMAX\n6 L Y+0 R0 FMAX M92\n");
+    EXPECT_TRUE(r.has(Severity::Warning, 4, "M91/M92: a move in machine coordinates is not traced"));
+    const auto rapids = r.all<Rapid>();
+    ASSERT_EQ(rapids.size(), 3u);
+    EXPECT_EQ(rapids[1].axes.bits, AxisMask::kX | AxisMask::kY);  // not at Z0 nor at Z-5
+    EXPECT_TRUE(rapids[2].axes.all());
+    expectNear(rapids[2].to, {30, 20, 5});
+    ASSERT_EQ(r.all<UnknownAxes>().size(), 2u);
+    EXPECT_EQ(r.all<UnknownAxes>()[0].axes.bits, AxisMask::kZ);
+    EXPECT_EQ(r.all<UnknownAxes>()[1].axes.bits, AxisMask::kY);
+    EXPECT_EQ(r.lines<UnknownAxes>(), (std::vector<int>{4, 7}));
+}
+
 // Where the machine cannot say where the travel ends, the retract is not traced and says why.
 TEST(HeidenhainRetract, AnUntracedRetractSaysWhy)
 {

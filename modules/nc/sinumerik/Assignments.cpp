@@ -107,10 +107,12 @@ bool Parser::parseAssignment(Block& block, const Token& t, const std::string& u)
         addWord(block, WordKind::Assign, pos) = w;
         return true;
     }
+    if (u == "X1" || u == "Y1" || u == "Z1")
+        return parseAddressValue(block, WordKind::MachineAxis, static_cast<std::uint8_t>(u[0] - 'X'), t, false);
     if (u == "A3" || u == "B3" || u == "C3")
         return parseAddressValue(block, WordKind::ToolVector, static_cast<std::uint8_t>(u[0] - 'A'), t, false);
     if (isPassiveKeyword(u) || u == "A2" || u == "B2" || u == "C2" || u == "LEAD" || u == "TILT" || u == "THETA" ||
-        u == "SF" || u == "OVR") {
+        u == "SF" || u == "OVR" || u == "FP") {
         const std::int32_t e = parseExpr();
         if (e < 0)
             return false;

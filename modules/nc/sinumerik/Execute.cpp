@@ -436,9 +436,42 @@ bool Machine::moveInMachineCoordinates(const Program& p, const BlockWords& w)
     return false;
 }
 
+// G74 X1=0 Z1=0 (reference point) and G75 FP=n X1=0 ... (fixed point n, e.g. the tool change
+// position): the machine axes named go to places in machine coordinates the trace cannot place in
+// the work offset's frame, so those axes are unknown after the block until a block gives them, as
+// after SUPA. A machine axis word without G74/G75 moves an axis the trace has no frame for.
+bool Machine::approachFixedPoint(const Program& p, const BlockWords& w)
+{
+    if (!w.approach) {
+        error(p, w.machineAxisPos, "machine axes (X1=, Y1=, Z1=) are read with G74 or G75 only");
+        return false;
+    }
+    if (w.machineAxes.none()) {
+        error(p, {w.line, 0}, "G" + std::to_string(w.approach) + " names no machine axis (X1=0, Y1=0, Z1=0)");
+        return false;
+    }
+    const bool turned = m_five.active() && m_five.fiveAxisMove();
+    if (const AxisMask lost = m_known.lose(turned ? AxisMask{AxisMask::kAll} : w.machineAxes); !lost.none()) {
+        setSource(w.line);
+        m_sink.unknownAxes(UnknownAxes{lost});
+    }
+    if (turned)
+        m_five.moveUntraced();
+    if (!m_warnedApproach) {
+        m_warnedApproach = true;
+        warning(p, {w.line, 0},
+                std::string(w.approach == 74 ? "G74 (reference point approach)" : "G75 (fixed point approach)") +
+                    " is not traced (the point is the machine's); the axes it moves are unknown until a block "
+                    "gives them");
+    }
+    return false;
+}
+
 bool Machine::applyMotion(const Program& p, const BlockWords& w)
 {
     const int line = w.line;
+    if (w.approach || !w.machineAxes.none())
+        return approachFixedPoint(p, w);
     if (w.motion >= 0 && !w.dwell)
         m_modal.motion = w.motion;
     const bool anyLinearAxis = w.axis[0] || w.axis[1] || w.axis[2];

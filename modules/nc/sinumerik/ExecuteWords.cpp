@@ -49,6 +49,8 @@ void Machine::readG(const Program& p, const Word& word, BlockWords& w)
         w.css = g == 96 || g == 961 ? 1 : 0;
     else if (g == 53 || g == 153)
         w.g53 = true;
+    else if (g == 74 || g == 75)
+        w.approach = g;
     else if (g == 450 || g == 451)
         w.corners = g;
     else if (!isPassiveG(g))
@@ -140,6 +142,10 @@ bool Machine::readWords(const Program& p, const Block& b, BlockWords& w)
         case WordKind::Axis:
             readPosition(p, word, w.axis[word.index], w.axisMode[word.index]);
             w.axisPos[word.index] = word.pos;
+            break;
+        case WordKind::MachineAxis:
+            w.machineAxes.bits |= axisBit(word.index).bits;
+            w.machineAxisPos = word.pos;
             break;
         case WordKind::ToolVector:
             if (const auto v = wordValue(p, word)) {

@@ -121,7 +121,10 @@ private:
         const Word* callWord = nullptr;                     // the block's cycle or subprogram call
         std::array<std::optional<double>, 3> toolVector{};  // A3 B3 C3
         Pos toolVectorPos;
-        int transform = -1;  // 1 TRAORI, 0 TRAFOOF
+        int transform = -1;                 // 1 TRAORI, 0 TRAFOOF
+        int approach = 0;                   // 74 G74 (reference point), 75 G75 (fixed point)
+        toolpath::AxisMask machineAxes{0};  // X1= Y1= Z1=
+        Pos machineAxisPos;
     };
     // Rotary.cpp: rotary words, TRAORI/TRAFOOF and A3/B3/C3 through the machine's kinematic chain.
     struct RotaryMove {
@@ -159,6 +162,7 @@ private:
     void applyDwell(const Program& p, const BlockWords& w);
     bool applyMotion(const Program& p, const BlockWords& w);
     bool moveInMachineCoordinates(const Program& p, const BlockWords& w);  // true: the tool moved
+    bool approachFixedPoint(const Program& p, const BlockWords& w);        // G74/G75
     void applyCalls(const Program& p, const Block& block, const BlockWords& w, bool moved);
     bool applyStop(const Program& p, const Block& block, const BlockWords& w);
     Vec3 blockTarget(const BlockWords& w) const;
@@ -229,6 +233,7 @@ private:
     std::optional<ModalCall> m_modalCall;
     bool m_fiveAxisWarned = false;
     bool m_warnedMachineCoordinates = false;  // G53/G153/SUPA warned once
+    bool m_warnedApproach = false;            // G74/G75 warned once
     FiveAxisState m_five;
     toolpath::WorkingPlane m_plane;  // CYCLE800's swivelled frame (default: none)
     int m_currentFile = 0;

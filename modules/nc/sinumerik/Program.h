@@ -92,14 +92,15 @@ enum class WordKind : std::uint8_t {
     Ar,
     Turn,
     Lims,
-    TName,       // T="name": text in the block's text
-    Assign,      // target: R (index, or indirect expr2), local slot (+ element expr2)
-    Keyword,     // code = Keyword enum value
-    Cycle,       // CYCLE8x(args): code = cycle number, args in the block's argument list
-    Call,        // subprogram by name (block name), args in the argument list
-    Msg,         // MSG("text") / MSG()
-    Passive,     // recognised, no effect on the trace (G64, SOFT, CYCLE832(...), ...)
-    ToolVector,  // A3= B3= C3= (index 0..2): the tool's direction under TRAORI
+    TName,        // T="name": text in the block's text
+    Assign,       // target: R (index, or indirect expr2), local slot (+ element expr2)
+    Keyword,      // code = Keyword enum value
+    Cycle,        // CYCLE8x(args): code = cycle number, args in the block's argument list
+    Call,         // subprogram by name (block name), args in the argument list
+    Msg,          // MSG("text") / MSG()
+    Passive,      // recognised, no effect on the trace (G64, SOFT, CYCLE832(...), ...)
+    ToolVector,   // A3= B3= C3= (index 0..2): the tool's direction under TRAORI
+    MachineAxis,  // X1= Y1= Z1= (index 0..2): a machine axis G74/G75 sends home (the value is ignored)
 };
 
 // X=AC(..) / X=IC(..); a rotary axis also B=DC(..) (the shorter way), ACP(..) / ACN(..) (turning in

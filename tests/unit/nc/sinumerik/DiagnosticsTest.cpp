@@ -88,6 +88,29 @@ TEST(SinumerikDiagnostics, SupaLeavesTheAxesItMovesUnknown)
     EXPECT_EQ(r.all<toolpath::Linear>()[0].to.z, -1);
 }
 
+// G75 FP=1 Z1=0 (to the tool change position) and G74 X1=0 Y1=0 (the reference point) send machine
+// axes to places the trace cannot place in the work offset's frame: those axes become unknown, as
+// after SUPA. Machine axis words without G74/G75, or G74/G75 without one, are errors at their block.
+TEST(SinumerikDiagnostics, ReferenceAndFixedPointApproachLeaveTheirAxesUnknown)
+{
+    const NcRun r = run("G0 X10 Y10 Z5\nG75 FP=1 Z1=0\nG0 X20\nG0 Z2\nG74 X1=0 Y1=0\nG0 Z3\nM30\n");
+    EXPECT_EQ(r.errors(), 0) << r.diagnostics();
+    expectAt(r, "G75 (fixed point approach) is not traced", 2, 0, Severity::Warning);
+    const auto unknown = r.all<toolpath::UnknownAxes>();
+    ASSERT_EQ(unknown.size(), 2u);
+    EXPECT_EQ(unknown[0].axes.bits, toolpath::AxisMask::kZ);
+    EXPECT_EQ(unknown[1].axes.bits, toolpath::AxisMask::kX | toolpath::AxisMask::kY);
+    const auto rapids = r.all<toolpath::Rapid>();
+    ASSERT_EQ(rapids.size(), 4u);
+    EXPECT_EQ(rapids[1].axes.bits, toolpath::AxisMask::kX | toolpath::AxisMask::kY);  // not at Z5
+    EXPECT_TRUE(rapids[2].axes.all());
+    EXPECT_EQ(rapids[3].axes.bits, toolpath::AxisMask::kZ);
+
+    const NcRun bad = run("G0 X1=5\nG74\nM30\n");
+    expectAt(bad, "machine axes (X1=, Y1=, Z1=) are read with G74 or G75 only", 1, 4, Severity::Error);
+    expectAt(bad, "G74 names no machine axis", 2, 0, Severity::Error);
+}
+
 TEST(SinumerikDiagnostics, DiagnosticsAreCapped)
 {
     InterpretOptions options;

@@ -2,6 +2,7 @@
 
 #include "toolpath/CycleExpansion.h"
 #include "toolpath/KnownPosition.h"
+#include "toolpath/RecordNames.h"
 #include "toolpath/Toolpath.h"
 
 #include <algorithm>
@@ -158,11 +159,7 @@ std::string describeRecord(const toolpath::Record& record)
                 return p.tilted() ? "working plane tilted" : "working plane reset";
             },
             [](const toolpath::UnknownAxes& u) -> std::string {
-                std::string axes;
-                for (int axis = 0; axis < 3; ++axis)
-                    if (u.axes.has(axis))
-                        axes += std::string(axes.empty() ? "" : " ") + static_cast<char>('X' + axis);
-                return "not traced: " + axes + " unknown";
+                return "not traced: " + toolpath::axisNames(u.axes, 'X') + " unknown";
             },
             [](const auto&) -> std::string { return {}; },
         },

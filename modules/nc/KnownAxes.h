@@ -5,7 +5,7 @@
 // an unknown axis's value (incremental word, arc start, cycle, compensation) is an error.
 #pragma once
 
-#include "toolpath/ClRecords.h"
+#include "toolpath/MachineSink.h"
 
 #include <string>
 #include <string_view>
@@ -40,12 +40,15 @@ public:
     void give(toolpath::AxisMask axes) { m_known.bits |= axes.bits; }
     void forget() { m_known = kNoAxes; }
     void forget(toolpath::AxisMask axes) { m_known.bits &= static_cast<unsigned char>(~axes.bits); }
-    // Forgets `axes` for a move to where the program does not say, and returns those of them that
-    // were known: the axes the sink must hear of (toolpath::UnknownAxes) so that it forgets them too.
-    [[nodiscard]] toolpath::AxisMask lose(toolpath::AxisMask axes)
+    // Forgets `axes` for a move to where the program does not say (G53, SUPA, M91, MB MAX): the
+    // sink hears of those that were known in an UnknownAxes record (after the caller has set the
+    // block's source), so that it forgets them too. Returns them.
+    toolpath::AxisMask lose(toolpath::AxisMask axes, toolpath::MachineSink& sink)
     {
         const toolpath::AxisMask lost{static_cast<unsigned char>(m_known.bits & axes.bits)};
         forget(axes);
+        if (!lost.none())
+            sink.unknownAxes(toolpath::UnknownAxes{lost});
         return lost;
     }
 

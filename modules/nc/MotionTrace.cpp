@@ -109,20 +109,22 @@ public:
     void axisNames(AxisMask axes)
     {
         key("", "axes");
-        if (!m_text)
-            m_out += '[';
+        if (m_text) {
+            m_out += toolpath::axisNames(axes);
+            return;
+        }
+        m_out += '[';
         bool first = true;
         for (int axis = 0; axis < 3; ++axis) {
             if (!axes.has(axis))
                 continue;
             if (!first)
-                m_out += m_text ? std::string_view(" ") : std::string_view(",");
+                m_out += ',';
             first = false;
             const char name[] = {'"', static_cast<char>('x' + axis), '"'};
-            m_out += m_text ? std::string_view(name + 1, 1) : std::string_view(name, 3);
+            m_out += std::string_view(name, 3);
         }
-        if (!m_text)
-            m_out += ']';
+        m_out += ']';
     }
     void boolean(std::string_view jsonKey, bool value)  // JSON only
     {

@@ -148,11 +148,8 @@ public:
     // place the CL does not give, and leaving it out would run the next moves from the wrong place.
     void unknownAxes(const UnknownAxes& r) override
     {
-        std::string axes;
-        for (int axis = 0; axis < 3; ++axis)
-            if (r.axes.has(axis))
-                axes += std::string(axes.empty() ? "" : " ") + static_cast<char>('X' + axis);
-        m_run.fail("the CL moves " + axes + " to a place it does not give (a retract or a machine-coordinate " +
+        m_run.fail("the CL moves " + toolpath::axisNames(r.axes, 'X') +
+                   " to a place it does not give (a retract or a machine-coordinate " +
                    "move read back from NC): post " + m_run.m_postId + " cannot write that move");
     }
     void workingPlane(const WorkingPlane& r) override

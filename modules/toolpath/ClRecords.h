@@ -272,9 +272,9 @@ struct SectionBegin {
 };
 struct SectionEnd {};
 // The tool went somewhere on these axes that the program does not say: a retract to the end of the
-// travel (M140 MB MAX) or a move in machine coordinates (G53, SUPA) that no machine file places in
-// the workpiece frame. The axes are unknown until a move gives them again; nobody may draw, cut,
-// check or post from their old values.
+// travel (M140 MB MAX) or a move in machine coordinates (G53, SUPA, M91/M92, G28, G74/G75) that no
+// machine file places in the workpiece frame. The axes are unknown until a move gives them again;
+// nobody may draw, cut, check or post from their old values.
 struct UnknownAxes {
     AxisMask axes;
 };

@@ -94,6 +94,19 @@ std::optional<FeedKind> feedKindNamed(std::string_view word)
     return std::nullopt;
 }
 
+std::string axisNames(AxisMask axes, char first)
+{
+    std::string out;
+    for (int axis = 0; axis < 3; ++axis) {
+        if (!axes.has(axis))
+            continue;
+        if (!out.empty())
+            out += ' ';
+        out += static_cast<char>(first + axis);
+    }
+    return out;
+}
+
 const char* recordName(const Record& record)
 {
     static constexpr const char* names[] = {

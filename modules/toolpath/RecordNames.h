@@ -5,6 +5,7 @@
 #include "toolpath/ClRecords.h"
 
 #include <optional>
+#include <string>
 #include <string_view>
 
 namespace camwb::toolpath {
@@ -17,5 +18,7 @@ const char* name(FeedKind kind);        // "cutting", "plunge", "entry", "exit",
 // The kind a name spells (one of name(FeedKind)'s, not the empty one); nullopt for any other word.
 std::optional<FeedKind> feedKindNamed(std::string_view word);
 const char* recordName(const Record& record);  // the record's type name: "Rapid", "Arc", ...
+// The axes of a mask by name, with blanks between: "x y z" ('x' first), "X Z" ('X' first).
+std::string axisNames(AxisMask axes, char first = 'x');
 
 }  // namespace camwb::toolpath

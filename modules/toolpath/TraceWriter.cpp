@@ -148,14 +148,7 @@ void TraceWriter::workingPlane(const WorkingPlane& r)
     m_out += "plane " + point(r.origin) + " x " + unitVector(r.xAxis) + " z " + unitVector(r.zAxis) + '\n';
 }
 
-void TraceWriter::unknownAxes(const UnknownAxes& r)
-{
-    m_out += "unknown";
-    for (int axis = 0; axis < 3; ++axis)
-        if (r.axes.has(axis))
-            m_out += std::string(" ") + static_cast<char>('x' + axis);
-    m_out += '\n';
-}
+void TraceWriter::unknownAxes(const UnknownAxes& r) { m_out += "unknown " + axisNames(r.axes) + '\n'; }
 
 std::string traceOf(const Toolpath& toolpath)
 {

@@ -59,10 +59,8 @@ void Machine::retract(const Block& b, std::optional<double> distance, const std:
     }
     // Up the tool axis to somewhere unknown: Z (with the rotary axes turned, X Y Z) unknown until
     // given again.
-    const AxisMask lost = m_known.lose(turned ? AxisMask{} : axisBit(2));
-    if (!lost.none()) {
-        source(b);
-        m_sink.unknownAxes(UnknownAxes{lost});
+    source(b);
+    if (!m_known.lose(turned ? AxisMask{} : axisBit(2), m_sink).none()) {
         warnOnce(
             kWarnM140, b,
             what + " MAX: the retract to the travel limit is not traced" + (why.empty() ? "" : " (" + why + ")") +
@@ -98,10 +96,8 @@ void Machine::moveInMachineCoordinates(const Block& b, const BlockWords& w)
     warnOnce(kWarnM91, b,
              "M91/M92: a move in machine coordinates is not traced (the datums are the control's); the axes it "
              "gives are unknown until a block gives them");
-    if (const AxisMask lost = m_known.lose(axes); !lost.none()) {
-        source(b);
-        m_sink.unknownAxes(UnknownAxes{lost});
-    }
+    source(b);
+    m_known.lose(axes, m_sink);
 }
 
 // With the rotary axes turned: back along the tool axis by `distanceMm`, the machine's axes moving

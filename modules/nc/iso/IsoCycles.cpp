@@ -160,7 +160,8 @@ void Machine::referenceReturn(const Block& block, int code)
                            std::to_string(code == 280 ? 5161 : 5181) +
                            ".. in machine coordinates: not traced; the axes it moves are unknown until a block "
                            "gives them");
-    loseAxes(any ? axisWords(block) : AxisMask{});
+    source();
+    m_state.known.lose(any ? axisWords(block) : AxisMask{}, m_sink);
     m_state.cycleSequence = false;
 }
 

@@ -117,7 +117,6 @@ private:
     void setCoolant(bool mist, bool flood);
     void motion(const Block& block, int mode);
     void moveInMachineCoordinates(const Block& block, int column);
-    void loseAxes(toolpath::AxisMask axes);
     bool executeMotionOnly(const Block& block);
     toolpath::Vec3 target(const Block& block) const;
     void checkAxes(const Block& block);

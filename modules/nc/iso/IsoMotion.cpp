@@ -170,16 +170,8 @@ void Machine::moveInMachineCoordinates(const Block& block, int column)
                            "G53: a move in machine coordinates is not traced (the work offset is the control's); "
                            "the axes it gives are unknown until a block gives them");
     }
-    loseAxes(axisWords(block));
-}
-
-// Axes gone where the program does not say: the sink forgets the ones it knew.
-void Machine::loseAxes(AxisMask axes)
-{
-    if (const AxisMask lost = m_state.known.lose(axes); !lost.none()) {
-        source();
-        m_sink.unknownAxes(UnknownAxes{lost});
-    }
+    source();
+    m_state.known.lose(axisWords(block), m_sink);
 }
 
 }  // namespace camwb::nc::iso

@@ -420,10 +420,8 @@ bool Machine::moveInMachineCoordinates(const Program& p, const BlockWords& w)
         if (w.axis[static_cast<std::size_t>(i)])
             moved.bits |= axisBit(i).bits;
     const bool turned = m_five.active() && m_five.fiveAxisMove();
-    if (const AxisMask lost = m_known.lose(turned ? AxisMask{AxisMask::kAll} : moved); !lost.none()) {
-        setSource(w.line);
-        m_sink.unknownAxes(UnknownAxes{lost});
-    }
+    setSource(w.line);
+    m_known.lose(turned ? AxisMask{AxisMask::kAll} : moved, m_sink);
     if (turned)
         m_five.moveUntraced();
     if (!m_warnedMachineCoordinates) {
@@ -451,10 +449,8 @@ bool Machine::approachFixedPoint(const Program& p, const BlockWords& w)
         return false;
     }
     const bool turned = m_five.active() && m_five.fiveAxisMove();
-    if (const AxisMask lost = m_known.lose(turned ? AxisMask{AxisMask::kAll} : w.machineAxes); !lost.none()) {
-        setSource(w.line);
-        m_sink.unknownAxes(UnknownAxes{lost});
-    }
+    setSource(w.line);
+    m_known.lose(turned ? AxisMask{AxisMask::kAll} : w.machineAxes, m_sink);
     if (turned)
         m_five.moveUntraced();
     if (!m_warnedApproach) {

@@ -122,9 +122,9 @@ void Machine::swivel(const Program& p, const Block& b, const Word& word)
     else if (st % 10 != 0)
         warning(p, word.pos, "CYCLE800 _ST " + std::to_string(st) + ": taken as a new swivel plane");
     // _FR: retracted to the machine's retract position, which the trace does not know.
-    if (const AxisMask lost = arg(0) > 0 ? m_known.lose(AxisMask{}) : kNoAxes; !lost.none()) {
+    if (arg(0) > 0) {
         setSource(b.line);
-        m_sink.unknownAxes(UnknownAxes{lost});
+        m_known.lose(AxisMask{}, m_sink);
     }
     setPlane(b.line, plane);
     const int dir = static_cast<int>(arg(13));

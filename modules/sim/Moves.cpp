@@ -66,9 +66,13 @@ public:
     void sectionEnd(const toolpath::SectionEnd&) override { closeSection(); }
     void programStop(const toolpath::ProgramStop&) override { pause(MoveKind::Stop, 0); }
     void passThrough(const toolpath::PassThrough&) override {}
-    // Nothing is cut or timed from an unknown place: the next move whose start is known again
-    // (counted in movesFromUnknownPosition otherwise) goes on.
-    void unknownAxes(const toolpath::UnknownAxes& u) override { m_local.forget(u.axes); }
+    // Nothing is cut or timed from an unknown place; the move that makes the position whole again
+    // is cut where it ends (straight()).
+    void unknownAxes(const toolpath::UnknownAxes& u) override
+    {
+        m_local.forget(u.axes);
+        m_lost = true;
+    }
     void workingPlane(const toolpath::WorkingPlane& plane) override
     {
         if (const auto p = m_local.point())
@@ -154,6 +158,12 @@ private:
             return;
         if (!from) {
             ++m_out.movesFromUnknownPosition;
+            // After an untraced move (an UnknownAxes record) the tool stands at `end` when this move
+            // ends, wherever it came from: that pose is a move of its own (from == to), so a rapid
+            // that ends in the stock is the crash it is. The way there is not known and not cut.
+            if (m_lost && !m_inError)
+                push(*end, *end, kind, feed, 1.0, false);
+            m_lost = false;
             return;
         }
         if (m_inError || base::distance(*from, *end) < 1e-12)
@@ -189,6 +199,7 @@ private:
     MoveList& m_out;
     const MoveOptions& m_options;
     KnownPosition m_local;  // in the working plane's frame
+    bool m_lost = false;    // axes were made unknown after the position was whole (UnknownAxes)
     toolpath::WorkingPlane m_plane;
     Vec3 m_axis{0, 0, 1};
     toolpath::RotaryAxes m_machine{};

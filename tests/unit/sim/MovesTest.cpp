@@ -74,10 +74,14 @@ TEST(SimMoves, AfterUnknownAxesNoMoveStartsFromTheirOldValues)
     p.add(Rapid{{0, 0, 5}, AxisMask{AxisMask::kZ}});
     p.add(Linear{{90, 90, -5}, 100});
     const sim::MoveList list = sim::buildMoves(p);
-    ASSERT_EQ(list.moves.size(), 2u);  // the two plunges
+    ASSERT_EQ(list.moves.size(), 3u);  // the two plunges, and the tool standing where Z is given again
     EXPECT_EQ(list.moves[0].to, (Vec3{10, 10, -5}));
+    EXPECT_EQ(list.moves[1].kind, MoveKind::Rapid);
     EXPECT_EQ(list.moves[1].from, (Vec3{90, 90, 5}));
-    EXPECT_EQ(list.moves[1].record, 5u);
+    EXPECT_EQ(list.moves[1].to, (Vec3{90, 90, 5}));
+    EXPECT_EQ(list.moves[1].record, 4u);
+    EXPECT_EQ(list.moves[2].from, (Vec3{90, 90, 5}));
+    EXPECT_EQ(list.moves[2].record, 5u);
     EXPECT_EQ(list.movesFromUnknownPosition, 2u);  // the first move and the one down to Z 5
 }
 

@@ -159,6 +159,17 @@ TEST(SimRun, NoRapidIsCutFromAnUnknownHeight)
     const sim::SimulationResult r = run(p, stock);
     EXPECT_TRUE(of(r, CheckKind::RapidInStock).empty());
     EXPECT_EQ(r.removedMm3, 0);
+
+    // But a rapid that ends in the stock is a crash wherever it came from: down to Z 15 there.
+    sim::HeightField again({{0, 0, 0}, {60, 40, 20}, false}, 0.2);
+    Toolpath crash = start(flat10());
+    crash.add(Rapid{{-10, 20, 30}});
+    crash.add(UnknownAxes{AxisMask{AxisMask::kZ}});
+    crash.add(Rapid{{30, 20, 0}, AxisMask{AxisMask::kX | AxisMask::kY}});
+    crash.add(Rapid{{0, 0, 15}, AxisMask{AxisMask::kZ}});  // record 6
+    const auto rapids = of(run(crash, again), CheckKind::RapidInStock);
+    ASSERT_EQ(rapids.size(), 1u);
+    EXPECT_EQ(rapids[0].record, 6);
 }
 
 TEST(SimRun, AHolderTooShortForADeepPocketHitsTheStock)

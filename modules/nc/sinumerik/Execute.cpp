@@ -409,6 +409,19 @@ bool Machine::checkKnown(const Program& p, const BlockWords& w, AxisMask& given)
            needKnown(p, w, kXyAxes, AxisMask{}, given, "cutter compensation", at);
 }
 
+// Machine axes moved to a place the trace cannot put in the work offset's frame: unknown from
+// here, all three with the rotary axes turned (a machine axis then moves the tip along a turned
+// direction). True: they were turned.
+bool Machine::loseMachineAxes(int line, AxisMask axes)
+{
+    const bool turned = m_five.active() && m_five.fiveAxisMove();
+    setSource(line);
+    m_known.lose(turned ? AxisMask{AxisMask::kAll} : axes, m_sink);
+    if (turned)
+        m_five.moveUntraced();
+    return turned;
+}
+
 // G53 / G153 / SUPA X.. Y.. Z..: machine coordinates, whose place in the work offset's frame the
 // trace does not know (the offsets are the control's). The axes the block gives are unknown after
 // it, and with the rotary axes turned all three are (a machine axis then moves the tip along a
@@ -419,11 +432,7 @@ bool Machine::moveInMachineCoordinates(const Program& p, const BlockWords& w)
     for (int i = 0; i < 3; ++i)
         if (w.axis[static_cast<std::size_t>(i)])
             moved.bits |= axisBit(i).bits;
-    const bool turned = m_five.active() && m_five.fiveAxisMove();
-    setSource(w.line);
-    m_known.lose(turned ? AxisMask{AxisMask::kAll} : moved, m_sink);
-    if (turned)
-        m_five.moveUntraced();
+    const bool turned = loseMachineAxes(w.line, moved);
     if (!m_warnedMachineCoordinates) {
         m_warnedMachineCoordinates = true;
         warning(p, {w.line, 0},
@@ -448,11 +457,7 @@ bool Machine::approachFixedPoint(const Program& p, const BlockWords& w)
         error(p, {w.line, 0}, "G" + std::to_string(w.approach) + " names no machine axis (X1=0, Y1=0, Z1=0)");
         return false;
     }
-    const bool turned = m_five.active() && m_five.fiveAxisMove();
-    setSource(w.line);
-    m_known.lose(turned ? AxisMask{AxisMask::kAll} : w.machineAxes, m_sink);
-    if (turned)
-        m_five.moveUntraced();
+    loseMachineAxes(w.line, w.machineAxes);
     if (!m_warnedApproach) {
         m_warnedApproach = true;
         warning(p, {w.line, 0},

@@ -163,6 +163,7 @@ private:
     bool applyMotion(const Program& p, const BlockWords& w);
     bool moveInMachineCoordinates(const Program& p, const BlockWords& w);  // true: the tool moved
     bool approachFixedPoint(const Program& p, const BlockWords& w);        // G74/G75
+    bool loseMachineAxes(int line, toolpath::AxisMask axes);
     void applyCalls(const Program& p, const Block& block, const BlockWords& w, bool moved);
     bool applyStop(const Program& p, const Block& block, const BlockWords& w);
     Vec3 blockTarget(const BlockWords& w) const;

@@ -1,17 +1,23 @@
-// Waterline: per level, the boundary of the obstacle ToolCentreRegions gives (where the tool just
-// touches the model grown by the stock) is the contour. Its points are kept where the wall is
-// steep: the contour a little higher (dz) lies within dz / tan(minSlope) inward of them (on a wall
-// of slope a the contour moves dz / tan(a) per dz, for the tool-centre surface as for the model).
-// Each steep run is cut in the milling direction, entered and left by a short lead where it stays
-// clear, retracting to the safe height between runs.
+// Waterline: per level, the loops round where the tool with its tip at the level touches the model
+// (DropContours: the drop-cutter's heights contoured), fitted with lines and arcs and grown by the
+// errors of the chords, the fit and the points cut along them, are the contours. Their points are
+// kept where the wall is steep: the contour a little higher (dz) lies within dz / tan(minSlope)
+// inward of them (on a wall of slope a the contour moves dz / tan(a) per dz, for the tool-centre
+// surface as for the model), which one drop there tells. Each steep run is cut in the milling
+// direction, entered and left by a short lead where it stays clear, retracting to the safe height
+// between runs.
 #include "ops/WaterlineOp.h"
 
 #include "base/NumberFormat.h"
+#include "geom/ArcFit.h"
 #include "geom/RegionIndex.h"
 #include "geom/RegionOps.h"
 #include "ops/pocket/PathWriter.h"
 #include "ops/surface/AllCores.h"
+#include "ops/surface/DropContours.h"
+#include "ops/surface/DropCutter.h"
 #include "ops/surface/ToolCentre.h"
+#include "sim/ToolShape.h"
 
 #include <algorithm>
 #include <cmath>
@@ -27,6 +33,21 @@ constexpr double kPi = std::numbers::pi;
 std::string fmt(double v) { return base::NumberFormat{4, true}.format(v); }
 
 double stepFor(const WaterlineParams& p, const toolpath::Tool& tool);
+
+// The area's box: where the contours are looked for.
+std::pair<Vec2, Vec2> boundsOf(const std::vector<geom::Region>& area, double tol)
+{
+    Vec2 lo{INFINITY, INFINITY}, hi{-INFINITY, -INFINITY};
+    for (const geom::Region& region : area)
+        for (const Vec2& p : geom::discretize(region.outer, tol)) {
+            lo = {std::min(lo.x, p.x), std::min(lo.y, p.y)};
+            hi = {std::max(hi.x, p.x), std::max(hi.y, p.y)};
+        }
+    return {lo, hi};
+}
+
+// Drop heights the contours' grid may take: more is a tolerance too fine for the area.
+constexpr double kMaxGridPoints = 16e6;
 
 base::Status check(const std::string& what, const SurfaceInput& in, const WaterlineParams& p, const ToolController& tc)
 {
@@ -46,8 +67,21 @@ base::Status check(const std::string& what, const SurfaceInput& in, const Waterl
         return opError(what, "stock to leave must not be negative, got " + fmt(p.stockMm) + " mm");
     if (!(p.toleranceMm > 0) || p.toleranceMm > 1)
         return opError(what, "tolerance must be in (0, 1] mm, got " + fmt(p.toleranceMm) + " mm");
-    return checkRepeats(what, "step-down (from the scallop height)", stepFor(p, tc.tool),
-                        p.heights.startZ - p.heights.finalZ, "levels");
+    if (base::Status s = checkRepeats(what, "step-down (from the scallop height)", stepFor(p, tc.tool),
+                                      p.heights.startZ - p.heights.finalZ, "levels");
+        !s)
+        return s;
+    const double grid = surface::DropContours::step(tc.tool, p.stockMm, p.toleranceMm);
+    if (!(grid > 0))
+        return opError(what, "a pointed " + tc.tool.kind +
+                                 " cannot follow a waterline within a tolerance: use a flat, ball or bull-nose cutter");
+    const auto [lo, hi] = boundsOf(surface::toolCentreArea(in), p.toleranceMm);
+    const double points = ((hi.x - lo.x) / grid + 5) * ((hi.y - lo.y) / grid + 5);
+    if (points > kMaxGridPoints)
+        return opError(what, "the tolerance " + base::NumberFormat{8, true}.format(p.toleranceMm) + " mm needs " +
+                                 fmt(std::round(points / 1e6)) + " million drops over the area (at most " +
+                                 fmt(kMaxGridPoints / 1e6) + " million): raise the tolerance or narrow the boundary");
+    return base::Status::success();
 }
 
 // The vertical step between contours that keeps the scallop on walls at the slope limit (the
@@ -78,9 +112,9 @@ struct Contour {
 };
 
 // The runs of each obstacle loop (material on its left) that lie on steep walls, in the loop's
-// direction; a loop steep all round stays closed.
-std::vector<Contour> steepRuns(const std::vector<geom::Region>& obstacle, const geom::RegionIndex& higher, double reach,
-                               double tol)
+// direction; a loop steep all round stays closed. `steepAt(p, inward)` tells a point.
+template <class Steep>
+std::vector<Contour> steepRuns(const std::vector<geom::Region>& obstacle, double tol, const Steep& steepAt)
 {
     std::vector<Contour> out;
     const auto runsOf = [&](const geom::Profile& loop) {
@@ -89,12 +123,8 @@ std::vector<Contour> steepRuns(const std::vector<geom::Region>& obstacle, const 
         if (n < 3)
             return;
         std::vector<char> steep(n);
-        for (std::size_t i = 0; i < n; ++i) {
-            const Vec2 t = pts[(i + 1) % n] - pts[(i + n - 1) % n];
-            const double len = std::hypot(t.x, t.y);
-            const Vec2 inward = len > 0 ? Vec2{-t.y / len, t.x / len} : Vec2{0, 0};
-            steep[i] = std::isinf(reach) || higher.contains(pts[i] + inward * reach);
-        }
+        for (std::size_t i = 0; i < n; ++i)
+            steep[i] = steepAt(pts[i], (pts[(i + 1) % n] - pts[(i + n - 1) % n]).normalized().leftNormal());
         if (std::all_of(steep.begin(), steep.end(), [](char s) { return s; })) {
             out.push_back({pts, true});
             return;
@@ -123,6 +153,21 @@ std::vector<Contour> steepRuns(const std::vector<geom::Region>& obstacle, const 
     return out;
 }
 
+// What the contours are grown by: what the chords between crossings (tol / 2 at most), the fit
+// (tol / 4) and the points the passes take along arcs (tol / 8) may bring the tool closer.
+double growthFor(double tol) { return tol / 2 + tol / 4 + tol / 8; }
+
+// The loops round where the tool touches at z as regions of material, fitted with lines and arcs
+// and grown by growthFor(tol).
+std::vector<geom::Region> obstacleAt(const surface::DropContours& contours, double z, double tol)
+{
+    std::vector<geom::Profile> loops;
+    for (const std::vector<Vec2>& loop : contours.loopsAt(z))
+        if (geom::Profile fitted = geom::fitLinesAndArcs(loop, true, tol / 4); !fitted.empty())
+            loops.push_back(std::move(fitted));
+    return geom::offsetRegions(geom::regionsFromLoops(loops, tol), growthFor(tol), tol);
+}
+
 }  // namespace
 
 base::Result<OpResult> computeWaterline(const SurfaceInput& input, const WaterlineParams& params,
@@ -132,13 +177,16 @@ base::Result<OpResult> computeWaterline(const SurfaceInput& input, const Waterli
     if (base::Status s = check(what, input, params, tc); !s)
         return s.error();
     const double tol = params.toleranceMm;
-    // Bands of the tolerance: a contour stands at most that much off the wall (finishing).
-    const surface::ToolCentreRegions centres(*input.model, tc.tool, {params.stockMm, params.stockMm, tol, tol});
-    // The contour a little higher only tells steep from shallow: four times the tolerance does.
-    const surface::ToolCentreRegions coarse(centres, tc.tool, {params.stockMm, params.stockMm, 4 * tol});
+    const surface::DropCutter cutter(*input.model, tc.tool, params.stockMm);
     const std::vector<geom::Region> area = surface::toolCentreArea(input);
+    const auto [lo, hi] = boundsOf(area, tol);
+    const surface::DropContours contours(cutter, lo, hi, surface::DropContours::step(tc.tool, params.stockMm, tol),
+                                         tol / 4, tol, progress, 0, 0.3);
+    if (!contours.complete())
+        return cancelledError(what);
     const std::vector<double> levels = levelsOf(params, tc.tool);
-    const std::vector<geom::Region> grownArea = geom::offsetRegions(area, tc.tool.diameterMm, tol);
+    const std::vector<geom::Region> grownAreaRegions = geom::offsetRegions(area, tc.tool.diameterMm, tol);
+    const geom::RegionIndex grownArea(grownAreaRegions);  // keeps a reference to the regions
     const double dz = std::max(0.25, 10 * tol);
     const double reach = params.minSlopeDeg > 0 ? dz / std::tan(params.minSlopeDeg * kPi / 180) : INFINITY;
     const double lead = std::min(tc.tool.diameterMm / 4, 2.0);
@@ -154,21 +202,29 @@ base::Result<OpResult> computeWaterline(const SurfaceInput& input, const Waterli
     std::vector<std::vector<Pass>> passes(levels.size());
     const auto passesAt = [&](std::size_t l) {
         const double z = levels[l];
-        const std::vector<geom::Region> obstacle = centres.obstacle(z);
-        // Without a slope limit every wall is steep: the contour above is not asked.
-        const std::vector<geom::Region> higherObstacle =
-            std::isinf(reach) ? std::vector<geom::Region>{} : coarse.obstacle(z + dz);
-        const geom::RegionIndex higher(higherObstacle);
-        const std::vector<geom::Region> free = geom::subtract(grownArea, obstacle, tol);
-        const geom::RegionIndex freeIndex(free);
-        // Leads off the material (to the left of travel in climb, right otherwise) where clear.
-        const auto leadPoint = [&](Vec2 at, Vec2 dir) {
-            const double len = std::hypot(dir.x, dir.y);
-            const double side = params.climb ? 1 : -1;
-            const Vec2 q = at + Vec2{-dir.y, dir.x} * (side * lead / len);
-            return len > 0 && freeIndex.segmentInside(at, q) ? q : at;
+        // Steep where the tool dz higher, dz / tan(minSlope) further in from the contact (the
+        // contour stands growthFor(tol) off it), still stands higher (no floor to ignore there:
+        // the slope alone decides); without a slope limit every wall is.
+        const auto steepAt = [&](Vec2 p, Vec2 inward) {
+            return std::isinf(reach) || cutter.dropZ(p + inward * (reach + growthFor(tol))) > z + dz;
         };
-        for (Contour& c : steepRuns(obstacle, higher, reach, tol)) {
+        // Leads off the material (to the left of travel in climb, right otherwise) where clear:
+        // inside the area grown by the tool and touching nowhere along the way.
+        const auto leadPoint = [&](Vec2 at, Vec2 dir) {
+            const double len = dir.length();
+            if (!(len > 0))
+                return at;
+            const double side = params.climb ? 1 : -1;
+            const Vec2 q = at + dir.leftNormal() * (side * lead / len);
+            if (!grownArea.segmentInside(at, q))
+                return at;
+            const int n = std::max(4, int(std::ceil(lead / contours.gridStep())));
+            for (int k = 1; k <= n; ++k)
+                if (contours.touches(at + (q - at) * (double(k) / n), z))
+                    return at;
+            return q;
+        };
+        for (Contour& c : steepRuns(obstacleAt(contours, z, tol), tol, steepAt)) {
             // Material on the left as found; climb milling keeps it on the right.
             if (params.climb)
                 std::reverse(c.points.begin(), c.points.end());
@@ -183,7 +239,7 @@ base::Result<OpResult> computeWaterline(const SurfaceInput& input, const Waterli
             }
         }
     };
-    if (!surface::forEachOnAllCores(levels.size(), passesAt, progress, 0, 0.95))
+    if (!surface::forEachOnAllCores(levels.size(), passesAt, progress, 0.3, 0.95))
         return cancelledError(what);
 
     OpResult result;

@@ -1,7 +1,8 @@
 // The drop-cutter: where a revolved tool (flat, ball, bull-nose, by sim::ToolShape's profile)
 // standing over a point first touches the part's triangle mesh when lowered along -Z, tested
 // against each nearby triangle's facet, edges and vertices (the OpenCAMLib technique) through a
-// bucket grid of the triangles; the tip height that parallel finishing and the checks use.
+// bucket grid of the triangles; the tip height that parallel finishing, the waterline's contours
+// (DropContours.h) and the checks use.
 #pragma once
 
 #include "base/Vec.h"

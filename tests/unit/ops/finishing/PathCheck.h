@@ -84,24 +84,6 @@ private:
     std::vector<std::vector<base::Vec3>> m_cells;
 };
 
-// The grown profile tabulated (GrownProfile is slow with stock): linear between 4001 heights, a
-// hair above the convex profile between them.
-struct ProfileTable {
-    std::vector<double> z;
-    double radius;
-    explicit ProfileTable(const GrownProfile& h) : radius(h.shape.radiusMm() + h.stock)
-    {
-        for (int i = 0; i <= 4000; ++i)
-            z.push_back(h(radius * i / 4000));
-    }
-    double operator()(double d) const
-    {
-        const double f = std::clamp(d / radius, 0.0, 1.0) * 4000;
-        const int i = std::min(3999, int(f));
-        return z[i] + (z[i + 1] - z[i]) * (f - i);
-    }
-};
-
 inline double distanceToSegmentXY(base::Vec2 p, const Segment& s)
 {
     const base::Vec2 a{s.a.x, s.a.y}, b{s.b.x, s.b.y}, ab = b - a;

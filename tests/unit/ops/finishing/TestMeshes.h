@@ -1,8 +1,9 @@
 // Test parts for the drop-cutter and parallel finishing, built procedurally: height fields z =
 // f(x, y) triangulated on a grid (planes, steps, drafted pockets, fillets, random bumps), a UV
-// sphere, and an independent reference for the tool's lower surface grown by the stock.
+// sphere (the tool's lower surface grown by the stock, their reference, is in GrownProfile.h).
 #pragma once
 
+#include "GrownProfile.h"
 #include "sim/ToolShape.h"
 #include "sim/TriangleMesh.h"
 
@@ -85,31 +86,6 @@ inline RandomPart randomPart(std::mt19937& rng)
         b[0] = 40 * u(rng), b[1] = 40 * u(rng), b[2] = -2 + 5 * u(rng), b[3] = 3 + 6 * u(rng);
     return p;
 }
-
-// The tool's lower surface grown by `stock`, from sim::ToolShape::lowerSurface alone: the lowest
-// point of the balls of radius `stock` round the profile's points (a dense minimum), measured from
-// the ungrown tip. +infinity beyond the grown radius.
-struct GrownProfile {
-    const sim::ToolShape& shape;
-    double stock;
-    double operator()(double d) const
-    {
-        const double R = shape.radiusMm();
-        if (d > R + stock + 1e-12)
-            return std::numeric_limits<double>::infinity();
-        if (stock == 0)
-            return shape.lowerSurface(std::min(d, R));
-        double best = std::numeric_limits<double>::infinity();
-        constexpr int kSteps = 4000;
-        for (int i = 0; i <= kSteps; ++i) {
-            const double e =
-                std::max(0.0, d - stock) + (std::min(R, d + stock) - std::max(0.0, d - stock)) * i / kSteps;
-            const double off = d - e;
-            best = std::min(best, shape.lowerSurface(e) - std::sqrt(std::max(0.0, stock * stock - off * off)));
-        }
-        return best;
-    }
-};
 
 inline toolpath::Tool tool(const char* kind, double diameter, double corner = 0, double pointAngle = 0)
 {

@@ -1,5 +1,7 @@
 #include "RoughingTestUtil.h"
 
+#include "../finishing/GrownProfile.h"
+
 #include "sim/Moves.h"
 #include "sim/StockRun.h"
 #include "sim/ToolShape.h"
@@ -172,8 +174,12 @@ StockCheck cutThrough(const toolpath::Toolpath& section, const toolpath::Tool& t
     return out;
 }
 
-double deepestPenetration(const toolpath::Toolpath& section, const toolpath::Tool& tool, const sim::TriangleMesh& model,
-                          double sideStock, double bottomStock, double step)
+namespace {
+
+// `surface(d)`: the grown tool's lower surface above its tip at radial distance d <= reach.
+double deepestPenetrationOf(const toolpath::Toolpath& section, const toolpath::Tool& tool,
+                            const sim::TriangleMesh& model, double reach, const std::function<double(double)>& surface,
+                            double step)
 {
     // The mesh's vertices and triangle centres, bucketed by millimetre cells.
     std::unordered_map<long long, std::vector<base::Vec3>> cells;
@@ -188,8 +194,6 @@ double deepestPenetration(const toolpath::Toolpath& section, const toolpath::Too
                          c = model.vertex(model.triangles[3 * t + 2]);
         add({(a.x + b.x + c.x) / 3, (a.y + b.y + c.y) / 3, (a.z + b.z + c.z) / 3});
     }
-    const sim::ToolShape shape(tool);
-    const double reach = shape.radiusMm() + sideStock;
     double deepest = -1e9;
     const auto probe = [&](const base::Vec3& tip) {
         for (long long i = std::llround(std::floor(tip.x - reach)); i <= std::llround(std::floor(tip.x + reach)); ++i)
@@ -202,8 +206,7 @@ double deepestPenetration(const toolpath::Toolpath& section, const toolpath::Too
                     const double d = std::hypot(p.x - tip.x, p.y - tip.y);
                     if (d > reach)
                         continue;
-                    const double surface = tip.z + shape.lowerSurface(std::max(0.0, d - sideStock));
-                    deepest = std::max(deepest, p.z + bottomStock - surface);
+                    deepest = std::max(deepest, p.z - (tip.z + surface(d)));
                 }
             }
     };
@@ -217,6 +220,25 @@ double deepestPenetration(const toolpath::Toolpath& section, const toolpath::Too
             probe(m.from + (m.to - m.from) * (double(k) / n));
     }
     return deepest;
+}
+
+}  // namespace
+
+double deepestPenetration(const toolpath::Toolpath& section, const toolpath::Tool& tool, const sim::TriangleMesh& model,
+                          double sideStock, double bottomStock, double step)
+{
+    const sim::ToolShape shape(tool);
+    return deepestPenetrationOf(
+        section, tool, model, shape.radiusMm() + sideStock,
+        [&](double d) { return shape.lowerSurface(std::max(0.0, d - sideStock)) - bottomStock; }, step);
+}
+
+double deepestPenetrationGrown(const toolpath::Toolpath& section, const toolpath::Tool& tool,
+                               const sim::TriangleMesh& model, double stock, double step)
+{
+    const sim::ToolShape shape(tool);
+    const ProfileTable grown(GrownProfile{shape, stock});
+    return deepestPenetrationOf(section, tool, model, grown.radius, grown, step);
 }
 
 }  // namespace camwb::ops::test

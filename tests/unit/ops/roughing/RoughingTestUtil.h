@@ -49,6 +49,10 @@ StockCheck cutThrough(const toolpath::Toolpath& section, const toolpath::Tool& t
 // `step` mm along the feed moves (vertices and triangle centres of the mesh are tested).
 double deepestPenetration(const toolpath::Toolpath& section, const toolpath::Tool& tool, const sim::TriangleMesh& model,
                           double sideStock, double bottomStock, double step = 0.25);
+// The same with the tool grown by `stock` all round (the Minkowski sum with a ball: the finishing
+// operations' stock, measured along the model's normal), by the finishing tests' own reference.
+double deepestPenetrationGrown(const toolpath::Toolpath& section, const toolpath::Tool& tool,
+                               const sim::TriangleMesh& model, double stock, double step = 0.25);
 
 base::Box3 box3(base::Vec3 lo, base::Vec3 hi);
 

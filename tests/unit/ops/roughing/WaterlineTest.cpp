@@ -46,7 +46,8 @@ WaterlineParams sphereParams()
 
 TEST(Waterline, SphereContoursTouchItLeaveAtMostTheScallopAndOnlyOnSteepWalls)
 {
-    const sim::TriangleMesh mesh = heightMesh(sphereOnPlate(kPlate, kSphereR, kCentreZ), 0, 0, 60, 50, 100, 0);
+    // Fine facets (0.2 mm: within 0.0004 mm of the sphere), so that the slope limit can be judged.
+    const sim::TriangleMesh mesh = heightMesh(sphereOnPlate(kPlate, kSphereR, kCentreZ), 0, 0, 60, 50, 300, 0);
     SurfaceInput input;
     input.model = &mesh;
     input.stock = box3({0, 0, 0}, {60, 50, 20});
@@ -57,9 +58,16 @@ TEST(Waterline, SphereContoursTouchItLeaveAtMostTheScallopAndOnlyOnSteepWalls)
     ASSERT_TRUE(r.ok()) << r.error().message;
     EXPECT_LE(deepestPenetration(r.value().toolpath, tc.tool, mesh, 0, 0), p.toleranceMm);
 
-    // Per level: the contour's distance from the axis (mean), its spread, and the slope there.
+    // The slope of the secant from a level's exact contour to the one 0.25 mm higher.
+    const auto secantSlopeDeg = [&](double z) {
+        const auto rhoAt = [&](double h) {
+            return std::sqrt(std::pow(kSphereR + R, 2) - std::pow(h + R - kCentreZ, 2));
+        };
+        return std::atan2(0.25, rhoAt(z) - rhoAt(z + 0.25)) * 180 / std::numbers::pi;
+    };
+    // Per level: the contour's distance from the axis (mean), its spread, and the secant's slope.
     struct Level {
-        double z, rho, slopeDeg;
+        double z, rho;
     };
     std::vector<Level> levels;
     for (const auto& [z, pts] : contoursOf(r.value()).byLevel) {
@@ -76,9 +84,12 @@ TEST(Waterline, SphereContoursTouchItLeaveAtMostTheScallopAndOnlyOnSteepWalls)
         const double slope = std::acos((z + R - kCentreZ) / (kSphereR + R));
         EXPECT_NEAR(rho, expected, 1.75 * p.toleranceMm / std::sin(slope) + 0.005) << "level " << z;
         EXPECT_LT(hi - lo, 0.12) << "level " << z;
-        // Steep or shallow is told from the contour 0.25 mm higher on coarser bands: a few degrees.
-        EXPECT_GE(slope * 180 / std::numbers::pi, p.minSlopeDeg - 5) << "a contour on a shallow part, level " << z;
-        levels.push_back({z, rho, slope * 180 / std::numbers::pi});
+        // Steep or shallow is told from the contour dz = 0.25 mm higher: steep where it lies within
+        // dz / tan(minSlope) inward, where the secant's slope is at least the limit (to a tenth of a
+        // degree on these facets).
+        const double secantDeg = secantSlopeDeg(z);
+        EXPECT_GE(secantDeg, p.minSlopeDeg - 0.1) << "a contour on a shallow part, level " << z;
+        levels.push_back({z, rho});
     }
     ASSERT_GE(levels.size(), 10u);
     // Climb milling round a boss: material on the right, so clockwise seen from above.
@@ -92,8 +103,10 @@ TEST(Waterline, SphereContoursTouchItLeaveAtMostTheScallopAndOnlyOnSteepWalls)
             prev = at;
         }
     EXPECT_LT(turning, 0);
-    // All of the steep band is covered: from the slope limit down to the lowest level.
-    EXPECT_LT(levels.back().slopeDeg, p.minSlopeDeg + 3);
+    // All of the steep band is covered: from the slope limit down to the lowest level. The level
+    // above the highest contour is shallow (here 15.786: 28.0 degrees; the highest, 15.443, 30.1).
+    const double next = 2 * levels.back().z - levels[levels.size() - 2].z;
+    EXPECT_LT(secantSlopeDeg(next), p.minSlopeDeg + 0.1) << "no contour at " << next;
     EXPECT_LT(levels.front().z, p.heights.finalZ + 0.5);
     // Scallop between neighbours: the balls' centres c1, c2 lie on a circle round the sphere's
     // centre, so their crossing nearest to it is on the bisector through it.
@@ -133,7 +146,8 @@ TEST(Waterline, ABallInAFilletOfItsOwnRadiusNeverGouges)
         base::Result<OpResult> r = computeWaterline(input, p, tc, 0);
         ASSERT_TRUE(r.ok()) << r.error().message;
         EXPECT_GE(contoursOf(r.value()).byLevel.size(), 5u);
-        EXPECT_LE(deepestPenetration(r.value().toolpath, tc.tool, mesh, stock, stock, 0.1), p.toleranceMm)
+        // The stock is measured along the model's normal, as parallel finishing leaves it.
+        EXPECT_LE(deepestPenetrationGrown(r.value().toolpath, tc.tool, mesh, stock, 0.1), p.toleranceMm)
             << "stock " << stock;
     }
 }
@@ -163,6 +177,26 @@ TEST(Waterline, FlatToolStepsDownByTheStairItLeaves)
     }
 }
 
+// A floor exactly at the lowest level, at a height a float cannot hold (12.1 is stored 0.4 um
+// higher): the tool stands on it there, so the level still has its contour round the walls.
+TEST(Waterline, AFloorAtTheLowestLevelIsTouchedNotCut)
+{
+    const sim::TriangleMesh mesh = heightMesh(draftedCavity(7.9, 20, 4, 0), 0, 0, 60, 50, 100, 0);
+    SurfaceInput input;
+    input.model = &mesh;
+    input.stock = box3({0, 0, 0}, {60, 50, 21});
+    WaterlineParams p;
+    p.heights = {30, 25, 19.5, 12.1};
+    p.scallopMm = 0.05;
+    p.minSlopeDeg = 45;
+    base::Result<OpResult> r = computeWaterline(input, p, toolController("flat", 6), 0);
+    ASSERT_TRUE(r.ok()) << r.error().message;
+    const Contours c = contoursOf(r.value());
+    ASSERT_FALSE(c.byLevel.empty());
+    EXPECT_NEAR(c.byLevel.begin()->first, 12.1, 1e-6);
+    EXPECT_GT(c.byLevel.begin()->second.size(), 4u);
+}
+
 TEST(Waterline, ParameterErrorsAreClear)
 {
     const sim::TriangleMesh mesh = heightMesh(sphereOnPlate(kPlate, 10, kCentreZ), 0, 0, 60, 50, 40, 0);
@@ -186,9 +220,26 @@ TEST(Waterline, ParameterErrorsAreClear)
               std::string::npos)
         << error([](auto& p, auto&) { p.scallopMm = 1e-9; });
     EXPECT_NE(error([](auto& p, auto&) { p.minSlopeDeg = 90; }).find("slope limit"), std::string::npos);
+    // The contours' grid follows the tolerance: one too fine for the area is refused before any drop.
+    EXPECT_NE(error([](auto& p, auto&) {
+                  p.toleranceMm = 1e-5;
+              }).find("the tolerance 0.00001 mm needs 50 million drops over the area (at most 16 million)"),
+              std::string::npos)
+        << error([](auto& p, auto&) { p.toleranceMm = 1e-5; });
     EXPECT_NE(error([](auto& p, auto&) { p.stockMm = -0.1; }).find("must not be negative"), std::string::npos);
     EXPECT_NE(error([](auto&, auto& in) { in.model = nullptr; }).find("waterline \"Waterline\": no model"),
               std::string::npos);
+    // A pointed tool has no radius for the grid's chords to keep within the tolerance.
+    WaterlineParams p = sphereParams();
+    SurfaceInput input;
+    input.model = &mesh;
+    input.stock = box3({0, 0, 0}, {60, 50, 20});
+    ToolController pointed = toolController("drill", 6);
+    pointed.tool.pointAngleDeg = 118;
+    base::Result<OpResult> drill = computeWaterline(input, p, pointed, 0);
+    ASSERT_FALSE(drill.ok());
+    EXPECT_NE(drill.error().message.find("a pointed drill cannot follow a waterline"), std::string::npos)
+        << drill.error().message;
 }
 
 }  // namespace

@@ -2,8 +2,8 @@
 // where the tool reaches its full radius; 0 for a flat end mill) grown by the full radius, and
 // the material within [zt, zt + H] in thin bands, each grown by the tool's radius at the band's
 // top (never less than at any point of the band, so never a gouge). The error is on the safe
-// side: the tool may stand up to one band (max(tolerance, H / 40): 0.075 mm for a 6 mm ball,
-// ToolCentreSettings::bandMm for finishing) off the model along the contact normal (each band costs
+// side: the tool may stand up to one band (max(tolerance, H / 40): 0.075 mm for a 6 mm ball) off
+// the model along the contact normal (each band costs
 // an offset and a union per level: 40 bounds the time). A ball needs no bands: each triangle's
 // piece within [zt, zt + R] grown by the sphere itself is one convex polygon (BallReach.h), exact
 // to the chord whatever the band setting. Every offset is grown by the fit and chord errors so
@@ -20,15 +20,13 @@
 namespace camwb::ops::surface {
 
 struct ToolCentreRegions::Data {
-    Data(std::shared_ptr<const MeshShadow> model, const toolpath::Tool& tool, const ToolCentreSettings& s) :
-        shadowPtr(std::move(model)),
-        shadow(*shadowPtr),
+    Data(const sim::TriangleMesh& model, const toolpath::Tool& tool, const ToolCentreSettings& s) :
+        shadow(model),
         shape(tool),
         settings(s)
     {
     }
-    std::shared_ptr<const MeshShadow> shadowPtr;  // shared by regions of the same model
-    const MeshShadow& shadow;
+    MeshShadow shadow;
     sim::ToolShape shape;
     ToolCentreSettings settings;
     double radius = 0, fullHeight = 0, band = 0;
@@ -57,19 +55,7 @@ struct ToolCentreRegions::Data {
 
 ToolCentreRegions::ToolCentreRegions(const sim::TriangleMesh& model, const toolpath::Tool& tool,
                                      const ToolCentreSettings& settings) :
-    ToolCentreRegions(std::make_shared<const MeshShadow>(model), tool, settings)
-{
-}
-
-ToolCentreRegions::ToolCentreRegions(const ToolCentreRegions& sameModel, const toolpath::Tool& tool,
-                                     const ToolCentreSettings& settings) :
-    ToolCentreRegions(sameModel.m_data->shadowPtr, tool, settings)
-{
-}
-
-ToolCentreRegions::ToolCentreRegions(std::shared_ptr<const MeshShadow> shadow, const toolpath::Tool& tool,
-                                     const ToolCentreSettings& settings) :
-    m_data(std::make_unique<Data>(std::move(shadow), tool, settings))
+    m_data(std::make_unique<Data>(model, tool, settings))
 {
     Data& d = *m_data;
     d.radius = d.shape.radiusMm();
@@ -82,7 +68,7 @@ ToolCentreRegions::ToolCentreRegions(std::shared_ptr<const MeshShadow> shadow, c
         }
         d.fullHeight = hi;
     }
-    d.band = settings.bandMm > 0 ? std::max(settings.bandMm, 1e-4) : std::max(d.tol(), d.fullHeight / 40);
+    d.band = std::max(d.tol(), d.fullHeight / 40);
 }
 
 ToolCentreRegions::~ToolCentreRegions() = default;

@@ -1,8 +1,8 @@
 // Where the tool centre may stand at a level without touching the part: the complement of the
 // model's material at and above the level, grown by the tool's true shape (the radius at which its
 // lower surface reaches each height above the tip: a flat end mill its full radius at once, a ball
-// or bull-nose less near the tip) and by the stock to leave (side radially, bottom axially). Shared
-// by z-level roughing (the area to clear) and waterline finishing (its boundary is the contour).
+// or bull-nose less near the tip) and by the stock to leave (side radially, bottom axially): the
+// area z-level roughing clears at each level.
 #pragma once
 
 #include "geom/Region.h"
@@ -22,21 +22,12 @@ struct ToolCentreSettings {
     double sideStockMm = 0;
     double bottomStockMm = 0;
     double toleranceMm = 0.01;
-    // Height of the bands in which material near the tip is grown by the tool's radius at the band's
-    // top: the tool may stand up to this much higher than it must. 0: max(tolerance, H / 40), H the
-    // height where the cutter reaches its full radius (a ball's radius, a bull-nose's corner). A ball
-    // takes no bands: its material is taken exactly (BallReach.h).
-    double bandMm = 0;
 };
 
 // Built once per operation (the model's material sorted by height), asked per level.
 class ToolCentreRegions {
 public:
     ToolCentreRegions(const sim::TriangleMesh& model, const toolpath::Tool& tool, const ToolCentreSettings& settings);
-    // The same model as `sameModel` with other settings (or tool): its shadows, the costly part
-    // on a large model, are shared, not built again.
-    ToolCentreRegions(const ToolCentreRegions& sameModel, const toolpath::Tool& tool,
-                      const ToolCentreSettings& settings);
     ~ToolCentreRegions();
 
     // Where the tool centre with the tip at `z` stays clear of the model (grown by the stocks),
@@ -49,8 +40,6 @@ public:
     double fullRadiusHeightMm() const;
 
 private:
-    ToolCentreRegions(std::shared_ptr<const MeshShadow> shadow, const toolpath::Tool& tool,
-                      const ToolCentreSettings& settings);
     struct Data;
     std::unique_ptr<Data> m_data;
 };

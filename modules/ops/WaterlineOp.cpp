@@ -17,7 +17,6 @@
 #include "ops/surface/DropContours.h"
 #include "ops/surface/DropCutter.h"
 #include "ops/surface/ToolCentre.h"
-#include "sim/ToolShape.h"
 
 #include <algorithm>
 #include <cmath>
@@ -118,7 +117,10 @@ std::vector<Contour> steepRuns(const std::vector<geom::Region>& obstacle, double
 {
     std::vector<Contour> out;
     const auto runsOf = [&](const geom::Profile& loop) {
-        const std::vector<Vec2> pts = geom::discretize(loop, tol / 8);
+        // The grown loop's round joins (one at every corner of the fit) would double its points:
+        // fitted again, nearly straight runs through them become single lines.
+        const std::vector<Vec2> pts =
+            geom::discretize(geom::fitLinesAndArcs(geom::discretize(loop, tol / 16), true, tol / 16), tol / 8);
         const std::size_t n = pts.size();
         if (n < 3)
             return;
@@ -154,8 +156,9 @@ std::vector<Contour> steepRuns(const std::vector<geom::Region>& obstacle, double
 }
 
 // What the contours are grown by: what the chords between crossings (tol / 2 at most), the fit
-// (tol / 4) and the points the passes take along arcs (tol / 8) may bring the tool closer.
-double growthFor(double tol) { return tol / 2 + tol / 4 + tol / 8; }
+// (tol / 4) and the points the passes take along the grown loops (three sixteenths: their
+// points, refitted, and the points along the refit's arcs) may bring the tool closer.
+double growthFor(double tol) { return tol / 2 + tol / 4 + tol / 4; }
 
 // The loops round where the tool touches at z as regions of material, fitted with lines and arcs
 // and grown by growthFor(tol).

@@ -36,7 +36,6 @@ public:
     DropContours(const DropCutter& cutter, base::Vec2 lo, base::Vec2 hi, double step, double ignoreMm,
                  double toleranceMm, const Progress& progress, double from, double to);
     bool complete() const { return m_complete; }
-    std::size_t gridPoints() const { return m_z.size(); }
     double gridStep() const { return m_step; }
 
     // Closed loops (first point not repeated) round where the tool with its tip at z touches,

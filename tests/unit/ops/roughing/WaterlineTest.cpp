@@ -2,7 +2,8 @@
 // contour's ball centre lies on the sphere grown by the tool radius (within the tolerance), the
 // scallop between neighbouring contours (the two balls' crossing nearest the sphere's centre)
 // stays below the requested height, contours run only where the sphere is steeper than the slope
-// limit and cover all of it; the tool's shape against the mesh; the parameter errors.
+// limit and cover all of it; the tool's shape (ball, bull-nose, flat) against the mesh; the
+// parameter errors.
 #include "ops/WaterlineOp.h"
 
 #include "RoughingTestUtil.h"
@@ -147,6 +148,32 @@ TEST(Waterline, ABallInAFilletOfItsOwnRadiusNeverGouges)
         ASSERT_TRUE(r.ok()) << r.error().message;
         EXPECT_GE(contoursOf(r.value()).byLevel.size(), 5u);
         // The stock is measured along the model's normal, as parallel finishing leaves it.
+        EXPECT_LE(deepestPenetrationGrown(r.value().toolpath, tc.tool, mesh, stock, 0.1), p.toleranceMm)
+            << "stock " << stock;
+    }
+}
+
+// A bull-nose (D6, corner R1) in a drafted cavity with floor fillets of R2: its grid is finer (the
+// corner, not the radius, sets it) and it never reaches into the model by the tolerance.
+TEST(Waterline, ABullNoseNeverGouges)
+{
+    const sim::TriangleMesh mesh = heightMesh(draftedCavity(8, 10, 4, 2), 0, 0, 60, 50, 150, 0);
+    SurfaceInput input;
+    input.model = &mesh;
+    input.stock = box3({0, 0, 0}, {60, 50, 20});
+    input.flatLevels = {12};
+    const ToolController tc = toolController("bull", 6, 1);
+    for (const double stock : {0.0, 0.2}) {
+        WaterlineParams p;
+        p.heights = {30, 25, 19.5, 12 + stock};
+        p.scallopMm = 0.05;
+        p.maxStepDownMm = 1;
+        p.minSlopeDeg = 30;
+        p.stockMm = stock;
+        p.toleranceMm = 0.01;
+        base::Result<OpResult> r = computeWaterline(input, p, tc, 0);
+        ASSERT_TRUE(r.ok()) << r.error().message;
+        EXPECT_GE(contoursOf(r.value()).byLevel.size(), 5u);
         EXPECT_LE(deepestPenetrationGrown(r.value().toolpath, tc.tool, mesh, stock, 0.1), p.toleranceMm)
             << "stock " << stock;
     }

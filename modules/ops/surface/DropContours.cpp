@@ -12,6 +12,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <functional>
 #include <limits>
 #include <utility>
 
@@ -165,9 +166,50 @@ std::vector<std::vector<Vec2>> DropContours::loopsAt(double z) const
             loop.push_back(point(pieces[i].first));
         }
         if (loop.size() >= 3)
-            loops.push_back(std::move(loop));
+            loops.push_back(refined(loop, level));
     }
     return loops;
+}
+
+// Where a loop turns sharply, a chord may cut a corner of the contour (two walls met in a cell):
+// the contour's point on the chord's normal through its middle is put in where it stands more
+// than half the tolerance off it, and the two halves are looked at again, down to a sixteenth of
+// the chord. Only near [lo, hi]: outside, the loops close along the grid's ring.
+std::vector<Vec2> DropContours::refined(const std::vector<Vec2>& loop, double level) const
+{
+    constexpr double kSharpCos = 0.94;  // turning by more than 20 degrees
+    const auto near = [&](Vec2 p) {
+        return p.x > m_lo.x - m_step && p.x < m_hi.x + m_step && p.y > m_lo.y - m_step && p.y < m_hi.y + m_step;
+    };
+    const auto sharp = [](Vec2 a, Vec2 b, Vec2 c) {
+        return (b - a).normalized().dot((c - b).normalized()) < kSharpCos;
+    };
+    std::vector<Vec2> out;
+    const std::function<void(Vec2, Vec2, int)> split = [&](Vec2 a, Vec2 b, int depth) {
+        const double length = (b - a).length();
+        const Vec2 m = (a + b) * 0.5;
+        if (depth == 0 || !(length > 0) || !near(m))
+            return;
+        const Vec2 inward = (b - a).leftNormal() * (1 / length);  // towards the material
+        const bool touching = m_cutter.dropZ(m) > level;
+        const Vec2 far = touching ? m - inward * length : m + inward * length;
+        if ((m_cutter.dropZ(far) > level) == touching)
+            return;  // no contour within a chord's length: leave the chord
+        const Vec2 p = touching ? crossing(m, far, level) : crossing(far, m, level);
+        if ((p - m).length() <= m_tol / 2)
+            return;
+        split(a, p, depth - 1);
+        out.push_back(p);
+        split(p, b, depth - 1);
+    };
+    const std::size_t n = loop.size();
+    for (std::size_t i = 0; i < n; ++i) {
+        const Vec2 prev = loop[(i + n - 1) % n], a = loop[i], b = loop[(i + 1) % n], next = loop[(i + 2) % n];
+        out.push_back(a);
+        if (sharp(prev, a, b) || sharp(a, b, next))
+            split(a, b, 4);
+    }
+    return out;
 }
 
 }  // namespace camwb::ops::surface

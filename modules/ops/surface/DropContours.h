@@ -5,7 +5,8 @@
 // the tolerance, on the free side. Between crossings a contour is straight, so its chords cut the
 // convex bends of the tool-centre contour; DropContours::step sizes the grid so that no chord
 // brings the tool closer into the model than half the tolerance (waterline grows the loops by
-// that before cutting along them).
+// that before cutting along them). Where a loop turns sharply (a corner where two walls meet
+// within a cell) more points are found on it, so the contour reaches into the corner.
 #pragma once
 
 #include "base/Vec.h"
@@ -49,6 +50,7 @@ private:
     double value(int i, int j) const;  // the drop at a node; -infinity outside the grid
     base::Vec2 node(int i, int j) const { return {m_x0 + i * m_step, m_y0 + j * m_step}; }
     base::Vec2 crossing(base::Vec2 touching, base::Vec2 clear, double level) const;
+    std::vector<base::Vec2> refined(const std::vector<base::Vec2>& loop, double level) const;
 
     const DropCutter& m_cutter;
     double m_x0 = 0, m_y0 = 0, m_step = 1, m_ignore = 0, m_tol = 0.01;

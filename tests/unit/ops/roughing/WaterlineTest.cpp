@@ -10,6 +10,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <map>
 #include <numbers>
@@ -202,6 +203,72 @@ TEST(Waterline, FlatToolStepsDownByTheStairItLeaves)
             EXPECT_LE((z - prev) * std::cos(std::numbers::pi / 4), p.scallopMm + 1e-6);
         prev = z;
     }
+}
+
+// A pocket with vertical walls and sharp corners (40 x 30 mm, 10 deep, in a 60 x 50 plate): a flat
+// D6's contour is the pocket shrunk by its radius, sharp at the corners. Marching squares alone
+// would cut each corner with a chord about a grid step short of it, leaving material in the corner.
+TEST(Waterline, SharpInsideCornersAreFollowedIntoTheCorner)
+{
+    sim::TriangleMesh mesh;
+    const auto vertex = [&](double x, double y, double z) {
+        mesh.positions.insert(mesh.positions.end(), {float(x), float(y), float(z)});
+        return std::uint32_t(mesh.vertexCount() - 1);
+    };
+    const auto quad = [&](std::uint32_t a, std::uint32_t b, std::uint32_t c, std::uint32_t d) {
+        mesh.triangles.insert(mesh.triangles.end(), {a, b, c, a, c, d});
+    };
+    const double outer[4][2] = {{0, 0}, {60, 0}, {60, 50}, {0, 50}},
+                 inner[4][2] = {{10, 10}, {50, 10}, {50, 40}, {10, 40}};
+    std::uint32_t o[4], top[4], floor[4];
+    for (int k = 0; k < 4; ++k) {
+        o[k] = vertex(outer[k][0], outer[k][1], 20);
+        top[k] = vertex(inner[k][0], inner[k][1], 20);
+        floor[k] = vertex(inner[k][0], inner[k][1], 10);
+    }
+    for (int k = 0; k < 4; ++k) {
+        quad(o[k], o[(k + 1) % 4], top[(k + 1) % 4], top[k]);          // the plate round the pocket
+        quad(top[k], top[(k + 1) % 4], floor[(k + 1) % 4], floor[k]);  // the wall
+    }
+    quad(floor[0], floor[1], floor[2], floor[3]);
+    SurfaceInput input;
+    input.model = &mesh;
+    input.stock = box3({0, 0, 0}, {60, 50, 20});
+    input.flatLevels = {10};
+    WaterlineParams p;
+    p.heights = {30, 25, 19.5, 10};
+    p.scallopMm = 0.05;
+    p.maxStepDownMm = 2;
+    p.minSlopeDeg = 45;
+    p.toleranceMm = 0.01;
+    base::Result<OpResult> r = computeWaterline(input, p, toolController("flat", 6), 0);
+    ASSERT_TRUE(r.ok()) << r.error().message;
+    // Per level, the finishing moves' nearest approach to each corner of the tool centre's rectangle.
+    std::map<double, std::vector<std::pair<base::Vec2, base::Vec2>>> moves;
+    base::Vec3 at{};
+    for (const toolpath::Record& rec : r.value().toolpath.records()) {
+        if (const auto* l = std::get_if<toolpath::Linear>(&rec)) {
+            if (l->feedKind == toolpath::FeedKind::Finishing)
+                moves[std::round(l->to.z * 1e6) / 1e6].push_back({{at.x, at.y}, {l->to.x, l->to.y}});
+            at = l->to;
+        } else if (const auto* rapid = std::get_if<toolpath::Rapid>(&rec)) {
+            at = rapid->to;
+        }
+    }
+    ASSERT_GE(moves.size(), 4u);
+    for (const auto& [z, segments] : moves)
+        for (const base::Vec2 corner :
+             {base::Vec2{13, 13}, base::Vec2{47, 13}, base::Vec2{47, 37}, base::Vec2{13, 37}}) {
+            double nearest = 1e9;
+            for (const auto& [a, b] : segments) {
+                const base::Vec2 ab = b - a;
+                const double t = std::clamp((corner - a).dot(ab) / std::max(ab.dot(ab), 1e-18), 0.0, 1.0);
+                nearest = std::min(nearest, (a + ab * t - corner).length());
+            }
+            // The contour stands its growth (a tolerance) off both walls, so sqrt(2) tolerances off
+            // the corner, and the corner is found to half a tolerance more.
+            EXPECT_LE(nearest, 2.5 * p.toleranceMm) << "corner " << corner.x << ", " << corner.y << " at level " << z;
+        }
 }
 
 // A floor exactly at the lowest level, at a height a float cannot hold (12.1 is stored 0.4 um

@@ -126,59 +126,43 @@ TEST(Waterline, SphereContoursTouchItLeaveAtMostTheScallopAndOnlyOnSteepWalls)
     }
 }
 
-// A drafted cavity whose floor fillet has the ball's radius: at the floor the ball fits the fillet
-// exactly, where a small error in the material's height moves the contour most (the exact
-// per-triangle reach of a ball, ops/surface/BallReach.h, against the mesh, with and without stock).
-TEST(Waterline, ABallInAFilletOfItsOwnRadiusNeverGouges)
+// Waterline in a drafted cavity (floor at Z 12, fillets of `fillet` into it, a mesh of `cells`
+// squares a side), with no stock and with `stock`: contours on five levels at least, and the tool
+// grown by the stock (measured along the model's normal, as parallel finishing leaves it) never in
+// the model by the tolerance.
+void expectNoGougeInAFilletedCavity(const ToolController& tc, double fillet, int cells, double stock)
 {
-    const sim::TriangleMesh mesh = heightMesh(draftedCavity(8, 10, 4, 3), 0, 0, 60, 50, 120, 0);
+    const sim::TriangleMesh mesh = heightMesh(draftedCavity(8, 10, 4, fillet), 0, 0, 60, 50, cells, 0);
     SurfaceInput input;
     input.model = &mesh;
     input.stock = box3({0, 0, 0}, {60, 50, 20});
     input.flatLevels = {12};
-    const ToolController tc = toolController("ball", 6);
-    for (const double stock : {0.0, 0.3}) {
+    for (const double s : {0.0, stock}) {
         WaterlineParams p;
-        p.heights = {30, 25, 19.5, 12 + stock};
+        p.heights = {30, 25, 19.5, 12 + s};
         p.scallopMm = 0.05;
         p.maxStepDownMm = 1;
         p.minSlopeDeg = 30;
-        p.stockMm = stock;
+        p.stockMm = s;
         p.toleranceMm = 0.01;
         base::Result<OpResult> r = computeWaterline(input, p, tc, 0);
         ASSERT_TRUE(r.ok()) << r.error().message;
         EXPECT_GE(contoursOf(r.value()).byLevel.size(), 5u);
-        // The stock is measured along the model's normal, as parallel finishing leaves it.
-        EXPECT_LE(deepestPenetrationGrown(r.value().toolpath, tc.tool, mesh, stock, 0.1), p.toleranceMm)
-            << "stock " << stock;
+        EXPECT_LE(deepestPenetrationGrown(r.value().toolpath, tc.tool, mesh, s, 0.1), p.toleranceMm)
+            << tc.tool.kind << ", stock " << s;
     }
 }
 
-// A bull-nose (D6, corner R1) in a drafted cavity with floor fillets of R2: its grid is finer (the
-// corner, not the radius, sets it) and it never reaches into the model by the tolerance.
-TEST(Waterline, ABullNoseNeverGouges)
+// The floor fillet has the ball's radius: at the floor the ball fits the fillet exactly, where a
+// small error in the drop heights moves the contour most.
+TEST(Waterline, ABallInAFilletOfItsOwnRadiusNeverGouges)
 {
-    const sim::TriangleMesh mesh = heightMesh(draftedCavity(8, 10, 4, 2), 0, 0, 60, 50, 150, 0);
-    SurfaceInput input;
-    input.model = &mesh;
-    input.stock = box3({0, 0, 0}, {60, 50, 20});
-    input.flatLevels = {12};
-    const ToolController tc = toolController("bull", 6, 1);
-    for (const double stock : {0.0, 0.2}) {
-        WaterlineParams p;
-        p.heights = {30, 25, 19.5, 12 + stock};
-        p.scallopMm = 0.05;
-        p.maxStepDownMm = 1;
-        p.minSlopeDeg = 30;
-        p.stockMm = stock;
-        p.toleranceMm = 0.01;
-        base::Result<OpResult> r = computeWaterline(input, p, tc, 0);
-        ASSERT_TRUE(r.ok()) << r.error().message;
-        EXPECT_GE(contoursOf(r.value()).byLevel.size(), 5u);
-        EXPECT_LE(deepestPenetrationGrown(r.value().toolpath, tc.tool, mesh, stock, 0.1), p.toleranceMm)
-            << "stock " << stock;
-    }
+    expectNoGougeInAFilletedCavity(toolController("ball", 6), 3, 120, 0.3);
 }
+
+// A bull-nose (D6, corner R1) in fillets of R2: its grid is finer (the corner, not the radius,
+// sets it).
+TEST(Waterline, ABullNoseNeverGouges) { expectNoGougeInAFilletedCavity(toolController("bull", 6, 1), 2, 150, 0.2); }
 
 TEST(Waterline, FlatToolStepsDownByTheStairItLeaves)
 {

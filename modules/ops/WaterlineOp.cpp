@@ -156,8 +156,9 @@ std::vector<Contour> steepRuns(const std::vector<geom::Region>& obstacle, double
 }
 
 // What the contours are grown by: what the chords between crossings (tol / 2 at most), the fit
-// (tol / 4) and the points the passes take along the grown loops (three sixteenths: their
-// points, refitted, and the points along the refit's arcs) may bring the tool closer.
+// (tol / 4) and the points the passes take along the grown loops (a quarter: their points and
+// the refit at a sixteenth each, the points along the refit's arcs an eighth) may bring the tool
+// closer.
 double growthFor(double tol) { return tol / 2 + tol / 4 + tol / 4; }
 
 // The loops round where the tool touches at z as regions of material, fitted with lines and arcs

@@ -63,6 +63,11 @@ double DropContours::value(int i, int j) const
     return m_z[std::size_t(j) * std::size_t(m_nx) + std::size_t(i)];
 }
 
+bool DropContours::nearArea(Vec2 p) const
+{
+    return p.x > m_lo.x - m_step && p.x < m_hi.x + m_step && p.y > m_lo.y - m_step && p.y < m_hi.y + m_step;
+}
+
 bool DropContours::touches(Vec2 xy, double z) const { return m_cutter.dropZ(xy) > z + m_ignore; }
 
 // The point between `touching` and `clear` where the tool starts to touch, to a tenth of the
@@ -148,9 +153,7 @@ std::vector<std::vector<Vec2>> DropContours::loopsAt(double z) const
         if (!at(I, J))
             std::swap(p, q);
         const Vec2 mid = (p + q) * 0.5;
-        const bool near =
-            mid.x > m_lo.x - m_step && mid.x < m_hi.x + m_step && mid.y > m_lo.y - m_step && mid.y < m_hi.y + m_step;
-        return near ? crossing(p, q, level) : mid;
+        return nearArea(mid) ? crossing(p, q, level) : mid;
     };
     const auto pieceFrom = [&](std::uint64_t edge) {
         const auto it = std::lower_bound(pieces.begin(), pieces.end(), std::make_pair(edge, std::uint64_t(0)));
@@ -178,9 +181,6 @@ std::vector<std::vector<Vec2>> DropContours::loopsAt(double z) const
 std::vector<Vec2> DropContours::refined(const std::vector<Vec2>& loop, double level) const
 {
     constexpr double kSharpCos = 0.94;  // turning by more than 20 degrees
-    const auto near = [&](Vec2 p) {
-        return p.x > m_lo.x - m_step && p.x < m_hi.x + m_step && p.y > m_lo.y - m_step && p.y < m_hi.y + m_step;
-    };
     const auto sharp = [](Vec2 a, Vec2 b, Vec2 c) {
         return (b - a).normalized().dot((c - b).normalized()) < kSharpCos;
     };
@@ -188,7 +188,7 @@ std::vector<Vec2> DropContours::refined(const std::vector<Vec2>& loop, double le
     const std::function<void(Vec2, Vec2, int)> split = [&](Vec2 a, Vec2 b, int depth) {
         const double length = (b - a).length();
         const Vec2 m = (a + b) * 0.5;
-        if (depth == 0 || !(length > 0) || !near(m))
+        if (depth == 0 || !(length > 0) || !nearArea(m))
             return;
         const Vec2 inward = (b - a).leftNormal() * (1 / length);  // towards the material
         const bool touching = m_cutter.dropZ(m) > level;

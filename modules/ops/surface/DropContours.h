@@ -48,6 +48,8 @@ public:
 
 private:
     double value(int i, int j) const;  // the drop at a node; -infinity outside the grid
+    // Within a step of [lo, hi]: where crossings are found exactly (farther out, loops only close).
+    bool nearArea(base::Vec2 p) const;
     base::Vec2 node(int i, int j) const { return {m_x0 + i * m_step, m_y0 + j * m_step}; }
     base::Vec2 crossing(base::Vec2 touching, base::Vec2 clear, double level) const;
     std::vector<base::Vec2> refined(const std::vector<base::Vec2>& loop, double level) const;

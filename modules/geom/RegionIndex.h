@@ -16,7 +16,7 @@ class RegionLocator;
 
 class RegionIndex {
 public:
-    // The regions must outlive the index; an index serves one thread at a time.
+    // The regions must outlive the index. The queries change nothing: threads may share an index.
     explicit RegionIndex(const std::vector<Region>& regions);
     ~RegionIndex();
     RegionIndex(RegionIndex&&) noexcept;

@@ -190,6 +190,7 @@ base::Result<OpResult> computeWaterline(const SurfaceInput& input, const Waterli
         return cancelledError(what);
     const std::vector<double> levels = levelsOf(params, tc.tool);
     const std::vector<geom::Region> grownAreaRegions = geom::offsetRegions(area, tc.tool.diameterMm, tol);
+    const geom::RegionIndex grownArea(grownAreaRegions);  // shared by the levels' workers
     const double dz = std::max(0.25, 10 * tol);
     const double reach = params.minSlopeDeg > 0 ? dz / std::tan(params.minSlopeDeg * kPi / 180) : INFINITY;
     const double lead = std::min(tc.tool.diameterMm / 4, 2.0);
@@ -205,8 +206,6 @@ base::Result<OpResult> computeWaterline(const SurfaceInput& input, const Waterli
     std::vector<std::vector<Pass>> passes(levels.size());
     const auto passesAt = [&](std::size_t l) {
         const double z = levels[l];
-        // One index per level: an index serves one thread at a time (its scratch is its own).
-        const geom::RegionIndex grownArea(grownAreaRegions);
         // Steep where the tool dz higher, dz / tan(minSlope) further in from the contact (the
         // contour stands growthFor(tol) off it), still stands higher (no floor to ignore there:
         // the slope alone decides); without a slope limit every wall is.

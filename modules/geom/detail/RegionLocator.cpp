@@ -5,6 +5,45 @@
 
 namespace camwb::geom::detail {
 
+namespace {
+
+// The loops a ray from the query point crossed an odd number of times. A band holds few loops,
+// so the list stays on the stack (a vector only past kInline loops) and is searched in place.
+class OddLoops {
+public:
+    void toggle(int loop)
+    {
+        int* items = data();
+        for (int k = 0; k < m_size; ++k)
+            if (items[k] == loop) {
+                items[k] = items[--m_size];
+                if (!m_heap.empty())
+                    m_heap.pop_back();
+                return;
+            }
+        if (!m_heap.empty()) {
+            m_heap.push_back(loop);
+        } else if (m_size < kInline) {
+            m_inline[m_size] = loop;
+        } else {
+            m_heap.assign(m_inline, m_inline + kInline);
+            m_heap.push_back(loop);
+        }
+        ++m_size;
+    }
+    const int* begin() const { return m_heap.empty() ? m_inline : m_heap.data(); }
+    const int* end() const { return begin() + m_size; }
+
+private:
+    static constexpr int kInline = 32;
+    int* data() { return m_heap.empty() ? m_inline : m_heap.data(); }
+    int m_inline[kInline];
+    std::vector<int> m_heap;
+    int m_size = 0;
+};
+
+}  // namespace
+
 RegionLocator::RegionLocator(const std::vector<Region>& regions)
 {
     for (std::size_t r = 0; r < regions.size(); ++r) {
@@ -13,14 +52,12 @@ RegionLocator::RegionLocator(const std::vector<Region>& regions)
             m_regionOfLoop.push_back(static_cast<int>(r));
             m_loopIsOuter.push_back(outer);
             for (const Segment& s : loop.segments)
-                m_entries.push_back({&s, boxOf(s), index});
+                m_entries.push_back({&s, boxOf(s), index, 0});
         };
         add(regions[r].outer, true);
         for (const Profile& hole : regions[r].holes)
             add(hole, false);
     }
-    m_crossings.assign(m_regionOfLoop.size(), 0);
-    m_seen.assign(m_entries.size(), 0);
     if (m_entries.empty())
         return;
     m_minY = m_maxY = m_entries.front().box.minY;
@@ -35,7 +72,8 @@ RegionLocator::RegionLocator(const std::vector<Region>& regions)
     m_bins.resize(static_cast<std::size_t>(binCount));
     for (std::size_t i = 0; i < m_entries.size(); ++i) {
         const Box& box = m_entries[i].box;
-        for (int b = binOf(box.minY - kOnBoundary); b <= binOf(box.maxY + kOnBoundary); ++b)
+        m_entries[i].firstBin = binOf(box.minY - kOnBoundary);
+        for (int b = m_entries[i].firstBin; b <= binOf(box.maxY + kOnBoundary); ++b)
             m_bins[static_cast<std::size_t>(b)].push_back(static_cast<int>(i));
     }
 }
@@ -54,27 +92,21 @@ bool RegionLocator::contains(Vec2 p) const
     for (int i : bin)
         if (nearSegment(p, *m_entries[static_cast<std::size_t>(i)].segment))
             return true;
-    m_touchedLoops.clear();
+    OddLoops odd;
     for (int i : bin) {
         const Entry& e = m_entries[static_cast<std::size_t>(i)];
         if (p.y < e.box.minY || p.y > e.box.maxY || p.x > e.box.maxX)
             continue;
-        if (const int n = crossingsRight(p, *e.segment)) {
-            if (m_crossings[static_cast<std::size_t>(e.loop)] == 0)
-                m_touchedLoops.push_back(e.loop);
-            m_crossings[static_cast<std::size_t>(e.loop)] += n;
-        }
+        if (crossingsRight(p, *e.segment) % 2 == 1)
+            odd.toggle(e.loop);
     }
     // Inside a region: odd crossings of its outer loop and even crossings of each of its holes.
-    std::vector<int> candidates, excluded;
-    for (int loop : m_touchedLoops) {
-        const auto l = static_cast<std::size_t>(loop);
-        if (m_crossings[l] % 2 == 1)
-            (m_loopIsOuter[l] ? candidates : excluded).push_back(m_regionOfLoop[l]);
-        m_crossings[l] = 0;
-    }
-    return std::any_of(candidates.begin(), candidates.end(), [&](int region) {
-        return std::find(excluded.begin(), excluded.end(), region) == excluded.end();
+    return std::any_of(odd.begin(), odd.end(), [&](int outer) {
+        const int region = m_regionOfLoop[static_cast<std::size_t>(outer)];
+        return m_loopIsOuter[static_cast<std::size_t>(outer)] && std::none_of(odd.begin(), odd.end(), [&](int hole) {
+                   return !m_loopIsOuter[static_cast<std::size_t>(hole)] &&
+                          m_regionOfLoop[static_cast<std::size_t>(hole)] == region;
+               });
     });
 }
 
@@ -83,19 +115,13 @@ std::vector<double> RegionLocator::breakpoints(Vec2 a, Vec2 b, bool* touched) co
     std::vector<double> ts{0.0, 1.0};
     if (!m_entries.empty()) {
         const Box box{std::min(a.x, b.x), std::min(a.y, b.y), std::max(a.x, b.x), std::max(a.y, b.y)};
-        if (++m_query == 0) {
-            std::fill(m_seen.begin(), m_seen.end(), 0);
-            m_query = 1;
-        }
-        const int last = binOf(box.maxY + kOnBoundary);
-        for (int bin = binOf(box.minY - kOnBoundary); bin <= last; ++bin)
+        const int first = binOf(box.minY - kOnBoundary), last = binOf(box.maxY + kOnBoundary);
+        for (int bin = first; bin <= last; ++bin)
             for (int i : m_bins[static_cast<std::size_t>(bin)]) {
-                const auto index = static_cast<std::size_t>(i);
-                if (m_seen[index] == m_query)
-                    continue;
-                m_seen[index] = m_query;
-                if (m_entries[index].box.overlaps(box, kOnBoundary))
-                    appendCrossings(a, b, *m_entries[index].segment, ts);
+                const Entry& e = m_entries[static_cast<std::size_t>(i)];
+                // An entry listed in several of these bands is taken in the first of them.
+                if (bin == std::max(first, e.firstBin) && e.box.overlaps(box, kOnBoundary))
+                    appendCrossings(a, b, *e.segment, ts);
             }
     }
     if (touched)

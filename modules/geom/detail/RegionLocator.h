@@ -1,6 +1,7 @@
 // Private accelerator for many point and segment queries against one set of regions (clipping
 // zig-zag lines, link checks): loop segments bucketed by y, so a containment test or a crossing
-// search looks at the few segments in the query's horizontal band instead of all of them.
+// search looks at the few segments in the query's horizontal band instead of all of them. The
+// queries keep no scratch in the locator, so any number of threads may ask one locator at once.
 #pragma once
 
 #include "geom/Region.h"
@@ -26,6 +27,7 @@ private:
         const Segment* segment;
         Box box;
         int loop;
+        int firstBin;  // the lowest band it is listed in: a query over several bands takes it there
     };
     int binOf(double y) const;
 
@@ -34,11 +36,6 @@ private:
     std::vector<bool> m_loopIsOuter;
     std::vector<std::vector<int>> m_bins;  // entry indices per horizontal band
     double m_minY = 0, m_maxY = 0, m_binHeight = 1;
-    // Per-query scratch (a locator serves one thread).
-    mutable std::vector<int> m_crossings;
-    mutable std::vector<int> m_touchedLoops;
-    mutable std::vector<unsigned> m_seen;
-    mutable unsigned m_query = 0;
 };
 
 // Whether the segment a-b lies within the regions, given the sorted parameters `ts` (0 and 1

@@ -10,6 +10,7 @@
 #include <polyclipping/clipper.hpp>
 
 #include <random>
+#include <thread>
 
 using namespace camwb::geom;
 namespace t = camwb::geom::test;
@@ -227,6 +228,56 @@ TEST(RegionIndexProperty, AnswersAsTheLoopScans)
     }
     EXPECT_GT(inside, 500);
     EXPECT_GT(links, 200);
+}
+
+// Threads share one index (the waterline's levels ask it on all cores): every thread gets the
+// answers one thread got alone.
+TEST(RegionIndexProperty, ThreadsShareOneIndex)
+{
+    std::mt19937 rng(31);
+    std::uniform_real_distribution<double> unit(0, 1);
+    const std::vector<Region> regions{t::randomRegion(rng).normalized(),
+                                      shifted(t::randomRegion(rng).normalized(), {110, 0})};
+    const RegionIndex index(regions);
+    std::vector<Vec2> from, to;
+    std::vector<char> inside, linked;
+    for (int i = 0; i < 4000; ++i) {
+        from.push_back({210 * unit(rng), 100 * unit(rng)});
+        to.push_back(from.back() + Vec2{30 * unit(rng) - 15, 30 * unit(rng) - 15});
+        inside.push_back(index.contains(from.back()));
+        linked.push_back(index.segmentInside(from.back(), to.back()));
+    }
+    std::vector<int> wrong(4, 0);
+    std::vector<std::thread> threads;
+    for (int k = 0; k < 4; ++k)
+        threads.emplace_back([&, k] {
+            for (int round = 0; round < 5; ++round)
+                for (std::size_t i = 0; i < from.size(); ++i)
+                    wrong[k] += index.contains(from[i]) != bool(inside[i]) ||
+                                index.segmentInside(from[i], to[i]) != bool(linked[i]);
+        });
+    for (std::thread& thread : threads)
+        thread.join();
+    EXPECT_EQ(wrong, std::vector<int>(4, 0));
+    EXPECT_GT(std::count(inside.begin(), inside.end(), 1), 500);
+}
+
+// Forty nested rings: a point in the middle lies beyond forty loops, each crossed once, more than
+// the index keeps on the stack.
+TEST(RegionIndexProperty, ManyNestedLoopsAtOnePoint)
+{
+    std::vector<Profile> loops;
+    for (int i = 0; i < 40; ++i)
+        loops.push_back(t::circle({0, 0}, 100 - 2 * i));
+    const std::vector<Region> regions = regionsFromLoops(loops, 0.01);
+    ASSERT_EQ(regions.size(), 20u);
+    const RegionIndex index(regions);
+    for (double x = 0; x < 101; x += 0.5) {
+        const Vec2 p{x, 0.25};
+        ASSERT_EQ(index.contains(p), anyContains(regions, p)) << x;
+    }
+    EXPECT_FALSE(index.contains({0, 0.25}));  // within the innermost circle: a hole
+    EXPECT_TRUE(index.contains({23, 0.25}));  // between the innermost outer loop (r 24) and its hole
 }
 
 TEST(RegionsFromLoopsProperty, NestedRingsAlternate)

@@ -67,12 +67,8 @@ public:
     void programStop(const toolpath::ProgramStop&) override { pause(MoveKind::Stop, 0); }
     void passThrough(const toolpath::PassThrough&) override {}
     // Nothing is cut or timed from an unknown place; the move that makes the position whole again
-    // is cut where it ends (straight()).
-    void unknownAxes(const toolpath::UnknownAxes& u) override
-    {
-        m_local.forget(u.axes);
-        m_lost = true;
-    }
+    // is cut where it ends (straight(), toolAxisMove()).
+    void unknownAxes(const toolpath::UnknownAxes& u) override { m_local.forget(u.axes); }
     void workingPlane(const toolpath::WorkingPlane& plane) override
     {
         if (const auto p = m_local.point())
@@ -158,12 +154,12 @@ private:
             return;
         if (!from) {
             ++m_out.movesFromUnknownPosition;
-            // After an untraced move (an UnknownAxes record) the tool stands at `end` when this move
-            // ends, wherever it came from: that pose is a move of its own (from == to), so a rapid
-            // that ends in the stock is the crash it is. The way there is not known and not cut.
-            if (m_lost && !m_inError)
+            // The move that makes the position whole (the program's first, or the first after an
+            // untraced move) leaves the tool standing at `end`, wherever it came from: that pose is
+            // a move of its own (from == to), so a rapid that ends in the stock is the crash it is.
+            // The way there is not known and not cut.
+            if (!m_inError)
                 push(*end, *end, kind, feed, 1.0, false);
-            m_lost = false;
             return;
         }
         if (m_inError || base::distance(*from, *end) < 1e-12)
@@ -199,7 +195,6 @@ private:
     MoveList& m_out;
     const MoveOptions& m_options;
     KnownPosition m_local;  // in the working plane's frame
-    bool m_lost = false;    // axes were made unknown after the position was whole (UnknownAxes)
     toolpath::WorkingPlane m_plane;
     Vec3 m_axis{0, 0, 1};
     toolpath::RotaryAxes m_machine{};
@@ -265,16 +260,21 @@ void MoveBuilder::toolAxisMove(const toolpath::ToolAxisMove& m)
     m_local.set(m_plane.toLocal(m.tip));
     m_axis = m.axis.normalized();
     m_machine = m.machine;
-    if (!from) {
+    Move piece = base(m.feedMmPerMin > 0 ? MoveKind::Feed : MoveKind::Rapid);
+    piece.fiveAxis = true;
+    piece.to = m.tip;
+    if (!from) {  // the tool stands at the end of the way no one knows (as in straight())
         ++m_out.movesFromUnknownPosition;
+        if (!m_inError) {
+            piece.from = piece.to;
+            setFeed(piece, m.feedMmPerMin, 1.0);
+            m_out.moves.push_back(piece);
+        }
         return;
     }
     if (m_inError)
         return;
-    Move piece = base(m.feedMmPerMin > 0 ? MoveKind::Feed : MoveKind::Rapid);
-    piece.fiveAxis = true;
     piece.from = *from;
-    piece.to = m.tip;
     piece.fromAxis = fromAxis;
     piece.toAxis = m_axis;
     piece.fromMachine = fromMachine;

@@ -83,9 +83,9 @@ struct MoveList {
     std::map<int, toolpath::Tool> tools;  // every tool changed to, by number
     std::vector<MoveSection> sections;
     // Records whose motion could not be followed: a move from an unknown position (a CL that
-    // gives only Z before its first X/Y) only sets what it knows and makes no Move, except that
-    // after an untraced move (UnknownAxes) the one that makes the position whole again stands at
-    // its end (a Move with from == to) so that the stock there is checked.
+    // gives only Z before its first X/Y) only sets what it knows and makes no motion; the one
+    // that makes the position whole (the program's first, or the first after an untraced move,
+    // UnknownAxes) stands at its end (a Move with from == to) so that the stock there is checked.
     std::size_t movesFromUnknownPosition = 0;
 
     const toolpath::Tool* tool(int number) const;

@@ -357,11 +357,11 @@ TEST(MotionPlan, ATurnOntoANewPlaneTakesTheRotaryAxesTime)
     program.add(plane);
     program.add(toolpath::Rapid{{0, 0, 70}});
     const sim::MoveList list = sim::buildMoves(program);
-    ASSERT_EQ(list.moves.size(), 3u);
+    ASSERT_EQ(list.moves.size(), 4u);  // standing at Z 50, up to 60, the turn, up to 70
     const sim::MotionPlan plan = sim::planMotion(list, m);
-    EXPECT_TRUE(plan.moves[1].rotationOnly);
-    EXPECT_NEAR(plan.moves[1].length, 30, 1e-6);  // degrees of A
-    EXPECT_GT(plan.moves[1].moveSeconds, 30.0 / 60);
+    EXPECT_TRUE(plan.moves[2].rotationOnly);
+    EXPECT_NEAR(plan.moves[2].length, 30, 1e-6);  // degrees of A
+    EXPECT_GT(plan.moves[2].moveSeconds, 30.0 / 60);
     double fastestA = 0;
     const auto samples = sim::sampleMotion(list, plan, m);
     for (std::size_t k = 1; k < samples.size(); ++k)

@@ -37,15 +37,20 @@ TEST(SimMoves, StraightMovesKeepFeedToolSpindleAndRecord)
     p.add(Linear{{0, 0, -2}, 100});
     p.add(Linear{{30, 0, -2}, 600});
     const sim::MoveList list = sim::buildMoves(p);
-    ASSERT_EQ(list.moves.size(), 3u);  // the tool change (no position yet) and two feed moves
+    // The tool change (no position yet), the tool standing where the first rapid ends (from an
+    // unknown place) and two feed moves.
+    ASSERT_EQ(list.moves.size(), 4u);
     EXPECT_EQ(list.moves[0].kind, MoveKind::ToolChange);
     EXPECT_FALSE(list.moves[0].positionKnown);
-    EXPECT_EQ(list.moves[1].kind, MoveKind::Feed);
-    EXPECT_DOUBLE_EQ(list.moves[1].feedMmPerMin, 100);
-    EXPECT_EQ(list.moves[2].record, 4u);
-    EXPECT_EQ(list.moves[2].tool, 3);
-    EXPECT_DOUBLE_EQ(list.moves[2].spindleRpm, 2000);
-    EXPECT_DOUBLE_EQ(list.moves[2].lengthMm(), 30);
+    EXPECT_EQ(list.moves[1].kind, MoveKind::Rapid);
+    EXPECT_EQ(list.moves[1].record, 2u);
+    EXPECT_DOUBLE_EQ(list.moves[1].lengthMm(), 0);
+    EXPECT_EQ(list.moves[2].kind, MoveKind::Feed);
+    EXPECT_DOUBLE_EQ(list.moves[2].feedMmPerMin, 100);
+    EXPECT_EQ(list.moves[3].record, 4u);
+    EXPECT_EQ(list.moves[3].tool, 3);
+    EXPECT_DOUBLE_EQ(list.moves[3].spindleRpm, 2000);
+    EXPECT_DOUBLE_EQ(list.moves[3].lengthMm(), 30);
     ASSERT_NE(list.tool(3), nullptr);
     EXPECT_DOUBLE_EQ(list.tool(3)->diameterMm, 10);
 }
@@ -57,8 +62,14 @@ TEST(SimMoves, AMoveFromAnUnknownPositionMakesNoMotion)
     p.add(Rapid{{5, 6, 0}, AxisMask{AxisMask::kX | AxisMask::kY}});
     p.add(Linear{{5, 6, 0}, 100});
     const sim::MoveList list = sim::buildMoves(p);
-    ASSERT_EQ(list.moves.size(), 1u);  // only the plunge from (5, 6, 20), never a line from a guess
-    EXPECT_EQ(list.moves[0].from.z, 20);
+    // The tool standing where the position became whole, then the plunge from (5, 6, 20); never
+    // a line from a guess.
+    ASSERT_EQ(list.moves.size(), 2u);
+    EXPECT_EQ(list.moves[0].kind, MoveKind::Rapid);
+    EXPECT_EQ(list.moves[0].from, (Vec3{5, 6, 20}));
+    EXPECT_EQ(list.moves[0].to, (Vec3{5, 6, 20}));
+    EXPECT_EQ(list.moves[1].from, (Vec3{5, 6, 20}));
+    EXPECT_EQ(list.moves[1].to, (Vec3{5, 6, 0}));
     EXPECT_EQ(list.movesFromUnknownPosition, 1u);
 }
 
@@ -74,14 +85,17 @@ TEST(SimMoves, AfterUnknownAxesNoMoveStartsFromTheirOldValues)
     p.add(Rapid{{0, 0, 5}, AxisMask{AxisMask::kZ}});
     p.add(Linear{{90, 90, -5}, 100});
     const sim::MoveList list = sim::buildMoves(p);
-    ASSERT_EQ(list.moves.size(), 3u);  // the two plunges, and the tool standing where Z is given again
-    EXPECT_EQ(list.moves[0].to, (Vec3{10, 10, -5}));
-    EXPECT_EQ(list.moves[1].kind, MoveKind::Rapid);
-    EXPECT_EQ(list.moves[1].from, (Vec3{90, 90, 5}));
-    EXPECT_EQ(list.moves[1].to, (Vec3{90, 90, 5}));
-    EXPECT_EQ(list.moves[1].record, 4u);
+    // The tool standing where the first rapid ends, the two plunges, and the tool standing where
+    // Z is given again.
+    ASSERT_EQ(list.moves.size(), 4u);
+    EXPECT_EQ(list.moves[0].to, (Vec3{10, 10, 20}));
+    EXPECT_EQ(list.moves[1].to, (Vec3{10, 10, -5}));
+    EXPECT_EQ(list.moves[2].kind, MoveKind::Rapid);
     EXPECT_EQ(list.moves[2].from, (Vec3{90, 90, 5}));
-    EXPECT_EQ(list.moves[2].record, 5u);
+    EXPECT_EQ(list.moves[2].to, (Vec3{90, 90, 5}));
+    EXPECT_EQ(list.moves[2].record, 4u);
+    EXPECT_EQ(list.moves[3].from, (Vec3{90, 90, 5}));
+    EXPECT_EQ(list.moves[3].record, 5u);
     EXPECT_EQ(list.movesFromUnknownPosition, 2u);  // the first move and the one down to Z 5
 }
 
@@ -94,8 +108,10 @@ TEST(SimMoves, ArcsAreSplitWithinTheChordTolerance)
     options.chordToleranceMm = 0.01;
     const sim::MoveList list = sim::buildMoves(p, options);
     ASSERT_GT(list.moves.size(), 10u);
+    EXPECT_EQ(list.moves[0].lengthMm(), 0);  // the rapid from an unknown place: the tool stands at its end
     double length = 0;
-    for (const sim::Move& m : list.moves) {  // the rapid only set the start
+    for (std::size_t i = 1; i < list.moves.size(); ++i) {
+        const sim::Move& m = list.moves[i];
         EXPECT_TRUE(m.fromArc);
         EXPECT_DOUBLE_EQ(m.feedMmPerMin, 300);
         const base::Vec3 mid = (m.from + m.to) * 0.5;
@@ -137,7 +153,9 @@ TEST(SimMoves, CyclesAreTheMovesAControlMakes)
     const sim::MoveList list = sim::buildMoves(p);
     int feeds = 0;
     double deepest = 0;
-    for (const sim::Move& m : list.moves) {
+    EXPECT_EQ(list.moves.at(0).record, 0u);  // the tool standing where the first rapid ends
+    for (std::size_t i = 1; i < list.moves.size(); ++i) {
+        const sim::Move& m = list.moves[i];
         feeds += m.kind == MoveKind::Feed;
         deepest = std::min(deepest, m.to.z);
         EXPECT_EQ(m.record, 1u);
@@ -157,10 +175,11 @@ TEST(SimMoves, WorkingPlanesPutMovesInTheWorkpieceFrame)
     p.add(Rapid{{0, 0, 10}});
     p.add(Linear{{0, 0, 0}, 100});
     const sim::MoveList list = sim::buildMoves(p);
-    ASSERT_EQ(list.moves.size(), 1u);
-    EXPECT_NEAR(list.moves[0].from.x, 110, 1e-12);
-    EXPECT_NEAR(list.moves[0].to.x, 100, 1e-12);
-    EXPECT_NEAR(list.moves[0].toAxis.x, 1, 1e-12);  // the tool stands along the plane's Z
+    ASSERT_EQ(list.moves.size(), 2u);  // standing where the first rapid ends, then the feed
+    EXPECT_NEAR(list.moves[0].to.x, 110, 1e-12);
+    EXPECT_NEAR(list.moves[1].from.x, 110, 1e-12);
+    EXPECT_NEAR(list.moves[1].to.x, 100, 1e-12);
+    EXPECT_NEAR(list.moves[1].toAxis.x, 1, 1e-12);  // the tool stands along the plane's Z
 }
 
 TEST(SimMoves, SectionsSpanTheirMoves)
@@ -178,8 +197,8 @@ TEST(SimMoves, SectionsSpanTheirMoves)
     const sim::MoveList list = sim::buildMoves(p);
     ASSERT_EQ(list.sections.size(), 1u);
     EXPECT_EQ(list.sections[0].name, "Slot");
-    EXPECT_EQ(list.sections[0].firstMove, 0u);
-    EXPECT_EQ(list.sections[0].endMove, 2u);
+    EXPECT_EQ(list.sections[0].firstMove, 1u);  // after the tool standing where the first rapid ends
+    EXPECT_EQ(list.sections[0].endMove, 3u);
 }
 
 TEST(SimMoves, JointInterpolatedMovesFollowTheTipsCurve)
@@ -207,8 +226,10 @@ TEST(SimMoves, JointInterpolatedMovesFollowTheTipsCurve)
     // Without TCPM the linear axes travel straight from one end to the other while C turns, so
     // the tip leaves (50, 0, 0) on the workpiece and comes back: pieces, not a zero-length move.
     ASSERT_GT(list.moves.size(), 4u);
+    EXPECT_EQ(list.moves[0].lengthMm(), 0);  // the first pose, reached from an unknown place
     double farthest = 0;
-    for (const sim::Move& m : list.moves) {
+    for (std::size_t i = 1; i < list.moves.size(); ++i) {
+        const sim::Move& m = list.moves[i];
         EXPECT_TRUE(m.jointInterpolated);
         farthest = std::max(farthest, base::distance(m.to, {50, 0, 0}));
     }
@@ -235,15 +256,15 @@ TEST(SimMoves, ANewToolAxisIsATurnAboutTheStandingTip)
     p.add(plane);
     p.add(Rapid{{0, 0, 60}});
     const sim::MoveList list = sim::buildMoves(p);
-    ASSERT_EQ(list.moves.size(), 2u);
-    const sim::Move& turn = list.moves[0];
+    ASSERT_EQ(list.moves.size(), 3u);  // standing where the first rapid ends, the turn, the rapid
+    const sim::Move& turn = list.moves[1];
     EXPECT_EQ(turn.kind, MoveKind::Rapid);
     EXPECT_EQ(turn.from, turn.to);
     EXPECT_NEAR(turn.fromAxis.z, 1, 1e-12);
     EXPECT_NEAR(turn.toAxis.x, 1, 1e-12);
     EXPECT_EQ(turn.toMachine.known, 0);
     EXPECT_EQ(turn.record, 2u);
-    const sim::Move& after = list.moves[1];
+    const sim::Move& after = list.moves[2];
     EXPECT_NEAR(after.fromAxis.x, 1, 1e-12);  // continues from the turned axis
     EXPECT_EQ(after.fromMachine.known, 0);
     EXPECT_NEAR(after.to.x, 60, 1e-12);  // along the plane's Z, which is the workpiece's X

@@ -172,6 +172,28 @@ TEST(SimRun, NoRapidIsCutFromAnUnknownHeight)
     EXPECT_EQ(rapids[0].record, 6);
 }
 
+// The program's first move comes from where the machine happened to stand: unknown, so not cut,
+// but where it ends the tool stands, and a rapid that ends in the stock there is a crash.
+TEST(SimRun, TheFirstRapidEndingInTheStockIsACrash)
+{
+    sim::HeightField stock({{0, 0, 0}, {60, 40, 20}, false}, 0.2);
+    Toolpath crash;
+    crash.add(ToolChange{flat10()});
+    crash.add(Spindle{3000, true});
+    crash.add(Rapid{{30, 20, 15}});  // record 2
+    const auto rapids = of(run(crash, stock), CheckKind::RapidInStock);
+    ASSERT_EQ(rapids.size(), 1u);
+    EXPECT_EQ(rapids[0].record, 2);
+
+    sim::HeightField clear({{0, 0, 0}, {60, 40, 20}, false}, 0.2);
+    Toolpath above;
+    above.add(ToolChange{flat10()});
+    above.add(Spindle{3000, true});
+    above.add(Rapid{{30, 20, 25}});
+    above.add(Rapid{{30, 20, 22}});
+    EXPECT_TRUE(of(run(above, clear), CheckKind::RapidInStock).empty());
+}
+
 TEST(SimRun, AHolderTooShortForADeepPocketHitsTheStock)
 {
     sim::HeightField stock({{0, 0, 0}, {60, 60, 40}, false}, 0.2);

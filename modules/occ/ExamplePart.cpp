@@ -1,6 +1,7 @@
 // writeExamplePart: builds the teaching block with OCCT primitives and booleans and writes it as STEP.
 #include "occ/ExamplePart.h"
 
+#include "occ/detail/DataExchangeLock.h"
 #include "occ/detail/PartBuilders.h"
 
 #include <APIHeaderSection_MakeHeader.hxx>
@@ -44,6 +45,7 @@ base::Status writeStep(const std::function<TopoDS_Shape()>& build, const char* n
 {
     try {
         const TopoDS_Shape part = build();
+        const std::lock_guard<std::mutex> lock(dataExchangeMutex());
         STEPControl_Writer writer;
         if (writer.Transfer(part, STEPControl_AsIs) != IFSelect_RetDone)
             return base::makeError("could not convert the example part to STEP", stepPath);

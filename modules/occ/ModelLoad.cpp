@@ -2,6 +2,7 @@
 // Message_ProgressIndicator and turning every OCCT failure into a base::Error.
 #include "occ/Model.h"
 
+#include "occ/detail/DataExchangeLock.h"
 #include "occ/detail/ModelData.h"
 #include "occ/detail/OcctMessages.h"
 
@@ -232,9 +233,11 @@ base::Status loadInto(ModelData& data, const std::string& ext, ProgressBridge& b
 
     base::Result<TopoDS_Shape> shape = base::makeError("unsupported file type", path);
     if (ext == ".step" || ext == ".stp") {
+        const std::lock_guard<std::mutex> lock(detail::dataExchangeMutex());
         STEPControl_Reader reader;
         shape = readExchange(reader, path, "not a STEP file", root.Next(9), bridge);
     } else if (ext == ".iges" || ext == ".igs") {
+        const std::lock_guard<std::mutex> lock(detail::dataExchangeMutex());
         IGESControl_Reader reader;
         shape = readExchange(reader, path, "not an IGES file", root.Next(9), bridge);
     } else {

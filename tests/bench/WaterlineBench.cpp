@@ -7,6 +7,7 @@
 // the same work. Figures in docs/benchmarks.md; never asserted.
 #include "SliceTestUtil.h"
 
+#include "ops/Pocket3dOp.h"
 #include "ops/WaterlineOp.h"
 
 #include <benchmark/benchmark.h>
@@ -62,6 +63,41 @@ BENCHMARK(BM_WaterlineSphere)
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime()
     ->Iterations(1);
+
+// The 3D pocket's roughing round the same spheres: a flat D10, 2 mm levels from Z 50 down to Z 0
+// (25 levels), 50 % stepover, offset pattern, 0.3 mm side and 0.2 mm bottom stock, tolerance
+// 0.01 mm, the stock box from -60 to 60: the material round the upper half cleared.
+void BM_Pocket3dSphere(benchmark::State& state)
+{
+    const int rings = int(state.range(0));
+    const sim::TriangleMesh sphere = ops::surface::test::sphereMesh({}, 50, rings, 2 * rings);
+    ops::SurfaceInput input;
+    input.model = &sphere;
+    input.stock.add({-60, -60, -50});
+    input.stock.add({60, 60, 50});
+    ops::Pocket3dParams p;
+    p.heights = {70, 60, 50, 0};
+    p.stepDownMm = 2;
+    ops::ToolController tc;
+    tc.tool.kind = "flat";
+    tc.tool.diameterMm = 10;
+    tc.tool.fluteLengthMm = 60;
+    tc.spindleRpm = 8000;
+    tc.cuttingFeedMmPerMin = 2000;
+    tc.plungeFeedMmPerMin = 500;
+    std::size_t records = 0;
+    for (auto _ : state) {
+        auto result = ops::computePocket3d(input, p, tc, 0);
+        if (!result) {
+            state.SkipWithError(result.error().message.c_str());
+            return;
+        }
+        records = result.value().toolpath.size();
+    }
+    state.counters["triangles"] = double(sphere.triangleCount());
+    state.counters["records"] = double(records);
+}
+BENCHMARK(BM_Pocket3dSphere)->Arg(70)->Arg(224)->Arg(500)->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(1);
 
 }  // namespace
 

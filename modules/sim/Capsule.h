@@ -23,14 +23,20 @@ public:
             m_edges[k] = {std::min(p.y, q.y), std::max(p.y, q.y), p.x, p.y, p.y == q.y ? 0 : (q.x - p.x) / (q.y - p.y)};
         }
     }
-    bool row(double y, double& xlo, double& xhi) const
+    // `aHalf`, when given, gets the half chord of a's disc on the row (-1 where the row misses
+    // it): the height field sweeps what lies beyond that disc and need not take its root again.
+    bool row(double y, double& xlo, double& xhi, double* aHalf = nullptr) const
     {
         xlo = 1e300, xhi = -1e300;
+        if (aHalf)
+            *aHalf = -1;
         for (const base::Vec2 c : {m_a, m_b}) {
             const double dy = y - c.y;
             if (std::abs(dy) <= m_r) {
                 const double half = std::sqrt(m_r * m_r - dy * dy);
                 xlo = std::min(xlo, c.x - half), xhi = std::max(xhi, c.x + half);
+                if (aHalf && c == m_a)
+                    *aHalf = half;
             }
         }
         for (const Edge& e : m_edges) {

@@ -30,6 +30,20 @@ template <class F> double convexMin(F f, double lo, double hi)
     return std::min({f1, f2, f(lo), f(hi)});
 }
 
+// floor and ceil to int for the column indices (well within int's range): the same values as
+// std::floor and std::ceil, without the checks for huge arguments that x86-64's baseline (no
+// SSE4.1 rounding instruction) makes them take, a good part of a row's cost.
+int floorToInt(double u)
+{
+    const int t = int(u);  // towards zero
+    return t - int(double(t) > u);
+}
+int ceilToInt(double u)
+{
+    const int t = int(u);
+    return t + int(double(t) < u);
+}
+
 }  // namespace
 
 void ColumnRect::add(const ColumnRect& r)
@@ -228,7 +242,7 @@ void HeightField::noteGouge(int i, int j, double z, CutResult& result) const
 void HeightField::cutVertical(const Move& move, std::size_t moveIndex, const ToolShape& tool, CutResult& result)
 {
     const base::Vec2 c0 = move.from.xy(), c1 = move.to.xy(), v = c1 - c0;
-    const double z0 = move.from.z, dz = move.to.z - move.from.z, vv = v.dot(v);
+    const double z0 = move.from.z, dz = move.to.z - move.from.z, vv = v.dot(v), perVv = vv < 1e-18 ? 0 : 1 / vv;
     const double r = tool.radiusMm(), reach = r;
     const bool flat = tool.flatBottomed();
     const bool plunge = -dz > std::sqrt(vv);  // descends along the axis more than it travels aside
@@ -242,12 +256,16 @@ void HeightField::cutVertical(const Move& move, std::size_t moveIndex, const Too
             ta = 0, tb = 1;
             return true;
         }
-        const double half = std::sqrt((radius * radius - e2) / vv);
+        const double half = std::sqrt((radius * radius - e2) * perVv);
         ta = std::max(0.0, tStar - half), tb = std::min(1.0, tStar + half);
         return ta <= tb;
     };
     const ColumnRect near = columnsWithin(c0, c1, reach);
     const int j0 = near.j0, j1 = near.j1;
+    // Column indices from x by one multiplication: the rows' critical path was a division.
+    const double perColumn = 1 / m_dx, offset = m_box.min.x * perColumn + 0.5;
+    auto firstAtOrRight = [&](double x) { return ceilToInt(x * perColumn - offset); };
+    auto lastAtOrLeft = [&](double x) { return floorToInt(x * perColumn - offset); };
     const Capsule capsule(c0, c1, r);
     if (flat && std::abs(dz) < 1e-12 && !plunge) {
         // A flat tool moving level: every column under the capsule goes down to z, so a row is
@@ -258,10 +276,6 @@ void HeightField::cutVertical(const Move& move, std::size_t moveIndex, const Too
         auto sweep = [&](int j, int i0, int i1) {
             lowerSpan(j, std::max(0, i0), std::min(m_nx - 1, i1), z0, moveIndex, result);
         };
-        // Column indices from x by one multiplication: this loop's critical path was a division.
-        const double perColumn = 1 / m_dx, offset = m_box.min.x * perColumn + 0.5;
-        auto firstAtOrRight = [&](double x) { return int(std::ceil(x * perColumn - offset)); };
-        auto lastAtOrLeft = [&](double x) { return int(std::floor(x * perColumn - offset)); };
         for (int j = j0; j <= j1; ++j) {
             double xlo, xhi, half;  // half: the start disc's chord on this row, -1 off it
             const double y = columnY(j);
@@ -283,8 +297,7 @@ void HeightField::cutVertical(const Move& move, std::size_t moveIndex, const Too
         double xlo, xhi;
         if (!capsule.row(y, xlo, xhi))
             continue;
-        const int i0 = std::max(0, int(std::floor((xlo - m_box.min.x) / m_dx - 0.5)));
-        const int i1 = std::min(m_nx - 1, int(std::ceil((xhi - m_box.min.x) / m_dx - 0.5)));
+        const int i0 = std::max(0, lastAtOrLeft(xlo)), i1 = std::min(m_nx - 1, firstAtOrRight(xhi));
         // A flat tool ramping: its lowest point over a column is where the column last (going
         // down) or first (going up) lies under it, so the disc at that end of the move is at that
         // end's height, without a root per column. Going up from where the last cut left this
@@ -296,8 +309,7 @@ void HeightField::cutVertical(const Move& move, std::size_t moveIndex, const Too
         const bool discDone = !down && m_lastFlatVertical && m_lastRadius == r && m_lastEnd == move.from;
         if (flat && !plunge && vv >= 1e-18 && std::abs(y - disc.y) < r) {
             const double half = std::sqrt(r * r - (y - disc.y) * (y - disc.y));
-            k0 = int(std::ceil((disc.x - half - m_box.min.x) / m_dx - 0.5));
-            k1 = int(std::floor((disc.x + half - m_box.min.x) / m_dx - 0.5));
+            k0 = firstAtOrRight(disc.x - half), k1 = lastAtOrLeft(disc.x + half);
         }
         for (int i = i0; i <= i1; ++i) {
             if (i >= k0 && i <= k1) {  // the end disc's span of this row, in one go
@@ -307,7 +319,7 @@ void HeightField::cutVertical(const Move& move, std::size_t moveIndex, const Too
                 continue;
             }
             const base::Vec2 w = base::Vec2{columnX(i), y} - c0;
-            const double tStar = vv < 1e-18 ? 0 : w.dot(v) / vv;
+            const double tStar = w.dot(v) * perVv;
             const double e2 = std::max(0.0, w.dot(w) - tStar * tStar * vv);  // squared distance to the line
             double ta, tb;
             if (!under(e2, tStar, r, ta, tb))

@@ -191,6 +191,23 @@ TEST(SimHeightField, MovesThroughAirRemoveNothing)
     EXPECT_NEAR(stock.volumeMm3(), 60 * 40 * 20 - rapidIn, 1e-6);
 }
 
+// Beside the stock's edge the capsule can end between the edge and the first column's centre:
+// that column is not under the tool (its index rounds down to -1, not towards zero to 0).
+TEST(SimHeightField, ACutBesideTheStockLeavesTheColumnsItMisses)
+{
+    HeightField stock(box({0, 0, 0}, {60, 40, 20}), 0.1);
+    const ToolShape tool(makeTool("flat", 10));
+    // The tool's edge at x = 0.02 and y = 39.97; the first column's centre at 0.05, the last
+    // row's at 39.95.
+    EXPECT_EQ(stock.cut(makeMove({-4.98, 10, 15}, {-4.98, 30, 15}), 0, tool).removedMm3, 0);
+    EXPECT_EQ(stock.cut(makeMove({20, 44.97, 15}, {40, 44.97, 15}), 1, tool).removedMm3, 0);
+    EXPECT_EQ(stock.top(0, 200), 20);
+    EXPECT_EQ(stock.lastCut(0, 200), -1);
+    // A hair further in, the column is cut.
+    EXPECT_GT(stock.cut(makeMove({-4.94, 10, 15}, {-4.94, 30, 15}), 2, tool).removedMm3, 0);
+    EXPECT_EQ(stock.top(0, 200), 15);
+}
+
 // A long move over cleared ground is passed over by the tiles' bounds, but not one that meets the
 // material left between the cleared ends, however little of its length does.
 TEST(SimHeightField, LongMoveOverClearedGroundCutsOnlyWhereMaterialIsLeft)

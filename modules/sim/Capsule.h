@@ -23,22 +23,25 @@ public:
             m_edges[k] = {std::min(p.y, q.y), std::max(p.y, q.y), p.x, p.y, p.y == q.y ? 0 : (q.x - p.x) / (q.y - p.y)};
         }
     }
-    // `aHalf`, when given, gets the half chord of a's disc on the row (-1 where the row misses
-    // it): the height field sweeps what lies beyond that disc and need not take its root again.
-    bool row(double y, double& xlo, double& xhi, double* aHalf = nullptr) const
+    bool row(double y, double& xlo, double& xhi) const
+    {
+        return rowFromChords(y, halfChord(m_a, y), halfChord(m_b, y), xlo, xhi);
+    }
+    // The half chord of the disc of the capsule's radius round `c` on row y; -1 where the row
+    // misses it. For the end discs this is the root row() takes: a caller that keeps an end's
+    // chords (the next move starts there) hands them to rowFromChords().
+    double halfChord(base::Vec2 c, double y) const
+    {
+        const double dy = y - c.y;
+        return std::abs(dy) <= m_r ? std::sqrt(m_r * m_r - dy * dy) : -1;
+    }
+    bool rowFromChords(double y, double aHalf, double bHalf, double& xlo, double& xhi) const
     {
         xlo = 1e300, xhi = -1e300;
-        if (aHalf)
-            *aHalf = -1;
-        for (const base::Vec2 c : {m_a, m_b}) {
-            const double dy = y - c.y;
-            if (std::abs(dy) <= m_r) {
-                const double half = std::sqrt(m_r * m_r - dy * dy);
-                xlo = std::min(xlo, c.x - half), xhi = std::max(xhi, c.x + half);
-                if (aHalf && c == m_a)
-                    *aHalf = half;
-            }
-        }
+        if (aHalf >= 0)
+            xlo = std::min(xlo, m_a.x - aHalf), xhi = std::max(xhi, m_a.x + aHalf);
+        if (bHalf >= 0)
+            xlo = std::min(xlo, m_b.x - bHalf), xhi = std::max(xhi, m_b.x + bHalf);
         for (const Edge& e : m_edges) {
             if (y < e.ylo || y > e.yhi || e.ylo == e.yhi)
                 continue;

@@ -122,7 +122,8 @@ std::size_t HeightField::memoryBytes() const
     return sizeof(*this) +
            sizeof(float) * (m_top.capacity() + m_bottom.capacity() + m_design.capacity() + m_designNear.capacity() +
                             m_tileTop.capacity()) +
-           sizeof(std::int32_t) * m_lastCut.capacity() + m_tileStale.capacity();
+           sizeof(std::int32_t) * m_lastCut.capacity() + m_tileStale.capacity() +
+           sizeof(double) * (m_endChords.half.capacity() + m_spareChords.half.capacity());
 }
 
 ColumnRect HeightField::takeChanged() { return std::exchange(m_changed, ColumnRect{}); }
@@ -215,6 +216,12 @@ ColumnRect HeightField::columnsWithin(base::Vec2 a, base::Vec2 b, double reach) 
         m_cutNow.add(first, j), m_cutNow.add(last, j), result.removedMm3 += removed * m_dx * m_dy;
 }
 
+[[gnu::noinline]] void HeightField::lowerLongSpan(int j, int i0, int i1, double height, std::size_t moveIndex,
+                                                  CutResult& result)
+{
+    lowerSpan(j, i0, i1, height, moveIndex, result);
+}
+
 // One column: lowerSpan's loop over it (the one place that lowers a column, counts its volume,
 // marks its move and looks for a gouge).
 inline void HeightField::lower(int i, int j, double height, std::size_t moveIndex, CutResult& result)
@@ -276,10 +283,25 @@ void HeightField::cutVertical(const Move& move, std::size_t moveIndex, const Too
         auto sweep = [&](int j, int i0, int i1) {
             lowerSpan(j, std::max(0, i0), std::min(m_nx - 1, i1), z0, moveIndex, result);
         };
+        // The end disc's chords on the rows first, in a loop of their own (the roots overlap),
+        // kept for the next move: a chain of arc pieces then takes one root a row instead of two.
+        DiscChords& end = m_spareChords;
+        end.centre = c1, end.radius = r, end.j0 = j0;
+        end.half.resize(std::size_t(std::max(0, j1 - j0 + 1)));
+        for (int j = j0; j <= j1; ++j)
+            end.half[std::size_t(j - j0)] = capsule.halfChord(c1, columnY(j));
+        const DiscChords& start = m_endChords;
+        const bool startKept = start.radius == r && start.centre == c0;
+        auto startChord = [&](int j) {
+            const int kept = j - start.j0;
+            return startKept && kept >= 0 && kept < int(start.half.size()) ? start.half[std::size_t(kept)]
+                                                                           : capsule.halfChord(c0, columnY(j));
+        };
         for (int j = j0; j <= j1; ++j) {
-            double xlo, xhi, half;  // half: the start disc's chord on this row, -1 off it
             const double y = columnY(j);
-            if (!capsule.row(y, xlo, xhi, &half))
+            const double half = startChord(j);  // the start disc's chord on this row, -1 off it
+            double xlo, xhi;
+            if (!capsule.rowFromChords(y, half, end.half[std::size_t(j - j0)], xlo, xhi))
                 continue;
             const int i0 = firstAtOrRight(xlo), i1 = lastAtOrLeft(xhi);
             if (!startDone || half <= 0) {
@@ -290,6 +312,7 @@ void HeightField::cutVertical(const Move& move, std::size_t moveIndex, const Too
             sweep(j, i0, std::min(i1, s0 - 1));
             sweep(j, std::max(i0, s1 + 1), i1);
         }
+        std::swap(m_endChords, m_spareChords);
         return;
     }
     for (int j = j0; j <= j1; ++j) {
@@ -314,7 +337,7 @@ void HeightField::cutVertical(const Move& move, std::size_t moveIndex, const Too
         for (int i = i0; i <= i1; ++i) {
             if (i >= k0 && i <= k1) {  // the end disc's span of this row, in one go
                 if (!discDone)
-                    lowerSpan(j, i, std::min(k1, i1), discZ, moveIndex, result);
+                    lowerLongSpan(j, i, std::min(k1, i1), discZ, moveIndex, result);
                 i = std::min(k1, i1);
                 continue;
             }

@@ -84,6 +84,9 @@ private:
     void lower(int i, int j, double height, std::size_t moveIndex, CutResult& result);
     // lower() over the columns i0..i1 of row j, all to one height (lower() is this over one column).
     void lowerSpan(int j, int i0, int i1, double height, std::size_t moveIndex, CutResult& result);
+    // lowerSpan() called, not inlined: for long spans (a ramp's end disc) inside a loop that
+    // needs many registers, where inlined its sum went to the stack at every column.
+    void lowerLongSpan(int j, int i0, int i1, double height, std::size_t moveIndex, CutResult& result);
     void noteGouge(int i, int j, double z, CutResult& result) const;  // out of the hot loop
     // The shank's and holder's reach into the stock along a vertical move (before it cuts).
     void checkHolder(const Move& move, const ToolShape& tool, CutResult& result) const;
@@ -108,6 +111,15 @@ private:
     int m_tilesX = 0, m_tilesY = 0;
     mutable std::vector<float> m_tileTop;
     mutable std::vector<std::uint8_t> m_tileStale;
+    // A disc's half chords on rows j0.. (-1 off it): the level sweep keeps its end disc's for the
+    // next move, which starts there (the chords are geometry: the stock's state does not age them).
+    struct DiscChords {
+        base::Vec2 centre;
+        double radius = -1;
+        int j0 = 0;
+        std::vector<double> half;
+    };
+    DiscChords m_endChords, m_spareChords;
     // Where the last cut left the tool: a level flat move starting there finds its start disc
     // already at its height, so it sweeps only what lies beyond (see cutVertical).
     Vec3 m_lastEnd;

@@ -191,6 +191,20 @@ TEST(SimHeightField, MovesThroughAirRemoveNothing)
     EXPECT_NEAR(stock.volumeMm3(), 60 * 40 * 20 - rapidIn, 1e-6);
 }
 
+// A level move keeps its end disc's chords for the next move that starts there: a bigger tool
+// starting at the same point must sweep its own disc there, not the last tool's.
+TEST(SimHeightField, ABiggerToolStartingWhereTheLastEndedSweepsItsOwnDisc)
+{
+    HeightField stock(box({0, 0, 0}, {60, 40, 20}), 0.1);
+    const ToolShape small(makeTool("flat", 6)), big(makeTool("flat", 12));
+    stock.cut(makeMove({20, 10, 15}, {20, 20, 15}), 0, small);  // a slot up to (20, 20)
+    EXPECT_EQ(topAt(stock, 15.05, 21.05), 20);                  // beside it
+    stock.cut(makeMove({20, 20, 15}, {30, 20, 15}), 1, big);    // on to the right
+    // The D12's round start on the rows the D6 crossed: 5.1 mm from its centre, and 6.05 mm.
+    EXPECT_EQ(topAt(stock, 15.05, 21.05), 15);
+    EXPECT_EQ(topAt(stock, 13.95, 20.05), 20);
+}
+
 // Beside the stock's edge the capsule can end between the edge and the first column's centre:
 // that column is not under the tool (its index rounds down to -1, not towards zero to 0).
 TEST(SimHeightField, ACutBesideTheStockLeavesTheColumnsItMisses)

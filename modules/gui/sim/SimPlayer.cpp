@@ -128,6 +128,7 @@ void SimPlayer::finishBuild(std::shared_ptr<SimRun> run, quint64 generation)
     }
     if (m_run->stock) {
         m_stock = std::make_unique<StockAnimation>(m_run);
+        m_shownFrame = nullptr;
         connect(m_stock.get(), &StockAnimation::frameReady, this, &SimPlayer::showStockFrame);
     }
     reportChecks();
@@ -183,6 +184,7 @@ void SimPlayer::clear()
 {
     pause();
     m_stock.reset();
+    m_shownFrame = nullptr;
     m_run = nullptr;
     m_deviation.reset();
     m_measured = nullptr;
@@ -365,7 +367,10 @@ void SimPlayer::showStockFrame()
     QElapsedTimer started;
     started.start();
     const std::shared_ptr<const StockFrame> frame = m_stock->frame();
-    if (!frame || !frame->positions)
+    if (!frame)
+        return;
+    m_shownFrame = frame;
+    if (!frame->positions)
         return;
     if (frame->deviation) {
         m_deviation = frame->deviation;
@@ -388,7 +393,11 @@ void SimPlayer::countUpdate(const QElapsedTimer& started)
     m_stats.meanUpdateMs = 1e3 * m_updateSeconds / m_updates;
 }
 
-bool SimPlayer::stockCaughtUp() const { return !m_stock || m_stock->isCaughtUp(); }
+// Caught up, the worker waits for a new target, so the frame it left is the one that got there.
+bool SimPlayer::stockCaughtUp() const
+{
+    return !m_stock || (m_stock->isCaughtUp() && m_stock->frame() == m_shownFrame);
+}
 
 void SimPlayer::countFrame()
 {

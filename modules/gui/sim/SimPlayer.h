@@ -28,6 +28,7 @@ namespace camwb::gui {
 class NcEditor;
 class SimChart;
 class StockAnimation;
+struct StockFrame;
 class View3D;
 
 struct PlaybackStats {
@@ -100,7 +101,8 @@ public:
     // The stock's deviation at the program's end: the animation's once it got there, else the
     // full run's (nullopt without a model to compare with).
     std::optional<sim::Deviation> deviation() const;
-    // The stock animation has cut up to the playback position.
+    // The stock animation has cut up to the playback position and the view shows that stock
+    // (the frame is delivered through the event loop after the cut).
     bool stockCaughtUp() const;
     PlaybackStats stats() const { return m_stats; }
 
@@ -145,6 +147,7 @@ private:
     QElapsedTimer m_clock;
     std::shared_ptr<const SimRun> m_run;
     std::unique_ptr<StockAnimation> m_stock;
+    std::shared_ptr<const StockFrame> m_shownFrame;  // the animation's frame the view last took
     std::shared_ptr<std::atomic<bool>> m_cancel;
     quint64 m_generation = 0;
     bool m_building = false;

@@ -269,10 +269,11 @@ void HeightField::cutVertical(const Move& move, std::size_t moveIndex, const Too
     };
     const ColumnRect near = columnsWithin(c0, c1, reach);
     const int j0 = near.j0, j1 = near.j1;
-    // Column indices from x by one multiplication: the rows' critical path was a division.
+    // The first column whose centre lies at or right of x, and the last at or left of it; from x
+    // by one multiplication (the rows' critical path was a division).
     const double perColumn = 1 / m_dx, offset = m_box.min.x * perColumn + 0.5;
-    auto firstAtOrRight = [&](double x) { return ceilToInt(x * perColumn - offset); };
-    auto lastAtOrLeft = [&](double x) { return floorToInt(x * perColumn - offset); };
+    auto columnAtOrRight = [&](double x) { return ceilToInt(x * perColumn - offset); };
+    auto columnAtOrLeft = [&](double x) { return floorToInt(x * perColumn - offset); };
     const Capsule capsule(c0, c1, r);
     if (flat && std::abs(dz) < 1e-12 && !plunge) {
         // A flat tool moving level: every column under the capsule goes down to z, so a row is
@@ -303,12 +304,12 @@ void HeightField::cutVertical(const Move& move, std::size_t moveIndex, const Too
             double xlo, xhi;
             if (!capsule.rowFromChords(y, half, end.half[std::size_t(j - j0)], xlo, xhi))
                 continue;
-            const int i0 = firstAtOrRight(xlo), i1 = lastAtOrLeft(xhi);
+            const int i0 = columnAtOrRight(xlo), i1 = columnAtOrLeft(xhi);
             if (!startDone || half <= 0) {
                 sweep(j, i0, i1);
                 continue;
             }
-            const int s0 = firstAtOrRight(c0.x - half), s1 = lastAtOrLeft(c0.x + half);
+            const int s0 = columnAtOrRight(c0.x - half), s1 = columnAtOrLeft(c0.x + half);
             sweep(j, i0, std::min(i1, s0 - 1));
             sweep(j, std::max(i0, s1 + 1), i1);
         }
@@ -320,7 +321,8 @@ void HeightField::cutVertical(const Move& move, std::size_t moveIndex, const Too
         double xlo, xhi;
         if (!capsule.row(y, xlo, xhi))
             continue;
-        const int i0 = std::max(0, lastAtOrLeft(xlo)), i1 = std::min(m_nx - 1, firstAtOrRight(xhi));
+        // Rounded outwards (at most a column beyond each end): each column is tested below.
+        const int i0 = std::max(0, columnAtOrLeft(xlo)), i1 = std::min(m_nx - 1, columnAtOrRight(xhi));
         // A flat tool ramping: its lowest point over a column is where the column last (going
         // down) or first (going up) lies under it, so the disc at that end of the move is at that
         // end's height, without a root per column. Going up from where the last cut left this
@@ -332,7 +334,7 @@ void HeightField::cutVertical(const Move& move, std::size_t moveIndex, const Too
         const bool discDone = !down && m_lastFlatVertical && m_lastRadius == r && m_lastEnd == move.from;
         if (flat && !plunge && vv >= 1e-18 && std::abs(y - disc.y) < r) {
             const double half = std::sqrt(r * r - (y - disc.y) * (y - disc.y));
-            k0 = firstAtOrRight(disc.x - half), k1 = lastAtOrLeft(disc.x + half);
+            k0 = columnAtOrRight(disc.x - half), k1 = columnAtOrLeft(disc.x + half);
         }
         for (int i = i0; i <= i1; ++i) {
             if (i >= k0 && i <= k1) {  // the end disc's span of this row, in one go

@@ -229,6 +229,17 @@ void MoveBuilder::arc(const toolpath::Arc& a)
         total += base::distance(p, q);
         p = q;
     }
+    // About the workpiece's Z and round (not a spiral between unequal radii): the stock may
+    // sweep the arc itself rather than its chords.
+    const Vec3 centre = m_plane.toWorkpiece(a.center);
+    const Vec3 normal = m_plane.direction(a.normal);
+    const double radius = base::distance(m_plane.toWorkpiece(*from).xy(), centre.xy());
+    auto onCircle = [&](const Vec3& local) {
+        return std::abs(base::distance(m_plane.toWorkpiece(local).xy(), centre.xy()) - radius) <= 1e-9 * (1 + radius);
+    };
+    const bool aboutZ = std::abs(normal.x) < 1e-12 && std::abs(normal.y) < 1e-12 && normal.z != 0 && radius > 1e-9 &&
+                        std::all_of(points.begin(), points.end(), onCircle);
+    const std::size_t first = m_out.moves.size();
     p = *from;
     for (const Vec3& q : points) {
         const double fraction = total > 0 ? base::distance(p, q) / total : 1.0 / points.size();
@@ -236,6 +247,9 @@ void MoveBuilder::arc(const toolpath::Arc& a)
             push(p, q, MoveKind::Feed, a.feedMmPerMin, fraction, true);
         p = q;
     }
+    if (aboutZ)
+        for (std::size_t k = first; k < m_out.moves.size(); ++k)
+            m_out.moves[k].arcCentre = centre.xy(), m_out.moves[k].arcRadius = radius;
 }
 
 void MoveBuilder::cycle(const toolpath::Cycle& c)
@@ -360,6 +374,23 @@ Vec3 Move::axisAt(double u) const
         return fromAxis;
     const double s = std::sin(angle);
     return fromAxis * (std::sin((1 - u) * angle) / s) + toAxis * (std::sin(u * angle) / s);
+}
+
+Vec3 Move::pointAt(double u) const
+{
+    if (u <= 0)
+        return from;
+    if (u >= 1)
+        return to;
+    const double z = from.z + u * (to.z - from.z);
+    if (arcRadius <= 0) {
+        const Vec3 p = from + (to - from) * u;
+        return {p.x, p.y, z};
+    }
+    const base::Vec2 a = from.xy() - arcCentre, b = to.xy() - arcCentre;
+    const double angle = u * std::atan2(a.cross(b), a.dot(b));  // a piece turns less than half a turn
+    const double c = std::cos(angle), s = std::sin(angle);
+    return {arcCentre.x + c * a.x - s * a.y, arcCentre.y + s * a.x + c * a.y, z};
 }
 
 const toolpath::Tool* MoveList::tool(int number) const

@@ -55,13 +55,35 @@ struct Move {
     double spindleRpm = 0;               // 0: stopped
     toolpath::RotaryAxes fromMachine{};  // machine rotary positions where the source gave them
     toolpath::RotaryAxes toMachine{};
+    // A piece of an arc or helix about the workpiece's Z axis: both ends lie on the circle of
+    // arcRadius round arcCentre, and the tip follows the arc between them (the straight piece is
+    // its chord). 0: not such a piece. The stock sweeps the arc itself, so that a block's pieces
+    // cut one by one and the block cut in one pass leave the same stock (Stock::cutArcRun).
+    base::Vec2 arcCentre;
+    double arcRadius = 0;
 
     double lengthMm() const { return base::distance(from, to); }
     // The tool axis at `u` (0..1) of the move: turned evenly (the angle grows with u) from
     // fromAxis to toAxis. Opposite ends have no even turn between them: fromAxis, not a guess.
     Vec3 axisAt(double u) const;
     bool moves() const { return kind == MoveKind::Rapid || kind == MoveKind::Feed; }
+    // The tip at `u` (0..1) of the move: along the arc for an arc piece, else on the chord; the
+    // ends are `from` and `to` exactly.
+    Vec3 pointAt(double u) const;
 };
+
+// True when `next` goes on from `piece` along the same level arc about Z (same block, circle,
+// height, tool and kind, vertical tool): the pieces a stock may sweep as one (Stock::cutArcRun).
+inline bool continuesLevelArc(const Move& piece, const Move& next)
+{
+    auto level = [](const Move& m) {
+        return m.arcRadius > 0 && m.kind == MoveKind::Feed && m.from.z == m.to.z && !m.fiveAxis &&
+               m.fromAxis == Vec3{0, 0, 1} && m.toAxis == Vec3{0, 0, 1};
+    };
+    return level(piece) && level(next) && next.from == piece.to && next.record == piece.record &&
+           next.tool == piece.tool && next.arcCentre == piece.arcCentre && next.arcRadius == piece.arcRadius &&
+           next.spindleRpm == piece.spindleRpm;
+}
 
 // An operation's span of moves (from SectionBegin to SectionEnd), for per-operation figures.
 struct MoveSection {

@@ -64,8 +64,7 @@ ToolPose Timeline::poseAt(const MovePoint& point) const
     if (!move.positionKnown)
         return {};
     const double f = i == point.move ? point.fraction : 1.0;
-    return {lerp(move.from, move.to, f), axisBetween(move.fromAxis, move.toAxis, f), m_moves->moves[point.move].tool,
-            true};
+    return {move.pointAt(f), axisBetween(move.fromAxis, move.toAxis, f), m_moves->moves[point.move].tool, true};
 }
 
 int Timeline::lineOf(std::size_t move) const
@@ -123,8 +122,8 @@ std::size_t Timeline::firstMoveOfRecord(std::size_t record) const
 sim::Move partOf(const sim::Move& move, double from, double to)
 {
     sim::Move part = move;
-    part.from = lerp(move.from, move.to, from);
-    part.to = lerp(move.from, move.to, to);
+    part.from = move.pointAt(from);  // on the arc for an arc's piece: the stock sweeps the arc
+    part.to = move.pointAt(to);
     part.fromAxis = axisBetween(move.fromAxis, move.toAxis, from);
     part.toAxis = axisBetween(move.fromAxis, move.toAxis, to);
     return part;

@@ -282,3 +282,34 @@ TEST(SimMoves, TheToolAxisTurnsEvenly)
     m.toAxis = {0, 0, -1};  // opposite: no even turn, the start's axis
     EXPECT_EQ(m.axisAt(0.5), m.fromAxis);
 }
+
+// The stock sweeps an arc about Z itself (HeightField::cutArcRun): its pieces carry the circle,
+// which pointAt() follows; an arc in another plane is left to its chords.
+TEST(SimMoves, PiecesOfAnArcAboutZCarryItsCircle)
+{
+    Toolpath p;
+    p.add(Rapid{{10, 0, 0}});
+    p.add(Arc{{-10, 0, 0}, {0, 0, 0}, {0, 0, 1}, false, 0, 300});
+    p.add(Arc{{10, 0, 0}, {0, 0, 0}, {0, 1, 0}, false, 0, 300});  // G18: about Y
+    const sim::MoveList list = sim::buildMoves(p);
+    std::size_t aboutZ = 0, aboutY = 0;
+    for (std::size_t i = 1; i < list.moves.size(); ++i) {
+        const sim::Move& m = list.moves[i];
+        if (m.record == 1) {
+            ++aboutZ;
+            EXPECT_EQ(m.arcCentre, (base::Vec2{0, 0}));
+            EXPECT_DOUBLE_EQ(m.arcRadius, 10);
+            EXPECT_NEAR(m.pointAt(0.5).xy().length(), 10, 1e-12);
+            EXPECT_EQ(m.pointAt(0), m.from);
+            EXPECT_EQ(m.pointAt(1), m.to);
+            if (i + 1 < list.moves.size() && list.moves[i + 1].record == 1)
+                EXPECT_TRUE(sim::continuesLevelArc(m, list.moves[i + 1]));
+        } else {
+            ++aboutY;
+            EXPECT_EQ(m.arcRadius, 0);
+            EXPECT_FALSE(sim::continuesLevelArc(list.moves[i - 1], m));
+        }
+    }
+    EXPECT_GT(aboutZ, 10u);
+    EXPECT_GT(aboutY, 10u);
+}

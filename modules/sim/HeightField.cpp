@@ -2,15 +2,16 @@
 
 #include "sim/Capsule.h"
 #include "sim/MeshRays.h"
+#include "sim/detail/HeightFieldRows.h"
 
 #include <algorithm>
 #include <cmath>
 
 namespace camwb::sim {
 
-namespace {
+using detail::kEps;
 
-constexpr double kEps = 1e-6;  // heights closer than this are the same (float storage)
+namespace {
 
 bool vertical(const Vec3& axis) { return std::abs(axis.x) < 1e-9 && std::abs(axis.y) < 1e-9 && axis.z > 0; }
 
@@ -28,20 +29,6 @@ template <class F> double convexMin(F f, double lo, double hi)
         }
     }
     return std::min({f1, f2, f(lo), f(hi)});
-}
-
-// floor and ceil to int for the column indices (well within int's range): the same values as
-// std::floor and std::ceil, without the checks for huge arguments that x86-64's baseline (no
-// SSE4.1 rounding instruction) makes them take, a good part of a row's cost.
-int floorToInt(double u)
-{
-    const int t = int(u);  // towards zero
-    return t - int(double(t) > u);
-}
-int ceilToInt(double u)
-{
-    const int t = int(u);
-    return t + int(double(t) < u);
 }
 
 }  // namespace
@@ -137,7 +124,7 @@ CutResult HeightField::cut(const Move& move, std::size_t moveIndex, const ToolSh
     if (vertical(move.fromAxis) && vertical(move.toAxis)) {
         // The cutter leads: the shank and holder meet what it left (a shank as wide as the
         // cutter rides in its own slot), so they are checked against the stock after the cut.
-        if (!clearOfStock(move, tool.radiusMm()))
+        if (!clearOfStock(move, tool.radiusMm() + arcBulge(move)))
             cutVertical(move, moveIndex, tool, result);
         checkHolder(move, tool, result);
     } else {
@@ -163,12 +150,16 @@ bool HeightField::clearOfStock(const Move& move, double reach) const
     const double cell = std::max(m_dx, m_dy);
     if (move.lengthMm() < kTile * cell)
         return false;
-    const ColumnRect near = columnsWithin(move.from.xy(), move.to.xy(), reach);
+    return tilesBelow(columnsWithin(move.from.xy(), move.to.xy(), reach), zLow + kEps);
+}
+
+bool HeightField::tilesBelow(const ColumnRect& near, double z) const
+{
     if (near.empty())
         return true;
     for (int tj = near.j0 / kTile; tj <= near.j1 / kTile; ++tj)
         for (int ti = near.i0 / kTile; ti <= near.i1 / kTile; ++ti)
-            if (tileTop(ti, tj) > zLow + kEps)  // a column here may rise above the cutter
+            if (tileTop(ti, tj) > z)  // a column here may rise above z
                 return false;
     return true;
 }
@@ -181,39 +172,6 @@ ColumnRect HeightField::columnsWithin(base::Vec2 a, base::Vec2 b, double reach) 
     rect.j0 = std::max(0, int(std::floor((std::min(a.y, b.y) - reach - m_box.min.y) / m_dy)));
     rect.j1 = std::min(m_ny - 1, int(std::floor((std::max(a.y, b.y) + reach - m_box.min.y) / m_dy)));
     return rect;
-}
-
-// Lowers the columns i0..i1 of row j to `height` (never below their bottoms): the level flat
-// cut's inner loop, with the changed rectangle grown once per row rather than per column. Inlined
-// by force: an arc piece's crescent is a column or two a row, where a call costs as much as the
-// loop (GCC would not inline it into cutVertical, and the 20k-block benchmark ran 4 % slower).
-[[gnu::always_inline]] inline void HeightField::lowerSpan(int j, int i0, int i1, double height, std::size_t moveIndex,
-                                                          CutResult& result)
-{
-    const std::size_t row = index(0, j);
-    float* top = &m_top[row];
-    const float* bottom = &m_bottom[row];
-    const float* design = m_design.empty() ? nullptr : &m_design[row];
-    std::int32_t* lastCut = &m_lastCut[row];
-    int first = -1, last = -1;
-    // Summed here and added once: kept in `result`, the sum would go through memory each column
-    // (a store and a load a column's critical path; the loop ran at half speed).
-    double removed = 0;
-    for (int i = i0; i <= i1; ++i) {
-        if (top[i] <= height + kEps)
-            continue;
-        const double newTop = std::max(height, double(bottom[i]));
-        if (newTop >= top[i] - kEps)
-            continue;
-        removed += top[i] - newTop;
-        top[i] = float(newTop);
-        lastCut[i] = std::int32_t(moveIndex);
-        first = first < 0 ? i : first, last = i;
-        if (design && newTop < design[i] - m_tolerance)
-            noteGouge(i, j, newTop, result);
-    }
-    if (first >= 0)
-        m_cutNow.add(first, j), m_cutNow.add(last, j), result.removedMm3 += removed * m_dx * m_dy;
 }
 
 [[gnu::noinline]] void HeightField::lowerLongSpan(int j, int i0, int i1, double height, std::size_t moveIndex,
@@ -269,11 +227,9 @@ void HeightField::cutVertical(const Move& move, std::size_t moveIndex, const Too
     };
     const ColumnRect near = columnsWithin(c0, c1, reach);
     const int j0 = near.j0, j1 = near.j1;
-    // The first column whose centre lies at or right of x, and the last at or left of it; from x
-    // by one multiplication (the rows' critical path was a division).
-    const double perColumn = 1 / m_dx, offset = m_box.min.x * perColumn + 0.5;
-    auto columnAtOrRight = [&](double x) { return ceilToInt(x * perColumn - offset); };
-    auto columnAtOrLeft = [&](double x) { return floorToInt(x * perColumn - offset); };
+    const detail::ColumnIndex column(m_box.min.x, m_dx);
+    auto columnAtOrRight = [&](double x) { return column.atOrRight(x); };
+    auto columnAtOrLeft = [&](double x) { return column.atOrLeft(x); };
     const Capsule capsule(c0, c1, r);
     if (flat && std::abs(dz) < 1e-12 && !plunge) {
         // A flat tool moving level: every column under the capsule goes down to z, so a row is
@@ -281,6 +237,10 @@ void HeightField::cutVertical(const Move& move, std::size_t moveIndex, const Too
         // last cut left this tool standing at the start, its disc there is already at z or
         // below: only the columns beyond it are looked at (short arc pieces sweep a crescent).
         const bool startDone = m_lastFlatVertical && m_lastRadius == r && m_lastEnd == move.from;
+        if (move.arcRadius > 0) {  // a piece of an arc: the arc's own sweep, as cutArcRun() makes it
+            sweepLevelArc(c0, c1, move.arcCentre, move.arcRadius, z0, r, startDone, moveIndex, result);
+            return;
+        }
         auto sweep = [&](int j, int i0, int i1) {
             lowerSpan(j, std::max(0, i0), std::min(m_nx - 1, i1), z0, moveIndex, result);
         };
@@ -391,7 +351,9 @@ void HeightField::checkHolder(const Move& move, const ToolShape& tool, CutResult
     if (tool.holderRadiusMm() > 0)
         parts.push_back({tool.holderRadiusMm(), tool.stickOutMm()});
     for (const Part& part : parts) {
-        const double reach = part.radius, lowest = zLow + part.bottom;
+        // An arc piece's cutter sweeps the arc, this the chord: narrowed by the arc's bulge, the
+        // chord's band lies within the arc's, so a shank as wide as the cutter rides in its slot.
+        const double reach = part.radius - arcBulge(move), lowest = zLow + part.bottom;
         if (lowest >= m_box.max.z)  // above the highest the stock ever was (the usual case)
             continue;
         const ColumnRect near = columnsWithin(c0, c0 + v, reach);

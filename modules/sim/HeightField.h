@@ -36,6 +36,10 @@ public:
     static std::unique_ptr<HeightField> fromMesh(const TriangleMesh& blank, double resolutionMm);
 
     CutResult cut(const Move& move, std::size_t moveIndex, const ToolShape& tool) override;
+    // A flat tool's level arc as annular sectors of at most a quarter turn, each with its end
+    // discs: the columns its pieces cut one by one (interior pieces' end discs lie inside the
+    // sector: a column can differ only where its centre lies within rounding of the sweep's edge).
+    CutResult cutArcRun(const Move* first, std::size_t count, std::size_t moveIndex, const ToolShape& tool) override;
     void setDesign(const TriangleMesh& model, double toleranceMm) override;
     Deviation compare() const override;
     double volumeMm3() const override;
@@ -79,6 +83,19 @@ private:
     ColumnRect columnsWithin(base::Vec2 a, base::Vec2 b, double reach) const;
     // True when a vertical move's cutter stays above every column within `reach` of it.
     bool clearOfStock(const Move& move, double reach) const;
+    // True when no column of `near` rises above z (by the tiles' upper bounds).
+    bool tilesBelow(const ColumnRect& near, double z) const;
+    // How far an arc piece strays from its chord (0 for a straight move).
+    static double arcBulge(const Move& move);
+    // A flat tool's sweep at height z along the arc from a to b about `centre` (less than a
+    // quarter turn, the way the shorter turn goes): the annular sector between the rays through
+    // a and b, the disc at b and, unless `startDone`, the disc at a. Its rows' bounds are computed
+    // the same way for a piece and for a run of pieces, so the pieces' sectors tile the run's.
+    void sweepLevelArc(base::Vec2 a, base::Vec2 b, base::Vec2 centre, double arcRadius, double z, double r,
+                       bool startDone, std::size_t moveIndex, CutResult& result);
+    // True when the shank and holder of `tool` at height z stay above every column within their
+    // reach of the box lo-hi: a run of cuts there cannot meet them (cuts only lower columns).
+    bool holderClear(base::Vec2 lo, base::Vec2 hi, double z, const ToolShape& tool) const;
     void cutTilted(const Move& move, std::size_t moveIndex, const ToolShape& tool, CutResult& result);
     // Lowers column (i, j) to `height`; accounts the removed volume, the gouge and the change.
     void lower(int i, int j, double height, std::size_t moveIndex, CutResult& result);

@@ -37,6 +37,17 @@ struct CutResult {
     double holderInterferenceMm = 0;  // deepest the shank or holder reaches into the remaining stock
     Vec3 holderAt;
     bool removedOnAxis = false;  // material removed under the tool's centre (an axial plunge)
+
+    // Adds what a following move did: the removal summed, the worst depths kept.
+    void add(const CutResult& next)
+    {
+        removedMm3 += next.removedMm3;
+        if (next.gougeMm > gougeMm)
+            gougeMm = next.gougeMm, gougeAt = next.gougeAt;
+        if (next.holderInterferenceMm > holderInterferenceMm)
+            holderInterferenceMm = next.holderInterferenceMm, holderAt = next.holderAt;
+        removedOnAxis = removedOnAxis || next.removedOnAxis;
+    }
 };
 
 // Remaining material against the design model, sampled over the stock's surface.
@@ -63,6 +74,17 @@ public:
     // Removes what `tool` sweeps along `move` (index `moveIndex` of its MoveList, so a result can
     // name its block later). Pauses (dwell, tool change) cut nothing.
     virtual CutResult cut(const Move& move, std::size_t moveIndex, const ToolShape& tool) = 0;
+    // The pieces [first, first + count) of one level arc (each continuesLevelArc() the one
+    // before), all marked as move `moveIndex`, as one cut: the same stock as cut() of each in
+    // turn, and their results added. A stock that can sweep the arc in one pass does (a quarter
+    // arc's fifteen pieces as one annular sector).
+    virtual CutResult cutArcRun(const Move* first, std::size_t count, std::size_t moveIndex, const ToolShape& tool)
+    {
+        CutResult sum;
+        for (std::size_t k = 0; k < count; ++k)
+            sum.add(cut(first[k], moveIndex, tool));
+        return sum;
+    }
 
     // The design model the cuts and compare() measure against, with the tolerance under which a
     // cut into it is not a gouge. An empty mesh: no model (gouges are never reported).

@@ -1,0 +1,137 @@
+// The height field's sweep of a flat tool along a level arc (HeightFieldArc.cpp): every column
+// within the tool's radius of the true arc is cut and no other, for arcs wider and narrower than
+// the tool, either way round and over more than a quarter turn; the arc's pieces cut one by one
+// leave exactly what the run cut in one pass leaves; a run that starts where the tool stands
+// leaves what it leaves after a move elsewhere.
+#include "StockTestUtil.h"
+#include "sim/HeightField.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <vector>
+
+using namespace camwb;
+using namespace camwb::sim;
+using namespace camwb::sim::test;
+
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+struct LevelArc {
+    base::Vec2 centre;
+    double radius, fromAngle, toAngle, z;  // angles in radians; toAngle < fromAngle: clockwise
+};
+
+// The arc's pieces as the move list makes them: ends on the circle, each from where the last ended.
+std::vector<Move> pieces(const LevelArc& arc, int count)
+{
+    std::vector<Move> out;
+    auto at = [&](int k) {
+        const double a = arc.fromAngle + (arc.toAngle - arc.fromAngle) * k / count;
+        return Vec3{arc.centre.x + arc.radius * std::cos(a), arc.centre.y + arc.radius * std::sin(a), arc.z};
+    };
+    Vec3 from = at(0);
+    for (int k = 1; k <= count; ++k) {
+        Move m = makeMove(from, at(k));
+        m.fromArc = true;
+        m.arcCentre = arc.centre;
+        m.arcRadius = arc.radius;
+        m.record = 1;
+        out.push_back(m);
+        from = m.to;
+    }
+    return out;
+}
+
+// The distance of p from the arc: radial where its angle lies within the arc's, else to an end.
+double distanceToArc(const LevelArc& arc, base::Vec2 p)
+{
+    const base::Vec2 w = p - arc.centre;
+    const double lo = std::min(arc.fromAngle, arc.toAngle), hi = std::max(arc.fromAngle, arc.toAngle);
+    double angle = std::atan2(w.y, w.x);
+    while (angle < lo)
+        angle += 2 * kPi;
+    if (angle <= hi)
+        return std::abs(w.length() - arc.radius);
+    double best = 1e300;
+    for (double a : {arc.fromAngle, arc.toAngle}) {
+        const base::Vec2 end{arc.centre.x + arc.radius * std::cos(a), arc.centre.y + arc.radius * std::sin(a)};
+        best = std::min(best, (p - end).length());
+    }
+    return best;
+}
+
+// Every column whose centre lies clearly within r of the arc is at the arc's height and marked as
+// cut by move `moveIndex`, every one clearly beyond it untouched.
+void expectSweptExactly(const HeightField& stock, const LevelArc& arc, double r, double top, std::int64_t moveIndex)
+{
+    int inside = 0;
+    for (int j = 0; j < stock.columnsY(); ++j)
+        for (int i = 0; i < stock.columnsX(); ++i) {
+            const double d = distanceToArc(arc, {stock.columnX(i), stock.columnY(j)});
+            if (d < r - 1e-6) {
+                ++inside;
+                ASSERT_EQ(stock.top(i, j), float(arc.z)) << "column " << i << ", " << j << " at " << d;
+                ASSERT_EQ(stock.lastCut(i, j), moveIndex) << "column " << i << ", " << j;
+            } else if (d > r + 1e-6) {
+                ASSERT_EQ(stock.top(i, j), float(top)) << "column " << i << ", " << j << " at " << d;
+            }
+        }
+    EXPECT_GT(inside, 1000);
+}
+
+}  // namespace
+
+TEST(SimHeightFieldArc, ALevelArcCutsEveryColumnWithinTheToolOfTheArcAndNoOther)
+{
+    const base::Box3 b = box({0, 0, 0}, {40, 40, 10});
+    const ToolShape tool(makeTool("flat", 6));
+    const LevelArc arcs[] = {
+        {{20.02, 19.97}, 8, 0.3, 0.3 + 200 * kPi / 180, 5},  // wider than the tool, anticlockwise, over a half turn
+        {{20.02, 19.97}, 2, 0.5, 0.5 - 130 * kPi / 180, 5},  // narrower than the tool, clockwise
+        {{20.02, 19.97}, 8, 0, kPi / 2, 5},                  // from an axis to an axis
+    };
+    for (const LevelArc& arc : arcs) {
+        const std::vector<Move> run = pieces(arc, 47);
+        HeightField together(b, 0.1), oneByOne(b, 0.1);
+        const double removed = together.cutArcRun(run.data(), run.size(), 3, tool).removedMm3;
+        double sum = 0;
+        for (const Move& m : run)
+            sum += oneByOne.cut(m, 3, tool).removedMm3;
+        SCOPED_TRACE("arc of radius " + std::to_string(arc.radius));
+        expectSweptExactly(together, arc, 3, 10, 3);
+        expectSweptExactly(oneByOne, arc, 3, 10, 3);
+        for (int j = 0; j < together.columnsY(); ++j)
+            for (int i = 0; i < together.columnsX(); ++i)
+                ASSERT_EQ(together.top(i, j), oneByOne.top(i, j)) << i << ", " << j;
+        EXPECT_NEAR(removed, sum, 1e-9 * sum);
+        EXPECT_NEAR(removed, 40 * 40 * 10 - together.volumeMm3(), 1e-6 * removed);
+    }
+}
+
+// A run that starts where the last cut left the tool skips its start disc (already cut): it must
+// leave what it leaves after a move elsewhere, which sweeps that disc itself.
+TEST(SimHeightFieldArc, ARunFromWhereTheToolStandsLeavesWhatAFreshRunLeaves)
+{
+    const base::Box3 b = box({0, 0, 0}, {40, 40, 10});
+    const ToolShape tool(makeTool("flat", 6));
+    const LevelArc arc{{20, 20}, 7, -0.2, 2.5, 6};
+    const std::vector<Move> run = pieces(arc, 30);
+    const Move away = makeMove({100, 100, 50}, {101, 100, 50}, MoveKind::Rapid);
+    HeightField chained(b, 0.1), separate(b, 0.1);
+    for (HeightField* stock : {&chained, &separate}) {
+        stock->cut(makeMove(run.front().from + Vec3{0, 0, 5}, run.front().from), 0, tool);  // down to the start
+        if (stock == &separate)
+            stock->cut(away, 1, tool);
+        stock->cutArcRun(run.data(), run.size(), 2, tool);
+    }
+    for (int j = 0; j < chained.columnsY(); ++j)
+        for (int i = 0; i < chained.columnsX(); ++i)
+            ASSERT_EQ(chained.top(i, j), separate.top(i, j)) << i << ", " << j;
+    for (int j = 0; j < chained.columnsY(); ++j)  // the plunge's disc stays its own
+        for (int i = 0; i < chained.columnsX(); ++i)
+            if ((base::Vec2{chained.columnX(i), chained.columnY(j)} - run.front().from.xy()).length() < 3 - 1e-6)
+                ASSERT_EQ(chained.lastCut(i, j), 0);
+}

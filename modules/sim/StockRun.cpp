@@ -38,16 +38,19 @@ const ToolShape* StockRun::shapeOf(int tool)
 
 std::size_t StockRun::cutTo(std::size_t endMove, const std::atomic<bool>* cancel)
 {
-    endMove = std::min(endMove, m_moves.moves.size());
-    for (; m_next < endMove; ++m_next) {
+    const std::vector<Move>& moves = m_moves.moves;
+    endMove = std::min(endMove, moves.size());
+    while (m_next < endMove) {
         // Every move: a five-axis move can take a good part of a second (the five-axis example:
         // 335 moves in about 25 s, so every 64th move let Cancel wait 15 s); a load is nothing
         // beside a cut.
         if (cancel && cancel->load(std::memory_order_relaxed))
             break;
-        const Move& move = m_moves.moves[m_next];
-        if (!move.moves())
+        const Move& move = moves[m_next];
+        if (!move.moves()) {
+            ++m_next;
             continue;
+        }
         const ToolShape* shape = shapeOf(move.tool);
         if (!shape || shape->radiusMm() <= 0) {
             // Nothing known to cut with: say so at the first such move of each tool rather than
@@ -65,16 +68,39 @@ std::size_t StockRun::cutTo(std::size_t endMove, const std::atomic<bool>* cancel
                                                  "its moves are not cut";
                 m_checks.add(std::move(c));
             }
+            ++m_next;
             continue;
         }
-        const CutResult cut = m_stock.cut(move, m_next, *shape);
-        judge(move, m_next, cut, *shape);
+        // A run: this move and the pieces of the same level arc after it. The stock sweeps a
+        // whole run in one pass; its pieces are marked as its first and judged together, so a
+        // run cut piece by piece (cutTo stopping inside it) leaves the same stock and findings.
+        if (m_next >= m_runEnd) {
+            m_runStart = m_next;
+            m_runEnd = m_next + 1;
+            while (m_runEnd < moves.size() && continuesLevelArc(moves[m_runEnd - 1], moves[m_runEnd]))
+                ++m_runEnd;
+            m_runCut = {};
+        }
+        const std::size_t stop = std::min(m_runEnd, endMove);
+        if (m_next == m_runStart && stop == m_runEnd)
+            m_runCut = m_stock.cutArcRun(&moves[m_next], stop - m_next, m_runStart, *shape);
+        else
+            for (std::size_t k = m_next; k < stop; ++k)
+                m_runCut.add(m_stock.cut(moves[k], m_runStart, *shape));
+        m_next = stop;
+        if (m_next == m_runEnd)
+            judge(m_runStart, m_runEnd, m_runCut, *shape);
     }
     return m_next;
 }
 
-void StockRun::judge(const Move& move, std::size_t index, const CutResult& cut, const ToolShape& shape)
+void StockRun::judge(std::size_t first, std::size_t end, const CutResult& cut, const ToolShape& shape)
 {
+    const Move& move = m_moves.moves[first];
+    const Vec3 to = m_moves.moves[end - 1].to;
+    double length = 0;
+    for (std::size_t k = first; k < end; ++k)
+        length += m_moves.moves[k].lengthMm();
     const bool removed = cut.removedMm3 > noiseMm3();
     auto check = [&](CheckKind kind, base::Severity severity, double value, const Vec3& at) {
         Check c;
@@ -82,7 +108,8 @@ void StockRun::judge(const Move& move, std::size_t index, const CutResult& cut, 
         c.kind = kind;
         c.severity = severity;
         c.record = move.record;
-        c.move = static_cast<std::int64_t>(index);
+        c.move = static_cast<std::int64_t>(first);
+        c.moves = int(end - first);
         c.valueMm = value;
         c.at = at;
         m_checks.add(std::move(c));
@@ -90,13 +117,13 @@ void StockRun::judge(const Move& move, std::size_t index, const CutResult& cut, 
     if (removed)
         m_removedMm3 += cut.removedMm3;
     if (move.kind == MoveKind::Rapid && removed)
-        check(CheckKind::RapidInStock, base::Severity::Error, 0, move.to);
+        check(CheckKind::RapidInStock, base::Severity::Error, 0, to);
     if (move.kind == MoveKind::Feed) {
         if (removed)
-            m_cuttingMm += move.lengthMm();
+            m_cuttingMm += length;
         else {
-            m_airMm += move.lengthMm();
-            check(CheckKind::AirCutting, base::Severity::Note, move.lengthMm(), move.to);
+            m_airMm += length;
+            check(CheckKind::AirCutting, base::Severity::Note, length, to);
         }
     }
     if (cut.gougeMm > 0)
@@ -104,13 +131,13 @@ void StockRun::judge(const Move& move, std::size_t index, const CutResult& cut, 
     if (cut.holderInterferenceMm > 0)
         check(CheckKind::HolderCollision, base::Severity::Error, cut.holderInterferenceMm, cut.holderAt);
     if (removed && move.spindleRpm <= 0)
-        check(CheckKind::SpindleOffCutting, base::Severity::Error, 0, move.to);
+        check(CheckKind::SpindleOffCutting, base::Severity::Error, 0, to);
     if (removed && cut.removedOnAxis && !shape.tool().centreCutting) {
-        const Vec3 d = move.to - move.from;
+        const Vec3 d = to - move.from;
         const double down = -d.dot(move.fromAxis);
         const double across = (d + move.fromAxis * down).length();
         if (down > 0 && down > kPlungeSlope * across)
-            check(CheckKind::PlungeNotCentre, base::Severity::Error, down, move.to);
+            check(CheckKind::PlungeNotCentre, base::Severity::Error, down, to);
     }
 }
 

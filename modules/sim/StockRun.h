@@ -1,4 +1,5 @@
-// Plays a move list through a stock, move by move, and turns what each cut did into checks:
+// Plays a move list through a stock, move by move (a level arc's pieces as one run), and turns
+// what each cut did into checks:
 // rapids into stock, gouges into the design model, shank or holder in the stock, plunges of
 // tools that do not cut at their centre, cutting with the spindle stopped, feed moves in air.
 // The command line runs it to the end at once; the simulator dock runs it as it plays, so the
@@ -42,13 +43,16 @@ public:
 
 private:
     const ToolShape* shapeOf(int tool);
-    void judge(const Move& move, std::size_t index, const CutResult& cut, const ToolShape& shape);
+    // What moves [first, end) did, together (one move, or the pieces of one level arc).
+    void judge(std::size_t first, std::size_t end, const CutResult& cut, const ToolShape& shape);
 
     const MoveList& m_moves;
     Stock& m_stock;
     std::map<int, std::unique_ptr<ToolShape>> m_shapes;
     std::set<int> m_shapeless;  // tools already reported without a shape
     std::size_t m_next = 0;
+    std::size_t m_runStart = 0, m_runEnd = 0;  // the run of moves being cut (see cutTo)
+    CutResult m_runCut;                        // what its moves cut so far did
     CheckList m_checks;
     double m_removedMm3 = 0;
     double m_airMm = 0;

@@ -23,6 +23,8 @@ using sim::test::boxMesh;
 
 namespace {
 
+constexpr double kPiRun = 3.14159265358979323846;
+
 Tool flat10(double stickOut = 40, bool centreCutting = true)
 {
     Tool t;
@@ -283,4 +285,86 @@ TEST(SimRun, ChecksOfOneRecordAreOneFindingAtItsWorst)
     ASSERT_EQ(list.checks().size(), 1u);
     EXPECT_DOUBLE_EQ(list.checks()[0].valueMm, 0.4);
     EXPECT_EQ(list.checks()[0].moves, 3);
+}
+
+// A level arc's pieces are cut as one run and judged as one: an arc that cuts anywhere is not
+// air cutting, and its findings count its pieces.
+TEST(SimRun, AnArcThatCutsAnywhereIsNotAirCutting)
+{
+    sim::HeightField stock({{0, 0, 0}, {60, 40, 20}, false}, 0.2);
+    Toolpath p = start(flat10());
+    p.add(Rapid{{-20, 20, 15}});
+    p.add(Arc{{20, 20, 15}, {0, 20, 15}, {0, 0, 1}, true, 0, 300});  // over the top, out of the stock and in
+    const sim::SimulationResult r = run(p, stock);
+    EXPECT_TRUE(of(r, CheckKind::AirCutting).empty());
+    EXPECT_NEAR(r.cuttingMm, 20 * kPiRun, 0.01);
+    EXPECT_GT(r.removedMm3, 0);
+}
+
+// The shank and holder meet the stock each piece leaves: an arc run whose holder can reach the
+// stock is cut piece by piece, and the holder's collision is found.
+TEST(SimRun, AnArcDeepInTheStockFindsTheHolder)
+{
+    for (const double stickOut : {20.0, 45.0}) {
+        sim::HeightField stock({{0, 0, 0}, {60, 60, 40}, false}, 0.2);
+        Toolpath p = start(flat10(stickOut));
+        // Beside the stock, clear of it, then through its corner 30 deep and out: only the
+        // arc's middle brings the holder (25 mm in radius) over the stock.
+        p.add(Rapid{{-30, 30, 45}});
+        p.add(Linear{{-30, 30, 10}, 300});
+        p.add(Arc{{30, -30, 10}, {-30, -30, 10}, {0, 0, 1}, true, 0, 300});
+        const sim::SimulationResult r = run(p, stock);
+        const auto hits = of(r, CheckKind::HolderCollision);
+        EXPECT_GT(r.removedMm3, 100) << stickOut;
+        if (stickOut < 30) {
+            ASSERT_EQ(hits.size(), 1u);
+            EXPECT_EQ(hits[0].record, 5);
+        } else {
+            EXPECT_TRUE(hits.empty()) << (hits.empty() ? ""
+                                                       : hits[0].message + " record " + std::to_string(hits[0].record));
+        }
+    }
+}
+
+// The dock and the command line cut the moves in steps of their own: stopping inside a run must
+// leave the stock, the figures and the findings that running through leaves.
+TEST(SimRun, CuttingInStepsLeavesWhatCuttingThroughLeaves)
+{
+    Toolpath p = start(flat10());
+    p.add(Rapid{{-8, 20, 15}});
+    p.add(Arc{{8, 20, 15}, {0, 20, 15}, {0, 0, 1}, true, 0, 300});     // into the stock and out
+    p.add(Arc{{-8, 20, 15}, {0, 20, 15}, {0, 0, 1}, true, 0, 300});    // on, under the stock's edge
+    p.add(Arc{{30, 20, 12}, {11, 20, 12}, {0, 0, 1}, false, 0, 300});  // a helix down: pieces of its own
+    p.add(Linear{{30, 20, 30}, 300});
+    p.add(Arc{{-8, 20, 30}, {11, 20, 30}, {0, 0, 1}, false, 0, 300});  // above it all: in air
+    const sim::MoveList moves = sim::buildMoves(p);
+    const base::Box3 b{{0, 0, 0}, {60, 40, 20}, false};
+    sim::HeightField throughStock(b, 0.2);
+    sim::StockRun through(moves, throughStock);
+    through.cutTo(moves.moves.size());
+    for (const std::size_t step : {std::size_t(1), std::size_t(7)}) {
+        sim::HeightField stepStock(b, 0.2);
+        sim::StockRun stepped(moves, stepStock);
+        while (!stepped.finished())
+            stepped.cutTo(stepped.nextMove() + step);
+        for (int j = 0; j < stepStock.columnsY(); ++j)
+            for (int i = 0; i < stepStock.columnsX(); ++i) {
+                ASSERT_EQ(stepStock.top(i, j), throughStock.top(i, j)) << i << ", " << j << " step " << step;
+                ASSERT_EQ(stepStock.lastCut(i, j), throughStock.lastCut(i, j)) << i << ", " << j << " step " << step;
+            }
+        EXPECT_DOUBLE_EQ(stepped.removedMm3(), through.removedMm3());
+        EXPECT_DOUBLE_EQ(stepped.airCuttingMm(), through.airCuttingMm());
+        EXPECT_DOUBLE_EQ(stepped.cuttingMm(), through.cuttingMm());
+        const std::vector<sim::Check> a = stepped.checks(), c = through.checks();
+        ASSERT_EQ(a.size(), c.size());
+        for (std::size_t k = 0; k < a.size(); ++k) {
+            EXPECT_EQ(a[k].kind, c[k].kind);
+            EXPECT_EQ(a[k].record, c[k].record);
+            EXPECT_EQ(a[k].move, c[k].move);
+            EXPECT_EQ(a[k].moves, c[k].moves);
+            EXPECT_DOUBLE_EQ(a[k].valueMm, c[k].valueMm);
+        }
+    }
+    EXPECT_GT(through.airCuttingMm(), 0);  // the last arc
+    EXPECT_GT(through.removedMm3(), 100);
 }

@@ -5,6 +5,14 @@
 
 #include "sim/HeightField.h"
 
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <limits>
+#ifdef __SSE2__
+#include <emmintrin.h>
+#endif
+
 namespace camwb::sim::detail {
 
 constexpr double kEps = 1e-6;  // heights closer than this are the same (float storage)
@@ -21,6 +29,22 @@ inline int ceilToInt(double u)
 {
     const int t = int(u);
     return t + int(double(t) < u);
+}
+
+// The highest float at or below x (no library call: a span's setup is on the hot path).
+inline float floatAtOrBelow(double x)
+{
+    const float f = float(x);
+    if (double(f) <= x)
+        return f;
+    if (f == 0)
+        return -std::numeric_limits<float>::denorm_min();
+    std::uint32_t bits;
+    std::memcpy(&bits, &f, sizeof bits);
+    bits = f > 0 ? bits - 1 : bits + 1;  // one step towards -infinity
+    float down;
+    std::memcpy(&down, &bits, sizeof down);
+    return down;
 }
 
 // The columns whose centres lie at or right of an x, or at or left of it, from x by one
@@ -53,19 +77,34 @@ namespace camwb::sim {
     // Summed here and added once: kept in `result`, the sum would go through memory each column
     // (a store and a load a column's critical path; the loop ran at half speed).
     double removed = 0;
-    for (int i = i0; i <= i1; ++i) {
-        if (top[i] <= height + detail::kEps)
-            continue;
+    const double limit = height + detail::kEps;  // a column at or below this is left
+    auto lowerColumn = [&](int i) {
+        if (top[i] <= limit)
+            return;
         const double newTop = std::max(height, double(bottom[i]));
         if (newTop >= top[i] - detail::kEps)
-            continue;
+            return;
         removed += top[i] - newTop;
         top[i] = float(newTop);
         lastCut[i] = std::int32_t(moveIndex);
         first = first < 0 ? i : first, last = i;
         if (design && newTop < design[i] - m_tolerance)
             noteGouge(i, j, newTop, result);
+    };
+    int i = i0;
+#ifdef __SSE2__
+    // A long span passes runs of columns that are left four at a time: most of an arc's span lies
+    // on ground the cut before cleared. The float bound is at or below `limit`, so a column passed
+    // here would have been left by lowerColumn too.
+    if (i1 - i0 >= 7) {
+        const __m128 skip = _mm_set1_ps(detail::floatAtOrBelow(limit));
+        for (; i + 3 <= i1; i += 4)
+            if (_mm_movemask_ps(_mm_cmpgt_ps(_mm_loadu_ps(top + i), skip)) != 0)
+                lowerColumn(i), lowerColumn(i + 1), lowerColumn(i + 2), lowerColumn(i + 3);
     }
+#endif
+    for (; i <= i1; ++i)
+        lowerColumn(i);
     if (first >= 0)
         m_cutNow.add(first, j), m_cutNow.add(last, j), result.removedMm3 += removed * m_dx * m_dy;
 }

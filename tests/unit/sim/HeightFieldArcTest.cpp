@@ -2,13 +2,15 @@
 // within the tool's radius of the true arc is cut and no other, for arcs wider and narrower than
 // the tool, either way round and over more than a quarter turn; the arc's pieces cut one by one
 // leave exactly what the run cut in one pass leaves; a run that starts where the tool stands
-// leaves what it leaves after a move elsewhere.
+// leaves what it leaves after a move elsewhere; the bound a span's fast skip compares with.
 #include "StockTestUtil.h"
 #include "sim/HeightField.h"
+#include "sim/detail/HeightFieldRows.h"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
 #include <vector>
 
 using namespace camwb;
@@ -134,4 +136,15 @@ TEST(SimHeightFieldArc, ARunFromWhereTheToolStandsLeavesWhatAFreshRunLeaves)
         for (int i = 0; i < chained.columnsX(); ++i)
             if ((base::Vec2{chained.columnX(i), chained.columnY(j)} - run.front().from.xy()).length() < 3 - 1e-6)
                 ASSERT_EQ(chained.lastCut(i, j), 0);
+}
+
+// The height field passes columns whose float top lies at or below this bound four at a time: it
+// must be the highest float at or below the double, or a column just above would be left uncut.
+TEST(SimHeightFieldArc, TheSkipBoundIsTheHighestFloatAtOrBelow)
+{
+    for (const double x : {0.0, 1e-30, -1e-30, 0.1, -0.1, 5.000001, -5.000001, 12.3456789, 1e6 + 0.3, -7.0}) {
+        const float f = detail::floatAtOrBelow(x);
+        EXPECT_LE(double(f), x) << x;
+        EXPECT_GT(double(std::nextafter(f, std::numeric_limits<float>::infinity())), x) << x;
+    }
 }

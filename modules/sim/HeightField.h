@@ -36,7 +36,7 @@ public:
     static std::unique_ptr<HeightField> fromMesh(const TriangleMesh& blank, double resolutionMm);
 
     CutResult cut(const Move& move, std::size_t moveIndex, const ToolShape& tool) override;
-    // A flat tool's level arc as annular sectors of at most a quarter turn, each with its end
+    // A flat tool's level arc as annular sectors of at most a third of a turn, each with its end
     // discs: the columns its pieces cut one by one (interior pieces' end discs lie inside the
     // sector: a column can differ only where its centre lies within rounding of the sweep's edge).
     CutResult cutArcRun(const Move* first, std::size_t count, std::size_t moveIndex, const ToolShape& tool) override;
@@ -87,8 +87,8 @@ private:
     bool tilesBelow(const ColumnRect& near, double z) const;
     // How far an arc piece strays from its chord (0 for a straight move).
     static double arcBulge(const Move& move);
-    // A flat tool's sweep at height z along the arc from a to b about `centre` (less than a
-    // quarter turn, the way the shorter turn goes): the annular sector between the rays through
+    // A flat tool's sweep at height z along the arc from a to b about `centre` (at most a
+    // third of a turn, the way the shorter turn goes): the annular sector between the rays through
     // a and b, the disc at b and, unless `startDone`, the disc at a. Its rows' bounds are computed
     // the same way for a piece and for a run of pieces, so the pieces' sectors tile the run's.
     void sweepLevelArc(base::Vec2 a, base::Vec2 b, base::Vec2 centre, double arcRadius, double z, double r,

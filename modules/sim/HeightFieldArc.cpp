@@ -160,13 +160,16 @@ CutResult HeightField::cutArcRun(const Move* first, std::size_t count, std::size
     const double arcRadius = first->arcRadius, z = first->from.z;
     CutResult result;
     for (std::size_t k = 0; k < count;) {
-        // Pieces while the turn from this one's start stays under a quarter (a convex sector).
+        // Pieces while the turn from this one's start stays within a third of a turn: a convex
+        // sector whose rays are far from opposite, so which way it turns is never in doubt (a
+        // quarter arc, the commonest, is one sector).
         const base::Vec2 a = first[k].from.xy() - centre;
         const bool ccw = a.cross(first[k].to.xy() - centre) >= 0;
+        const double third = -0.5 * arcRadius * arcRadius;  // a.dot(b) at 120 degrees
         std::size_t e = k + 1;
         for (; e < count; ++e) {
             const base::Vec2 b = first[e].to.xy() - centre;
-            if (a.dot(b) <= 0 || (a.cross(b) >= 0) != ccw)
+            if (a.dot(b) < third || (a.cross(b) >= 0) != ccw)
                 break;
         }
         const Move& last = first[e - 1];

@@ -174,19 +174,36 @@ std::vector<ArcPiece> splitArc(const Vec3& start, const Arc& arc, double maxSwee
     return pieces;
 }
 
+namespace {
+
+// How many chords of `sweep` (radians) on `radius` keep within the tolerance and the step: a
+// chord of angle a on radius r strays r (1 - cos(a/2)) from the arc.
+int chordCount(double sweep, double radius, double toleranceMm, double maxStepDeg, int maxPoints)
+{
+    const double tolerance = std::clamp(toleranceMm, 1e-6, radius);
+    const double maxStep =
+        std::clamp(2 * std::acos(1 - tolerance / radius), 1e-3, std::max(maxStepDeg, 1e-3) * std::numbers::pi / 180);
+    const int count = std::max(1, static_cast<int>(std::ceil(sweep / maxStep)));
+    return maxPoints > 0 ? std::min(count, maxPoints) : count;
+}
+
+}  // namespace
+
+int linearizedPointCount(const Vec3& start, const Arc& arc, double toleranceMm, double maxStepDeg, int maxPoints)
+{
+    const std::optional<ArcFrame> frame = frameOf(start, arc);
+    return frame ? chordCount(frame->sweep, std::max(frame->radiusStart, frame->radiusEnd), toleranceMm, maxStepDeg,
+                              maxPoints)
+                 : 1;
+}
+
 std::vector<Vec3> linearizeArc(const Vec3& start, const Arc& arc, double toleranceMm, double maxStepDeg, int maxPoints)
 {
     const std::optional<ArcFrame> frame = frameOf(start, arc);
     if (!frame)
         return {arc.to};
-    // A chord of angle a on radius r strays r (1 - cos(a/2)) from the arc.
-    const double radius = std::max(frame->radiusStart, frame->radiusEnd);
-    const double tolerance = std::clamp(toleranceMm, 1e-6, radius);
-    const double maxStep =
-        std::clamp(2 * std::acos(1 - tolerance / radius), 1e-3, std::max(maxStepDeg, 1e-3) * std::numbers::pi / 180);
-    int count = std::max(1, static_cast<int>(std::ceil(frame->sweep / maxStep)));
-    if (maxPoints > 0)
-        count = std::min(count, maxPoints);
+    const int count =
+        chordCount(frame->sweep, std::max(frame->radiusStart, frame->radiusEnd), toleranceMm, maxStepDeg, maxPoints);
     std::vector<Vec3> points;
     points.reserve(count);
     for (int i = 1; i < count; ++i)

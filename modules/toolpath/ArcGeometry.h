@@ -51,6 +51,10 @@ std::vector<ArcPiece> splitArc(const Vec3& start, const Arc& arc, double maxSwee
 std::vector<Vec3> linearizeArc(const Vec3& start, const Arc& arc, double toleranceMm, double maxStepDeg = 360,
                                int maxPoints = 0);
 
+// How many points linearizeArc() gives for the same arguments, without making them.
+int linearizedPointCount(const Vec3& start, const Arc& arc, double toleranceMm, double maxStepDeg = 360,
+                         int maxPoints = 0);
+
 // Grows [min, max] to hold the whole arc: exactly for arcs and helices in the principal planes
 // (the extreme points of the circle inside the sweep), within 1e-5 of the radius otherwise.
 void extendByArc(Vec3& min, Vec3& max, const Vec3& start, const Arc& arc);

@@ -79,6 +79,9 @@ TEST(ArcGeometry, LinearisedPointsStayWithinTheTolerance)
                       100};
         const std::vector<Vec3> points = linearizeArc(start, arc, tolerance);
         ASSERT_FALSE(points.empty());
+        EXPECT_EQ(linearizedPointCount(start, arc, tolerance), int(points.size()));
+        EXPECT_EQ(linearizedPointCount(start, arc, tolerance, 10, 7),
+                  int(linearizeArc(start, arc, tolerance, 10, 7).size()));
         EXPECT_EQ(points.back(), arc.to);
         Vec3 previous = start;
         for (const Vec3& p : points) {

@@ -3,7 +3,8 @@
 // that sticks out too little for a deep pocket hits the stock, a tool that does not cut at its
 // centre may ramp but not plunge, cutting with the spindle off is an error, a feed move in air is
 // a note with its length, the machine's limits name their record, and a gouge only the finished
-// stock shows is an error too.
+// stock shows is an error too. A level arc's pieces are one run: judged together, cut piece by
+// piece where the holder could reach the stock, and the same when cutTo stops inside it.
 #include "sim/HeightField.h"
 #include "sim/Simulation.h"
 #include "sim/StockRun.h"

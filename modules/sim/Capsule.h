@@ -25,15 +25,15 @@ public:
     }
     bool row(double y, double& xlo, double& xhi) const
     {
-        return rowFromChords(y, halfChord(m_a, y), halfChord(m_b, y), xlo, xhi);
+        return rowFromChords(y, halfChord(m_a, m_r, y), halfChord(m_b, m_r, y), xlo, xhi);
     }
-    // The half chord of the disc of the capsule's radius round `c` on row y; -1 where the row
-    // misses it. For the end discs this is the root row() takes: a caller that keeps an end's
-    // chords (the next move starts there) hands them to rowFromChords().
-    double halfChord(base::Vec2 c, double y) const
+    // The half chord of the disc of radius r round `c` on row y; -1 where the row misses it. For
+    // the end discs this is the root row() takes: a caller that keeps an end's chords (the next
+    // move starts there) hands them to rowFromChords().
+    static double halfChord(base::Vec2 c, double r, double y)
     {
         const double dy = y - c.y;
-        return std::abs(dy) <= m_r ? std::sqrt(m_r * m_r - dy * dy) : -1;
+        return std::abs(dy) <= r ? std::sqrt(r * r - dy * dy) : -1;
     }
     bool rowFromChords(double y, double aHalf, double bHalf, double& xlo, double& xhi) const
     {

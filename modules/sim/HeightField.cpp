@@ -196,6 +196,25 @@ void HeightField::noteGouge(int i, int j, double z, CutResult& result) const
     }
 }
 
+const HeightField::DiscChords& HeightField::computeEndChords(base::Vec2 b, double r, int j0, int j1)
+{
+    DiscChords& end = m_spareChords;
+    end.centre = b, end.radius = r, end.j0 = j0;
+    end.half.resize(std::size_t(std::max(0, j1 - j0 + 1)));
+    for (int j = j0; j <= j1; ++j)
+        end.half[std::size_t(j - j0)] = Capsule::halfChord(b, r, columnY(j));
+    return end;
+}
+
+double HeightField::startChord(base::Vec2 a, double r, int j) const
+{
+    const DiscChords& kept = m_endChords;
+    const int k = j - kept.j0;
+    if (kept.radius == r && kept.centre == a && k >= 0 && k < int(kept.half.size()))
+        return kept.half[std::size_t(k)];
+    return Capsule::halfChord(a, r, columnY(j));
+}
+
 // The vertical tool's sweep. At a column q the cutter's lower surface over the move is
 // f(t) = z(t) + L(d(t)) with d(t) = |q - c(t)| the distance to the tool's centre: d is convex
 // in t (the norm of an affine function), L is convex and non-decreasing for every profile here
@@ -228,8 +247,6 @@ void HeightField::cutVertical(const Move& move, std::size_t moveIndex, const Too
     const ColumnRect near = columnsWithin(c0, c1, reach);
     const int j0 = near.j0, j1 = near.j1;
     const detail::ColumnIndex column(m_box.min.x, m_dx);
-    auto columnAtOrRight = [&](double x) { return column.atOrRight(x); };
-    auto columnAtOrLeft = [&](double x) { return column.atOrLeft(x); };
     const Capsule capsule(c0, c1, r);
     if (flat && std::abs(dz) < 1e-12 && !plunge) {
         // A flat tool moving level: every column under the capsule goes down to z, so a row is
@@ -244,36 +261,25 @@ void HeightField::cutVertical(const Move& move, std::size_t moveIndex, const Too
         auto sweep = [&](int j, int i0, int i1) {
             lowerSpan(j, std::max(0, i0), std::min(m_nx - 1, i1), z0, moveIndex, result);
         };
-        // The end disc's chords on the rows first, in a loop of their own (the roots overlap),
-        // kept for the next move: a chain of arc pieces then takes one root a row instead of two.
-        DiscChords& end = m_spareChords;
-        end.centre = c1, end.radius = r, end.j0 = j0;
-        end.half.resize(std::size_t(std::max(0, j1 - j0 + 1)));
-        for (int j = j0; j <= j1; ++j)
-            end.half[std::size_t(j - j0)] = capsule.halfChord(c1, columnY(j));
-        const DiscChords& start = m_endChords;
-        const bool startKept = start.radius == r && start.centre == c0;
-        auto startChord = [&](int j) {
-            const int kept = j - start.j0;
-            return startKept && kept >= 0 && kept < int(start.half.size()) ? start.half[std::size_t(kept)]
-                                                                           : capsule.halfChord(c0, columnY(j));
-        };
+        // The end disc's chords are kept for the next move: a chain of arc pieces then takes one
+        // root a row instead of two.
+        const DiscChords& end = computeEndChords(c1, r, j0, j1);
         for (int j = j0; j <= j1; ++j) {
             const double y = columnY(j);
-            const double half = startChord(j);  // the start disc's chord on this row, -1 off it
+            const double half = startChord(c0, r, j);  // the start disc's chord on this row, -1 off it
             double xlo, xhi;
             if (!capsule.rowFromChords(y, half, end.half[std::size_t(j - j0)], xlo, xhi))
                 continue;
-            const int i0 = columnAtOrRight(xlo), i1 = columnAtOrLeft(xhi);
+            const int i0 = column.atOrRight(xlo), i1 = column.atOrLeft(xhi);
             if (!startDone || half <= 0) {
                 sweep(j, i0, i1);
                 continue;
             }
-            const int s0 = columnAtOrRight(c0.x - half), s1 = columnAtOrLeft(c0.x + half);
+            const int s0 = column.atOrRight(c0.x - half), s1 = column.atOrLeft(c0.x + half);
             sweep(j, i0, std::min(i1, s0 - 1));
             sweep(j, std::max(i0, s1 + 1), i1);
         }
-        std::swap(m_endChords, m_spareChords);
+        keepEndChords();
         return;
     }
     for (int j = j0; j <= j1; ++j) {
@@ -282,7 +288,7 @@ void HeightField::cutVertical(const Move& move, std::size_t moveIndex, const Too
         if (!capsule.row(y, xlo, xhi))
             continue;
         // Rounded outwards (at most a column beyond each end): each column is tested below.
-        const int i0 = std::max(0, columnAtOrLeft(xlo)), i1 = std::min(m_nx - 1, columnAtOrRight(xhi));
+        const int i0 = std::max(0, column.atOrLeft(xlo)), i1 = std::min(m_nx - 1, column.atOrRight(xhi));
         // A flat tool ramping: its lowest point over a column is where the column last (going
         // down) or first (going up) lies under it, so the disc at that end of the move is at that
         // end's height, without a root per column. Going up from where the last cut left this
@@ -294,7 +300,7 @@ void HeightField::cutVertical(const Move& move, std::size_t moveIndex, const Too
         const bool discDone = !down && m_lastFlatVertical && m_lastRadius == r && m_lastEnd == move.from;
         if (flat && !plunge && vv >= 1e-18 && std::abs(y - disc.y) < r) {
             const double half = std::sqrt(r * r - (y - disc.y) * (y - disc.y));
-            k0 = columnAtOrRight(disc.x - half), k1 = columnAtOrLeft(disc.x + half);
+            k0 = column.atOrRight(disc.x - half), k1 = column.atOrLeft(disc.x + half);
         }
         for (int i = i0; i <= i1; ++i) {
             if (i >= k0 && i <= k1) {  // the end disc's span of this row, in one go

@@ -137,6 +137,14 @@ private:
         std::vector<double> half;
     };
     DiscChords m_endChords, m_spareChords;
+    // The end disc's chords (round b, radius r) on rows j0..j1 of a level sweep, in a loop of
+    // their own (the roots overlap), into the spare set; keepEndChords() makes them the kept ones
+    // once the sweep is done.
+    const DiscChords& computeEndChords(base::Vec2 b, double r, int j0, int j1);
+    void keepEndChords() { std::swap(m_endChords, m_spareChords); }
+    // The start disc's half chord (round a, radius r) on row j: the one kept from the move before
+    // when it ended there, else its root.
+    double startChord(base::Vec2 a, double r, int j) const;
     // Where the last cut left the tool: a level flat move starting there finds its start disc
     // already at its height, so it sweeps only what lies beyond (see cutVertical).
     Vec3 m_lastEnd;

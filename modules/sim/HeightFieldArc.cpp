@@ -6,7 +6,6 @@
 // arc's fifteen pieces, cut as chords, set up each row fifteen times for a column or two each.
 #include "sim/HeightField.h"
 
-#include "sim/Capsule.h"
 #include "sim/detail/HeightFieldRows.h"
 
 #include <algorithm>
@@ -87,7 +86,6 @@ void HeightField::sweepLevelArc(base::Vec2 a, base::Vec2 b, base::Vec2 centre, d
         return;
     const int j0 = near.j0, j1 = near.j1;
     const double outer = arcRadius + r, inner = arcRadius - r;
-    const Capsule discs(a, b, r);  // for the end discs' chords
     const detail::ColumnIndex column(m_box.min.x, m_dx);
     // x clamped to a column beyond the grid before it becomes an index (a huge arc's sector
     // reaches far beyond the stock).
@@ -97,15 +95,8 @@ void HeightField::sweepLevelArc(base::Vec2 a, base::Vec2 b, base::Vec2 centre, d
         const int i1 = std::min(m_nx - 1, column.atOrLeft(std::min(x1, xMax)));
         lowerSpan(j, i0, i1, z, moveIndex, result);
     };
-    // The end disc's chords, kept for the next move (it starts there); the start disc's from the
-    // move before when it ended here with this radius.
-    DiscChords& end = m_spareChords;
-    end.centre = b, end.radius = r, end.j0 = j0;
-    end.half.resize(std::size_t(j1 - j0 + 1));
-    for (int j = j0; j <= j1; ++j)
-        end.half[std::size_t(j - j0)] = discs.halfChord(b, columnY(j));
-    const DiscChords& start = m_endChords;
-    const bool startKept = start.radius == r && start.centre == a;
+    // The end disc's chords, kept for the next move (it starts there).
+    const DiscChords& end = computeEndChords(b, r, j0, j1);
     for (int j = j0; j <= j1; ++j) {
         const double y = columnY(j), wy = y - centre.y;
         // The row's spans (the sector's two at most, the discs'), merged where they overlap so
@@ -133,10 +124,7 @@ void HeightField::sweepLevelArc(base::Vec2 a, base::Vec2 b, base::Vec2 centre, d
         if (endHalf >= 0)
             add(b.x - endHalf, b.x + endHalf);
         if (!startDone) {
-            const int kept = j - start.j0;
-            const double startHalf = startKept && kept >= 0 && kept < int(start.half.size())
-                                         ? start.half[std::size_t(kept)]
-                                         : discs.halfChord(a, y);
+            const double startHalf = startChord(a, r, j);
             if (startHalf >= 0)
                 add(a.x - startHalf, a.x + startHalf);
         }
@@ -148,7 +136,7 @@ void HeightField::sweepLevelArc(base::Vec2 a, base::Vec2 b, base::Vec2 centre, d
             sweep(j, merged.x0, merged.x1);
         }
     }
-    std::swap(m_endChords, m_spareChords);
+    keepEndChords();
 }
 
 CutResult HeightField::cutArcRun(const Move* first, std::size_t count, std::size_t moveIndex, const ToolShape& tool)

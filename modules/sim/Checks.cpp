@@ -23,6 +23,8 @@ const char* checkKindName(CheckKind kind)
         return "air-cutting";
     case CheckKind::NoToolShape:
         return "no-tool-shape";
+    case CheckKind::UnknownPosition:
+        return "unknown-position";
     }
     return "?";
 }

@@ -20,9 +20,11 @@ enum class CheckKind {
     MachineLimit,       // travel, rotary range, feed, spindle, tool size (kinematics::LimitCheck): error
     AirCutting,         // a feed move that removed nothing: note
     NoToolShape,        // moves with a tool of no diameter (NC without tool data): not cut, warning
+    UnknownPosition,    // a feed move from where an axis is not known yet: not simulated, warning
 };
 // "rapid-in-stock", "gouge", "holder-collision", "plunge-not-centre-cutting", "spindle-off-cutting",
-// "machine-limit", "air-cutting", "no-tool-shape": the names the JSON report and the dock use.
+// "machine-limit", "air-cutting", "no-tool-shape", "unknown-position": the names the JSON report
+// and the dock use.
 const char* checkKindName(CheckKind kind);
 
 // One finding for one program record (the moves of one block are one finding, with the worst

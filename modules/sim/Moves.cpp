@@ -148,12 +148,13 @@ private:
     {
         turnTo(m_plane.zAxis);
         const std::optional<Vec3> from = m_local.point();
+        const toolpath::AxisMask unknownBefore = unknownAxes();
         m_local.moveTo(to, axes);
         const std::optional<Vec3> end = m_local.point();
-        if (!end)
-            return;
         if (!from) {
-            ++m_out.movesFromUnknownPosition;
+            untraced(kind, unknownBefore);
+            if (!end)
+                return;
             // The move that makes the position whole (the program's first, or the first after an
             // untraced move) leaves the tool standing at `end`, wherever it came from: that pose is
             // a move of its own (from == to), so a rapid that ends in the stock is the crash it is.
@@ -172,6 +173,18 @@ private:
     // known that turn is a move of its own, about the standing tip, so that its time and its
     // axis speeds count (a jump would be an infinite speed). The rotary positions are unknown
     // from there until a move gives them again.
+    // The axes not known yet, in the working plane's frame.
+    toolpath::AxisMask unknownAxes() const
+    {
+        return toolpath::AxisMask{static_cast<unsigned char>(toolpath::AxisMask::kAll & ~m_local.known().bits)};
+    }
+
+    void untraced(MoveKind kind, toolpath::AxisMask unknown)
+    {
+        if (!m_inError)
+            m_out.untraced.push_back({m_record, kind, unknown, m_out.moves.size()});
+    }
+
     void turnTo(const Vec3& axis)
     {
         const Vec3 to = axis.normalized();
@@ -214,8 +227,8 @@ void MoveBuilder::arc(const toolpath::Arc& a)
     turnTo(m_plane.zAxis);
     const std::optional<Vec3> from = m_local.point();
     if (!from) {
+        untraced(MoveKind::Feed, unknownAxes());
         m_local.moveTo(a.to, AxisMask{});
-        ++m_out.movesFromUnknownPosition;
         return;
     }
     m_local.set(a.to);
@@ -256,7 +269,7 @@ void MoveBuilder::cycle(const toolpath::Cycle& c)
 {
     for (const Vec3& hole : c.holes) {
         if (!m_local.known(2)) {
-            ++m_out.movesFromUnknownPosition;  // nothing says how high the tool is over the hole
+            untraced(MoveKind::Feed, unknownAxes());  // nothing says how high the tool is over the hole
             continue;
         }
         for (const toolpath::Record& r : toolpath::expandCycleHole(c, hole, m_local, {m_rpm, m_spindleCw}))
@@ -269,6 +282,7 @@ void MoveBuilder::toolAxisMove(const toolpath::ToolAxisMove& m)
     // Five-axis moves are in the workpiece frame whatever plane was set before.
     const std::optional<Vec3> fromLocal = m_local.point();
     const std::optional<Vec3> from = fromLocal ? std::optional<Vec3>(m_plane.toWorkpiece(*fromLocal)) : std::nullopt;
+    const toolpath::AxisMask unknownBefore = unknownAxes();
     const Vec3 fromAxis = m_axis;
     const toolpath::RotaryAxes fromMachine = m_machine;
     m_local.set(m_plane.toLocal(m.tip));
@@ -278,7 +292,7 @@ void MoveBuilder::toolAxisMove(const toolpath::ToolAxisMove& m)
     piece.fiveAxis = true;
     piece.to = m.tip;
     if (!from) {  // the tool stands at the end of the way no one knows (as in straight())
-        ++m_out.movesFromUnknownPosition;
+        untraced(piece.kind, unknownBefore);
         if (!m_inError) {
             piece.from = piece.to;
             setFeed(piece, m.feedMmPerMin, 1.0);

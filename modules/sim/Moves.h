@@ -100,15 +100,23 @@ struct MoveOptions {
     const kinematics::KinematicChain* chain = nullptr;
 };
 
+// A record whose way cannot be followed: a move that starts where an axis is not known yet (a
+// program that gives only Z before its first X and Y, or the moves after an untraced one,
+// UnknownAxes), or a canned cycle's hole with no height known above it. It sets what it knows
+// and makes no motion; the one that makes the position whole stands at its end (a Move with
+// from == to) so that the stock there is checked.
+struct UntracedMove {
+    std::uint32_t record = 0;
+    MoveKind kind = MoveKind::Rapid;  // Feed: it would cut along a way no one knows
+    toolpath::AxisMask unknownAxes;   // where it starts
+    std::size_t nextMove = 0;         // the index in MoveList::moves of the first move after it
+};
+
 struct MoveList {
     std::vector<Move> moves;
     std::map<int, toolpath::Tool> tools;  // every tool changed to, by number
     std::vector<MoveSection> sections;
-    // Records whose motion could not be followed: a move from an unknown position (a CL that
-    // gives only Z before its first X/Y) only sets what it knows and makes no motion; the one
-    // that makes the position whole (the program's first, or the first after an untraced move,
-    // UnknownAxes) stands at its end (a Move with from == to) so that the stock there is checked.
-    std::size_t movesFromUnknownPosition = 0;
+    std::vector<UntracedMove> untraced;  // in record order
 
     const toolpath::Tool* tool(int number) const;
 };

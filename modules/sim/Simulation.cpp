@@ -38,6 +38,50 @@ std::vector<Check> machineLimitChecks(const toolpath::Toolpath& program, const k
     return out;
 }
 
+std::vector<Check> untracedFeedChecks(const MoveList& moves)
+{
+    std::vector<Check> out;
+    const std::vector<UntracedMove>& untraced = moves.untraced;
+    for (std::size_t k = 0; k < untraced.size();) {
+        // A stretch: the untraced records with no move between them. A lathe program in X and Z
+        // never gives Y, and its hundreds of moves are one finding, not hundreds.
+        std::size_t end = k + 1;
+        while (end < untraced.size() && untraced[end].nextMove == untraced[k].nextMove)
+            ++end;
+        const UntracedMove* first = nullptr;
+        int feeds = 0;
+        std::uint32_t lastRecord = 0;
+        for (std::size_t j = k; j < end; ++j) {
+            if (untraced[j].kind != MoveKind::Feed || (feeds > 0 && untraced[j].record == lastRecord))
+                continue;
+            first = first ? first : &untraced[j];
+            lastRecord = untraced[j].record;
+            ++feeds;
+        }
+        const bool toTheEnd = untraced[k].nextMove == moves.moves.size();
+        k = end;
+        if (!first)
+            continue;
+        std::string axes;
+        for (int axis = 0; axis < 3; ++axis)
+            if (first->unknownAxes.has(axis))
+                axes += (axes.empty() ? "" : ", ") + std::string(1, "XYZ"[axis]);
+        Check c;
+        c.kind = CheckKind::UnknownPosition;
+        c.severity = base::Severity::Warning;
+        c.record = first->record;
+        c.moves = feeds;
+        c.message = "feed move from an unknown position (" + axes +
+                    " not given before it): where it cuts is not known and not simulated";
+        if (feeds > 1)
+            c.message += (feeds == 2 ? "; nor is the feed move after it"
+                                     : "; nor are the " + std::to_string(feeds - 1) + " feed moves after it") +
+                         std::string(toTheEnd ? ", up to the program's end" : ", until the position is known");
+        out.push_back(std::move(c));
+    }
+    return out;
+}
+
 base::Result<std::unique_ptr<Stock>> makeStock(const StockSpec& spec, bool tilts)
 {
     const base::Box3 box = spec.box ? *spec.box : spec.blank.bounds();
@@ -98,6 +142,8 @@ SimulationResult simulate(const toolpath::Toolpath& program, const SimulationSet
                 result.checks.push_back(std::move(*gouge));
         }
     }
+    for (Check& c : untracedFeedChecks(result.moves))
+        result.checks.push_back(std::move(c));
     if (setup.machine) {
         for (Check& c : machineLimitChecks(program, *setup.machine))
             result.checks.push_back(std::move(c));

@@ -50,7 +50,7 @@ struct SimulationSetup {
 struct SimulationResult {
     MoveList moves;
     std::unique_ptr<Stock> stock;  // the stock simulate() made from a StockSpec, as cut
-    std::vector<Check> checks;     // by record: the stock's, then the machine's limits
+    std::vector<Check> checks;     // by record: the stock's, the untraced feed moves', the machine's limits
     bool cancelled = false;
     bool cut = false;        // a stock was cut
     std::string stockError;  // why the stock described could not be made (then nothing is cut)
@@ -66,6 +66,10 @@ struct SimulationResult {
 // `recordsInError` (nc::recordsInError) as buildMoves takes it.
 SimulationResult simulate(const toolpath::Toolpath& program, const SimulationSetup& setup,
                           const std::vector<bool>& recordsInError = {});
+
+// A warning for each record in `moves.untraced` that feeds (it would cut, and where is not known):
+// the simulation says what it could not follow rather than report a clean run.
+std::vector<Check> untracedFeedChecks(const MoveList& moves);
 
 // The machine's limits (kinematics::LimitCheck) on `program` as MachineLimit checks: errors, the
 // record each was first met at (-1 for spans known only at the end).

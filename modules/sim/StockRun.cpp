@@ -198,6 +198,8 @@ std::string describe(const Check& check)
         return "feed move in air: " + mm(check.valueMm) + " cut nothing" + moves;
     case CheckKind::NoToolShape:
         return "a tool without a shape: its moves are not cut";
+    case CheckKind::UnknownPosition:
+        return "a feed move from an unknown position: not simulated";
     }
     return {};
 }

@@ -70,7 +70,13 @@ TEST(SimMoves, AMoveFromAnUnknownPositionMakesNoMotion)
     EXPECT_EQ(list.moves[0].to, (Vec3{5, 6, 20}));
     EXPECT_EQ(list.moves[1].from, (Vec3{5, 6, 20}));
     EXPECT_EQ(list.moves[1].to, (Vec3{5, 6, 0}));
-    EXPECT_EQ(list.movesFromUnknownPosition, 1u);
+    // Both rapids started where an axis was unknown: the first with X and Y, the second with X, Y.
+    ASSERT_EQ(list.untraced.size(), 2u);
+    EXPECT_EQ(list.untraced[0].record, 0u);
+    EXPECT_EQ(list.untraced[0].unknownAxes, (AxisMask{AxisMask::kX | AxisMask::kY | AxisMask::kZ}));
+    EXPECT_EQ(list.untraced[1].record, 1u);
+    EXPECT_EQ(list.untraced[1].kind, MoveKind::Rapid);
+    EXPECT_EQ(list.untraced[1].unknownAxes, (AxisMask{AxisMask::kX | AxisMask::kY}));
 }
 
 // An untraced retract (M140 MB MAX read without a machine) leaves Z unknown: the move across is
@@ -96,7 +102,36 @@ TEST(SimMoves, AfterUnknownAxesNoMoveStartsFromTheirOldValues)
     EXPECT_EQ(list.moves[2].record, 4u);
     EXPECT_EQ(list.moves[3].from, (Vec3{90, 90, 5}));
     EXPECT_EQ(list.moves[3].record, 5u);
-    EXPECT_EQ(list.movesFromUnknownPosition, 2u);  // the first move and the one down to Z 5
+    // The first move, the one across with Z unknown, and the one down to Z 5.
+    ASSERT_EQ(list.untraced.size(), 3u);
+    EXPECT_EQ(list.untraced[0].record, 0u);
+    EXPECT_EQ(list.untraced[1].record, 3u);
+    EXPECT_EQ(list.untraced[1].unknownAxes, AxisMask{AxisMask::kZ});
+    EXPECT_EQ(list.untraced[2].record, 4u);
+}
+
+// A feed move, an arc or a canned cycle's hole where the way is not known: each is named, with
+// what was not known, so that the simulation can say what it did not cut.
+TEST(SimMoves, FeedMovesFromAnUnknownPositionAreNamed)
+{
+    Toolpath p;
+    p.add(Rapid{{0, 0, 5}, AxisMask{AxisMask::kZ}});
+    p.add(Linear{{0, 0, -1}, 100, AxisMask{AxisMask::kZ}});
+    p.add(Arc{{10, 0, -1}, {5, 0, -1}, {0, 0, 1}, false, 0, 100});
+    p.add(UnknownAxes{AxisMask{AxisMask::kZ}});
+    toolpath::Cycle drill;
+    drill.holes = {{20, 20, 0}};
+    p.add(drill);
+    const sim::MoveList list = sim::buildMoves(p);
+    ASSERT_EQ(list.untraced.size(), 4u);
+    EXPECT_EQ(list.untraced[1].record, 1u);
+    EXPECT_EQ(list.untraced[1].kind, MoveKind::Feed);
+    EXPECT_EQ(list.untraced[1].unknownAxes, (AxisMask{AxisMask::kX | AxisMask::kY}));
+    EXPECT_EQ(list.untraced[2].record, 2u);
+    EXPECT_EQ(list.untraced[2].kind, MoveKind::Feed);
+    EXPECT_EQ(list.untraced[3].record, 4u);
+    EXPECT_EQ(list.untraced[3].kind, MoveKind::Feed);
+    EXPECT_EQ(list.untraced[3].unknownAxes, AxisMask{AxisMask::kZ});
 }
 
 TEST(SimMoves, ArcsAreSplitWithinTheChordTolerance)

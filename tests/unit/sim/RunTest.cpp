@@ -2,9 +2,9 @@
 // wall is a gouge at that record, a rapid through the stock is an error at its record, a holder
 // that sticks out too little for a deep pocket hits the stock, a tool that does not cut at its
 // centre may ramp but not plunge, cutting with the spindle off is an error, a feed move in air is
-// a note with its length, the machine's limits name their record, and a gouge only the finished
-// stock shows is an error too. A level arc's pieces are one run: judged together, cut piece by
-// piece where the holder could reach the stock, and the same when cutTo stops inside it.
+// a note with its length, the machine's limits name their record, a gouge only the finished
+// stock shows is an error too, and a feed move from an unknown position is a warning. A level arc's pieces are one run:
+// judged together, cut piece by piece where the holder could reach the stock, and the same when cutTo stops inside it.
 #include "sim/HeightField.h"
 #include "sim/Simulation.h"
 #include "sim/StockRun.h"
@@ -272,6 +272,39 @@ TEST(SimRun, MachineLimitsNameTheirRecord)
     EXPECT_EQ(limits[0].record, 1);
     EXPECT_EQ(limits[0].severity, base::Severity::Error);
     EXPECT_NE(limits[0].message.find("3000"), std::string::npos) << limits[0].message;
+}
+
+// A program that plunges before it says where in X and Y: neither the plunge nor the move across
+// can be followed, and the run says so at the first, with the count, rather than report a clean
+// cut. The rapid to Z 25 before them is the program's approach from wherever the machine stands:
+// not a finding. A later stretch (after UnknownAxes) is a finding of its own.
+TEST(SimRun, AFeedMoveFromAnUnknownPositionIsAWarningAtItsRecord)
+{
+    sim::HeightField stock({{0, 0, 0}, {60, 40, 20}, false}, 0.5);
+    Toolpath p;
+    p.add(ToolChange{flat10()});
+    p.add(Spindle{3000, true});
+    p.add(Rapid{{0, 0, 25}, AxisMask{AxisMask::kZ}});
+    p.add(Linear{{0, 0, 19}, 100, AxisMask{AxisMask::kZ}});                  // record 3
+    p.add(Linear{{20, 10, 0}, 100, AxisMask{AxisMask::kX | AxisMask::kY}});  // record 4
+    p.add(Linear{{30, 10, 19}, 100});
+    p.add(UnknownAxes{AxisMask{AxisMask::kZ}});
+    p.add(Linear{{40, 10, 19}, 100, AxisMask{AxisMask::kX}});  // record 7
+    p.add(Rapid{{40, 10, 30}});
+    const sim::SimulationResult r = run(p, stock);
+    const auto unknown = of(r, CheckKind::UnknownPosition);
+    ASSERT_EQ(unknown.size(), 2u);
+    EXPECT_EQ(unknown[0].record, 3);
+    EXPECT_EQ(unknown[0].moves, 2);
+    EXPECT_EQ(unknown[0].severity, base::Severity::Warning);
+    EXPECT_NE(unknown[0].message.find("X, Y not given"), std::string::npos) << unknown[0].message;
+    EXPECT_NE(unknown[0].message.find("nor is the feed move after it, until the position is known"), std::string::npos)
+        << unknown[0].message;
+    EXPECT_EQ(unknown[1].record, 7);
+    EXPECT_NE(unknown[1].message.find("(Z not given"), std::string::npos) << unknown[1].message;
+    EXPECT_EQ(unknown[1].moves, 1);
+    EXPECT_EQ(r.count(base::Severity::Error), 0);
+    EXPECT_GT(r.removedMm3, 0);  // the move from (20, 10, 19) on is cut
 }
 
 TEST(SimRun, ChecksOfOneRecordAreOneFindingAtItsWorst)

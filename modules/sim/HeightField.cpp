@@ -223,13 +223,14 @@ double HeightField::startChord(base::Vec2 a, double r, int j) const
 // nearest point of the segment) and for flat tools (an end of the interval, f being linear),
 // and found by golden section otherwise. The shank's and the holder's lowest points over the
 // move are at an end of their intervals (their bottoms are flat).
-void HeightField::cutVertical(const Move& move, std::size_t moveIndex, const ToolShape& tool, CutResult& result)
+void HeightField::cutVertical(const Move& move, std::size_t moveIndex, const ToolShape& tool, CutResult& result,
+                              bool discCovered)
 {
     const base::Vec2 c0 = move.from.xy(), c1 = move.to.xy(), v = c1 - c0;
     const double z0 = move.from.z, dz = move.to.z - move.from.z, vv = v.dot(v), perVv = vv < 1e-18 ? 0 : 1 / vv;
     const double r = tool.radiusMm(), reach = r;
     const bool flat = tool.flatBottomed();
-    const bool plunge = -dz > std::sqrt(vv);  // descends along the axis more than it travels aside
+    const bool plunge = move.plunges();
     const double axisBand = 0.75 * std::max(m_dx, m_dy);
     auto zAt = [&](double t) { return z0 + t * dz; };
     // The parameters [ta, tb] where the column lies within `radius` of the centre.
@@ -248,6 +249,7 @@ void HeightField::cutVertical(const Move& move, std::size_t moveIndex, const Too
     const int j0 = near.j0, j1 = near.j1;
     const detail::ColumnIndex column(m_box.min.x, m_dx);
     const Capsule capsule(c0, c1, r);
+    const double lowest = std::min(z0, z0 + dz) + kEps;
     if (flat && std::abs(dz) < 1e-12 && !plunge) {
         // A flat tool moving level: every column under the capsule goes down to z, so a row is
         // one span of columns (those whose centres lie in it) and a tight loop over it. When the
@@ -297,11 +299,13 @@ void HeightField::cutVertical(const Move& move, std::size_t moveIndex, const Too
         const bool down = dz < 0;
         const base::Vec2 disc = down ? c1 : c0;
         const double discZ = down ? z0 + dz : z0;
-        const bool discDone = !down && m_lastFlatVertical && m_lastRadius == r && m_lastEnd == move.from;
+        const bool discDone =
+            discCovered || (!down && m_lastFlatVertical && m_lastRadius == r && m_lastEnd == move.from);
         if (flat && !plunge && vv >= 1e-18 && std::abs(y - disc.y) < r) {
             const double half = std::sqrt(r * r - (y - disc.y) * (y - disc.y));
             k0 = column.atOrRight(disc.x - half), k1 = column.atOrLeft(disc.x + half);
         }
+        const float* top = &m_top[index(0, j)];
         for (int i = i0; i <= i1; ++i) {
             if (i >= k0 && i <= k1) {  // the end disc's span of this row, in one go
                 if (!discDone)
@@ -309,6 +313,10 @@ void HeightField::cutVertical(const Move& move, std::size_t moveIndex, const Too
                 i = std::min(k1, i1);
                 continue;
             }
+            // No part of the cutter comes lower than the tip's lowest height: a column at or below
+            // it is left without its geometry (most of a helix's, cut from its last piece back).
+            if (top[i] <= lowest)
+                continue;
             const base::Vec2 w = base::Vec2{columnX(i), y} - c0;
             const double tStar = w.dot(v) * perVv;
             const double e2 = std::max(0.0, w.dot(w) - tStar * tStar * vv);  // squared distance to the line

@@ -77,7 +77,10 @@ private:
     bool sameBottom() const;
     TriangleMesh buildMesh(bool mergeFlats) const;
     // The cut of a vertical tool (the analytic sweep) and of a tilted one (poses).
-    void cutVertical(const Move& move, std::size_t moveIndex, const ToolShape& tool, CutResult& result);
+    // `discCovered`: a flat tool's disc where the move is lowest (its end going down, its start
+    // going up) is cut at least as low by the neighbouring piece of a run (cutHelixRun).
+    void cutVertical(const Move& move, std::size_t moveIndex, const ToolShape& tool, CutResult& result,
+                     bool discCovered = false);
     // The columns (clamped to the grid) whose cells meet the box of segment a-b grown by `reach`:
     // all a tool of that reach can touch along it. Empty when that box misses the stock.
     ColumnRect columnsWithin(base::Vec2 a, base::Vec2 b, double reach) const;
@@ -96,6 +99,8 @@ private:
     // True when the shank and holder of `tool` at height z stay above every column within their
     // reach of the box lo-hi: a run of cuts there cannot meet them (cuts only lower columns).
     bool holderClear(base::Vec2 lo, base::Vec2 hi, double z, const ToolShape& tool) const;
+    // cutArcRun() of a helix (pieces that are not level).
+    CutResult cutHelixRun(const Move* first, std::size_t count, std::size_t moveIndex, const ToolShape& tool);
     void cutTilted(const Move& move, std::size_t moveIndex, const ToolShape& tool, CutResult& result);
     // Lowers column (i, j) to `height`; accounts the removed volume, the gouge and the change.
     void lower(int i, int j, double height, std::size_t moveIndex, CutResult& result);

@@ -139,10 +139,48 @@ void HeightField::sweepLevelArc(base::Vec2 a, base::Vec2 b, base::Vec2 centre, d
     keepEndChords();
 }
 
+// A helix's pieces each lower the whole disc under the tool's end a little deeper than the one
+// before: cut in turn, every column under the tool is written again by each piece. A cut only
+// lowers columns to the lowest the tool reaches over them, so the order of the cuts does not
+// change the stock, nor the volume and the deepest gouge they add up to. Cut from the last piece
+// back, the first (deepest) writes the disc and the others find most of it below them already and
+// pass it by. The shank and holder would meet the stock as each piece leaves it: where they could
+// reach it anywhere about the circle, the pieces are cut in turn.
+CutResult HeightField::cutHelixRun(const Move* first, std::size_t count, std::size_t moveIndex, const ToolShape& tool)
+{
+    const base::Vec2 centre = first->arcCentre, out{first->arcRadius, first->arcRadius};
+    double zLow = first->from.z;
+    for (std::size_t k = 0; k < count; ++k)
+        zLow = std::min(zLow, first[k].to.z);
+    if (!holderClear(centre - out, centre + out, zLow, tool))
+        return Stock::cutArcRun(first, count, moveIndex, tool);
+    CutResult result;
+    m_cutNow = {};
+    const double r = tool.radiusMm();
+    for (std::size_t k = count; k-- > 0;) {
+        // A flat tool's disc where a piece is lowest is where its neighbour starts (going down)
+        // or ends (going up), and the neighbour, going on the same way, is as low there.
+        const bool down = first[k].to.z < first[k].from.z;
+        const bool discCovered =
+            tool.flatBottomed() && (down ? k + 1 < count && first[k + 1].to.z <= first[k + 1].from.z
+                                         : k > 0 && first[k - 1].to.z >= first[k - 1].from.z);
+        if (!clearOfStock(first[k], r + arcBulge(first[k])))
+            cutVertical(first[k], moveIndex, tool, result, discCovered);
+    }
+    refreshTiles(m_cutNow);
+    m_changed.add(m_cutNow);
+    m_lastEnd = first[count - 1].to, m_lastRadius = r, m_lastFlatVertical = tool.flatBottomed();
+    return result;
+}
+
 CutResult HeightField::cutArcRun(const Move* first, std::size_t count, std::size_t moveIndex, const ToolShape& tool)
 {
     const double r = tool.radiusMm();
-    if (count < 2 || !tool.flatBottomed() || r <= 0 || !first->positionKnown || !continuesLevelArc(first[0], first[1]))
+    if (count < 2 || r <= 0 || !first->positionKnown)
+        return Stock::cutArcRun(first, count, moveIndex, tool);
+    if (!continuesLevelArc(first[0], first[1]))
+        return cutHelixRun(first, count, moveIndex, tool);
+    if (!tool.flatBottomed())
         return Stock::cutArcRun(first, count, moveIndex, tool);
     const base::Vec2 centre = first->arcCentre;
     const double arcRadius = first->arcRadius, z = first->from.z;

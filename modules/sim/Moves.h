@@ -67,22 +67,33 @@ struct Move {
     // fromAxis to toAxis. Opposite ends have no even turn between them: fromAxis, not a guess.
     Vec3 axisAt(double u) const;
     bool moves() const { return kind == MoveKind::Rapid || kind == MoveKind::Feed; }
+    // Descends along Z more than it travels across (a vertical tool's plunge: a tool that does
+    // not cut at its centre must not make it into material).
+    bool plunges() const { return from.z - to.z > base::distance(from.xy(), to.xy()); }
     // The tip at `u` (0..1) of the move: along the arc for an arc piece, else on the chord; the
     // ends are `from` and `to` exactly.
     Vec3 pointAt(double u) const;
 };
 
-// True when `next` goes on from `piece` along the same level arc about Z (same block, circle,
-// height, tool and kind, vertical tool): the pieces a stock may sweep as one (Stock::cutArcRun).
-inline bool continuesLevelArc(const Move& piece, const Move& next)
+// True when `next` goes on from `piece` along the same arc or helix about Z (same block, circle,
+// tool and kind, vertical tool) and neither plunges: the pieces a stock may cut as one
+// (Stock::cutArcRun) and the checks judge as one.
+inline bool continuesArc(const Move& piece, const Move& next)
 {
-    auto level = [](const Move& m) {
-        return m.arcRadius > 0 && m.kind == MoveKind::Feed && m.from.z == m.to.z && !m.fiveAxis &&
+    auto onArc = [](const Move& m) {
+        return m.arcRadius > 0 && m.kind == MoveKind::Feed && !m.plunges() && !m.fiveAxis &&
                m.fromAxis == Vec3{0, 0, 1} && m.toAxis == Vec3{0, 0, 1};
     };
-    return level(piece) && level(next) && next.from == piece.to && next.record == piece.record &&
+    return onArc(piece) && onArc(next) && next.from == piece.to && next.record == piece.record &&
            next.tool == piece.tool && next.arcCentre == piece.arcCentre && next.arcRadius == piece.arcRadius &&
            next.spindleRpm == piece.spindleRpm;
+}
+
+// continuesArc(), and both pieces level: the pieces of a level arc, which a stock may sweep as
+// one annular sector.
+inline bool continuesLevelArc(const Move& piece, const Move& next)
+{
+    return continuesArc(piece, next) && piece.from.z == piece.to.z && next.from.z == next.to.z;
 }
 
 // An operation's span of moves (from SectionBegin to SectionEnd), for per-operation figures.

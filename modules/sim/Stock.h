@@ -74,10 +74,10 @@ public:
     // Removes what `tool` sweeps along `move` (index `moveIndex` of its MoveList, so a result can
     // name its block later). Pauses (dwell, tool change) cut nothing.
     virtual CutResult cut(const Move& move, std::size_t moveIndex, const ToolShape& tool) = 0;
-    // The pieces [first, first + count) of one level arc (each continuesLevelArc() the one
+    // The pieces [first, first + count) of one arc or helix (each continuesArc() the one
     // before), all marked as move `moveIndex`, as one cut: the same stock as cut() of each in
-    // turn, and their results added. A stock that can sweep the arc in one pass does (a quarter
-    // arc's fifteen pieces as one annular sector).
+    // turn, and their results added. A stock that can cut the run faster does (a quarter arc's
+    // fifteen pieces as one annular sector).
     virtual CutResult cutArcRun(const Move* first, std::size_t count, std::size_t moveIndex, const ToolShape& tool)
     {
         CutResult sum;

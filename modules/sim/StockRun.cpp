@@ -71,13 +71,13 @@ std::size_t StockRun::cutTo(std::size_t endMove, const std::atomic<bool>* cancel
             ++m_next;
             continue;
         }
-        // A run: this move and the pieces of the same level arc after it. The stock sweeps a
+        // A run: this move and the pieces of the same arc or helix after it. The stock cuts a
         // whole run in one pass; its pieces are marked as its first and judged together, so a
         // run cut piece by piece (cutTo stopping inside it) leaves the same stock and findings.
         if (m_next >= m_runEnd) {
             m_runStart = m_next;
             m_runEnd = m_next + 1;
-            while (m_runEnd < moves.size() && continuesLevelArc(moves[m_runEnd - 1], moves[m_runEnd]))
+            while (m_runEnd < moves.size() && continuesArc(moves[m_runEnd - 1], moves[m_runEnd]))
                 ++m_runEnd;
             m_runCut = {};
         }

@@ -84,8 +84,10 @@ namespace camwb::sim {
         const double newTop = std::max(height, double(bottom[i]));
         if (newTop >= top[i] - detail::kEps)
             return;
-        removed += top[i] - newTop;
-        top[i] = float(newTop);
+        // What the column loses as stored: the losses of cuts in any order add up to the same.
+        const float stored = float(newTop);
+        removed += double(top[i]) - stored;
+        top[i] = stored;
         lastCut[i] = std::int32_t(moveIndex);
         first = first < 0 ? i : first, last = i;
         if (design && newTop < design[i] - m_tolerance)

@@ -2,7 +2,8 @@
 // within the tool's radius of the true arc is cut and no other, for arcs wider and narrower than
 // the tool, either way round and over more than a quarter turn; the arc's pieces cut one by one
 // leave exactly what the run cut in one pass leaves; a run that starts where the tool stands
-// leaves what it leaves after a move elsewhere; the bound a span's fast skip compares with.
+// leaves what it leaves after a move elsewhere; a helix cut in one pass (last piece first) leaves
+// what its pieces cut in turn leave, holder findings too; the bound a span's fast skip compares with.
 #include "StockTestUtil.h"
 #include "sim/HeightField.h"
 #include "sim/detail/HeightFieldRows.h"
@@ -24,6 +25,7 @@ constexpr double kPi = 3.14159265358979323846;
 struct LevelArc {
     base::Vec2 centre;
     double radius, fromAngle, toAngle, z;  // angles in radians; toAngle < fromAngle: clockwise
+    double drop = 0;                       // a helix: how far it descends from z over the arc
 };
 
 // The arc's pieces as the move list makes them: ends on the circle, each from where the last ended.
@@ -32,7 +34,8 @@ std::vector<Move> pieces(const LevelArc& arc, int count)
     std::vector<Move> out;
     auto at = [&](int k) {
         const double a = arc.fromAngle + (arc.toAngle - arc.fromAngle) * k / count;
-        return Vec3{arc.centre.x + arc.radius * std::cos(a), arc.centre.y + arc.radius * std::sin(a), arc.z};
+        return Vec3{arc.centre.x + arc.radius * std::cos(a), arc.centre.y + arc.radius * std::sin(a),
+                    arc.z - arc.drop * k / count};
     };
     Vec3 from = at(0);
     for (int k = 1; k <= count; ++k) {
@@ -136,6 +139,48 @@ TEST(SimHeightFieldArc, ARunFromWhereTheToolStandsLeavesWhatAFreshRunLeaves)
         for (int i = 0; i < chained.columnsX(); ++i)
             if ((base::Vec2{chained.columnX(i), chained.columnY(j)} - run.front().from.xy()).length() < 3 - 1e-6)
                 ASSERT_EQ(chained.lastCut(i, j), 0);
+}
+
+// A helix's pieces each lower the disc under the tool a little deeper; the run cuts them from the
+// last back and a flat tool's discs once (cutHelixRun). The stock (to the heights the field tells
+// apart), each column's move and the holder's finding must be those of the pieces cut in turn,
+// for helices narrower and wider than the tool, both ways round, up and down, over more than a
+// turn, with flat and ball tools, and with a shank that meets the stock.
+TEST(SimHeightFieldArc, AHelixCutInOnePassLeavesWhatItsPiecesCutInTurnLeave)
+{
+    const base::Box3 b = box({0, 0, 0}, {40, 40, 10});
+    const LevelArc helices[] = {
+        {{20.02, 19.97}, 2, 0.3, 0.3 + 4 * kPi, 9, 4},  // narrower than the tool, two turns
+        {{20.02, 19.97}, 8, 0.5, 0.5 - 3 * kPi, 8, 3},  // wider, clockwise, a turn and a half
+        {{20.02, 19.97}, 8, 0.5, 0.5 + kPi, 6, -3},     // up
+    };
+    const toolpath::Tool tools[] = {makeTool("flat", 6), makeTool("ball", 6),
+                                    makeTool("flat", 6, 0, 3, 4)};  // the holder 4 mm over the tip
+    for (const toolpath::Tool& t : tools)
+        for (const LevelArc& helix : helices) {
+            const ToolShape tool(t);
+            const std::vector<Move> run = pieces(helix, 90);
+            HeightField together(b, 0.1), inTurn(b, 0.1);
+            const CutResult once = together.cutArcRun(run.data(), run.size(), 3, tool);
+            CutResult sum;
+            for (const Move& m : run)
+                sum.add(inTurn.cut(m, 3, tool));
+            SCOPED_TRACE(t.kind + " flute " + std::to_string(t.fluteLengthMm) + ", helix of radius " +
+                         std::to_string(helix.radius) + " from z " + std::to_string(helix.z));
+            int cut = 0;
+            for (int j = 0; j < together.columnsY(); ++j)
+                for (int i = 0; i < together.columnsX(); ++i) {
+                    // A column two cuts bring within kEps of each other keeps the one that came first.
+                    ASSERT_NEAR(together.top(i, j), inTurn.top(i, j), detail::kEps) << i << ", " << j;
+                    ASSERT_EQ(together.lastCut(i, j), inTurn.lastCut(i, j)) << i << ", " << j;
+                    cut += together.lastCut(i, j) == 3;
+                }
+            EXPECT_GT(cut, 1000);
+            EXPECT_NEAR(once.removedMm3, sum.removedMm3, 1e-9 * sum.removedMm3 + cut * 0.01 * detail::kEps);
+            EXPECT_NEAR(once.holderInterferenceMm, sum.holderInterferenceMm, detail::kEps);
+            if (t.fluteLengthMm < 5 && helix.drop > 0)
+                EXPECT_GT(once.holderInterferenceMm, 0.5);
+        }
 }
 
 // The height field passes columns whose float top lies at or below this bound four at a time: it

@@ -320,6 +320,35 @@ TEST(SimMoves, TheToolAxisTurnsEvenly)
 
 // The stock sweeps an arc about Z itself (HeightField::cutArcRun): its pieces carry the circle,
 // which pointAt() follows; an arc in another plane is left to its chords.
+// A helix's pieces go on from each other (a stock cuts them as one run) unless they plunge: a
+// steep helix's pieces are judged one by one, as a straight plunge is.
+TEST(SimMoves, AHelixIsARunUnlessItsPiecesPlunge)
+{
+    Toolpath p;
+    p.add(Rapid{{10, 0, 0}});
+    p.add(Arc{{10, 0, -2}, {0, 0, -2}, {0, 0, 1}, false, 0, 300});     // record 1: 2 mm a turn of radius 10
+    p.add(Arc{{9, 0, -40}, {9.5, 0, -40}, {0, 0, 1}, false, 0, 300});  // record 2: 38 mm a half turn of radius 0.5
+    const sim::MoveList list = sim::buildMoves(p);
+    int runs = 0, plunges = 0;
+    for (std::size_t i = 1; i + 1 < list.moves.size(); ++i) {
+        const sim::Move &m = list.moves[i], &next = list.moves[i + 1];
+        if (m.record != next.record)
+            continue;
+        EXPECT_FALSE(sim::continuesLevelArc(m, next));
+        if (m.record == 1) {
+            EXPECT_FALSE(m.plunges());
+            EXPECT_TRUE(sim::continuesArc(m, next));
+            ++runs;
+        } else {
+            EXPECT_TRUE(m.plunges());
+            EXPECT_FALSE(sim::continuesArc(m, next));
+            ++plunges;
+        }
+    }
+    EXPECT_GT(runs, 10);
+    EXPECT_GT(plunges, 5);
+}
+
 TEST(SimMoves, PiecesOfAnArcAboutZCarryItsCircle)
 {
     Toolpath p;

@@ -8,6 +8,7 @@
 #include "sim/HeightField.h"
 #include "sim/Simulation.h"
 #include "sim/StockRun.h"
+#include "sim/detail/HeightFieldRows.h"
 
 #include "StockTestUtil.h"
 
@@ -383,10 +384,15 @@ TEST(SimRun, CuttingInStepsLeavesWhatCuttingThroughLeaves)
             stepped.cutTo(stepped.nextMove() + step);
         for (int j = 0; j < stepStock.columnsY(); ++j)
             for (int i = 0; i < stepStock.columnsX(); ++i) {
-                ASSERT_EQ(stepStock.top(i, j), throughStock.top(i, j)) << i << ", " << j << " step " << step;
+                // Equal to the heights the field tells apart: the helix cut in one pass takes the
+                // lowest of two cuts kEps apart, in turn the first is kept.
+                ASSERT_NEAR(stepStock.top(i, j), throughStock.top(i, j), sim::detail::kEps)
+                    << i << ", " << j << " step " << step;
                 ASSERT_EQ(stepStock.lastCut(i, j), throughStock.lastCut(i, j)) << i << ", " << j << " step " << step;
             }
-        EXPECT_DOUBLE_EQ(stepped.removedMm3(), through.removedMm3());
+        // The helix is cut from its last piece back in one pass, in turn in steps: the same
+        // losses, added in another order.
+        EXPECT_NEAR(stepped.removedMm3(), through.removedMm3(), 1e-9 * through.removedMm3());
         EXPECT_DOUBLE_EQ(stepped.airCuttingMm(), through.airCuttingMm());
         EXPECT_DOUBLE_EQ(stepped.cuttingMm(), through.cuttingMm());
         const std::vector<sim::Check> a = stepped.checks(), c = through.checks();

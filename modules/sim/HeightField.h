@@ -46,10 +46,10 @@ public:
     base::Box3 bounds() const override { return m_box; }
     double resolutionMm() const override { return std::max(m_dx, m_dy); }
     TriangleMesh mesh() const override;
-    // mesh() with each flat square of 4 x 4 cells or more (a quadtree's aligned blocks, all its
-    // vertices at one height) as a fan around its centre through every vertex of its edges, so
-    // that neighbours meet vertex to vertex: a pocket's floor at 0.1 mm in hundreds of triangles
-    // instead of a million.
+    // mesh() with the flat cells gathered into rectangles, each a fan around its centre through
+    // the vertices of its edges that a neighbour or the side walls use, so that neighbours meet
+    // vertex to vertex: a pocket's floor at 0.1 mm in tens of triangles instead of a million (the
+    // example job's stock: 40,000 triangles against the plain mesh's 1.1 million).
     TriangleMesh fileMesh() const override;
     std::unique_ptr<Stock> clone() const override { return std::make_unique<HeightField>(*this); }
     std::size_t memoryBytes() const override;

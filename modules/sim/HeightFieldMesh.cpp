@@ -155,14 +155,12 @@ TriangleMesh HeightField::fileMesh() const { return buildMesh(true); }
 
 namespace {
 
-constexpr int kMinMergedLevel = 2;  // blocks of 4 x 4 cells: a fan of 16 triangles against 32
-
-int blocks(int cells, int level) { return (cells + (1 << level) - 1) >> level; }  // aligned blocks of 2^level cells
-
 // The triangles of a grid surface over nx x ny vertices (vertex (i, j) at base + j * nx + i, its
-// height heights[j * nx + i]), facing up or down; `merge`: each flat aligned block of 4 x 4 cells
-// or more (a quadtree's) as a fan around a new centre vertex through every vertex of its edges,
-// so that neighbours meet vertex to vertex.
+// height heights[j * nx + i]), facing up or down; `merge`: the flat cells (four vertices at one
+// height) gathered into rectangles, greedily row by row, and each rectangle of four cells or more
+// a fan around a new centre vertex through the vertices of its edges that anything else uses, so
+// that neighbours meet vertex to vertex. A vertex that is no rectangle's corner and no lone cell's
+// lies inside the edge two fans share (or inside one fan): both pass it by along the same edge.
 class GridSurface {
 public:
     GridSurface(TriangleMesh& m, const std::vector<float>& heights, std::uint32_t base, int nx, int ny, bool up) :
@@ -186,38 +184,67 @@ public:
 
     void merged()
     {
-        // Per level, each aligned block's height where it is flat (NaN where not, or where the
-        // block reaches past the grid's cells); level 0 is a cell with its four vertices.
-        const float none = std::numeric_limits<float>::quiet_NaN();
-        flat.assign(1, std::vector<float>(std::size_t(cx) * cy, none));
+        struct Rect {
+            int i, j, w, h;
+        };
+        std::vector<Rect> fans;
+        std::vector<char> taken(std::size_t(cx) * cy, 0);
+        auto free = [&](int i, int j, float h) { return !taken[std::size_t(j) * cx + i] && flatAt(i, j, h); };
         for (int j = 0; j < cy; ++j)
             for (int i = 0; i < cx; ++i) {
                 const float h = height(i, j);
-                if (height(i + 1, j) == h && height(i, j + 1) == h && height(i + 1, j + 1) == h)
-                    flat[0][std::size_t(j) * cx + i] = h;
-            }
-        for (int level = 1; (1 << (level - 1)) < std::max(cx, cy); ++level) {
-            const int size = 1 << level, bx = blocks(cx, level), by = blocks(cy, level), below = blocks(cx, level - 1);
-            std::vector<float> next(std::size_t(bx) * by, none);
-            const std::vector<float>& f = flat.back();
-            for (int j = 0; j < by; ++j)
-                for (int i = 0; i < bx; ++i) {
-                    if ((i + 1) * size > cx || (j + 1) * size > cy)
-                        continue;  // a block cut off by the grid's edge: its cells go on their own
-                    const float h = f[std::size_t(2 * j) * below + 2 * i];
-                    // NaN equals nothing: a block with one rough child is not flat.
-                    if (h == f[std::size_t(2 * j) * below + 2 * i + 1] &&
-                        h == f[std::size_t(2 * j + 1) * below + 2 * i] &&
-                        h == f[std::size_t(2 * j + 1) * below + 2 * i + 1])
-                        next[std::size_t(j) * bx + i] = h;
+                if (!free(i, j, h))
+                    continue;
+                int w = 1, rows = 1;
+                while (i + w < cx && free(i + w, j, h))
+                    ++w;
+                for (; j + rows < cy; ++rows) {
+                    int k = 0;
+                    while (k < w && free(i + k, j + rows, h))
+                        ++k;
+                    if (k < w)
+                        break;
                 }
-            flat.push_back(std::move(next));
+                if (w * rows < 4)
+                    w = 1, rows = 1;  // its cells on their own: fewer triangles than a fan may take
+                for (int dj = 0; dj < rows; ++dj)
+                    std::fill_n(taken.begin() + std::ptrdiff_t(std::size_t(j + dj) * cx + i), w, char(1));
+                if (w * rows > 1)
+                    fans.push_back({i, j, w, rows});
+            }
+        // The vertices a rim must pass through: the grid's outer ring (the side walls use every
+        // one), the corners of every fan and every vertex of a cell on its own.
+        needed.assign(std::size_t(nx) * ny, 0);
+        auto need = [&](int i, int j) { needed[std::size_t(j) * nx + i] = 1; };
+        for (int i = 0; i < nx; ++i)
+            need(i, 0), need(i, cy);
+        for (int j = 0; j < ny; ++j)
+            need(0, j), need(cx, j);
+        std::fill(taken.begin(), taken.end(), char(0));
+        for (const Rect& r : fans) {
+            need(r.i, r.j), need(r.i + r.w, r.j), need(r.i, r.j + r.h), need(r.i + r.w, r.j + r.h);
+            for (int dj = 0; dj < r.h; ++dj)
+                std::fill_n(taken.begin() + std::ptrdiff_t(std::size_t(r.j + dj) * cx + r.i), r.w, char(1));
         }
-        block(int(flat.size()) - 1, 0, 0);
+        for (int j = 0; j < cy; ++j)
+            for (int i = 0; i < cx; ++i)
+                if (!taken[std::size_t(j) * cx + i])
+                    need(i, j), need(i + 1, j), need(i, j + 1), need(i + 1, j + 1);
+        for (const Rect& r : fans)
+            fan(r.i, r.j, r.w, r.h);
+        for (int j = 0; j < cy; ++j)
+            for (int i = 0; i < cx; ++i)
+                if (!taken[std::size_t(j) * cx + i])
+                    cell(i, j);
     }
 
 private:
     float height(int i, int j) const { return heights[std::size_t(j) * nx + i]; }
+    // Cell (i, j) is flat at height h: its four vertices are.
+    bool flatAt(int i, int j, float h) const
+    {
+        return height(i, j) == h && height(i + 1, j) == h && height(i, j + 1) == h && height(i + 1, j + 1) == h;
+    }
     std::uint32_t vertex(int i, int j) const { return base + std::uint32_t(std::size_t(j) * nx + i); }
     void tri(std::uint32_t a, std::uint32_t b, std::uint32_t c)
     {
@@ -231,36 +258,29 @@ private:
         const std::uint32_t a = vertex(i, j), b = a + 1, d = vertex(i, j + 1), c = d + 1;
         tri(a, b, c), tri(a, c, d);
     }
-    void block(int level, int bi, int bj)
+    // The rectangle of w x h cells from (bi, bj) as a fan: its rim counter-clockwise seen from
+    // above, through the vertices of its edges that are needed.
+    void fan(int bi, int bj, int w, int h)
     {
-        if (bi >= cx || bj >= cy)
-            return;  // wholly past the grid's cells
-        const int size = 1 << level;
-        const float h = flat[std::size_t(level)][std::size_t(bj >> level) * blocks(cx, level) + (bi >> level)];
-        if (level >= kMinMergedLevel && !std::isnan(h)) {
-            // The rim counter-clockwise seen from above, through every vertex of its edges.
-            std::vector<std::uint32_t> rim;
-            for (int i = bi; i < bi + size; ++i)
-                rim.push_back(vertex(i, bj));
-            for (int j = bj; j < bj + size; ++j)
-                rim.push_back(vertex(bi + size, j));
-            for (int i = bi + size; i > bi; --i)
-                rim.push_back(vertex(i, bj + size));
-            for (int j = bj + size; j > bj; --j)
-                rim.push_back(vertex(bi, j));
-            const base::Vec3 lo = m.vertex(vertex(bi, bj)), hi = m.vertex(vertex(bi + size, bj + size));
-            m.positions.insert(m.positions.end(), {float((lo.x + hi.x) / 2), float((lo.y + hi.y) / 2), h});
-            const auto centre = std::uint32_t(m.vertexCount() - 1);
-            for (std::size_t k = 0; k < rim.size(); ++k)
-                tri(centre, rim[k], rim[(k + 1) % rim.size()]);
-        } else if (level == 0) {
-            cell(bi, bj);
-        } else {
-            const int half = size / 2;
-            for (int dj = 0; dj < 2; ++dj)
-                for (int di = 0; di < 2; ++di)
-                    block(level - 1, bi + di * half, bj + dj * half);
-        }
+        std::vector<std::uint32_t>& rim = rimScratch;
+        rim.clear();
+        auto on = [&](int i, int j) {
+            if (needed[std::size_t(j) * nx + i])
+                rim.push_back(vertex(i, j));
+        };
+        for (int i = bi; i < bi + w; ++i)
+            on(i, bj);
+        for (int j = bj; j < bj + h; ++j)
+            on(bi + w, j);
+        for (int i = bi + w; i > bi; --i)
+            on(i, bj + h);
+        for (int j = bj + h; j > bj; --j)
+            on(bi, j);
+        const base::Vec3 lo = m.vertex(vertex(bi, bj)), hi = m.vertex(vertex(bi + w, bj + h));
+        m.positions.insert(m.positions.end(), {float((lo.x + hi.x) / 2), float((lo.y + hi.y) / 2), height(bi, bj)});
+        const auto centre = std::uint32_t(m.vertexCount() - 1);
+        for (std::size_t k = 0; k < rim.size(); ++k)
+            tri(centre, rim[k], rim[(k + 1) % rim.size()]);
     }
 
     TriangleMesh& m;
@@ -268,7 +288,8 @@ private:
     std::uint32_t base;
     int nx, ny, cx, cy;
     bool up;
-    std::vector<std::vector<float>> flat;
+    std::vector<char> needed;  // per vertex: a rim must pass through it
+    std::vector<std::uint32_t> rimScratch;
 };
 
 void gridSurface(TriangleMesh& m, const std::vector<float>& heights, std::uint32_t base, int nx, int ny, bool up,

@@ -69,7 +69,11 @@ struct Move {
     bool moves() const { return kind == MoveKind::Rapid || kind == MoveKind::Feed; }
     // Descends along Z more than it travels across (a vertical tool's plunge: a tool that does
     // not cut at its centre must not make it into material).
-    bool plunges() const { return from.z - to.z > base::distance(from.xy(), to.xy()); }
+    bool plunges() const
+    {
+        const double down = from.z - to.z, dx = to.x - from.x, dy = to.y - from.y;
+        return down > 0 && down * down > dx * dx + dy * dy;
+    }
     // The tip at `u` (0..1) of the move: along the arc for an arc piece, else on the chord; the
     // ends are `from` and `to` exactly.
     Vec3 pointAt(double u) const;

@@ -325,7 +325,7 @@ TEST(SimHeightField, MeshIsClosedItsStlHoldsTheVolumeAndUpdatesInPlace)
 }
 
 // The file's mesh is the same closed surface with the flat areas merged: a pocket in a block
-// (499 x 399 cells: blocks cut off at the far edges) and a blank whose bottom is not flat.
+// (499 x 399 cells, an odd count) with floors at several depths, and a blank whose bottom is not flat.
 TEST(SimHeightField, FileMeshIsTheSameSurfaceInFewerTriangles)
 {
     HeightField pocket(box({0, 0, 0}, {49.9, 39.9, 20}), 0.1);
@@ -333,6 +333,13 @@ TEST(SimHeightField, FileMeshIsTheSameSurfaceInFewerTriangles)
     pocket.cut(makeMove({13, 13, 25}, {13, 13, 16}), 0, tool);
     pocket.cut(makeMove({13, 13, 16}, {37, 27, 16}), 1, tool);
     pocket.cut(makeMove({37, 27, 16}, {20, 30, 12.5}), 2, ToolShape(makeTool("ball", 4)));
+    // Flat floors at three depths with ragged, overlapping rims: rectangles of every shape meet
+    // each other's corners along their edges.
+    const ToolShape small(makeTool("flat", 3));
+    for (int k = 0; k < 24; ++k) {
+        const double x = 4 + (k * 7) % 41, y = 4 + (k * 11) % 31, z = 17 + k % 3;
+        pocket.cut(makeMove({x, y, z}, {x + 3 + k % 5, y + 2 - k % 4, z}), 3 + k, small);
+    }
     TriangleMesh blank = boxMesh({0, 0, 0}, {40, 30, 10});
     append(blank, boxMesh({0, 0, -5}, {10, 10, 0}));  // a foot under one corner
     const auto footed = HeightField::fromMesh(blank, 0.25);
@@ -342,9 +349,21 @@ TEST(SimHeightField, FileMeshIsTheSameSurfaceInFewerTriangles)
         EXPECT_NEAR(file.volumeMm3(), full.volumeMm3(), 1e-6 * full.volumeMm3());
         EXPECT_NEAR(file.bounds().min.z, full.bounds().min.z, 1e-9);
         EXPECT_NEAR(file.bounds().max.z, full.bounds().max.z, 1e-9);
-        EXPECT_LT(file.triangleCount() * 5, full.triangleCount())
+        EXPECT_LT(file.triangleCount() * 8, full.triangleCount())
             << file.triangleCount() << " of " << full.triangleCount();
     }
+}
+
+// An uncut block's top is one flat rectangle: a fan through the vertices its side walls use, and
+// nothing inside (the top, the walls' two triangles per edge and the bottom: four per ring edge).
+TEST(SimHeightField, FileMeshOfAnUncutBlockIsItsRingAndTwoFans)
+{
+    const HeightField stock(box({0, 0, 0}, {30, 20, 10}), 0.5);
+    const TriangleMesh file = stock.fileMesh();
+    const std::size_t ring = 2 * std::size_t(stock.columnsX() - 1 + stock.columnsY() - 1);
+    EXPECT_TRUE(closedAndOriented(file));
+    EXPECT_EQ(file.triangleCount(), 4 * ring);
+    EXPECT_NEAR(file.volumeMm3(), 30 * 20 * 10, 1e-6);
 }
 
 TEST(SimHeightField, BlankFromAMeshFillsItsInside)

@@ -708,6 +708,37 @@ private slots:
         QVERIFY(banner->isHidden());
     }
 
+    // A program that plunges before it says where in X and Y: the report names the block whose
+    // way the simulator could not follow, as a warning at its file and line.
+    void moveFromAnUnknownPositionIsReported()
+    {
+        QTemporaryDir dir;
+        QFile file(dir.filePath(QStringLiteral("unknown.ngc")));
+        QVERIFY(file.open(QIODevice::WriteOnly));
+        file.write("G90 G21\nT1 M6\nS1000 M3\nG0 Z5\nG1 Z-1 F100\nG1 X20 Y10\nG1 X40\nM30\n");
+        file.close();
+        MainWindow window;
+        window.resize(1600, 1000);
+        window.show();
+        QVERIFY(window.openNcFile(file.fileName()));
+        QVERIFY(waitForTrace(window));
+        simulate(window);
+        const QString report = window.reportView()->toPlainText();
+        QVERIFY2(report.contains(QRegularExpression(
+                     QStringLiteral("unknown\\.ngc:5: warning: feed move from an unknown position \\(X, Y not given"))),
+                 qPrintable(report));
+        QVERIFY2(report.contains(QLatin1String("Simulated unknown.ngc: cycle time 21.0 s, 0 errors, 1 warning\n")) ||
+                     report.endsWith(QLatin1String("0 errors, 1 warning")),
+                 qPrintable(report));
+        if (withGl()) {
+            for (QWidget* w = window.reportView(); w; w = w->parentWidget())
+                if (auto* dock = qobject_cast<QDockWidget*>(w))
+                    dock->raise();
+            QTest::qWait(50);
+            saveShot(&window, QStringLiteral("simulator-unknown-position.png"));
+        }
+    }
+
     // Cam.Sim.ImportMeasured, as a user would: the CSV's name, then the columns dialog (the one
     // shown now: an accepted one may linger until its deferred deletion).
     static camwb::gui::MeasuredImportDialog* askToImport(MainWindow& window, ScriptedPrompter& prompter,

@@ -3327,7 +3327,7 @@ The job %1 is opened as it was saved.</source>
         <translation>Simulace zrušena</translation>
     </message>
     <message>
-        <source>Simulated %1: cycle time %2 s, %3 errors, %4 warnings</source>
+        <source>Simulated %1: cycle time %2 s, errors: %3, warnings: %4</source>
         <translation>Simulováno %1: čas cyklu %2 s, chyby: %3, varování: %4</translation>
     </message>
     <message>

@@ -10,12 +10,15 @@ namespace {
 // `deg` moved by whole turns to lie nearest `near`: an endless C goes the short way from where it is.
 double nearestTurn(double deg, double near) { return deg + 360.0 * std::round((near - deg) / 360.0); }
 
+// The tip at `u` along the move's straight piece, its ends exactly.
+Vec3 tipAt(const Move& move, double u) { return u == 1 ? move.to : move.from + (move.to - move.from) * u; }
+
 }  // namespace
 
 kinematics::ToolPose toolAt(const Move& move, double u)
 {
     kinematics::ToolPose pose;
-    pose.tip = move.from + (move.to - move.from) * u;
+    pose.tip = tipAt(move, u);
     pose.axis = move.axisAt(u);
     return pose;
 }
@@ -38,12 +41,12 @@ bool knownRotaries(const kinematics::KinematicChain& chain, const Move& move, bo
 kinematics::MachinePose machinePoseAt(const kinematics::KinematicChain& chain, const Move& move, double u,
                                       const std::array<double, 2>& previousRotaryDeg, double toolLengthMm)
 {
-    const kinematics::ToolPose tool = toolAt(move, u);
     kinematics::MachinePose pose;
-    if (!chain.fiveAxis()) {
-        pose.linear = kinematics::linearAxesFor(chain, tool.tip, {0, 0}, toolLengthMm);
+    if (!chain.fiveAxis()) {  // the tool's axis does not matter
+        pose.linear = kinematics::linearAxesFor(chain, tipAt(move, u), {0, 0}, toolLengthMm);
         return pose;
     }
+    const kinematics::ToolPose tool = toolAt(move, u);
     std::array<double, 2> a{}, b{};
     if (knownRotaries(chain, move, false, a) && knownRotaries(chain, move, true, b)) {
         for (int j = 0; j < 2; ++j)

@@ -85,17 +85,27 @@ public:
         MoveGeometry g;
         if (!move.moves() || !move.positionKnown)
             return g;
-        const toolpath::Tool* tool = m_list.tool(move.tool);
-        const double toolLength = tool != nullptr ? tool->lengthMm : 0;
+        if (move.tool != m_toolNumber) {
+            const toolpath::Tool* tool = m_list.tool(move.tool);
+            m_toolNumber = move.tool;
+            m_toolLength = tool != nullptr ? tool->lengthMm : 0;
+        }
         // A three-axis chain maps the tip linearly: one piece. A five-axis move is looked at in
         // quarters, so a rotary axis that turns fast in the middle still caps the speed.
-        const int pieces = m_chain.fiveAxis() ? kRotaryPiecesPerMove : 1;
+        const bool fiveAxis = m_chain.fiveAxis();
+        const int pieces = fiveAxis ? kRotaryPiecesPerMove : 1;
         std::array<AxisVector, kRotaryPiecesPerMove + 1> q{};
         for (int p = 0; p <= pieces; ++p) {
-            const auto pose = machinePoseAt(m_chain, move, double(p) / pieces, m_previous, toolLength);
+            // Three axes: where the last move ended (with the same tool) is where this one starts.
+            if (p == 0 && !fiveAxis && m_endKnown && move.from == m_endTip && m_toolLength == m_endToolLength) {
+                q[0] = m_endAxes;
+                continue;
+            }
+            const auto pose = machinePoseAt(m_chain, move, double(p) / pieces, m_previous, m_toolLength);
             q[p] = axesOf(pose);
             m_previous = pose.rotaryDeg;
         }
+        m_endKnown = true, m_endTip = move.to, m_endToolLength = m_toolLength, m_endAxes = q[pieces];
         g.length = move.lengthMm();
         if (g.length < 1e-9) {
             g.length = 0;
@@ -128,6 +138,12 @@ private:
     const kinematics::KinematicChain& m_chain;
     AxisLimits m_limits;
     std::array<double, 2> m_previous{0, 0};
+    int m_toolNumber = -1;  // the tool m_toolLength is of
+    double m_toolLength = 0;
+    bool m_endKnown = false;  // the machine's axes where the last move ended
+    Vec3 m_endTip;
+    double m_endToolLength = 0;
+    AxisVector m_endAxes{};
 };
 
 double programmedSpeed(const Move& move, const MoveGeometry& g, const kinematics::Machine& machine, bool& fixedTime)

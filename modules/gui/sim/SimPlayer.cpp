@@ -165,15 +165,12 @@ void SimPlayer::reportChecks()
     }
     if (m_view != nullptr)
         m_view->simulation().showFindings(markers);
-    auto counted = [](int n, const QString& one, const QString& many) {
-        return QStringLiteral("%1 %2").arg(n).arg(n == 1 ? one : many);
-    };
     emit message(errors > 0 ? base::Severity::Error : base::Severity::Note,
-                 tr("Simulated %1: cycle time %2 s, %3, %4")
+                 tr("Simulated %1: cycle time %2 s, errors: %3, warnings: %4")
                      .arg(QString::fromStdString(m_run->programName))
                      .arg(m_run->cycleSeconds, 0, 'f', 1)
-                     .arg(counted(errors, tr("error"), tr("errors")))
-                     .arg(counted(warnings, tr("warning"), tr("warnings"))));
+                     .arg(errors)
+                     .arg(warnings));
 }
 
 std::optional<sim::Deviation> SimPlayer::deviation() const

@@ -77,6 +77,18 @@ private:
         QVERIFY(waitForTrace(window));
     }
 
+    // Writes `program` as `name` in `dir`, opens it as an NC file apart from any job and waits for
+    // its trace.
+    static void openProgram(MainWindow& window, const QTemporaryDir& dir, const QString& name, const char* program)
+    {
+        QFile file(dir.filePath(name));
+        QVERIFY(file.open(QIODevice::WriteOnly));
+        file.write(program);
+        file.close();
+        QVERIFY(window.openNcFile(file.fileName()));
+        QVERIFY(waitForTrace(window));
+    }
+
     // Simulate through the registry, as the toolbar's button does.
     static void simulate(MainWindow& window)
     {
@@ -684,14 +696,10 @@ private slots:
     void editedProgramIsOutOfDate()
     {
         QTemporaryDir dir;
-        QFile file(dir.filePath(QStringLiteral("part.ngc")));
-        QVERIFY(file.open(QIODevice::WriteOnly));
-        file.write("G90 G21\nG0 X0 Y0 Z5\nG1 Z-1 F200\nG1 X20\nG1 Y20\nG0 Z5\nM30\n");
-        file.close();
         MainWindow window;
         window.show();
-        QVERIFY(window.openNcFile(file.fileName()));
-        QVERIFY(waitForTrace(window));
+        openProgram(window, dir, QStringLiteral("part.ngc"),
+                    "G90 G21\nG0 X0 Y0 Z5\nG1 Z-1 F200\nG1 X20\nG1 Y20\nG0 Z5\nM30\n");
         simulate(window);
         QVERIFY(!window.simPlayer()->isOutOfDate());
         auto* banner = window.simDock()->findChild<QLabel*>(QStringLiteral("simBanner"));
@@ -713,15 +721,11 @@ private slots:
     void moveFromAnUnknownPositionIsReported()
     {
         QTemporaryDir dir;
-        QFile file(dir.filePath(QStringLiteral("unknown.ngc")));
-        QVERIFY(file.open(QIODevice::WriteOnly));
-        file.write("G90 G21\nT1 M6\nS1000 M3\nG0 Z5\nG1 Z-1 F100\nG1 X20 Y10\nG1 X40\nM30\n");
-        file.close();
         MainWindow window;
         window.resize(1600, 1000);
         window.show();
-        QVERIFY(window.openNcFile(file.fileName()));
-        QVERIFY(waitForTrace(window));
+        openProgram(window, dir, QStringLiteral("unknown.ngc"),
+                    "G90 G21\nT1 M6\nS1000 M3\nG0 Z5\nG1 Z-1 F100\nG1 X20 Y10\nG1 X40\nM30\n");
         simulate(window);
         const QString report = window.reportView()->toPlainText();
         QVERIFY2(report.contains(QRegularExpression(

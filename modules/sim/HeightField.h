@@ -99,7 +99,7 @@ private:
     // True when the shank and holder of `tool` at height z stay above every column within their
     // reach of the box lo-hi: a run of cuts there cannot meet them (cuts only lower columns).
     bool holderClear(base::Vec2 lo, base::Vec2 hi, double z, const ToolShape& tool) const;
-    // cutArcRun() of a helix (pieces that are not level).
+    // cutArcRun() of a helix (pieces not all level): any vertical tool, any mix of pieces.
     CutResult cutHelixRun(const Move* first, std::size_t count, std::size_t moveIndex, const ToolShape& tool);
     void cutTilted(const Move& move, std::size_t moveIndex, const ToolShape& tool, CutResult& result);
     // Lowers column (i, j) to `height`; accounts the removed volume, the gouge and the change.

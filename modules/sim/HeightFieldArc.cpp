@@ -178,8 +178,9 @@ CutResult HeightField::cutArcRun(const Move* first, std::size_t count, std::size
     const double r = tool.radiusMm();
     if (count < 2 || r <= 0 || !first->positionKnown)
         return Stock::cutArcRun(first, count, moveIndex, tool);
-    if (!continuesLevelArc(first[0], first[1]))
-        return cutHelixRun(first, count, moveIndex, tool);
+    for (std::size_t k = 1; k < count; ++k)
+        if (!continuesLevelArc(first[k - 1], first[k]))  // a helix (or any run not all level)
+            return cutHelixRun(first, count, moveIndex, tool);
     if (!tool.flatBottomed())
         return Stock::cutArcRun(first, count, moveIndex, tool);
     const base::Vec2 centre = first->arcCentre;

@@ -145,7 +145,8 @@ TEST(SimHeightFieldArc, ARunFromWhereTheToolStandsLeavesWhatAFreshRunLeaves)
 // last back and a flat tool's discs once (cutHelixRun). The stock (to the heights the field tells
 // apart), each column's move and the holder's finding must be those of the pieces cut in turn,
 // for helices narrower and wider than the tool, both ways round, up and down, over more than a
-// turn, with flat and ball tools, and with a shank that meets the stock.
+// turn, a level arc going on into a helix, with flat and ball tools, and with a holder that meets
+// the stock.
 TEST(SimHeightFieldArc, AHelixCutInOnePassLeavesWhatItsPiecesCutInTurnLeave)
 {
     const base::Box3 b = box({0, 0, 0}, {40, 40, 10});
@@ -156,17 +157,25 @@ TEST(SimHeightFieldArc, AHelixCutInOnePassLeavesWhatItsPiecesCutInTurnLeave)
     };
     const toolpath::Tool tools[] = {makeTool("flat", 6), makeTool("ball", 6),
                                     makeTool("flat", 6, 0, 3, 4)};  // the holder 4 mm over the tip
+    // A level half turn going on into a helix down: one run whose pieces are not all level.
+    std::vector<Move> mixed = pieces({{20.02, 19.97}, 8, 0.5, 0.5 + kPi, 6}, 40);
+    for (const Move& m : pieces({{20.02, 19.97}, 8, 0.5 + kPi, 0.5 + 3 * kPi, 6, 3}, 90))
+        mixed.push_back(m);
+    ASSERT_EQ(mixed[39].to, mixed[40].from);
     for (const toolpath::Tool& t : tools)
-        for (const LevelArc& helix : helices) {
+        for (std::size_t h = 0; h <= std::size(helices); ++h) {
+            const LevelArc& helix = helices[std::min(h, std::size(helices) - 1)];
             const ToolShape tool(t);
-            const std::vector<Move> run = pieces(helix, 90);
+            const std::vector<Move> run = h < std::size(helices) ? pieces(helix, 90) : mixed;
             HeightField together(b, 0.1), inTurn(b, 0.1);
             const CutResult once = together.cutArcRun(run.data(), run.size(), 3, tool);
             CutResult sum;
             for (const Move& m : run)
                 sum.add(inTurn.cut(m, 3, tool));
-            SCOPED_TRACE(t.kind + " flute " + std::to_string(t.fluteLengthMm) + ", helix of radius " +
-                         std::to_string(helix.radius) + " from z " + std::to_string(helix.z));
+            SCOPED_TRACE(t.kind + " flute " + std::to_string(t.fluteLengthMm) +
+                         (h < std::size(helices) ? ", helix of radius " + std::to_string(helix.radius) + " from z " +
+                                                       std::to_string(helix.z)
+                                                 : ", a level arc going on into a helix"));
             int cut = 0;
             for (int j = 0; j < together.columnsY(); ++j)
                 for (int i = 0; i < together.columnsX(); ++i) {
@@ -178,7 +187,7 @@ TEST(SimHeightFieldArc, AHelixCutInOnePassLeavesWhatItsPiecesCutInTurnLeave)
             EXPECT_GT(cut, 1000);
             EXPECT_NEAR(once.removedMm3, sum.removedMm3, 1e-9 * sum.removedMm3 + cut * 0.01 * detail::kEps);
             EXPECT_NEAR(once.holderInterferenceMm, sum.holderInterferenceMm, detail::kEps);
-            if (t.fluteLengthMm < 5 && helix.drop > 0)
+            if (t.fluteLengthMm < 5 && (helix.drop > 0 || h == std::size(helices)))
                 EXPECT_GT(once.holderInterferenceMm, 0.5);
         }
 }

@@ -168,23 +168,24 @@ private:
         push(*from, *end, kind, feed, 1.0, false);
     }
 
-    // The tool's axis becomes `axis` (a new working plane, or three-axis moves after five-axis
-    // ones). The machine turns its rotary axes for that before the next move; where the tool is
-    // known that turn is a move of its own, about the standing tip, so that its time and its
-    // axis speeds count (a jump would be an infinite speed). The rotary positions are unknown
-    // from there until a move gives them again.
     // The axes not known yet, in the working plane's frame.
     toolpath::AxisMask unknownAxes() const
     {
         return toolpath::AxisMask{static_cast<unsigned char>(toolpath::AxisMask::kAll & ~m_local.known().bits)};
     }
 
+    // Names the record in MoveList::untraced (one in error is reported as such already).
     void untraced(MoveKind kind, toolpath::AxisMask unknown)
     {
         if (!m_inError)
             m_out.untraced.push_back({m_record, kind, unknown, m_out.moves.size()});
     }
 
+    // The tool's axis becomes `axis` (a new working plane, or three-axis moves after five-axis
+    // ones). The machine turns its rotary axes for that before the next move; where the tool is
+    // known that turn is a move of its own, about the standing tip, so that its time and its
+    // axis speeds count (a jump would be an infinite speed). The rotary positions are unknown
+    // from there until a move gives them again.
     void turnTo(const Vec3& axis)
     {
         const Vec3 to = axis.normalized();

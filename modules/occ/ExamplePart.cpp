@@ -1,5 +1,5 @@
 // writeExamplePart: builds the teaching block with OCCT primitives and booleans and writes it as STEP.
-#include "occ/ExamplePart.h"
+#include "occ/detail/ModelData.h"
 
 #include "occ/detail/DataExchangeLock.h"
 #include "occ/detail/PartBuilders.h"
@@ -79,7 +79,7 @@ base::Status writeStep(const std::function<TopoDS_Shape()>& build, const char* n
 
 }  // namespace detail
 
-base::Status writeExamplePart(const std::string& stepPath)
+base::Status occt::writeExamplePart(const std::string& stepPath)
 {
     return detail::writeStep(buildExamplePart, "example-block", stepPath);
 }

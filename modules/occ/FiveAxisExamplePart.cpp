@@ -1,7 +1,7 @@
 // writeFiveAxisExamplePart: the five-axis teaching part (inclined faces, a spherical cap, holes
 // square to the inclined faces, a boss on one of them, a drafted round boss on another), built with OCCT primitives and
 // booleans; writeFiveAxisExampleBlank: the cast blank its job's operations start from.
-#include "occ/ExamplePart.h"
+#include "occ/detail/ModelData.h"
 
 #include "occ/detail/PartBuilders.h"
 
@@ -132,12 +132,12 @@ TopoDS_Shape buildFiveAxisBlank()
 
 }  // namespace
 
-base::Status writeFiveAxisExamplePart(const std::string& stepPath)
+base::Status occt::writeFiveAxisExamplePart(const std::string& stepPath)
 {
     return detail::writeStep(buildFiveAxisPart, "example-five-axis", stepPath);
 }
 
-base::Status writeFiveAxisExampleBlank(const std::string& stepPath)
+base::Status occt::writeFiveAxisExampleBlank(const std::string& stepPath)
 {
     return detail::writeStep(buildFiveAxisBlank, "example-five-axis-blank", stepPath);
 }

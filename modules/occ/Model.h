@@ -1,7 +1,8 @@
 // A CAD model loaded from a file (STEP, IGES, BREP or STL) and the questions the workbench asks of it:
 // which faces and edges it has, planar faces as geom profiles and regions, picked edges as chains,
 // its vertical holes, and a mesh for display.
-// OCCT stays behind the pimpl: nothing that includes this header sees an OCCT type.
+// OCCT stays behind the pimpl: nothing that includes this header sees an OCCT type, and OCCT itself
+// is loaded only when a model is (occ/detail/ModelImpl.h).
 #pragma once
 
 #include "base/Result.h"
@@ -38,7 +39,7 @@ struct EdgeInfo {
     double lengthMm = 0;
 };
 
-struct ModelData;
+class ModelImpl;
 
 // Immutable once loaded; copies share the data, so a Model is cheap to copy and safe to pass
 // between threads (mesh() serialises itself per model).
@@ -127,9 +128,9 @@ public:
                                     double toleranceMm) const;
 
 private:
-    explicit Model(std::shared_ptr<const ModelData> data);
+    explicit Model(std::shared_ptr<const ModelImpl> impl);
 
-    std::shared_ptr<const ModelData> m_data;
+    std::shared_ptr<const ModelImpl> m_impl;  // null: empty
 };
 
 }  // namespace camwb::occ

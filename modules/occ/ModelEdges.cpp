@@ -145,17 +145,8 @@ EdgeInfo describeEdge(const TopoDS_Edge& edge, int index)
     return info;
 }
 
-int Model::edgeCount() const { return m_data ? static_cast<int>(m_data->edgeInfos.size()) : 0; }
-
-EdgeInfo Model::edge(int index) const
-{
-    if (index < 1 || index > edgeCount())
-        return {};
-    return m_data->edgeInfos[static_cast<std::size_t>(index - 1)];
-}
-
-base::Result<std::vector<geom::Profile>> Model::edgeChains(const std::vector<int>& edgeIndices,
-                                                           double toleranceMm) const
+base::Result<std::vector<geom::Profile>> ModelData::edgeChains(const std::vector<int>& edgeIndices,
+                                                               double toleranceMm) const
 {
     if (!(toleranceMm > 0))
         return base::makeError("the tolerance must be positive");
@@ -173,7 +164,7 @@ base::Result<std::vector<geom::Profile>> Model::edgeChains(const std::vector<int
         Nodes nodes;
         std::vector<ChainEdge> items;
         for (int index : edgeIndices) {
-            ChainEdge item{index, TopoDS::Edge(m_data->edges(index)), {0, 0}};
+            ChainEdge item{index, TopoDS::Edge(edges(index)), {0, 0}};
             TopoDS_Vertex first, last;
             TopExp::Vertices(item.edge, first, last);
             if (first.IsNull() || last.IsNull())

@@ -12,13 +12,13 @@
 
 namespace camwb::occ {
 
-base::Result<Model> Model::inFrame(const base::Vec3& origin, const base::Vec3& xAxis, const base::Vec3& zAxis) const
+base::Result<std::shared_ptr<const ModelImpl>> ModelData::inFrame(const base::Vec3& origin, const base::Vec3& xAxis,
+                                                                  const base::Vec3& zAxis) const
 {
     if (!hasBRep())
-        return base::makeError("a mesh (STL) model has no faces to work on in a tilted plane",
-                               m_data ? m_data->path : std::string());
+        return base::makeError("a mesh (STL) model has no faces to work on in a tilted plane", path);
     if (std::abs(xAxis.length() - 1) > 1e-9 || std::abs(zAxis.length() - 1) > 1e-9 || std::abs(xAxis.dot(zAxis)) > 1e-9)
-        return base::makeError("a frame needs unit x and z axes at right angles", m_data->path);
+        return base::makeError("a frame needs unit x and z axes at right angles", path);
     const base::Vec3 yAxis = zAxis.cross(xAxis);
     // Workpiece -> frame: the rows of the rotation are the frame's axes, p' = R (p - origin).
     gp_Trsf toFrame;
@@ -26,27 +26,27 @@ base::Result<Model> Model::inFrame(const base::Vec3& origin, const base::Vec3& x
                       yAxis.x, yAxis.y, yAxis.z, -yAxis.dot(origin),  //
                       zAxis.x, zAxis.y, zAxis.z, -zAxis.dot(origin));
     auto data = std::make_shared<ModelData>();
-    data->path = m_data->path;
+    data->path = path;
     try {
         // Moved, not copied: the same faces and edges under a location, so the map order (the
         // indices a job refers to) stays what it is in the workpiece frame.
-        data->shape = m_data->shape.Moved(TopLoc_Location(toFrame));
+        data->shape = shape.Moved(TopLoc_Location(toFrame));
         describeShape(*data);
     } catch (const Standard_Failure& e) {
         return base::makeError(std::string("could not turn the model into the working plane: ") + e.GetMessageString(),
-                               m_data->path);
+                               path);
     }
-    if (data->faces.Extent() != m_data->faces.Extent() || data->edges.Extent() != m_data->edges.Extent())
-        return base::makeError("turning the model into the working plane changed its faces", m_data->path);
-    return Model(std::move(data));
+    if (data->faces.Extent() != faces.Extent() || data->edges.Extent() != edges.Extent())
+        return base::makeError("turning the model into the working plane changed its faces", path);
+    return std::shared_ptr<const ModelImpl>(std::move(data));
 }
 
-std::optional<base::Vec3> Model::cylinderAxis(int faceIndex) const
+std::optional<base::Vec3> ModelData::cylinderAxis(int faceIndex) const
 {
-    if (!hasBRep() || faceIndex < 1 || faceIndex > m_data->faces.Extent())
+    if (!hasBRep() || faceIndex < 1 || faceIndex > faces.Extent())
         return std::nullopt;
     try {
-        BRepAdaptor_Surface surface(TopoDS::Face(m_data->faces(faceIndex)));
+        BRepAdaptor_Surface surface(TopoDS::Face(faces(faceIndex)));
         if (surface.GetType() != GeomAbs_Cylinder)
             return std::nullopt;
         const gp_Dir d = surface.Cylinder().Axis().Direction();

@@ -148,16 +148,16 @@ int nearestFace(const ModelData& data, const base::Vec3& p)
 
 }  // namespace
 
-std::optional<Gouge> Model::firstGouge(const std::vector<ToolPose>& poses, double radiusMm, double fluteLengthMm,
-                                       double toleranceMm) const
+std::optional<Gouge> ModelData::firstGouge(const std::vector<ToolPose>& poses, double radiusMm, double fluteLengthMm,
+                                           double toleranceMm) const
 {
     if (!hasBRep() || poses.empty())
         return std::nullopt;
     try {
-        BRepClass3d_SolidClassifier classifier(m_data->shape);
-        const base::Vec3 lo = boundsMin() - base::Vec3{1e-3, 1e-3, 1e-3};
-        const base::Vec3 hi = boundsMax() + base::Vec3{1e-3, 1e-3, 1e-3};
-        const NearFaces nearFaces(*m_data, kSpacing);
+        BRepClass3d_SolidClassifier classifier(shape);
+        const base::Vec3 lo = boundsMin - base::Vec3{1e-3, 1e-3, 1e-3};
+        const base::Vec3 hi = boundsMax + base::Vec3{1e-3, 1e-3, 1e-3};
+        const NearFaces nearFaces(*this, kSpacing);
         for (const auto& [index, pose, length] : densePoses(poses, fluteLengthMm, 0.5)) {
             bool farOneSeen = false;
             for (const base::Vec3& p : toolPoints(pose, radiusMm, length, toleranceMm)) {
@@ -170,7 +170,7 @@ std::optional<Gouge> Model::firstGouge(const std::vector<ToolPose>& poses, doubl
                 }
                 classifier.Perform(gp_Pnt(p.x, p.y, p.z), 1e-7);
                 if (classifier.State() == TopAbs_IN)
-                    return Gouge{index, p, nearestFace(*m_data, p)};
+                    return Gouge{index, p, nearestFace(*this, p)};
             }
         }
     } catch (const Standard_Failure&) {

@@ -94,7 +94,7 @@ bool materialBeyond(BRepClass3d_SolidClassifier& classifier, const geom::Hole& h
 
 }  // namespace
 
-std::vector<geom::Hole> Model::holes() const
+std::vector<geom::Hole> ModelData::holes() const
 {
     if (!hasBRep())
         return {};
@@ -105,7 +105,7 @@ std::vector<geom::Hole> Model::holes() const
     std::vector<Candidate> candidates;
     try {
         for (int i = 1; i <= faceCount(); ++i) {
-            const std::optional<HolePiece> piece = holePiece(TopoDS::Face(m_data->faces(i)), i);
+            const std::optional<HolePiece> piece = holePiece(TopoDS::Face(faces(i)), i);
             if (!piece)
                 continue;
             auto it = std::find_if(candidates.begin(), candidates.end(),
@@ -122,7 +122,7 @@ std::vector<geom::Hole> Model::holes() const
         }
 
         std::vector<geom::Hole> result;
-        BRepClass3d_SolidClassifier classifier(m_data->shape);
+        BRepClass3d_SolidClassifier classifier(shape);
         constexpr double kProbeMm = 1e-3;
         for (Candidate& c : candidates) {
             // Concave fillets (pocket corners) are partial cylinders: a hole goes all the way round.
@@ -140,13 +140,13 @@ std::vector<geom::Hole> Model::holes() const
     }
 }
 
-base::Result<geom::Hole> Model::circleEdgeAsHole(int edgeIndex) const
+base::Result<geom::Hole> ModelData::circleEdgeAsHole(int edgeIndex) const
 {
     const std::string name = "edge " + std::to_string(edgeIndex);
     if (edgeIndex < 1 || edgeIndex > edgeCount())
         return base::makeError(name + " does not exist (the model has " + std::to_string(edgeCount()) + " edges)");
     try {
-        BRepAdaptor_Curve curve(TopoDS::Edge(m_data->edges(edgeIndex)));
+        BRepAdaptor_Curve curve(TopoDS::Edge(edges(edgeIndex)));
         if (curve.GetType() != GeomAbs_Circle)
             return base::makeError(name + " is not a circle");
         const gp_Circ circle = curve.Circle();

@@ -257,7 +257,7 @@ base::Status loadInto(ModelData& data, const std::string& ext, ProgressBridge& b
 
 }  // namespace
 
-base::Result<Model> Model::load(const std::string& path, const ProgressFn& progress)
+base::Result<std::shared_ptr<const ModelImpl>> occt::load(const std::string& path, const ProgressFn& progress)
 {
     std::error_code ec;
     if (!std::filesystem::exists(path, ec))
@@ -288,7 +288,7 @@ base::Result<Model> Model::load(const std::string& path, const ProgressFn& progr
     } catch (...) {
         return failed("could not read the file: unknown error");
     }
-    return Model(std::move(data));
+    return std::shared_ptr<const ModelImpl>(std::move(data));
 }
 
 }  // namespace camwb::occ

@@ -112,26 +112,23 @@ std::vector<base::Vec3> edgePolyline(const TopoDS_Edge& edge, const TopTools_Lis
 
 }  // namespace
 
-DisplayMesh Model::mesh(double linearDeflectionMm) const
+DisplayMesh ModelData::mesh(double linearDeflectionMm) const
 {
-    if (!m_data)
-        return {};
     if (!hasBRep())
-        return m_data->stlMesh;
+        return stlMesh;
     const double deflection = linearDeflectionMm > 0 ? linearDeflectionMm : 0.05;
 
-    std::lock_guard lock(m_data->meshMutex);
+    std::lock_guard lock(meshMutex);
     DisplayMesh mesh;
     try {
-        BRepMesh_IncrementalMesh mesher(m_data->shape, deflection, Standard_False, kAngularDeflectionRad,
-                                        Standard_False);
+        BRepMesh_IncrementalMesh mesher(shape, deflection, Standard_False, kAngularDeflectionRad, Standard_False);
     } catch (const Standard_Failure&) {
         // Faces that failed to mesh are simply missing from the display; edges still show.
     }
-    for (int i = 1; i <= m_data->faces.Extent(); ++i) {
+    for (int i = 1; i <= faces.Extent(); ++i) {
         const std::size_t positions = mesh.positions.size(), triangles = mesh.triangles.size();
         try {
-            appendFace(mesh, TopoDS::Face(m_data->faces(i)), i);
+            appendFace(mesh, TopoDS::Face(faces(i)), i);
         } catch (const Standard_Failure&) {
             // Drop the half-copied face so that every index stays valid.
             mesh.positions.resize(positions);
@@ -142,7 +139,7 @@ DisplayMesh Model::mesh(double linearDeflectionMm) const
     }
 
     TopTools_IndexedDataMapOfShapeListOfShape edgeFaces;
-    TopExp::MapShapesAndAncestors(m_data->shape, TopAbs_EDGE, TopAbs_FACE, edgeFaces);
+    TopExp::MapShapesAndAncestors(shape, TopAbs_EDGE, TopAbs_FACE, edgeFaces);
     for (int i = 1; i <= edgeFaces.Extent(); ++i) {
         const TopoDS_Edge& edge = TopoDS::Edge(edgeFaces.FindKey(i));
         if (BRep_Tool::Degenerated(edge))
@@ -154,8 +151,8 @@ DisplayMesh Model::mesh(double linearDeflectionMm) const
         } catch (const Standard_Failure&) {
         }
     }
-    mesh.boundsMin = m_data->boundsMin;
-    mesh.boundsMax = m_data->boundsMax;
+    mesh.boundsMin = boundsMin;
+    mesh.boundsMax = boundsMax;
     return mesh;
 }
 

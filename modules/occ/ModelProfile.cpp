@@ -59,7 +59,7 @@ base::Result<geom::Region> region(const TopoDS_Face& face, double toleranceMm)
 
 // Runs `make` on a face normal to Z, turning the checks and OCCT failures into errors naming the face.
 template <class T, class Make>
-base::Result<T> withZFace(const Model& model, const ModelData* data, int faceIndex, double toleranceMm, Make make)
+base::Result<T> withZFace(const ModelData& model, int faceIndex, double toleranceMm, Make make)
 {
     if (faceIndex < 1 || faceIndex > model.faceCount())
         return base::makeError(faceName(faceIndex) + " does not exist (the model has " +
@@ -72,7 +72,7 @@ base::Result<T> withZFace(const Model& model, const ModelData* data, int faceInd
     if (!(toleranceMm > 0))
         return base::makeError("the tolerance must be positive");
     try {
-        base::Result<T> result = make(TopoDS::Face(data->faces(faceIndex)), toleranceMm);
+        base::Result<T> result = make(TopoDS::Face(model.faces(faceIndex)), toleranceMm);
         if (!result)
             return base::makeError(faceName(faceIndex) + ": " + result.error().message);
         return result;
@@ -83,14 +83,14 @@ base::Result<T> withZFace(const Model& model, const ModelData* data, int faceInd
 
 }  // namespace
 
-base::Result<geom::Profile> Model::planarFaceOuterProfile(int faceIndex, double toleranceMm) const
+base::Result<geom::Profile> ModelData::planarFaceOuterProfile(int faceIndex, double toleranceMm) const
 {
-    return withZFace<geom::Profile>(*this, m_data.get(), faceIndex, toleranceMm, outerProfile);
+    return withZFace<geom::Profile>(*this, faceIndex, toleranceMm, outerProfile);
 }
 
-base::Result<geom::Region> Model::planarFaceRegion(int faceIndex, double toleranceMm) const
+base::Result<geom::Region> ModelData::planarFaceRegion(int faceIndex, double toleranceMm) const
 {
-    return withZFace<geom::Region>(*this, m_data.get(), faceIndex, toleranceMm, region);
+    return withZFace<geom::Region>(*this, faceIndex, toleranceMm, region);
 }
 
 }  // namespace camwb::occ

@@ -1,4 +1,4 @@
-// Model::sectionLoops: OCCT's exact section of the solid by a horizontal plane
+// ModelData::sectionLoops: OCCT's exact section of the solid by a horizontal plane
 // (BRepAlgoAPI_Section), its edges discretised within a tolerance and chained into closed loops.
 // The slow reference that the mesh slicer (ops/surface/MeshSlicer.h) is held against.
 #include "occ/Model.h"
@@ -108,16 +108,15 @@ void orient(std::vector<Polyline>& loops)
 
 }  // namespace
 
-base::Result<std::vector<std::vector<base::Vec2>>> Model::sectionLoops(double z, double toleranceMm) const
+base::Result<std::vector<std::vector<base::Vec2>>> ModelData::sectionLoops(double z, double toleranceMm) const
 {
-    const std::string path = m_data ? m_data->path : std::string();
     if (!hasBRep())
         return base::makeError("a mesh (STL) model has no exact section; slice its mesh", path);
     if (!(toleranceMm > 0))
         return base::makeError("the section's tolerance must be above 0 mm", path);
     std::vector<Polyline> pieces;
     try {
-        BRepAlgoAPI_Section section(m_data->shape, gp_Pln(gp_Pnt(0, 0, z), gp_Dir(0, 0, 1)), Standard_False);
+        BRepAlgoAPI_Section section(shape, gp_Pln(gp_Pnt(0, 0, z), gp_Dir(0, 0, 1)), Standard_False);
         section.Build();
         if (!section.IsDone())
             return base::makeError("OCCT could not section the model at Z " + std::to_string(z), path);

@@ -202,14 +202,14 @@ double meanZ(const BRepAdaptor_Curve& c)
 
 }  // namespace
 
-base::Result<SwarfFace> Model::swarfFace(int faceIndex, int edgeIndex) const
+base::Result<SwarfFace> ModelData::swarfFace(int faceIndex, int edgeIndex) const
 {
     const std::string name = "face " + std::to_string(faceIndex);
-    if (!hasBRep() || faceIndex < 1 || faceIndex > m_data->faces.Extent())
+    if (!hasBRep() || faceIndex < 1 || faceIndex > faces.Extent())
         return base::makeError(name + " is not in the model");
     try {
-        const TopoDS_Face face = TopoDS::Face(m_data->faces(faceIndex));
-        const double maxLength = distance(boundsMin(), boundsMax()) + 1;
+        const TopoDS_Face face = TopoDS::Face(faces(faceIndex));
+        const double maxLength = distance(boundsMin, boundsMax) + 1;
         const GeomAbs_SurfaceType type = BRepAdaptor_Surface(face).GetType();
         if (type != GeomAbs_Plane && type != GeomAbs_Cylinder && type != GeomAbs_Cone &&
             type != GeomAbs_SurfaceOfExtrusion)
@@ -223,7 +223,7 @@ base::Result<SwarfFace> Model::swarfFace(int faceIndex, int edgeIndex) const
             const TopoDS_Edge& edge = TopoDS::Edge(it.Current());
             if (BRep_Tool::Degenerated(edge))
                 continue;
-            const int index = m_data->edges.FindIndex(edge);
+            const int index = edges.FindIndex(edge);
             if (edgeIndex != 0) {
                 if (index == edgeIndex)
                     drive = edge;
@@ -245,7 +245,7 @@ base::Result<SwarfFace> Model::swarfFace(int faceIndex, int edgeIndex) const
         evaluator->chooseSense();
         SwarfFace out;
         out.face = faceIndex;
-        out.edge = m_data->edges.FindIndex(*drive);
+        out.edge = edges.FindIndex(*drive);
         out.surface = surfaceName(type);
         out.t0 = evaluator->curve().FirstParameter();
         out.t1 = evaluator->curve().LastParameter();

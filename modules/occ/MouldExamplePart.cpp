@@ -1,6 +1,6 @@
 // writeMouldExamplePart: the three-axis mould teaching part (a drafted cavity with floor fillets, a
 // shelf and a spherical dome), built with OCCT draft, fillet and boolean operations.
-#include "occ/ExamplePart.h"
+#include "occ/detail/ModelData.h"
 
 #include "occ/detail/PartBuilders.h"
 
@@ -108,7 +108,7 @@ TopoDS_Shape buildMouldPart()
 
 }  // namespace
 
-base::Status writeMouldExamplePart(const std::string& stepPath)
+base::Status occt::writeMouldExamplePart(const std::string& stepPath)
 {
     return detail::writeStep(buildMouldPart, "example-mould", stepPath);
 }

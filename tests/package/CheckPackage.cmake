@@ -1,5 +1,6 @@
 # Makes the DEB as `cpack -G DEB` in the build folder does (into a scratch folder) and checks what
-# a user installs: both programs are in it and stripped, and the installed size stays small.
+# a user installs: both programs are in it and stripped, so is the OCCT kernel and the installed
+# program finds it, and the installed size stays small.
 file(REMOVE_RECURSE ${WORK})
 file(MAKE_DIRECTORY ${WORK})
 execute_process(COMMAND ${CPACK} -G DEB --config ${BUILD_DIR}/CPackConfig.cmake -B ${WORK}
@@ -27,6 +28,29 @@ foreach(program IN ITEMS camwb camwb-cli)
     message(FATAL_ERROR "usr/bin/${program} is not stripped: ${kind}")
   endif()
 endforeach()
+# The OCCT kernel the programs load on their first model (modules/occ): installed, stripped, and
+# found by the installed program, not the build tree's one (CAMWB_OCC_KERNEL cleared).
+file(GLOB_RECURSE kernels ${WORK}/root/usr/lib/*/libcamwb_occ_kernel.so)
+list(LENGTH kernels count)
+if(NOT count EQUAL 1)
+  message(FATAL_ERROR "expected one usr/lib/.../camwb/libcamwb_occ_kernel.so in the package, found: ${kernels}")
+endif()
+execute_process(COMMAND file -b ${kernels} OUTPUT_VARIABLE kind)
+if(NOT kind MATCHES ", stripped")
+  message(FATAL_ERROR "${kernels} is not stripped: ${kind}")
+endif()
+set(examples ${WORK}/root/usr/share/camwb/examples)
+execute_process(COMMAND ${CMAKE_COMMAND} -E env --unset=CAMWB_OCC_KERNEL LD_DEBUG=files
+                        ${WORK}/root/usr/bin/camwb-cli cl ${examples}/example-block.camwb -o ${WORK}/example.apt
+                RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+if(NOT rc EQUAL 0 OR NOT EXISTS ${WORK}/example.apt)
+  message(FATAL_ERROR "the installed camwb-cli could not compute the installed example (${rc}):\n${out}${err}")
+endif()
+# The loader's trace (LD_DEBUG=files) names each library as it opens it.
+string(FIND "${err}" "file=${kernels} " found)
+if(found EQUAL -1)
+  message(FATAL_ERROR "the installed camwb-cli did not load the installed kernel ${kernels}:\n${err}")
+endif()
 # Every library an installed post includes is installed beside it (posts/include/<name>.js).
 file(GLOB installed_posts ${WORK}/root/usr/share/camwb/posts/*.js)
 if(NOT installed_posts)

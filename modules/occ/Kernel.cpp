@@ -1,0 +1,112 @@
+// Finds and loads the OCCT kernel (libcamwb_occ_kernel.so) the first time a model is read or an
+// example part written. Linking OCCT into the programs made every command pay for loading and
+// relocating some 20 OCCT libraries at start-up (25 of camwb-cli's 38 ms), also the many commands
+// that never read a model: simulating or posting a program, tracing NC.
+#include "occ/detail/ModelImpl.h"
+
+#include "occ/ExamplePart.h"
+
+#include <dlfcn.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <system_error>
+
+namespace camwb::occ {
+namespace {
+
+// The places the kernel may be: CAMWB_OCC_KERNEL when set; else installed beside the program
+// (bin/../lib/<arch>/camwb/) or, for a program run from the build tree, where it was built.
+std::vector<std::filesystem::path> kernelCandidates()
+{
+    if (const char* chosen = std::getenv("CAMWB_OCC_KERNEL"); chosen && *chosen)
+        return {chosen};
+    std::vector<std::filesystem::path> candidates;
+    std::error_code ec;
+    const std::filesystem::path program = std::filesystem::read_symlink("/proc/self/exe", ec);
+    if (!ec)
+        candidates.push_back((program.parent_path() / CAMWB_OCC_KERNEL_FROM_BINDIR).lexically_normal());
+    candidates.emplace_back(CAMWB_OCC_KERNEL_BUILT);
+    return candidates;
+}
+
+base::Result<const KernelTable*> loadKernel()
+{
+    const std::vector<std::filesystem::path> candidates = kernelCandidates();
+    std::filesystem::path path = candidates.back();
+    for (const std::filesystem::path& candidate : candidates) {
+        std::error_code ec;
+        if (std::filesystem::exists(candidate, ec)) {
+            path = candidate;
+            break;
+        }
+    }
+    auto failed = [&](const std::string& why) {
+        return base::makeError("the OCCT kernel " + path.string() + " could not be loaded: " + why +
+                               " (the library that reads and writes models; CAMWB_OCC_KERNEL may name where it is)");
+    };
+    // Never closed: models hold objects whose code lives in it.
+    void* library = dlopen(path.c_str(), RTLD_NOW | RTLD_LOCAL);
+    if (!library) {
+        // dlerror() starts with the path, which the message names already.
+        std::string why = dlerror();
+        if (why.rfind(path.string() + ": ", 0) == 0)
+            why.erase(0, path.string().size() + 2);
+        return failed(why);
+    }
+    using Entry = const KernelTable* (*)();
+    const auto entry = reinterpret_cast<Entry>(dlsym(library, kKernelEntryPoint));
+    if (!entry)
+        return failed(std::string("it has no entry point ") + kKernelEntryPoint);
+    const KernelTable* table = entry();
+    if (!table || table->abi != kKernelAbi)
+        return failed("it was built for another version of the program (kernel ABI " +
+                      std::to_string(table ? table->abi : 0) + ", expected " + std::to_string(kKernelAbi) + ")");
+    return table;
+}
+
+}  // namespace
+
+base::Result<const KernelTable*> kernel()
+{
+    static const base::Result<const KernelTable*> loaded = loadKernel();
+    return loaded;
+}
+
+}  // namespace camwb::occ
+
+// The example parts are built with OCCT, so the kernel writes them (ExamplePart.h).
+namespace camwb::occ {
+namespace {
+
+base::Status writeWithKernel(base::Status (*KernelTable::*writer)(const std::string&), const std::string& stepPath)
+{
+    const base::Result<const KernelTable*> loaded = kernel();
+    if (!loaded)
+        return base::makeError(loaded.error().message, stepPath);
+    return (loaded.value()->*writer)(stepPath);
+}
+
+}  // namespace
+
+base::Status writeExamplePart(const std::string& stepPath)
+{
+    return writeWithKernel(&KernelTable::writeExamplePart, stepPath);
+}
+
+base::Status writeFiveAxisExamplePart(const std::string& stepPath)
+{
+    return writeWithKernel(&KernelTable::writeFiveAxisExamplePart, stepPath);
+}
+
+base::Status writeFiveAxisExampleBlank(const std::string& stepPath)
+{
+    return writeWithKernel(&KernelTable::writeFiveAxisExampleBlank, stepPath);
+}
+
+base::Status writeMouldExamplePart(const std::string& stepPath)
+{
+    return writeWithKernel(&KernelTable::writeMouldExamplePart, stepPath);
+}
+
+}  // namespace camwb::occ

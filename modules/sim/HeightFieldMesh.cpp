@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 
 namespace camwb::sim {
 
@@ -149,26 +150,83 @@ bool HeightField::sameBottom() const
 
 // One top vertex per column (the grid's outer vertices pushed out to the box's sides, so the mesh
 // covers the stock), triangles that never change while cutting, side walls down to the bottom,
-// and the bottom as a fan (a flat bottom) or a second grid (a blank's).
+// and the bottom as a fan (a flat bottom) or a second grid (a blank's). The file's mesh gathers
+// the flat cells into fans and holds only the vertices its triangles use.
 TriangleMesh HeightField::mesh() const { return buildMesh(false); }
 TriangleMesh HeightField::fileMesh() const { return buildMesh(true); }
 
 namespace {
 
-// The triangles of a grid surface over nx x ny vertices (vertex (i, j) at base + j * nx + i, its
-// height heights[j * nx + i]), facing up or down; `merge`: the flat cells (four vertices at one
+// The mesh's vertices at the grid points of one surface (x and y per grid line, a height per point
+// in heights[j * nx + i]). Made all at once, in grid order from `base` on (the display mesh: its
+// heights are rewritten in place while cutting), or each when a triangle first uses it (the file's,
+// which uses a few percent of them).
+class GridVertices {
+public:
+    GridVertices(TriangleMesh& m, const std::vector<double>& xs, const std::vector<double>& ys,
+                 const std::vector<float>& heights, bool onUse) :
+        m(m),
+        xs(xs),
+        ys(ys),
+        heights(heights),
+        nx(int(xs.size()))
+    {
+        if (onUse) {
+            ids.assign(heights.size(), kNone);
+            return;
+        }
+        base = std::uint32_t(m.vertexCount());
+        for (int j = 0; j < int(ys.size()); ++j)
+            for (int i = 0; i < nx; ++i)
+                add(i, j);
+    }
+
+    std::uint32_t at(int i, int j)
+    {
+        if (ids.empty())
+            return base + std::uint32_t(std::size_t(j) * nx + i);
+        std::uint32_t& id = ids[std::size_t(j) * nx + i];
+        if (id == kNone)
+            id = add(i, j);
+        return id;
+    }
+    double x(int i) const { return xs[std::size_t(i)]; }
+    double y(int j) const { return ys[std::size_t(j)]; }
+    float height(int i, int j) const { return heights[std::size_t(j) * nx + i]; }
+    int columns() const { return nx; }
+    int rows() const { return int(ys.size()); }
+
+private:
+    static constexpr std::uint32_t kNone = ~std::uint32_t(0);
+    std::uint32_t add(int i, int j)
+    {
+        const std::size_t k = m.positions.size();
+        m.positions.resize(k + 3);
+        m.positions[k] = float(x(i)), m.positions[k + 1] = float(y(j)), m.positions[k + 2] = height(i, j);
+        return std::uint32_t(k / 3);
+    }
+
+    TriangleMesh& m;
+    const std::vector<double>& xs;
+    const std::vector<double>& ys;
+    const std::vector<float>& heights;
+    int nx;
+    std::uint32_t base = 0;
+    std::vector<std::uint32_t> ids;  // made on use: the mesh's vertex at each grid point, or kNone
+};
+
+// The triangles of a grid surface, facing up or down; `merge`: the flat cells (four vertices at one
 // height) gathered into rectangles, greedily row by row, and each rectangle of four cells or more
 // a fan around a new centre vertex through the vertices of its edges that anything else uses, so
 // that neighbours meet vertex to vertex. A vertex that is no rectangle's corner and no lone cell's
 // lies inside the edge two fans share (or inside one fan): both pass it by along the same edge.
 class GridSurface {
 public:
-    GridSurface(TriangleMesh& m, const std::vector<float>& heights, std::uint32_t base, int nx, int ny, bool up) :
+    GridSurface(TriangleMesh& m, GridVertices& v, bool up) :
         m(m),
-        heights(heights),
-        base(base),
-        nx(nx),
-        ny(ny),
+        v(v),
+        nx(v.columns()),
+        ny(v.rows()),
         cx(nx - 1),
         cy(ny - 1),
         up(up)
@@ -192,7 +250,7 @@ public:
         auto free = [&](int i, int j, float h) { return !taken[std::size_t(j) * cx + i] && flatAt(i, j, h); };
         for (int j = 0; j < cy; ++j)
             for (int i = 0; i < cx; ++i) {
-                const float h = height(i, j);
+                const float h = v.height(i, j);
                 if (!free(i, j, h))
                     continue;
                 int w = 1, rows = 1;
@@ -239,13 +297,11 @@ public:
     }
 
 private:
-    float height(int i, int j) const { return heights[std::size_t(j) * nx + i]; }
     // Cell (i, j) is flat at height h: its four vertices are.
     bool flatAt(int i, int j, float h) const
     {
-        return height(i, j) == h && height(i + 1, j) == h && height(i, j + 1) == h && height(i + 1, j + 1) == h;
+        return v.height(i, j) == h && v.height(i + 1, j) == h && v.height(i, j + 1) == h && v.height(i + 1, j + 1) == h;
     }
-    std::uint32_t vertex(int i, int j) const { return base + std::uint32_t(std::size_t(j) * nx + i); }
     void tri(std::uint32_t a, std::uint32_t b, std::uint32_t c)
     {
         if (up)
@@ -255,7 +311,7 @@ private:
     }
     void cell(int i, int j)
     {
-        const std::uint32_t a = vertex(i, j), b = a + 1, d = vertex(i, j + 1), c = d + 1;
+        const std::uint32_t a = v.at(i, j), b = v.at(i + 1, j), c = v.at(i + 1, j + 1), d = v.at(i, j + 1);
         tri(a, b, c), tri(a, c, d);
     }
     // The rectangle of w x h cells from (bi, bj) as a fan: its rim counter-clockwise seen from
@@ -266,7 +322,7 @@ private:
         rim.clear();
         auto on = [&](int i, int j) {
             if (needed[std::size_t(j) * nx + i])
-                rim.push_back(vertex(i, j));
+                rim.push_back(v.at(i, j));
         };
         for (int i = bi; i < bi + w; ++i)
             on(i, bj);
@@ -276,31 +332,20 @@ private:
             on(i, bj + h);
         for (int j = bj + h; j > bj; --j)
             on(bi, j);
-        const base::Vec3 lo = m.vertex(vertex(bi, bj)), hi = m.vertex(vertex(bi + w, bj + h));
-        m.positions.insert(m.positions.end(), {float((lo.x + hi.x) / 2), float((lo.y + hi.y) / 2), height(bi, bj)});
+        m.positions.insert(m.positions.end(),
+                           {float((v.x(bi) + v.x(bi + w)) / 2), float((v.y(bj) + v.y(bj + h)) / 2), v.height(bi, bj)});
         const auto centre = std::uint32_t(m.vertexCount() - 1);
         for (std::size_t k = 0; k < rim.size(); ++k)
             tri(centre, rim[k], rim[(k + 1) % rim.size()]);
     }
 
     TriangleMesh& m;
-    const std::vector<float>& heights;
-    std::uint32_t base;
+    GridVertices& v;
     int nx, ny, cx, cy;
     bool up;
     std::vector<char> needed;  // per vertex: a rim must pass through it
     std::vector<std::uint32_t> rimScratch;
 };
-
-void gridSurface(TriangleMesh& m, const std::vector<float>& heights, std::uint32_t base, int nx, int ny, bool up,
-                 bool merge)
-{
-    GridSurface grid(m, heights, base, nx, ny, up);
-    if (merge)
-        grid.merged();
-    else
-        grid.plain();
-}
 
 }  // namespace
 
@@ -308,10 +353,18 @@ TriangleMesh HeightField::buildMesh(bool mergeFlats) const
 {
     TriangleMesh m;
     const bool flatBottom = sameBottom();
-    const std::size_t n = m_top.size();
-    m.positions.reserve(3 * (flatBottom ? n + 2 * (m_nx + m_ny) : 2 * n));
-    auto vx = [&](int i) { return i == 0 ? m_box.min.x : i == m_nx - 1 ? m_box.max.x : columnX(i); };
-    auto vy = [&](int j) { return j == 0 ? m_box.min.y : j == m_ny - 1 ? m_box.max.y : columnY(j); };
+    if (!mergeFlats)
+        m.positions.reserve(3 * (flatBottom ? m_top.size() + 2 * (m_nx + m_ny) : 2 * m_top.size()));
+    std::vector<double> xs(static_cast<std::size_t>(m_nx)), ys(static_cast<std::size_t>(m_ny));
+    for (int i = 0; i < m_nx; ++i)
+        xs[std::size_t(i)] = i == 0 ? m_box.min.x : i == m_nx - 1 ? m_box.max.x : columnX(i);
+    for (int j = 0; j < m_ny; ++j)
+        ys[std::size_t(j)] = j == 0 ? m_box.min.y : j == m_ny - 1 ? m_box.max.y : columnY(j);
+    // The display mesh's top vertices first, in grid order: updateMesh finds them by column.
+    GridVertices top(m, xs, ys, m_top, mergeFlats);
+    std::optional<GridVertices> bottom;
+    if (!flatBottom)
+        bottom.emplace(m, xs, ys, m_bottom, mergeFlats);
     auto put = [&](double x, double y, double z) {
         m.positions.insert(m.positions.end(), {float(x), float(y), float(z)});
         return std::uint32_t(m.positions.size() / 3 - 1);
@@ -319,9 +372,6 @@ TriangleMesh HeightField::buildMesh(bool mergeFlats) const
     auto tri = [&](std::uint32_t a, std::uint32_t b, std::uint32_t c) {
         m.triangles.insert(m.triangles.end(), {a, b, c});
     };
-    for (int j = 0; j < m_ny; ++j)
-        for (int i = 0; i < m_nx; ++i)
-            put(vx(i), vy(j), m_top[index(i, j)]);
     // The perimeter counter-clockwise seen from above.
     std::vector<std::pair<int, int>> ring;
     for (int i = 0; i < m_nx - 1; ++i)
@@ -335,28 +385,31 @@ TriangleMesh HeightField::buildMesh(bool mergeFlats) const
     std::vector<std::uint32_t> below(ring.size());
     if (flatBottom) {
         for (std::size_t k = 0; k < ring.size(); ++k)
-            below[k] = put(vx(ring[k].first), vy(ring[k].second), m_bottom.front());
+            below[k] = put(xs[std::size_t(ring[k].first)], ys[std::size_t(ring[k].second)], m_bottom.front());
         const std::uint32_t centre =
             put((m_box.min.x + m_box.max.x) / 2, (m_box.min.y + m_box.max.y) / 2, m_bottom.front());
         for (std::size_t k = 0; k < ring.size(); ++k)
             tri(centre, below[(k + 1) % ring.size()], below[k]);
     } else {
-        for (int j = 0; j < m_ny; ++j)
-            for (int i = 0; i < m_nx; ++i)
-                put(vx(i), vy(j), m_bottom[index(i, j)]);
         for (std::size_t k = 0; k < ring.size(); ++k)
-            below[k] = std::uint32_t(n + index(ring[k].first, ring[k].second));
+            below[k] = bottom->at(ring[k].first, ring[k].second);
     }
     for (std::size_t k = 0; k < ring.size(); ++k) {
         const std::size_t next = (k + 1) % ring.size();
-        const auto p = std::uint32_t(index(ring[k].first, ring[k].second));
-        const auto q = std::uint32_t(index(ring[next].first, ring[next].second));
+        const std::uint32_t p = top.at(ring[k].first, ring[k].second);
+        const std::uint32_t q = top.at(ring[next].first, ring[next].second);
         tri(below[k], below[next], q), tri(below[k], q, p);
     }
-    // The grids last: a merged block's centre comes after the vertices the walls index.
-    gridSurface(m, m_top, 0, m_nx, m_ny, true, mergeFlats);
-    if (!flatBottom)
-        gridSurface(m, m_bottom, std::uint32_t(n), m_nx, m_ny, false, mergeFlats);
+    auto surface = [&](GridVertices& v, bool up) {
+        GridSurface grid(m, v, up);
+        if (mergeFlats)
+            grid.merged();
+        else
+            grid.plain();
+    };
+    surface(top, true);
+    if (bottom)
+        surface(*bottom, false);
     return m;
 }
 

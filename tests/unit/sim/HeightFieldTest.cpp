@@ -363,6 +363,7 @@ TEST(SimHeightField, FileMeshOfAnUncutBlockIsItsRingAndTwoFans)
     const std::size_t ring = 2 * std::size_t(stock.columnsX() - 1 + stock.columnsY() - 1);
     EXPECT_TRUE(closedAndOriented(file));
     EXPECT_EQ(file.triangleCount(), 4 * ring);
+    EXPECT_EQ(file.vertexCount(), 2 * ring + 2);  // only what the triangles use: two rings, two centres
     EXPECT_NEAR(file.volumeMm3(), 30 * 20 * 10, 1e-6);
 }
 
@@ -373,6 +374,11 @@ TEST(SimHeightField, BlankFromAMeshFillsItsInside)
     const auto stock = HeightField::fromMesh(blank, 0.1);
     EXPECT_NEAR(stock->volumeMm3(), 40 * 30 * 10 + 10 * 10 * 15, 1e-3);
     EXPECT_TRUE(closedAndOriented(stock->mesh()));
+    // The file's mesh makes the blank's bottom grid's vertices on use, as the top's.
+    const TriangleMesh file = stock->fileMesh();
+    EXPECT_TRUE(closedAndOriented(file));
+    EXPECT_NEAR(file.volumeMm3(), 40 * 30 * 10 + 10 * 10 * 15, 1e-3);
+    EXPECT_LT(file.vertexCount(), stock->mesh().vertexCount() / 10);
     auto copy = stock->clone();
     const ToolShape tool(makeTool("flat", 4));
     EXPECT_GT(copy->cut(makeMove({0, 0, 30}, {40, 30, 5}), 0, tool).removedMm3, 0);

@@ -1,7 +1,7 @@
 // Finds and loads the OCCT kernel (libcamwb_occ_kernel.so) the first time a model is read or an
-// example part written. Linking OCCT into the programs made every command pay for loading and
-// relocating some 20 OCCT libraries at start-up (25 of camwb-cli's 38 ms), also the many commands
-// that never read a model: simulating or posting a program, tracing NC.
+// example part written. Linked into the programs, OCCT's 21 libraries were loaded and relocated at
+// every start, also by the commands that read no model (simulating or posting a program, tracing
+// NC): `camwb-cli --version` took 42 ms, now 8.5 ms (docs/benchmarks.md).
 #include "occ/detail/ModelImpl.h"
 
 #include "occ/ExamplePart.h"

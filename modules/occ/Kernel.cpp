@@ -45,7 +45,11 @@ base::Result<const KernelTable*> loadKernel()
         return base::makeError("the OCCT kernel " + path.string() + " could not be loaded: " + why +
                                " (the library that reads and writes models; CAMWB_OCC_KERNEL may name where it is)");
     };
-    // Never closed: models hold objects whose code lives in it.
+    // Never closed: models hold objects whose code lives in it. Its libraries' symbols are looked
+    // up among the program's libraries first, which makes loading it slower than linking OCCT was
+    // (docs/benchmarks.md). RTLD_DEEPBIND would look among its own first, but then OCCT binds to
+    // libstdc++'s own std::cout instead of the program's copy (a copy relocation), which was never
+    // constructed: the tests crashed in OCCT's message printer.
     void* library = dlopen(path.c_str(), RTLD_NOW | RTLD_LOCAL);
     if (!library) {
         // dlerror() starts with the path, which the message names already.

@@ -1,13 +1,14 @@
 // Finds and loads the OCCT kernel (libcamwb_occ_kernel.so) the first time a model is read or an
 // example part written. Linked into the programs, OCCT's 21 libraries were loaded and relocated at
 // every start, also by the commands that read no model (simulating or posting a program, tracing
-// NC): `camwb-cli --version` took 42 ms, now 8.5 ms (docs/benchmarks.md).
+// NC): `camwb-cli --version` took 42.7 ms, now 9.8 ms (docs/benchmarks.md).
 #include "occ/detail/ModelImpl.h"
 
 #include "occ/ExamplePart.h"
 
 #include <dlfcn.h>
 
+#include <algorithm>
 #include <cstdlib>
 #include <filesystem>
 #include <system_error>
@@ -33,17 +34,21 @@ std::vector<std::filesystem::path> kernelCandidates()
 base::Result<const KernelTable*> loadKernel()
 {
     const std::vector<std::filesystem::path> candidates = kernelCandidates();
-    std::filesystem::path path = candidates.back();
-    for (const std::filesystem::path& candidate : candidates) {
+    auto found = std::find_if(candidates.begin(), candidates.end(), [](const std::filesystem::path& candidate) {
         std::error_code ec;
-        if (std::filesystem::exists(candidate, ec)) {
-            path = candidate;
-            break;
-        }
+        return std::filesystem::exists(candidate, ec);
+    });
+    if (found == candidates.end()) {
+        std::string places;
+        for (const std::filesystem::path& candidate : candidates)
+            places += (places.empty() ? "" : " nor at ") + candidate.string();
+        return base::makeError(
+            "the OCCT kernel is not at " + places +
+            " (libcamwb_occ_kernel.so reads and writes models; CAMWB_OCC_KERNEL may name where it is)");
     }
+    const std::filesystem::path& path = *found;
     auto failed = [&](const std::string& why) {
-        return base::makeError("the OCCT kernel " + path.string() + " could not be loaded: " + why +
-                               " (the library that reads and writes models; CAMWB_OCC_KERNEL may name where it is)");
+        return base::makeError("the OCCT kernel " + path.string() + " could not be loaded: " + why);
     };
     // Never closed: models hold objects whose code lives in it. Its libraries' symbols are looked
     // up among the program's libraries first, which makes loading it slower than linking OCCT was
@@ -77,10 +82,7 @@ base::Result<const KernelTable*> kernel()
     return loaded;
 }
 
-}  // namespace camwb::occ
-
 // The example parts are built with OCCT, so the kernel writes them (ExamplePart.h).
-namespace camwb::occ {
 namespace {
 
 base::Status writeWithKernel(base::Status (*KernelTable::*writer)(const std::string&), const std::string& stepPath)

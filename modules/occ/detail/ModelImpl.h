@@ -73,8 +73,8 @@ inline constexpr int kKernelAbi = 1;
 inline constexpr const char* kKernelEntryPoint = "camwb_occ_kernel_table";
 
 // The kernel, loaded on the first call (thread-safe); later calls return the same table, or the
-// same error: "the OCCT kernel <path> could not be loaded: <why>" (CAMWB_OCC_KERNEL, when set,
-// names the library to load instead of the installed or built one).
+// same error: "the OCCT kernel is not at <places>" or "the OCCT kernel <path> could not be loaded:
+// <why>" (CAMWB_OCC_KERNEL, when set, names the library to load instead of the installed or built one).
 base::Result<const KernelTable*> kernel();
 
 }  // namespace camwb::occ

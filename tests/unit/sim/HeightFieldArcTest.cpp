@@ -157,25 +157,31 @@ TEST(SimHeightFieldArc, AHelixCutInOnePassLeavesWhatItsPiecesCutInTurnLeave)
     };
     const toolpath::Tool tools[] = {makeTool("flat", 6), makeTool("ball", 6),
                                     makeTool("flat", 6, 0, 3, 4)};  // the holder 4 mm over the tip
+    struct Run {
+        std::string name;
+        std::vector<Move> moves;
+        bool descends = false;  // the holder meets the stock on the way down
+    };
+    std::vector<Run> runs;
+    for (const LevelArc& helix : helices)
+        runs.push_back({"helix of radius " + std::to_string(helix.radius) + " from z " + std::to_string(helix.z),
+                        pieces(helix, 90), helix.drop > 0});
     // A level half turn going on into a helix down: one run whose pieces are not all level.
-    std::vector<Move> mixed = pieces({{20.02, 19.97}, 8, 0.5, 0.5 + kPi, 6}, 40);
+    Run mixed{"a level arc going on into a helix", pieces({{20.02, 19.97}, 8, 0.5, 0.5 + kPi, 6}, 40), true};
     for (const Move& m : pieces({{20.02, 19.97}, 8, 0.5 + kPi, 0.5 + 3 * kPi, 6, 3}, 90))
-        mixed.push_back(m);
-    ASSERT_EQ(mixed[39].to, mixed[40].from);
+        mixed.moves.push_back(m);
+    ASSERT_EQ(mixed.moves[39].to, mixed.moves[40].from);
+    runs.push_back(std::move(mixed));
     for (const toolpath::Tool& t : tools)
-        for (std::size_t h = 0; h <= std::size(helices); ++h) {
-            const LevelArc& helix = helices[std::min(h, std::size(helices) - 1)];
+        for (const Run& r : runs) {
             const ToolShape tool(t);
-            const std::vector<Move> run = h < std::size(helices) ? pieces(helix, 90) : mixed;
+            const std::vector<Move>& run = r.moves;
             HeightField together(b, 0.1), inTurn(b, 0.1);
             const CutResult once = together.cutArcRun(run.data(), run.size(), 3, tool);
             CutResult sum;
             for (const Move& m : run)
                 sum.add(inTurn.cut(m, 3, tool));
-            SCOPED_TRACE(t.kind + " flute " + std::to_string(t.fluteLengthMm) +
-                         (h < std::size(helices) ? ", helix of radius " + std::to_string(helix.radius) + " from z " +
-                                                       std::to_string(helix.z)
-                                                 : ", a level arc going on into a helix"));
+            SCOPED_TRACE(t.kind + " flute " + std::to_string(t.fluteLengthMm) + ", " + r.name);
             int cut = 0;
             for (int j = 0; j < together.columnsY(); ++j)
                 for (int i = 0; i < together.columnsX(); ++i) {
@@ -187,7 +193,7 @@ TEST(SimHeightFieldArc, AHelixCutInOnePassLeavesWhatItsPiecesCutInTurnLeave)
             EXPECT_GT(cut, 1000);
             EXPECT_NEAR(once.removedMm3, sum.removedMm3, 1e-9 * sum.removedMm3 + cut * 0.01 * detail::kEps);
             EXPECT_NEAR(once.holderInterferenceMm, sum.holderInterferenceMm, detail::kEps);
-            if (t.fluteLengthMm < 5 && (helix.drop > 0 || h == std::size(helices)))
+            if (t.fluteLengthMm < 5 && r.descends)
                 EXPECT_GT(once.holderInterferenceMm, 0.5);
         }
 }

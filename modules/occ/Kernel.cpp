@@ -17,7 +17,8 @@ namespace camwb::occ {
 namespace {
 
 // The places the kernel may be: CAMWB_OCC_KERNEL when set; else installed beside the program
-// (bin/../lib/<arch>/camwb/) or, for a program run from the build tree, where it was built.
+// (`bin/../<libdir>/camwb/`, `/usr/lib/camwb/` in the package) or, for a program run from the build
+// tree, where it was built.
 std::vector<std::filesystem::path> kernelCandidates()
 {
     if (const char* chosen = std::getenv("CAMWB_OCC_KERNEL"); chosen && *chosen)

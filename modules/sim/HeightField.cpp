@@ -46,8 +46,7 @@ HeightField::HeightField(const base::Box3& box, double resolutionMm) : m_box(box
     m_dx = (box.max.x - box.min.x) / m_nx;
     m_dy = (box.max.y - box.min.y) / m_ny;
     m_top.assign(std::size_t(m_nx) * m_ny, float(box.max.z));
-    m_bottom.assign(m_top.size(), float(box.min.z));
-    m_lastCut.assign(m_top.size(), -1);
+    m_floor = float(box.min.z);
     m_tilesX = (m_nx + kTile - 1) / kTile;
     m_tilesY = (m_ny + kTile - 1) / kTile;
     m_tileTop.assign(std::size_t(m_tilesX) * m_tilesY, float(box.max.z));
@@ -82,7 +81,7 @@ std::unique_ptr<HeightField> HeightField::fromMesh(const TriangleMesh& blank, do
     auto field = std::make_unique<HeightField>(blank.bounds(), resolutionMm);
     HeightField& f = *field;
     std::fill(f.m_top.begin(), f.m_top.end(), kNone);
-    std::fill(f.m_bottom.begin(), f.m_bottom.end(), -kNone);
+    f.m_bottom.assign(f.m_top.size(), -kNone);
     const RayGrid grid{2, f.m_box.min.x, f.m_box.min.y, f.m_dx, f.m_dy, f.m_nx, f.m_ny};
     forEachCrossing(blank, grid, [&](int i, int j, double z, bool) {
         const std::size_t k = f.index(i, j);
@@ -99,8 +98,12 @@ std::unique_ptr<HeightField> HeightField::fromMesh(const TriangleMesh& blank, do
 double HeightField::volumeMm3() const
 {
     double sum = 0;
-    for (std::size_t k = 0; k < m_top.size(); ++k)
-        sum += double(m_top[k]) - m_bottom[k];
+    if (m_bottom.empty())
+        for (const float top : m_top)
+            sum += double(top) - m_floor;
+    else
+        for (std::size_t k = 0; k < m_top.size(); ++k)
+            sum += double(m_top[k]) - m_bottom[k];
     return sum * m_dx * m_dy;
 }
 

@@ -44,9 +44,11 @@ void HeightField::setDesign(const TriangleMesh& model, double toleranceMm)
 {
     m_tolerance = toleranceMm;
     m_design.clear();
+    m_lastCut.clear();
     if (model.empty())
         return;
     m_design.assign(m_top.size(), kNone);
+    m_lastCut.assign(m_top.size(), -1);
     const RayGrid grid{2, m_box.min.x, m_box.min.y, m_dx, m_dy, m_nx, m_ny};
     forEachCrossing(model, grid, [&](int i, int j, double z, bool) {
         float& d = m_design[index(i, j)];
@@ -92,7 +94,7 @@ double HeightField::distanceToDesign(int i, int j, double z) const
     const double own = m_design[index(i, j)];
     double best = own > kNone ? z - own : 1e300;
     if (z - m_designNear[index(i, j)] >= best)  // nothing near is higher than the column's own
-        return best < 1e300 ? best : z - m_bottom[index(i, j)];
+        return best < 1e300 ? best : z - bottom(i, j);
     for (int r = 1; (r - 0.5) * cell < best && (r - 1) * cell <= cap; ++r)
         for (int dj = -r; dj <= r; ++dj)
             for (int di = -r; di <= r; di += (std::abs(dj) == r ? 1 : 2 * r)) {
@@ -102,7 +104,7 @@ double HeightField::distanceToDesign(int i, int j, double z) const
                 const double side = std::hypot(di * m_dx, dj * m_dy) - 0.5 * cell;
                 best = std::min(best, std::hypot(side, std::max(0.0, z - m_design[index(ii, jj)])));
             }
-    return best < 1e300 ? best : z - m_bottom[index(i, j)];
+    return best < 1e300 ? best : z - bottom(i, j);
 }
 
 double HeightField::deviation(int i, int j) const
@@ -111,7 +113,7 @@ double HeightField::deviation(int i, int j) const
     if (m_design.empty())
         return 0;
     const double z = m_top[k], d = m_design[k];
-    if (d == kNone && z <= m_bottom[k] + 1e-6)
+    if (d == kNone && z <= bottom(i, j) + 1e-6)
         return 0;  // nothing left and nothing wanted
     if (d > kNone && z < d)
         return -depthInDesign(i, j, z);
@@ -131,8 +133,8 @@ Deviation HeightField::compare() const
             out.perVertex[k] = float(dev);
             const Vec3 at{columnX(i), columnY(j), m_top[k]};
             if (m_design[k] == kNone) {
-                if (m_top[k] - m_bottom[k] > out.maxOutsideMm)
-                    out.maxOutsideMm = m_top[k] - m_bottom[k], out.outsideAt = at;
+                if (m_top[k] - bottom(i, j) > out.maxOutsideMm)
+                    out.maxOutsideMm = m_top[k] - bottom(i, j), out.outsideAt = at;
                 continue;
             }
             if (dev > out.maxLeftoverMm)
@@ -157,100 +159,80 @@ TriangleMesh HeightField::fileMesh() const { return buildMesh(true); }
 
 namespace {
 
-// The mesh's vertices at the grid points of one surface (x and y per grid line, a height per point
-// in heights[j * nx + i]). Made all at once, in grid order from `base` on (the display mesh: its
-// heights are rewritten in place while cutting), or each when a triangle first uses it (the file's,
-// which uses a few percent of them).
-class GridVertices {
+// Grid points numbered in grid order: a bit per point and, per word of bits, how many points the
+// words before it hold. The file's mesh uses a few percent of the grid's points; a vertex id per
+// grid point was megabytes at 0.1 mm, and faulting them in a good part of the command's time.
+class GridPointSet {
 public:
-    GridVertices(TriangleMesh& m, const std::vector<double>& xs, const std::vector<double>& ys,
-                 const std::vector<float>& heights, bool onUse) :
-        m(m),
-        xs(xs),
-        ys(ys),
-        heights(heights),
-        nx(int(xs.size()))
+    explicit GridPointSet(std::size_t points) : bits((points + 63) / 64, 0) {}
+    void add(std::size_t k) { bits[k / 64] |= std::uint64_t(1) << (k % 64); }
+    bool has(std::size_t k) const { return (bits[k / 64] >> (k % 64)) & 1; }
+    // Numbers the points; rank() is valid from here on.
+    void seal()
     {
-        if (onUse) {
-            ids.assign(heights.size(), kNone);
-            return;
-        }
-        base = std::uint32_t(m.vertexCount());
-        for (int j = 0; j < int(ys.size()); ++j)
-            for (int i = 0; i < nx; ++i)
-                add(i, j);
+        before.resize(bits.size());
+        std::uint32_t count = 0;
+        for (std::size_t w = 0; w < bits.size(); ++w)
+            before[w] = count, count += std::uint32_t(__builtin_popcountll(bits[w]));
     }
-
-    std::uint32_t at(int i, int j)
+    // The number of points before point k (k in the set: its place among them).
+    std::uint32_t rank(std::size_t k) const
     {
-        if (ids.empty())
-            return base + std::uint32_t(std::size_t(j) * nx + i);
-        std::uint32_t& id = ids[std::size_t(j) * nx + i];
-        if (id == kNone)
-            id = add(i, j);
-        return id;
+        const std::uint64_t lower = (std::uint64_t(1) << (k % 64)) - 1;
+        return before[k / 64] + std::uint32_t(__builtin_popcountll(bits[k / 64] & lower));
     }
-    double x(int i) const { return xs[std::size_t(i)]; }
-    double y(int j) const { return ys[std::size_t(j)]; }
-    float height(int i, int j) const { return heights[std::size_t(j) * nx + i]; }
-    int columns() const { return nx; }
-    int rows() const { return int(ys.size()); }
+    template <class F> void forEach(F f) const
+    {
+        for (std::size_t w = 0; w < bits.size(); ++w)
+            for (std::uint64_t word = bits[w]; word; word &= word - 1)
+                f(w * 64 + std::size_t(__builtin_ctzll(word)));
+    }
 
 private:
-    static constexpr std::uint32_t kNone = ~std::uint32_t(0);
-    std::uint32_t add(int i, int j)
-    {
-        const std::size_t k = m.positions.size();
-        m.positions.resize(k + 3);
-        m.positions[k] = float(x(i)), m.positions[k + 1] = float(y(j)), m.positions[k + 2] = height(i, j);
-        return std::uint32_t(k / 3);
-    }
-
-    TriangleMesh& m;
-    const std::vector<double>& xs;
-    const std::vector<double>& ys;
-    const std::vector<float>& heights;
-    int nx;
-    std::uint32_t base = 0;
-    std::vector<std::uint32_t> ids;  // made on use: the mesh's vertex at each grid point, or kNone
+    std::vector<std::uint64_t> bits;
+    std::vector<std::uint32_t> before;
 };
 
-// The triangles of a grid surface, facing up or down; `merge`: the flat cells (four vertices at one
-// height) gathered into rectangles, greedily row by row, and each rectangle of four cells or more
-// a fan around a new centre vertex through the vertices of its edges that anything else uses, so
-// that neighbours meet vertex to vertex. A vertex that is no rectangle's corner and no lone cell's
-// lies inside the edge two fans share (or inside one fan): both pass it by along the same edge.
-class GridSurface {
-public:
-    GridSurface(TriangleMesh& m, GridVertices& v, bool up) :
-        m(m),
-        v(v),
-        nx(v.columns()),
-        ny(v.rows()),
-        cx(nx - 1),
-        cy(ny - 1),
-        up(up)
+// A grid surface's heights: nx x ny points, heights[j * nx + i].
+struct GridHeights {
+    const std::vector<float>& heights;
+    int nx, ny;
+    float at(int i, int j) const { return heights[std::size_t(j) * nx + i]; }
+    // Cell (i, j) is flat at height h: its four corners are.
+    bool flatAt(int i, int j, float h) const
     {
+        return at(i, j) == h && at(i + 1, j) == h && at(i, j + 1) == h && at(i + 1, j + 1) == h;
     }
+};
 
-    void plain()
-    {
-        for (int j = 0; j < cy; ++j)
-            for (int i = 0; i < cx; ++i)
-                cell(i, j);
-    }
+// The file's surface: its flat cells gathered into rectangles, greedily row by row, each of four
+// cells or more a fan around a new centre vertex through the vertices of its edges that anything
+// else uses, so that neighbours meet vertex to vertex; the other cells on their own. A vertex that
+// is no rectangle's corner and no lone cell's lies inside the edge two fans share (or inside one
+// fan): both pass it by along the same edge.
+struct FlatPlan {
+    struct Rect {
+        int i, j, w, h;
+    };
+    std::vector<Rect> fans;
+    std::vector<char> inFan;  // per cell
+    // The vertices the surface passes through: the grid's outer ring (the side walls use every
+    // one), the corners of every fan and every vertex of a cell on its own. No other is used.
+    GridPointSet used;
 
-    void merged()
+    explicit FlatPlan(const GridHeights& g) : used(std::size_t(g.nx) * g.ny)
     {
-        struct Rect {
-            int i, j, w, h;
+        const int cx = g.nx - 1, cy = g.ny - 1;
+        std::vector<char>& taken = inFan;
+        taken.assign(std::size_t(cx) * cy, 0);
+        auto free = [&](int i, int j, float h) { return !taken[std::size_t(j) * cx + i] && g.flatAt(i, j, h); };
+        auto mark = [&](const Rect& r) {
+            for (int dj = 0; dj < r.h; ++dj)
+                std::fill_n(taken.begin() + std::ptrdiff_t(std::size_t(r.j + dj) * cx + r.i), r.w, char(1));
         };
-        std::vector<Rect> fans;
-        std::vector<char> taken(std::size_t(cx) * cy, 0);
-        auto free = [&](int i, int j, float h) { return !taken[std::size_t(j) * cx + i] && flatAt(i, j, h); };
         for (int j = 0; j < cy; ++j)
             for (int i = 0; i < cx; ++i) {
-                const float h = v.height(i, j);
+                const float h = g.at(i, j);
                 if (!free(i, j, h))
                     continue;
                 int w = 1, rows = 1;
@@ -265,43 +247,89 @@ public:
                 }
                 if (w * rows < 4)
                     w = 1, rows = 1;  // its cells on their own: fewer triangles than a fan may take
-                for (int dj = 0; dj < rows; ++dj)
-                    std::fill_n(taken.begin() + std::ptrdiff_t(std::size_t(j + dj) * cx + i), w, char(1));
+                mark({i, j, w, rows});
                 if (w * rows > 1)
                     fans.push_back({i, j, w, rows});
             }
-        // The vertices a rim must pass through: the grid's outer ring (the side walls use every
-        // one), the corners of every fan and every vertex of a cell on its own.
-        needed.assign(std::size_t(nx) * ny, 0);
-        auto need = [&](int i, int j) { needed[std::size_t(j) * nx + i] = 1; };
-        for (int i = 0; i < nx; ++i)
-            need(i, 0), need(i, cy);
-        for (int j = 0; j < ny; ++j)
-            need(0, j), need(cx, j);
+        auto use = [&](int i, int j) { used.add(std::size_t(j) * g.nx + i); };
+        for (int i = 0; i < g.nx; ++i)
+            use(i, 0), use(i, cy);
+        for (int j = 0; j < g.ny; ++j)
+            use(0, j), use(cx, j);
         std::fill(taken.begin(), taken.end(), char(0));
         for (const Rect& r : fans) {
-            need(r.i, r.j), need(r.i + r.w, r.j), need(r.i, r.j + r.h), need(r.i + r.w, r.j + r.h);
-            for (int dj = 0; dj < r.h; ++dj)
-                std::fill_n(taken.begin() + std::ptrdiff_t(std::size_t(r.j + dj) * cx + r.i), r.w, char(1));
+            use(r.i, r.j), use(r.i + r.w, r.j), use(r.i, r.j + r.h), use(r.i + r.w, r.j + r.h);
+            mark(r);
         }
         for (int j = 0; j < cy; ++j)
             for (int i = 0; i < cx; ++i)
                 if (!taken[std::size_t(j) * cx + i])
-                    need(i, j), need(i + 1, j), need(i, j + 1), need(i + 1, j + 1);
-        for (const Rect& r : fans)
-            fan(r.i, r.j, r.w, r.h);
+                    use(i, j), use(i + 1, j), use(i, j + 1), use(i + 1, j + 1);
+        used.seal();
+    }
+};
+
+// The mesh's vertices at the grid points of one surface (x and y per grid line). Made in grid
+// order from `base` on: all of them (the display mesh: its heights are rewritten in place while
+// cutting) or those a plan uses (the file's).
+class GridVertices {
+public:
+    GridVertices(TriangleMesh& m, const std::vector<double>& xs, const std::vector<double>& ys, const GridHeights& g,
+                 const FlatPlan* plan) :
+        xs(xs),
+        ys(ys),
+        g(g),
+        plan(plan),
+        base(std::uint32_t(m.vertexCount()))
+    {
+        auto add = [&](int i, int j) { m.positions.insert(m.positions.end(), {float(x(i)), float(y(j)), g.at(i, j)}); };
+        if (plan) {
+            plan->used.forEach([&](std::size_t k) { add(int(k % std::size_t(g.nx)), int(k / std::size_t(g.nx))); });
+            return;
+        }
+        for (int j = 0; j < g.ny; ++j)
+            for (int i = 0; i < g.nx; ++i)
+                add(i, j);
+    }
+
+    std::uint32_t at(int i, int j) const
+    {
+        const std::size_t k = std::size_t(j) * g.nx + i;
+        return base + (plan ? plan->used.rank(k) : std::uint32_t(k));
+    }
+    double x(int i) const { return xs[std::size_t(i)]; }
+    double y(int j) const { return ys[std::size_t(j)]; }
+    const GridHeights& heights() const { return g; }
+    const FlatPlan* flatPlan() const { return plan; }
+
+private:
+    const std::vector<double>& xs;
+    const std::vector<double>& ys;
+    const GridHeights& g;
+    const FlatPlan* plan;
+    std::uint32_t base;
+};
+
+// The triangles of a grid surface, facing up or down: a pair per cell, or as its vertices' plan
+// gathers them.
+class GridSurface {
+public:
+    GridSurface(TriangleMesh& m, const GridVertices& v, bool up) : m(m), v(v), g(v.heights()), up(up) {}
+
+    void write()
+    {
+        const FlatPlan* plan = v.flatPlan();
+        const int cx = g.nx - 1, cy = g.ny - 1;
+        if (plan)
+            for (const FlatPlan::Rect& r : plan->fans)
+                fan(r.i, r.j, r.w, r.h);
         for (int j = 0; j < cy; ++j)
             for (int i = 0; i < cx; ++i)
-                if (!taken[std::size_t(j) * cx + i])
+                if (!plan || !plan->inFan[std::size_t(j) * cx + i])
                     cell(i, j);
     }
 
 private:
-    // Cell (i, j) is flat at height h: its four vertices are.
-    bool flatAt(int i, int j, float h) const
-    {
-        return v.height(i, j) == h && v.height(i + 1, j) == h && v.height(i, j + 1) == h && v.height(i + 1, j + 1) == h;
-    }
     void tri(std::uint32_t a, std::uint32_t b, std::uint32_t c)
     {
         if (up)
@@ -315,13 +343,13 @@ private:
         tri(a, b, c), tri(a, c, d);
     }
     // The rectangle of w x h cells from (bi, bj) as a fan: its rim counter-clockwise seen from
-    // above, through the vertices of its edges that are needed.
+    // above, through the vertices of its edges that are used.
     void fan(int bi, int bj, int w, int h)
     {
         std::vector<std::uint32_t>& rim = rimScratch;
         rim.clear();
         auto on = [&](int i, int j) {
-            if (needed[std::size_t(j) * nx + i])
+            if (v.flatPlan()->used.has(std::size_t(j) * g.nx + i))
                 rim.push_back(v.at(i, j));
         };
         for (int i = bi; i < bi + w; ++i)
@@ -333,17 +361,16 @@ private:
         for (int j = bj + h; j > bj; --j)
             on(bi, j);
         m.positions.insert(m.positions.end(),
-                           {float((v.x(bi) + v.x(bi + w)) / 2), float((v.y(bj) + v.y(bj + h)) / 2), v.height(bi, bj)});
+                           {float((v.x(bi) + v.x(bi + w)) / 2), float((v.y(bj) + v.y(bj + h)) / 2), g.at(bi, bj)});
         const auto centre = std::uint32_t(m.vertexCount() - 1);
         for (std::size_t k = 0; k < rim.size(); ++k)
             tri(centre, rim[k], rim[(k + 1) % rim.size()]);
     }
 
     TriangleMesh& m;
-    GridVertices& v;
-    int nx, ny, cx, cy;
+    const GridVertices& v;
+    const GridHeights& g;
     bool up;
-    std::vector<char> needed;  // per vertex: a rim must pass through it
     std::vector<std::uint32_t> rimScratch;
 };
 
@@ -361,10 +388,17 @@ TriangleMesh HeightField::buildMesh(bool mergeFlats) const
     for (int j = 0; j < m_ny; ++j)
         ys[std::size_t(j)] = j == 0 ? m_box.min.y : j == m_ny - 1 ? m_box.max.y : columnY(j);
     // The display mesh's top vertices first, in grid order: updateMesh finds them by column.
-    GridVertices top(m, xs, ys, m_top, mergeFlats);
+    const GridHeights topHeights{m_top, m_nx, m_ny}, bottomHeights{m_bottom, m_nx, m_ny};
+    std::optional<FlatPlan> topPlan, bottomPlan;
+    if (mergeFlats)
+        topPlan.emplace(topHeights);
+    const GridVertices top(m, xs, ys, topHeights, topPlan ? &*topPlan : nullptr);
     std::optional<GridVertices> bottom;
-    if (!flatBottom)
-        bottom.emplace(m, xs, ys, m_bottom, mergeFlats);
+    if (!flatBottom) {
+        if (mergeFlats)
+            bottomPlan.emplace(bottomHeights);
+        bottom.emplace(m, xs, ys, bottomHeights, bottomPlan ? &*bottomPlan : nullptr);
+    }
     auto put = [&](double x, double y, double z) {
         m.positions.insert(m.positions.end(), {float(x), float(y), float(z)});
         return std::uint32_t(m.positions.size() / 3 - 1);
@@ -385,9 +419,9 @@ TriangleMesh HeightField::buildMesh(bool mergeFlats) const
     std::vector<std::uint32_t> below(ring.size());
     if (flatBottom) {
         for (std::size_t k = 0; k < ring.size(); ++k)
-            below[k] = put(xs[std::size_t(ring[k].first)], ys[std::size_t(ring[k].second)], m_bottom.front());
+            below[k] = put(xs[std::size_t(ring[k].first)], ys[std::size_t(ring[k].second)], floorHeight());
         const std::uint32_t centre =
-            put((m_box.min.x + m_box.max.x) / 2, (m_box.min.y + m_box.max.y) / 2, m_bottom.front());
+            put((m_box.min.x + m_box.max.x) / 2, (m_box.min.y + m_box.max.y) / 2, floorHeight());
         for (std::size_t k = 0; k < ring.size(); ++k)
             tri(centre, below[(k + 1) % ring.size()], below[k]);
     } else {
@@ -400,16 +434,9 @@ TriangleMesh HeightField::buildMesh(bool mergeFlats) const
         const std::uint32_t q = top.at(ring[next].first, ring[next].second);
         tri(below[k], below[next], q), tri(below[k], q, p);
     }
-    auto surface = [&](GridVertices& v, bool up) {
-        GridSurface grid(m, v, up);
-        if (mergeFlats)
-            grid.merged();
-        else
-            grid.plain();
-    };
-    surface(top, true);
+    GridSurface(m, top, true).write();
     if (bottom)
-        surface(*bottom, false);
+        GridSurface(m, *bottom, false).write();
     return m;
 }
 

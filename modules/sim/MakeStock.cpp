@@ -14,10 +14,10 @@ namespace {
 
 // Bytes a cell takes at most, measured as the growth of `camwb-cli sim`'s peak memory between two
 // resolutions: the example job's height field (0.05 to 0.025 mm) 25 bytes a column (top, bottom,
-// last cut, the design's heights) and 54 with --stl; the five-axis example's tri-dexels (0.25 to
-// 0.125 mm) 300 bytes a ray (a vector of spans per ray, the blank's and the design's spans) and
-// 460 with --stl (four unshared vertices per face). The simulator dock holds two stocks (the
-// start and the one cut) and the mesh twice (its own and the view's, with 64-bit indices).
+// last cut, the design's heights; a block without a design holds its tops only) and 54 with --stl; the five-axis
+// example's tri-dexels (0.25 to 0.125 mm) 300 bytes a ray (a vector of spans per ray, the blank's and the design's
+// spans) and 460 with --stl (four unshared vertices per face). The simulator dock holds two stocks (the start and the
+// one cut) and the mesh twice (its own and the view's, with 64-bit indices).
 constexpr double kHeightFieldBytesPerColumn = 160;
 constexpr double kTriDexelBytesPerRay = 800;
 

@@ -70,9 +70,10 @@ namespace camwb::sim {
 {
     const std::size_t row = index(0, j);
     float* top = &m_top[row];
-    const float* bottom = &m_bottom[row];
+    const float* bottom = m_bottom.empty() ? nullptr : &m_bottom[row];
+    const double level = std::max(height, double(m_floor));  // a block's columns' new top
     const float* design = m_design.empty() ? nullptr : &m_design[row];
-    std::int32_t* lastCut = &m_lastCut[row];
+    std::int32_t* lastCut = m_lastCut.empty() ? nullptr : &m_lastCut[row];
     int first = -1, last = -1;
     // Summed here and added once: kept in `result`, the sum would go through memory each column
     // (a store and a load a column's critical path; the loop ran at half speed).
@@ -81,17 +82,19 @@ namespace camwb::sim {
     auto lowerColumn = [&](int i) {
         if (top[i] <= limit)
             return;
-        const double newTop = std::max(height, double(bottom[i]));
+        const double newTop = bottom ? std::max(height, double(bottom[i])) : level;
         if (newTop >= top[i] - detail::kEps)
             return;
         // What the column loses as stored: the losses of cuts in any order add up to the same.
         const float stored = float(newTop);
         removed += double(top[i]) - stored;
         top[i] = stored;
-        lastCut[i] = std::int32_t(moveIndex);
         first = first < 0 ? i : first, last = i;
-        if (design && newTop < design[i] - m_tolerance)
-            noteGouge(i, j, newTop, result);
+        if (design) {
+            lastCut[i] = std::int32_t(moveIndex);
+            if (newTop < design[i] - m_tolerance)
+                noteGouge(i, j, newTop, result);
+        }
     };
     int i = i0;
 #ifdef __SSE2__

@@ -101,6 +101,7 @@ TEST(SimHeightFieldArc, ALevelArcCutsEveryColumnWithinTheToolOfTheArcAndNoOther)
     for (const LevelArc& arc : arcs) {
         const std::vector<Move> run = pieces(arc, 47);
         HeightField together(b, 0.1), oneByOne(b, 0.1);
+        keepLastCuts(together), keepLastCuts(oneByOne);
         const double removed = together.cutArcRun(run.data(), run.size(), 3, tool).removedMm3;
         double sum = 0;
         for (const Move& m : run)
@@ -127,6 +128,7 @@ TEST(SimHeightFieldArc, ARunFromWhereTheToolStandsLeavesWhatAFreshRunLeaves)
     const Move away = makeMove({100, 100, 50}, {101, 100, 50}, MoveKind::Rapid);
     HeightField chained(b, 0.1), separate(b, 0.1);
     for (HeightField* stock : {&chained, &separate}) {
+        keepLastCuts(*stock);
         stock->cut(makeMove(run.front().from + Vec3{0, 0, 5}, run.front().from), 0, tool);  // down to the start
         if (stock == &separate)
             stock->cut(away, 1, tool);
@@ -177,6 +179,7 @@ TEST(SimHeightFieldArc, AHelixCutInOnePassLeavesWhatItsPiecesCutInTurnLeave)
             const ToolShape tool(t);
             const std::vector<Move>& run = r.moves;
             HeightField together(b, 0.1), inTurn(b, 0.1);
+            keepLastCuts(together), keepLastCuts(inTurn);
             const CutResult once = together.cutArcRun(run.data(), run.size(), 3, tool);
             CutResult sum;
             for (const Move& m : run)

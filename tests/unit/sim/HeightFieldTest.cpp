@@ -36,6 +36,7 @@ double topAt(const HeightField& f, double x, double y)
 TEST(SimHeightField, FlatSlotHasItsWidthDepthAndVolume)
 {
     HeightField stock(box({0, 0, 0}, {60, 40, 20}), 0.1);
+    keepLastCuts(stock);
     const ToolShape tool(makeTool("flat", 10));
     const double before = stock.volumeMm3();
     EXPECT_NEAR(before, 60 * 40 * 20, 1e-6);
@@ -210,6 +211,7 @@ TEST(SimHeightField, ABiggerToolStartingWhereTheLastEndedSweepsItsOwnDisc)
 TEST(SimHeightField, ACutBesideTheStockLeavesTheColumnsItMisses)
 {
     HeightField stock(box({0, 0, 0}, {60, 40, 20}), 0.1);
+    keepLastCuts(stock);
     const ToolShape tool(makeTool("flat", 10));
     // The tool's edge at x = 0.02 and y = 39.97; the first column's centre at 0.05, the last
     // row's at 39.95.
@@ -227,6 +229,7 @@ TEST(SimHeightField, ACutBesideTheStockLeavesTheColumnsItMisses)
 TEST(SimHeightField, LongMoveOverClearedGroundCutsOnlyWhereMaterialIsLeft)
 {
     HeightField stock(box({0, 0, 0}, {100, 20, 10}), 0.1);
+    keepLastCuts(stock);
     const ToolShape tool(makeTool("flat", 10));
     for (double y = 0; y <= 20; y += 5) {  // clears both ends down to z 5, leaving a web at x 45..55
         stock.cut(makeMove({-5, y, 5}, {40, y, 5}), 0, tool);

@@ -375,10 +375,12 @@ TEST(SimRun, CuttingInStepsLeavesWhatCuttingThroughLeaves)
     const sim::MoveList moves = sim::buildMoves(p);
     const base::Box3 b{{0, 0, 0}, {60, 40, 20}, false};
     sim::HeightField throughStock(b, 0.2);
+    sim::test::keepLastCuts(throughStock);
     sim::StockRun through(moves, throughStock);
     through.cutTo(moves.moves.size());
     for (const std::size_t step : {std::size_t(1), std::size_t(7)}) {
         sim::HeightField stepStock(b, 0.2);
+        sim::test::keepLastCuts(stepStock);
         sim::StockRun stepped(moves, stepStock);
         while (!stepped.finished())
             stepped.cutTo(stepped.nextMove() + step);

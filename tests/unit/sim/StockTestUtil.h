@@ -3,6 +3,7 @@
 #pragma once
 
 #include "sim/Moves.h"
+#include "sim/Stock.h"
 #include "sim/TriangleMesh.h"
 
 #include <cstdint>
@@ -58,6 +59,14 @@ inline TriangleMesh boxMesh(Vec3 lo, Vec3 hi)
     for (const auto& f : faces)
         m.triangles.insert(m.triangles.end(), {f[0], f[1], f[2], f[0], f[2], f[3]});
     return m;
+}
+
+// Gives a stock a design wholly under its floor: no cut gouges it, and the stock keeps each
+// column's last cut (it keeps them only with a design, for the comparison's reports).
+inline void keepLastCuts(Stock& stock)
+{
+    const base::Box3 b = stock.bounds();
+    stock.setDesign(boxMesh({b.min.x, b.min.y, b.min.z - 2}, {b.max.x, b.max.y, b.min.z - 1}), 0);
 }
 
 inline void append(TriangleMesh& into, const TriangleMesh& more)

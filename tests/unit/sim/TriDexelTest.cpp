@@ -169,8 +169,12 @@ TEST(SimMakeStock, SizeCoversWhatTheStockHolds)
         const std::size_t withDesign = stock->memoryBytes();
         EXPECT_GT(withDesign, bare);
         const StockSize size = stockSize(b, 0.25, tilts);
-        EXPECT_GT(double(bare), size.cells * (tilts ? 56 : 12)) << tilts;  // the cells' own data, at least
-        EXPECT_LT(double(withDesign), 0.5 * size.bytes) << tilts;          // room left for the meshes
+        EXPECT_GT(double(bare), size.cells * (tilts ? 56 : 4)) << tilts;  // the cells' own data, at least
+        // A block's columns hold their tops only: its floor is one number, and the last cuts
+        // come with the design (megabytes at 0.1 mm that a command spent faulting in).
+        if (!tilts)
+            EXPECT_LT(double(bare), size.cells * 5);
+        EXPECT_LT(double(withDesign), 0.5 * size.bytes) << tilts;  // room left for the meshes
         EXPECT_EQ(stock->clone()->memoryBytes(), withDesign) << tilts;
     }
 }

@@ -83,8 +83,6 @@ int ncCommand(const std::vector<std::string>& args);          // camwb-cli nc tr
 int clCommand(const std::vector<std::string>& args);          // camwb-cli cl <job> [-o <file>]
 int simCommand(const std::vector<std::string>& args);         // camwb-cli sim <job|program> ...
 int setupSheetCommand(const std::vector<std::string>& args);  // camwb-cli setup-sheet <job> -o <html> ...
-// The application setup-sheet needs (a QGuiApplication, offscreen unless QT_QPA_PLATFORM says).
-std::unique_ptr<QCoreApplication> sheetApplication(int& argc, char** argv);
 
 // The machine `--machine <id>` names (an id or a machine file); none when `id` is empty.
 base::Result<std::optional<kinematics::Machine>> machineOption(const std::string& id);

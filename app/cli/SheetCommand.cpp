@@ -1,7 +1,7 @@
 // camwb-cli setup-sheet: the operator's setup sheet of a job, headless: its facts
 // (document/SetupSheet.h), pictures drawn without OpenGL and the HTML (and PDF) written by the
-// sheet module. It needs a QGuiApplication (fonts, images); main() makes one on the offscreen
-// platform for this command only.
+// sheet's painter library, loaded for this command only (sheet/SheetPainter.h); main() makes its
+// GUI application on the offscreen platform.
 #include "Cli.h"
 
 #include "base/NumberFormat.h"
@@ -9,14 +9,10 @@
 #include "document/SetupSheet.h"
 #include "occ/Model.h"
 #include "post/PostRegistry.h"
-#include "sheet/SheetFiles.h"
 #include "sheet/SheetHtml.h"
-#include "sheet/SheetPicture.h"
+#include "sheet/SheetPainter.h"
 #include "toolpath/ClText.h"
 
-#include <QGuiApplication>
-
-#include <cstdlib>
 #include <iostream>
 #include <set>
 
@@ -73,28 +69,7 @@ std::string parseSheetOptions(const std::vector<std::string>& args, SheetCommand
     return {};
 }
 
-QtMessageHandler g_previousHandler = nullptr;
-
-// The offscreen platform's note that XDG_RUNTIME_DIR is not set (it falls back to a folder of
-// its own) says nothing about the sheet; stderr stays for the command's own messages.
-void dropRuntimeDirNote(QtMsgType type, const QMessageLogContext& context, const QString& message)
-{
-    if (type == QtWarningMsg && message.startsWith(QStringLiteral("QStandardPaths: XDG_RUNTIME_DIR not set")))
-        return;
-    if (g_previousHandler)
-        g_previousHandler(type, context, message);
-}
-
 }  // namespace
-
-std::unique_ptr<QCoreApplication> sheetApplication(int& argc, char** argv)
-{
-    // Fonts and images need a GUI application, a display does not: offscreen unless told otherwise.
-    if (!std::getenv("QT_QPA_PLATFORM"))
-        setenv("QT_QPA_PLATFORM", "offscreen", 1);
-    g_previousHandler = qInstallMessageHandler(dropRuntimeDirNote);
-    return std::make_unique<QGuiApplication>(argc, argv);
-}
 
 int setupSheetCommand(const std::vector<std::string>& args)
 {
@@ -119,11 +94,9 @@ int setupSheetCommand(const std::vector<std::string>& args)
     if (!sheet)
         return fail(sheet.error().toString());
 
-    const sheet::SheetPicture pictures(model.mesh(), computed->job.stock.box(), computed->program);
-    sheet::SheetOutput output;
-    output.htmlPath = options.html;
-    output.pdfPath = options.pdf;
-    if (const base::Status written = sheet::writeSetupSheet(sheet.value(), pictures, output); !written)
+    const sheet::HeadlessSheet headless{sheet.value(),     model.mesh(), computed->job.stock.box(),
+                                        computed->program, options.html, options.pdf};
+    if (const base::Status written = sheet::writeHeadlessSheet(headless); !written)
         return fail(written.error().toString());
 
     std::cout << "setup sheet " << options.html << (options.pdf.empty() ? "" : " and " + options.pdf) << ": "

@@ -1,6 +1,7 @@
 // camwb-cli: the headless shell over the same modules as the GUI.
 #include "Cli.h"
 #include "camwb_version.h"
+#include "sheet/SheetPainter.h"
 
 #include <QCoreApplication>
 
@@ -10,10 +11,16 @@ int main(int argc, char** argv)
 {
     using namespace camwb::cli;
     // QJSEngine (post scripts) needs a core application object; nothing here needs a display
-    // (setup-sheet's fonts and pictures need a GUI one, on the offscreen platform).
-    const bool sheet = argc > 1 && std::string(argv[1]) == "setup-sheet";
-    const std::unique_ptr<QCoreApplication> app =
-        sheet ? sheetApplication(argc, argv) : std::make_unique<QCoreApplication>(argc, argv);
+    // (setup-sheet's fonts and pictures need a GUI one, made by the sheet's painter library).
+    std::unique_ptr<QCoreApplication> app;
+    if (argc > 1 && std::string(argv[1]) == "setup-sheet") {
+        camwb::base::Result<std::unique_ptr<QCoreApplication>> made = camwb::sheet::sheetApplication(argc, argv);
+        if (!made)
+            return fail(made.error().toString());
+        app = std::move(made).value();
+    } else {
+        app = std::make_unique<QCoreApplication>(argc, argv);
+    }
     const std::vector<std::string> args(argv + 1, argv + argc);
 
     if (args.empty() || args[0] == "--help" || args[0] == "-h") {

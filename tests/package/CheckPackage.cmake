@@ -1,6 +1,7 @@
 # Makes the DEB as `cpack -G DEB` in the build folder does (into a scratch folder) and checks what
-# a user installs: both programs are in it and stripped, so is the OCCT kernel and the installed
-# program finds it, and the installed size stays small.
+# a user installs: both programs are in it and stripped, so are the libraries they load on use
+# (the OCCT kernel, the setup sheet's painter) and the installed program finds them, and the
+# installed size stays small.
 file(REMOVE_RECURSE ${WORK})
 file(MAKE_DIRECTORY ${WORK})
 execute_process(COMMAND ${CPACK} -G DEB --config ${BUILD_DIR}/CPackConfig.cmake -B ${WORK}
@@ -18,13 +19,18 @@ if(NOT kib MATCHES "^[0-9]+$" OR kib GREATER 20000)
   message(FATAL_ERROR "installed size ${kib} KiB: more than 20 MB (unstripped binaries?)")
 endif()
 execute_process(COMMAND dpkg-deb -x ${debs} ${WORK}/root RESULT_VARIABLE rc)
-# The OCCT kernel the programs load on their first model (modules/occ) is installed beside them.
-file(GLOB_RECURSE kernels RELATIVE ${WORK}/root ${WORK}/root/usr/lib/*/libcamwb_occ_kernel.so)
-list(LENGTH kernels count)
-if(NOT count EQUAL 1)
-  message(FATAL_ERROR "expected one usr/lib/.../camwb/libcamwb_occ_kernel.so in the package, found: ${kernels}")
-endif()
-foreach(binary IN ITEMS usr/bin/camwb usr/bin/camwb-cli ${kernels})
+# The libraries the programs load on use are installed beside them: the OCCT kernel (modules/occ)
+# with the first model, the setup sheet's painter (sheet/SheetPainter.h) with the CLI's first sheet.
+set(plugins "")
+foreach(name IN ITEMS libcamwb_occ_kernel.so libcamwb_sheet_painter.so)
+  file(GLOB_RECURSE found RELATIVE ${WORK}/root ${WORK}/root/usr/lib/*/${name})
+  list(LENGTH found count)
+  if(NOT count EQUAL 1)
+    message(FATAL_ERROR "expected one usr/lib/.../camwb/${name} in the package, found: ${found}")
+  endif()
+  list(APPEND plugins ${found})
+endforeach()
+foreach(binary IN ITEMS usr/bin/camwb usr/bin/camwb-cli ${plugins})
   if(NOT EXISTS ${WORK}/root/${binary})
     message(FATAL_ERROR "the package has no ${binary}")
   endif()
@@ -33,20 +39,23 @@ foreach(binary IN ITEMS usr/bin/camwb usr/bin/camwb-cli ${kernels})
     message(FATAL_ERROR "${binary} is not stripped: ${kind}")
   endif()
 endforeach()
-# The installed program finds the installed kernel, not the build tree's (CAMWB_OCC_KERNEL cleared).
-set(kernel ${WORK}/root/${kernels})
+# The installed program finds the installed libraries, not the build tree's (the variables that
+# would name others cleared): the example's setup sheet reads the model and draws the sheet.
 set(examples ${WORK}/root/usr/share/camwb/examples)
-execute_process(COMMAND ${CMAKE_COMMAND} -E env --unset=CAMWB_OCC_KERNEL LD_DEBUG=files
-                        ${WORK}/root/usr/bin/camwb-cli cl ${examples}/example-block.camwb -o ${WORK}/example.apt
+execute_process(COMMAND ${CMAKE_COMMAND} -E env --unset=CAMWB_OCC_KERNEL --unset=CAMWB_SHEET_PAINTER LD_DEBUG=files
+                        ${WORK}/root/usr/bin/camwb-cli setup-sheet ${examples}/example-block.camwb --no-sim
+                        -o ${WORK}/sheet/example.html
                 RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
-if(NOT rc EQUAL 0 OR NOT EXISTS ${WORK}/example.apt)
-  message(FATAL_ERROR "the installed camwb-cli could not compute the installed example (${rc}):\n${out}${err}")
+if(NOT rc EQUAL 0 OR NOT EXISTS ${WORK}/sheet/example.html OR NOT EXISTS ${WORK}/sheet/example-images/part.png)
+  message(FATAL_ERROR "the installed camwb-cli could not draw the installed example's setup sheet (${rc}):\n${out}${err}")
 endif()
 # The loader's trace (LD_DEBUG=files) names each library as it opens it.
-string(FIND "${err}" "file=${kernel} " found)
-if(found EQUAL -1)
-  message(FATAL_ERROR "the installed camwb-cli did not load the installed kernel ${kernel}:\n${err}")
-endif()
+foreach(plugin IN LISTS plugins)
+  string(FIND "${err}" "file=${WORK}/root/${plugin} " found)
+  if(found EQUAL -1)
+    message(FATAL_ERROR "the installed camwb-cli did not load the installed ${WORK}/root/${plugin}:\n${err}")
+  endif()
+endforeach()
 # Every library an installed post includes is installed beside it (posts/include/<name>.js).
 file(GLOB installed_posts ${WORK}/root/usr/share/camwb/posts/*.js)
 if(NOT installed_posts)

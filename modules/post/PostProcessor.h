@@ -71,6 +71,8 @@ struct PostSummary {
     std::vector<std::string> companionPaths;  // the companion files written beside the output
 };
 
+struct ScriptEngine;  // detail/ScriptEngine.h: what load and the runs do
+
 class PostProcessor {
 public:
     // Reads the script and evaluates it once to read the `post` metadata object (no handler
@@ -95,6 +97,7 @@ public:
                                         const std::string& outputPath) const;
 
 private:
+    friend struct ScriptEngine;
     PostInfo m_info;
     std::string m_source;
 };

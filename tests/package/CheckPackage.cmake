@@ -20,9 +20,10 @@ if(NOT kib MATCHES "^[0-9]+$" OR kib GREATER 20000)
 endif()
 execute_process(COMMAND dpkg-deb -x ${debs} ${WORK}/root RESULT_VARIABLE rc)
 # The libraries the programs load on use are installed beside them: the OCCT kernel (modules/occ)
-# with the first model, the setup sheet's painter (sheet/SheetPainter.h) with the CLI's first sheet.
+# with the first model, the post engine (post/PostProcessor.cpp) with the first post, the setup
+# sheet's painter (sheet/SheetPainter.h) with the CLI's first sheet.
 set(plugins "")
-foreach(name IN ITEMS libcamwb_occ_kernel.so libcamwb_sheet_painter.so)
+foreach(name IN ITEMS libcamwb_occ_kernel.so libcamwb_post_engine.so libcamwb_sheet_painter.so)
   file(GLOB_RECURSE found RELATIVE ${WORK}/root ${WORK}/root/usr/lib/*/${name})
   list(LENGTH found count)
   if(NOT count EQUAL 1)
@@ -40,9 +41,10 @@ foreach(binary IN ITEMS usr/bin/camwb usr/bin/camwb-cli ${plugins})
   endif()
 endforeach()
 # The installed program finds the installed libraries, not the build tree's (the variables that
-# would name others cleared): the example's setup sheet reads the model and draws the sheet.
+# would name others cleared): the example's setup sheet reads the model, posts it and draws.
 set(examples ${WORK}/root/usr/share/camwb/examples)
-execute_process(COMMAND ${CMAKE_COMMAND} -E env --unset=CAMWB_OCC_KERNEL --unset=CAMWB_SHEET_PAINTER LD_DEBUG=files
+execute_process(COMMAND ${CMAKE_COMMAND} -E env --unset=CAMWB_OCC_KERNEL --unset=CAMWB_SHEET_PAINTER
+                        --unset=CAMWB_POST_ENGINE LD_DEBUG=files
                         ${WORK}/root/usr/bin/camwb-cli setup-sheet ${examples}/example-block.camwb --no-sim
                         -o ${WORK}/sheet/example.html
                 RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)

@@ -198,18 +198,13 @@ struct GridHeights {
     const std::vector<float>& heights;
     int nx, ny;
     float at(int i, int j) const { return heights[std::size_t(j) * nx + i]; }
-    // Cell (i, j) is flat at height h: its four corners are.
-    bool flatAt(int i, int j, float h) const
-    {
-        return at(i, j) == h && at(i + 1, j) == h && at(i, j + 1) == h && at(i + 1, j + 1) == h;
-    }
 };
 
-// The file's surface: its flat cells gathered into rectangles, greedily row by row, each of four
-// cells or more a fan around a new centre vertex through the vertices of its edges that anything
-// else uses, so that neighbours meet vertex to vertex; the other cells on their own. A vertex that
-// is no rectangle's corner and no lone cell's lies inside the edge two fans share (or inside one
-// fan): both pass it by along the same edge.
+// The file's surface: its flat cells (four corners at one height) gathered into rectangles,
+// greedily row by row, each of four cells or more a fan around a new centre vertex through the
+// vertices of its edges that anything else uses, so that neighbours meet vertex to vertex; the
+// other cells on their own. A vertex that is no rectangle's corner and no lone cell's lies inside
+// the edge two fans share (or inside one fan): both pass it by along the same edge.
 struct FlatPlan {
     struct Rect {
         int i, j, w, h;
@@ -223,24 +218,33 @@ struct FlatPlan {
     explicit FlatPlan(const GridHeights& g) : used(std::size_t(g.nx) * g.ny)
     {
         const int cx = g.nx - 1, cy = g.ny - 1;
+        // Per cell, 1 while it is not free: not flat, or in a rectangle already. Flat cells that
+        // share an edge share two corners and so lie at one height: a rectangle grows over free
+        // cells alone, and a pass that compares four corners per cell is made once, up front.
         std::vector<char>& taken = inFan;
-        taken.assign(std::size_t(cx) * cy, 0);
-        auto free = [&](int i, int j, float h) { return !taken[std::size_t(j) * cx + i] && g.flatAt(i, j, h); };
+        taken.resize(std::size_t(cx) * cy);
+        for (int j = 0; j < cy; ++j) {
+            const float* below = &g.heights[std::size_t(j) * g.nx];
+            const float* above = below + g.nx;
+            char* row = &taken[std::size_t(j) * cx];
+            for (int i = 0; i < cx; ++i)
+                row[i] = char(!((below[i] == below[i + 1]) & (below[i] == above[i]) & (below[i] == above[i + 1])));
+        }
+        auto free = [&](int i, int j) { return !taken[std::size_t(j) * cx + i]; };
         auto mark = [&](const Rect& r) {
             for (int dj = 0; dj < r.h; ++dj)
                 std::fill_n(taken.begin() + std::ptrdiff_t(std::size_t(r.j + dj) * cx + r.i), r.w, char(1));
         };
         for (int j = 0; j < cy; ++j)
             for (int i = 0; i < cx; ++i) {
-                const float h = g.at(i, j);
-                if (!free(i, j, h))
+                if (!free(i, j))
                     continue;
                 int w = 1, rows = 1;
-                while (i + w < cx && free(i + w, j, h))
+                while (i + w < cx && free(i + w, j))
                     ++w;
                 for (; j + rows < cy; ++rows) {
                     int k = 0;
-                    while (k < w && free(i + k, j + rows, h))
+                    while (k < w && free(i + k, j + rows))
                         ++k;
                     if (k < w)
                         break;

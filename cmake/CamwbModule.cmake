@@ -22,3 +22,27 @@ function(camwb_add_gtest name)
   # list there); a directory label reaches every test the directory's binaries add.
   set_property(DIRECTORY APPEND PROPERTY LABELS unit ${ARG_LABELS})
 endfunction()
+
+# camwb_add_plugin(<target> SOURCES ... LINK ... LOADER <target> PLACE <NAME> [UNORDERED]): a library
+# the programs load on use (base/PluginLibrary.h), with one exported C entry point and the static
+# libraries' copies inside it kept its own; installed in <libdir>/camwb/. The loader target gets
+# <NAME>_BUILT (where the build put it) and <NAME>_FROM_BINDIR (where the package puts it, from the
+# program's folder); it is built before the loader, unless UNORDERED (when the library itself links
+# the loader: then the programs that load it add the dependency).
+function(camwb_add_plugin target)
+  cmake_parse_arguments(ARG "UNORDERED" "LOADER;PLACE" "SOURCES;LINK" ${ARGN})
+  add_library(${target} MODULE ${ARG_SOURCES})
+  target_include_directories(${target} PRIVATE ${PROJECT_SOURCE_DIR}/modules ${PROJECT_BINARY_DIR}/generated)
+  target_link_libraries(${target} PRIVATE ${ARG_LINK})
+  target_compile_options(${target} PRIVATE -Wall -Wextra -Wno-unused-parameter)
+  set_target_properties(${target} PROPERTIES CXX_VISIBILITY_PRESET hidden VISIBILITY_INLINES_HIDDEN ON)
+  target_link_options(${target} PRIVATE -Wl,--exclude-libs,ALL -Wl,--no-undefined)
+  install(TARGETS ${target} LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR}/camwb)
+  file(RELATIVE_PATH from_bindir /${CMAKE_INSTALL_BINDIR} /${CMAKE_INSTALL_LIBDIR}/camwb)
+  target_compile_definitions(${ARG_LOADER} PRIVATE
+    ${ARG_PLACE}_BUILT="$<TARGET_FILE:${target}>"
+    ${ARG_PLACE}_FROM_BINDIR="${from_bindir}/$<TARGET_FILE_NAME:${target}>")
+  if(NOT ARG_UNORDERED)
+    add_dependencies(${ARG_LOADER} ${target})
+  endif()
+endfunction()

@@ -1,7 +1,8 @@
 // Loads one of the program's own libraries the first time a command needs it: the parts that
-// bring large libraries only a few commands use (OCCT for models, Qt Gui for the setup sheet's
-// pictures), so that every other command starts without loading and relocating them. A library
-// exports one C function returning a table of entry points that starts with its ABI number.
+// bring large libraries only some commands use (OCCT for models, Qt Qml for the post scripts, Qt
+// Gui for the setup sheet's pictures), so that every other command starts without loading and
+// relocating them. A library exports one C function returning a table of entry points that starts
+// with its ABI number; camwb_add_plugin (cmake/CamwbModule.cmake) builds it.
 #pragma once
 
 #include "base/Result.h"

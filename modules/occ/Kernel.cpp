@@ -1,7 +1,7 @@
 // Finds and loads the OCCT kernel (libcamwb_occ_kernel.so) the first time a model is read or an
 // example part written. Linked into the programs, OCCT's 21 libraries were loaded and relocated at
 // every start, also by the commands that read no model (simulating or posting a program, tracing
-// NC): `camwb-cli --version` took 42.7 ms, now 9.8 ms (docs/benchmarks.md).
+// NC): `camwb-cli --version` took 42.7 ms, and 9.8 ms without them (docs/benchmarks.md).
 #include "occ/detail/ModelImpl.h"
 
 #include "occ/ExamplePart.h"

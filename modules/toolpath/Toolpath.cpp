@@ -2,12 +2,7 @@
 
 #include "toolpath/MachineSink.h"
 
-#include <cstdint>
 #include <type_traits>
-
-#ifdef __linux__
-#include <sys/mman.h>
-#endif
 
 namespace camwb::toolpath {
 
@@ -17,31 +12,10 @@ void Toolpath::add(Record record, SourceRef source)
     m_sources.push_back(source);
 }
 
-namespace {
-
-// A large reservation (a million records is 150 MB) in 2 MiB pages where the kernel offers them
-// on request: a fiftieth of the page faults, and fewer TLB misses while the records are read.
-template <class T> void adviseLargePages(const std::vector<T>& v)
-{
-#if defined(__linux__) && defined(MADV_HUGEPAGE)
-    constexpr std::uintptr_t kHuge = std::uintptr_t(2) << 20;
-    const auto begin = (reinterpret_cast<std::uintptr_t>(v.data()) + kHuge - 1) & ~(kHuge - 1);
-    const auto end = (reinterpret_cast<std::uintptr_t>(v.data() + v.capacity())) & ~(kHuge - 1);
-    if (end > begin)
-        ::madvise(reinterpret_cast<void*>(begin), end - begin, MADV_HUGEPAGE);  // a hint: failure is harmless
-#else
-    (void)v;
-#endif
-}
-
-}  // namespace
-
 void Toolpath::reserve(std::size_t records)
 {
     m_records.reserve(records);
     m_sources.reserve(records);
-    adviseLargePages(m_records);
-    adviseLargePages(m_sources);
 }
 
 void Toolpath::append(const Toolpath& other)

@@ -116,6 +116,8 @@ NcTrace traceNc(const NcTraceRequest& request)
     };
 
     const auto start = std::chrono::steady_clock::now();
+    // About a record per line: reserved at once, so that a long program is not regrown and copied.
+    trace.program.reserve(static_cast<std::size_t>(std::count(request.text.begin(), request.text.end(), '\n')) + 1);
     TraceRecorder recorder(trace, request.cancel);
     trace.result = nc::interpret(request.text, options, recorder);
     trace.cancelled = recorder.cancelled() || trace.result.cancelled;

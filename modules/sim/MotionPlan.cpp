@@ -2,6 +2,8 @@
 
 #include "sim/MachineAxes.h"
 
+#include "base/Prefault.h"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -228,8 +230,13 @@ MotionPlan planMotion(const MoveList& list, const kinematics::Machine& machine, 
 {
     MotionPlan plan;
     const std::size_t n = list.moves.size();
+    plan.moves.reserve(n);
+    base::prefault(plan.moves, n);  // megabytes about to be written whole: one call, not a fault per page
     plan.moves.resize(n);
-    std::vector<double> junction(n + 1, 0.0);  // speed at the start of move i (junction[n]: the end)
+    std::vector<double> junction;  // speed at the start of move i (junction[n]: the end)
+    junction.reserve(n + 1);
+    base::prefault(junction, n + 1);
+    junction.assign(n + 1, 0.0);
     GeometryWalker walker(list, machine);
     MoveGeometry previous;
     bool previousFlows = false;  // the previous move ends in motion another can continue

@@ -1,5 +1,6 @@
 #include "sim/Moves.h"
 
+#include "base/Prefault.h"
 #include "toolpath/ArcGeometry.h"
 #include "toolpath/CycleExpansion.h"
 #include "toolpath/KnownPosition.h"
@@ -396,8 +397,11 @@ namespace {
 // About how many moves buildMoves() makes of `program`, to reserve at once: a list that grows by
 // doubling copies itself into fresh pages each time (on the 20k-block benchmark program, 156k
 // moves of 232 bytes, the copies were 20,000 of the command's 32,000 page faults). Each arc is
-// counted from where the record before it ended, whatever axes it gave; capped, so that a wild
-// guess reserves no more than a long program's worth.
+// counted from where the record before it ended, whatever axes it gave; a straight move, a pause
+// and a new working plane (the turn to it) are one each, a five-axis move two (it may be followed
+// by a turn back). Only joint-interpolated five-axis moves, split along the tip's curve, and
+// drilling cycles with many pecks can make more. Capped, so that a wild guess reserves no more
+// than a long program's worth.
 std::size_t movesEstimate(const toolpath::Toolpath& program, const MoveOptions& options)
 {
     std::size_t count = 0;
@@ -410,12 +414,18 @@ std::size_t movesEstimate(const toolpath::Toolpath& program, const MoveOptions& 
             at = a->to;
         } else if (const auto* c = std::get_if<toolpath::Cycle>(&r)) {
             count += 8 * c->holes.size();  // a drilling cycle's moves per hole, pecks aside
-        } else {
-            if (const auto* m = std::get_if<toolpath::Linear>(&r))
-                at = m->to;
-            else if (const auto* q = std::get_if<toolpath::Rapid>(&r))
-                at = q->to;
-            count += 2;  // a move, and a turn of the tool's axis before it
+        } else if (const auto* m = std::get_if<toolpath::Linear>(&r)) {
+            at = m->to;
+            ++count;
+        } else if (const auto* q = std::get_if<toolpath::Rapid>(&r)) {
+            at = q->to;
+            ++count;
+        } else if (std::holds_alternative<toolpath::ToolAxisMove>(r)) {
+            count += 2;
+        } else if (std::holds_alternative<toolpath::ToolChange>(r) || std::holds_alternative<toolpath::Dwell>(r) ||
+                   std::holds_alternative<toolpath::ProgramStop>(r) ||
+                   std::holds_alternative<toolpath::WorkingPlane>(r)) {
+            ++count;
         }
     }
     return std::min(count, 16 * program.size() + 1024);
@@ -450,7 +460,9 @@ MoveList buildMoves(const toolpath::Toolpath& program, const MoveOptions& option
                     const std::vector<bool>& recordsInError)
 {
     MoveList out;
-    out.moves.reserve(movesEstimate(program, options));
+    const std::size_t estimate = movesEstimate(program, options);
+    out.moves.reserve(estimate);
+    base::prefault(out.moves, estimate);  // written all but whole: one call, not a fault per page
     MoveBuilder builder(out, options);
     builder.begin();
     for (std::size_t i = 0; i < program.size(); ++i) {

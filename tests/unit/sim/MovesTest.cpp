@@ -377,3 +377,27 @@ TEST(SimMoves, PiecesOfAnArcAboutZCarryItsCircle)
     EXPECT_GT(aboutZ, 10u);
     EXPECT_GT(aboutY, 10u);
 }
+
+TEST(SimMoves, TheListIsReservedOnceAndNotMuchMore)
+{
+    // The reservation is faulted in at once (base::prefault): it must hold every move, so the list
+    // is not regrown and copied, and not much more, or the memory is spent for nothing.
+    Toolpath p;
+    p.add(ToolChange{flat10()});
+    p.add(Rapid{{0, 0, 5}});
+    for (int i = 0; i < 1000; ++i) {
+        p.add(Linear{{double(i % 50), double(i / 50), 0}, 500});
+        if (i % 100 == 0)
+            p.add(Arc{{double(i % 50), double(i / 50) + 4, 0},
+                      {double(i % 50), double(i / 50) + 2, 0},
+                      {0, 0, 1},
+                      false,
+                      0,
+                      500});
+    }
+    p.add(Dwell{1.0});
+    const sim::MoveList list = sim::buildMoves(p);
+    ASSERT_GT(list.moves.size(), 1000u);
+    EXPECT_GE(list.moves.capacity(), list.moves.size());
+    EXPECT_LE(list.moves.capacity(), list.moves.size() + list.moves.size() / 20);
+}

@@ -149,7 +149,7 @@ struct Input {
     toolpath::Toolpath program;
     std::vector<bool> recordsInError;
     std::optional<document::Job> job;
-    std::optional<document::NcTrace> trace;
+    std::optional<std::vector<std::string>> programFiles;  // an NC program's: what its records' sources name
     std::optional<kinematics::Machine> machine;
     sim::TriangleMesh design;
     std::optional<base::Box3> stockBox;
@@ -159,8 +159,8 @@ struct Input {
 
 document::RecordPlace placeOf(const Input& input, const std::string& path, std::int64_t record)
 {
-    if (input.trace)
-        return document::placeOfRecord(*input.trace, record);
+    if (input.programFiles)
+        return document::placeOfRecord(*input.programFiles, input.program, record);
     return document::placeOfRecord(*input.job, path, input.program, record);
 }
 
@@ -225,12 +225,13 @@ std::optional<Input> loadNcInput(const SimOptions& options, const kinematics::Ma
             return std::nullopt;
         request.tools = std::make_shared<const nc::ToolTable>(std::move(*table));
     }
-    input.trace = document::traceNc(request);
-    input.program = input.trace->program;
+    document::NcTrace trace = document::traceNc(request);
+    input.program = std::move(trace.program);  // not copied: a long program's records are megabytes
     if (request.tools)
         document::sizeTools(input.program, document::toolsOf(*request.tools));
-    input.recordsInError = input.trace->recordsInError;
-    input.diagnostics = input.trace->result.diagnostics;
+    input.programFiles = std::move(trace.result.files);
+    input.recordsInError = std::move(trace.recordsInError);
+    input.diagnostics = std::move(trace.result.diagnostics);
     return input;
 }
 

@@ -70,13 +70,17 @@ std::map<int, toolpath::Tool> toolsOf(const nc::ToolTable& table)
 
 RecordPlace placeOfRecord(const NcTrace& trace, std::int64_t record)
 {
+    return placeOfRecord(trace.result.files, trace.program, record);
+}
+
+RecordPlace placeOfRecord(const std::vector<std::string>& files, const toolpath::Toolpath& program, std::int64_t record)
+{
     RecordPlace place;
-    if (record < 0 || static_cast<std::size_t>(record) >= trace.program.size()) {
-        place.file = trace.result.files.empty() ? std::string() : trace.result.files.front();
+    if (record < 0 || static_cast<std::size_t>(record) >= program.size()) {
+        place.file = files.empty() ? std::string() : files.front();
         return place;
     }
-    const toolpath::SourceRef& source = trace.program.source(static_cast<std::size_t>(record));
-    const auto& files = trace.result.files;
+    const toolpath::SourceRef& source = program.source(static_cast<std::size_t>(record));
     place.file = source.file >= 0 && source.file < static_cast<int>(files.size()) ? files[source.file]
                  : files.empty()                                                  ? std::string()
                                                                                   : files.front();

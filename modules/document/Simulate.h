@@ -59,6 +59,9 @@ struct RecordPlace {
     std::string operation;  // a job's operation; empty for NC
 };
 RecordPlace placeOfRecord(const NcTrace& trace, std::int64_t record);
+// The same for a traced program kept apart from its trace: the files the trace read (result.files).
+RecordPlace placeOfRecord(const std::vector<std::string>& files, const toolpath::Toolpath& program,
+                          std::int64_t record);
 RecordPlace placeOfRecord(const Job& job, const std::string& jobPath, const toolpath::Toolpath& program,
                           std::int64_t record);
 

@@ -197,6 +197,10 @@ RigidMotion machineFrameMotion(const KinematicChain& chain, const std::array<dou
 Vec3 linearAxesFor(const KinematicChain& chain, const Vec3& tip, const std::array<double, 2>& rotaryDeg,
                    double toolLengthMm)
 {
+    // A chain without rotary joints only shifts the workpiece to its zero: the same sum the
+    // motions below make (their identity products are exact), without composing them per call.
+    if (chain.joints.empty())
+        return tip + chain.workpieceZero;
     const Motion table = tableMotion(chain, rotaryDeg);
     const Motion head = headMotion(chain, rotaryDeg, toolLengthMm);
     return vec(table.apply(eigen(tip)) - head.t);

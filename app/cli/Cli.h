@@ -11,8 +11,6 @@
 
 #include "base/Vec.h"
 
-#include <QCoreApplication>
-
 #include <map>
 #include <memory>
 #include <optional>

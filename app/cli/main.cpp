@@ -3,23 +3,20 @@
 #include "camwb_version.h"
 #include "sheet/SheetPainter.h"
 
-#include <QCoreApplication>
-
 #include <iostream>
+#include <optional>
 
 int main(int argc, char** argv)
 {
     using namespace camwb::cli;
-    // QJSEngine (post scripts) needs a core application object; nothing here needs a display
-    // (setup-sheet's fonts and pictures need a GUI one, made by the sheet's painter library).
-    std::unique_ptr<QCoreApplication> app;
+    // No Qt here: the post engine makes the core application QJSEngine needs when it is loaded,
+    // and setup-sheet's fonts and pictures need a GUI one, made first by the sheet's painter.
+    std::optional<camwb::sheet::SheetApplication> app;
     if (argc > 1 && std::string(argv[1]) == "setup-sheet") {
-        camwb::base::Result<std::unique_ptr<QCoreApplication>> made = camwb::sheet::sheetApplication(argc, argv);
+        camwb::base::Result<camwb::sheet::SheetApplication> made = camwb::sheet::sheetApplication(argc, argv);
         if (!made)
             return fail(made.error().toString());
-        app = std::move(made).value();
-    } else {
-        app = std::make_unique<QCoreApplication>(argc, argv);
+        app.emplace(std::move(made).value());
     }
     const std::vector<std::string> args(argv + 1, argv + argc);
 

@@ -22,11 +22,18 @@ namespace fs = std::filesystem;
 
 namespace {
 
-base::Status needApplication()
+// QJSEngine needs a core application. A program without one (camwb-cli links no Qt) gets it
+// here, with the first post, for the rest of the process: it is never deleted, so that it
+// outlives every engine.
+void ensureApplication()
 {
-    if (!QCoreApplication::instance())
-        return base::makeError("the post kernel needs a QCoreApplication (QJSEngine requires one)");
-    return {};
+    if (QCoreApplication::instance())
+        return;
+    static int argc = 1;
+    static char name[] = "camwb";
+    static char* argv[] = {name, nullptr};
+    static QCoreApplication* const made = new QCoreApplication(argc, argv);
+    (void)made;
 }
 
 // Sets up a run of `info`'s post with the options; the script is evaluated with the run's
@@ -81,8 +88,7 @@ std::vector<base::Diagnostic> playAndCollect(ScriptRun& run, const toolpath::Too
 
 base::Result<PostProcessor> ScriptEngine::load(const std::string& scriptPath, std::chrono::milliseconds scriptBudget)
 {
-    if (base::Status app = needApplication(); !app)
-        return app.error();
+    ensureApplication();
     auto source = base::readTextFile(scriptPath);
     if (!source)
         return base::makeError("cannot read post script: " + source.error().message, scriptPath);
@@ -98,8 +104,7 @@ base::Result<PostProcessor> ScriptEngine::load(const std::string& scriptPath, st
 base::Result<PostOutput> ScriptEngine::run(const PostProcessor& post, const toolpath::Toolpath& toolpath,
                                            const RunOptions& options)
 {
-    if (base::Status app = needApplication(); !app)
-        return app.error();
+    ensureApplication();
     ScriptRun run(post.m_info.filePath, options.context, options.scriptBudget);
     if (base::Status status = prepare(run, post.m_info, post.m_source, options); !status)
         return status.error();
@@ -118,8 +123,7 @@ base::Result<PostOutput> ScriptEngine::run(const PostProcessor& post, const tool
 base::Result<PostSummary> ScriptEngine::runToFile(const PostProcessor& post, const toolpath::Toolpath& toolpath,
                                                   const RunOptions& options, const std::string& outputPath)
 {
-    if (base::Status app = needApplication(); !app)
-        return app.error();
+    ensureApplication();
     ScriptRun run(post.m_info.filePath, options.context, options.scriptBudget);
     if (base::Status status = prepare(run, post.m_info, post.m_source, options); !status)
         return status.error();

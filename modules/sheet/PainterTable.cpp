@@ -23,7 +23,7 @@ void dropRuntimeDirNote(QtMsgType type, const QMessageLogContext& context, const
         g_previousHandler(type, context, message);
 }
 
-QCoreApplication* makeApplication(int& argc, char** argv)
+void* makeApplication(int& argc, char** argv)
 {
     // Fonts and images need a GUI application, a display does not: offscreen unless told otherwise.
     if (!std::getenv("QT_QPA_PLATFORM"))
@@ -31,6 +31,8 @@ QCoreApplication* makeApplication(int& argc, char** argv)
     g_previousHandler = qInstallMessageHandler(dropRuntimeDirNote);
     return new QGuiApplication(argc, argv);
 }
+
+void endApplication(void* application) { delete static_cast<QGuiApplication*>(application); }
 
 base::Status write(const HeadlessSheet& sheet)
 {
@@ -48,6 +50,6 @@ base::Status write(const HeadlessSheet& sheet)
 extern "C" __attribute__((visibility("default"))) const camwb::sheet::detail::PainterTable* camwb_sheet_painter_table()
 {
     using namespace camwb::sheet;
-    static const detail::PainterTable table{detail::kPainterAbi, makeApplication, write};
+    static const detail::PainterTable table{detail::kPainterAbi, makeApplication, endApplication, write};
     return &table;
 }

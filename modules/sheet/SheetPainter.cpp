@@ -3,8 +3,6 @@
 #include "base/PluginLibrary.h"
 #include "sheet/detail/PainterTable.h"
 
-#include <QCoreApplication>
-
 namespace camwb::sheet {
 namespace {
 
@@ -19,12 +17,12 @@ base::Result<const detail::PainterTable*> painter()
 
 }  // namespace
 
-base::Result<std::unique_ptr<QCoreApplication>> sheetApplication(int& argc, char** argv)
+base::Result<SheetApplication> sheetApplication(int& argc, char** argv)
 {
     const base::Result<const detail::PainterTable*> loaded = painter();
     if (!loaded)
         return loaded.error();
-    return std::unique_ptr<QCoreApplication>(loaded.value()->makeApplication(argc, argv));
+    return SheetApplication(loaded.value()->makeApplication(argc, argv), loaded.value()->endApplication);
 }
 
 base::Status writeHeadlessSheet(const HeadlessSheet& sheet)

@@ -13,8 +13,6 @@
 #include <optional>
 #include <string>
 
-class QCoreApplication;
-
 namespace camwb::toolpath {
 class Toolpath;
 }
@@ -34,9 +32,10 @@ struct HeadlessSheet {
 };
 
 // The application a sheet is drawn in: a GUI one (fonts, images) on the offscreen platform
-// unless QT_QPA_PLATFORM names another. Made before anything else, in place of the program's
-// core application.
-base::Result<std::unique_ptr<QCoreApplication>> sheetApplication(int& argc, char** argv);
+// unless QT_QPA_PLATFORM names another. Made by the painter library before anything else; it
+// ends when the handle is destroyed. No Qt type shows here: the program links no Qt.
+using SheetApplication = std::unique_ptr<void, void (*)(void*)>;
+base::Result<SheetApplication> sheetApplication(int& argc, char** argv);
 
 // Needs sheetApplication()'s application.
 base::Status writeHeadlessSheet(const HeadlessSheet& sheet);

@@ -6,13 +6,14 @@
 namespace camwb::sheet::detail {
 
 struct PainterTable {
-    int abi = 0;  // kPainterAbi when library and program were built together
-    QCoreApplication* (*makeApplication)(int& argc, char** argv);
+    int abi = 0;                                       // kPainterAbi when library and program were built together
+    void* (*makeApplication)(int& argc, char** argv);  // a QGuiApplication
+    void (*endApplication)(void* application);         // deletes what makeApplication made
     base::Status (*write)(const HeadlessSheet& sheet);
 };
 
 // Raise whenever PainterTable, HeadlessSheet or the types they hold change.
-inline constexpr int kPainterAbi = 1;
+inline constexpr int kPainterAbi = 2;
 inline constexpr const char* kPainterEntryPoint = "camwb_sheet_painter_table";
 
 }  // namespace camwb::sheet::detail

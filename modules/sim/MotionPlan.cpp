@@ -204,6 +204,20 @@ void shapeProfile(PlannedMove& m)
     m.moveSeconds = (vc - v0) / a + (vc - v1) / a + level / vc;
 }
 
+// min(cap, the speed reached from `speed` over `length` at `acceleration`), for the passes. Most
+// junctions are capped by the corners and the feeds, not by what a move can brake or speed up to:
+// there the root is skipped, whose latency chained each junction to the next. The result is the
+// same double: cap² with a margin above its rounding at most `reach` means cap ≤ √reach exactly,
+// and the rounded root cannot fall below cap, so min() gives cap (a cap whose square is not a
+// normal double, or NaN, takes the root).
+double reachCapped(double cap, double speed, double acceleration, double length)
+{
+    const double reach = speed * speed + 2 * acceleration * length;
+    if (cap > 1e-100 && cap * cap * (1 + 1e-15) <= reach)
+        return cap;
+    return std::min(cap, std::sqrt(reach));
+}
+
 }  // namespace
 
 double PlannedMove::distanceAt(double t) const
@@ -272,14 +286,12 @@ MotionPlan planMotion(const MoveList& list, const kinematics::Machine& machine, 
     for (std::size_t i = n; i-- > 0;) {
         const PlannedMove& p = plan.moves[i];
         if (!p.fixedTime)
-            junction[i] =
-                std::min(junction[i], std::sqrt(junction[i + 1] * junction[i + 1] + 2 * p.acceleration * p.length));
+            junction[i] = reachCapped(junction[i], junction[i + 1], p.acceleration, p.length);
     }
     for (std::size_t i = 0; i < n; ++i) {
         const PlannedMove& p = plan.moves[i];
         if (!p.fixedTime)
-            junction[i + 1] =
-                std::min(junction[i + 1], std::sqrt(junction[i] * junction[i] + 2 * p.acceleration * p.length));
+            junction[i + 1] = reachCapped(junction[i + 1], junction[i], p.acceleration, p.length);
     }
     double t = 0;
     for (std::size_t i = 0; i < n; ++i) {
@@ -304,9 +316,15 @@ CycleTimes cycleTimes(const MoveList& list, const MotionPlan& plan, const toolpa
         s.pauseSeconds += p.pauseSeconds;
     };
     const std::size_t n = std::min(list.moves.size(), plan.moves.size());
+    TimeSplit* toolSplit = nullptr;  // the current tool's, looked up when the tool changes
+    int splitTool = 0;
     for (std::size_t i = 0; i < n; ++i) {
         add(c.planned, i);
-        add(c.plannedPerTool[list.moves[i].tool], i);
+        if (toolSplit == nullptr || list.moves[i].tool != splitTool) {
+            splitTool = list.moves[i].tool;
+            toolSplit = &c.plannedPerTool[splitTool];
+        }
+        add(*toolSplit, i);
     }
     // The spindle's stop at the end belongs to the last move's tool and section.
     if (n > 0) {

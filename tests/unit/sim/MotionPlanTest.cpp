@@ -106,6 +106,23 @@ TEST(MotionPlan, AStraightContinuationDoesNotSlow)
     EXPECT_NEAR(plan.totalSeconds, 100.0 / 100 + 100.0 / 1000, 1e-12);  // as one 100 mm move
 }
 
+TEST(MotionPlan, ShortMovesInARowSpeedUpAndBrakeAsOne)
+{
+    // Ten collinear 0.5 mm moves at 100 mm/s, a = 1000 mm/s²: too short to reach the feed. The
+    // junctions are what the passes allow, speeding up from the start and braking to the end: the
+    // five millimetres are one triangle.
+    sim::MoveList list;
+    for (int k = 0; k < 10; ++k)
+        list.moves.push_back(feed({0.5 * k, 0, 0}, {0.5 * (k + 1), 0, 0}, 6000));
+    const sim::MotionPlan plan = sim::planMotion(list, machine3());
+    for (int k = 0; k < 10; ++k) {
+        const double d = 0.5 * (k + 1);  // where move k ends
+        EXPECT_NEAR(plan.moves[k].exitSpeed, std::sqrt(2 * 1000 * std::min(d, 5 - d)), 1e-9) << "move " << k;
+    }
+    EXPECT_DOUBLE_EQ(plan.moves[0].entrySpeed, 0);
+    EXPECT_NEAR(plan.totalSeconds, 2 * std::sqrt(5.0 / 1000), 1e-12);
+}
+
 TEST(MotionPlan, AnAxisVelocityLimitLowersADiagonalsPathSpeed)
 {
     sim::MoveList list;

@@ -350,9 +350,11 @@ int simCommand(const std::vector<std::string>& args)
         spec->design = input->design;
         spec->gougeToleranceMm = options.toleranceMm;
     }
+    const kinematics::Machine planMachine = input->machine ? *input->machine : kinematics::defaultLimitsMachine();
     sim::SimulationSetup setup;
     setup.machine = input->machine ? &*input->machine : nullptr;
     setup.stockSpec = spec ? &*spec : nullptr;
+    setup.planOn = &planMachine;  // planned while the stock is cut
     sim::SimulationResult result = sim::simulate(input->program, setup, input->recordsInError);
     if (!result.stockError.empty())
         return fail(result.stockError);  // says what to change (--resolution, or the stock)
@@ -369,8 +371,7 @@ int simCommand(const std::vector<std::string>& args)
         checkPlaces.push_back(placeOf(*input, options.input, check.record));
 
     // Time.
-    const kinematics::Machine planMachine = input->machine ? *input->machine : kinematics::defaultLimitsMachine();
-    const sim::MotionPlan plan = sim::planMotion(result.moves, planMachine);
+    const sim::MotionPlan plan = std::move(*result.plan);
     toolpath::StatsOptions statsOptions;
     statsOptions.rapidMmPerMin = kinematics::estimateRapidMmPerMin(input->machine ? &*input->machine : nullptr);
     statsOptions.recordsInError = input->recordsInError.empty() ? nullptr : &input->recordsInError;

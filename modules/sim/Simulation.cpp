@@ -7,6 +7,7 @@
 #include "toolpath/Toolpath.h"
 
 #include <algorithm>
+#include <future>
 
 namespace camwb::sim {
 
@@ -108,6 +109,12 @@ SimulationResult simulate(const toolpath::Toolpath& program, const SimulationSet
         options.chain = &setup.machine->kinematics;
     result.moves = buildMoves(program, options, recordsInError);
     result.tilts = anyToolTilts(result.moves);
+    // Nothing below changes the moves; the plan is joined before they are returned (and, should the
+    // cut throw, by the future's destructor).
+    std::future<MotionPlan> planned;
+    if (setup.planOn)
+        planned = std::async(std::launch::async,
+                             [&moves = result.moves, machine = setup.planOn] { return planMotion(moves, *machine); });
     Stock* stock = setup.stock;
     if (!stock && setup.stockSpec) {
         base::Result<std::unique_ptr<Stock>> made = makeStock(*setup.stockSpec, result.tilts);
@@ -148,6 +155,8 @@ SimulationResult simulate(const toolpath::Toolpath& program, const SimulationSet
         for (Check& c : machineLimitChecks(program, *setup.machine))
             result.checks.push_back(std::move(c));
     }
+    if (planned.valid())
+        result.plan = planned.get();
     return result;
 }
 

@@ -7,6 +7,7 @@
 #include "base/Result.h"
 #include "kinematics/Machine.h"
 #include "sim/Checks.h"
+#include "sim/MotionPlan.h"
 #include "sim/Moves.h"
 #include "sim/Stock.h"
 
@@ -45,6 +46,10 @@ struct SimulationSetup {
     double chordToleranceMm = 0.005;  // arcs and joint-interpolated moves
     const std::atomic<bool>* cancel = nullptr;
     std::function<void(double fraction)> progress;  // 0..1, from the cutting loop
+    // Also plan the motion on this machine (planMotion), on a second thread while the stock is
+    // cut: the plan needs only the moves, so a caller that wants both waits for the longer of the
+    // two, not their sum. nullptr: no plan.
+    const kinematics::Machine* planOn = nullptr;
 };
 
 struct SimulationResult {
@@ -58,7 +63,8 @@ struct SimulationResult {
     double removedMm3 = 0;
     double airCuttingMm = 0;
     double cuttingMm = 0;
-    Deviation deviation;  // against the stock's design model (empty without one)
+    Deviation deviation;             // against the stock's design model (empty without one)
+    std::optional<MotionPlan> plan;  // with SimulationSetup::planOn
 
     int count(base::Severity severity) const;
 };

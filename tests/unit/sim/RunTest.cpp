@@ -410,3 +410,35 @@ TEST(SimRun, CuttingInStepsLeavesWhatCuttingThroughLeaves)
     EXPECT_GT(through.airCuttingMm(), 0);  // the last arc
     EXPECT_GT(through.removedMm3(), 100);
 }
+
+TEST(SimRun, ThePlanMadeBesideTheCutIsThePlanOfItsMoves)
+{
+    // SimulationSetup::planOn plans on a second thread while the stock is cut: the same plan as
+    // planMotion() on the moves afterwards, and none without it.
+    Toolpath p = start(flat10());
+    p.add(Rapid{{-8, 20, 15}});
+    for (int k = 0; k < 20; ++k)
+        p.add(Arc{{k % 2 ? -8.0 : 8.0, 20, 15 - 0.1 * k}, {0, 20, 15}, {0, 0, 1}, true, 0, 300});
+    p.add(Linear{{30, 20, 30}, 900});
+    sim::HeightField stock({{0, 0, 0}, {60, 40, 20}, false}, 0.2);
+    kinematics::Machine machine = kinematics::defaultLimitsMachine();
+    sim::SimulationSetup setup;
+    setup.stock = &stock;
+    setup.planOn = &machine;
+    const sim::SimulationResult r = sim::simulate(p, setup);
+    ASSERT_TRUE(r.plan.has_value());
+    const sim::MotionPlan alone = sim::planMotion(r.moves, machine);
+    ASSERT_EQ(r.plan->moves.size(), alone.moves.size());
+    ASSERT_EQ(r.plan->moves.size(), r.moves.moves.size());
+    for (std::size_t i = 0; i < alone.moves.size(); ++i) {
+        EXPECT_EQ(r.plan->moves[i].start, alone.moves[i].start) << i;
+        EXPECT_EQ(r.plan->moves[i].moveSeconds, alone.moves[i].moveSeconds) << i;
+        EXPECT_EQ(r.plan->moves[i].exitSpeed, alone.moves[i].exitSpeed) << i;
+    }
+    EXPECT_EQ(r.plan->totalSeconds, alone.totalSeconds);
+    EXPECT_GT(r.plan->totalSeconds, 0);
+    EXPECT_GT(r.removedMm3, 0);
+
+    sim::HeightField again({{0, 0, 0}, {60, 40, 20}, false}, 0.2);
+    EXPECT_FALSE(run(p, again).plan.has_value());
+}

@@ -13,8 +13,10 @@
 #include <QCoreApplication>
 
 #include <algorithm>
+#include <clocale>
 #include <filesystem>
 #include <memory>
+#include <string>
 
 namespace camwb::post {
 
@@ -24,7 +26,9 @@ namespace {
 
 // QJSEngine needs a core application. A program without one (camwb-cli links no Qt) gets it
 // here, with the first post, for the rest of the process: it is never deleted, so that it
-// outlives every engine.
+// outlives every engine. Qt sets the C library's locale from the environment as it makes one;
+// the numeric part is put back, so that the program formats numbers after its first post as it
+// did before it.
 void ensureApplication()
 {
     if (QCoreApplication::instance())
@@ -32,7 +36,13 @@ void ensureApplication()
     static int argc = 1;
     static char name[] = "camwb";
     static char* argv[] = {name, nullptr};
-    static QCoreApplication* const made = new QCoreApplication(argc, argv);
+    static QCoreApplication* const made = [] {
+        const char* current = std::setlocale(LC_NUMERIC, nullptr);
+        const std::string numeric = current != nullptr ? current : "C";
+        auto* app = new QCoreApplication(argc, argv);
+        std::setlocale(LC_NUMERIC, numeric.c_str());
+        return app;
+    }();
     (void)made;
 }
 

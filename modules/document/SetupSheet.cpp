@@ -124,7 +124,7 @@ std::optional<double> requiredStickOut(const sim::MoveList& moves, int tool, con
     for (const sim::Move& move : moves.moves) {
         if (move.tool != tool || !move.moves() || !move.positionKnown)
             continue;
-        for (const auto& [tip, axis] : {std::pair{move.from, move.fromAxis}, std::pair{move.to, move.toAxis}}) {
+        for (const auto& [tip, axis] : {std::pair{move.from, move.fromAxis()}, std::pair{move.to, move.toAxis()}}) {
             const double depth = std::max(0.0, highestAlong(clear, axis) - tip.dot(axis));
             deepest = std::max(deepest.value_or(0.0), depth);
         }

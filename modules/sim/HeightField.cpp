@@ -129,7 +129,7 @@ CutResult HeightField::cut(const Move& move, std::size_t moveIndex, const ToolSh
     if (!move.moves() || !move.positionKnown || tool.radiusMm() <= 0)
         return result;
     m_cutNow = {};
-    if (vertical(move.fromAxis) && vertical(move.toAxis)) {
+    if (vertical(move.fromAxis()) && vertical(move.toAxis())) {
         // The cutter leads: the shank and holder meet what it left (a shank as wide as the
         // cutter rides in its own slot), so they are checked against the stock after the cut.
         if (!clearOfStock(move, tool.radiusMm() + arcBulge(move)))
@@ -142,7 +142,7 @@ CutResult HeightField::cut(const Move& move, std::size_t moveIndex, const ToolSh
     m_changed.add(m_cutNow);
     m_lastEnd = move.to;
     m_lastRadius = tool.radiusMm();
-    m_lastFlatVertical = tool.flatBottomed() && vertical(move.toAxis);
+    m_lastFlatVertical = tool.flatBottomed() && vertical(move.toAxis());
     return result;
 }
 
@@ -417,7 +417,7 @@ void HeightField::checkHolder(const Move& move, const ToolShape& tool, CutResult
 void HeightField::cutTilted(const Move& move, std::size_t moveIndex, const ToolShape& tool, CutResult& result)
 {
     const double step = 0.5 * std::min(m_dx, m_dy);
-    const double turn = move.fromAxis.angleTo(move.toAxis) * tool.totalLengthMm();
+    const double turn = move.fromAxis().angleTo(move.toAxis()) * tool.totalLengthMm();
     const int poses = std::max(1, int(std::ceil(std::max(move.lengthMm(), turn) / step)));
     const double reach = tool.boundingRadiusMm(), below = m_box.min.z - 1;
     const Vec3 up{0, 0, 1};

@@ -28,7 +28,7 @@ bool knownRotaries(const kinematics::KinematicChain& chain, const Move& move, bo
 {
     if (!chain.fiveAxis())
         return false;
-    const toolpath::RotaryAxes& r = end ? move.toMachine : move.fromMachine;
+    const toolpath::RotaryAxes& r = end ? move.toMachine() : move.fromMachine();
     for (int j = 0; j < 2; ++j) {
         const std::optional<double> deg = r.of(chain.joints[j].axis);
         if (!deg)

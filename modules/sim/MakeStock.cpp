@@ -101,7 +101,7 @@ bool anyToolTilts(const MoveList& moves)
 {
     auto tilted = [](const Vec3& a) { return std::abs(a.x) > 1e-9 || std::abs(a.y) > 1e-9 || a.z <= 0; };
     for (const Move& m : moves.moves)
-        if (m.moves() && (tilted(m.fromAxis) || tilted(m.toAxis)))
+        if (m.moves() && (tilted(m.fromAxis()) || tilted(m.toAxis())))
             return true;
     return false;
 }

@@ -99,8 +99,9 @@ private:
         m.tool = m_tool;
         m.record = m_record;
         m.spindleRpm = m_rpm;
-        m.fromAxis = m.toAxis = m_axis;
-        m.fromMachine = m.toMachine = m_machine;
+        m.setAxis(m_axis);
+        m.setFromMachine(m_machine);
+        m.setToMachine(m_machine);
         return m;
     }
 
@@ -132,7 +133,7 @@ private:
         if (p)
             m.from = m.to = m_plane.toWorkpiece(*p);
         m.seconds = seconds;
-        m_out.moves.push_back(m);
+        m_out.moves.push_back(std::move(m));
     }
 
     void push(const Vec3& fromLocal, const Vec3& toLocal, MoveKind kind, double feed, double fraction, bool fromArc)
@@ -142,7 +143,7 @@ private:
         m.to = m_plane.toWorkpiece(toLocal);
         m.fromArc = fromArc;
         setFeed(m, feed, fraction);
-        m_out.moves.push_back(m);
+        m_out.moves.push_back(std::move(m));
     }
 
     void straight(const Vec3& to, AxisMask axes, MoveKind kind, double feed)
@@ -196,10 +197,10 @@ private:
         if (p && !m_inError) {
             Move m = base(MoveKind::Rapid);
             m.from = m.to = m_plane.toWorkpiece(*p);
-            m.toAxis = to;
+            m.setToAxis(to);
             m.fiveAxis = true;
-            m.toMachine = {};
-            m_out.moves.push_back(m);
+            m.setToMachine({});
+            m_out.moves.push_back(std::move(m));
         }
         m_axis = to;
         m_machine = {};
@@ -298,17 +299,17 @@ void MoveBuilder::toolAxisMove(const toolpath::ToolAxisMove& m)
         if (!m_inError) {
             piece.from = piece.to;
             setFeed(piece, m.feedMmPerMin, 1.0);
-            m_out.moves.push_back(piece);
+            m_out.moves.push_back(std::move(piece));
         }
         return;
     }
     if (m_inError)
         return;
     piece.from = *from;
-    piece.fromAxis = fromAxis;
-    piece.toAxis = m_axis;
-    piece.fromMachine = fromMachine;
-    piece.toMachine = m.machine;
+    piece.setFromAxis(fromAxis);
+    piece.setToAxis(m_axis);
+    piece.setFromMachine(fromMachine);
+    piece.setToMachine(m.machine);
     setFeed(piece, m.feedMmPerMin, 1.0);
     if (m.jointInterpolated) {
         splitJoint(m, piece, *from);
@@ -316,7 +317,7 @@ void MoveBuilder::toolAxisMove(const toolpath::ToolAxisMove& m)
     }
     if (base::distance(piece.from, piece.to) < 1e-12 && fromAxis.angleTo(m_axis) < 1e-12)
         return;
-    m_out.moves.push_back(piece);
+    m_out.moves.push_back(std::move(piece));
 }
 
 // The machine moves its joints evenly: the tip curves through the chain. Pieces double until the
@@ -327,16 +328,16 @@ void MoveBuilder::splitJoint(const toolpath::ToolAxisMove& m, Move piece, const 
     piece.jointInterpolated = true;
     const bool known = chain && chain->fiveAxis() &&
                        std::all_of(chain->joints.begin(), chain->joints.end(), [&](const kinematics::RotaryJoint& j) {
-                           return piece.fromMachine.of(j.axis) && piece.toMachine.of(j.axis);
+                           return piece.fromMachine().of(j.axis) && piece.toMachine().of(j.axis);
                        });
     if (!known) {
-        m_out.moves.push_back(piece);  // straight: nothing here knows how the tip curves
+        m_out.moves.push_back(std::move(piece));  // straight: nothing here knows how the tip curves
         return;
     }
     kinematics::MachinePose a, b;
     for (int i = 0; i < 2; ++i) {
-        a.rotaryDeg[i] = *piece.fromMachine.of(chain->joints[i].axis);
-        b.rotaryDeg[i] = *piece.toMachine.of(chain->joints[i].axis);
+        a.rotaryDeg[i] = *piece.fromMachine().of(chain->joints[i].axis);
+        b.rotaryDeg[i] = *piece.toMachine().of(chain->joints[i].axis);
     }
     a.linear = kinematics::linearAxesFor(*chain, fromTip, a.rotaryDeg, m_toolLengthMm);
     b.linear = kinematics::linearAxesFor(*chain, m.tip, b.rotaryDeg, m_toolLengthMm);
@@ -367,17 +368,18 @@ void MoveBuilder::splitJoint(const toolpath::ToolAxisMove& m, Move piece, const 
         Move p = whole;
         p.from = poses[i].tip;
         p.to = poses[i + 1].tip;
-        p.fromAxis = poses[i].axis;
-        p.toAxis = poses[i + 1].axis;
+        p.setFromAxis(poses[i].axis);
+        p.setToAxis(poses[i + 1].axis);
         p.minutes = whole.minutes / pieces;
+        toolpath::RotaryAxes fromMachine = p.fromMachine(), toMachine = p.toMachine();
         for (int j = 0; j < 2; ++j) {
             const std::string& axis = chain->joints[j].axis;
-            const double from = a.rotaryDeg[j] + (b.rotaryDeg[j] - a.rotaryDeg[j]) * double(i) / pieces;
-            const double to = a.rotaryDeg[j] + (b.rotaryDeg[j] - a.rotaryDeg[j]) * double(i + 1) / pieces;
-            p.fromMachine.set(axis, from);
-            p.toMachine.set(axis, to);
+            fromMachine.set(axis, a.rotaryDeg[j] + (b.rotaryDeg[j] - a.rotaryDeg[j]) * double(i) / pieces);
+            toMachine.set(axis, a.rotaryDeg[j] + (b.rotaryDeg[j] - a.rotaryDeg[j]) * double(i + 1) / pieces);
         }
-        m_out.moves.push_back(p);
+        p.setFromMachine(fromMachine);
+        p.setToMachine(toMachine);
+        m_out.moves.push_back(std::move(p));
     }
 }
 
@@ -385,18 +387,20 @@ void MoveBuilder::splitJoint(const toolpath::ToolAxisMove& m, Move piece, const 
 
 Vec3 Move::axisAt(double u) const
 {
-    const double angle = fromAxis.angleTo(toAxis);
+    const Vec3& a = fromAxis();
+    const Vec3& b = toAxis();
+    const double angle = a.angleTo(b);
     if (angle < 1e-12 || angle > kPi - 1e-9)
-        return fromAxis;
+        return a;
     const double s = std::sin(angle);
-    return fromAxis * (std::sin((1 - u) * angle) / s) + toAxis * (std::sin(u * angle) / s);
+    return a * (std::sin((1 - u) * angle) / s) + b * (std::sin(u * angle) / s);
 }
 
 namespace {
 
 // About how many moves buildMoves() makes of `program`, to reserve at once: a list that grows by
 // doubling copies itself into fresh pages each time (on the 20k-block benchmark program, 156k
-// moves of 232 bytes, the copies were 20,000 of the command's 32,000 page faults). Each arc is
+// moves, 232 bytes each then, the copies were 20,000 of the command's 32,000 page faults). Each arc is
 // counted from where the record before it ended, whatever axes it gave; a straight move, a pause
 // and a new working plane (the turn to it) are one each, a five-axis move two (it may be followed
 // by a turn back). Only joint-interpolated five-axis moves, split along the tip's curve, and

@@ -11,6 +11,7 @@
 
 #include <cstdint>
 #include <map>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -30,37 +31,105 @@ enum class MoveKind : std::uint8_t {
     Stop,        // program stop (M0/M1): the tool stands; no time is counted
 };
 
+// The tool's axis at both ends of a move and the machine's rotary positions where the source gave
+// them: what only moves that tilt or turn the tool need. A move of a vertical tool without rotary
+// positions, as a three-axis program's all are, holds none of it (ToolTurnBox): a long program's
+// moves are half the size.
+struct ToolTurn {
+    Vec3 fromAxis{0, 0, 1};  // unit, tip towards spindle, workpiece frame
+    Vec3 toAxis{0, 0, 1};
+    toolpath::RotaryAxes fromMachine{};
+    toolpath::RotaryAxes toMachine{};
+};
+
+// A ToolTurn on the heap, copied with its move; empty: the vertical tool, no rotary positions.
+class ToolTurnBox {
+public:
+    ToolTurnBox() = default;
+    ToolTurnBox(const ToolTurnBox& other) : m_turn(other.m_turn ? std::make_unique<ToolTurn>(*other.m_turn) : nullptr)
+    {
+    }
+    ToolTurnBox(ToolTurnBox&&) noexcept = default;
+    ToolTurnBox& operator=(const ToolTurnBox& other)
+    {
+        if (this != &other)
+            m_turn = other.m_turn ? std::make_unique<ToolTurn>(*other.m_turn) : nullptr;
+        return *this;
+    }
+    ToolTurnBox& operator=(ToolTurnBox&&) noexcept = default;
+
+    const ToolTurn& get() const { return m_turn ? *m_turn : kNone; }
+    // The turn to change, made where there is none; nullptr where there is none and the value to
+    // set is the default (`isDefault`): setting a default costs nothing.
+    ToolTurn* edit(bool isDefault)
+    {
+        if (!m_turn && isDefault)
+            return nullptr;
+        if (!m_turn)
+            m_turn = std::make_unique<ToolTurn>();
+        return m_turn.get();
+    }
+
+private:
+    static inline const ToolTurn kNone{};
+    std::unique_ptr<ToolTurn> m_turn;
+};
+
 // One straight piece of motion (or a pause at `to` for the kinds that stand). The tip goes
-// straight from `from` to `to` and the tool axis turns evenly from `fromAxis` to `toAxis` (a
+// straight from `from` to `to` and the tool axis turns evenly from fromAxis() to toAxis() (a
 // control's tool-tip control), unless `jointInterpolated`: then the machine moves its axes
-// evenly from `fromMachine` to `toMachine` and MoveList has split the move so that the tip's
+// evenly from fromMachine() to toMachine() and MoveList has split the move so that the tip's
 // curve stays within the chord tolerance of its pieces. Where the tool's axis changes between two
 // moves (a new working plane, three-axis moves after five-axis ones), MoveList puts a turn about
 // the standing tip between them: a Rapid with from == to, so its time and axis speeds count.
 struct Move {
     Vec3 from;
     Vec3 to;
-    Vec3 fromAxis{0, 0, 1};  // unit, tip towards spindle, workpiece frame
-    Vec3 toAxis{0, 0, 1};
     MoveKind kind = MoveKind::Feed;
-    bool fromArc = false;                // a piece of a split arc or helix
-    bool fiveAxis = false;               // from a ToolAxisMove (the axis may turn)
-    bool jointInterpolated = false;      // see above
-    bool positionKnown = true;           // false: a pause before any move (from, to mean nothing)
-    int tool = 0;                        // tool number in use (0: none yet); MoveList::tools has it
-    std::uint32_t record = 0;            // index of the toolpath record it came from
-    double feedMmPerMin = 0;             // Feed, per minute mode (per revolution: times the rpm)
-    double minutes = 0;                  // Feed in inverse time: the time this piece takes; else 0
-    double seconds = 0;                  // Dwell
-    double spindleRpm = 0;               // 0: stopped
-    toolpath::RotaryAxes fromMachine{};  // machine rotary positions where the source gave them
-    toolpath::RotaryAxes toMachine{};
+    bool fromArc = false;            // a piece of a split arc or helix
+    bool fiveAxis = false;           // from a ToolAxisMove (the axis may turn)
+    bool jointInterpolated = false;  // see above
+    bool positionKnown = true;       // false: a pause before any move (from, to mean nothing)
+    int tool = 0;                    // tool number in use (0: none yet); MoveList::tools has it
+    std::uint32_t record = 0;        // index of the toolpath record it came from
+    double feedMmPerMin = 0;         // Feed, per minute mode (per revolution: times the rpm)
+    double minutes = 0;              // Feed in inverse time: the time this piece takes; else 0
+    double seconds = 0;              // Dwell
+    double spindleRpm = 0;           // 0: stopped
     // A piece of an arc or helix about the workpiece's Z axis: both ends lie on the circle of
     // arcRadius round arcCentre, and the tip follows the arc between them (the straight piece is
     // its chord). 0: not such a piece. The stock sweeps the arc itself, so that a block's pieces
     // cut one by one and the block cut in one pass leave the same stock (Stock::cutArcRun).
     base::Vec2 arcCentre;
     double arcRadius = 0;
+
+    // The tool axis at the ends (unit, tip towards spindle, workpiece frame; vertical unless set)
+    // and the machine's rotary positions where the source gave them (none unless set).
+    const Vec3& fromAxis() const { return m_turn.get().fromAxis; }
+    const Vec3& toAxis() const { return m_turn.get().toAxis; }
+    const toolpath::RotaryAxes& fromMachine() const { return m_turn.get().fromMachine; }
+    const toolpath::RotaryAxes& toMachine() const { return m_turn.get().toMachine; }
+    void setFromAxis(const Vec3& axis)
+    {
+        if (ToolTurn* t = m_turn.edit(axis == kVertical))
+            t->fromAxis = axis;
+    }
+    void setToAxis(const Vec3& axis)
+    {
+        if (ToolTurn* t = m_turn.edit(axis == kVertical))
+            t->toAxis = axis;
+    }
+    void setAxis(const Vec3& axis) { setFromAxis(axis), setToAxis(axis); }  // both ends
+    void setFromMachine(const toolpath::RotaryAxes& r)
+    {
+        if (ToolTurn* t = m_turn.edit(isNone(r)))
+            t->fromMachine = r;
+    }
+    void setToMachine(const toolpath::RotaryAxes& r)
+    {
+        if (ToolTurn* t = m_turn.edit(isNone(r)))
+            t->toMachine = r;
+    }
 
     double lengthMm() const { return base::distance(from, to); }
     // The tool axis at `u` (0..1) of the move: turned evenly (the angle grows with u) from
@@ -77,6 +146,14 @@ struct Move {
     // The tip at `u` (0..1) of the move: along the arc for an arc piece, else on the chord; the
     // ends are `from` and `to` exactly.
     Vec3 pointAt(double u) const;
+
+private:
+    static constexpr Vec3 kVertical{0, 0, 1};
+    static bool isNone(const toolpath::RotaryAxes& r)
+    {
+        return r.known == 0 && r.aDeg == 0 && r.bDeg == 0 && r.cDeg == 0;
+    }
+    ToolTurnBox m_turn;
 };
 
 // True when `next` goes on from `piece` along the same arc or helix about Z (same block, circle,
@@ -86,7 +163,7 @@ inline bool continuesArc(const Move& piece, const Move& next)
 {
     auto onArc = [](const Move& m) {
         return m.arcRadius > 0 && m.kind == MoveKind::Feed && !m.plunges() && !m.fiveAxis &&
-               m.fromAxis == Vec3{0, 0, 1} && m.toAxis == Vec3{0, 0, 1};
+               m.fromAxis() == Vec3{0, 0, 1} && m.toAxis() == Vec3{0, 0, 1};
     };
     return onArc(piece) && onArc(next) && next.from == piece.to && next.record == piece.record &&
            next.tool == piece.tool && next.arcCentre == piece.arcCentre && next.arcRadius == piece.arcRadius &&

@@ -134,8 +134,8 @@ void StockRun::judge(std::size_t first, std::size_t end, const CutResult& cut, c
         check(CheckKind::SpindleOffCutting, base::Severity::Error, 0, to);
     if (removed && cut.removedOnAxis && !shape.tool().centreCutting) {
         const Vec3 d = to - move.from;
-        const double down = -d.dot(move.fromAxis);
-        const double across = (d + move.fromAxis * down).length();
+        const double down = -d.dot(move.fromAxis());
+        const double across = (d + move.fromAxis() * down).length();
         if (down > 0 && down > kPlungeSlope * across)
             check(CheckKind::PlungeNotCentre, base::Severity::Error, down, to);
     }

@@ -166,7 +166,7 @@ CutResult TriDexel::cut(const Move& move, std::size_t moveIndex, const ToolShape
     }
     result.removedMm3 = removed / 3;
     const Vec3 d = move.to - move.from;
-    const Vec3 a0 = move.fromAxis;
+    const Vec3 a0 = move.fromAxis();
     const int aligned = std::abs(a0.x) >= std::max(std::abs(a0.y), std::abs(a0.z)) ? 0
                         : std::abs(a0.y) >= std::abs(a0.z)                         ? 1
                                                                                    : 2;
@@ -179,12 +179,12 @@ int TriDexel::posesAlong(const Move& move, const ToolShape& tool) const
     const double halfCell = 0.5 * std::min({m_cell[0], m_cell[1], m_cell[2]});
     const double shortfall = halfCell / 10;
     // A turn moves the cutter's top (the point farthest from the tip) by this much.
-    const double turn = move.fromAxis.angleTo(move.toAxis) * tool.fluteLengthMm();
+    const double turn = move.fromAxis().angleTo(move.toAxis()) * tool.fluteLengthMm();
     // Along its own axis (a drill's plunge, a retract) a cutter whose radius never shrinks upwards
     // covers at each height what its lowest pose covers: poses half the flute apart overlap and
     // give the whole sweep, for every kind. A side step within the shortfall changes nothing.
     const Vec3 d = move.to - move.from;
-    if (turn == 0 && (d - move.fromAxis * d.dot(move.fromAxis)).length() <= shortfall)
+    if (turn == 0 && (d - move.fromAxis() * d.dot(move.fromAxis())).length() <= shortfall)
         return std::max(1, int(std::ceil(move.lengthMm() / (0.5 * tool.fluteLengthMm()))));
     // A point's curvature has no bound (it grows without end towards the tip): half a cell.
     if (tool.coneSlope() > 0)
@@ -200,7 +200,7 @@ int TriDexel::posesAlong(const Move& move, const ToolShape& tool) const
     double moveStep = step;
     if (const double len = move.lengthMm(); len > 0 && (tool.flatBottomed() || topRimMayCut(move, tool))) {
         double sinCos = 0;
-        for (const Vec3& axis : {move.fromAxis, move.axisAt(0.5), move.toAxis}) {
+        for (const Vec3& axis : {move.fromAxis(), move.axisAt(0.5), move.toAxis()}) {
             const double sinA = std::min(1.0, std::abs(d.dot(axis)) / len);
             sinCos = std::max(sinCos, sinA * std::sqrt(1 - sinA * sinA));
         }
@@ -216,10 +216,10 @@ bool TriDexel::topRimMayCut(const Move& move, const ToolShape& tool) const
     // The rim stays within its centre's path grown by the radius; the path within the box of its
     // ends grown by how far the turn moves the top.
     const double flute = tool.fluteLengthMm();
-    const double grow = tool.radiusMm() + move.fromAxis.angleTo(move.toAxis) * flute;
+    const double grow = tool.radiusMm() + move.fromAxis().angleTo(move.toAxis()) * flute;
     base::Box3 rim;
-    rim.add(move.from + move.fromAxis * flute);
-    rim.add(move.to + move.toAxis * flute);
+    rim.add(move.from + move.fromAxis() * flute);
+    rim.add(move.to + move.toAxis() * flute);
     rim.min = rim.min - Vec3{grow, grow, grow};
     rim.max = rim.max + Vec3{grow, grow, grow};
     return rim.min.x < m_box.max.x && rim.max.x > m_box.min.x && rim.min.y < m_box.max.y && rim.max.y > m_box.min.y &&

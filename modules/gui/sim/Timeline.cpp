@@ -64,7 +64,7 @@ ToolPose Timeline::poseAt(const MovePoint& point) const
     if (!move.positionKnown)
         return {};
     const double f = i == point.move ? point.fraction : 1.0;
-    return {move.pointAt(f), axisBetween(move.fromAxis, move.toAxis, f), m_moves->moves[point.move].tool, true};
+    return {move.pointAt(f), axisBetween(move.fromAxis(), move.toAxis(), f), m_moves->moves[point.move].tool, true};
 }
 
 int Timeline::lineOf(std::size_t move) const
@@ -124,8 +124,8 @@ sim::Move partOf(const sim::Move& move, double from, double to)
     sim::Move part = move;
     part.from = move.pointAt(from);  // on the arc for an arc's piece: the stock sweeps the arc
     part.to = move.pointAt(to);
-    part.fromAxis = axisBetween(move.fromAxis, move.toAxis, from);
-    part.toAxis = axisBetween(move.fromAxis, move.toAxis, to);
+    part.setFromAxis(axisBetween(move.fromAxis(), move.toAxis(), from));
+    part.setToAxis(axisBetween(move.fromAxis(), move.toAxis(), to));
     return part;
 }
 

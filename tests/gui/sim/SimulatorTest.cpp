@@ -510,7 +510,7 @@ private slots:
         // The tool tilted on the swarf pass: the middle of its first tilted move.
         const auto& moves = player->run()->moves.moves;
         std::size_t tilted = 0;
-        while (tilted < moves.size() && (!moves[tilted].fiveAxis || moves[tilted].fromAxis.z > 0.999))
+        while (tilted < moves.size() && (!moves[tilted].fiveAxis || moves[tilted].fromAxis().z > 0.999))
             ++tilted;
         QVERIFY(tilted < moves.size());
         const auto& timeline = player->run()->timeline;

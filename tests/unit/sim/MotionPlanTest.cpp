@@ -314,19 +314,22 @@ TEST(MotionPlan, ARotaryAxisLimitCapsAFiveAxisMovesTipSpeed)
     const kinematics::Machine m = seed003Machine();
     Move tilt = feed({0, 0, 0}, {10, 0, 0}, 6000);
     tilt.fiveAxis = true;
-    tilt.toAxis = kinematics::forwardKinematics(m.kinematics, {{}, {30, 0}}).axis;
+    tilt.setToAxis(kinematics::forwardKinematics(m.kinematics, {{}, {30, 0}}).axis);
     sim::MoveList list;
     list.moves.push_back(tilt);
     // The program's own angles (A 0 → 30, C 0): A turns evenly.
-    list.moves[0].fromMachine.known = list.moves[0].toMachine.known =
-        toolpath::RotaryAxes::kA | toolpath::RotaryAxes::kC;
-    list.moves[0].toMachine.aDeg = 30;
+    toolpath::RotaryAxes from, to;
+    from.known = to.known = toolpath::RotaryAxes::kA | toolpath::RotaryAxes::kC;
+    to.aDeg = 30;
+    list.moves[0].setFromMachine(from);
+    list.moves[0].setToMachine(to);
     sim::PlannedMove p = sim::planMotion(list, m).moves[0];
     EXPECT_NEAR(p.cruiseSpeed, 20, 1e-9);
     EXPECT_NEAR(p.acceleration, 120, 1e-9);
     // Angles from the inverse kinematics of the axis as the move turns it (evenly: Move::axisAt),
     // so A turns evenly too: the same cap.
-    list.moves[0].fromMachine.known = list.moves[0].toMachine.known = 0;
+    list.moves[0].setFromMachine({});
+    list.moves[0].setToMachine({});
     p = sim::planMotion(list, m).moves[0];
     EXPECT_NEAR(p.cruiseSpeed, 20, 1e-6);
     EXPECT_NEAR(p.acceleration, 120, 1e-6);
@@ -340,8 +343,11 @@ TEST(MotionSamples, FiveAxisRotationInPlaceMovesTheLinearAxesThroughTheChain)
     Move turn = feed({50, 0, 0}, {50, 0, 0}, 0);
     turn.kind = MoveKind::Rapid;
     turn.fiveAxis = true;
-    turn.fromMachine.known = turn.toMachine.known = toolpath::RotaryAxes::kA | toolpath::RotaryAxes::kC;
-    turn.toMachine.cDeg = 90;
+    toolpath::RotaryAxes from, to;
+    from.known = to.known = toolpath::RotaryAxes::kA | toolpath::RotaryAxes::kC;
+    to.cDeg = 90;
+    turn.setFromMachine(from);
+    turn.setToMachine(to);
     sim::MoveList list;
     list.moves.push_back(turn);
     const sim::MotionPlan plan = sim::planMotion(list, m);
@@ -397,17 +403,20 @@ TEST(MachineAxes, RotaryAtMoveStartsFollowTheProgram)
     Move tilt = feed({0, 0, 0}, {10, 0, 0}, 6000);
     tilt.fiveAxis = true;
     const std::array<double, 2> tilted{30, 0};
-    tilt.toAxis = kinematics::forwardKinematics(m.kinematics, {{}, tilted}).axis;
+    tilt.setToAxis(kinematics::forwardKinematics(m.kinematics, {{}, tilted}).axis);
     Move turn = feed({10, 0, 0}, {10, 0, 0}, 0);
     turn.kind = MoveKind::Rapid;
     turn.fiveAxis = true;
-    turn.fromAxis = turn.toAxis = tilt.toAxis;
-    turn.fromMachine.known = turn.toMachine.known = toolpath::RotaryAxes::kA | toolpath::RotaryAxes::kC;
-    turn.fromMachine.aDeg = turn.toMachine.aDeg = 30;
-    turn.toMachine.cDeg = 270;
+    turn.setAxis(tilt.toAxis());
+    toolpath::RotaryAxes from, to;
+    from.known = to.known = toolpath::RotaryAxes::kA | toolpath::RotaryAxes::kC;
+    from.aDeg = to.aDeg = 30;
+    to.cDeg = 270;
+    turn.setFromMachine(from);
+    turn.setToMachine(to);
     Move last = feed({10, 0, 0}, {12, 0, 0}, 1000);
     last.fiveAxis = true;
-    last.fromAxis = last.toAxis = kinematics::forwardKinematics(m.kinematics, {{}, {30, 270}}).axis;
+    last.setAxis(kinematics::forwardKinematics(m.kinematics, {{}, {30, 270}}).axis);
     sim::MoveList list;
     list.moves = {tilt, pause(MoveKind::ToolChange, {10, 0, 0}), turn, last};
     const auto starts = sim::rotaryAtMoveStarts(m.kinematics, list);

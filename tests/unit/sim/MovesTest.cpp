@@ -214,7 +214,7 @@ TEST(SimMoves, WorkingPlanesPutMovesInTheWorkpieceFrame)
     EXPECT_NEAR(list.moves[0].to.x, 110, 1e-12);
     EXPECT_NEAR(list.moves[1].from.x, 110, 1e-12);
     EXPECT_NEAR(list.moves[1].to.x, 100, 1e-12);
-    EXPECT_NEAR(list.moves[1].toAxis.x, 1, 1e-12);  // the tool stands along the plane's Z
+    EXPECT_NEAR(list.moves[1].toAxis().x, 1, 1e-12);  // the tool stands along the plane's Z
 }
 
 TEST(SimMoves, SectionsSpanTheirMoves)
@@ -295,27 +295,27 @@ TEST(SimMoves, ANewToolAxisIsATurnAboutTheStandingTip)
     const sim::Move& turn = list.moves[1];
     EXPECT_EQ(turn.kind, MoveKind::Rapid);
     EXPECT_EQ(turn.from, turn.to);
-    EXPECT_NEAR(turn.fromAxis.z, 1, 1e-12);
-    EXPECT_NEAR(turn.toAxis.x, 1, 1e-12);
-    EXPECT_EQ(turn.toMachine.known, 0);
+    EXPECT_NEAR(turn.fromAxis().z, 1, 1e-12);
+    EXPECT_NEAR(turn.toAxis().x, 1, 1e-12);
+    EXPECT_EQ(turn.toMachine().known, 0);
     EXPECT_EQ(turn.record, 2u);
     const sim::Move& after = list.moves[2];
-    EXPECT_NEAR(after.fromAxis.x, 1, 1e-12);  // continues from the turned axis
-    EXPECT_EQ(after.fromMachine.known, 0);
+    EXPECT_NEAR(after.fromAxis().x, 1, 1e-12);  // continues from the turned axis
+    EXPECT_EQ(after.fromMachine().known, 0);
     EXPECT_NEAR(after.to.x, 60, 1e-12);  // along the plane's Z, which is the workpiece's X
 }
 
 TEST(SimMoves, TheToolAxisTurnsEvenly)
 {
     sim::Move m;
-    m.fromAxis = {0, 0, 1};
-    m.toAxis = {std::sin(1.2), 0, std::cos(1.2)};  // 1.2 rad apart
+    m.setFromAxis({0, 0, 1});
+    m.setToAxis({std::sin(1.2), 0, std::cos(1.2)});  // 1.2 rad apart
     for (double u : {0.0, 0.1, 0.5, 0.9, 1.0}) {
-        EXPECT_NEAR(m.axisAt(u).angleTo(m.fromAxis), 1.2 * u, 1e-12);
+        EXPECT_NEAR(m.axisAt(u).angleTo(m.fromAxis()), 1.2 * u, 1e-12);
         EXPECT_NEAR(m.axisAt(u).length(), 1, 1e-12);
     }
-    m.toAxis = {0, 0, -1};  // opposite: no even turn, the start's axis
-    EXPECT_EQ(m.axisAt(0.5), m.fromAxis);
+    m.setToAxis({0, 0, -1});  // opposite: no even turn, the start's axis
+    EXPECT_EQ(m.axisAt(0.5), m.fromAxis());
 }
 
 // The stock sweeps an arc about Z itself (HeightField::cutArcRun): its pieces carry the circle,
@@ -400,4 +400,29 @@ TEST(SimMoves, TheListIsReservedOnceAndNotMuchMore)
     ASSERT_GT(list.moves.size(), 1000u);
     EXPECT_GE(list.moves.capacity(), list.moves.size());
     EXPECT_LE(list.moves.capacity(), list.moves.size() + list.moves.size() / 20);
+}
+
+TEST(SimMoves, TheToolsTurnIsKeptApartAndCopiedWithItsMove)
+{
+    // A long program's moves are its largest array (156k of them for the 20,000-block benchmark
+    // program): the tool axes and rotary positions only five-axis moves need are not in it.
+    static_assert(sizeof(sim::Move) <= 128, "a move holds its tool's turn apart (ToolTurn)");
+    sim::Move m;
+    EXPECT_EQ(m.fromAxis(), (base::Vec3{0, 0, 1}));
+    EXPECT_EQ(m.toMachine().known, 0);
+    m.setToAxis({1, 0, 0});
+    toolpath::RotaryAxes c90;
+    c90.known = toolpath::RotaryAxes::kC;
+    c90.cDeg = 90;
+    m.setToMachine(c90);
+    const sim::Move copy = m;
+    m.setToAxis({0, 1, 0});  // the copy keeps its own
+    m.setToMachine({});
+    EXPECT_EQ(copy.toAxis(), (base::Vec3{1, 0, 0}));
+    EXPECT_EQ(copy.fromAxis(), (base::Vec3{0, 0, 1}));
+    EXPECT_DOUBLE_EQ(copy.toMachine().cDeg, 90);
+    EXPECT_EQ(m.toAxis(), (base::Vec3{0, 1, 0}));
+    EXPECT_EQ(m.toMachine().known, 0);
+    sim::Move moved = std::move(m);
+    EXPECT_EQ(moved.toAxis(), (base::Vec3{0, 1, 0}));
 }

@@ -76,7 +76,7 @@ TEST(SimTriDexel, CutsAnUndercutAZMapCannot)
     HeightField field(b, 0.2);
     const ToolShape tool(makeTool("flat", 6, 0, 30, 40));
     Move bore = makeMove({45, 20.1, 5.1}, {20, 20.1, 5.1});
-    bore.fromAxis = bore.toAxis = {1, 0, 0};
+    bore.setAxis({1, 0, 0});
     const double removed = dexels.cut(bore, 0, tool).removedMm3;
     EXPECT_NEAR(removed, kPi * 9 * 20, 0.02 * kPi * 9 * 20);
     const auto& spans = dexels.spans(2, 150, 100);  // x = 30.1, y = 20.1
@@ -255,7 +255,7 @@ TEST(SimTriDexel, FactoryPicksTheRepresentation)
     MoveList list;
     list.moves.push_back(makeMove({0, 0, 0}, {1, 0, 0}));
     EXPECT_FALSE(anyToolTilts(list));
-    list.moves.back().toAxis = Vec3{1, 0, 1}.normalized();
+    list.moves.back().setToAxis(Vec3{1, 0, 1}.normalized());
     EXPECT_TRUE(anyToolTilts(list));
 }
 
@@ -280,7 +280,7 @@ TEST(SimTriDexel, AToolOnATiltedFloorIsNoGouge)
         stock.setDesign(design, 0.02 + 0.05);
         const Vec3 onFloor{2 * c, 3, -2 * s};  // a point of the tilted floor off its centre
         Move plunge = makeMove(onFloor + normal * 8, onFloor + normal * -deeper);
-        plunge.fromAxis = plunge.toAxis = normal;
+        plunge.setAxis(normal);
         const CutResult cut = stock.cut(plunge, 0, drill);
         EXPECT_GT(cut.removedMm3, 0);
         if (deeper == 0)
@@ -299,10 +299,10 @@ TEST(SimTriDexel, RetractingAlongItsOwnCutRemovesNothing)
     const Vec3 axis{-s, 0, c}, bottom{27, 25, 20};
     const ToolShape drill(makeTool("flat", 6));
     Move plunge = makeMove(bottom + axis * 12, bottom);
-    plunge.fromAxis = plunge.toAxis = axis;
+    plunge.setAxis(axis);
     EXPECT_GT(stock.cut(plunge, 0, drill).removedMm3, 50);
     Move retract = makeMove(bottom, bottom + axis * 12, MoveKind::Rapid);
-    retract.fromAxis = retract.toAxis = axis;
+    retract.setAxis(axis);
     EXPECT_EQ(stock.cut(retract, 1, drill).removedMm3, 0);
 }
 
@@ -375,7 +375,7 @@ TEST(SimTriDexel, AToolThatFitsATiltedHoleIsNoGouge)
         std::unique_ptr<TriDexel> stock = TriDexel::fromMesh(tiltedBlockWithHole(1e-3), 0.1);
         stock->setDesign(design, 0.02 + 0.05);
         Move plunge = makeMove(floorCentre + axis * 12, floorCentre - axis * deeper);
-        plunge.fromAxis = plunge.toAxis = axis;
+        plunge.setAxis(axis);
         const CutResult cut = stock->cut(plunge, 7, drill);
         EXPECT_GT(cut.removedMm3, 200);
         const Deviation deviation = stock->compare();
@@ -397,15 +397,15 @@ namespace {
 // poses that close stand for the tool's continuous sweep.
 std::vector<Move> finePieces(const Move& move, double cell, double flute)
 {
-    const double turn = move.fromAxis.angleTo(move.toAxis) * flute;
+    const double turn = move.fromAxis().angleTo(move.toAxis()) * flute;
     const int n = std::max(1, int(std::ceil(std::max(move.lengthMm(), turn) / (cell / 4))));
     std::vector<Move> pieces;
     for (int k = 0; k < n; ++k) {
         Move piece = move;
         piece.from = move.from + (move.to - move.from) * (double(k) / n);
         piece.to = move.from + (move.to - move.from) * (double(k + 1) / n);
-        piece.fromAxis = move.axisAt(double(k) / n);
-        piece.toAxis = move.axisAt(double(k + 1) / n);
+        piece.setFromAxis(move.axisAt(double(k) / n));
+        piece.setToAxis(move.axisAt(double(k + 1) / n));
         pieces.push_back(piece);
     }
     return pieces;
@@ -460,12 +460,12 @@ TEST(SimTriDexel, ALongMoveRemovesItsSweepToATwentiethOfACell)
         makeMove({4, 25, 10}, {36, 25, 4}),   // deeper than the flute: its top rim cuts too
     };
     Move swarf = makeMove({8, 12, 15}, {32, 18, 14});  // the axis turns 40 degrees on the way
-    swarf.fromAxis = {-s, 0, c};
-    swarf.toAxis = Vec3{s * 0.5, -s * 0.8, c}.normalized();
+    swarf.setFromAxis({-s, 0, c});
+    swarf.setToAxis(Vec3{s * 0.5, -s * 0.8, c}.normalized());
     swarf.fiveAxis = true;
     moves.push_back(swarf);
-    Move plunge = makeMove(Vec3{20, 15, 6} + swarf.fromAxis * 20, {20, 15, 6});  // along its tilted axis
-    plunge.fromAxis = plunge.toAxis = swarf.fromAxis;
+    Move plunge = makeMove(Vec3{20, 15, 6} + swarf.fromAxis() * 20, {20, 15, 6});  // along its tilted axis
+    plunge.setAxis(swarf.fromAxis());
     moves.push_back(plunge);
     for (std::size_t t = 0; t < cutters.size(); ++t)
         for (std::size_t m = 0; m < moves.size(); ++m) {
@@ -478,7 +478,7 @@ TEST(SimTriDexel, ALongMoveRemovesItsSweepToATwentiethOfACell)
             const double lowestTip = std::min(moves[m].from.z, moves[m].to.z);
             if (k.kind == "flat" || lowestTip + flute - k.diameter / 2 < 20) {
                 const Vec3 d = moves[m].to - moves[m].from;
-                for (const Vec3& axis : {moves[m].fromAxis, moves[m].axisAt(0.5), moves[m].toAxis}) {
+                for (const Vec3& axis : {moves[m].fromAxis(), moves[m].axisAt(0.5), moves[m].toAxis()}) {
                     const double sinA = std::abs(d.dot(axis)) / d.length();
                     e = std::max(e, cell / 2 * sinA * std::sqrt(1 - sinA * sinA));
                 }
@@ -489,8 +489,8 @@ TEST(SimTriDexel, ALongMoveRemovesItsSweepToATwentiethOfACell)
             const double rise = k.pointAngle > 0 ? e / std::sin(k.pointAngle / 2 * kPi / 180) : e;
             const ToolShape shrunk(toolOf(k, e, rise));
             for (Move piece : finePieces(moves[m], cell, flute)) {
-                piece.from = piece.from + piece.fromAxis * rise;
-                piece.to = piece.to + piece.toAxis * rise;
+                piece.from = piece.from + piece.fromAxis() * rise;
+                piece.to = piece.to + piece.toAxis() * rise;
                 deep.cut(piece, 0, shrunk);
             }
             ASSERT_GT(40 * 30 * 20 - deep.volumeMm3(), 50) << "tool " << t << " move " << m;

@@ -9,6 +9,7 @@
 #include "kinematics/KinematicChain.h"
 #include "toolpath/ClRecords.h"
 
+#include <cmath>
 #include <cstdint>
 #include <map>
 #include <memory>
@@ -111,12 +112,12 @@ struct Move {
     const toolpath::RotaryAxes& toMachine() const { return m_turn.get().toMachine; }
     void setFromAxis(const Vec3& axis)
     {
-        if (ToolTurn* t = m_turn.edit(axis == kVertical))
+        if (ToolTurn* t = m_turn.edit(isVertical(axis)))
             t->fromAxis = axis;
     }
     void setToAxis(const Vec3& axis)
     {
-        if (ToolTurn* t = m_turn.edit(axis == kVertical))
+        if (ToolTurn* t = m_turn.edit(isVertical(axis)))
             t->toAxis = axis;
     }
     void setAxis(const Vec3& axis) { setFromAxis(axis), setToAxis(axis); }  // both ends
@@ -148,10 +149,12 @@ struct Move {
     Vec3 pointAt(double u) const;
 
 private:
-    static constexpr Vec3 kVertical{0, 0, 1};
+    // The defaults bit for bit (a -0 is kept: an angle worked out from it may differ).
+    static bool zero(double v) { return v == 0 && !std::signbit(v); }
+    static bool isVertical(const Vec3& a) { return zero(a.x) && zero(a.y) && a.z == 1; }
     static bool isNone(const toolpath::RotaryAxes& r)
     {
-        return r.known == 0 && r.aDeg == 0 && r.bDeg == 0 && r.cDeg == 0;
+        return r.known == 0 && zero(r.aDeg) && zero(r.bDeg) && zero(r.cDeg);
     }
     ToolTurnBox m_turn;
 };

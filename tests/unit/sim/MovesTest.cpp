@@ -426,3 +426,16 @@ TEST(SimMoves, TheToolsTurnIsKeptApartAndCopiedWithItsMove)
     sim::Move moved = std::move(m);
     EXPECT_EQ(moved.toAxis(), (base::Vec3{0, 1, 0}));
 }
+
+TEST(SimMoves, ATurnKeepsItsAxisBitForBit)
+{
+    // Only the defaults themselves leave the turn out: an axis with a negative zero (an angle
+    // worked out from it may land on the other side of ±180°) is kept as given.
+    sim::Move m;
+    m.setToAxis({-0.0, 0, 1});
+    EXPECT_TRUE(std::signbit(m.toAxis().x));
+    toolpath::RotaryAxes c;
+    c.cDeg = -0.0;
+    m.setFromMachine(c);
+    EXPECT_TRUE(std::signbit(m.fromMachine().cDeg));
+}

@@ -1,7 +1,8 @@
 // Memory about to be written whole, faulted in with one system call instead of one fault per
-// 4 KiB page (Linux's MADV_POPULATE_WRITE). The simulator's motion plan and height field are
-// megabytes that are written at once; their page faults were a tenth of a 20,000-block
-// simulation's time. Only for memory that will all be used: it is made resident at once.
+// 4 KiB page (Linux's MADV_POPULATE_WRITE). The simulator's moves, motion plan and height field
+// are megabytes written at once: faulted in so (and the moves' reservation made exact), the
+// 20,000-block benchmark simulation went from 0.101 to 0.087 s. Only for memory that will all be
+// used: it is made resident at once.
 //
 // Why not 2 MiB pages (MADV_HUGEPAGE): on the benchmark VM, whose free memory is handed back to
 // the host (page reporting), a command run after a few seconds' pause paid for each large page

@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <future>
+#include <system_error>
 
 namespace camwb::sim {
 
@@ -112,9 +113,15 @@ SimulationResult simulate(const toolpath::Toolpath& program, const SimulationSet
     // Nothing below changes the moves; the plan is joined before they are returned (and, should the
     // cut throw, by the future's destructor).
     std::future<MotionPlan> planned;
-    if (setup.planOn)
-        planned = std::async(std::launch::async,
-                             [&moves = result.moves, machine = setup.planOn] { return planMotion(moves, *machine); });
+    if (setup.planOn) {
+        try {
+            planned = std::async(std::launch::async, [&moves = result.moves, machine = setup.planOn] {
+                return planMotion(moves, *machine);
+            });
+        } catch (const std::system_error&) {
+            // no thread to be had: planned after the cut instead
+        }
+    }
     Stock* stock = setup.stock;
     if (!stock && setup.stockSpec) {
         base::Result<std::unique_ptr<Stock>> made = makeStock(*setup.stockSpec, result.tilts);
@@ -157,6 +164,8 @@ SimulationResult simulate(const toolpath::Toolpath& program, const SimulationSet
     }
     if (planned.valid())
         result.plan = planned.get();
+    else if (setup.planOn)
+        result.plan = planMotion(result.moves, *setup.planOn);
     return result;
 }
 

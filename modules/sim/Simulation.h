@@ -48,7 +48,8 @@ struct SimulationSetup {
     std::function<void(double fraction)> progress;  // 0..1, from the cutting loop
     // Also plan the motion on this machine (planMotion), on a second thread while the stock is
     // cut: the plan needs only the moves, so a caller that wants both waits for the longer of the
-    // two, not their sum. nullptr: no plan.
+    // two, not their sum. `cancel` does not stop the plan: simulate() returns when it is done.
+    // nullptr: no plan.
     const kinematics::Machine* planOn = nullptr;
 };
 

@@ -42,6 +42,19 @@ struct Mapping {
     void* data;
 };
 
+// The kernel knows MADV_POPULATE_WRITE (Linux 5.14): asked directly, not through prefault(), so
+// that a prefault() that fails for a reason of its own fails the tests instead of skipping them.
+bool kernelPopulates()
+{
+#ifdef MADV_POPULATE_WRITE
+    const auto page = static_cast<std::size_t>(::sysconf(_SC_PAGESIZE));
+    Mapping m(page);
+    return m.data != MAP_FAILED && ::madvise(m.data, page, MADV_POPULATE_WRITE) == 0;
+#else
+    return false;
+#endif
+}
+
 }  // namespace
 
 TEST(Prefault, MakesTheRangeResident)
@@ -52,8 +65,9 @@ TEST(Prefault, MakesTheRangeResident)
     ASSERT_EQ(residentPages(m.data, m.bytes), 0u);  // untouched
     // Pages 10 to 19, from the middle of page 10 to the middle of page 19: whole pages taken.
     auto* bytes = static_cast<unsigned char*>(m.data);
-    if (!prefault(bytes + 10 * page + page / 2, 9 * page))
+    if (!kernelPopulates())
         GTEST_SKIP() << "this kernel cannot populate memory ahead (MADV_POPULATE_WRITE, Linux 5.14)";
+    ASSERT_TRUE(prefault(bytes + 10 * page + page / 2, 9 * page));
     EXPECT_EQ(residentPages(m.data, m.bytes), 10u);
     EXPECT_EQ(residentPages(bytes + 10 * page, 10 * page), 10u);
     bytes[15 * page] = 7;  // and writable, with its contents zero
@@ -66,8 +80,9 @@ TEST(Prefault, AVectorsFirstElements)
     std::vector<double> v;
     v.reserve(100000);
     EXPECT_FALSE(prefault(v, 100001));  // more than it holds: refused, nothing touched
-    if (!prefault(v, 100000))
+    if (!kernelPopulates())
         GTEST_SKIP() << "this kernel cannot populate memory ahead (MADV_POPULATE_WRITE, Linux 5.14)";
+    ASSERT_TRUE(prefault(v, 100000));
     v.assign(100000, 2.5);
     EXPECT_EQ(v[99999], 2.5);
 }

@@ -13,11 +13,14 @@ packages=(
   libocct-data-exchange-dev libocct-ocaf-dev
   libeigen3-dev libvtk9-dev libqscintilla2-qt6-dev libpolyclipping-dev libminizip-dev nlohmann-json3-dev
   libgtest-dev libgmock-dev libbenchmark-dev clang-14 libclang-rt-14-dev
-  xvfb xauth libgl1-mesa-dri libglx-mesa0 fonts-dejavu-core poppler-utils
+  xvfb xauth libgl1-mesa-dri libglx-mesa0 fonts-dejavu-core poppler-utils locales
 )
 if [[ "${1:-}" == "--external" ]]; then
   packages+=(freecad linuxcnc-uspace libcgal-dev)
 fi
+
+sudo=""
+if [[ $(id -u) -ne 0 ]]; then sudo="sudo"; fi
 
 missing=()
 for p in "${packages[@]}"; do
@@ -27,12 +30,16 @@ done
 
 if ((${#missing[@]} == 0)); then
   echo "install-deps: all ${#packages[@]} packages present"
-  exit 0
+else
+  echo "install-deps: installing ${#missing[@]} missing packages: ${missing[*]}"
+  export DEBIAN_FRONTEND=noninteractive
+  $sudo apt-get update -q
+  $sudo apt-get install -y -q --no-install-recommends "${missing[@]}"
 fi
 
-echo "install-deps: installing ${#missing[@]} missing packages: ${missing[*]}"
-sudo=""
-if [[ $(id -u) -ne 0 ]]; then sudo="sudo"; fi
-export DEBIAN_FRONTEND=noninteractive
-$sudo apt-get update -q
-$sudo apt-get install -y -q --no-install-recommends "${missing[@]}"
+# A locale that writes 1.5 as "1,5": the tests check that numbers in NC, files and messages do not
+# follow it (Qt sets the C library's locale from the user's environment).
+if ! locale -a | grep -qi '^de_DE\.utf-\?8$'; then
+  echo "install-deps: generating the de_DE.UTF-8 locale for the decimal-comma tests"
+  $sudo localedef -i de_DE -c -f UTF-8 de_DE.UTF-8
+fi

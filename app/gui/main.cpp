@@ -26,6 +26,7 @@
 #include <QTimer>
 #include <QTranslator>
 
+#include <clocale>
 #include <cstdio>
 #include <cstring>
 #include <memory>
@@ -104,6 +105,11 @@ int main(int argc, char** argv)
         return printHelpOrVersion(argc, argv);
     camwb::gui::View3D::setDefaultSurfaceFormat();  // before QApplication: VTK needs a core profile
     QApplication app(argc, argv);
+    // Qt has set the C library's locale from the environment; under de_DE printf writes 1.5 as
+    // "1,5" and strtod stops at the point. Our kernels format and read numbers without the locale,
+    // but OCCT, VTK and QScintilla run in this process too: their numbers stay as written. Qt's own
+    // texts follow QLocale, not this.
+    std::setlocale(LC_NUMERIC, "C");
     CommandLine commandLine;
     commandLine.process(app);
     const QCommandLineParser& parser = commandLine.parser;

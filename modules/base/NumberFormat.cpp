@@ -159,6 +159,14 @@ std::string formatFixed(double value, int decimals)
     return std::string(buffer, fixedTo(value, decimals, buffer));
 }
 
+std::string formatGeneral(double value, int significant)
+{
+    char buffer[64];
+    const auto [end, ec] = std::to_chars(buffer, buffer + sizeof buffer, value, std::chars_format::general,
+                                         std::clamp(significant, 1, 17));
+    return ec == std::errc() ? std::string(buffer, end) : std::string("nan");
+}
+
 std::size_t NumberFormat::formatTo(double value, char* out) const
 {
     if (!trimTrailingZeros && leadingZero && !forceSign)  // plain fixed decimals: nothing to adjust

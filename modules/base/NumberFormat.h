@@ -30,4 +30,9 @@ struct NumberFormat {
 // 3.3333 * 60 = 199.998 -> "200" at 0 decimals. Independent of the C locale.
 std::string formatFixed(double value, int decimals);
 
+// At most `significant` significant digits, fixed or with an exponent, whichever is shorter, and
+// without trailing zeros, as printf's "%g" writes them ("1e+300", "0.0001", "1.5"): for a message
+// about a value of any size. Independent of the C locale; "inf", "-inf" and "nan" where not finite.
+std::string formatGeneral(double value, int significant);
+
 }  // namespace camwb::base

@@ -3,6 +3,7 @@
 // RE corner radius, SIG point angle), "post-process" (number) and "start-values"."presets": the
 // cutting data per material (v_c, f_z, n, v_f, v_f_plunge, v_f_ramp), which we keep.
 #include "base/JsonRead.h"
+#include "base/NumberFormat.h"
 #include "document/detail/FusionTools.h"
 
 #include <filesystem>
@@ -127,7 +128,7 @@ ops::ToolController readFusionTool(const json& t, int index, const Units& u, con
             tc.tool.number = integer(*post, "number", where + ".post-process");
     tc.tool.name = optionalMember(t, "description", where) ? text(t, "description", where) : std::string();
     if (tc.tool.name.empty())
-        tc.tool.name = text(t, "type", where) + " D" + std::to_string(tc.tool.diameterMm);
+        tc.tool.name = text(t, "type", where) + " D" + base::formatGeneral(tc.tool.diameterMm, 6);
     if (const json* holder = optionalMember(t, "holder", where))
         if (holder->is_object() && holder->contains("description") && (*holder)["description"].is_string())
             tc.tool.holder = (*holder)["description"].get<std::string>();

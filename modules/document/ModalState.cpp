@@ -1,5 +1,6 @@
 #include "document/ModalState.h"
 
+#include "base/NumberFormat.h"
 #include "toolpath/CycleExpansion.h"
 #include "toolpath/KnownPosition.h"
 #include "toolpath/RecordNames.h"
@@ -148,10 +149,7 @@ std::string describeRecord(const toolpath::Record& record)
             [](const toolpath::Coolant&) -> std::string { return "coolant"; },
             [](const toolpath::FeedModeChange&) -> std::string { return "feed mode"; },
             [](const toolpath::WorkOffset&) -> std::string { return "work offset"; },
-            [&](const toolpath::Dwell& w) -> std::string {
-                std::snprintf(buffer, sizeof buffer, "dwell %.3g s", w.seconds);
-                return buffer;
-            },
+            [](const toolpath::Dwell& w) -> std::string { return "dwell " + base::formatGeneral(w.seconds, 3) + " s"; },
             [](const toolpath::CutterComp&) -> std::string { return "compensation"; },
             [](const toolpath::Comment&) -> std::string { return "comment"; },
             [](const toolpath::ProgramStop& p) -> std::string { return p.optional ? "optional stop" : "program stop"; },
@@ -178,9 +176,8 @@ std::string planeOfNormal(const base::Vec3& normal)
         if (std::abs(std::abs(n.x) - 1.0) < 1e-9)
             return "G19 (YZ)";
     }
-    char buffer[96];
-    std::snprintf(buffer, sizeof buffer, "normal (%.3f, %.3f, %.3f)", normal.x, normal.y, normal.z);
-    return buffer;
+    return "normal (" + base::formatFixed(normal.x, 3) + ", " + base::formatFixed(normal.y, 3) + ", " +
+           base::formatFixed(normal.z, 3) + ")";
 }
 
 ModalStateTable::ModalStateTable(const toolpath::Toolpath& program, std::size_t stride) :

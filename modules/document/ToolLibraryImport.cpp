@@ -5,8 +5,9 @@
 #include "document/detail/FusionTools.h"
 #include "document/detail/ZipJson.h"
 
+#include <algorithm>
+#include <charconv>
 #include <cmath>
-#include <cstdlib>
 #include <filesystem>
 #include <utility>
 
@@ -27,9 +28,14 @@ double quantity(const json& value, const std::string& where, bool angle)
     if (!value.is_string())
         throw JsonFieldError{where + ": expected a quantity such as \"6.00 mm\""};
     const std::string text = value.get<std::string>();
-    char* end = nullptr;
-    const double number = std::strtod(text.c_str(), &end);
-    if (end == text.c_str() || !std::isfinite(number))  // strtod also reads "inf" and "nan"
+    // from_chars, not strtod: the point is a point whatever the C locale (the GUI's follows the
+    // user's, where strtod reads "6.35 mm" as 6 and ".35 mm").
+    const char* begin = text.data() + std::min(text.find_first_not_of(' '), text.size());
+    if (*begin == '+')
+        ++begin;
+    double number = 0;
+    const auto [end, ec] = std::from_chars(begin, text.data() + text.size(), number);
+    if (ec != std::errc() || !std::isfinite(number))  // from_chars also reads "inf" and "nan"
         throw JsonFieldError{where + ": expected a quantity such as \"6.00 mm\", got \"" + text + "\""};
     std::string unit(end);
     unit.erase(0, unit.find_first_not_of(' '));

@@ -3,6 +3,7 @@
 // linearised where the post cannot write them; cycles the post does not write are expanded into
 // moves; five-axis moves are refused by three-axis posts; cutter compensation must change on a
 // straight move and works in XY.
+#include "base/NumberFormat.h"
 #include "kinematics/PoseSolver.h"
 #include "post/detail/FiveAxisWriter.h"
 #include "post/detail/ScriptRun.h"
@@ -90,9 +91,9 @@ public:
             return;
         }
         if (m_caps.maxAxes < 5) {
-            m_run.fail("five-axis move (tool axis " + std::to_string(r.axis.x) + ", " + std::to_string(r.axis.y) +
-                       ", " + std::to_string(r.axis.z) + ") but post " + m_run.m_postId + " drives " +
-                       std::to_string(m_caps.maxAxes) + " axes");
+            m_run.fail("five-axis move (tool axis " + base::formatFixed(r.axis.x, 6) + ", " +
+                       base::formatFixed(r.axis.y, 6) + ", " + base::formatFixed(r.axis.z, 6) + ") but post " +
+                       m_run.m_postId + " drives " + std::to_string(m_caps.maxAxes) + " axes");
             return;
         }
         if (!m_run.has(Handler::Linear5D)) {

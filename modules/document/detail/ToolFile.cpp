@@ -1,6 +1,7 @@
 #include "document/detail/ToolFile.h"
 
 #include "base/JsonRead.h"
+#include "base/NumberFormat.h"
 
 namespace camwb::document::detail {
 
@@ -14,7 +15,7 @@ double positiveOrZero(const json& object, const char* key, const std::string& wh
 {
     const double value = number(object, key, where);
     if (value < 0)
-        throw JsonFieldError{where + "." + key + ": must not be negative, got " + std::to_string(value)};
+        throw JsonFieldError{where + "." + key + ": must not be negative, got " + base::formatGeneral(value, 6)};
     return value;
 }
 

@@ -1,8 +1,9 @@
 #include "gui/shell/NewOperation.h"
 
+#include "base/NumberFormat.h"
+
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <string>
 
 namespace camwb::gui {
@@ -14,12 +15,8 @@ using document::OperationKind;
 constexpr double kLevelEpsMm = 1e-6;
 constexpr double kSameDiameterMm = 0.1;
 
-std::string formatMm(double value, const char* format = "%g")
-{
-    char text[32];
-    std::snprintf(text, sizeof text, format, value);
-    return text;
-}
+// A diameter in a name or message ("D6.35"), the same in every locale: names are saved in the job.
+std::string formatMm(double value) { return base::formatGeneral(value, 6); }
 
 bool isUpFacing(const occ::FaceInfo& face) { return face.planar && face.normal.z > 1.0 - 1e-9; }
 bool isDrill(const ops::ToolController& tc) { return tc.tool.kind == "drill"; }

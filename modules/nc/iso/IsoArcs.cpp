@@ -4,6 +4,7 @@
 // normal to the plane, as LinuxCNC draws it.
 #include "nc/iso/IsoMachine.h"
 
+#include "base/NumberFormat.h"
 #include "nc/detail/PlaneAxes.h"
 
 #include <cmath>
@@ -36,12 +37,7 @@ PlaneAxes axesOf(int plane)
     }
 }
 
-std::string mm(double v)
-{
-    char buffer[32];
-    std::snprintf(buffer, sizeof buffer, "%.4f", v);
-    return buffer;
-}
+std::string mm(double v) { return base::formatFixed(v, 4); }
 
 }  // namespace
 

@@ -4,6 +4,7 @@
 // a helix. Start and end radii that differ by more than the tolerance are an error.
 #include "nc/sinumerik/Machine.h"
 
+#include "base/NumberFormat.h"
 #include "nc/detail/PlaneAxes.h"
 
 #include <cmath>
@@ -19,12 +20,7 @@ using detail::PlaneAxes;
 using detail::planeAxes;
 using detail::setComponent;
 
-std::string mm(double v)
-{
-    char buffer[32];
-    std::snprintf(buffer, sizeof buffer, "%.4f", v);
-    return buffer;
-}
+std::string mm(double v) { return base::formatFixed(v, 4); }
 
 }  // namespace
 

@@ -5,8 +5,9 @@
 // of the ISO interpreter's (IsoMachine.h), which follows LinuxCNC's order of execution.
 #include "nc/sinumerik/Machine.h"
 
+#include "base/NumberFormat.h"
+
 #include <cmath>
-#include <cstdio>
 
 namespace camwb::nc::sinumerik {
 
@@ -40,9 +41,7 @@ bool Machine::checkRange(const Program& p, Pos pos, double value)
 {
     if (std::isfinite(value) && std::abs(value) <= kMaxValue)
         return true;
-    char text[32];
-    std::snprintf(text, sizeof text, "%.6g", value);
-    error(p, pos, std::string("value ") + text + " outside the control's range (+-99999.999)");
+    error(p, pos, "value " + base::formatGeneral(value, 10) + " outside the control's range (+-99999.999)");
     return false;
 }
 

@@ -2,11 +2,14 @@
 #include "base/NumberFormat.h"
 #include "base/Result.h"
 
+#include "../../support/DecimalCommaLocale.h"
+
 #include <gtest/gtest.h>
 
 #include <charconv>
 #include <cmath>
 #include <cstdint>
+#include <cstdio>
 #include <filesystem>
 
 #include <unistd.h>
@@ -67,6 +70,37 @@ TEST(NumberFormat, FastPathWritesWhatToCharsWrites)
     EXPECT_EQ(formatFixed(-0.0004, 3), "0.000");
     EXPECT_EQ(formatFixed(0, 0), "0");
     EXPECT_EQ(formatFixed(-7, 0), "-7");
+}
+
+TEST(NumberFormat, GeneralWritesWhatPrintfWritesInTheCLocale)
+{
+    // printf's "%g" is the reference for the text (in the "C" locale the tests run in).
+    for (double value : {0.0, 1.5, -2.25, 0.0001, 0.00001234, 123456.0, 1234567.0, 1e300, -1e-300, 99999.9991,
+                         1.0 / 3.0, 6.35, 0.3125 * 25.4})
+        for (int significant : {1, 3, 6}) {
+            char expected[64];
+            std::snprintf(expected, sizeof expected, "%.*g", significant, value);
+            EXPECT_EQ(formatGeneral(value, significant), expected) << value << " to " << significant;
+        }
+    EXPECT_EQ(formatGeneral(HUGE_VAL, 6), "inf");
+    EXPECT_EQ(formatGeneral(-HUGE_VAL, 6), "-inf");
+    EXPECT_EQ(formatGeneral(std::nan(""), 6), "nan");
+}
+
+TEST(NumberFormat, TheDecimalPointStaysAPointInADecimalCommaLocale)
+{
+    camwb::test::DecimalCommaLocale comma;
+    if (!comma.active())
+        GTEST_SKIP() << comma.missing();
+    char printed[16];
+    std::snprintf(printed, sizeof printed, "%.1f", 1.5);
+    ASSERT_STREQ(printed, "1,5") << "the C library follows " << comma.name();
+    EXPECT_EQ(formatFixed(1.5, 3), "1.500");
+    EXPECT_EQ(formatFixed(1e15 + 0.5, 1), "1000000000000000.5");  // the slow path too
+    EXPECT_EQ(formatGeneral(1.5, 6), "1.5");
+    EXPECT_EQ(formatGeneral(1.5e-7, 6), "1.5e-07");
+    EXPECT_EQ((NumberFormat{3, true, false, true}.format(-0.25)), "-0.25");
+    EXPECT_DOUBLE_EQ((NumberFormat{3, false, false, false, true, 10.0}.roundedValue(1e300)), 1e300);
 }
 
 TEST(NumberFormat, NegativeZeroIsNeverWritten)

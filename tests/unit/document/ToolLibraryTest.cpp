@@ -172,7 +172,7 @@ TEST(ToolLibraryImport, FreeCadErrorsNameTheBitFileAndField)
     EXPECT_NE(bad.error().message.find("bad_diameter.fctb"), std::string::npos) << bad.error().message;
     EXPECT_NE(bad.error().message.find("Diameter"), std::string::npos) << bad.error().message;
 
-    // strtod reads "inf" and "nan" as numbers: a length of "inf mm" is no quantity either.
+    // from_chars reads "inf" and "nan" as numbers: a length of "inf mm" is no quantity either.
     const fs::path dir = fs::temp_directory_path() / "camwb_tool_import_inf";
     fs::create_directories(dir / "Bit");
     fs::create_directories(dir / "Library");

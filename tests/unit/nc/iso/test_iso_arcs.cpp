@@ -2,6 +2,8 @@
 // full circles, inch arcs, and the radius checks.
 #include "IsoTestSupport.h"
 
+#include "../../../support/DecimalCommaLocale.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -97,6 +99,18 @@ TEST(IsoArcs, RadiusMismatchIsAnErrorAtTheCentreWord)
     EXPECT_EQ(r.diagnostics(), "2:13: error: G2 radius differs at start (10.0000) and end (10.1000) by more than "
                                "0.0100 mm\n");
     EXPECT_EQ(r.all<Arc>().size(), 2u);  // traced as written, so the plot shows where it goes wrong
+}
+
+TEST(IsoArcs, MessagesKeepTheDecimalPointInADecimalCommaLocale)
+{
+    // The GUI runs in the user's locale (Qt sets it); a message must read the same there.
+    const std::string program = "G0 X10\nG2 X0 Y10.1 I-10 J0 F100\nG2 X10 Y0 R4\nM2\n";
+    const std::string inC = run(program).diagnostics();
+    EXPECT_NE(inC.find("(10.1000) by more than 0.0100 mm"), std::string::npos) << inC;
+    camwb::test::DecimalCommaLocale comma;
+    if (!comma.active())
+        GTEST_SKIP() << comma.missing();
+    EXPECT_EQ(run(program).diagnostics(), inC) << comma.name();
 }
 
 TEST(IsoArcs, ToleranceFromTheOptions)

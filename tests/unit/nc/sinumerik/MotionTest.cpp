@@ -3,6 +3,8 @@
 #include "TestSupport.h"
 #include "nc/ToolTable.h"
 
+#include "../../../support/DecimalCommaLocale.h"
+
 #include <cmath>
 
 namespace camwb::nc::sinumerik::test {
@@ -93,6 +95,21 @@ TEST(SinumerikMotion, RadiusMismatchIsAnError)
     EXPECT_NE(r.find("CR=2.0000 is smaller than half the distance"), nullptr);
     EXPECT_EQ(r.all<toolpath::Arc>().size(), 1u);  // within 0.01: traced
     EXPECT_EQ(r.errors(), 2);
+}
+
+TEST(SinumerikMotion, MessagesKeepTheDecimalPointInADecimalCommaLocale)
+{
+    // The GUI runs in the user's locale (Qt sets it); a message must read the same there.
+    InterpretOptions options = fromOrigin();
+    options.arcRadiusToleranceMm = 0.01;
+    const std::string program = "G0 X10 Y0\nG1 F100\nG3 X0 Y10.02 I-10 J0\nG2 X0 Y0 CR=2\nG0 X=99999.9991\n";
+    const std::string inC = run(program, {}, options).diagnostics();
+    EXPECT_NE(inC.find("10.0200 mm"), std::string::npos) << inC;
+    EXPECT_NE(inC.find("value 99999.9991 outside"), std::string::npos) << inC;
+    camwb::test::DecimalCommaLocale comma;
+    if (!comma.active())
+        GTEST_SKIP() << comma.missing();
+    EXPECT_EQ(run(program, {}, options).diagnostics(), inC) << comma.name();
 }
 
 TEST(SinumerikMotion, InchUnitsScaleToMm)

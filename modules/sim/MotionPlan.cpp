@@ -255,7 +255,16 @@ MotionPlan planMotion(const MoveList& list, const kinematics::Machine& machine, 
     MoveGeometry previous;
     bool previousFlows = false;  // the previous move ends in motion another can continue
     double rpm = 0;
+    // Asked every few thousand moves (a load is cheap, but not beside a move's few dozen
+    // nanoseconds); the passes below are quicker than this one and asked once each.
+    constexpr std::size_t kCancelStride = 4096;
+    auto cancelled = [&] {
+        plan.cancelled = options.cancel && options.cancel->load(std::memory_order_relaxed);
+        return plan.cancelled;
+    };
     for (std::size_t i = 0; i < n; ++i) {
+        if (i % kCancelStride == 0 && cancelled())
+            return plan;
         const Move& move = list.moves[i];
         PlannedMove& p = plan.moves[i];
         p.pauseSeconds = move.kind == MoveKind::Dwell        ? move.seconds
@@ -283,6 +292,8 @@ MotionPlan planMotion(const MoveList& list, const kinematics::Machine& machine, 
     // Backward: every move can brake to the junction after it. Forward: no move is entered faster
     // than the one before could accelerate to. A fixed-time move runs at one speed, so it passes
     // its junctions on unchanged (both already at most its speed).
+    if (cancelled())
+        return plan;
     for (std::size_t i = n; i-- > 0;) {
         const PlannedMove& p = plan.moves[i];
         if (!p.fixedTime)
@@ -293,6 +304,8 @@ MotionPlan planMotion(const MoveList& list, const kinematics::Machine& machine, 
         if (!p.fixedTime)
             junction[i + 1] = reachCapped(junction[i + 1], junction[i], p.acceleration, p.length);
     }
+    if (cancelled())
+        return plan;
     double t = 0;
     for (std::size_t i = 0; i < n; ++i) {
         PlannedMove& p = plan.moves[i];

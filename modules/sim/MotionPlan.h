@@ -9,6 +9,7 @@
 #include "sim/Moves.h"
 #include "toolpath/ProgramStats.h"
 
+#include <atomic>
 #include <map>
 #include <vector>
 
@@ -19,6 +20,9 @@ struct PlanOptions {
     // control's interpolation cycle): a 90° corner is passed at a_axis·t per axis, a straight
     // continuation at full speed. Controls that blend corners within a tolerance are faster.
     double cornerStepSeconds = 0.003;
+    // Once set, planMotion stops within a few thousand moves and returns a plan that says it was
+    // cancelled (its times are not the program's). nullptr: the plan runs to the end.
+    const std::atomic<bool>* cancel = nullptr;
 };
 
 // One move in time. It starts at `start`, stands for `pauseSeconds` (dwell, tool change, a
@@ -52,6 +56,7 @@ struct MotionPlan {
     // Moves a speed limit of 0 stopped (a feed move at feed 0): they take no time, as the simple
     // estimate counts them (toolpath::ProgramStats::movesWithoutFeed).
     std::size_t movesWithoutSpeed = 0;
+    bool cancelled = false;  // PlanOptions::cancel stopped it: incomplete, not to be shown
 };
 
 MotionPlan planMotion(const MoveList& moves, const kinematics::Machine& machine, const PlanOptions& options = {});

@@ -113,10 +113,12 @@ SimulationResult simulate(const toolpath::Toolpath& program, const SimulationSet
     // Nothing below changes the moves; the plan is joined before they are returned (and, should the
     // cut throw, by the future's destructor).
     std::future<MotionPlan> planned;
+    PlanOptions planOptions;
+    planOptions.cancel = setup.cancel;
     if (setup.planOn) {
         try {
-            planned = std::async(std::launch::async, [&moves = result.moves, machine = setup.planOn] {
-                return planMotion(moves, *machine);
+            planned = std::async(std::launch::async, [&moves = result.moves, machine = setup.planOn, planOptions] {
+                return planMotion(moves, *machine, planOptions);
             });
         } catch (const std::system_error&) {
             // no thread to be had: planned after the cut instead
@@ -164,8 +166,12 @@ SimulationResult simulate(const toolpath::Toolpath& program, const SimulationSet
     }
     if (planned.valid())
         result.plan = planned.get();
-    else if (setup.planOn)
-        result.plan = planMotion(result.moves, *setup.planOn);
+    else if (setup.planOn && !result.cancelled)
+        result.plan = planMotion(result.moves, *setup.planOn, planOptions);
+    if (result.plan && result.plan->cancelled) {  // half a plan is no plan
+        result.plan.reset();
+        result.cancelled = true;
+    }
     return result;
 }
 

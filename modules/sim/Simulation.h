@@ -48,8 +48,8 @@ struct SimulationSetup {
     std::function<void(double fraction)> progress;  // 0..1, from the cutting loop
     // Also plan the motion on this machine (planMotion), on a second thread while the stock is
     // cut: the plan needs only the moves, so a caller that wants both waits for the longer of the
-    // two, not their sum. `cancel` does not stop the plan: simulate() returns when it is done.
-    // nullptr: no plan.
+    // two, not their sum. `cancel` stops the plan too (then the result is cancelled and has no
+    // plan). nullptr: no plan.
     const kinematics::Machine* planOn = nullptr;
 };
 
@@ -65,7 +65,7 @@ struct SimulationResult {
     double airCuttingMm = 0;
     double cuttingMm = 0;
     Deviation deviation;             // against the stock's design model (empty without one)
-    std::optional<MotionPlan> plan;  // with SimulationSetup::planOn
+    std::optional<MotionPlan> plan;  // with SimulationSetup::planOn, unless cancelled
 
     int count(base::Severity severity) const;
 };

@@ -25,11 +25,9 @@ void progress(const SimRunRequest& request, int percent)
 
 // The motion plan's times, the cycle time beside the simple estimate, and the analysis of the
 // sampled motion. False when cancelled.
-bool planInTime(const SimRunRequest& request, const kinematics::Machine& machine, SimRun& run)
+bool planInTime(const SimRunRequest& request, const kinematics::Machine& machine, const sim::MotionPlan& plan,
+                SimRun& run)
 {
-    const sim::MotionPlan plan = sim::planMotion(run.moves, machine);
-    if (cancelled(request))
-        return false;
     toolpath::StatsOptions stats;
     stats.rapidMmPerMin = kinematics::estimateRapidMmPerMin(request.machine.get());
     stats.recordsInError = &request.trace->recordsInError;
@@ -87,13 +85,20 @@ std::shared_ptr<SimRun> buildSimRun(const SimRunRequest& request)
             run->hasDesign = !spec->design.empty();
         }
     }
+    // Without a machine, the default limits (as camwb-cli sim): a time, said to be a default's.
+    run->machine = request.machine ? request.machine
+                                   : std::make_shared<const kinematics::Machine>(kinematics::defaultLimitsMachine());
+    const kinematics::Machine& machine = *run->machine;
+    run->machineChosen = request.machine != nullptr;
+
     sim::SimulationSetup setup;
     setup.machine = request.machine.get();
+    setup.planOn = &machine;  // planned beside the cut; Cancel stops both
     setup.stockSpec = spec ? &*spec : nullptr;
     setup.cancel = request.cancel;
     setup.progress = [&request](double fraction) { progress(request, 5 + static_cast<int>(60 * fraction)); };
     sim::SimulationResult result = sim::simulate(program, setup, request.trace->recordsInError);
-    if (result.cancelled || cancelled(request))
+    if (result.cancelled || cancelled(request) || !result.plan)
         return nullptr;
     run->moves = std::move(result.moves);
     run->checks = std::move(result.checks);
@@ -111,16 +116,10 @@ std::shared_ptr<SimRun> buildSimRun(const SimRunRequest& request)
         shapeTools(*run);
     }
     progress(request, 70);
-
-    // Without a machine, the default limits (as camwb-cli sim): a time, said to be a default's.
-    run->machine = request.machine ? request.machine
-                                   : std::make_shared<const kinematics::Machine>(kinematics::defaultLimitsMachine());
-    const kinematics::Machine& machine = *run->machine;
-    run->machineChosen = request.machine != nullptr;
-    if (!request.machine)
+    if (!request.machine)  // after the stock's notes: what went wrong first
         run->notes.push_back("No machine chosen: the cycle time and the path analysis assume default axis limits "
                              "(choose the machine in the NC inspector)");
-    if (!planInTime(request, machine, *run))
+    if (!planInTime(request, machine, *result.plan, *run))
         return nullptr;
     run->rotaryAtStart = sim::rotaryAtMoveStarts(machine.kinematics, run->moves);
     const auto trace = request.trace;

@@ -442,3 +442,40 @@ TEST(SimRun, ThePlanMadeBesideTheCutIsThePlanOfItsMoves)
     sim::HeightField again({{0, 0, 0}, {60, 40, 20}, false}, 0.2);
     EXPECT_FALSE(run(p, again).plan.has_value());
 }
+
+TEST(SimRun, CancelStopsThePlanBesideTheCutAndLeavesNoHalfPlan)
+{
+    // The simulator dock plans beside the cut: Cancel must not wait for the plan, and what the
+    // plan had done by then is not handed out as the program's times.
+    Toolpath p = start(flat10());
+    for (int k = 0; k < 3000; ++k)
+        p.add(Linear{{k % 2 ? 50.0 : 10.0, 20, 15}, 900});
+    kinematics::Machine machine = kinematics::defaultLimitsMachine();
+    std::atomic<bool> cancel{true};
+    sim::PlanOptions options;
+    options.cancel = &cancel;
+    const sim::MoveList moves = sim::buildMoves(p);
+    const sim::MotionPlan stopped = sim::planMotion(moves, machine, options);
+    EXPECT_TRUE(stopped.cancelled);
+    EXPECT_EQ(stopped.totalSeconds, 0) << "no time from a plan that stopped at its first move";
+
+    sim::HeightField stock({{0, 0, 0}, {60, 40, 20}, false}, 0.2);
+    sim::SimulationSetup setup;
+    setup.stock = &stock;
+    setup.planOn = &machine;
+    setup.cancel = &cancel;
+    const sim::SimulationResult r = sim::simulate(p, setup);
+    EXPECT_TRUE(r.cancelled);
+    EXPECT_FALSE(r.plan.has_value());
+    setup.stock = nullptr;  // nothing to cut: the plan alone, stopped all the same
+    const sim::SimulationResult planOnly = sim::simulate(p, setup);
+    EXPECT_TRUE(planOnly.cancelled);
+    EXPECT_FALSE(planOnly.plan.has_value());
+
+    cancel = false;
+    options.cancel = &cancel;
+    const sim::MotionPlan whole = sim::planMotion(moves, machine, options);
+    EXPECT_FALSE(whole.cancelled);
+    EXPECT_EQ(whole.totalSeconds, sim::planMotion(moves, machine).totalSeconds);
+    EXPECT_GT(whole.totalSeconds, 0);
+}

@@ -1,6 +1,8 @@
 #include "base/Prefault.h"
 
+#include <algorithm>
 #include <cstdint>
+#include <system_error>
 
 #ifdef __linux__
 #include <sys/mman.h>
@@ -24,6 +26,32 @@ bool prefault(void* data, std::size_t bytes)
     (void)data, (void)bytes;
     return false;
 #endif
+}
+
+PrefaultBeside::PrefaultBeside(void* data, std::size_t bytes)
+{
+    if (bytes < kMinBytes) {
+        prefault(data, bytes);
+        return;
+    }
+    auto populate = [this, begin = static_cast<char*>(data), bytes] {
+        constexpr std::size_t kChunk = std::size_t(1) << 20;
+        for (std::size_t at = 0; at < bytes && !m_stop.load(std::memory_order_relaxed); at += kChunk)
+            if (!prefault(begin + at, std::min(kChunk, bytes - at)))
+                return;  // this kernel cannot: the writer faults the pages as before
+    };
+    try {
+        m_thread = std::thread(populate);
+    } catch (const std::system_error&) {
+        prefault(data, bytes);
+    }
+}
+
+PrefaultBeside::~PrefaultBeside()
+{
+    m_stop.store(true, std::memory_order_relaxed);
+    if (m_thread.joinable())
+        m_thread.join();
 }
 
 }  // namespace camwb::base

@@ -466,7 +466,8 @@ MoveList buildMoves(const toolpath::Toolpath& program, const MoveOptions& option
     MoveList out;
     const std::size_t estimate = movesEstimate(program, options);
     out.moves.reserve(estimate);
-    base::prefault(out.moves, estimate);  // written all but whole: one call, not a fault per page
+    // Written all but whole: faulted in beside the building, not a fault per page in it.
+    const base::PrefaultBeside ahead(out.moves.data(), estimate * sizeof(Move));
     MoveBuilder builder(out, options);
     builder.begin();
     for (std::size_t i = 0; i < program.size(); ++i) {

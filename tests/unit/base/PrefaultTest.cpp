@@ -99,3 +99,35 @@ TEST(Prefault, RefusesWhatIsNotMemory)
     m.bytes = 2 * page;
     EXPECT_FALSE(prefault(m.data, 4 * page));  // runs into the hole
 }
+
+TEST(Prefault, BesideTheWriterChangesNoByteItWrites)
+{
+    // A megabyte at a time on the thread while the writer fills the same pages: every byte the
+    // writer wrote is there afterwards (populating writes nothing).
+    const auto page = static_cast<std::size_t>(::sysconf(_SC_PAGESIZE));
+    const std::size_t bytes = PrefaultBeside::kMinBytes + 40 * page + 123;
+    Mapping m((bytes + page - 1) / page * page);
+    ASSERT_NE(m.data, MAP_FAILED);
+    auto* data = static_cast<unsigned char*>(m.data);
+    {
+        const PrefaultBeside ahead(data, bytes);
+        for (std::size_t at = 0; at < bytes; at += page / 3 + 1)
+            data[at] = static_cast<unsigned char>(at % 251 + 1);
+    }
+    for (std::size_t at = 0; at < bytes; at += page / 3 + 1)
+        ASSERT_EQ(data[at], at % 251 + 1) << at;
+    for (std::size_t at = 1; at < bytes; at += page / 3 + 1)
+        ASSERT_EQ(data[at], 0) << at;
+}
+
+TEST(Prefault, BesideASmallRangeFaultsItInAtOnce)
+{
+    const auto page = static_cast<std::size_t>(::sysconf(_SC_PAGESIZE));
+    Mapping m(16 * page);
+    ASSERT_NE(m.data, MAP_FAILED);
+    const PrefaultBeside ahead(m.data, m.bytes);  // below kMinBytes: no thread
+    if (!kernelPopulates())
+        GTEST_SKIP() << "this kernel cannot populate memory ahead (MADV_POPULATE_WRITE, Linux 5.14)";
+    EXPECT_EQ(residentPages(m.data, m.bytes), 16u);
+    const PrefaultBeside nothing(nullptr, 0);  // nothing to do, and nothing done
+}

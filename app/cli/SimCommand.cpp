@@ -41,9 +41,10 @@ struct SimOptions {
     std::string report;  // JSON; "-" = stdout
     std::string stl;
     std::string traceCsv;
-    std::string model;      // NC: the part to compare with
-    std::string stock;      // NC: a box "x0,y0,z0,x1,y1,z1" or a mesh/STEP file
-    std::string toolTable;  // NC: the tools' sizes
+    std::string model;                   // NC: the part to compare with
+    std::string stock;                   // NC: a box "x0,y0,z0,x1,y1,z1" or a mesh/STEP file
+    std::optional<base::Box3> stockBox;  // --stock as a box, checked with the other options
+    std::string toolTable;               // NC: the tools' sizes
     // Turning: the revolved stock and the part's (offset) contour in XZ, and the insert's width.
     std::string stockProfile;
     std::string designProfile;
@@ -134,6 +135,12 @@ std::string parseSimOptions(const std::vector<std::string>& args, SimOptions& op
         return "--set changes a job's operation; " + options.input + " is not a job";
     if (!options.stl.empty() && !job && options.stock.empty() && options.model.empty())
         return "--stl needs a stock: a job's, or --stock or --model for an NC program";
+    if (options.stock.find(',') != std::string::npos) {  // a box, not a file: checked before anything is read
+        std::string error;
+        options.stockBox = parseStockBox(options.stock, error);
+        if (!options.stockBox)
+            return error;
+    }
     const bool turning = !options.stockProfile.empty();
     if (!turning && (!options.designProfile.empty() || options.insertWidthMm > 0))
         return "--design-profile and --insert-width need --stock-profile (a turning simulation)";
@@ -251,13 +258,8 @@ bool loadModelAndStock(const SimOptions& options, Input& input)
             input.stockBox = input.design.bounds();  // neither a job's stock nor --stock: the model's box
         return true;
     }
-    if (options.stock.find(',') != std::string::npos) {
-        std::string error;
-        input.stockBox = parseStockBox(options.stock, error);
-        if (!input.stockBox) {
-            usageError(error);
-            return false;
-        }
+    if (options.stockBox) {
+        input.stockBox = options.stockBox;
         return true;
     }
     auto blank = occ::Model::load(options.stock);

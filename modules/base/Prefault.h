@@ -28,12 +28,12 @@ template <class T> bool prefault(std::vector<T>& v, std::size_t count)
 
 // prefault() on a thread of its own, a megabyte at a time from the start, while the caller fills
 // the memory from the start too: a page the caller reaches first it faults itself, the others are
-// there when it comes. For memory that is filled with work between the writes (the simulator's
-// moves, built from the program: 20 MB for the 20k-block benchmark, whose simulation went from
-// 65.1 to 59.0 ms, perf stat, 40 runs each). Below kMinBytes the thread costs more than it saves,
-// and the range is faulted in at once, as where no thread can be had. The destructor stops and
-// waits for it. Populating writes no byte: were the memory freed meanwhile (a vector that grew
-// past its reservation), the thread would only fault in, or fail on, what is mapped there.
+// there when it comes. For memory filled with work between the writes (the simulator's moves,
+// built from the program: 20 MB for the 20k-block benchmark, whose simulation went from 65.3-68.5
+// to 59.3-63.5 ms, perf stat, 40 runs, three rounds). Below kMinBytes the thread costs more than
+// it saves, and the range is faulted in at once, as where no thread can be had. The destructor
+// stops and waits for it. Populating writes no byte: were the memory freed meanwhile (a vector
+// that grew past its reservation), the thread would only fault in, or fail on, what is mapped there.
 class PrefaultBeside {
 public:
     static constexpr std::size_t kMinBytes = std::size_t(4) << 20;

@@ -26,9 +26,12 @@ constexpr int kExitUsage = 2;
 
 // "camwb-cli: error: <message>" on stderr; returns kExitError.
 int fail(const std::string& message);
-// "camwb-cli: <message>" and the usage on stderr; returns kExitUsage.
+// "camwb-cli: <message>", the commands' synopsis and a pointer to --help on stderr; returns
+// kExitUsage.
 int usageError(const std::string& message);
+// The synopsis, then what each command does (--help).
 void printUsage(std::ostream& out);
+void printSynopsis(std::ostream& out);
 
 // A diagnostic on stderr as compilers write them, "file:line:column: severity: message", which
 // editors and CI parsers understand; one that is about no file reads "camwb-cli: severity: message".

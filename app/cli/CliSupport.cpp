@@ -17,7 +17,7 @@ namespace camwb::cli {
 
 namespace fs = std::filesystem;
 
-void printUsage(std::ostream& out)
+void printSynopsis(std::ostream& out)
 {
     out << "usage: camwb-cli --version\n"
            "       camwb-cli run <job.camwb> -o <output file> [--post-path DIR]... [--set "
@@ -37,8 +37,13 @@ void printUsage(std::ostream& out)
            "                      [--measured <trace.csv> [--measured-z-offset mm]] [--analysis]\n"
            "                      [--set <op>.<parameter>=<value>]...\n"
            "       camwb-cli setup-sheet <job.camwb> -o <sheet.html> [--pdf <sheet.pdf>] [--machine <id>]\n"
-           "                      [--no-sim] [--margin mm]\n"
-           "\n"
+           "                      [--no-sim] [--margin mm]\n";
+}
+
+void printUsage(std::ostream& out)
+{
+    printSynopsis(out);
+    out << "\n"
            "run:   loads the job and its model, recomputes every operation, posts the program with\n"
            "       the job's post, machine and post properties and writes the NC file.\n"
            "       --set <op>.<parameter>=<value> (run, post, cl and sim of a job; repeatable) sets an\n"
@@ -106,8 +111,11 @@ int fail(const std::string& message)
 
 int usageError(const std::string& message)
 {
+    // The reason, then the commands' synopsis and where the rest is: the whole help (90 lines)
+    // would scroll the reason off the screen.
     std::cerr << "camwb-cli: " << message << "\n";
-    printUsage(std::cerr);
+    printSynopsis(std::cerr);
+    std::cerr << "camwb-cli --help says what each command does.\n";
     return kExitUsage;
 }
 

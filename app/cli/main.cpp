@@ -20,9 +20,11 @@ int main(int argc, char** argv)
     }
     const std::vector<std::string> args(argv + 1, argv + argc);
 
-    if (args.empty() || args[0] == "--help" || args[0] == "-h") {
-        printUsage(args.empty() ? std::cerr : std::cout);
-        return args.empty() ? kExitUsage : kExitOk;
+    if (args.empty())
+        return usageError("a command is needed");
+    if (args[0] == "--help" || args[0] == "-h") {
+        printUsage(std::cout);
+        return kExitOk;
     }
     const std::vector<std::string> rest(args.begin() + 1, args.end());
     if (args[0] == "--version") {

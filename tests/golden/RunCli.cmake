@@ -1,7 +1,8 @@
 # Runs the CLI and checks its contract exactly: the exit code (EXPECT_EXIT: 0 success, 1 error,
 # 2 usage error), a text on stderr (EXPECT_STDERR, optional), a regular expression stdout must
 # match (EXPECT_STDOUT_REGEX, optional) and no output file left behind (FORBID_FILE, optional).
-# An error (exit 1) is a one-line reason; a usage error (exit 2) gives its reason and then the usage.
+# An error (exit 1) is a one-line reason; a usage error (exit 2) gives its reason and then the
+# commands' synopsis, short enough that the reason stays on a terminal's screen.
 if(FORBID_FILE)
   file(REMOVE ${FORBID_FILE})
 endif()
@@ -23,8 +24,11 @@ list(LENGTH lines count)
 if(EXPECT_EXIT EQUAL 1 AND NOT count EQUAL 1)
   message(FATAL_ERROR "expected a one-line reason on stderr, got ${count} lines:\n${err}")
 endif()
-if(EXPECT_EXIT EQUAL 2 AND NOT err MATCHES "usage: camwb-cli")
-  message(FATAL_ERROR "a usage error should print the usage after its reason:\n${err}")
+if(EXPECT_EXIT EQUAL 2 AND NOT err MATCHES "^camwb-cli: [^\n]+\nusage: camwb-cli .*camwb-cli --help says")
+  message(FATAL_ERROR "a usage error should print its reason, then the synopsis and --help:\n${err}")
+endif()
+if(EXPECT_EXIT EQUAL 2 AND count GREATER 24)
+  message(FATAL_ERROR "a usage error's reason would scroll off the screen: ${count} lines:\n${err}")
 endif()
 if(EXPECT_EXIT EQUAL 0 AND NOT err STREQUAL "")
   message(FATAL_ERROR "expected nothing on stderr, got:\n${err}")
